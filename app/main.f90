@@ -1,3 +1,30 @@
+!> `hertzdamp`: the command-line front end.  Parsing and printing only; every number
+!> comes from the library.
 program main
+    use hertzdamp_cli, only: fail, quit, EXIT_USAGE, EXIT_OK
+    use hertzdamp_cmd_basic, only: cmd_table, cmd_forward, cmd_constants
+    use hertzdamp_cli_help, only: print_help
     implicit none
+    character(len=64) :: command
+    integer :: n
+
+    n = command_argument_count()
+    if (n == 0) then
+        call print_help('')
+        call quit(EXIT_OK)
+    end if
+    call get_command_argument(1, command)
+    select case (trim(command))
+    case ('--help', '-h', 'help')
+        call print_help('')
+        call quit(EXIT_OK)
+    case ('table')
+        call cmd_table()
+    case ('forward')
+        call cmd_forward()
+    case ('constants')
+        call cmd_constants()
+    case default
+        call fail(EXIT_USAGE, 'unknown command "' // trim(command) // '" (see hertzdamp --help)')
+    end select
 end program main

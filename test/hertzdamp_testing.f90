@@ -70,7 +70,7 @@ contains
         a = 0.0_wp
         if (present(atol)) a = atol
         ok = ieee_is_finite(got) .and. abs(got - want) <= rtol * abs(want) + a
-        if (got == want) ok = .true.
+        if (.not. abs(got - want) > 0.0_wp) ok = .true.   ! equal, also both infinite
         call self%check(ok, label)
         if (.not. ok) write (output_unit, '(a,es24.16,a,es24.16,a,es10.2)') &
             '     got ', got, ' want ', want, ' rel ', rel_err(got, want)

@@ -1,0 +1,62 @@
+# hertzdamp: the two quick-start commands are `make run` and `make test`.
+# Both install what is missing (Debian packages, fpm in a project-local .venv),
+# build, and then print the default table / run every test.
+
+SHELL := /bin/bash
+PREFIX ?= $(CURDIR)/_install
+VENV := .venv
+FPM := $(VENV)/bin/fpm
+PYTHON ?= python3
+APT_PKGS := gfortran liblapack-dev libblas-dev libgsl-dev gnuplot-nox
+SUDO := $(shell [ "$$(id -u)" = 0 ] || echo sudo)
+
+# Optimised build of the library and the program (what users run and benchmark).
+RELEASE_FLAGS := -O3 -march=x86-64-v2 -funroll-loops -fPIC
+# Test build: warnings on, standard conformance, run-time checks that are cheap.
+TEST_FLAGS := -O2 -g -fPIC -Wall -Wextra -Wimplicit-interface -std=f2018 -fcheck=bounds,do,pointer -fbacktrace
+
+.PHONY: all deps run test build install clean lint
+
+all: build
+
+# ---------------------------------------------------------------- set-up
+deps: .deps-apt $(FPM)
+
+# Install only the Debian packages that are missing; a stamp keeps reruns silent.
+.deps-apt:
+	@missing=""; for p in $(APT_PKGS); do \
+	  dpkg-query -W -f='$${Status}' $$p 2>/dev/null | grep -q "install ok installed" || missing="$$missing $$p"; \
+	done; \
+	if [ -n "$$missing" ]; then \
+	  echo "installing Debian packages:$$missing"; \
+	  $(SUDO) apt-get update -qq && $(SUDO) env DEBIAN_FRONTEND=noninteractive apt-get install -y -qq $$missing >/dev/null; \
+	fi
+	@touch $@
+
+$(FPM):
+	$(PYTHON) -m venv $(VENV)
+	$(VENV)/bin/pip install -q fpm
+	@touch $@
+
+# ---------------------------------------------------------------- build and run
+build: deps
+	$(FPM) build --flag "$(RELEASE_FLAGS)"
+
+run: build
+	@$(FPM) run hertzdamp --flag "$(RELEASE_FLAGS)" -- table
+
+test: deps
+	@$(FPM) build --tests --flag "$(TEST_FLAGS)"
+	@$(FPM) build --flag "$(RELEASE_FLAGS)"
+	@bash test/run_tests.sh "$(FPM)" "$(TEST_FLAGS)" "$(RELEASE_FLAGS)"
+
+# ---------------------------------------------------------------- install
+install: build
+	@bash tools/install.sh "$(FPM)" "$(RELEASE_FLAGS)" "$(PREFIX)"
+
+lint:
+	$(VENV)/bin/pip install -q fortitude-lint
+	$(VENV)/bin/fortitude check src app test
+
+clean:
+	rm -rf build .deps-apt

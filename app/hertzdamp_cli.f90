@@ -1,0 +1,427 @@
+!> Command-line support: strict option parsing, number parsing, output buffering
+!> and the exit codes of the `hertzdamp` program.
+!>
+!> Every command parses all of its arguments and computes all of its rows before it
+!> prints anything: on bad usage (exit 2) or no solution (exit 3) stdout stays empty
+!> and stderr gets one line.
+module hertzdamp_cli
+    use hertzdamp_kinds, only: hertzdamp_rk
+    use, intrinsic :: iso_fortran_env, only: output_unit, error_unit
+    use, intrinsic :: iso_c_binding, only: c_int
+    use, intrinsic :: ieee_arithmetic, only: ieee_is_finite, ieee_is_nan
+    implicit none
+    private
+
+    integer, parameter :: wp = hertzdamp_rk
+
+    integer, parameter, public :: EXIT_OK = 0        !! success
+    integer, parameter, public :: EXIT_USAGE = 2     !! bad usage: unknown option, malformed number, ...
+    integer, parameter, public :: EXIT_NO_SOLUTION = 3 !! valid input without a solution
+    integer, parameter, public :: EXIT_FAILURE = 4   !! the computation itself failed
+
+    !> Largest number of values a list or range option may produce.
+    integer, parameter, public :: max_list_length = 100000
+
+    !> One `--key value` pair (value empty for flags).
+    type, public :: cli_option
+        character(len=:), allocatable :: key
+        character(len=:), allocatable :: val
+    end type cli_option
+
+    !> The parsed options of one command.
+    type, public :: cli_args
+        type(cli_option), allocatable :: opts(:)
+        character(len=:), allocatable :: positional  !! the single positional argument, if any
+    contains
+        procedure :: has => args_has
+        procedure :: get => args_get
+    end type cli_args
+
+    !> Variable-length line.
+    type, public :: cli_line
+        character(len=:), allocatable :: s
+    end type cli_line
+
+    !> Output collected before it is printed.
+    type, public :: cli_buffer
+        type(cli_line), allocatable :: lines(:)
+        integer :: n = 0
+    contains
+        procedure :: add => buffer_add
+        procedure :: flush_to_stdout => buffer_flush
+    end type cli_buffer
+
+    interface
+        subroutine c_exit(status) bind(C, name='exit')
+            import :: c_int
+            integer(c_int), value :: status
+        end subroutine c_exit
+    end interface
+
+    public :: parse_args, parse_real, parse_real_list, parse_range, parse_int, parse_choice
+    public :: fail, quit, fmt_csv, fmt_text, fmt_json, json_string, csv_join, pad
+
+contains
+
+    !> Print `hertzdamp: message` on stderr and exit with `code` (stdout untouched).
+    subroutine fail(code, message)
+        integer, intent(in) :: code            !! exit code
+        character(len=*), intent(in) :: message !! one line
+        write (error_unit, '(a)') 'hertzdamp: ' // message
+        flush (error_unit)
+        call quit(code)
+    end subroutine fail
+
+    !> Exit with a code, after flushing the standard units.
+    subroutine quit(code)
+        integer, intent(in) :: code   !! exit code
+        flush (output_unit)
+        flush (error_unit)
+        call c_exit(int(code, c_int))
+    end subroutine quit
+
+    !> Parse the arguments from position `first` on.  `valued` and `flags` are
+    !> space-separated option names; any other `--option`, a repeated option or a
+    !> missing value is an error (exit 2).  At most one positional argument if
+    !> `allow_positional`.
+    subroutine parse_args(first, valued, flags, args, allow_positional)
+        integer, intent(in) :: first
+        character(len=*), intent(in) :: valued, flags
+        type(cli_args), intent(out) :: args
+        logical, intent(in), optional :: allow_positional
+        integer :: i, n, j
+        character(len=:), allocatable :: a, v
+        logical :: pos_ok
+        pos_ok = .false.
+        if (present(allow_positional)) pos_ok = allow_positional
+        allocate (args%opts(0))
+        n = command_argument_count()
+        i = first
+        do while (i <= n)
+            a = get_arg(i)
+            if (len(a) >= 2) then
+                if (a(1:2) == '--') then
+                    j = index(a, '=')
+                    if (j > 0) then
+                        v = a(j + 1:)
+                        a = a(1:j - 1)
+                        if (.not. in_list(a, valued)) call unknown(a, valued, flags)
+                    else if (in_list(a, flags)) then
+                        v = ''
+                    else if (in_list(a, valued)) then
+                        if (i == n) call fail(EXIT_USAGE, 'option ' // a // ' needs a value')
+                        i = i + 1
+                        v = get_arg(i)
+                    else
+                        call unknown(a, valued, flags)
+                    end if
+                    if (args%has(a)) call fail(EXIT_USAGE, 'option ' // a // ' given more than once')
+                    args%opts = [args%opts, cli_option(a, v)]
+                    i = i + 1
+                    cycle
+                end if
+            end if
+            if (pos_ok .and. .not. allocated(args%positional)) then
+                args%positional = a
+            else
+                call fail(EXIT_USAGE, 'unexpected argument "' // a // '" (see --help)')
+            end if
+            i = i + 1
+        end do
+    end subroutine parse_args
+
+    subroutine unknown(a, valued, flags)
+        character(len=*), intent(in) :: a, valued, flags
+        if (in_list(a, flags)) then
+            call fail(EXIT_USAGE, 'option ' // a // ' takes no value')
+        else
+            call fail(EXIT_USAGE, 'unknown option ' // a // ' (see --help)')
+        end if
+        if (len(valued) < 0) return
+    end subroutine unknown
+
+    !> Argument i of the command line, whole.
+    function get_arg(i) result(a)
+        integer, intent(in) :: i
+        character(len=:), allocatable :: a
+        integer :: l
+        call get_command_argument(i, length=l)
+        allocate (character(len=l) :: a)
+        if (l > 0) call get_command_argument(i, a)
+    end function get_arg
+
+    logical function in_list(word, list)
+        character(len=*), intent(in) :: word, list
+        in_list = index(' ' // list // ' ', ' ' // word // ' ') > 0 .and. len(word) > 0
+    end function in_list
+
+    logical function args_has(self, key)
+        class(cli_args), intent(in) :: self
+        character(len=*), intent(in) :: key
+        integer :: i
+        args_has = .false.
+        do i = 1, size(self%opts)
+            if (self%opts(i)%key == key) args_has = .true.
+        end do
+    end function args_has
+
+    !> Value of an option, or `default` when absent.
+    function args_get(self, key, default) result(v)
+        class(cli_args), intent(in) :: self
+        character(len=*), intent(in) :: key, default
+        character(len=:), allocatable :: v
+        integer :: i
+        v = default
+        do i = 1, size(self%opts)
+            if (self%opts(i)%key == key) v = self%opts(i)%val
+        end do
+    end function args_get
+
+    !> A strict decimal number: [sign] digits [. digits] [e [sign] digits]; no hex,
+    !> no 'inf' or 'nan', no trailing characters.  Exit 2 naming `what` otherwise.
+    function parse_real(text, what) result(x)
+        character(len=*), intent(in) :: text, what
+        real(wp) :: x
+        integer :: i, n, nd, ios
+        character(len=:), allocatable :: s
+        logical :: ok
+        s = trim(adjustl(text))
+        n = len(s)
+        i = 1
+        ok = n > 0
+        if (ok) then
+            if (s(1:1) == '+' .or. s(1:1) == '-') i = 2
+            nd = 0
+            do while (i <= n)
+                if (.not. is_digit(s(i:i))) exit
+                i = i + 1
+                nd = nd + 1
+            end do
+            if (i <= n) then
+                if (s(i:i) == '.') then
+                    i = i + 1
+                    do while (i <= n)
+                        if (.not. is_digit(s(i:i))) exit
+                        i = i + 1
+                        nd = nd + 1
+                    end do
+                end if
+            end if
+            ok = nd > 0
+            if (ok .and. i <= n) then
+                if (s(i:i) == 'e' .or. s(i:i) == 'E') then
+                    i = i + 1
+                    if (i <= n) then
+                        if (s(i:i) == '+' .or. s(i:i) == '-') i = i + 1
+                    end if
+                    nd = 0
+                    do while (i <= n)
+                        if (.not. is_digit(s(i:i))) exit
+                        i = i + 1
+                        nd = nd + 1
+                    end do
+                    ok = nd > 0
+                end if
+            end if
+            ok = ok .and. i > n
+        end if
+        x = 0.0_wp
+        if (ok) then
+            read (s, *, iostat=ios) x
+            ok = ios == 0 .and. ieee_is_finite(x)
+        end if
+        if (.not. ok) call fail(EXIT_USAGE, 'malformed number "' // text // '" for ' // what)
+    end function parse_real
+
+    logical function is_digit(c)
+        character, intent(in) :: c
+        is_digit = c >= '0' .and. c <= '9'
+    end function is_digit
+
+    !> A positive integer (digits only).
+    integer function parse_int(text, what) result(k)
+        character(len=*), intent(in) :: text, what
+        integer :: i, ios
+        logical :: ok
+        ok = len_trim(text) > 0 .and. len_trim(text) <= 9
+        do i = 1, len_trim(text)
+            if (.not. is_digit(text(i:i))) ok = .false.
+        end do
+        k = 0
+        if (ok) read (text, *, iostat=ios) k
+        if (.not. ok) call fail(EXIT_USAGE, 'malformed integer "' // text // '" for ' // what)
+    end function parse_int
+
+    !> Comma-separated numbers, none empty.
+    function parse_real_list(text, what) result(x)
+        character(len=*), intent(in) :: text, what
+        real(wp), allocatable :: x(:)
+        integer :: i, j, n
+        n = 1
+        do i = 1, len(text)
+            if (text(i:i) == ',') n = n + 1
+        end do
+        if (n > max_list_length) call fail(EXIT_USAGE, 'too many values for ' // what)
+        allocate (x(n))
+        j = 1
+        n = 0
+        do i = 1, len(text) + 1
+            if (i > len(text)) then
+                n = n + 1
+                x(n) = parse_real(text(j:), what)
+            else if (text(i:i) == ',') then
+                n = n + 1
+                x(n) = parse_real(text(j:i - 1), what)
+                j = i + 1
+            end if
+        end do
+    end function parse_real_list
+
+    !> `A0:A1:N`: N equally spaced values from A0 to A1 (N >= 1; N = 1 gives A0).
+    function parse_range(text, what) result(x)
+        character(len=*), intent(in) :: text, what
+        real(wp), allocatable :: x(:)
+        integer :: i1, i2, n, i
+        real(wp) :: a0, a1
+        i1 = index(text, ':')
+        i2 = index(text, ':', back=.true.)
+        if (i1 == 0 .or. i2 == i1) call fail(EXIT_USAGE, 'range "' // text // '" for ' // what // &
+                                             ' must be A0:A1:N')
+        a0 = parse_real(text(1:i1 - 1), what)
+        a1 = parse_real(text(i1 + 1:i2 - 1), what)
+        n = parse_int(text(i2 + 1:), what // ' (number of points)')
+        if (n < 1) call fail(EXIT_USAGE, 'range "' // text // '" for ' // what // ' needs N >= 1')
+        if (n > max_list_length) call fail(EXIT_USAGE, 'range "' // text // '" for ' // what // ' has too many points')
+        allocate (x(n))
+        x(1) = a0
+        do i = 2, n
+            x(i) = a0 + (a1 - a0) * real(i - 1, wp) / real(n - 1, wp)
+        end do
+    end function parse_range
+
+    !> Index (1-based) of `text` in the space-separated `choices`; exit 2 otherwise.
+    integer function parse_choice(text, choices, what) result(k)
+        character(len=*), intent(in) :: text, choices, what
+        integer :: i, j, start
+        k = 0
+        start = 1
+        j = 0
+        do i = 1, len(choices) + 1
+            if (i > len(choices)) then
+                j = j + 1
+                if (choices(start:) == text) k = j
+            else if (choices(i:i) == ' ') then
+                j = j + 1
+                if (choices(start:i - 1) == text) k = j
+                start = i + 1
+            end if
+        end do
+        if (k == 0 .or. len(text) == 0) call fail(EXIT_USAGE, 'invalid ' // what // ' "' // text // &
+                                                   '": choose one of ' // choices)
+    end function parse_choice
+
+    subroutine buffer_add(self, line)
+        class(cli_buffer), intent(inout) :: self
+        character(len=*), intent(in) :: line
+        type(cli_line), allocatable :: tmp(:)
+        if (.not. allocated(self%lines)) allocate (self%lines(64))
+        if (self%n == size(self%lines)) then
+            allocate (tmp(2 * self%n))
+            tmp(1:self%n) = self%lines
+            call move_alloc(tmp, self%lines)
+        end if
+        self%n = self%n + 1
+        self%lines(self%n)%s = line
+    end subroutine buffer_add
+
+    subroutine buffer_flush(self)
+        class(cli_buffer), intent(in) :: self
+        integer :: i
+        do i = 1, self%n
+            write (output_unit, '(a)') self%lines(i)%s
+        end do
+        flush (output_unit)
+    end subroutine buffer_flush
+
+    !> A number with 16 significant digits for CSV; 'inf', '-inf' or 'nan' if not finite.
+    function fmt_csv(x) result(s)
+        real(wp), intent(in) :: x
+        character(len=:), allocatable :: s
+        character(len=40) :: buf
+        if (ieee_is_nan(x)) then
+            s = 'nan'
+        else if (.not. ieee_is_finite(x)) then
+            s = merge('inf ', '-inf', x > 0.0_wp)
+            s = trim(s)
+        else
+            write (buf, '(es24.15e3)') x
+            s = trim(adjustl(buf))
+        end if
+    end function fmt_csv
+
+    !> A number for JSON: 16 significant digits, null when not finite.
+    function fmt_json(x) result(s)
+        real(wp), intent(in) :: x
+        character(len=:), allocatable :: s
+        if (.not. ieee_is_finite(x)) then
+            s = 'null'
+        else
+            s = fmt_csv(x)
+        end if
+    end function fmt_json
+
+    !> A number for aligned text: 12 significant digits in a field of width 19.
+    function fmt_text(x) result(s)
+        real(wp), intent(in) :: x
+        character(len=:), allocatable :: s
+        character(len=19) :: buf
+        if (.not. ieee_is_finite(x)) then
+            buf = ''
+            buf(19 - len(fmt_csv(x)) + 1:) = fmt_csv(x)
+        else
+            write (buf, '(es19.11)') x
+        end if
+        s = buf
+    end function fmt_text
+
+    !> Left-justify `s` in a field of `width` characters (right-justify if width < 0).
+    function pad(s, width) result(r)
+        character(len=*), intent(in) :: s
+        integer, intent(in) :: width
+        character(len=:), allocatable :: r
+        integer :: w
+        w = max(abs(width), len(s))
+        r = repeat(' ', w)
+        if (width >= 0) then
+            r(1:len(s)) = s
+        else
+            r(w - len(s) + 1:) = s
+        end if
+    end function pad
+
+    !> A JSON string literal (escapes quotes and backslashes).
+    function json_string(s) result(r)
+        character(len=*), intent(in) :: s
+        character(len=:), allocatable :: r
+        integer :: i
+        r = '"'
+        do i = 1, len(s)
+            if (s(i:i) == '"' .or. s(i:i) == '\') r = r // '\'
+            r = r // s(i:i)
+        end do
+        r = r // '"'
+    end function json_string
+
+    !> Join the fields of a row with commas.
+    function csv_join(fields) result(r)
+        type(cli_line), intent(in) :: fields(:)
+        character(len=:), allocatable :: r
+        integer :: i
+        r = ''
+        do i = 1, size(fields)
+            if (i > 1) r = r // ','
+            r = r // fields(i)%s
+        end do
+    end function csv_join
+
+end module hertzdamp_cli

@@ -1,0 +1,95 @@
+!> Help texts of the `hertzdamp` program and its commands.
+module hertzdamp_cli_help
+    use, intrinsic :: iso_fortran_env, only: output_unit
+    implicit none
+    private
+    public :: print_help, wants_help
+
+    character(len=*), parameter :: nl = new_line('a')
+
+    character(len=*), parameter :: common_opts = &
+        '  --end overlap|force   contact-end definition: overlap returns to zero (default),' // nl // &
+        '                        or the total contact force returns to zero' // nl // &
+        '  --method M            rk45 (reference integrator, default)' // nl // &
+        '  --tol T               rk45 tolerance, 1e-15 <= T <= 1e-2 (default 1e-13)' // nl // &
+        '  --format F            text (aligned, default), csv or json' // nl // &
+        '  --help                this text'
+
+    character(len=*), parameter :: top = &
+        'hertzdamp - damped Hertzian normal collision of spheres' // nl // &
+        '' // nl // &
+        'Model: m zeta'''' = -d zeta'' - k zeta^(3/2), zeta(0) = 0, zeta''(0) = u_in.' // nl // &
+        'In similarity variables every collision depends on one parameter' // nl // &
+        '  alpha = d m^(-3/5) k^(-2/5) u_in^(-1/5)   (time unit t* = (m/(k u_in^(1/2)))^(2/5)).' // nl // &
+        '' // nl // &
+        'Usage: hertzdamp COMMAND [options]      hertzdamp COMMAND --help' // nl // &
+        '' // nl // &
+        'Commands:' // nl // &
+        '  table      e, tau_c, z_max, tau_max (dimensionless) for a list of alpha' // nl // &
+        '  forward    e, contact time, deepest overlap (SI) from k, d, m, u_in' // nl // &
+        '  constants  alpha_c, tau_c(0), z_max(0), e1 as computed by the library' // nl // &
+        '' // nl // &
+        'Exit codes: 0 success, 2 bad usage, 3 no solution, 4 computation failed.' // nl // &
+        'Errors go to stderr as one line; stdout is then empty.'
+
+    character(len=*), parameter :: table = &
+        'Usage: hertzdamp table [--alpha A1,A2,...] [--alpha-range A0:A1:N] [options]' // nl // &
+        '' // nl // &
+        'One row per alpha (dimensionless damping parameter): alpha, e (restitution),' // nl // &
+        'tau_c (contact duration in units of t*), z_max (deepest overlap in units of' // nl // &
+        'u_in t*), tau_max (time of deepest overlap, units of t*), status (ok or' // nl // &
+        'no-rebound: then e = 0 and tau_c = inf; JSON writes null for inf).' // nl // &
+        'Without --alpha/--alpha-range: alpha = 0, 0.05, ..., 1.1, 1.12, 1.13 (overlap).' // nl // &
+        '' // nl // &
+        '  --alpha LIST          comma-separated alpha values' // nl // &
+        '  --alpha-range A0:A1:N N equally spaced values from A0 to A1 (N >= 1)' // nl // &
+        common_opts
+
+    character(len=*), parameter :: forward = &
+        'Usage: hertzdamp forward --k K --d D --mass M --velocity U [options]' // nl // &
+        '' // nl // &
+        '  --k K          Hertz stiffness k [N m^-3/2], k = (4/3) E* sqrt(R*)' // nl // &
+        '  --d D          linear damping coefficient d [kg s^-1], >= 0' // nl // &
+        '  --mass M       effective mass m [kg]' // nl // &
+        '  --velocity U   normal impact velocity u_in [m s^-1]' // nl // &
+        common_opts // nl // &
+        '' // nl // &
+        'Prints alpha [-], t_star [s], e [-], t_c (contact time) [s], zeta_max' // nl // &
+        '(deepest overlap) [m] and status (ok or no-rebound: e = 0, t_c = inf).'
+
+    character(len=*), parameter :: constants = &
+        'Usage: hertzdamp constants [--format text|csv|json]' // nl // &
+        '' // nl // &
+        '  alpha_c  critical damping of the overlap definition (no rebound for' // nl // &
+        '           alpha >= alpha_c), by bisection on the integrator''s no-rebound test' // nl // &
+        '  tau_c0   elastic contact duration (4/5)(5/4)^(2/5) B(2/5,1/2), units of t*' // nl // &
+        '  z_max0   elastic deepest overlap (5/4)^(2/5), units of u_in t*' // nl // &
+        '  e1       restitution slope: e = 1 - e1 alpha + O(alpha^2)' // nl // &
+        'CSV columns: name,value.'
+
+contains
+
+    !> Print the help of a command ('' for the program).
+    subroutine print_help(command)
+        character(len=*), intent(in) :: command
+        select case (command)
+        case ('table'); write (output_unit, '(a)') table
+        case ('forward'); write (output_unit, '(a)') forward
+        case ('constants'); write (output_unit, '(a)') constants
+        case default; write (output_unit, '(a)') top
+        end select
+        flush (output_unit)
+    end subroutine print_help
+
+    !> True if any argument after the command is --help or -h.
+    logical function wants_help()
+        integer :: i
+        character(len=16) :: a
+        wants_help = .false.
+        do i = 2, command_argument_count()
+            call get_command_argument(i, a)
+            if (a == '--help' .or. a == '-h') wants_help = .true.
+        end do
+    end function wants_help
+
+end module hertzdamp_cli_help

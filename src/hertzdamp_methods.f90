@@ -1,0 +1,92 @@
+!> One entry point for the forward problem alpha -> (e, tau_c, z_max, tau_max) by
+!> any of the library's methods, and the dimensional forward problem
+!> (k, d, m, u_in) -> (alpha, t*, e, T_c, zeta_max).
+module hertzdamp_methods
+    use hertzdamp_kinds, only: hertzdamp_rk
+    use hertzdamp_status, only: HD_OK, HD_NO_REBOUND, HD_NOT_SUPPORTED, HD_BAD_ARGUMENT, HD_OUT_OF_RANGE
+    use hertzdamp_scaling, only: hertzdamp_reduce
+    use hertzdamp_rk45, only: hertzdamp_collision, hertzdamp_rk45_collide, hertzdamp_rk45_default_tol
+    use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
+    implicit none
+    private
+
+    integer, parameter :: wp = hertzdamp_rk
+
+    integer, parameter, public :: HD_METHOD_RK45 = 1     !! adaptive Dormand-Prince reference
+    integer, parameter, public :: HD_METHOD_SERIES = 2   !! truncated Taylor series in alpha
+    integer, parameter, public :: HD_METHOD_PADE = 3     !! Pade summation of the series
+    integer, parameter, public :: HD_METHOD_COMPACT = 4  !! closed-form engineering formula
+    integer, parameter, public :: HD_METHOD_FIT = 5      !! machine-precision approximant
+
+    !> Method names in the order of the HD_METHOD_* constants.
+    character(len=*), parameter, public :: hertzdamp_method_names = 'rk45 series pade compact fit'
+
+    public :: hertzdamp_forward_alpha, hertzdamp_forward_dim
+
+contains
+
+    !> e, tau_c, z_max, tau_max for one alpha by the chosen method.
+    pure elemental function hertzdamp_forward_alpha(alpha, iend, method, tol, order) result(res)
+        real(wp), intent(in) :: alpha            !! damping parameter
+        integer, intent(in) :: iend              !! HD_END_OVERLAP or HD_END_FORCE
+        integer, intent(in) :: method            !! HD_METHOD_*
+        real(wp), intent(in), optional :: tol    !! rk45 tolerance
+        integer, intent(in), optional :: order   !! series truncation order
+        type(hertzdamp_collision) :: res
+        real(wp) :: tol_
+        tol_ = hertzdamp_rk45_default_tol
+        if (present(tol)) tol_ = tol
+        select case (method)
+        case (HD_METHOD_RK45)
+            res = hertzdamp_rk45_collide(alpha, iend, tol_)
+        case (HD_METHOD_SERIES, HD_METHOD_PADE, HD_METHOD_COMPACT, HD_METHOD_FIT)
+            res%alpha = alpha
+            res%iend = iend
+            res%status = HD_NOT_SUPPORTED
+            if (present(order)) res%status = HD_NOT_SUPPORTED
+        case default
+            res%alpha = alpha
+            res%iend = iend
+            res%status = HD_BAD_ARGUMENT
+        end select
+    end function hertzdamp_forward_alpha
+
+    !> The dimensional forward problem.  On no rebound e = 0 and T_c = +inf with
+    !> status HD_NO_REBOUND; on any other failure all outputs are 0.
+    pure elemental subroutine hertzdamp_forward_dim(k, d, m, u, iend, method, alpha, tstar, e, tc, &
+                                                   zeta_max, status, tol, order)
+        real(wp), intent(in) :: k                !! Hertz stiffness [N m^-3/2]
+        real(wp), intent(in) :: d                !! damping coefficient [kg s^-1]
+        real(wp), intent(in) :: m                !! effective mass [kg]
+        real(wp), intent(in) :: u                !! impact velocity [m s^-1]
+        integer, intent(in) :: iend              !! HD_END_OVERLAP or HD_END_FORCE
+        integer, intent(in) :: method            !! HD_METHOD_*
+        real(wp), intent(out) :: alpha           !! damping parameter
+        real(wp), intent(out) :: tstar           !! time unit [s]
+        real(wp), intent(out) :: e               !! restitution coefficient
+        real(wp), intent(out) :: tc              !! contact time [s]
+        real(wp), intent(out) :: zeta_max        !! deepest overlap [m]
+        integer, intent(out) :: status           !! HD_OK, HD_NO_REBOUND or an error
+        real(wp), intent(in), optional :: tol    !! rk45 tolerance
+        integer, intent(in), optional :: order   !! series order
+        type(hertzdamp_collision) :: r
+        e = 0.0_wp
+        tc = 0.0_wp
+        zeta_max = 0.0_wp
+        call hertzdamp_reduce(k, d, m, u, alpha, tstar, status)
+        if (status /= HD_OK) return
+        r = hertzdamp_forward_alpha(alpha, iend, method, tol, order)
+        status = r%status
+        if (status /= HD_OK .and. status /= HD_NO_REBOUND) return
+        e = r%e
+        tc = tstar * r%tau_c
+        zeta_max = u * tstar * r%z_max
+        if (status == HD_OK .and. .not. (ieee_is_finite(tc) .and. ieee_is_finite(zeta_max))) then
+            status = HD_OUT_OF_RANGE
+            e = 0.0_wp
+            tc = 0.0_wp
+            zeta_max = 0.0_wp
+        end if
+    end subroutine hertzdamp_forward_dim
+
+end module hertzdamp_methods

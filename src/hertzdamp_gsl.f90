@@ -390,6 +390,22 @@ contains
         end select
     end function event_g
 
+    !> Time derivative of `event_g` along the solution, exact from the state.
+    pure real(wp) function event_dg(kind, alpha, y) result(dg)
+        integer, intent(in) :: kind
+        real(wp), intent(in) :: alpha, y(2)
+        real(wp) :: zpp
+        zpp = -alpha * y(2) - sign(abs(y(1)) * sqrt(abs(y(1))), y(1))
+        select case (kind)
+        case (ev_turn)
+            dg = zpp
+        case (ev_overlap)
+            dg = y(2)
+        case default
+            dg = 1.5_wp * sqrt(abs(y(1))) * y(2) + alpha * zpp
+        end select
+    end function event_dg
+
     !> Certificate of no rebound (overlap definition, alpha > 0): the set
     !> 0 < z <= alpha^4/36, -(2/alpha) z^{3/2} <= z' <= 0 is forward invariant and
     !> z stays positive in it (z^{-1/2} grows at most like tau/alpha).
@@ -471,47 +487,78 @@ contains
         if (t < tt) ok = .false.
     end subroutine integrate_to
 
-    !> Locate an event inside the accepted step [ta, tb] (g(ya) > 0 >= g(yb)) by
-    !> Illinois regula falsi on re-integrated trial points.  Returns the bracket end
-    !> on the after-event side, within a few ulps of the root.
+    !> Locate an event inside the accepted step [ta, tb] (g(ya) > 0 >= g(yb)).
+    !> Trial points are re-integrated from (ta, ya).  Each iteration takes a Newton
+    !> step from the bracket end with the smaller |g| (g' is exact from the state),
+    !> safeguarded by Illinois regula falsi when Newton leaves the bracket.  Returns the
+    !> last Newton base point once the Newton correction is below a few ulps (or the
+    !> after-side bracket end when the bracket collapses).
     subroutine locate(ctx, kind, ta, ya, tb, yb, tr, yr, ok)
         type(solver_ctx), intent(inout) :: ctx
         integer, intent(in) :: kind
         real(c_double), intent(in) :: ta, ya(2), tb, yb(2)
         real(c_double), intent(out) :: tr, yr(2)
         logical, intent(out) :: ok
-        real(wp) :: a, b, c, fa, fb, fc, yc(2)
+        real(wp) :: a, b, c, fa, fb, ga, gb, fc, d, t0, f0, y0(2), yla(2), ylb(2), yc(2)
         integer :: it, side
         a = ta
         b = tb
-        yr = yb
-        fa = event_g(kind, ctx%alpha, ya)
-        fb = event_g(kind, ctx%alpha, yb)
+        yla = ya
+        ylb = yb
+        ga = event_g(kind, ctx%alpha, ya)     ! true values, for Newton
+        gb = event_g(kind, ctx%alpha, yb)
+        fa = ga                               ! Illinois-scaled values, for the fallback
+        fb = gb
         side = 0
         ok = .true.
+        tr = b
+        yr = ylb
         do it = 1, max_root_iter
-            if (fb == 0.0_wp) exit
+            if (gb == 0.0_wp) exit
             if (b - a <= 4.0_wp * epsilon(1.0_wp) * max(abs(a), abs(b))) exit
-            c = a + (b - a) * (fa / (fa - fb))
-            if (.not. (c > a .and. c < b)) c = 0.5_wp * (a + b)
-            if (.not. (c > a .and. c < b)) exit
+            if (abs(ga) < abs(gb)) then
+                t0 = a
+                f0 = ga
+                y0 = yla
+            else
+                t0 = b
+                f0 = gb
+                y0 = ylb
+            end if
+            d = event_dg(kind, ctx%alpha, y0)
+            c = a - 1.0_wp
+            if (d /= 0.0_wp) c = t0 - f0 / d
+            if (abs(c - t0) <= 2.0_wp * epsilon(1.0_wp) * abs(t0)) then
+                tr = t0
+                yr = y0
+                return
+            end if
+            if (.not. (c > a .and. c < b)) then
+                c = a + (b - a) * (fa / (fa - fb))
+                if (.not. (c > a .and. c < b)) c = 0.5_wp * (a + b)
+                if (.not. (c > a .and. c < b)) exit
+            end if
             call integrate_to(ctx, ta, ya, c, yc, ok)
-            if (.not. ok) exit
+            if (.not. ok) return
             fc = event_g(kind, ctx%alpha, yc)
             if (fc <= 0.0_wp) then
                 b = c
+                gb = fc
                 fb = fc
-                yr = yc
+                ylb = yc
                 if (side == 1) fa = 0.5_wp * fa
                 side = 1
             else
                 a = c
+                ga = fc
                 fa = fc
+                yla = yc
                 if (side == -1) fb = 0.5_wp * fb
                 side = -1
             end if
         end do
         tr = b
+        yr = ylb
     end subroutine locate
 
     !> Free whatever GSL objects were allocated.

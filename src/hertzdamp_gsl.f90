@@ -449,6 +449,11 @@ contains
             a(m + 2) = -(alpha * tau0 * a(m) * (1.0_wp + 0.5_wp * m) &
                 + tau0**2 * sqrt(tau0) * qm3) &
                 / (0.25_wp * real((m + 4) * (m + 2), wp))
+            ! stop once five consecutive terms are negligible (for alpha = 0 only every
+            ! fifth coefficient is nonzero); this also avoids underflow
+            if (m >= 3) then
+                if (maxval(abs(a(m - 2:m + 2))) < 1.0e-3_wp * epsilon(1.0_wp)) exit
+            end if
         end do
         z = 0.0_wp
         zp = 0.0_wp
@@ -514,7 +519,7 @@ contains
         tr = b
         yr = ylb
         do it = 1, max_root_iter
-            if (gb == 0.0_wp) exit
+            if (gb >= 0.0_wp) exit            ! exactly on the root
             if (b - a <= 4.0_wp * epsilon(1.0_wp) * max(abs(a), abs(b))) exit
             if (abs(ga) < abs(gb)) then
                 t0 = a
@@ -527,7 +532,7 @@ contains
             end if
             d = event_dg(kind, ctx%alpha, y0)
             c = a - 1.0_wp
-            if (d /= 0.0_wp) c = t0 - f0 / d
+            if (abs(d) > 0.0_wp) c = t0 - f0 / d
             if (abs(c - t0) <= 2.0_wp * epsilon(1.0_wp) * abs(t0)) then
                 tr = t0
                 yr = y0

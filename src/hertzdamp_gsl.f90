@@ -17,6 +17,12 @@
 !> call allocates its own GSL objects and passes alpha and the evaluation counter
 !> through the `params` pointer of the GSL system.  (It switches GSL's global error
 !> handler off on every call, which is idempotent.)
+!>
+!> Limits (measured): within about 1e-9 of alpha_c = 1.1279881355 (overlap) the march
+!> hits the step limit (status 2) instead of deciding.  For the force definition at
+!> large alpha, tau_c is ill-conditioned (the force z'' crosses zero with slope
+!> 1.5 z^{1/2} z' ~ e ~ alpha^{-5/2}): e, z_max, tau_max stay accurate, but tau_c
+!> converges only slowly with tol for alpha >~ 200.
 module hertzdamp_gsl
     use, intrinsic :: iso_c_binding, only: c_int, c_long, c_double, c_size_t, c_ptr, &
         c_funptr, c_null_ptr, c_null_funptr, c_funloc, c_loc, c_f_pointer, c_associated

@@ -1,0 +1,583 @@
+!> Independent peer solver of the damped Hertz collision built on GSL's odeiv2
+!> explicit Runge-Kutta steppers (rkf45 and rk8pd), called through hand-written
+!> `bind(C)` interfaces.
+!>
+!> It solves the similarity form (THEORY.md section 2)
+!>
+!>     z'' + alpha z' + z^{3/2} = 0,   z(0) = 0,  z'(0) = 1,
+!>
+!> starting at a small tau0 > 0 from the local series in s = sqrt(tau) (the right-hand
+!> side is not smooth at z = 0), stepping with `gsl_odeiv2_evolve_apply`, and locating
+!> every event inside an accepted step by Illinois regula falsi, where each trial value
+!> re-integrates from the step start with the same stepper and tolerance (GSL has no
+!> dense output for these steppers).
+!>
+!> This module is a test reference and a benchmark peer: it needs libgsl and is not
+!> part of the core a DEM code links.  It keeps no module-level mutable state; every
+!> call allocates its own GSL objects and passes alpha and the evaluation counter
+!> through the `params` pointer of the GSL system.  (It switches GSL's global error
+!> handler off on every call, which is idempotent.)
+!>
+!> Limits (measured): within about 1e-9 of alpha_c = 1.1279881355 (overlap) the march
+!> hits the step limit (status 2) instead of deciding.  For the force definition at
+!> large alpha, tau_c is ill-conditioned (the force z'' crosses zero with slope
+!> 1.5 z^{1/2} z' ~ e ~ alpha^{-5/2}): e, z_max, tau_max stay accurate, but tau_c
+!> converges only slowly with tol for alpha >~ 200.
+module hertzdamp_gsl
+    use, intrinsic :: iso_c_binding, only: c_int, c_long, c_double, c_size_t, c_ptr, &
+        c_funptr, c_null_ptr, c_null_funptr, c_funloc, c_loc, c_f_pointer, c_associated
+    use, intrinsic :: ieee_arithmetic, only: ieee_value, ieee_positive_inf, ieee_is_finite, &
+        ieee_is_nan
+    use hertzdamp_kinds, only: hertzdamp_rk
+    implicit none
+    private
+
+    integer, parameter :: wp = hertzdamp_rk
+
+    public :: hertzdamp_gsl_collide, hertzdamp_gsl_status_message
+    public :: gsl_sf_gamma, gsl_sf_beta
+
+    !> Status: the collision ended normally (rebound found).
+    integer, parameter, public :: HERTZDAMP_GSL_OK = 0
+    !> Status: overlap definition, no rebound (certified): e = 0, tau_c = +Inf.
+    integer, parameter, public :: HERTZDAMP_GSL_NO_REBOUND = 1
+    !> Status: the step limit was reached before the collision ended.
+    integer, parameter, public :: HERTZDAMP_GSL_MAX_STEPS = 2
+    !> Status: invalid argument (alpha, iend, tol or method).
+    integer, parameter, public :: HERTZDAMP_GSL_BAD_INPUT = 3
+    !> Status: a GSL routine failed (allocation, step size underflow, bad RHS value).
+    integer, parameter, public :: HERTZDAMP_GSL_FAILURE = 4
+
+    !> `method` value: GSL's embedded Runge-Kutta-Fehlberg 4(5).
+    integer, parameter, public :: HERTZDAMP_GSL_RKF45 = 0
+    !> `method` value: GSL's embedded Runge-Kutta Prince-Dormand 8(9).
+    integer, parameter, public :: HERTZDAMP_GSL_RK8PD = 1
+    !> `iend` value: contact ends when the overlap z returns to zero.
+    integer, parameter, public :: HERTZDAMP_GSL_OVERLAP = 0
+    !> `iend` value: contact ends when the total force -alpha z' - z^{3/2} returns to zero.
+    integer, parameter, public :: HERTZDAMP_GSL_FORCE = 1
+
+    !> Largest number of accepted steps of the main march.
+    integer, parameter :: max_steps = 100000
+    !> Largest number of evolve calls while re-integrating one trial point.
+    integer, parameter :: max_sub_steps = 10000
+    !> Largest number of root-finder iterations for one event.
+    integer, parameter :: max_root_iter = 200
+    !> Number of terms of the start series in s = sqrt(tau).
+    integer, parameter :: n_series = 60
+
+    !> Event kinds (each normalised so that g > 0 before and g <= 0 after the event).
+    integer, parameter :: ev_turn = 1, ev_overlap = 2, ev_force = 3
+
+    ! GSL return codes used here
+    integer(c_int), parameter :: gsl_success = 0, gsl_ebadfunc = 9
+
+    !> GSL's `gsl_odeiv2_system` (layout of the C struct).
+    type, bind(C) :: gsl_odeiv2_system
+        type(c_funptr) :: function            !! int (*)(double t, const double y[], double dydt[], void *params)
+        type(c_funptr) :: jacobian            !! unused here (explicit steppers): NULL
+        integer(c_size_t) :: dimension        !! number of equations (2)
+        type(c_ptr) :: params                 !! points to a `rhs_params`
+    end type gsl_odeiv2_system
+
+    !> What the right-hand side receives through `params`.
+    type, bind(C) :: rhs_params
+        real(c_double) :: alpha = 0.0_c_double    !! damping parameter
+        integer(c_long) :: nevals = 0_c_long      !! right-hand-side evaluations so far
+    end type rhs_params
+
+    !> One solve's GSL objects and system (local to each call: thread-safe).
+    type :: solver_ctx
+        type(rhs_params) :: par
+        type(gsl_odeiv2_system) :: sys
+        type(c_ptr) :: step = c_null_ptr
+        type(c_ptr) :: control = c_null_ptr
+        type(c_ptr) :: evolve = c_null_ptr
+        real(wp) :: alpha = 0.0_wp
+    end type solver_ctx
+
+    ! Step types: global `const gsl_odeiv2_step_type *` variables of libgsl.  They must
+    ! be public: gfortran gives private bind(C) variables hidden visibility, which turns
+    ! them into (null) local definitions instead of references to libgsl's variables.
+    ! `protected` keeps them read-only outside this module.
+    !> GSL's step type `gsl_odeiv2_step_rkf45` (read-only).
+    type(c_ptr), bind(C, name='gsl_odeiv2_step_rkf45'), public, protected :: gsl_odeiv2_step_rkf45
+    !> GSL's step type `gsl_odeiv2_step_rk8pd` (read-only).
+    type(c_ptr), bind(C, name='gsl_odeiv2_step_rk8pd'), public, protected :: gsl_odeiv2_step_rk8pd
+
+    interface
+        !> GSL's Gamma function (gsl_sf_gamma).
+        function gsl_sf_gamma(x) bind(C, name='gsl_sf_gamma') result(g)
+            import :: c_double
+            real(c_double), value :: x     !! argument (not a non-positive integer)
+            real(c_double) :: g
+        end function gsl_sf_gamma
+
+        !> GSL's Beta function B(a, b) (gsl_sf_beta).
+        function gsl_sf_beta(a, b) bind(C, name='gsl_sf_beta') result(bab)
+            import :: c_double
+            real(c_double), value :: a     !! first argument
+            real(c_double), value :: b     !! second argument
+            real(c_double) :: bab
+        end function gsl_sf_beta
+
+        function gsl_set_error_handler_off() bind(C, name='gsl_set_error_handler_off') &
+                result(old)
+            import :: c_funptr
+            type(c_funptr) :: old
+        end function gsl_set_error_handler_off
+
+        function gsl_odeiv2_step_alloc(steptype, dim) bind(C, name='gsl_odeiv2_step_alloc') &
+                result(s)
+            import :: c_ptr, c_size_t
+            type(c_ptr), value :: steptype
+            integer(c_size_t), value :: dim
+            type(c_ptr) :: s
+        end function gsl_odeiv2_step_alloc
+
+        function gsl_odeiv2_step_reset(s) bind(C, name='gsl_odeiv2_step_reset') result(rc)
+            import :: c_ptr, c_int
+            type(c_ptr), value :: s
+            integer(c_int) :: rc
+        end function gsl_odeiv2_step_reset
+
+        subroutine gsl_odeiv2_step_free(s) bind(C, name='gsl_odeiv2_step_free')
+            import :: c_ptr
+            type(c_ptr), value :: s
+        end subroutine gsl_odeiv2_step_free
+
+        function gsl_odeiv2_control_y_new(eps_abs, eps_rel) &
+                bind(C, name='gsl_odeiv2_control_y_new') result(c)
+            import :: c_ptr, c_double
+            real(c_double), value :: eps_abs, eps_rel
+            type(c_ptr) :: c
+        end function gsl_odeiv2_control_y_new
+
+        subroutine gsl_odeiv2_control_free(c) bind(C, name='gsl_odeiv2_control_free')
+            import :: c_ptr
+            type(c_ptr), value :: c
+        end subroutine gsl_odeiv2_control_free
+
+        function gsl_odeiv2_evolve_alloc(dim) bind(C, name='gsl_odeiv2_evolve_alloc') result(e)
+            import :: c_ptr, c_size_t
+            integer(c_size_t), value :: dim
+            type(c_ptr) :: e
+        end function gsl_odeiv2_evolve_alloc
+
+        function gsl_odeiv2_evolve_apply(e, con, step, sys, t, t1, h, y) &
+                bind(C, name='gsl_odeiv2_evolve_apply') result(rc)
+            import :: c_ptr, c_double, c_int, gsl_odeiv2_system
+            type(c_ptr), value :: e, con, step
+            type(gsl_odeiv2_system), intent(in) :: sys
+            real(c_double), intent(inout) :: t
+            real(c_double), value :: t1
+            real(c_double), intent(inout) :: h
+            real(c_double), intent(inout) :: y(*)
+            integer(c_int) :: rc
+        end function gsl_odeiv2_evolve_apply
+
+        function gsl_odeiv2_evolve_reset(e) bind(C, name='gsl_odeiv2_evolve_reset') result(rc)
+            import :: c_ptr, c_int
+            type(c_ptr), value :: e
+            integer(c_int) :: rc
+        end function gsl_odeiv2_evolve_reset
+
+        subroutine gsl_odeiv2_evolve_free(e) bind(C, name='gsl_odeiv2_evolve_free')
+            import :: c_ptr
+            type(c_ptr), value :: e
+        end subroutine gsl_odeiv2_evolve_free
+    end interface
+
+contains
+
+    !> Solve one damped Hertz collision with a GSL odeiv2 stepper.
+    !>
+    !> On status 0 all outputs are set.  On status 1 (overlap definition, alpha >=
+    !> alpha_c): e = 0, tau_c = +Inf, z_max and tau_max are set.  On status >= 2: e = 0,
+    !> tau_c = 0, and z_max, tau_max are set only if the turning point was reached (else 0).
+    !> No output is ever NaN.  Never prints, never stops.
+    subroutine hertzdamp_gsl_collide(alpha, iend, tol, method, e, tau_c, z_max, tau_max, &
+            status, rhs_evals, steps)
+        real(wp), intent(in) :: alpha      !! damping parameter (any sign for overlap, >= 0 for force)
+        integer, intent(in) :: iend        !! contact end: 0 = overlap, 1 = force
+        real(wp), intent(in) :: tol        !! absolute and relative local tolerance, in (0, 1)
+        integer, intent(in) :: method      !! 0 = rkf45, 1 = rk8pd
+        real(wp), intent(out) :: e         !! restitution coefficient -z'(tau_c)
+        real(wp), intent(out) :: tau_c     !! contact duration
+        real(wp), intent(out) :: z_max     !! largest overlap, z at the turning point
+        real(wp), intent(out) :: tau_max   !! time of the turning point (z' = 0)
+        integer, intent(out) :: status     !! 0 ok, 1 no rebound, 2 step limit, 3 bad input, 4 GSL failure
+        integer, intent(out) :: rhs_evals  !! right-hand-side evaluations, root finding included
+        integer, intent(out) :: steps      !! accepted steps of the main march (root finding excluded)
+
+        type(solver_ctx), target :: ctx
+        type(c_funptr) :: old_handler
+        type(c_ptr) :: steptype
+        real(c_double) :: t, h, y(2), ta, ya(2), tr, yr(2)
+        real(c_double), parameter :: t_far = 1.0e30_c_double
+        real(wp) :: tau0
+        integer :: phase, kind_end
+        integer(c_int) :: rc
+        logical :: ok
+
+        e = 0.0_wp
+        tau_c = 0.0_wp
+        z_max = 0.0_wp
+        tau_max = 0.0_wp
+        rhs_evals = 0
+        steps = 0
+        status = HERTZDAMP_GSL_BAD_INPUT
+
+        if (.not. ieee_is_finite(alpha) .or. ieee_is_nan(tol)) return
+        if (.not. (tol > 0.0_wp .and. tol < 1.0_wp)) return
+        if (iend /= HERTZDAMP_GSL_OVERLAP .and. iend /= HERTZDAMP_GSL_FORCE) return
+        if (iend == HERTZDAMP_GSL_FORCE .and. alpha < 0.0_wp) return
+        if (method /= HERTZDAMP_GSL_RKF45 .and. method /= HERTZDAMP_GSL_RK8PD) return
+        if (abs(alpha) > 1.0e8_wp) return
+
+        old_handler = gsl_set_error_handler_off()
+        if (method == HERTZDAMP_GSL_RKF45) then
+            steptype = gsl_odeiv2_step_rkf45
+        else
+            steptype = gsl_odeiv2_step_rk8pd
+        end if
+
+        status = HERTZDAMP_GSL_FAILURE
+        if (.not. c_associated(steptype)) return
+        ctx%alpha = alpha
+        ctx%par%alpha = real(alpha, c_double)
+        ctx%par%nevals = 0_c_long
+        ctx%sys%function = c_funloc(hertz_rhs)
+        ctx%sys%jacobian = c_null_funptr
+        ctx%sys%dimension = 2_c_size_t
+        ctx%sys%params = c_loc(ctx%par)
+        ctx%step = gsl_odeiv2_step_alloc(steptype, 2_c_size_t)
+        ctx%control = gsl_odeiv2_control_y_new(real(tol, c_double), real(tol, c_double))
+        ctx%evolve = gsl_odeiv2_evolve_alloc(2_c_size_t)
+        if (.not. (c_associated(ctx%step) .and. c_associated(ctx%control) &
+            .and. c_associated(ctx%evolve))) then
+            call free_ctx(ctx)
+            return
+        end if
+
+        if (iend == HERTZDAMP_GSL_OVERLAP) then
+            kind_end = ev_overlap
+        else
+            kind_end = ev_force
+        end if
+
+        ! Start from the local series at tau0.
+        tau0 = 0.05_wp / max(1.0_wp, abs(alpha))
+        call series_start(alpha, tau0, y(1), y(2))
+        t = tau0
+        h = 0.1_wp * tau0
+        phase = 1
+
+        march: do
+            if (steps >= max_steps) then
+                status = HERTZDAMP_GSL_MAX_STEPS
+                exit march
+            end if
+            ta = t
+            ya = y
+            rc = gsl_odeiv2_evolve_apply(ctx%evolve, ctx%control, ctx%step, ctx%sys, &
+                t, t_far, h, y)
+            if (rc /= gsl_success .or. .not. all(ieee_is_finite(y))) then
+                status = HERTZDAMP_GSL_FAILURE
+                exit march
+            end if
+            steps = steps + 1
+
+            if (phase == 1) then
+                if (event_g(ev_turn, alpha, y) <= 0.0_wp) then
+                    call locate(ctx, ev_turn, ta, ya, t, y, tr, yr, ok)
+                    if (.not. ok) then
+                        status = HERTZDAMP_GSL_FAILURE
+                        exit march
+                    end if
+                    tau_max = tr
+                    z_max = yr(1)
+                    ! Restart the march from the turning point.
+                    t = tr
+                    y = yr
+                    rc = gsl_odeiv2_evolve_reset(ctx%evolve)
+                    phase = 2
+                    if (no_rebound(iend, alpha, y)) then
+                        status = HERTZDAMP_GSL_NO_REBOUND
+                        exit march
+                    end if
+                end if
+                cycle march
+            end if
+
+            if (event_g(kind_end, alpha, y) <= 0.0_wp) then
+                call locate(ctx, kind_end, ta, ya, t, y, tr, yr, ok)
+                if (.not. ok) then
+                    status = HERTZDAMP_GSL_FAILURE
+                    exit march
+                end if
+                tau_c = tr
+                e = -yr(2)
+                status = HERTZDAMP_GSL_OK
+                exit march
+            end if
+            if (no_rebound(iend, alpha, y)) then
+                status = HERTZDAMP_GSL_NO_REBOUND
+                exit march
+            end if
+        end do march
+
+        if (status == HERTZDAMP_GSL_NO_REBOUND) then
+            e = 0.0_wp
+            tau_c = ieee_value(1.0_wp, ieee_positive_inf)
+        else if (status /= HERTZDAMP_GSL_OK) then
+            e = 0.0_wp
+            tau_c = 0.0_wp
+        end if
+        if (.not. ieee_is_finite(z_max) .or. .not. ieee_is_finite(tau_max)) then
+            z_max = 0.0_wp
+            tau_max = 0.0_wp
+        end if
+        rhs_evals = int(min(ctx%par%nevals, int(huge(rhs_evals), c_long)))
+        call free_ctx(ctx)
+    end subroutine hertzdamp_gsl_collide
+
+    !> A short message describing a status of `hertzdamp_gsl_collide`.
+    pure function hertzdamp_gsl_status_message(status) result(msg)
+        integer, intent(in) :: status          !! status returned by hertzdamp_gsl_collide
+        character(len=:), allocatable :: msg   !! its meaning
+        select case (status)
+        case (HERTZDAMP_GSL_OK)
+            msg = 'success'
+        case (HERTZDAMP_GSL_NO_REBOUND)
+            msg = 'no rebound: the overlap never returns to zero (e = 0, tau_c = Inf)'
+        case (HERTZDAMP_GSL_MAX_STEPS)
+            msg = 'step limit reached before the contact ended'
+        case (HERTZDAMP_GSL_BAD_INPUT)
+            msg = 'invalid argument (alpha, iend, tol or method)'
+        case (HERTZDAMP_GSL_FAILURE)
+            msg = 'GSL failure (allocation, step size underflow or non-finite state)'
+        case default
+            msg = 'unknown status'
+        end select
+    end function hertzdamp_gsl_status_message
+
+    ! ---------------------------------------------------------------- internals
+
+    !> Right-hand side y = (z, z'): (z', -alpha z' - sign(z)|z|^{3/2}) (odd extension,
+    !> so that a step may cross z = 0).  Counts its calls in params%nevals.
+    function hertz_rhs(t, y, dydt, params) bind(C) result(rc)
+        real(c_double), value :: t
+        real(c_double), intent(in) :: y(2)
+        real(c_double), intent(out) :: dydt(2)
+        type(c_ptr), value :: params
+        integer(c_int) :: rc
+        type(rhs_params), pointer :: p
+        call c_f_pointer(params, p)
+        p%nevals = p%nevals + 1_c_long
+        dydt(1) = y(2)
+        dydt(2) = -p%alpha * y(2) - sign(abs(y(1)) * sqrt(abs(y(1))), y(1))
+        rc = gsl_success
+        if (ieee_is_nan(t) .or. .not. all(ieee_is_finite(dydt))) rc = gsl_ebadfunc
+    end function hertz_rhs
+
+    !> Event function, normalised to g > 0 before and g <= 0 after the event.
+    pure real(wp) function event_g(kind, alpha, y) result(g)
+        integer, intent(in) :: kind
+        real(wp), intent(in) :: alpha, y(2)
+        select case (kind)
+        case (ev_turn)
+            g = y(2)                                   ! z'
+        case (ev_overlap)
+            g = y(1)                                   ! z
+        case default
+            ! z^{3/2} - alpha |z'| (z' < 0 after the turning point), odd in z
+            g = sign(abs(y(1)) * sqrt(abs(y(1))), y(1)) + alpha * y(2)
+        end select
+    end function event_g
+
+    !> Time derivative of `event_g` along the solution, exact from the state.
+    pure real(wp) function event_dg(kind, alpha, y) result(dg)
+        integer, intent(in) :: kind
+        real(wp), intent(in) :: alpha, y(2)
+        real(wp) :: zpp
+        zpp = -alpha * y(2) - sign(abs(y(1)) * sqrt(abs(y(1))), y(1))
+        select case (kind)
+        case (ev_turn)
+            dg = zpp
+        case (ev_overlap)
+            dg = y(2)
+        case default
+            dg = 1.5_wp * sqrt(abs(y(1))) * y(2) + alpha * zpp
+        end select
+    end function event_dg
+
+    !> Certificate of no rebound (overlap definition, alpha > 0): the set
+    !> 0 < z <= alpha^4/36, -(2/alpha) z^{3/2} <= z' <= 0 is forward invariant and
+    !> z stays positive in it (z^{-1/2} grows at most like tau/alpha).
+    pure logical function no_rebound(iend, alpha, y)
+        integer, intent(in) :: iend
+        real(wp), intent(in) :: alpha, y(2)
+        no_rebound = .false.
+        if (iend /= HERTZDAMP_GSL_OVERLAP .or. alpha <= 0.0_wp) return
+        if (.not. (y(1) > 0.0_wp .and. y(1) <= alpha**4 / 36.0_wp)) return
+        no_rebound = y(2) <= 0.0_wp .and. &
+            y(2) >= -(2.0_wp / alpha) * y(1) * sqrt(y(1))
+    end function no_rebound
+
+    !> z(tau0), z'(tau0) from the local series in s = sqrt(tau):
+    !> z = tau sum_k p_k s^k, p_0 = 1, p_1 = 0,
+    !> p_{m+2} = -[alpha p_m (1+m/2) + q_{m-3}] / [((m+4)/2)((m+2)/2)],
+    !> q = (sum p_k s^k)^{3/2} by the power recurrence
+    !> k p_0 q_k = sum_{j=1..k} (1.5 j - (k-j)) p_j q_{k-j}.
+    !> Scaled coefficients a_k = p_k s0^k, b_k = q_k s0^k (the power recurrence is
+    !> invariant under this scaling) avoid overflow for large alpha.
+    pure subroutine series_start(alpha, tau0, z, zp)
+        real(wp), intent(in) :: alpha, tau0
+        real(wp), intent(out) :: z, zp
+        real(wp) :: a(0:n_series), b(0:n_series), qm3, acc
+        integer :: m, k, j
+        a = 0.0_wp
+        b = 0.0_wp
+        a(0) = 1.0_wp
+        b(0) = 1.0_wp
+        do m = 0, n_series - 2
+            qm3 = 0.0_wp
+            k = m - 3
+            if (k >= 1) then
+                acc = 0.0_wp
+                do j = 1, k
+                    acc = acc + (1.5_wp * j - (k - j)) * a(j) * b(k - j)
+                end do
+                b(k) = acc / (k * a(0))
+            end if
+            if (k >= 0) qm3 = b(k)
+            a(m + 2) = -(alpha * tau0 * a(m) * (1.0_wp + 0.5_wp * m) &
+                + tau0**2 * sqrt(tau0) * qm3) &
+                / (0.25_wp * real((m + 4) * (m + 2), wp))
+            ! stop once five consecutive terms are negligible (for alpha = 0 only every
+            ! fifth coefficient is nonzero); this also avoids underflow
+            if (m >= 3) then
+                if (maxval(abs(a(m - 2:m + 2))) < 1.0e-3_wp * epsilon(1.0_wp)) exit
+            end if
+        end do
+        z = 0.0_wp
+        zp = 0.0_wp
+        do k = n_series, 0, -1
+            z = z + a(k)
+            zp = zp + 0.5_wp * (k + 2) * a(k)
+        end do
+        z = tau0 * z
+    end subroutine series_start
+
+    !> Re-integrate from (ta, ya) to tt with the solve's stepper and tolerance.
+    subroutine integrate_to(ctx, ta, ya, tt, yt, ok)
+        type(solver_ctx), intent(inout) :: ctx
+        real(c_double), intent(in) :: ta, ya(2), tt
+        real(c_double), intent(out) :: yt(2)
+        logical, intent(out) :: ok
+        real(c_double) :: t, h
+        integer(c_int) :: rc
+        integer :: k
+        yt = ya
+        ok = .true.
+        if (tt <= ta) return
+        rc = gsl_odeiv2_evolve_reset(ctx%evolve)
+        rc = gsl_odeiv2_step_reset(ctx%step)
+        t = ta
+        h = 2.0_c_double * (tt - ta)     ! longer than the interval: the first try ends at tt
+        do k = 1, max_sub_steps
+            if (t >= tt) exit
+            rc = gsl_odeiv2_evolve_apply(ctx%evolve, ctx%control, ctx%step, ctx%sys, &
+                t, tt, h, yt)
+            if (rc /= gsl_success .or. .not. all(ieee_is_finite(yt))) then
+                ok = .false.
+                exit
+            end if
+        end do
+        if (t < tt) ok = .false.
+    end subroutine integrate_to
+
+    !> Locate an event inside the accepted step [ta, tb] (g(ya) > 0 >= g(yb)).
+    !> Trial points are re-integrated from (ta, ya).  Each iteration takes a Newton
+    !> step from the bracket end with the smaller |g| (g' is exact from the state),
+    !> safeguarded by Illinois regula falsi when Newton leaves the bracket.  Returns the
+    !> last Newton base point once the Newton correction is below a few ulps (or the
+    !> after-side bracket end when the bracket collapses).
+    subroutine locate(ctx, kind, ta, ya, tb, yb, tr, yr, ok)
+        type(solver_ctx), intent(inout) :: ctx
+        integer, intent(in) :: kind
+        real(c_double), intent(in) :: ta, ya(2), tb, yb(2)
+        real(c_double), intent(out) :: tr, yr(2)
+        logical, intent(out) :: ok
+        real(wp) :: a, b, c, fa, fb, ga, gb, fc, d, t0, f0, y0(2), yla(2), ylb(2), yc(2)
+        integer :: it, side
+        a = ta
+        b = tb
+        yla = ya
+        ylb = yb
+        ga = event_g(kind, ctx%alpha, ya)     ! true values, for Newton
+        gb = event_g(kind, ctx%alpha, yb)
+        fa = ga                               ! Illinois-scaled values, for the fallback
+        fb = gb
+        side = 0
+        ok = .true.
+        tr = b
+        yr = ylb
+        do it = 1, max_root_iter
+            if (gb >= 0.0_wp) exit            ! exactly on the root
+            if (b - a <= 4.0_wp * epsilon(1.0_wp) * max(abs(a), abs(b))) exit
+            if (abs(ga) < abs(gb)) then
+                t0 = a
+                f0 = ga
+                y0 = yla
+            else
+                t0 = b
+                f0 = gb
+                y0 = ylb
+            end if
+            d = event_dg(kind, ctx%alpha, y0)
+            c = a - 1.0_wp
+            if (abs(d) > 0.0_wp) c = t0 - f0 / d
+            if (abs(c - t0) <= 2.0_wp * epsilon(1.0_wp) * abs(t0)) then
+                tr = t0
+                yr = y0
+                return
+            end if
+            if (.not. (c > a .and. c < b)) then
+                c = a + (b - a) * (fa / (fa - fb))
+                if (.not. (c > a .and. c < b)) c = 0.5_wp * (a + b)
+                if (.not. (c > a .and. c < b)) exit
+            end if
+            call integrate_to(ctx, ta, ya, c, yc, ok)
+            if (.not. ok) return
+            fc = event_g(kind, ctx%alpha, yc)
+            if (fc <= 0.0_wp) then
+                b = c
+                gb = fc
+                fb = fc
+                ylb = yc
+                if (side == 1) fa = 0.5_wp * fa
+                side = 1
+            else
+                a = c
+                ga = fc
+                fa = fc
+                yla = yc
+                if (side == -1) fb = 0.5_wp * fb
+                side = -1
+            end if
+        end do
+        tr = b
+        yr = ylb
+    end subroutine locate
+
+    !> Free whatever GSL objects were allocated.
+    subroutine free_ctx(ctx)
+        type(solver_ctx), intent(inout) :: ctx
+        if (c_associated(ctx%evolve)) call gsl_odeiv2_evolve_free(ctx%evolve)
+        if (c_associated(ctx%control)) call gsl_odeiv2_control_free(ctx%control)
+        if (c_associated(ctx%step)) call gsl_odeiv2_step_free(ctx%step)
+    end subroutine free_ctx
+
+end module hertzdamp_gsl

@@ -197,7 +197,7 @@ contains
     !> tau_c = 0, and z_max, tau_max are set only if the turning point was reached (else 0).
     !> No output is ever NaN.  Never prints, never stops.
     subroutine hertzdamp_gsl_collide(alpha, iend, tol, method, e, tau_c, z_max, tau_max, &
-            status, rhs_evals, steps)
+            status, rhs_evals, steps, atol)
         real(wp), intent(in) :: alpha      !! damping parameter (any sign for overlap, >= 0 for force)
         integer, intent(in) :: iend        !! contact end: 0 = overlap, 1 = force
         real(wp), intent(in) :: tol        !! absolute and relative local tolerance, in (0, 1)
@@ -209,8 +209,10 @@ contains
         integer, intent(out) :: status     !! 0 ok, 1 no rebound, 2 step limit, 3 bad input, 4 GSL failure
         integer, intent(out) :: rhs_evals  !! right-hand-side evaluations, root finding included
         integer, intent(out) :: steps      !! accepted steps of the main march (root finding excluded)
+        real(wp), intent(in), optional :: atol !! absolute tolerance if not tol (tiny: relative control)
 
         type(solver_ctx), target :: ctx
+        real(wp) :: atol_
         type(c_funptr) :: old_handler
         type(c_ptr) :: steptype
         real(c_double) :: t, h, y(2), ta, ya(2), tr, yr(2)
@@ -252,7 +254,9 @@ contains
         ctx%sys%dimension = 2_c_size_t
         ctx%sys%params = c_loc(ctx%par)
         ctx%step = gsl_odeiv2_step_alloc(steptype, 2_c_size_t)
-        ctx%control = gsl_odeiv2_control_y_new(real(tol, c_double), real(tol, c_double))
+        atol_ = tol
+        if (present(atol)) atol_ = atol
+        ctx%control = gsl_odeiv2_control_y_new(real(atol_, c_double), real(tol, c_double))
         ctx%evolve = gsl_odeiv2_evolve_alloc(2_c_size_t)
         if (.not. (c_associated(ctx%step) .and. c_associated(ctx%control) &
             .and. c_associated(ctx%evolve))) then

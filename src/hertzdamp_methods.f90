@@ -17,9 +17,10 @@ module hertzdamp_methods
     integer, parameter, public :: HD_METHOD_PADE = 3     !! Pade summation of the series
     integer, parameter, public :: HD_METHOD_COMPACT = 4  !! closed-form engineering formula
     integer, parameter, public :: HD_METHOD_FIT = 5      !! machine-precision approximant
+    integer, parameter, public :: HD_METHOD_ITERATIVE = 6 !! inverse only: secant iteration over rk45 solves
 
     !> Method names in the order of the HD_METHOD_* constants.
-    character(len=*), parameter, public :: hertzdamp_method_names = 'rk45 series pade compact fit'
+    character(len=*), parameter, public :: hertzdamp_method_names = 'rk45 series pade compact fit iterative'
 
     public :: hertzdamp_forward_alpha, hertzdamp_forward_dim
 

@@ -54,6 +54,7 @@ module hertzdamp_cli
     interface
         subroutine c_exit(status) bind(C, name='exit')
             import :: c_int
+            implicit none
             integer(c_int), value :: status
         end subroutine c_exit
     end interface
@@ -248,7 +249,10 @@ contains
             if (.not. is_digit(text(i:i))) ok = .false.
         end do
         k = 0
-        if (ok) read (text, *, iostat=ios) k
+        if (ok) then
+            read (text, *, iostat=ios) k
+            ok = ios == 0
+        end if
         if (.not. ok) call fail(EXIT_USAGE, 'malformed integer "' // text // '" for ' // what)
     end function parse_int
 

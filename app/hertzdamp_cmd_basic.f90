@@ -48,8 +48,9 @@ contains
         c%tol_text = args%get('--tol', '1e-13')
         if (args%has('--tol')) then
             c%tol = parse_real(c%tol_text, '--tol')
-            if (.not. (c%tol >= 1.0e-15_wp .and. c%tol <= 1.0e-2_wp)) &
-                call fail(EXIT_USAGE, 'tolerance --tol ' // c%tol_text // ' outside [1e-15, 1e-2]')
+            if (.not. (c%tol >= 1.0e-15_wp .and. c%tol <= 1.0e-2_wp)) then
+              call fail(EXIT_USAGE, 'tolerance --tol ' // c%tol_text // ' outside [1e-15, 1e-2]')
+            end if
             if (c%method /= HD_METHOD_RK45) call fail(EXIT_USAGE, '--tol applies to --method rk45 only')
         end if
         if (args%has('--order')) c%order = parse_int(args%get('--order', ''), '--order')
@@ -72,8 +73,9 @@ contains
         allocate (alpha(0))
         if (args%has('--alpha')) alpha = [alpha, parse_real_list(args%get('--alpha', ''), '--alpha')]
         if (args%has('--alpha-range')) alpha = [alpha, parse_range(args%get('--alpha-range', ''), '--alpha-range')]
-        if (.not. (args%has('--alpha') .or. args%has('--alpha-range'))) &
-            alpha = [(0.05_wp * i, i=0, 22), 1.12_wp, 1.13_wp]
+        if (.not. (args%has('--alpha') .or. args%has('--alpha-range'))) then
+          alpha = [(0.05_wp * i, i=0, 22), 1.12_wp, 1.13_wp]
+        end if
         allocate (r(size(alpha)))
         if (c%order >= 0) then
             r = hertzdamp_forward_alpha(alpha, c%iend, c%method, c%tol, c%order)
@@ -81,8 +83,9 @@ contains
             r = hertzdamp_forward_alpha(alpha, c%iend, c%method, c%tol)
         end if
         do i = 1, size(r)
-            if (r(i)%status /= HD_OK .and. r(i)%status /= HD_NO_REBOUND) &
-                call fail(EXIT_USAGE, 'alpha = ' // fmt_csv(alpha(i)) // ': ' // hertzdamp_message(r(i)%status))
+            if (r(i)%status /= HD_OK .and. r(i)%status /= HD_NO_REBOUND) then
+              call fail(EXIT_USAGE, 'alpha = ' // fmt_csv(alpha(i)) // ': ' // hertzdamp_message(r(i)%status))
+            end if
         end do
         call t%set_columns('alpha,e,tau_c,z_max,tau_max,status')
         call t%meta('end', hertzdamp_end_name(c%iend))

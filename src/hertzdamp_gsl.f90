@@ -109,6 +109,7 @@ module hertzdamp_gsl
         !> GSL's Gamma function (gsl_sf_gamma).
         function gsl_sf_gamma(x) bind(C, name='gsl_sf_gamma') result(g)
             import :: c_double
+            implicit none
             real(c_double), value :: x     !! argument (not a non-positive integer)
             real(c_double) :: g
         end function gsl_sf_gamma
@@ -116,6 +117,7 @@ module hertzdamp_gsl
         !> GSL's Beta function B(a, b) (gsl_sf_beta).
         function gsl_sf_beta(a, b) bind(C, name='gsl_sf_beta') result(bab)
             import :: c_double
+            implicit none
             real(c_double), value :: a     !! first argument
             real(c_double), value :: b     !! second argument
             real(c_double) :: bab
@@ -124,12 +126,14 @@ module hertzdamp_gsl
         function gsl_set_error_handler_off() bind(C, name='gsl_set_error_handler_off') &
                 result(old)
             import :: c_funptr
+            implicit none
             type(c_funptr) :: old
         end function gsl_set_error_handler_off
 
         function gsl_odeiv2_step_alloc(steptype, dim) bind(C, name='gsl_odeiv2_step_alloc') &
                 result(s)
             import :: c_ptr, c_size_t
+            implicit none
             type(c_ptr), value :: steptype
             integer(c_size_t), value :: dim
             type(c_ptr) :: s
@@ -137,29 +141,34 @@ module hertzdamp_gsl
 
         function gsl_odeiv2_step_reset(s) bind(C, name='gsl_odeiv2_step_reset') result(rc)
             import :: c_ptr, c_int
+            implicit none
             type(c_ptr), value :: s
             integer(c_int) :: rc
         end function gsl_odeiv2_step_reset
 
         subroutine gsl_odeiv2_step_free(s) bind(C, name='gsl_odeiv2_step_free')
             import :: c_ptr
+            implicit none
             type(c_ptr), value :: s
         end subroutine gsl_odeiv2_step_free
 
         function gsl_odeiv2_control_y_new(eps_abs, eps_rel) &
                 bind(C, name='gsl_odeiv2_control_y_new') result(c)
             import :: c_ptr, c_double
+            implicit none
             real(c_double), value :: eps_abs, eps_rel
             type(c_ptr) :: c
         end function gsl_odeiv2_control_y_new
 
         subroutine gsl_odeiv2_control_free(c) bind(C, name='gsl_odeiv2_control_free')
             import :: c_ptr
+            implicit none
             type(c_ptr), value :: c
         end subroutine gsl_odeiv2_control_free
 
         function gsl_odeiv2_evolve_alloc(dim) bind(C, name='gsl_odeiv2_evolve_alloc') result(e)
             import :: c_ptr, c_size_t
+            implicit none
             integer(c_size_t), value :: dim
             type(c_ptr) :: e
         end function gsl_odeiv2_evolve_alloc
@@ -167,23 +176,26 @@ module hertzdamp_gsl
         function gsl_odeiv2_evolve_apply(e, con, step, sys, t, t1, h, y) &
                 bind(C, name='gsl_odeiv2_evolve_apply') result(rc)
             import :: c_ptr, c_double, c_int, gsl_odeiv2_system
+            implicit none
             type(c_ptr), value :: e, con, step
             type(gsl_odeiv2_system), intent(in) :: sys
             real(c_double), intent(inout) :: t
             real(c_double), value :: t1
             real(c_double), intent(inout) :: h
-            real(c_double), intent(inout) :: y(*)
+            real(c_double), intent(inout) :: y(2)   ! the state of this 2-D system
             integer(c_int) :: rc
         end function gsl_odeiv2_evolve_apply
 
         function gsl_odeiv2_evolve_reset(e) bind(C, name='gsl_odeiv2_evolve_reset') result(rc)
             import :: c_ptr, c_int
+            implicit none
             type(c_ptr), value :: e
             integer(c_int) :: rc
         end function gsl_odeiv2_evolve_reset
 
         subroutine gsl_odeiv2_evolve_free(e) bind(C, name='gsl_odeiv2_evolve_free')
             import :: c_ptr
+            implicit none
             type(c_ptr), value :: e
         end subroutine gsl_odeiv2_evolve_free
     end interface

@@ -353,14 +353,16 @@ contains
                 th_f = 2.0_wp
                 th_g = 2.0_wp
                 if (force) then
-                    if (event_value(2, model, ynew, alpha, 0.0_wp) >= 0.0_wp) &
-                        th_f = locate(2, model, cont, alpha, 0.0_wp, theta_tp, 1.0_wp)
+                    if (event_value(2, model, ynew, alpha, 0.0_wp) >= 0.0_wp) then
+                      th_f = locate(2, model, cont, alpha, 0.0_wp, theta_tp, 1.0_wp)
+                    end if
                 end if
                 ! (z, F) state: for alpha >= 1 the force vanishes long before the switch
                 ! (z <= sigma_sw |z'| with alpha |z'| < z^(3/2) needs z >= 100 alpha^4)
                 if (model == HD_MODEL_HERTZ) then
-                    if (event_value(3, model, ynew, alpha, sigma_sw) <= 0.0_wp) &
-                        th_g = locate(3, model, cont, alpha, sigma_sw, theta_tp, 1.0_wp)
+                    if (event_value(3, model, ynew, alpha, sigma_sw) <= 0.0_wp) then
+                      th_g = locate(3, model, cont, alpha, sigma_sw, theta_tp, 1.0_wp)
+                    end if
                 end if
                 if (th_f <= th_g .and. th_f <= 1.0_wp) then
                     call polish(2, model, t, y, k1, h, th_f, alpha, tp, res%stats, status)

@@ -20,7 +20,7 @@ TEST_FLAGS := -O2 -g -fPIC -Wall -Wextra -Wimplicit-interface -std=f2018 -fcheck
 all: build
 
 # ---------------------------------------------------------------- set-up
-deps: .deps-apt $(FPM)
+deps: .deps-apt $(FPM) $(VENV)/bin/fortitude
 
 # Install only the Debian packages that are missing; a stamp keeps reruns silent.
 .deps-apt:
@@ -36,6 +36,10 @@ deps: .deps-apt $(FPM)
 $(FPM):
 	$(PYTHON) -m venv $(VENV)
 	$(VENV)/bin/pip install -q fpm
+	@touch $@
+
+$(VENV)/bin/fortitude: $(FPM)
+	$(VENV)/bin/pip install -q fortitude-lint
 	@touch $@
 
 # ---------------------------------------------------------------- build and run
@@ -54,9 +58,8 @@ test: deps
 install: build
 	@bash tools/install.sh "$(FPM)" "$(RELEASE_FLAGS)" "$(PREFIX)"
 
-lint:
-	$(VENV)/bin/pip install -q fortitude-lint
-	$(VENV)/bin/fortitude check src app test
+lint: deps
+	$(VENV)/bin/fortitude check src app test gen
 
 clean:
 	rm -rf build .deps-apt

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Runs every test program (fpm's test/ directory) and every test/cli_*.sh script,
+# Runs every test program (fpm's test/ directory) and every other test/*.sh script,
 # adds up their `name: P passed, F failed` lines and ends with the total.
 # A program that crashes or exits non-zero without a summary counts as one failure.
 set -u
@@ -36,8 +36,9 @@ for exe in "${exes[@]}"; do
   [ -x "$exe" ] || continue
   run_one "$(basename "$exe")" "$exe"
 done
-for script in test/cli_*.sh; do
+for script in test/*.sh; do
   [ -f "$script" ] || continue
+  [ "$(basename "$script")" = run_tests.sh ] && continue
   run_one "$(basename "$script" .sh)" bash "$script"
 done
 echo "$passed passed, $failed failed"

@@ -13,7 +13,8 @@ SUDO := $(shell [ "$$(id -u)" = 0 ] || echo sudo)
 # Optimised build of the library and the program (what users run and benchmark).
 RELEASE_FLAGS := -O3 -march=x86-64-v2 -funroll-loops -fPIC
 # Test build: warnings on, standard conformance, run-time checks that are cheap.
-TEST_FLAGS := -O2 -g -fPIC -Wall -Wextra -Wimplicit-interface -std=f2018 -fcheck=bounds,do,pointer -fbacktrace
+TEST_FLAGS := -O2 -g -fPIC -fopenmp -Wall -Wextra -Wimplicit-interface -std=f2018 -fcheck=bounds,do,pointer -fbacktrace
+TEST_LINK := -fopenmp
 
 .PHONY: all deps run test build install clean lint
 
@@ -50,9 +51,9 @@ run: build
 	@$(FPM) run hertzdamp --flag "$(RELEASE_FLAGS)" -- table
 
 test: deps
-	@$(FPM) build --tests --flag "$(TEST_FLAGS)"
+	@$(FPM) build --tests --flag "$(TEST_FLAGS)" --link-flag "$(TEST_LINK)"
 	@$(FPM) build --flag "$(RELEASE_FLAGS)"
-	@bash test/run_tests.sh "$(FPM)" "$(TEST_FLAGS)" "$(RELEASE_FLAGS)"
+	@bash test/run_tests.sh "$(FPM)" "$(TEST_FLAGS)" "$(RELEASE_FLAGS)" "$(TEST_LINK)"
 
 # ---------------------------------------------------------------- install
 install: build

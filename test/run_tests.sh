@@ -3,7 +3,7 @@
 # adds up their `name: P passed, F failed` lines and ends with the total.
 # A program that crashes or exits non-zero without a summary counts as one failure.
 set -u
-fpm=$1; test_flags=$2; release_flags=$3
+fpm=$1; test_flags=$2; release_flags=$3; test_link=${4:-}
 cd "$(dirname "$0")/.."
 export HERTZDAMP_BIN=$("$fpm" run hertzdamp --flag "$release_flags" --runner echo 2>/dev/null | tail -n 1)
 passed=0; failed=0
@@ -31,7 +31,7 @@ run_one() {  # name, command...
   fi
 }
 
-mapfile -t exes < <("$fpm" test --flag "$test_flags" --runner echo 2>/dev/null | grep -v '^\[' )
+mapfile -t exes < <("$fpm" test --flag "$test_flags" --link-flag "$test_link" --runner echo 2>/dev/null | grep -v '^\[' )
 for exe in "${exes[@]}"; do
   [ -x "$exe" ] || continue
   run_one "$(basename "$exe")" "$exe"

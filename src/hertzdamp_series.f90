@@ -51,6 +51,11 @@ module hertzdamp_series
     !> (max relative error 7.3e-11 for e and 3.9e-11 for tau_c there).
     real(wp), parameter, public :: hertzdamp_pade_alpha_max = 0.8_wp
 
+    !> Geometric ratio of the coefficient tail, |c_N / c_{N-1}| (the larger of e
+    !> and tau_c; 0.847 for N = 24), a ratio-test estimate of 1/radius (1/1.1265).
+    real(wp), parameter :: tail_ratio = max(abs(series_tau_c(series_nrows - 1) / series_tau_c(series_nrows - 2)), &
+                                            abs(series_e(series_nrows - 1) / series_e(series_nrows - 2)))
+
     real(wp), parameter :: series_alpha_ok = 0.8_wp    ! status OK below this |alpha|
     real(wp), parameter :: series_alpha_max = 1.0_wp   ! out of range from here
 
@@ -60,9 +65,9 @@ contains
 
     !> Truncated Taylor series at alpha = 0 of the overlap-definition results.
     !>
-    !> err_e, err_tau estimate the absolute error of e and tau_c: the sum of the
-    !> magnitudes of the next two omitted terms (two, because e_10 vanishes) plus
-    !> the stored coefficient errors; at order = max_order the last kept term is used.
+    !> err_e, err_tau estimate the absolute error of e and tau_c: twice the size of
+    !> the next three omitted terms, the last with a geometric tail (see `tail`;
+    !> three because e_10 vanishes), plus the stored coefficient errors.
     pure elemental subroutine hertzdamp_series_eval(alpha, e, tau_c, z_max, tau_max, order, &
                                                     err_e, err_tau, status)
         real(wp), intent(in) :: alpha              !! damping parameter (|alpha| < 1)
@@ -176,19 +181,35 @@ contains
         end do
     end function horner
 
-    !> Size of the omitted part of a series truncated at order n: the next two
-    !> terms, or the last kept term when no further coefficient is stored.
+    !> Estimated size of the omitted part of a series truncated at order n:
+    !>   2 (|T_{n+1}| + |T_{n+2}| + |T_{n+3}| / (1 - r|x|)),   T_k = c_k x^k,
+    !> with the geometric ratio r = tail_ratio; terms beyond the stored order are
+    !> replaced by that geometric tail.  Three terms because e_9 is small and
+    !> e_10 vanishes; factor 2 for safety (the unfactored estimate is exceeded by
+    !> at most 6 % for 0 < x <= 0.8 and orders 0..23, checked against the full
+    !> series; the factored one overestimates by up to about 85x).
     pure real(wp) function tail(c, n, x)
         real(wp), intent(in) :: c(0:)  !! all stored coefficients
         integer, intent(in) :: n       !! truncation order
         real(wp), intent(in) :: x      !! argument
-        integer :: m
+        integer :: m, k, klast
+        real(wp) :: g
         m = ubound(c, 1)
-        if (n >= m - 1) then
-            tail = abs(c(m)) * abs(x)**m
+        g = 1.0_wp / (1.0_wp - min(tail_ratio * abs(x), 0.99_wp))
+        if (n >= m) then
+            tail = abs(c(m)) * abs(x)**m * tail_ratio * abs(x) * g
         else
-            tail = abs(c(n + 1)) * abs(x)**(n + 1) + abs(c(n + 2)) * abs(x)**(n + 2)
+            klast = min(n + 3, m)
+            tail = 0.0_wp
+            do k = n + 1, klast
+                if (k == klast) then
+                    tail = tail + abs(c(k)) * abs(x)**k * g
+                else
+                    tail = tail + abs(c(k)) * abs(x)**k
+                end if
+            end do
         end if
+        tail = 2 * tail
     end function tail
 
 end module hertzdamp_series

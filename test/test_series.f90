@@ -386,6 +386,10 @@ program test_series
         call s%check_close(tm, rm, 1.0e-11_wp, trim(lab) // ': tau_max', atol=10 * rerr)
         call s%check(abs(e - re) <= ee + 10 * rerr + 1.0e-14_wp, trim(lab) // ': e error estimate holds')
         call s%check(abs(tc - rt) <= et + 10 * rerr + 1.0e-14_wp, trim(lab) // ': tau_c error estimate holds')
+        ! the full-order series here: its error estimate must hold as well
+        call hertzdamp_series_eval(al, e, tc, order=nmax, err_e=ee, err_tau=et)
+        call s%check(abs(e - re) <= ee + 10 * rerr + 1.0e-14_wp, trim(lab) // ': series e estimate holds')
+        call s%check(abs(tc - rt) <= et + 10 * rerr + 1.0e-14_wp, trim(lab) // ': series tau_c estimate holds')
     end do
 
     ! --- status handling, elemental use

@@ -1,7 +1,8 @@
-!> Constants generated from data/pade_coefficients.csv (module hertzdamp_pade_data).
+!> Constants generated from data/pade_coefficients.csv.
 !>
 !> Generated from data/pade_coefficients.csv by
-!>   python3 tools/csv_to_f90.py data/pade_coefficients.csv src/hertzdamp_pade_data.f90 hertzdamp_pade_data pade
+!>   python3 tools/csv_to_f90.py data/pade_coefficients.csv src/hertzdamp_pade_data.f90 \
+!>       hertzdamp_pade_data pade
 !> Do not edit by hand: regenerate the CSV, then rerun the command above.
 !> Each array holds one column; element i (0-based) is data row i.
 !>
@@ -13,20 +14,21 @@
 !   linear system sum_j den_j c_{l+i-j} = 0 (i = 1..l), then num_i = sum_j den_j c_{i-j}.
 ! Columns <q>_num, <q>_den: primary [L/L]; <q>_num2, <q>_den2: secondary [L-1/L-1]
 !   (their difference is the run-time error estimate).  Rows are k = 0..12, zero padded.
-! e       : [12/12] and [11/11], max rel err vs reference on [0,0.8]:  7.23E-11 (secondary  9.68E-10), max
-! |P1/P2-1|  1.04E-09, on [0.8,1.1]:  1.75E-03
-! tau_c   : [12/12] and [11/11], max rel err vs reference on [0,0.8]:  3.89E-11 (secondary  4.28E-10), max
-! |P1/P2-1|  3.89E-10, on [0.8,1.1]:  1.59E-03
-! z_max   : [8/8] and [7/7], max rel err vs reference on [0,0.8]:  4.44E-16 (secondary  6.99E-15), max |P1/P2-1|
-!   7.11E-15, on [0.8,1.1]:  1.22E-14
-! tau_max : [8/8] and [7/7], max rel err vs reference on [0,0.8]:  4.44E-16 (secondary  1.20E-14), max |P1/P2-1|
-!   1.25E-14, on [0.8,1.1]:  6.77E-15
+! e       : [12/12] and [11/11], max rel err vs reference on [0,0.8]:  7.23E-11 (secondary
+! 9.68E-10), max |P1/P2-1|  1.04E-09, on [0.8,1.1]:  1.75E-03
+! tau_c   : [12/12] and [11/11], max rel err vs reference on [0,0.8]:  3.89E-11 (secondary
+! 4.28E-10), max |P1/P2-1|  3.89E-10, on [0.8,1.1]:  1.59E-03
+! z_max   : [8/8] and [7/7], max rel err vs reference on [0,0.8]:  4.44E-16 (secondary  6.99E-15),
+!  max |P1/P2-1|  7.11E-15, on [0.8,1.1]:  1.22E-14
+! tau_max : [8/8] and [7/7], max rel err vs reference on [0,0.8]:  4.44E-16 (secondary  1.20E-14),
+!  max |P1/P2-1|  1.25E-14, on [0.8,1.1]:  6.77E-15
 ! Reference: jet-free quad-precision Taylor integration with local series at both
 !   ends (gen/series/hertzdamp_gen_reference.f90), alpha = 0, 0.01, ..., 0.8 and 16 points to 1.1.
-! First positive zero of a denominator (e, tau_c, z_max, tau_max; 2 = none below 2):  1.088  1.146  2.000  2.000
+! First positive zero of a denominator (e, tau_c, z_max, tau_max; 2 = none below 2):  1.088  1.146
+!   2.000  2.000
 module hertzdamp_pade_data
     use hertzdamp_kinds, only: hertzdamp_rk
-    implicit none
+    implicit none (type, external)
     private
 
     !> Number of rows of the table (arrays are indexed 0..12).

@@ -16,10 +16,12 @@ module hertzdamp_series
     use hertzdamp_series_data, only: series_nrows, series_z_max, series_tau_max, series_e, &
                                      series_tau_c, series_e_err, series_tau_c_err
     use hertzdamp_pade_data, only: pade_e_num, pade_e_den, pade_e_num2, pade_e_den2, &
-                                   pade_tau_c_num, pade_tau_c_den, pade_tau_c_num2, pade_tau_c_den2, &
-                                   pade_z_max_num, pade_z_max_den, pade_tau_max_num, pade_tau_max_den
+                                   pade_tau_c_num, pade_tau_c_den, pade_tau_c_num2, &
+                                       pade_tau_c_den2, &
+                                   pade_z_max_num, pade_z_max_den, pade_tau_max_num, &
+                                       pade_tau_max_den
     use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
-    implicit none
+    implicit none (type, external)
     private
 
     integer, parameter :: wp = hertzdamp_rk
@@ -53,8 +55,9 @@ module hertzdamp_series
 
     !> Geometric ratio of the coefficient tail, |c_N / c_{N-1}| (the larger of e
     !> and tau_c; 0.847 for N = 24), a ratio-test estimate of 1/radius (1/1.1265).
-    real(wp), parameter :: tail_ratio = max(abs(series_tau_c(series_nrows - 1) / series_tau_c(series_nrows - 2)), &
-                                            abs(series_e(series_nrows - 1) / series_e(series_nrows - 2)))
+    real(wp), parameter :: tail_ratio = &
+        max(abs(series_tau_c(series_nrows - 1) / series_tau_c(series_nrows - 2)), &
+            abs(series_e(series_nrows - 1) / series_e(series_nrows - 2)))
 
     real(wp), parameter :: series_alpha_ok = 0.8_wp    ! status OK below this |alpha|
     real(wp), parameter :: series_alpha_max = 1.0_wp   ! out of range from here
@@ -75,7 +78,8 @@ contains
         real(wp), intent(out) :: tau_c             !! contact duration (time unit t*)
         real(wp), intent(out), optional :: z_max   !! deepest overlap
         real(wp), intent(out), optional :: tau_max !! time of deepest overlap
-        integer, intent(in), optional :: order     !! truncation order (default hertzdamp_series_default_order)
+        integer, intent(in), &
+            optional :: order     !! truncation order (default hertzdamp_series_default_order)
         real(wp), intent(out), optional :: err_e   !! estimated absolute error of e
         real(wp), intent(out), optional :: err_tau !! estimated absolute error of tau_c
         integer, intent(out), optional :: status   !! HERTZDAMP_SERIES_* status (0 = ok)
@@ -121,7 +125,8 @@ contains
     !> 0 <= alpha <= hertzdamp_pade_alpha_max (relative error below 1e-10 there).
     !>
     !> err_e, err_tau: |[12/12] - [11/11]|, an (over)estimate of the absolute error.
-    pure elemental subroutine hertzdamp_pade_eval(alpha, e, tau_c, z_max, tau_max, err_e, err_tau, status)
+    pure elemental subroutine hertzdamp_pade_eval(alpha, e, tau_c, z_max, tau_max, err_e, &
+        err_tau, status)
         real(wp), intent(in) :: alpha              !! damping parameter, 0 <= alpha <= 0.8
         real(wp), intent(out) :: e                 !! restitution coefficient -z'(tau_c)
         real(wp), intent(out) :: tau_c             !! contact duration (time unit t*)
@@ -147,9 +152,11 @@ contains
         e = horner(pade_e_num, alpha) / horner(pade_e_den, alpha)
         tau_c = horner(pade_tau_c_num, alpha) / horner(pade_tau_c_den, alpha)
         if (present(z_max)) z_max = horner(pade_z_max_num, alpha) / horner(pade_z_max_den, alpha)
-        if (present(tau_max)) tau_max = horner(pade_tau_max_num, alpha) / horner(pade_tau_max_den, alpha)
+        if (present(tau_max)) tau_max = horner(pade_tau_max_num, &
+            alpha) / horner(pade_tau_max_den, alpha)
         if (present(err_e)) err_e = abs(e - horner(pade_e_num2, alpha) / horner(pade_e_den2, alpha))
-        if (present(err_tau)) err_tau = abs(tau_c - horner(pade_tau_c_num2, alpha) / horner(pade_tau_c_den2, alpha))
+        if (present(err_tau)) err_tau = abs(tau_c - horner(pade_tau_c_num2, &
+            alpha) / horner(pade_tau_c_den2, alpha))
     end subroutine hertzdamp_pade_eval
 
     !> Message for a HERTZDAMP_SERIES_* status.
@@ -160,9 +167,11 @@ contains
         case (HERTZDAMP_SERIES_OK)
             msg = 'ok'
         case (HERTZDAMP_SERIES_INACCURATE)
-            msg = 'alpha beyond the validated range of the series (0.8 < |alpha| < 1): see the error estimate'
+            msg = 'alpha beyond the validated range of the series (0.8 < |alpha| < 1): ' // &
+                  'see the error estimate'
         case (HERTZDAMP_SERIES_OUT_OF_RANGE)
-            msg = 'alpha not finite or outside the range of the formula (series |alpha| < 1, Pade 0 <= alpha <= 0.8)'
+            msg = 'alpha not finite or outside the range of the formula ' // &
+                  '(series |alpha| < 1, Pade 0 <= alpha <= 0.8)'
         case (HERTZDAMP_SERIES_BAD_ORDER)
             msg = 'truncation order outside 0..hertzdamp_series_max_order'
         case default

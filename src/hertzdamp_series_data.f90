@@ -1,7 +1,8 @@
-!> Constants generated from data/series_coefficients.csv (module hertzdamp_series_data).
+!> Constants generated from data/series_coefficients.csv.
 !>
 !> Generated from data/series_coefficients.csv by
-!>   python3 tools/csv_to_f90.py data/series_coefficients.csv src/hertzdamp_series_data.f90 hertzdamp_series_data series
+!>   python3 tools/csv_to_f90.py data/series_coefficients.csv src/hertzdamp_series_data.f90 \
+!>       hertzdamp_series_data series
 !> Do not edit by hand: regenerate the CSV, then rerun the command above.
 !> Each array holds one column; element i (0-based) is data row i.
 !>
@@ -14,8 +15,10 @@
 !   Taylor steps in t to t* = tau_c(0)/2; Newton on jets for the turning point;
 !   e and tau_c from time reversal z_max(a) = e^(4/5) z_max(-a e^(-1/5)).
 ! Settings: N = 24
-!   run A: t0 =  0.100, start terms = 60, step = min( 0.20000 t,  0.100), Taylor order = 40, steps = 20
-!   run B: t0 =  0.060, start terms = 70, step = min( 0.14286 t,  0.070), Taylor order = 48, steps = 32
+!   run A: t0 =  0.100, start terms = 60, step = min( 0.20000 t,  0.100), Taylor order = 40, steps
+!  = 20
+!   run B: t0 =  0.060, start terms = 70, step = min( 0.14286 t,  0.070), Taylor order = 48, steps
+!  = 32
 ! Values are run A rounded to double; *_err = |run A - run B| + 10 quad ulps
 !   + half a double ulp: the estimated absolute error of the stored value.
 ! Largest relative err: z_max   1.10E-16, tau_max   1.09E-16, e   1.11E-16, tau_c   1.08E-16
@@ -23,7 +26,7 @@
 !   (relative figures skip coefficients below 1e-25 in size: e_10 = 0 to within 1e-34)
 module hertzdamp_series_data
     use hertzdamp_kinds, only: hertzdamp_rk
-    implicit none
+    implicit none (type, external)
     private
 
     !> Number of rows of the table (arrays are indexed 0..24).

@@ -6,7 +6,7 @@
 !> local series at both ends of the contact).
 module test_series_support
     use hertzdamp_kinds, only: hertzdamp_rk
-    implicit none
+    implicit none (type, external)
     private
     integer, parameter :: wp = hertzdamp_rk
 
@@ -293,14 +293,16 @@ end module test_series_support
 program test_series
     use hertzdamp_kinds, only: hertzdamp_rk
     use hertzdamp_testing, only: test_suite, new_suite
-    use hertzdamp_series, only: hertzdamp_series_eval, hertzdamp_pade_eval, hertzdamp_series_message, &
+    use hertzdamp_series, only: hertzdamp_series_eval, hertzdamp_pade_eval, &
+        hertzdamp_series_message, &
                                 hertzdamp_series_default_order, hertzdamp_series_max_order, &
                                 HERTZDAMP_SERIES_OK, HERTZDAMP_SERIES_INACCURATE, &
                                 HERTZDAMP_SERIES_OUT_OF_RANGE, HERTZDAMP_SERIES_BAD_ORDER
-    use hertzdamp_series_data, only: series_e, series_e_err, series_tau_c, series_z_max, series_tau_max
+    use hertzdamp_series_data, only: series_e, series_e_err, series_tau_c, series_z_max, &
+        series_tau_max
     use test_series_support, only: tr_residual, beta_ln_e, sensitivity_tolerance, reference_rk4
     use, intrinsic :: ieee_arithmetic, only: ieee_value, ieee_quiet_nan, ieee_is_finite
-    implicit none
+    implicit none (type, external)
     integer, parameter :: wp = hertzdamp_rk
     integer, parameter :: nmax = hertzdamp_series_max_order
     type(test_suite) :: s
@@ -320,11 +322,13 @@ program test_series
     tauc0 = 0.8_wp * zmax0 * gamma(0.4_wp) * gamma(0.5_wp) / gamma(0.9_wp)
     e1 = 0.8_wp * zmax0 * gamma(0.4_wp) * gamma(1.5_wp) / gamma(1.9_wp)
     call s%check_close(series_z_max(0), zmax0, 4 * epsilon(1.0_wp), 'z_max(0) = (5/4)^(2/5)')
-    call s%check_close(series_tau_c(0), tauc0, 4 * epsilon(1.0_wp), 'tau_c(0) = (4/5)(5/4)^(2/5) B(2/5,1/2)')
+    call s%check_close(series_tau_c(0), tauc0, 4 * epsilon(1.0_wp), &
+        'tau_c(0) = (4/5)(5/4)^(2/5) B(2/5,1/2)')
     call s%check_close(series_tau_max(0), tauc0 / 2, 4 * epsilon(1.0_wp), 'tau_max(0) = tau_c(0)/2')
     call s%check_close(series_e(0), 1.0_wp, 0.0_wp, 'e(0) = 1')
     call s%check_close(series_e(1), -e1, 4 * epsilon(1.0_wp), 'e_1 = -(4/5)(5/4)^(2/5) B(2/5,3/2)')
-    call s%check(series_e(1) < 0.0_wp .and. series_tau_c(1) > 0.0_wp, 'e decreases, tau_c increases at 0')
+    call s%check(series_e(1) < 0.0_wp .and. series_tau_c(1) > 0.0_wp, &
+        'e decreases, tau_c increases at 0')
 
     ! --- time reversal e(a) e(-a e(a)^(-1/5)) = 1, order by order
     res = tr_residual(series_e)
@@ -354,13 +358,17 @@ program test_series
             write (lab, '(a,f5.2,a,i0)') 'series alpha = ', al, ', order ', orders(j)
             call s%check(st == HERTZDAMP_SERIES_OK, trim(lab) // ': status')
             call s%check_close(e, re, 0.0_wp, trim(lab) // ': e', atol=ee + 10 * rerr + 1.0e-15_wp)
-            call s%check_close(tc, rt, 0.0_wp, trim(lab) // ': tau_c', atol=et + 10 * rerr + 4.0e-15_wp)
+            call s%check_close(tc, rt, 0.0_wp, trim(lab) // ': tau_c', &
+                atol=et + 10 * rerr + 4.0e-15_wp)
             if (abs(tc - rt) > 1.0e-13_wp) then
-                call s%check(et <= 100 * abs(tc - rt), trim(lab) // ': tau_c error estimate not too loose')
+                call s%check(et <= 100 * abs(tc - rt), &
+                    trim(lab) // ': tau_c error estimate not too loose')
             end if
             if (orders(j) == nmax) then
-                call s%check_close(zm, rz, 0.0_wp, trim(lab) // ': z_max', atol=10 * rerr + 1.0e-14_wp)
-                call s%check_close(tm, rm, 0.0_wp, trim(lab) // ': tau_max', atol=10 * rerr + 1.0e-13_wp)
+                call s%check_close(zm, rz, 0.0_wp, trim(lab) // ': z_max', &
+                    atol=10 * rerr + 1.0e-14_wp)
+                call s%check_close(tm, rm, 0.0_wp, trim(lab) // ': tau_max', &
+                    atol=10 * rerr + 1.0e-13_wp)
             end if
         end do
         ! the default order is accurate to 1e-12 here (its stated purpose)
@@ -384,20 +392,26 @@ program test_series
         call s%check_close(tc, rt, 1.0e-9_wp, trim(lab) // ': tau_c 1e-9', atol=10 * rerr)
         call s%check_close(zm, rz, 1.0e-12_wp, trim(lab) // ': z_max', atol=10 * rerr)
         call s%check_close(tm, rm, 1.0e-11_wp, trim(lab) // ': tau_max', atol=10 * rerr)
-        call s%check(abs(e - re) <= ee + 10 * rerr + 1.0e-14_wp, trim(lab) // ': e error estimate holds')
-        call s%check(abs(tc - rt) <= et + 10 * rerr + 1.0e-14_wp, trim(lab) // ': tau_c error estimate holds')
+        call s%check(abs(e - re) <= ee + 10 * rerr + 1.0e-14_wp, &
+            trim(lab) // ': e error estimate holds')
+        call s%check(abs(tc - rt) <= et + 10 * rerr + 1.0e-14_wp, &
+            trim(lab) // ': tau_c error estimate holds')
         ! the full-order series here: its error estimate must hold as well
         call hertzdamp_series_eval(al, e, tc, order=nmax, err_e=ee, err_tau=et)
-        call s%check(abs(e - re) <= ee + 10 * rerr + 1.0e-14_wp, trim(lab) // ': series e estimate holds')
-        call s%check(abs(tc - rt) <= et + 10 * rerr + 1.0e-14_wp, trim(lab) // ': series tau_c estimate holds')
+        call s%check(abs(e - re) <= ee + 10 * rerr + 1.0e-14_wp, &
+            trim(lab) // ': series e estimate holds')
+        call s%check(abs(tc - rt) <= et + 10 * rerr + 1.0e-14_wp, &
+            trim(lab) // ': series tau_c estimate holds')
     end do
 
     ! --- status handling, elemental use
     nan = ieee_value(1.0_wp, ieee_quiet_nan)
     call hertzdamp_series_eval(nan, e, tc, err_e=ee, status=st)
-    call s%check(st == HERTZDAMP_SERIES_OUT_OF_RANGE .and. e == 0.0_wp .and. tc == 0.0_wp, 'NaN alpha: status 2, zeros')
+    call s%check(st == HERTZDAMP_SERIES_OUT_OF_RANGE .and. e == 0.0_wp .and. tc == 0.0_wp, &
+        'NaN alpha: status 2, zeros')
     call hertzdamp_series_eval(0.9_wp, e, tc, status=st)
-    call s%check(st == HERTZDAMP_SERIES_INACCURATE .and. ieee_is_finite(e), 'alpha 0.9: status inaccurate')
+    call s%check(st == HERTZDAMP_SERIES_INACCURATE .and. ieee_is_finite(e), &
+        'alpha 0.9: status inaccurate')
     call hertzdamp_series_eval(1.2_wp, e, tc, status=st)
     call s%check(st == HERTZDAMP_SERIES_OUT_OF_RANGE, 'alpha 1.2: out of range')
     call hertzdamp_series_eval(0.1_wp, e, tc, order=nmax + 1, status=st)
@@ -410,7 +424,8 @@ program test_series
     call hertzdamp_series_eval(-0.3_wp, e, tc, status=st)
     call s%check(st == HERTZDAMP_SERIES_OK .and. e > 1.0_wp, 'negative alpha: e > 1')
     call hertzdamp_series_eval([0.1_wp, 0.2_wp, 0.3_wp], ea, ta, status=sta)
-    call s%check(all(sta == 0) .and. ea(1) > ea(2) .and. ea(2) > ea(3) .and. ta(1) < ta(2) .and. ta(2) < ta(3), &
+    call s%check(all(sta == 0) .and. ea(1) > ea(2) .and. ea(2) > ea(3) &
+                 .and. ta(1) < ta(2) .and. ta(2) < ta(3), &
                  'elemental call: e decreasing, tau_c increasing')
 
     call s%finish()

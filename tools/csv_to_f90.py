@@ -28,7 +28,7 @@ def fail(msg):
     sys.exit(1)
 
 
-def comment_lines(text, width=110):
+def comment_lines(text, width=96):
     """Fortran comment lines for one CSV comment, wrapped below 132 columns."""
     body = text.rstrip()
     if not body:
@@ -68,10 +68,11 @@ def main(argv):
     nrow = len(data)
 
     out = []
-    out.append("!> Constants generated from %s (module %s)." % (in_csv, module))
+    out.append("!> Constants generated from %s." % in_csv)
     out.append("!>")
     out.append("!> Generated from %s by" % in_csv)
-    out.append("!>   python3 tools/csv_to_f90.py %s %s %s %s" % (in_csv, out_f90, module, prefix))
+    out.append("!>   python3 tools/csv_to_f90.py %s %s \\" % (in_csv, out_f90))
+    out.append("!>       %s %s" % (module, prefix))
     out.append("!> Do not edit by hand: regenerate the CSV, then rerun the command above.")
     out.append("!> Each array holds one column; element i (0-based) is data row i.")
     out.append("!>")
@@ -80,7 +81,7 @@ def main(argv):
         out.extend(comment_lines(c))
     out.append("module %s" % module)
     out.append("    use hertzdamp_kinds, only: hertzdamp_rk")
-    out.append("    implicit none")
+    out.append("    implicit none (type, external)")
     out.append("    private")
     out.append("")
     out.append("    !> Number of rows of the table (arrays are indexed 0..%d)." % (nrow - 1))
@@ -108,7 +109,7 @@ def main(argv):
     out.append("end module %s" % module)
     text = "\n".join(out) + "\n"
     for ln in text.splitlines():
-        if len(ln) > 132:
+        if len(ln) > 132:   # Fortran free-form limit (source lines are kept below 100)
             fail("generated line longer than 132 characters: " + ln[:60])
     with open(out_f90, "w", encoding="utf-8", newline="\n") as f:
         f.write(text)

@@ -10,7 +10,7 @@ program gen_series
     use hertzdamp_gen_reference, only: reference_collision
     use hertzdamp_gen_pade, only: pade_study
     use, intrinsic :: iso_fortran_env, only: real64, output_unit, error_unit
-    implicit none
+    implicit none (type, external)
 
     integer, parameter :: dp = real64
     integer, parameter :: n = 24
@@ -48,23 +48,30 @@ program gen_series
     dz = real(ez, dp); dt = real(et, dp); de = real(ee, dp); dc = real(ec, dp)
 
     write (output_unit, '(a)') 'hertzdamp-gen-series: checks'
-    write (output_unit, '(a,es12.3)') '  z_max(0) - (5/4)^(2/5)        ', real(ra%z_max(0) - zmax0, dp)
-    write (output_unit, '(a,es12.3)') '  tau_c(0) - closed form        ', real(ra%tau_c(0) - tauc0, dp)
+    write (output_unit, '(a,es12.3)') '  z_max(0) - (5/4)^(2/5)        ', &
+        real(ra%z_max(0) - zmax0, dp)
+    write (output_unit, '(a,es12.3)') '  tau_c(0) - closed form        ', &
+        real(ra%tau_c(0) - tauc0, dp)
     write (output_unit, '(a,es12.3)') '  e_1 + e1 (closed form)        ', real(ra%e(1) + e1, dp)
-    write (output_unit, '(a,2es12.3)') '  start-series tail (runs A, B) ', real(ra%start_tail, dp), &
+    write (output_unit, '(a,2es12.3)') '  start-series tail (runs A, B) ', &
+        real(ra%start_tail, dp), &
         real(rb%start_tail, dp)
-    write (output_unit, '(a,2es12.3)') '  turning-point residual        ', real(ra%turn_residual, dp), &
+    write (output_unit, '(a,2es12.3)') '  turning-point residual        ', &
+        real(ra%turn_residual, dp), &
         real(rb%turn_residual, dp)
-    write (output_unit, '(a,2es12.3)') '  time-reversal residual        ', real(ra%reversal_residual, dp), &
+    write (output_unit, '(a,2es12.3)') '  time-reversal residual        ', &
+        real(ra%reversal_residual, dp), &
         real(rb%reversal_residual, dp)
     write (output_unit, '(a,2i6)') '  Taylor steps (runs A, B)      ', ra%nsteps, rb%nsteps
     write (output_unit, '(a)') '  n  e_n  |A-B|/|e_n|  tau_c_n  |A-B|/|tau_c_n|'
     do k = 0, n
-        write (output_unit, '(i4,4es14.5)') k, ce(k), real(abs(ra%e(k) - rb%e(k)), dp) / abs(ce(k)), &
+        write (output_unit, '(i4,4es14.5)') k, ce(k), real(abs(ra%e(k) - rb%e(k)), &
+            dp) / abs(ce(k)), &
             cc(k), real(abs(ra%tau_c(k) - rb%tau_c(k)), dp) / abs(cc(k))
     end do
 
-    open (newunit=u, file='data/series_coefficients.csv', status='replace', action='write', iostat=ios)
+    open (newunit=u, file='data/series_coefficients.csv', status='replace', action='write', &
+        iostat=ios)
     if (ios /= 0) then
         write (error_unit, '(a)') 'hertzdamp-gen-series: cannot open data/series_coefficients.csv'
         error stop 1
@@ -78,15 +85,18 @@ program gen_series
     write (u, '(a)') '#   e and tau_c from time reversal z_max(a) = e^(4/5) z_max(-a e^(-1/5)).'
     write (u, '(a,i0)') '# Settings: N = ', n
     write (u, '(a,f6.3,a,i0,a,f8.5,a,f6.3,a,i0,a,i0)') '#   run A: t0 = ', real(sa%t0, dp), &
-        ', start terms = ', sa%m_start, ', step = min(', real(sa%rho, dp), ' t, ', real(sa%hmax, dp), &
+        ', start terms = ', sa%m_start, ', step = min(', real(sa%rho, dp), ' t, ', &
+            real(sa%hmax, dp), &
         '), Taylor order = ', sa%k_time, ', steps = ', ra%nsteps
     write (u, '(a,f6.3,a,i0,a,f8.5,a,f6.3,a,i0,a,i0)') '#   run B: t0 = ', real(sb%t0, dp), &
-        ', start terms = ', sb%m_start, ', step = min(', real(sb%rho, dp), ' t, ', real(sb%hmax, dp), &
+        ', start terms = ', sb%m_start, ', step = min(', real(sb%rho, dp), ' t, ', &
+            real(sb%hmax, dp), &
         '), Taylor order = ', sb%k_time, ', steps = ', rb%nsteps
     write (u, '(a)') '# Values are run A rounded to double; *_err = |run A - run B| + 10 quad ulps'
     write (u, '(a)') '#   + half a double ulp: the estimated absolute error of the stored value.'
     write (u, '(a,es10.2,a,es10.2,a,es10.2,a,es10.2)') '# Largest relative err: z_max ', &
-        relmax(dz, cz), ', tau_max ', relmax(dt, ct), ', e ', relmax(de, ce), ', tau_c ', relmax(dc, cc)
+        relmax(dz, cz), ', tau_max ', relmax(dt, ct), ', e ', relmax(de, ce), ', tau_c ', &
+            relmax(dc, cc)
     write (u, '(a,es10.2,a,es10.2,a,es10.2,a,es10.2)') '# Largest relative |A-B|: z_max ', &
         abdiff(ra%z_max, rb%z_max), ', tau_max ', abdiff(ra%tau_max, rb%tau_max), ', e ', &
         abdiff(ra%e, rb%e), ', tau_c ', abdiff(ra%tau_c, rb%tau_c)

@@ -10,7 +10,7 @@
 module hertzdamp_gen_expand
     use hertzdamp_gen_jets, only: gk, jmul, jdiv, jexp, jlog, jcompose, jhorner, jshift, jconst
     use hertzdamp_gen_ode, only: start_series, time_coefficients, integrate_fixed
-    implicit none
+    implicit none (type, external)
     private
 
     !> Settings of one expansion run.

@@ -4,7 +4,7 @@
 !> a_0 + a_1 x + ... + a_n x^n; every operation is exact up to x^n (no
 !> truncation error, only rounding).  Used by the series generator only.
 module hertzdamp_gen_jets
-    implicit none
+    implicit none (type, external)
     private
 
     !> Real kind of the generator: IEEE quadruple precision (113-bit mantissa).

@@ -6,7 +6,7 @@
 !> values).
 module hertzdamp_gen_ode
     use hertzdamp_gen_jets, only: gk, jmul, jdiv, jpow, jconst
-    implicit none
+    implicit none (type, external)
     private
 
     public :: start_series, time_coefficients, taylor_step, integrate_fixed

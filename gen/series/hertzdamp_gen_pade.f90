@@ -5,7 +5,7 @@ module hertzdamp_gen_pade
     use hertzdamp_gen_expand, only: expand_result
     use hertzdamp_gen_reference, only: reference_collision
     use, intrinsic :: iso_fortran_env, only: real64, output_unit
-    implicit none
+    implicit none (type, external)
     private
 
     integer, parameter :: dp = real64
@@ -14,9 +14,10 @@ module hertzdamp_gen_pade
         !> LAPACK: solve A X = B by LU with partial pivoting.
         subroutine dgesv(n, nrhs, a, lda, ipiv, b, ldb, info)
             import :: real64
+            implicit none (type, external)
             integer, intent(in) :: n, nrhs, lda, ldb
-            real(real64), intent(inout) :: a(lda, *), b(ldb, *)
-            integer, intent(out) :: ipiv(*), info
+            real(real64), intent(inout) :: a(lda, n), b(ldb, nrhs)
+            integer, intent(out) :: ipiv(n), info
         end subroutine dgesv
     end interface
 
@@ -92,7 +93,8 @@ contains
         real(dp) :: c(0:n, 4), cerr(0:n, 4)
         real(dp) :: tab(0:le, ncol), errmax(4), errest(4), errmax2(4), errx(4), qmin(4), v1, v2, xx
         integer :: ldeg(4), ldeg2(4)
-        character(len=8), parameter :: qname(4) = [character(len=8) :: 'e', 'tau_c', 'z_max', 'tau_max']
+        character(len=8), parameter :: qname(4) = [character(len=8) :: 'e', 'tau_c', &
+            'z_max', 'tau_max']
         logical :: ok, allok
         integer :: i, k, iq, info, u
         allok = .true.
@@ -114,14 +116,18 @@ contains
         c(:, 3) = real(r%z_max, dp); c(:, 4) = real(r%tau_max, dp)
         cerr(:, 1) = real(ee, dp); cerr(:, 2) = real(ec, dp)
         cerr(:, 3) = real(ez, dp); cerr(:, 4) = real(et, dp)
-        write (output_unit, '(a)') 'truncated series vs reference (relative error of e, tau_c, z_max, tau_max):'
+        write (output_unit, &
+            '(a)') 'truncated series vs reference (relative error of e, tau_c, z_max, tau_max):'
         do i = 1, ng, 10
-            write (output_unit, '(f6.2,4es12.3)') x(i), (abs(poly(c(:, iq), x(i)) / ref(i, iq) - 1), iq = 1, 4)
+            write (output_unit, '(f6.2,4es12.3)') x(i), (abs(poly(c(:, iq), x(i)) / ref(i, &
+                iq) - 1), iq = 1, 4)
         end do
-        write (output_unit, '(a)') 'Pade [l/l] of the plain series in alpha, max relative error on [0, 0.8]:'
+        write (output_unit, &
+            '(a)') 'Pade [l/l] of the plain series in alpha, max relative error on [0, 0.8]:'
         write (output_unit, '(a)') '   l     e          tau_c      z_max      tau_max'
         do k = 5, n / 2
-            write (output_unit, '(i4,4es11.2)') k, (maxerr(c(:, iq), k, ref(1:ng, iq), x(1:ng)), iq = 1, 4)
+            write (output_unit, '(i4,4es11.2)') k, (maxerr(c(:, iq), k, ref(1:ng, iq), &
+                x(1:ng)), iq = 1, 4)
         end do
         ! chosen approximants: primary [l/l], secondary [l-1/l-1] for the error estimate
         ldeg = [le, le, lz, lz]
@@ -153,13 +159,15 @@ contains
             qmin(iq) = 2.0_dp
             do i = 0, 20000
                 xx = 2.0_dp * i / 20000
-                if (poly(tab(:, 4 * iq - 2), xx) <= 0.0_dp .or. poly(tab(:, 4 * iq), xx) <= 0.0_dp) then
+                if (poly(tab(:, 4 * iq - 2), xx) <= 0.0_dp .or. poly(tab(:, 4 * iq), &
+                    xx) <= 0.0_dp) then
                     qmin(iq) = xx
                     exit
                 end if
             end do
         end do
-        write (output_unit, '(a)') 'chosen Pade approximants (max rel err on [0,0.8]; estimate; secondary; [0.8,1.1]; first pole):'
+        write (output_unit, &
+            '(a)') 'chosen Pade approximants (max rel err on [0,0.8]; estimate; secondary; [0.8,1.1]; first pole):'
         do iq = 1, 4
             write (output_unit, '(a8,2(a,i0),5es11.2)') qname(iq), ' [', ldeg(iq), '/', ldeg(iq), &
                 errmax(iq), errest(iq), errmax2(iq), errx(iq), qmin(iq)
@@ -175,9 +183,11 @@ contains
         write (u, '(a)') '# Columns <q>_num, <q>_den: primary [L/L]; <q>_num2, <q>_den2: secondary [L-1/L-1]'
         write (u, '(a)') '#   (their difference is the run-time error estimate).  Rows are k = 0..12, zero padded.'
         do iq = 1, 4
-            write (u, '(a,a8,a,i0,a,i0,a,i0,a,i0,a,es9.2,a,es9.2,a,es9.2,a,es9.2)') '# ', qname(iq), &
+            write (u, '(a,a8,a,i0,a,i0,a,i0,a,i0,a,es9.2,a,es9.2,a,es9.2,a,es9.2)') '# ', &
+                qname(iq), &
                 ': [', ldeg(iq), '/', ldeg(iq), '] and [', ldeg2(iq), '/', ldeg2(iq), &
-                '], max rel err vs reference on [0,0.8]: ', errmax(iq), ' (secondary ', errmax2(iq), &
+                '], max rel err vs reference on [0,0.8]: ', errmax(iq), ' (secondary ', &
+                    errmax2(iq), &
                 '), max |P1/P2-1| ', errest(iq), ', on [0.8,1.1]: ', errx(iq)
         end do
         write (u, '(a)') '# Reference: jet-free quad-precision Taylor integration with local series at both'

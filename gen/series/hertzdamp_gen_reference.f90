@@ -11,7 +11,7 @@
 module hertzdamp_gen_reference
     use hertzdamp_gen_jets, only: gk
     use hertzdamp_gen_ode, only: start_series, time_coefficients, taylor_step
-    implicit none
+    implicit none (type, external)
     private
 
     public :: reference_collision

@@ -125,17 +125,16 @@ contains
         integer, intent(in) :: kmax         !! Taylor order in time
         integer, intent(out) :: nsteps      !! steps taken
         real(gk) :: t, h
+        logical :: last
         t = t0
         nsteps = 0
-        do while (t < t1)
+        last = .false.
+        do while (.not. last)
             h = min(rho * t, hmax)
-            if (t + h >= t1 - 1.0e-3_gk * h) h = t1 - t
+            last = t + h >= t1 - 1.0e-3_gk * h
+            if (last) h = t1 - t
             call taylor_step(a, z, v, h, kmax)
-            if (h == t1 - t) then
-                t = t1
-            else
-                t = t + h
-            end if
+            t = t + h
             nsteps = nsteps + 1
         end do
     end subroutine integrate_fixed

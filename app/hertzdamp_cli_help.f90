@@ -10,7 +10,11 @@ module hertzdamp_cli_help
     character(len=*), parameter :: common_opts = &
         '  --end overlap|force   contact-end definition: overlap returns to zero (default),' // nl // &
         '                        or the total contact force returns to zero' // nl // &
-        '  --method M            rk45 (reference integrator, default)' // nl // &
+        '  --method M            rk45 (reference integrator, default), series (Taylor' // nl // &
+        '                        series in alpha, overlap only, |alpha| < 1), pade (Pade' // nl // &
+        '                        summation of the series, overlap only, 0 <= alpha <= 0.8)' // nl // &
+        '  --order N             series truncation order, 0..24 (default 13: 1e-12 at' // nl // &
+        '                        alpha <= 0.2)' // nl // &
         '  --tol T               rk45 tolerance, 1e-15 <= T <= 1e-2 (default 1e-13)' // nl // &
         '  --format F            text (aligned, default), csv or json' // nl // &
         '  --help                this text'

@@ -3,7 +3,8 @@ module hertzdamp_cmd_basic
     use hertzdamp, only: hertzdamp_rk, hertzdamp_collision, hertzdamp_forward_alpha, hertzdamp_forward_dim, &
                          hertzdamp_method_names, hertzdamp_message, hertzdamp_alpha_c, hertzdamp_tau_c0, &
                          hertzdamp_z_max0, hertzdamp_e1, hertzdamp_rk45_default_tol, hertzdamp_end_name, &
-                         HD_OK, HD_NO_REBOUND, HD_END_OVERLAP, HD_METHOD_RK45
+                         hertzdamp_series_default_order, &
+                         HD_OK, HD_NO_REBOUND, HD_END_OVERLAP, HD_METHOD_RK45, HD_METHOD_SERIES, HD_METHOD_PADE
     use hertzdamp_cli, only: cli_args, cli_buffer, parse_args, parse_real, parse_real_list, parse_range, &
                              parse_choice, parse_int, fail, quit, EXIT_USAGE, EXIT_OK, EXIT_FAILURE, fmt_csv
     use hertzdamp_cli_output, only: out_table, format_choices
@@ -53,7 +54,14 @@ contains
             end if
             if (c%method /= HD_METHOD_RK45) call fail(EXIT_USAGE, '--tol applies to --method rk45 only')
         end if
-        if (args%has('--order')) c%order = parse_int(args%get('--order', ''), '--order')
+        if (args%has('--order')) then
+            c%order = parse_int(args%get('--order', ''), '--order')
+            if (c%method /= HD_METHOD_SERIES) call fail(EXIT_USAGE, '--order applies to --method series only')
+        end if
+        if ((c%method == HD_METHOD_SERIES .or. c%method == HD_METHOD_PADE) .and. c%iend /= HD_END_OVERLAP) then
+          call fail(EXIT_USAGE, 'method ' // c%method_name // ' supports the overlap definition only: ' // &
+                      'the force definition is not analytic at alpha = 0 (see doc/series.md)')
+        end if
     end subroutine parse_common
 
     subroutine cmd_table()
@@ -91,6 +99,7 @@ contains
         call t%meta('end', hertzdamp_end_name(c%iend))
         call t%meta('method', c%method_name)
         if (c%method == HD_METHOD_RK45) call t%meta('tol', c%tol_text)
+        if (c%method == HD_METHOD_SERIES) call t%meta('order', order_text(c%order))
         do i = 1, size(r)
             call t%num(alpha(i))
             call t%num(r(i)%e)
@@ -141,6 +150,19 @@ contains
         call buf%flush_to_stdout()
         call quit(EXIT_OK)
     end subroutine cmd_forward
+
+    !> The series order as printed: the given one or the library default.
+    function order_text(order) result(txt)
+        integer, intent(in) :: order
+        character(len=:), allocatable :: txt
+        character(len=12) :: buf
+        if (order >= 0) then
+            write (buf, '(i0)') order
+        else
+            write (buf, '(i0,a)') hertzdamp_series_default_order, ' (default)'
+        end if
+        txt = trim(buf)
+    end function order_text
 
     !> A required numeric option.
     real(wp) function required(args, key) result(x)

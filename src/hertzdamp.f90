@@ -8,6 +8,7 @@ module hertzdamp
     use hertzdamp_scaling
     use hertzdamp_constants
     use hertzdamp_rk45
+    use hertzdamp_series
     use hertzdamp_methods
     implicit none
     public

@@ -3,7 +3,10 @@
 !> (k, d, m, u_in) -> (alpha, t*, e, T_c, zeta_max).
 module hertzdamp_methods
     use hertzdamp_kinds, only: hertzdamp_rk
-    use hertzdamp_status, only: HD_OK, HD_NO_REBOUND, HD_NOT_SUPPORTED, HD_BAD_ARGUMENT, HD_OUT_OF_RANGE
+    use hertzdamp_status, only: HD_OK, HD_NO_REBOUND, HD_NOT_SUPPORTED, HD_BAD_ARGUMENT, HD_OUT_OF_RANGE, &
+                                HD_END_OVERLAP, HD_END_FORCE, HD_OUTSIDE_VALIDITY, HD_BAD_ORDER, HD_BAD_END
+    use hertzdamp_series, only: hertzdamp_series_eval, hertzdamp_pade_eval, HERTZDAMP_SERIES_OK, &
+                                HERTZDAMP_SERIES_INACCURATE, HERTZDAMP_SERIES_BAD_ORDER
     use hertzdamp_scaling, only: hertzdamp_reduce
     use hertzdamp_rk45, only: hertzdamp_collision, hertzdamp_rk45_collide, hertzdamp_rk45_default_tol
     use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
@@ -35,16 +38,43 @@ contains
         integer, intent(in), optional :: order   !! series truncation order
         type(hertzdamp_collision) :: res
         real(wp) :: tol_
+        integer :: st
         tol_ = hertzdamp_rk45_default_tol
         if (present(tol)) tol_ = tol
         select case (method)
         case (HD_METHOD_RK45)
             res = hertzdamp_rk45_collide(alpha, iend, tol_)
-        case (HD_METHOD_SERIES, HD_METHOD_PADE, HD_METHOD_COMPACT, HD_METHOD_FIT)
+        case (HD_METHOD_SERIES, HD_METHOD_PADE)
+            res%alpha = alpha
+            res%iend = iend
+            if (iend /= HD_END_OVERLAP) then
+                ! the force definition is not analytic at alpha = 0 (doc/series.md)
+                res%status = merge(HD_NOT_SUPPORTED, HD_BAD_END, iend == HD_END_FORCE)
+                return
+            end if
+            if (method == HD_METHOD_SERIES) then
+                call hertzdamp_series_eval(alpha, res%e, res%tau_c, res%z_max, res%tau_max, order=order, status=st)
+            else
+                call hertzdamp_pade_eval(alpha, res%e, res%tau_c, res%z_max, res%tau_max, status=st)
+            end if
+            select case (st)
+            case (HERTZDAMP_SERIES_OK, HERTZDAMP_SERIES_INACCURATE)
+                res%status = HD_OK
+            case (HERTZDAMP_SERIES_BAD_ORDER)
+                res%status = HD_BAD_ORDER
+            case default
+                res%status = HD_OUTSIDE_VALIDITY
+            end select
+            if (res%status /= HD_OK) then
+                res%e = 0.0_wp
+                res%tau_c = 0.0_wp
+                res%z_max = 0.0_wp
+                res%tau_max = 0.0_wp
+            end if
+        case (HD_METHOD_COMPACT, HD_METHOD_FIT)
             res%alpha = alpha
             res%iend = iend
             res%status = HD_NOT_SUPPORTED
-            if (present(order)) res%status = HD_NOT_SUPPORTED
         case default
             res%alpha = alpha
             res%iend = iend

@@ -26,6 +26,7 @@ module hertzdamp_status
     integer, parameter, public :: HD_BAD_ORDER = 16        !! series order outside the stored range
     integer, parameter, public :: HD_BAD_KPHYS = 17        !! physical stiffness bound not finite and positive
     integer, parameter, public :: HD_BAD_ARGUMENT = 18     !! any other invalid argument
+    integer, parameter, public :: HD_OUTSIDE_VALIDITY = 19 !! alpha outside the range where the method is valid
 
     !> Contact ends when the overlap returns to zero (default).
     integer, parameter, public :: HD_END_OVERLAP = 0
@@ -62,6 +63,8 @@ contains
         case (HD_BAD_ORDER); msg = 'invalid series order: outside the stored range'
         case (HD_BAD_KPHYS); msg = 'invalid physical stiffness bound k_phys: must be finite and positive'
         case (HD_BAD_ARGUMENT); msg = 'invalid argument'
+        case (HD_OUTSIDE_VALIDITY); msg = 'alpha outside the validity range of the method ' // &
+            '(series: |alpha| < 1; pade: 0 <= alpha <= 0.8); use rk45 or fit'
         case default; msg = 'unknown status code'
         end select
     end function hertzdamp_message

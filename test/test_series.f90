@@ -18,6 +18,7 @@ module test_series_support
         !> A map from a coefficient vector to a coefficient vector of equal length.
         pure function jet_map(c) result(r)
             import :: wp
+            implicit none
             real(wp), intent(in) :: c(0:)
             real(wp) :: r(0:ubound(c, 1))
         end function jet_map

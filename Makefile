@@ -16,7 +16,7 @@ RELEASE_FLAGS := -O3 -march=x86-64-v2 -funroll-loops -fPIC
 TEST_FLAGS := -O2 -g -fPIC -fopenmp -Wall -Wextra -Wimplicit-interface -std=f2018 -fcheck=bounds,do,pointer -fbacktrace
 TEST_LINK := -fopenmp
 
-.PHONY: all deps run test build install clean lint
+.PHONY: all deps run test build install clean lint series-data series-source
 
 all: build
 
@@ -54,6 +54,16 @@ test: deps
 	@$(FPM) build --tests --flag "$(TEST_FLAGS)" --link-flag "$(TEST_LINK)"
 	@$(FPM) build --flag "$(RELEASE_FLAGS)"
 	@bash test/run_tests.sh "$(FPM)" "$(TEST_FLAGS)" "$(RELEASE_FLAGS)" "$(TEST_LINK)"
+
+# ---------------------------------------------------------------- generated tables
+# Series coefficients: the generator writes data/*.csv, the converter turns them into
+# Fortran source.  `make test` checks that both are in sync (test/sync_series.sh).
+series-data: deps
+	$(FPM) run hertzdamp-gen-series --flag "$(RELEASE_FLAGS)" -- data
+
+series-source:
+	$(PYTHON) tools/csv_to_f90.py data/series_coefficients.csv src/hertzdamp_series_data.f90 hertzdamp_series_data series
+	$(PYTHON) tools/csv_to_f90.py data/pade_coefficients.csv src/hertzdamp_pade_data.f90 hertzdamp_pade_data pade
 
 # ---------------------------------------------------------------- install
 install: build

@@ -19,8 +19,18 @@ program gen_series
     real(gk) :: zmax0, tauc0, e1
     real(gk), dimension(0:n) :: ez, et, ee, ec
     real(dp), dimension(0:n) :: cz, ct, ce, cc, dz, dt, de, dc
-    integer :: k, u, ios
+    integer :: k, u, ios, larg
+    character(len=:), allocatable :: outdir
     character(len=*), parameter :: fmt_row = '(i0,8(",",es25.17))'
+
+    ! optional argument: output directory (default data/, relative to the repository root)
+    outdir = 'data'
+    if (command_argument_count() >= 1) then
+        call get_command_argument(1, length=larg)
+        deallocate (outdir)
+        allocate (character(len=larg) :: outdir)
+        call get_command_argument(1, outdir)
+    end if
 
     sa%n = n
     sa%t0 = 0.1_gk
@@ -70,10 +80,10 @@ program gen_series
             cc(k), real(abs(ra%tau_c(k) - rb%tau_c(k)), dp) / abs(cc(k))
     end do
 
-    open (newunit=u, file='data/series_coefficients.csv', status='replace', action='write', &
+    open (newunit=u, file=outdir // '/series_coefficients.csv', status='replace', action='write', &
         iostat=ios)
     if (ios /= 0) then
-        write (error_unit, '(a)') 'hertzdamp-gen-series: cannot open data/series_coefficients.csv'
+        write (error_unit, '(a)') 'hertzdamp-gen-series: cannot open ' // outdir // '/series_coefficients.csv'
         error stop 1
     end if
     write (u, '(a)') '# Taylor coefficients at alpha = 0:  q(alpha) = sum_n q_n alpha^n'
@@ -106,9 +116,9 @@ program gen_series
         write (u, fmt_row) k, cz(k), dz(k), ct(k), dt(k), ce(k), de(k), cc(k), dc(k)
     end do
     close (u)
-    write (output_unit, '(a)') 'wrote data/series_coefficients.csv'
+    write (output_unit, '(a)') 'wrote ' // outdir // '/series_coefficients.csv'
 
-    call pade_study(n, ra, ee, ec, ez, et)
+    call pade_study(n, ra, ee, ec, ez, et, outdir)
 
 contains
 

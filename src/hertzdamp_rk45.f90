@@ -37,6 +37,8 @@ module hertzdamp_rk45
     real(wp), parameter, public :: hertzdamp_rk45_default_tol = 1.0e-13_wp
     !> Smallest alpha accepted for the overlap definition (energy-injecting contacts).
     real(wp), parameter, public :: hertzdamp_alpha_min = -10.0_wp
+    !> Largest alpha accepted (beyond it z_max ~ 1/alpha leaves the exponent range).
+    real(wp), parameter, public :: hertzdamp_alpha_max = 1.0e100_wp
 
     !> Right-hand sides the stepper knows (no callbacks: the hot loop stays inlinable).
     integer, parameter, public :: HD_MODEL_HERTZ = 0   !! z'' + alpha z' + sign(z)|z|^(3/2) = 0
@@ -59,6 +61,13 @@ module hertzdamp_rk45
         real(wp) :: atol = 1.0e-30_wp * hertzdamp_rk45_default_tol !! absolute tolerance per step (tiny: relative control)
         integer :: max_steps = 100000                          !! step guard (accepted + rejected)
     end type hertzdamp_rk45_options
+
+    !> Local series at a zero of the overlap (see hertzdamp_local_series).
+    type, public :: hertzdamp_local_series_t
+        integer :: kmax = 0                   !! highest power kept
+        real(wp) :: kappa = 1.0_wp            !! scale of sqrt(s) in the powers
+        real(wp) :: p(0:40) = 0.0_wp          !! coefficients
+    end type hertzdamp_local_series_t
 
     !> Result of one collision in similarity variables.
     type, public :: hertzdamp_collision
@@ -169,49 +178,54 @@ contains
     ! ------------------------------------------------------------------ local series
 
     !> Coefficients of the local series at a zero of u:  u'' + a u' + u^(3/2) = 0,
-    !> u(0) = 0, u'(0) = c > 0 has  u(s) = s sum_{k>=0} p_k s^(k/2).
+    !> u(0) = 0, u'(0) = c > 0 has  u(s) = s sum_{k>=0} p_k (kappa sqrt(s))^k  with the
+    !> scale kappa = max(1, sqrt|a|) (keeps the p_k of order one for strong damping).
     !> p_0 = c, p_1 = 0 and, with q = p^(3/2) (power-series power rule),
-    !> p_{m+2} = -(a p_m (1 + m/2) + q_{m-3}) / (((m+4)/2) ((m+2)/2)).
-    pure subroutine hertzdamp_local_series(a, c, kmax, p)
+    !> p_{m+2} = -((a/kappa^2) p_m (1 + m/2) + q_{m-3} / kappa^5) / (((m+4)/2) ((m+2)/2)).
+    pure subroutine hertzdamp_local_series(a, c, kmax, ser)
         real(wp), intent(in) :: a          !! damping coefficient of the ODE
         real(wp), intent(in) :: c          !! velocity at the zero, > 0
-        integer, intent(in) :: kmax        !! highest index computed
-        real(wp), intent(out) :: p(0:kmax) !! the coefficients
-        real(wp) :: q(0:kmax), acc
-        integer :: k, j, m
-        p = 0.0_wp
+        integer, intent(in) :: kmax        !! highest index computed (<= 40)
+        type(hertzdamp_local_series_t), intent(out) :: ser !! the coefficients and the scale
+        real(wp) :: q(0:kmax_series), acc, ak, k5
+        integer :: k, j, m, kk
+        kk = min(kmax, kmax_series)
+        ser%kmax = kk
+        ser%kappa = max(1.0_wp, sqrt(abs(a)))
+        ak = a / ser%kappa**2
+        k5 = 1.0_wp / ser%kappa**5
+        ser%p = 0.0_wp
         q = 0.0_wp
-        p(0) = c
+        ser%p(0) = c
         q(0) = c * sqrt(c)
-        do k = 1, kmax
+        do k = 1, kk
             m = k - 2
             if (k >= 2) then
-                acc = a * p(m) * (1.0_wp + 0.5_wp * m)
-                if (k >= 5) acc = acc + q(k - 5)
-                p(k) = -acc / (0.25_wp * (k + 2) * k)
+                acc = ak * ser%p(m) * (1.0_wp + 0.5_wp * m)
+                if (k >= 5) acc = acc + q(k - 5) * k5
+                ser%p(k) = -acc / (0.25_wp * (k + 2) * k)
             end if
             acc = 0.0_wp
             do j = 1, k
-                acc = acc + (1.5_wp * j - (k - j)) * p(j) * q(k - j)
+                acc = acc + (1.5_wp * j - (k - j)) * ser%p(j) * q(k - j)
             end do
-            q(k) = acc / (k * p(0))
+            q(k) = acc / (k * ser%p(0))
         end do
     end subroutine hertzdamp_local_series
 
     !> Value and first derivative of the local series at s >= 0: (u(s), u'(s)).
-    pure function hertzdamp_series_state(p, kmax, s) result(y)
-        integer, intent(in) :: kmax        !! highest index in p
-        real(wp), intent(in) :: p(0:kmax)  !! coefficients from hertzdamp_local_series
+    pure function hertzdamp_series_state(ser, s) result(y)
+        type(hertzdamp_local_series_t), intent(in) :: ser !! from hertzdamp_local_series
         real(wp), intent(in) :: s          !! time from the zero of u
         real(wp) :: y(2)
         real(wp) :: r, su, sd
         integer :: k
-        r = sqrt(s)
-        su = p(kmax)
-        sd = p(kmax) * (1.0_wp + 0.5_wp * kmax)
-        do k = kmax - 1, 0, -1
-            su = su * r + p(k)
-            sd = sd * r + p(k) * (1.0_wp + 0.5_wp * k)
+        r = ser%kappa * sqrt(s)
+        su = ser%p(ser%kmax)
+        sd = ser%p(ser%kmax) * (1.0_wp + 0.5_wp * ser%kmax)
+        do k = ser%kmax - 1, 0, -1
+            su = su * r + ser%p(k)
+            sd = sd * r + ser%p(k) * (1.0_wp + 0.5_wp * k)
         end do
         y(1) = s * su
         y(2) = sd
@@ -262,8 +276,8 @@ contains
         type(hertzdamp_rk45_options), intent(in) :: opts !! tolerances and step guard
         type(hertzdamp_collision), intent(out) :: res    !! e, tau_c, z_max, tau_max, status, stats
 
-        real(wp) :: p(0:kmax_series)
-        real(wp) :: t, h, hnew, y(2), k1(2), ynew(2), k7(2), errv(2), cont(2, 5)
+        type(hertzdamp_local_series_t) :: ser
+        real(wp) :: t, h, hnew, hmax, y(2), k1(2), ynew(2), k7(2), errv(2), cont(2, 5)
         real(wp) :: sc(2), err, facold, fac11, fac, tscale, sigma_sw, theta_tp, th_g, th_f
         real(wp) :: tp(3), yc(2)
         integer :: kmax, phase, ntry, status, model
@@ -279,7 +293,8 @@ contains
             res%status = HD_BAD_ALPHA
             return
         end if
-        if (alpha < hertzdamp_alpha_min .or. (iend == HD_END_FORCE .and. alpha < 0.0_wp)) then
+        if (alpha < hertzdamp_alpha_min .or. alpha > hertzdamp_alpha_max .or. &
+            (iend == HD_END_FORCE .and. alpha < 0.0_wp)) then
             res%status = HD_BAD_ALPHA
             return
         end if
@@ -292,12 +307,17 @@ contains
         ! start from the local series
         kmax = series_terms(opts%rtol)
         tscale = sigma_fraction * min(1.0_wp, 1.0_wp / max(abs(alpha), tiny(1.0_wp)))
-        call hertzdamp_local_series(alpha, 1.0_wp, kmax, p)
+        call hertzdamp_local_series(alpha, 1.0_wp, kmax, ser)
         t = tscale
-        y = hertzdamp_series_state(p, kmax, t)
+        y = hertzdamp_series_state(ser, t)
         k1 = rhs(HD_MODEL_HERTZ, alpha, y)
         res%stats%rhs_evals = 1
         h = tscale
+        ! Strong damping makes the problem stiff: keep alpha h inside the real stability
+        ! interval of Dormand-Prince (about [-3.3, 0]) so that the fast mode decays
+        ! instead of being carried at the stability limit at loose tolerances.
+        hmax = huge(1.0_wp)
+        if (alpha > 1.0_wp) hmax = 2.0_wp / alpha
         facold = 1.0e-4_wp
         phase = 1
         model = HD_MODEL_HERTZ
@@ -406,7 +426,7 @@ contains
             t = t + h
             y = ynew
             k1 = k7
-            h = hnew
+            h = min(hnew, hmax)
         end do
     end subroutine hertzdamp_rk45_solve
 
@@ -551,7 +571,8 @@ contains
         logical, intent(in) :: force
         integer, intent(in) :: kmax
         type(hertzdamp_collision), intent(inout) :: res
-        real(wp) :: p(0:kmax), c, sigma, w(2), r1, r2, dd, j11, j12, j21, j22, dc, ds, w1
+        type(hertzdamp_local_series_t) :: ser
+        real(wp) :: c, sigma, w(2), r1, r2, dd, j11, j12, j21, j22, dc, ds, w1
         real(wp) :: x, lo, hi, phi, dphi, wx(2)
         integer :: it
         w1 = -y(2)
@@ -560,8 +581,8 @@ contains
         c = max(w1 - alpha * y(1), 0.5_wp * w1)
         sigma = y(1) / c
         do it = 1, 60
-            call hertzdamp_local_series(-alpha, c, kmax, p)
-            w = hertzdamp_series_state(p, kmax, sigma)
+            call hertzdamp_local_series(-alpha, c, kmax, ser)
+            w = hertzdamp_series_state(ser, sigma)
             r1 = w(1) - y(1)
             r2 = w(2) - w1
             ! Jacobian: d/dsigma exact, d/dc from the degree-1 homogeneity of the linear part
@@ -579,7 +600,7 @@ contains
             if (abs(ds) <= 4.0_wp * epsilon(1.0_wp) * sigma .and. abs(dc) <= 4.0_wp * epsilon(1.0_wp) * c) exit
         end do
         if (it > 60) return
-        call hertzdamp_local_series(-alpha, c, kmax, p)
+        call hertzdamp_local_series(-alpha, c, kmax, ser)
         if (.not. force) then
             res%tau_c = t + sigma
             res%e = c
@@ -589,11 +610,11 @@ contains
         ! force definition: alpha w'(x) = w(x)^(3/2) for x in (0, sigma), safeguarded Newton
         lo = 0.0_wp
         hi = sigma
-        wx = hertzdamp_series_state(p, kmax, hi)
+        wx = hertzdamp_series_state(ser, hi)
         if (alpha * wx(2) - wx(1) * sqrt(wx(1)) > 0.0_wp) return  ! event before the switch point
         x = min(sigma, (alpha * c)**(2.0_wp / 3.0_wp) / c)
         do it = 1, 100
-            wx = hertzdamp_series_state(p, kmax, x)
+            wx = hertzdamp_series_state(ser, x)
             phi = alpha * wx(2) - wx(1) * sqrt(wx(1))
             if (phi > 0.0_wp) then
                 lo = x
@@ -613,7 +634,7 @@ contains
             end if
             x = dd
         end do
-        wx = hertzdamp_series_state(p, kmax, x)
+        wx = hertzdamp_series_state(ser, x)
         res%tau_c = t + sigma - x
         res%e = wx(2)
         res%status = HD_OK

@@ -47,8 +47,8 @@ contains
             '(e = 0, contact time infinite)'
         case (HD_MAX_STEPS); msg = 'integrator reached its maximum number of steps'
         case (HD_STEP_UNDERFLOW); msg = 'integrator step size collapsed below round-off'
-        case (HD_BAD_ALPHA); msg = 'invalid damping parameter alpha: must be finite, >= 0 for the force ' // &
-            'definition and > -20 for the overlap definition'
+        case (HD_BAD_ALPHA); msg = 'invalid damping parameter alpha: must be finite, at most 1e100, >= 0 ' // &
+            'for the force definition and >= -10 for the overlap definition'
         case (HD_BAD_END); msg = 'invalid contact-end definition: use 0 (overlap) or 1 (force)'
         case (HD_BAD_TOL); msg = 'invalid tolerance: must lie in [1e-15, 1e-2]'
         case (HD_BAD_MASS); msg = 'invalid mass: must be finite and positive'

@@ -10,6 +10,7 @@ module hertzdamp
     use hertzdamp_rk45
     use hertzdamp_series
     use hertzdamp_methods
+    use hertzdamp_inverse
     implicit none
     public
 end module hertzdamp

@@ -5,7 +5,7 @@
 set -u
 fpm=$1; test_flags=$2; release_flags=$3; test_link=${4:-}
 cd "$(dirname "$0")/.."
-export HERTZDAMP_FPM=$fpm HERTZDAMP_RELEASE_FLAGS=$release_flags
+export HERTZDAMP_FPM=$fpm HERTZDAMP_RELEASE_FLAGS=$release_flags   # for scripts that build
 export HERTZDAMP_BIN=$("$fpm" run hertzdamp --flag "$release_flags" --runner echo 2>/dev/null | tail -n 1)
 passed=0; failed=0
 log=$(mktemp); trap 'rm -f "$log"' EXIT

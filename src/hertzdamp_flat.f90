@@ -1,0 +1,69 @@
+!> The flat entry points behind the legacy Fortran (`hertzdamp_legacy.f90`) and C
+!> (`hertzdamp_capi`) interfaces: one place that fixes the method they use and how a
+!> failure is reported, so that both interfaces give bit-identical numbers.
+!>
+!> Everything here needs only the Fortran runtime (no GSL, no LAPACK).
+module hertzdamp_flat
+    use hertzdamp_kinds, only: hertzdamp_rk
+    use hertzdamp_status, only: HD_OK, HD_NO_REBOUND
+    use hertzdamp_methods, only: hertzdamp_forward_dim, HD_METHOD_RK45
+    use hertzdamp_inverse, only: mod_invert => hertzdamp_invert
+    implicit none
+    private
+
+    integer, parameter :: wp = hertzdamp_rk
+
+    !> The method of every legacy and C entry point (forward and inverse).
+    !> TEMPORARY: HD_METHOD_RK45 until the fit method is wired into hertzdamp_forward_dim;
+    !> set back to HD_METHOD_FIT on merge (revert this commit).
+    integer, parameter, public :: legacy_method = HD_METHOD_RK45
+
+    public :: flat_invert, flat_forward
+
+contains
+
+    !> k and d for target restitution e and contact time tc (THEORY.md section 6).
+    !> On failure k = d = 0 and status names the bad argument.
+    pure elemental subroutine flat_invert(e, tc, m, u, iend, k, d, status)
+        real(wp), intent(in) :: e        !! target restitution coefficient, in (0, 1]
+        real(wp), intent(in) :: tc       !! target contact time [s]
+        real(wp), intent(in) :: m        !! effective mass [kg]
+        real(wp), intent(in) :: u        !! impact velocity [m s^-1]
+        integer, intent(in) :: iend      !! 0 overlap, 1 force
+        real(wp), intent(out) :: k       !! Hertz stiffness [N m^-3/2]
+        real(wp), intent(out) :: d       !! damping coefficient [kg s^-1]
+        integer, intent(out) :: status   !! HD_OK or an error code
+        call mod_invert(e, tc, m, u, iend, k, d, status, method=legacy_method)
+        if (status /= HD_OK) then
+            k = 0.0_wp
+            d = 0.0_wp
+        end if
+    end subroutine flat_invert
+
+    !> Restitution and contact time of a contact (k, d, m, u).  Without rebound
+    !> e = 0, tc = huge(1.0_wp) and status = HD_NO_REBOUND; on any other failure
+    !> e = tc = 0.
+    pure elemental subroutine flat_forward(k, d, m, u, iend, e, tc, status)
+        real(wp), intent(in) :: k        !! Hertz stiffness [N m^-3/2]
+        real(wp), intent(in) :: d        !! damping coefficient [kg s^-1]
+        real(wp), intent(in) :: m        !! effective mass [kg]
+        real(wp), intent(in) :: u        !! impact velocity [m s^-1]
+        integer, intent(in) :: iend      !! 0 overlap, 1 force
+        real(wp), intent(out) :: e       !! restitution coefficient
+        real(wp), intent(out) :: tc      !! contact time [s]
+        integer, intent(out) :: status   !! HD_OK, HD_NO_REBOUND or an error code
+        real(wp) :: alpha, tstar, zeta_max
+        call hertzdamp_forward_dim(k, d, m, u, iend, legacy_method, alpha, tstar, e, tc, zeta_max, &
+                                   status)
+        select case (status)
+        case (HD_OK)
+        case (HD_NO_REBOUND)
+            e = 0.0_wp
+            tc = huge(1.0_wp)
+        case default
+            e = 0.0_wp
+            tc = 0.0_wp
+        end select
+    end subroutine flat_forward
+
+end module hertzdamp_flat

@@ -1,0 +1,72 @@
+!> Legacy Fortran entry points: external subroutines outside any module, callable
+!> from fixed-form Fortran 77 through implicit interfaces.  All reals are DOUBLE
+!> PRECISION, all integers default INTEGER; every argument is passed by reference.
+!> Their names and argument lists are stable across versions.  They use the same
+!> method as the C API (`legacy_method` in `hertzdamp_flat`) and need only the
+!> Fortran runtime: link with `-lhertzdamp`.
+!>
+!>       DOUBLE PRECISION E, TC, M, U, K, D
+!>       INTEGER IEND, IERR
+!>       CHARACTER*80 TEXT
+!>       CALL HERTZDAMP_INVERT(E, TC, M, U, IEND, K, D, IERR)
+!>       IF (IERR .NE. 0) CALL HERTZDAMP_MESSAGE(IERR, TEXT)
+!>
+!> The status codes are those of `hertzdamp_status` (0 = success, 1 = no rebound).
+
+!> Stiffness k and damping d that give restitution e and contact time tc to a
+!> contact of effective mass m hit at speed u.  On failure k = d = 0, ierr /= 0.
+subroutine hertzdamp_invert(e, tc, m, u, iend, k, d, ierr)
+    use hertzdamp_flat, only: flat_invert
+    implicit none
+    double precision, intent(in) :: e     !! target restitution coefficient, in (0, 1]
+    double precision, intent(in) :: tc    !! target contact time [s]
+    double precision, intent(in) :: m     !! effective mass [kg]
+    double precision, intent(in) :: u     !! impact velocity [m/s]
+    integer, intent(in) :: iend           !! contact end: 0 overlap, 1 force
+    double precision, intent(out) :: k    !! Hertz stiffness [N m^-3/2]
+    double precision, intent(out) :: d    !! linear damping coefficient [kg/s]
+    integer, intent(out) :: ierr          !! 0 on success, else a status code
+    call flat_invert(e, tc, m, u, iend, k, d, ierr)
+end subroutine hertzdamp_invert
+
+!> Restitution e and contact time tc of the contact (k, d, m, u).  Without rebound
+!> e = 0, tc = huge(1d0) and ierr = 1 (HD_NO_REBOUND); on other failures e = tc = 0.
+subroutine hertzdamp_forward(k, d, m, u, iend, e, tc, ierr)
+    use hertzdamp_flat, only: flat_forward
+    implicit none
+    double precision, intent(in) :: k     !! Hertz stiffness [N m^-3/2]
+    double precision, intent(in) :: d     !! linear damping coefficient [kg/s]
+    double precision, intent(in) :: m     !! effective mass [kg]
+    double precision, intent(in) :: u     !! impact velocity [m/s]
+    integer, intent(in) :: iend           !! contact end: 0 overlap, 1 force
+    double precision, intent(out) :: e    !! restitution coefficient
+    double precision, intent(out) :: tc   !! contact time [s]
+    integer, intent(out) :: ierr          !! 0 on success, 1 no rebound, else a status code
+    call flat_forward(k, d, m, u, iend, e, tc, ierr)
+end subroutine hertzdamp_forward
+
+!> hertzdamp_invert for n contacts at once (one contact-end definition for all).
+!> n <= 0 does nothing.
+subroutine hertzdamp_invert_n(n, e, tc, m, u, iend, k, d, ierr)
+    use hertzdamp_flat, only: flat_invert
+    implicit none
+    integer, intent(in) :: n                  !! number of contacts
+    double precision, intent(in) :: e(n)      !! target restitution coefficients (n)
+    double precision, intent(in) :: tc(n)     !! target contact times [s] (n)
+    double precision, intent(in) :: m(n)      !! effective masses [kg] (n)
+    double precision, intent(in) :: u(n)      !! impact velocities [m/s] (n)
+    integer, intent(in) :: iend               !! contact end: 0 overlap, 1 force
+    double precision, intent(out) :: k(n)     !! Hertz stiffnesses [N m^-3/2] (n)
+    double precision, intent(out) :: d(n)     !! damping coefficients [kg/s] (n)
+    integer, intent(out) :: ierr(n)           !! status of each contact (n)
+    call flat_invert(e, tc, m, u, iend, k, d, ierr)
+end subroutine hertzdamp_invert_n
+
+!> The message of a status code, copied into text (truncated or blank-padded).
+subroutine hertzdamp_message(ierr, text)
+    use hertzdamp_status, only: mod_message => hertzdamp_message
+    implicit none
+    integer, intent(in) :: ierr               !! a status code
+    character(len=*), intent(out) :: text     !! receives the message
+    text = mod_message(ierr)
+end subroutine hertzdamp_message

@@ -1,0 +1,171 @@
+!> The legacy Fortran entry points (src/hertzdamp_legacy.f90) against the module API.
+!>
+!> fpm compiles tests with -Werror=implicit-interface (implicit-external = false), so
+!> this program declares the external subroutines in an interface block written
+!> exactly as a Fortran 77 caller sees them (double precision and default integer
+!> by reference, a character argument of any length).  The truly implicit calls from
+!> fixed-form code are exercised by example/legacy_dem, built and run by
+!> test/cli_install.sh.
+program test_legacy
+    use hertzdamp, only: hertzdamp_rk, mod_invert => hertzdamp_invert, hertzdamp_forward_dim, &
+                         mod_message => hertzdamp_message, HD_OK, HD_NO_REBOUND, HD_BAD_RESTITUTION, &
+                         HD_BAD_MASS, HD_BAD_END, HD_BAD_TIME, HD_BAD_VELOCITY, HD_BAD_STIFFNESS, &
+                         HD_BAD_DAMPING, HD_END_OVERLAP, HD_END_FORCE
+    use hertzdamp_flat, only: legacy_method
+    use hertzdamp_testing, only: test_suite, new_suite
+    use, intrinsic :: ieee_arithmetic, only: ieee_value, ieee_quiet_nan
+    implicit none
+
+    interface
+        subroutine hertzdamp_invert(e, tc, m, u, iend, k, d, ierr)
+            implicit none
+            double precision, intent(in) :: e, tc, m, u
+            integer, intent(in) :: iend
+            double precision, intent(out) :: k, d
+            integer, intent(out) :: ierr
+        end subroutine hertzdamp_invert
+        subroutine hertzdamp_forward(k, d, m, u, iend, e, tc, ierr)
+            implicit none
+            double precision, intent(in) :: k, d, m, u
+            integer, intent(in) :: iend
+            double precision, intent(out) :: e, tc
+            integer, intent(out) :: ierr
+        end subroutine hertzdamp_forward
+        subroutine hertzdamp_invert_n(n, e, tc, m, u, iend, k, d, ierr)
+            implicit none
+            integer, intent(in) :: n
+            double precision, intent(in) :: e(n), tc(n), m(n), u(n)
+            integer, intent(in) :: iend
+            double precision, intent(out) :: k(n), d(n)
+            integer, intent(out) :: ierr(n)
+        end subroutine hertzdamp_invert_n
+        subroutine hertzdamp_message(ierr, text)
+            implicit none
+            integer, intent(in) :: ierr
+            character(len=*), intent(out) :: text
+        end subroutine hertzdamp_message
+    end interface
+
+    integer, parameter :: wp = hertzdamp_rk
+    integer, parameter :: nc = 5
+    type(test_suite) :: suite
+    real(wp), parameter :: es(nc) = [1.0_wp, 0.9_wp, 0.5_wp, 0.2_wp, 0.05_wp]
+    real(wp), parameter :: tcs(nc) = [1.0e-4_wp, 5.0e-5_wp, 2.0e-3_wp, 1.0e-6_wp, 3.0e-4_wp]
+    real(wp), parameter :: ms(nc) = [1.0e-3_wp, 2.0e-2_wp, 5.0_wp, 1.0e-9_wp, 0.3_wp]
+    real(wp), parameter :: us(nc) = [1.0_wp, 0.01_wp, 3.0_wp, 20.0_wp, 0.5_wp]
+    real(wp) :: k, d, km, dm, e, tc, em, tcm, alpha, tstar, zmax, nan
+    real(wp) :: kn(nc + 1), dn(nc + 1)
+    integer :: ierr, st, i, iend, ierrn(nc + 1)
+    character(len=20) :: short, want_short
+    character(len=300) :: long
+    character(len=2) :: cend
+
+    suite = new_suite('test_legacy')
+    nan = ieee_value(1.0_wp, ieee_quiet_nan)
+
+    do iend = HD_END_OVERLAP, HD_END_FORCE
+        write (cend, '(i0)') iend
+        do i = 1, nc
+            call hertzdamp_invert(es(i), tcs(i), ms(i), us(i), iend, k, d, ierr)
+            call mod_invert(es(i), tcs(i), ms(i), us(i), iend, km, dm, st, method=legacy_method)
+            call suite%check(ierr == HD_OK .and. st == HD_OK, 'invert status, end ' // cend)
+            call suite%check(.not. (abs(k - km) > 0.0_wp .or. abs(d - dm) > 0.0_wp), &
+                             'invert k, d bit-identical to the module API, end ' // cend)
+            ! round trip through the legacy forward problem
+            call hertzdamp_forward(k, d, ms(i), us(i), iend, e, tc, ierr)
+            call suite%check(ierr == HD_OK, 'forward status after invert, end ' // cend)
+            call suite%check_close(e, es(i), 1.0e-9_wp, 'round trip e, end ' // cend)
+            call suite%check_close(tc, tcs(i), 1.0e-9_wp, 'round trip tc, end ' // cend)
+            call hertzdamp_forward_dim(k, d, ms(i), us(i), iend, legacy_method, alpha, tstar, em, tcm, zmax, st)
+            call suite%check(.not. (abs(e - em) > 0.0_wp .or. abs(tc - tcm) > 0.0_wp), &
+                             'forward e, tc bit-identical to the module API, end ' // cend)
+        end do
+
+        ! the array version, with one bad contact at the end
+        call hertzdamp_invert_n(nc + 1, [es, 1.5_wp], [tcs, 1.0e-4_wp], [ms, 1.0_wp], [us, 1.0_wp], &
+                                iend, kn, dn, ierrn)
+        do i = 1, nc
+            call mod_invert(es(i), tcs(i), ms(i), us(i), iend, km, dm, st, method=legacy_method)
+            call suite%check(ierrn(i) == HD_OK .and. .not. (abs(kn(i) - km) > 0.0_wp .or. &
+                             abs(dn(i) - dm) > 0.0_wp), 'invert_n element equals the module API, end ' // cend)
+        end do
+        call suite%check(ierrn(nc + 1) == HD_BAD_RESTITUTION, 'invert_n: bad element flagged')
+        call suite%check(.not. (abs(kn(nc + 1)) > 0.0_wp .or. abs(dn(nc + 1)) > 0.0_wp), &
+                         'invert_n: bad element gives k = d = 0')
+    end do
+    ! n = 0 touches nothing
+    kn = -1.0_wp
+    ierrn = -1
+    call hertzdamp_invert_n(0, es, tcs, ms, us, 0, kn, dn, ierrn)
+    call suite%check(all(ierrn == -1) .and. all(kn < 0.0_wp), 'invert_n with n = 0 does nothing')
+
+    ! bad input: a status, k = d = 0, and a message
+    call expect_invert_error(1.5_wp, 1.0e-4_wp, 1.0_wp, 1.0_wp, 0, HD_BAD_RESTITUTION, 'e > 1')
+    call expect_invert_error(0.0_wp, 1.0e-4_wp, 1.0_wp, 1.0_wp, 0, HD_BAD_RESTITUTION, 'e = 0')
+    call expect_invert_error(0.5_wp, nan, 1.0_wp, 1.0_wp, 0, HD_BAD_TIME, 'tc NaN')
+    call expect_invert_error(0.5_wp, -1.0e-4_wp, 1.0_wp, 1.0_wp, 0, HD_BAD_TIME, 'tc < 0')
+    call expect_invert_error(0.5_wp, 1.0e-4_wp, -1.0_wp, 1.0_wp, 0, HD_BAD_MASS, 'm < 0')
+    call expect_invert_error(0.5_wp, 1.0e-4_wp, 1.0_wp, 0.0_wp, 0, HD_BAD_VELOCITY, 'u = 0')
+    call expect_invert_error(0.5_wp, 1.0e-4_wp, 1.0_wp, 1.0_wp, 3, HD_BAD_END, 'iend = 3')
+
+    ! forward without rebound: alpha = 2 > alpha_c (overlap); the force end rebounds
+    call alpha_two(km, dm)
+    call hertzdamp_forward(km, dm, 1.0_wp, 1.0_wp, HD_END_OVERLAP, e, tc, ierr)
+    call suite%check(ierr == HD_NO_REBOUND, 'no rebound: ierr = 1')
+    call suite%check(.not. (abs(e) > 0.0_wp), 'no rebound: e = 0')
+    call suite%check(.not. (abs(tc - huge(1.0d0)) > 0.0_wp), 'no rebound: tc = huge(1d0)')
+    call hertzdamp_message(ierr, long)
+    call suite%check(long == mod_message(HD_NO_REBOUND), 'no rebound: message')
+    call hertzdamp_forward(km, dm, 1.0_wp, 1.0_wp, HD_END_FORCE, e, tc, ierr)
+    call suite%check(ierr == HD_OK .and. e > 0.0_wp .and. e < 1.0_wp .and. tc > 0.0_wp .and. &
+                     tc < huge(1.0_wp), 'force end at alpha = 2 rebounds')
+
+    ! forward errors
+    call hertzdamp_forward(0.0_wp, 1.0_wp, 1.0_wp, 1.0_wp, 0, e, tc, ierr)
+    call suite%check(ierr == HD_BAD_STIFFNESS .and. .not. (abs(e) > 0.0_wp .or. abs(tc) > 0.0_wp), &
+                     'forward: k = 0 gives HD_BAD_STIFFNESS, e = tc = 0')
+    call hertzdamp_forward(1.0_wp, -1.0_wp, 1.0_wp, 1.0_wp, 0, e, tc, ierr)
+    call suite%check(ierr == HD_BAD_DAMPING, 'forward: d < 0 gives HD_BAD_DAMPING')
+    call hertzdamp_forward(1.0_wp, 1.0_wp, 1.0_wp, 1.0_wp, -1, e, tc, ierr)
+    call suite%check(ierr == HD_BAD_END, 'forward: iend = -1 gives HD_BAD_END')
+
+    ! messages: truncated into a short variable, blank-padded into a long one
+    do i = -1, 20
+        call hertzdamp_message(i, short)
+        call hertzdamp_message(i, long)
+        want_short = mod_message(i)
+        call suite%check(short == want_short, 'message truncated')
+        call suite%check(long == mod_message(i) .and. len_trim(long) == len(mod_message(i)), &
+                         'message padded')
+    end do
+    call hertzdamp_message(HD_OK, short)
+    call suite%check(short == 'success', 'message of 0 is "success"')
+
+    call suite%finish()
+
+contains
+
+    !> Check that hertzdamp_invert fails with `want`, k = d = 0 and a message.
+    subroutine expect_invert_error(e_, tc_, m_, u_, iend_, want, label)
+        real(wp), intent(in) :: e_, tc_, m_, u_
+        integer, intent(in) :: iend_, want
+        character(len=*), intent(in) :: label
+        real(wp) :: k_, d_
+        integer :: ierr_
+        character(len=200) :: text
+        call hertzdamp_invert(e_, tc_, m_, u_, iend_, k_, d_, ierr_)
+        call suite%check(ierr_ == want, 'bad input (' // label // '): status')
+        call suite%check(.not. (abs(k_) > 0.0_wp .or. abs(d_) > 0.0_wp), 'bad input (' // label // '): k = d = 0')
+        call hertzdamp_message(ierr_, text)
+        call suite%check(text == mod_message(want) .and. text /= mod_message(HD_OK), &
+                         'bad input (' // label // '): message')
+    end subroutine expect_invert_error
+
+    !> k and d with m = u = 1 and alpha = 2: t* = 1 for k = 1, so d = alpha.
+    subroutine alpha_two(k_, d_)
+        real(wp), intent(out) :: k_, d_
+        k_ = 1.0_wp
+        d_ = 2.0_wp
+    end subroutine alpha_two
+
+end program test_legacy

@@ -9,43 +9,22 @@
 !> `cc ... -lhertzdamp -lgfortran -lm`.
 module hertzdamp_capi
     use, intrinsic :: iso_c_binding, only: c_double, c_int, c_char, c_ptr, c_loc, c_null_char
-    use hertzdamp_status, only: HD_OK, HD_BAD_ARGUMENT
+    use hertzdamp_status, only: HD_OK, HD_BAD_ARGUMENT, hertzdamp_message_table, hertzdamp_max_status, &
+                                hertzdamp_message_len
     use hertzdamp_flat, only: flat_invert, flat_forward
     implicit none
     private
 
     public :: hertzdamp_c_invert, hertzdamp_c_forward, hertzdamp_c_strerror
 
-    integer, parameter :: msg_len = 128   !! longest message + NUL, rounded up
-    integer, parameter :: max_code = 18   !! largest status code with its own message
-
-    !> The NUL-terminated message of every status code (the text of
-    !> `hertzdamp_message`), then the message of unknown codes.  Never written to:
-    !> it is a variable only so that `c_loc` can point into it.
-    character(kind=c_char, len=msg_len), dimension(0:max_code + 1), target, save :: c_messages = [ &
-        character(kind=c_char, len=msg_len) :: &
-        'success' // c_null_char, &
-        'no rebound: alpha >= alpha_c, the overlap never returns to zero ' // &
-            '(e = 0, contact time infinite)' // c_null_char, &
-        'integrator reached its maximum number of steps' // c_null_char, &
-        'integrator step size collapsed below round-off' // c_null_char, &
-        'invalid damping parameter alpha: must be finite, >= 0 for the force ' // &
-            'definition and > -20 for the overlap definition' // c_null_char, &
-        'invalid contact-end definition: use 0 (overlap) or 1 (force)' // c_null_char, &
-        'invalid tolerance: must lie in [1e-15, 1e-2]' // c_null_char, &
-        'invalid mass: must be finite and positive' // c_null_char, &
-        'invalid impact velocity: must be finite and positive' // c_null_char, &
-        'invalid stiffness k: must be finite and positive' // c_null_char, &
-        'invalid damping coefficient d: must be finite and non-negative' // c_null_char, &
-        'invalid contact time: must be finite and positive' // c_null_char, &
-        'invalid restitution coefficient: outside the supported range' // c_null_char, &
-        'result out of the representable double-precision range' // c_null_char, &
-        'method does not support this contact-end definition' // c_null_char, &
-        'iteration did not converge' // c_null_char, &
-        'invalid series order: outside the stored range' // c_null_char, &
-        'invalid physical stiffness bound k_phys: must be finite and positive' // c_null_char, &
-        'invalid argument' // c_null_char, &
-        'unknown status code' // c_null_char]
+    integer :: i_
+    !> The NUL-terminated messages of hertzdamp_message_table (the one table behind
+    !> hertzdamp_message), built at compile time.  Never written to: a variable only
+    !> so that `c_loc` can point into it.
+    character(kind=c_char, len=hertzdamp_message_len + 1), dimension(0:hertzdamp_max_status + 1), &
+        target :: c_messages = [character(kind=c_char, len=hertzdamp_message_len + 1) :: &
+        (hertzdamp_message_table(i_)(1:len_trim(hertzdamp_message_table(i_))) // c_null_char, &
+         i_=0, hertzdamp_max_status + 1)]
 
 contains
 
@@ -100,8 +79,8 @@ contains
     type(c_ptr) function hertzdamp_c_strerror(status) bind(c, name='hertzdamp_strerror') result(msg)
         integer(c_int), value, intent(in) :: status  !! a status code
         integer :: i
-        i = max_code + 1
-        if (status >= 0 .and. status <= max_code) i = int(status)
+        i = hertzdamp_max_status + 1
+        if (status >= 0 .and. status <= hertzdamp_max_status) i = int(status)
         msg = c_loc(c_messages(i))
     end function hertzdamp_c_strerror
 

@@ -83,8 +83,9 @@ contains
         if (status == HD_OK) status = hertzdamp_check_positive(tc, HD_BAD_TIME)
         if (status == HD_OK) status = hertzdamp_check_positive(m, HD_BAD_MASS)
         if (status == HD_OK) status = hertzdamp_check_positive(u, HD_BAD_VELOCITY)
-        if (status == HD_OK .and. present(k_phys)) &
-            status = hertzdamp_check_positive(k_phys, HD_BAD_KPHYS)
+        if (status == HD_OK .and. present(k_phys)) then
+          status = hertzdamp_check_positive(k_phys, HD_BAD_KPHYS)
+        end if
         if (status /= HD_OK) return
 
         call solve_alpha(e, iend, tol_, a, tau, status)

@@ -33,6 +33,39 @@ module hertzdamp_status
     !> Contact ends when the total contact force returns to zero.
     integer, parameter, public :: HD_END_FORCE = 1
 
+    !> Length of the stored messages (each fits, blank-padded).
+    integer, parameter, public :: hertzdamp_message_len = 128
+    !> Largest status code with a message of its own.
+    integer, parameter, public :: hertzdamp_max_status = 19
+    !> The message of every status code 0..hertzdamp_max_status, then that of unknown
+    !> codes: the one table behind hertzdamp_message and the C hertzdamp_strerror.
+    character(len=hertzdamp_message_len), parameter, public :: &
+        hertzdamp_message_table(0:hertzdamp_max_status + 1) = [character(len=hertzdamp_message_len) :: &
+        'success', &
+        'no rebound: alpha >= alpha_c, the overlap never returns to zero (e = ' // &
+            '0, contact time infinite)', &
+        'integrator reached its maximum number of steps', &
+        'integrator step size collapsed below round-off', &
+        'invalid damping parameter alpha: must be finite, at most 1e100, >= 0 ' // &
+            'for the force definition and >= -10 for the overlap definition', &
+        'invalid contact-end definition: use 0 (overlap) or 1 (force)', &
+        'invalid tolerance: must lie in [1e-15, 1e-2]', &
+        'invalid mass: must be finite and positive', &
+        'invalid impact velocity: must be finite and positive', &
+        'invalid stiffness k: must be finite and positive', &
+        'invalid damping coefficient d: must be finite and non-negative', &
+        'invalid contact time: must be finite and positive', &
+        'invalid restitution coefficient: outside the supported range', &
+        'result out of the representable double-precision range', &
+        'method does not support this contact-end definition', &
+        'iteration did not converge', &
+        'invalid series order: outside the stored range', &
+        'invalid physical stiffness bound k_phys: must be finite and positive', &
+        'invalid argument', &
+        'alpha outside the validity range of the method (series: |alpha| < 1; ' // &
+            'pade: 0 <= alpha <= 0.8); use rk45 or fit', &
+        'unknown status code']
+
     public :: hertzdamp_message, hertzdamp_end_name
 
 contains
@@ -41,32 +74,11 @@ contains
     pure function hertzdamp_message(status) result(msg)
         integer, intent(in) :: status          !! a status returned by hertzdamp
         character(len=:), allocatable :: msg
-        select case (status)
-        case (HD_OK); msg = 'success'
-        case (HD_NO_REBOUND); msg = 'no rebound: alpha >= alpha_c, the overlap never returns to zero ' // &
-            '(e = 0, contact time infinite)'
-        case (HD_MAX_STEPS); msg = 'integrator reached its maximum number of steps'
-        case (HD_STEP_UNDERFLOW); msg = 'integrator step size collapsed below round-off'
-        case (HD_BAD_ALPHA); msg = 'invalid damping parameter alpha: must be finite, at most 1e100, >= 0 ' // &
-            'for the force definition and >= -10 for the overlap definition'
-        case (HD_BAD_END); msg = 'invalid contact-end definition: use 0 (overlap) or 1 (force)'
-        case (HD_BAD_TOL); msg = 'invalid tolerance: must lie in [1e-15, 1e-2]'
-        case (HD_BAD_MASS); msg = 'invalid mass: must be finite and positive'
-        case (HD_BAD_VELOCITY); msg = 'invalid impact velocity: must be finite and positive'
-        case (HD_BAD_STIFFNESS); msg = 'invalid stiffness k: must be finite and positive'
-        case (HD_BAD_DAMPING); msg = 'invalid damping coefficient d: must be finite and non-negative'
-        case (HD_BAD_TIME); msg = 'invalid contact time: must be finite and positive'
-        case (HD_BAD_RESTITUTION); msg = 'invalid restitution coefficient: outside the supported range'
-        case (HD_OUT_OF_RANGE); msg = 'result out of the representable double-precision range'
-        case (HD_NOT_SUPPORTED); msg = 'method does not support this contact-end definition'
-        case (HD_NO_CONVERGENCE); msg = 'iteration did not converge'
-        case (HD_BAD_ORDER); msg = 'invalid series order: outside the stored range'
-        case (HD_BAD_KPHYS); msg = 'invalid physical stiffness bound k_phys: must be finite and positive'
-        case (HD_BAD_ARGUMENT); msg = 'invalid argument'
-        case (HD_OUTSIDE_VALIDITY); msg = 'alpha outside the validity range of the method ' // &
-            '(series: |alpha| < 1; pade: 0 <= alpha <= 0.8); use rk45 or fit'
-        case default; msg = 'unknown status code'
-        end select
+        if (status >= 0 .and. status <= hertzdamp_max_status) then
+            msg = trim(hertzdamp_message_table(status))
+        else
+            msg = trim(hertzdamp_message_table(hertzdamp_max_status + 1))
+        end if
     end function hertzdamp_message
 
     !> Name of a contact-end definition: 'overlap' or 'force'.

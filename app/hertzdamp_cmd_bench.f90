@@ -553,7 +553,7 @@ contains
             call figs%add('forward at equal achieved error ' // trim(target_names(j)) // &
                           ' (max of e and tau_c errors; ns/call interpolated log-log between tolerances): rk45 ' // &
                           ns_text(q_rk, t_rk) // ', gsl-rk8pd ' // ns_text(q_8, t_8) // ' (' // ratio(t_8, t_rk) // &
-                          ' x rk45), gsl-rkf45 ' // ns_text(q_f, t_f) // ' (' // ratio(t_f, t_rk) // ' x rk45)')
+                          '), gsl-rkf45 ' // ns_text(q_f, t_f) // ' (' // ratio(t_f, t_rk) // ')')
         end do
     end subroutine figures
 
@@ -582,13 +582,14 @@ contains
         end if
     end function fratio
 
+    !> 'R x rk45' for the time ratio a / b.
     function ratio(a, b) result(s)
         real(wp), intent(in) :: a, b
         character(len=:), allocatable :: s
         if (ieee_is_nan(a) .or. ieee_is_nan(b) .or. b <= 0.0_wp) then
-            s = 'n/a'
+            s = 'time ratio to rk45 n/a'
         else
-            s = fratio(a / b)
+            s = fratio(a / b) // ' x rk45'
         end if
     end function ratio
 

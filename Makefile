@@ -15,7 +15,7 @@ RELEASE_FLAGS := -O3 -march=x86-64-v2 -funroll-loops -fPIC
 # Test build: warnings on, standard conformance, run-time checks that are cheap.
 TEST_FLAGS := -O2 -g -fPIC -Wall -Wextra -Wimplicit-interface -std=f2018 -fcheck=bounds,do,pointer -fbacktrace
 
-.PHONY: all deps run test build install clean lint
+.PHONY: all deps run test build install clean lint bench
 
 all: build
 
@@ -49,6 +49,11 @@ test: deps
 	@$(FPM) build --tests --flag "$(TEST_FLAGS)"
 	@$(FPM) build --flag "$(RELEASE_FLAGS)"
 	@bash test/run_tests.sh "$(FPM)" "$(TEST_FLAGS)" "$(RELEASE_FLAGS)"
+
+# Full work-precision benchmark with the release flags: data/bench/bench.csv (with a
+# '#' header naming machine, compiler, flags, date), bench.png, bench.txt (figures).
+bench: build
+	@bash tools/bench.sh "$(FPM)" "$(RELEASE_FLAGS)"
 
 # ---------------------------------------------------------------- install
 install: build

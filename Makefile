@@ -16,7 +16,7 @@ RELEASE_FLAGS := -O3 -march=x86-64-v2 -funroll-loops -fPIC
 TEST_FLAGS := -O2 -g -fPIC -fopenmp -Wall -Wextra -Wimplicit-interface -std=f2018 -fcheck=bounds,do,pointer -fbacktrace
 TEST_LINK := -fopenmp
 
-.PHONY: all deps run test build install clean lint series-data series-source
+.PHONY: all deps run test build install clean lint series-data series-source bench
 
 all: build
 
@@ -64,6 +64,11 @@ series-data: deps
 series-source:
 	$(PYTHON) tools/csv_to_f90.py data/series_coefficients.csv src/hertzdamp_series_data.f90 hertzdamp_series_data series
 	$(PYTHON) tools/csv_to_f90.py data/pade_coefficients.csv src/hertzdamp_pade_data.f90 hertzdamp_pade_data pade
+
+# Full work-precision benchmark with the release flags: data/bench/bench.csv (with a
+# '#' header naming machine, compiler, flags, date), bench.png, bench.txt (figures).
+bench: build
+	@bash tools/bench.sh "$(FPM)" "$(RELEASE_FLAGS)"
 
 # ---------------------------------------------------------------- install
 install: build

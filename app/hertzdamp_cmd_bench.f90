@@ -1,0 +1,996 @@
+!> The command `bench`: the work-precision report of the library's methods.
+!>
+!> Forward problem alpha -> (e, tau_c): every method against rk45 at tol 1e-15.
+!> Inverse problem (e, T_c, m, u_in) -> (k, d): every method against the iterative
+!> inverse at tol 1e-13.  Throughput: the elemental fit inverse over an array of
+!> 10^6 contacts.  Every number is measured in this run; methods the library does
+!> not (yet) provide are left out.  Everything is computed (and the plot written)
+!> before anything is printed: on failure stdout stays empty.
+module hertzdamp_cmd_bench
+    use hertzdamp, only: hertzdamp_rk, hertzdamp_collision, hertzdamp_forward_alpha, hertzdamp_message, &
+                         HD_OK, HD_NO_REBOUND, HD_NOT_SUPPORTED, HD_NO_CONVERGENCE, HD_END_OVERLAP, HD_END_FORCE, &
+                         HD_METHOD_RK45, HD_METHOD_SERIES, HD_METHOD_PADE, HD_METHOD_COMPACT, HD_METHOD_FIT, &
+                         HD_METHOD_ITERATIVE
+    use hertzdamp_inverse, only: hertzdamp_invert
+    use hertzdamp_gsl, only: hertzdamp_gsl_collide, HERTZDAMP_GSL_RKF45, HERTZDAMP_GSL_RK8PD, &
+                             HERTZDAMP_GSL_OK, HERTZDAMP_GSL_NO_REBOUND, HERTZDAMP_GSL_OVERLAP, HERTZDAMP_GSL_FORCE
+    use hertzdamp_bench_timer, only: bench_case, bench_measure, wall_seconds
+    use hertzdamp_cli, only: cli_args, cli_buffer, parse_args, parse_choice, fail, quit, pad, EXIT_USAGE, EXIT_OK, &
+                             EXIT_FAILURE
+    use hertzdamp_cli_output, only: out_table, format_choices, FORMAT_TEXT, FORMAT_CSV, FORMAT_JSON
+    use hertzdamp_cli_help, only: print_help, wants_help
+    use, intrinsic :: iso_fortran_env, only: int64, error_unit
+    use, intrinsic :: iso_c_binding, only: c_int, c_char, c_null_char
+    use, intrinsic :: ieee_arithmetic, only: ieee_value, ieee_quiet_nan, ieee_is_nan, ieee_is_finite
+    implicit none
+    private
+    public :: cmd_bench
+
+    integer, parameter :: wp = hertzdamp_rk
+
+    !> How a forward case computes: through hertzdamp_forward_alpha or GSL.
+    integer, parameter :: ENGINE_LIB = 1, ENGINE_GSL = 2
+
+    !> Plot families (marker styles), in legend order.
+    integer, parameter :: n_families = 8
+    character(len=*), parameter :: fam(n_families) = [character(len=9) :: 'rk45', 'gsl-rkf45', 'gsl-rk8pd', &
+                                                      'series', 'pade', 'compact', 'fit', 'iterative']
+
+    !> Floor of the e error denominator: errors of e are relative to max(e, e_floor).
+    real(wp), parameter :: e_floor = 1.0e-3_wp
+    !> Errors below this are drawn at this value (log axis).
+    real(wp), parameter :: plot_floor = 1.0e-17_wp
+
+    ! Inverse problem: fixed contact (SI units).
+    real(wp), parameter :: inv_m = 1.0e-2_wp, inv_u = 1.0_wp, inv_tc = 1.0e-4_wp
+
+    !> One forward sweep over a set of alpha.
+    type, extends(bench_case) :: fwd_case
+        integer :: engine = ENGINE_LIB
+        integer :: method = HD_METHOD_RK45   !! HD_METHOD_* (ENGINE_LIB) or HERTZDAMP_GSL_* (ENGINE_GSL)
+        real(wp) :: tol = 1.0e-13_wp
+        integer :: order = -1                !! series order (< 0: not passed)
+        real(wp), allocatable :: alpha(:)
+        integer, allocatable :: iend(:)
+        real(wp), allocatable :: e(:), tau(:)
+        integer, allocatable :: status(:), steps(:), rejected(:), rhs(:)
+    contains
+        procedure :: run => fwd_run
+    end type fwd_case
+
+    !> One inverse sweep over a set of e (fixed m, u_in, T_c).
+    type, extends(bench_case) :: inv_case
+        integer :: method = HD_METHOD_FIT
+        real(wp) :: tol = 1.0e-10_wp
+        real(wp), allocatable :: e(:), tc(:), m(:), u(:)
+        real(wp), allocatable :: k(:), d(:), alpha(:), tstar(:), tau(:)
+        integer, allocatable :: status(:)
+        logical, allocatable :: bound(:)
+    contains
+        procedure :: run => inv_run
+    end type inv_case
+
+    !> One result row.
+    type :: bench_row
+        character(len=:), allocatable :: problem, method, setting
+        integer :: family = 0
+        integer :: npts = 0, ntot = 0
+        real(wp) :: err(5) = -1.0_wp   !! e, tau, alpha, k, d; < 0: not applicable
+        real(wp) :: ns = -1.0_wp
+        real(wp) :: steps = -1.0_wp, rejected = -1.0_wp, rhs = -1.0_wp  !! means per collision; < 0: n/a
+    end type bench_row
+
+    interface
+        function c_rename(old, new) bind(C, name='rename') result(rc)
+            import :: c_int, c_char
+            character(kind=c_char), intent(in) :: old(*), new(*)
+            integer(c_int) :: rc
+        end function c_rename
+    end interface
+
+contains
+
+    ! ------------------------------------------------------------------ the cases
+
+    subroutine fwd_run(self)
+        class(fwd_case), intent(inout) :: self
+        type(hertzdamp_collision) :: r
+        integer :: i, st, nrhs, nst, gend
+        real(wp) :: zm, tm
+        do i = 1, size(self%alpha)
+            select case (self%engine)
+            case (ENGINE_LIB)
+                if (self%order >= 0) then
+                    r = hertzdamp_forward_alpha(self%alpha(i), self%iend(i), self%method, self%tol, self%order)
+                else
+                    r = hertzdamp_forward_alpha(self%alpha(i), self%iend(i), self%method, self%tol)
+                end if
+                self%e(i) = r%e
+                self%tau(i) = r%tau_c
+                self%status(i) = r%status
+                self%steps(i) = r%stats%steps
+                self%rejected(i) = r%stats%rejected
+                self%rhs(i) = r%stats%rhs_evals
+            case default
+                gend = merge(HERTZDAMP_GSL_OVERLAP, HERTZDAMP_GSL_FORCE, self%iend(i) == HD_END_OVERLAP)
+                call hertzdamp_gsl_collide(self%alpha(i), gend, self%tol, self%method, self%e(i), self%tau(i), &
+                                           zm, tm, st, nrhs, nst, atol=1.0e-30_wp * self%tol)
+                select case (st)
+                case (HERTZDAMP_GSL_OK); self%status(i) = HD_OK
+                case (HERTZDAMP_GSL_NO_REBOUND); self%status(i) = HD_NO_REBOUND
+                case default; self%status(i) = HD_NO_CONVERGENCE
+                end select
+                self%steps(i) = nst
+                self%rejected(i) = -1
+                self%rhs(i) = nrhs
+            end select
+        end do
+    end subroutine fwd_run
+
+    subroutine inv_run(self)
+        class(inv_case), intent(inout) :: self
+        integer :: i
+        do i = 1, size(self%e)
+            call hertzdamp_invert(self%e(i), self%tc(i), self%m(i), self%u(i), HD_END_OVERLAP, self%k(i), self%d(i), &
+                                  self%status(i), alpha=self%alpha(i), tstar=self%tstar(i), tau_c=self%tau(i), &
+                                  bound_active=self%bound(i), method=self%method, tol=self%tol)
+        end do
+    end subroutine inv_run
+
+    !> The same as inv_run, as one elemental call over the arrays (throughput).
+    subroutine inv_run_array(c)
+        type(inv_case), intent(inout) :: c
+        call hertzdamp_invert(c%e, c%tc, c%m, c%u, HD_END_OVERLAP, c%k, c%d, c%status, alpha=c%alpha, &
+                              tstar=c%tstar, tau_c=c%tau, bound_active=c%bound, method=c%method, tol=c%tol)
+    end subroutine inv_run_array
+
+    subroutine fwd_init(c, engine, method, tol, order, alpha, iend)
+        type(fwd_case), intent(out) :: c
+        integer, intent(in) :: engine, method, order
+        real(wp), intent(in) :: tol, alpha(:)
+        integer, intent(in) :: iend(:)
+        integer :: n
+        n = size(alpha)
+        c%engine = engine
+        c%method = method
+        c%tol = tol
+        c%order = order
+        c%alpha = alpha
+        c%iend = iend
+        allocate (c%e(n), c%tau(n), c%status(n), c%steps(n), c%rejected(n), c%rhs(n))
+        c%e = 0.0_wp
+        c%tau = 0.0_wp
+        c%status = HD_OK
+        c%steps = 0
+        c%rejected = 0
+        c%rhs = 0
+    end subroutine fwd_init
+
+    subroutine inv_init(c, method, tol, e, tc, m, u)
+        type(inv_case), intent(out) :: c
+        integer, intent(in) :: method
+        real(wp), intent(in) :: tol, e(:), tc(:), m(:), u(:)
+        integer :: n
+        n = size(e)
+        c%method = method
+        c%tol = tol
+        c%e = e
+        c%tc = tc
+        c%m = m
+        c%u = u
+        allocate (c%k(n), c%d(n), c%alpha(n), c%tstar(n), c%tau(n), c%status(n), c%bound(n))
+        c%k = 0.0_wp
+        c%d = 0.0_wp
+        c%alpha = 0.0_wp
+        c%tstar = 0.0_wp
+        c%tau = 0.0_wp
+        c%status = HD_OK
+        c%bound = .false.
+    end subroutine inv_init
+
+    ! ------------------------------------------------------------------ the command
+
+    subroutine cmd_bench()
+        type(cli_args) :: args
+        integer :: fmt
+        logical :: quick, want_plot
+        character(len=:), allocatable :: plot_file, terminal
+        real(wp) :: min_time, t_start
+        integer :: repeats
+        real(wp), allocatable :: alpha(:), e_inv(:)
+        integer, allocatable :: iend(:)
+        type(fwd_case) :: fref
+        type(inv_case) :: iref
+        type(bench_row), allocatable :: rows(:)
+        real(wp) :: thr_ns, thr_rate
+        integer :: thr_n, thr_bad, i, n_ov, n_fo
+        type(cli_buffer) :: buf
+        type(out_table) :: t
+        type(cli_buffer) :: figs
+
+        if (wants_help()) then
+            call print_help('bench')
+            call quit(EXIT_OK)
+        end if
+        call parse_args(2, '--format --plot', '--quick', args)
+        fmt = parse_choice(args%get('--format', 'text'), format_choices, 'format (--format)')
+        quick = args%has('--quick')
+        want_plot = args%has('--plot')
+        terminal = ''
+        if (want_plot) then
+            plot_file = args%get('--plot', '')
+            call check_plot_target(plot_file, terminal)
+        end if
+        t_start = wall_seconds()
+
+        if (quick) then
+            min_time = 0.01_wp
+            repeats = 3
+            alpha = [0.0_wp, 0.2_wp, 0.4_wp, 0.6_wp, 0.8_wp, 1.0_wp, 1.1_wp]
+            n_ov = size(alpha)
+            alpha = [alpha, 0.0_wp, 0.5_wp, 2.0_wp, 10.0_wp, 50.0_wp]
+            e_inv = [1.0e-3_wp, 1.0e-2_wp, 0.1_wp, 0.5_wp, 0.9_wp, 0.99_wp]
+        else
+            min_time = 0.1_wp
+            repeats = 5
+            alpha = [(0.05_wp * i, i=0, 22)]
+            n_ov = size(alpha)
+            alpha = [alpha, 0.0_wp, 0.1_wp, 0.2_wp, 0.5_wp, 1.0_wp, 2.0_wp, 5.0_wp, 10.0_wp, 20.0_wp, 50.0_wp]
+            e_inv = [1.0e-3_wp, 2.0e-3_wp, 5.0e-3_wp, 1.0e-2_wp, 2.0e-2_wp, 5.0e-2_wp, 0.1_wp, 0.2_wp, 0.3_wp, &
+                     0.4_wp, 0.5_wp, 0.6_wp, 0.7_wp, 0.8_wp, 0.9_wp, 0.95_wp, 0.99_wp, 0.999_wp]
+        end if
+        n_fo = size(alpha) - n_ov
+        allocate (iend(size(alpha)))
+        iend(1:n_ov) = HD_END_OVERLAP
+        iend(n_ov + 1:) = HD_END_FORCE
+
+        ! References, computed once.
+        call fwd_init(fref, ENGINE_LIB, HD_METHOD_RK45, 1.0e-15_wp, -1, alpha, iend)
+        call fref%run()
+        do i = 1, size(alpha)
+            if (fref%status(i) /= HD_OK) call fail(EXIT_FAILURE, 'forward reference (rk45, tol 1e-15) failed: ' // &
+                                                   hertzdamp_message(fref%status(i)))
+        end do
+        call inv_init(iref, HD_METHOD_ITERATIVE, 1.0e-13_wp, e_inv, spread(inv_tc, 1, size(e_inv)), &
+                      spread(inv_m, 1, size(e_inv)), spread(inv_u, 1, size(e_inv)))
+        call iref%run()
+        do i = 1, size(e_inv)
+            if (iref%status(i) /= HD_OK) call fail(EXIT_FAILURE, 'inverse reference (iterative, tol 1e-13) failed: ' &
+                                                   // hertzdamp_message(iref%status(i)))
+        end do
+
+        allocate (rows(0))
+        call forward_rows(alpha, iend, n_ov, fref, min_time, repeats, rows)
+        call inverse_rows(iref, min_time, repeats, rows)
+        call throughput(quick, repeats, thr_n, thr_ns, thr_rate, thr_bad)
+        if (thr_n > 0) then
+            rows = [rows, bench_row('throughput', 'fit', 'n=' // itoa(thr_n), 7, thr_n - thr_bad, thr_n, &
+                                    ns=thr_ns)]
+        end if
+        call figures(rows, thr_n, thr_rate, thr_bad, figs)
+
+        ! Render.
+        call build_table(rows, fmt, t)
+        if (fmt /= FORMAT_CSV) then
+            call t%meta('bench', 'work-precision of hertzdamp: forward alpha -> (e, tau_c), inverse (e, T_c, m, ' // &
+                        'u_in) -> (k, d); every number measured in this run')
+            if (quick) then
+                call t%meta('mode', 'quick: fewer alpha and e, each time the median of 3 batches of >= 0.01 s wall ' // &
+                            'clock (full run: 5 batches of >= 0.1 s)')
+            else
+                call t%meta('mode', 'full: each time the median of 5 batches of >= 0.1 s wall clock (system_clock)')
+            end if
+            call t%meta('forward', itoa(n_ov) // ' alpha in [0, 1.1] (overlap) and ' // itoa(n_fo) // &
+                        ' alpha in [0, 50] (force); reference rk45 at tol 1e-15; error of e relative to max(e, 1e-3)' &
+                        // '; series and pade on the overlap alpha only')
+            call t%meta('inverse', itoa(size(e_inv)) // ' e in [1e-3, 0.999] (overlap), m = 1e-2 kg, u_in = 1 m/s, ' // &
+                        'T_c = 1e-4 s; reference iterative at tol 1e-13')
+            call t%meta('tolerances', 'rk45 and GSL (rkf45, rk8pd) with relative error control: absolute ' // &
+                        'tolerance 1e-30 tol; rhs_evals, steps, rejected are means per collision (GSL: rejected n/a)')
+            call t%meta('omitted', 'methods that report not-supported, and points whose status is not ok ' // &
+                        '(column points = used/total)')
+            do i = 1, figs%n
+                call t%meta('figure' // itoa(i), figs%lines(i)%s)
+            end do
+        end if
+        if (fmt == FORMAT_TEXT) then
+            call render_text(t, figs%n, rows, buf)
+            do i = 1, figs%n
+                call buf%add('figure: ' // figs%lines(i)%s)
+            end do
+            call buf%add('# total bench time ' // ftoa(wall_seconds() - t_start, '(f0.1)') // ' s')
+        else
+            call t%render(fmt, buf)
+        end if
+
+        if (want_plot) call make_plot(rows, plot_file, terminal, quick)
+        call buf%flush_to_stdout()
+        call quit(EXIT_OK)
+    end subroutine cmd_bench
+
+    ! ------------------------------------------------------------------ forward
+
+    subroutine forward_rows(alpha, iend, n_ov, fref, min_time, repeats, rows)
+        real(wp), intent(in) :: alpha(:)
+        integer, intent(in) :: iend(:), n_ov
+        type(fwd_case), intent(in) :: fref
+        real(wp), intent(in) :: min_time
+        integer, intent(in) :: repeats
+        type(bench_row), allocatable, intent(inout) :: rows(:)
+        real(wp), parameter :: tols(5) = [1.0e-4_wp, 1.0e-6_wp, 1.0e-8_wp, 1.0e-10_wp, 1.0e-12_wp]
+        character(len=*), parameter :: tol_names(5) = ['1e-4 ', '1e-6 ', '1e-8 ', '1e-10', '1e-12']
+        integer, parameter :: orders(6) = [1, 2, 3, 5, 10, 20]
+        integer :: j, n
+        n = size(alpha)
+        do j = 1, size(tols)
+            call one(ENGINE_LIB, HD_METHOD_RK45, tols(j), -1, 'rk45', trim(tol_names(j)), 1, n)
+        end do
+        do j = 1, size(orders)
+            call one(ENGINE_LIB, HD_METHOD_SERIES, 0.0_wp, orders(j), 'series', 'N=' // itoa(orders(j)), 4, n_ov)
+        end do
+        call one(ENGINE_LIB, HD_METHOD_PADE, 0.0_wp, -1, 'pade', '', 5, n_ov)
+        call one(ENGINE_LIB, HD_METHOD_COMPACT, 0.0_wp, -1, 'compact', '', 6, n)
+        call one(ENGINE_LIB, HD_METHOD_FIT, 0.0_wp, -1, 'fit', '', 7, n)
+        do j = 1, size(tols)
+            call one(ENGINE_GSL, HERTZDAMP_GSL_RKF45, tols(j), -1, 'gsl-rkf45', trim(tol_names(j)), 2, n)
+        end do
+        do j = 1, size(tols)
+            call one(ENGINE_GSL, HERTZDAMP_GSL_RK8PD, tols(j), -1, 'gsl-rk8pd', trim(tol_names(j)), 3, n)
+        end do
+    contains
+        !> One row: a first (untimed) sweep decides which points are used.
+        subroutine one(engine, method, tol, order, name, setting, family, npts)
+            integer, intent(in) :: engine, method, order, family, npts
+            real(wp), intent(in) :: tol
+            character(len=*), intent(in) :: name, setting
+            type(fwd_case) :: c
+            type(bench_row) :: r
+            integer, allocatable :: idx(:)
+            integer :: i
+            real(wp) :: tol_
+            tol_ = tol
+            if (tol_ <= 0.0_wp) tol_ = 1.0e-13_wp
+            call fwd_init(c, engine, method, tol_, order, alpha(1:npts), iend(1:npts))
+            call c%run()
+            idx = pack([(i, i=1, npts)], c%status == HD_OK)
+            if (size(idx) == 0) return
+            if (size(idx) < npts) call fwd_init(c, engine, method, tol_, order, alpha(idx), iend(idx))
+            r%problem = 'forward'
+            r%method = name
+            r%setting = setting
+            r%family = family
+            r%npts = size(idx)
+            r%ntot = npts
+            r%ns = 1.0e9_wp * bench_measure(c, min_time, repeats) / size(idx)
+            if (any(c%status /= HD_OK)) return   ! not reproducible: leave the method out
+            r%err(1) = maxval(abs(c%e - fref%e(idx)) / max(fref%e(idx), e_floor))
+            r%err(2) = maxval(abs(c%tau - fref%tau(idx)) / abs(fref%tau(idx)))
+            if (engine == ENGINE_GSL .or. method == HD_METHOD_RK45) then
+                r%steps = sum(real(c%steps, wp)) / size(idx)
+                r%rhs = sum(real(c%rhs, wp)) / size(idx)
+                if (engine == ENGINE_LIB) r%rejected = sum(real(c%rejected, wp)) / size(idx)
+            end if
+            rows = [rows, r]
+        end subroutine one
+    end subroutine forward_rows
+
+    ! ------------------------------------------------------------------ inverse
+
+    subroutine inverse_rows(iref, min_time, repeats, rows)
+        type(inv_case), intent(in) :: iref
+        real(wp), intent(in) :: min_time
+        integer, intent(in) :: repeats
+        type(bench_row), allocatable, intent(inout) :: rows(:)
+        call one(HD_METHOD_FIT, 0.0_wp, 'fit', '', 7)
+        call one(HD_METHOD_COMPACT, 0.0_wp, 'compact', '', 6)
+        call one(HD_METHOD_SERIES, 0.0_wp, 'series', '', 4)
+        call one(HD_METHOD_PADE, 0.0_wp, 'pade', '', 5)
+        call one(HD_METHOD_ITERATIVE, 1.0e-6_wp, 'iterative', '1e-6', 8)
+        call one(HD_METHOD_ITERATIVE, 1.0e-8_wp, 'iterative', '1e-8', 8)
+        call one(HD_METHOD_ITERATIVE, 1.0e-10_wp, 'iterative', '1e-10', 8)
+    contains
+        subroutine one(method, tol, name, setting, family)
+            integer, intent(in) :: method, family
+            real(wp), intent(in) :: tol
+            character(len=*), intent(in) :: name, setting
+            type(inv_case) :: c
+            type(bench_row) :: r
+            integer, allocatable :: idx(:)
+            integer :: i, n
+            real(wp) :: tol_
+            n = size(iref%e)
+            tol_ = tol
+            if (tol_ <= 0.0_wp) tol_ = 1.0e-10_wp
+            call inv_init(c, method, tol_, iref%e, iref%tc, iref%m, iref%u)
+            call c%run()
+            idx = pack([(i, i=1, n)], c%status == HD_OK)
+            if (size(idx) == 0) return
+            if (size(idx) < n) call inv_init(c, method, tol_, iref%e(idx), iref%tc(idx), iref%m(idx), iref%u(idx))
+            r%problem = 'inverse'
+            r%method = name
+            r%setting = setting
+            r%family = family
+            r%npts = size(idx)
+            r%ntot = n
+            r%ns = 1.0e9_wp * bench_measure(c, min_time, repeats) / size(idx)
+            if (any(c%status /= HD_OK)) return
+            r%err(3) = maxval(rel(c%alpha, iref%alpha(idx)))
+            r%err(4) = maxval(rel(c%k, iref%k(idx)))
+            r%err(5) = maxval(rel(c%d, iref%d(idx)))
+            rows = [rows, r]
+        end subroutine one
+    end subroutine inverse_rows
+
+    pure elemental real(wp) function rel(got, want)
+        real(wp), intent(in) :: got, want
+        rel = abs(got - want) / max(abs(want), tiny(1.0_wp))
+    end function rel
+
+    ! ------------------------------------------------------------------ throughput
+
+    !> The elemental fit inverse over n contacts with random e, m, u_in, T_c.
+    !> n = 10^6 unless the method is too slow for the time budget of the mode (then
+    !> as many as fit into it).  Returns n = 0 if the fit inverse is not available.
+    subroutine throughput(quick, repeats, n, ns, rate, nbad)
+        logical, intent(in) :: quick
+        integer, intent(in) :: repeats
+        integer, intent(out) :: n, nbad
+        real(wp), intent(out) :: ns, rate
+        integer, parameter :: n_full = 1000000, n_probe = 100
+        type(inv_case) :: c
+        real(wp), allocatable :: e(:), m(:), u(:), tc(:)
+        real(wp) :: budget, t0, t1, per
+        integer(int64) :: seed
+        integer :: r
+        real(wp) :: times(max(repeats, 1))
+        n = 0
+        ns = 0.0_wp
+        rate = 0.0_wp
+        nbad = 0
+        budget = merge(3.0_wp, 30.0_wp, quick)
+        seed = 20261122_int64
+        allocate (e(n_full), m(n_full), u(n_full), tc(n_full))
+        e = 10.0_wp**(-3.0_wp * lcg_uniform(seed, n_full))   ! log-uniform in [1e-3, 1]
+        m = 10.0_wp**(-9.0_wp + 9.0_wp * lcg_uniform(seed, n_full))   ! [1e-9, 1] kg
+        u = 10.0_wp**(-3.0_wp + 4.0_wp * lcg_uniform(seed, n_full))   ! [1e-3, 10] m/s
+        tc = 10.0_wp**(-7.0_wp + 4.0_wp * lcg_uniform(seed, n_full))  ! [1e-7, 1e-3] s
+        ! probe: is the method there, and how fast is it?
+        call inv_init(c, HD_METHOD_FIT, 1.0e-10_wp, e(1:n_probe), tc(1:n_probe), m(1:n_probe), u(1:n_probe))
+        t0 = wall_seconds()
+        call inv_run_array(c)
+        t1 = wall_seconds()
+        if (all(c%status == HD_NOT_SUPPORTED)) return
+        per = max(t1 - t0, 0.0_wp) / n_probe
+        n = n_full
+        if (per * n_full * (repeats + 1) > budget) n = max(n_probe, round_down(budget / (per * (repeats + 1))))
+        call inv_init(c, HD_METHOD_FIT, 1.0e-10_wp, e(1:n), tc(1:n), m(1:n), u(1:n))
+        call inv_run_array(c)   ! warm-up (first touch of the output arrays)
+        do r = 1, size(times)
+            t0 = wall_seconds()
+            call inv_run_array(c)
+            times(r) = wall_seconds() - t0
+        end do
+        nbad = count(c%status /= HD_OK)
+        t0 = median_of(times)
+        ns = 1.0e9_wp * t0 / n
+        rate = n / max(t0, tiny(1.0_wp))
+    end subroutine throughput
+
+    real(wp) function median_of(x)
+        real(wp), intent(in) :: x(:)
+        real(wp) :: y(size(x))
+        integer :: i, j
+        real(wp) :: v
+        y = x
+        do i = 2, size(y)
+            v = y(i)
+            j = i - 1
+            do while (j >= 1)
+                if (y(j) <= v) exit
+                y(j + 1) = y(j)
+                j = j - 1
+            end do
+            y(j + 1) = v
+        end do
+        median_of = y((size(y) + 1) / 2)
+        if (mod(size(y), 2) == 0) median_of = 0.5_wp * (y(size(y) / 2) + y(size(y) / 2 + 1))
+    end function median_of
+
+    !> n uniform numbers in (0, 1) from the Park-Miller generator (reproducible everywhere).
+    function lcg_uniform(seed, n) result(x)
+        integer(int64), intent(inout) :: seed
+        integer, intent(in) :: n
+        real(wp) :: x(n)
+        integer :: i
+        integer(int64), parameter :: a = 16807_int64, modulus = 2147483647_int64
+        do i = 1, n
+            seed = mod(a * seed, modulus)
+            x(i) = real(seed, wp) / real(modulus, wp)
+        end do
+    end function lcg_uniform
+
+    !> x rounded down to one significant digit (as an integer >= 1).
+    integer function round_down(x)
+        real(wp), intent(in) :: x
+        real(wp) :: p
+        p = 10.0_wp**floor(log10(max(x, 1.0_wp)))
+        round_down = max(1, int(p * floor(x / p)))
+    end function round_down
+
+    ! ------------------------------------------------------------------ figures
+
+    !> The 'figure' lines: ratios measured side by side in this run.
+    subroutine figures(rows, thr_n, thr_rate, thr_bad, figs)
+        type(bench_row), intent(in) :: rows(:)
+        integer, intent(in) :: thr_n, thr_bad
+        real(wp), intent(in) :: thr_rate
+        type(cli_buffer), intent(out) :: figs
+        integer :: i_fit, i_it
+        real(wp) :: targets(2), t_rk, t_f, t_8
+        character(len=*), parameter :: target_names(2) = ['1e-8 ', '1e-10']
+        character(len=:), allocatable :: q_rk, q_f, q_8
+        integer :: j
+        i_fit = find_row(rows, 'inverse', 'fit', '')
+        i_it = find_row(rows, 'inverse', 'iterative', '1e-10')
+        if (i_fit > 0 .and. i_it > 0) then
+            call figs%add('inverse: fit ' // ftoa(rows(i_fit)%ns, '(es9.2)') // ' ns/call, iterative (tol 1e-10) ' // &
+                          ftoa(rows(i_it)%ns, '(es9.2)') // ' ns/call: speed-up ' // &
+                          fratio(rows(i_it)%ns / rows(i_fit)%ns) // ' (max error on alpha, k, d: fit ' // &
+                          ftoa(maxval(rows(i_fit)%err(3:5)), '(es9.2)') // ', iterative ' // &
+                          ftoa(maxval(rows(i_it)%err(3:5)), '(es9.2)') // ')')
+        else
+            call figs%add('inverse: fit vs iterative speed-up not available (a method is missing in this build)')
+        end if
+        if (thr_n > 0) then
+            call figs%add('throughput: elemental fit inverse over ' // itoa(thr_n) // ' random contacts: ' // &
+                          ftoa(thr_rate, '(es9.2)') // ' contacts/s (' // itoa(thr_bad) // ' not ok)')
+        end if
+        targets = [1.0e-8_wp, 1.0e-10_wp]
+        do j = 1, size(targets)
+            call time_at_error(rows, 'rk45', targets(j), t_rk, q_rk)
+            call time_at_error(rows, 'gsl-rkf45', targets(j), t_f, q_f)
+            call time_at_error(rows, 'gsl-rk8pd', targets(j), t_8, q_8)
+            call figs%add('forward at equal achieved error ' // trim(target_names(j)) // &
+                          ' (max of e and tau_c errors; ns/call interpolated log-log between tolerances): rk45 ' // &
+                          ns_text(q_rk, t_rk) // ', gsl-rk8pd ' // ns_text(q_8, t_8) // ' (' // ratio(t_8, t_rk) // &
+                          '), gsl-rkf45 ' // ns_text(q_f, t_f) // ' (' // ratio(t_f, t_rk) // ')')
+        end do
+    end subroutine figures
+
+    !> 'N ns' (with the qualifier of time_at_error) or 'not reached'.
+    function ns_text(qual, t) result(s)
+        character(len=*), intent(in) :: qual
+        real(wp), intent(in) :: t
+        character(len=:), allocatable :: s
+        if (ieee_is_nan(t)) then
+            s = 'not reached'
+        else
+            s = qual // ftoa(t, '(es9.2)') // ' ns'
+        end if
+    end function ns_text
+
+    !> A ratio with 3 significant digits.
+    function fratio(x) result(s)
+        real(wp), intent(in) :: x
+        character(len=:), allocatable :: s
+        if (x >= 100.0_wp .or. x < 0.01_wp) then
+            s = ftoa(x, '(es9.2)')
+        else if (x >= 10.0_wp) then
+            s = ftoa(x, '(f6.1)')
+        else
+            s = ftoa(x, '(f6.2)')
+        end if
+    end function fratio
+
+    !> 'R x rk45' for the time ratio a / b.
+    function ratio(a, b) result(s)
+        real(wp), intent(in) :: a, b
+        character(len=:), allocatable :: s
+        if (ieee_is_nan(a) .or. ieee_is_nan(b) .or. b <= 0.0_wp) then
+            s = 'time ratio to rk45 n/a'
+        else
+            s = fratio(a / b) // ' x rk45'
+        end if
+    end function ratio
+
+    !> ns per call of a forward integrator at achieved error `target`: interpolated
+    !> log-log between the two tolerances whose errors bracket it (qualifier '');
+    !> the loosest tolerance's time if that already achieves it ('<=');
+    !> NaN if no tolerance does.
+    subroutine time_at_error(rows, name, target, t, qual)
+        type(bench_row), intent(in) :: rows(:)
+        character(len=*), intent(in) :: name
+        real(wp), intent(in) :: target
+        real(wp), intent(out) :: t
+        character(len=:), allocatable, intent(out) :: qual
+        real(wp), allocatable :: err(:), ns(:)
+        integer :: i
+        real(wp) :: w
+        allocate (err(0), ns(0))
+        do i = 1, size(rows)
+            if (rows(i)%problem == 'forward' .and. rows(i)%method == name) then
+                err = [err, max(rows(i)%err(1), rows(i)%err(2))]
+                ns = [ns, rows(i)%ns]
+            end if
+        end do
+        t = ieee_value(t, ieee_quiet_nan)
+        qual = ''
+        if (size(err) == 0) return
+        if (err(1) <= target) then
+            t = ns(1)
+            qual = '<='
+            return
+        end if
+        do i = 1, size(err) - 1
+            if (err(i) > target .and. err(i + 1) <= target) then
+                w = (log(target) - log(err(i))) / (log(max(err(i + 1), plot_floor)) - log(err(i)))
+                t = exp(log(ns(i)) + w * (log(ns(i + 1)) - log(ns(i))))
+                return
+            end if
+        end do
+    end subroutine time_at_error
+
+    integer function find_row(rows, problem, method, setting) result(k)
+        type(bench_row), intent(in) :: rows(:)
+        character(len=*), intent(in) :: problem, method, setting
+        integer :: i
+        k = 0
+        do i = 1, size(rows)
+            if (rows(i)%problem == problem .and. rows(i)%method == method .and. rows(i)%setting == setting) k = i
+        end do
+    end function find_row
+
+    ! ------------------------------------------------------------------ output
+
+    subroutine build_table(rows, fmt, t)
+        type(bench_row), intent(in) :: rows(:)
+        integer, intent(in) :: fmt
+        type(out_table), intent(out) :: t
+        integer :: i, j
+        if (fmt == FORMAT_TEXT) then
+            call t%set_columns('problem,method,setting,points,err_e,err_tau,err_alpha,err_k,err_d,ns_per_call,' // &
+                               'steps,rejected,rhs_evals')
+        else
+            call t%set_columns('problem,method,setting,max_rel_err_e,max_rel_err_tau,max_rel_err_alpha,' // &
+                               'max_rel_err_k,max_rel_err_d,ns_per_call,rhs_evals')
+        end if
+        do i = 1, size(rows)
+            call t%str(rows(i)%problem)
+            call t%str(rows(i)%method)
+            call t%str(blank_or(rows(i)%setting, fmt))
+            if (fmt == FORMAT_TEXT) call t%str(itoa(rows(i)%npts) // '/' // itoa(rows(i)%ntot))
+            do j = 1, 5
+                call cell(rows(i)%err(j))
+            end do
+            call cell(rows(i)%ns)
+            if (fmt == FORMAT_TEXT) then
+                call cell(rows(i)%steps)
+                call cell(rows(i)%rejected)
+            end if
+            call cell(rows(i)%rhs)
+        end do
+    contains
+        !> A number, or the format's empty cell when negative (not applicable).
+        subroutine cell(x)
+            real(wp), intent(in) :: x
+            if (x >= 0.0_wp) then
+                call t%num(x)
+            else if (fmt == FORMAT_JSON) then
+                call t%num(ieee_value(x, ieee_quiet_nan))   ! rendered as null
+            else if (fmt == FORMAT_TEXT) then
+                call t%str('-')
+            else
+                call t%str('')
+            end if
+        end subroutine cell
+    end subroutine build_table
+
+    function blank_or(s, fmt) result(r)
+        character(len=*), intent(in) :: s
+        integer, intent(in) :: fmt
+        character(len=:), allocatable :: r
+        r = s
+        if (len(s) == 0 .and. fmt == FORMAT_TEXT) r = '-'
+    end function blank_or
+
+    !> Text rendering: the '#' header (metadata without the figures, which go below
+    !> the table) and a compact table with 3 significant digits.
+    subroutine render_text(t, nfig, rows, buf)
+        type(out_table), intent(in) :: t
+        integer, intent(in) :: nfig
+        type(bench_row), intent(in) :: rows(:)
+        type(cli_buffer), intent(inout) :: buf
+        integer :: i, j
+        character(len=:), allocatable :: line
+        do i = 1, size(t%meta_key) - nfig
+            call buf%add('# ' // t%meta_key(i)%s // ': ' // t%meta_val(i)%s)
+        end do
+        call buf%add(pad('problem', 10) // ' ' // pad('method', 9) // ' ' // pad('setting', 9) // ' ' // &
+                     pad('points', -7) // ' ' // pad('err_e', -9) // ' ' // pad('err_tau', -9) // ' ' // &
+                     pad('err_alpha', -9) // ' ' // pad('err_k', -9) // ' ' // pad('err_d', -9) // ' ' // &
+                     pad('ns/call', -9) // ' ' // pad('steps', -7) // ' ' // pad('rejected', -8) // ' ' // &
+                     pad('rhs_evals', -9))
+        do i = 1, size(rows)
+            line = pad(rows(i)%problem, 10) // ' ' // pad(rows(i)%method, 9) // ' ' // &
+                   pad(blank_or(rows(i)%setting, FORMAT_TEXT), 9) // ' ' // &
+                   pad(itoa(rows(i)%npts) // '/' // itoa(rows(i)%ntot), -7)
+            do j = 1, 5
+                line = line // ' ' // pad(num_or_dash(rows(i)%err(j), '(es9.2)'), -9)
+            end do
+            line = line // ' ' // pad(num_or_dash(rows(i)%ns, '(es9.2)'), -9) // ' ' // &
+                   pad(num_or_dash(rows(i)%steps, '(f7.1)'), -7) // ' ' // &
+                   pad(num_or_dash(rows(i)%rejected, '(f8.2)'), -8) // ' ' // &
+                   pad(num_or_dash(rows(i)%rhs, '(f9.1)'), -9)
+            call buf%add(line)
+        end do
+    end subroutine render_text
+
+    function num_or_dash(x, f) result(s)
+        real(wp), intent(in) :: x
+        character(len=*), intent(in) :: f
+        character(len=:), allocatable :: s
+        if (x < 0.0_wp) then
+            s = '-'
+        else
+            s = ftoa(x, f)
+        end if
+    end function num_or_dash
+
+    ! ------------------------------------------------------------------ plot
+
+    !> Before any work: gnuplot present (else exit 4) and the target writable (else
+    !> exit 2).  Chooses the terminal: pngcairo if gnuplot has it, else png.
+    subroutine check_plot_target(file, terminal)
+        character(len=*), intent(in) :: file
+        character(len=:), allocatable, intent(out) :: terminal
+        integer :: es, cs, u, ios
+        logical :: exists
+        if (len_trim(file) == 0) call fail(EXIT_USAGE, 'option --plot needs a file name')
+        es = 1
+        cs = 0
+        call execute_command_line('command -v gnuplot >/dev/null 2>&1', exitstat=es, cmdstat=cs)
+        if (cs /= 0 .or. es /= 0) call fail(EXIT_FAILURE, '--plot needs gnuplot, which was not found ' // &
+                                              '(Debian: apt-get install gnuplot-nox)')
+        es = 1
+        call execute_command_line('gnuplot -e "set terminal pngcairo" >/dev/null 2>&1', exitstat=es, cmdstat=cs)
+        terminal = 'png'
+        if (cs == 0 .and. es == 0) terminal = 'pngcairo'
+        inquire (file=file, exist=exists)
+        if (exists) then
+            ! must be a writable regular file (opening for append writes nothing)
+            open (newunit=u, file=file, status='old', action='write', position='append', iostat=ios)
+            if (ios /= 0) call fail(EXIT_USAGE, 'cannot write the plot file "' // file // '"')
+            close (u)
+        end if
+        open (newunit=u, file=file // '.tmp', status='replace', action='write', iostat=ios)
+        if (ios /= 0) call fail(EXIT_USAGE, 'cannot write the plot file "' // file // '" (directory not writable?)')
+        close (u, status='delete')
+    end subroutine check_plot_target
+
+    !> Work-precision diagram: forward and inverse panels.  Data and script go to
+    !> temporary files; the PNG is written to FILE.tmp and renamed into place only
+    !> when gnuplot succeeded.
+    subroutine make_plot(rows, file, terminal, quick)
+        type(bench_row), intent(in) :: rows(:)
+        character(len=*), intent(in) :: file, terminal
+        logical, intent(in) :: quick
+        character(len=:), allocatable :: tmpdir, base, dat, gp, log_file, png_tmp
+        type(cli_buffer) :: plots
+        character(len=:), allocatable :: cmd
+        integer :: u, ios, p, f, i, nblock, es, cs, blocks(2, n_families)
+        integer(int64) :: cnt
+        integer(int64) :: sz
+        character(len=*), parameter :: pts(n_families) = ['7 ', '5 ', '9 ', '13', '11', '3 ', '2 ', '1 ']
+        character(len=*), parameter :: colors(n_families) = ['#1f77b4', '#ff7f0e', '#2ca02c', '#9467bd', &
+                                                             '#8c564b', '#e377c2', '#d62728', '#7f7f7f']
+        character(len=*), parameter :: problems(2) = ['forward', 'inverse']
+        real(wp) :: y
+        tmpdir = env_or('TMPDIR', '/tmp')
+        call system_clock(cnt)
+        base = tmpdir // '/hertzdamp_bench_' // itoa8(cnt)
+        dat = base // '.dat'
+        gp = base // '.gp'
+        log_file = base // '.log'
+        png_tmp = file // '.tmp'
+
+        open (newunit=u, file=dat, status='replace', action='write', iostat=ios)
+        if (ios /= 0) call fail(EXIT_FAILURE, 'cannot write a temporary file in ' // tmpdir)
+        nblock = 0
+        blocks = -1
+        do p = 1, 2
+            do f = 1, n_families
+                if (.not. any([(rows(i)%problem == problems(p) .and. rows(i)%family == f, i=1, size(rows))])) cycle
+                blocks(p, f) = nblock
+                nblock = nblock + 1
+                do i = 1, size(rows)
+                    if (rows(i)%problem /= problems(p) .or. rows(i)%family /= f) cycle
+                    if (p == 1) then
+                        y = max(rows(i)%err(1), rows(i)%err(2))
+                    else
+                        y = maxval(rows(i)%err(3:5))
+                    end if
+                    write (u, '(es14.6,1x,es14.6,1x,a)') rows(i)%ns, max(y, plot_floor), &
+                        '"' // trim(rows(i)%setting) // '"'
+                end do
+                write (u, '(a)') ''
+                write (u, '(a)') ''
+            end do
+        end do
+        close (u)
+
+        open (newunit=u, file=gp, status='replace', action='write', iostat=ios)
+        if (ios /= 0) call fail(EXIT_FAILURE, 'cannot write a temporary file in ' // tmpdir)
+        if (terminal == 'pngcairo') then
+            write (u, '(a)') 'set terminal pngcairo size 1400,620 enhanced font "sans,10"'
+        else
+            write (u, '(a)') 'set terminal png size 1400,620'
+        end if
+        write (u, '(a)') 'set output ' // gp_string(png_tmp)
+        write (u, '(a)') 'set multiplot layout 1,2 title "hertzdamp bench: work-precision' // &
+            trim(merge(' (--quick)', '          ', quick)) // '"'
+        write (u, '(a)') 'set logscale xy'
+        write (u, '(a)') 'set format x "10^{%L}"'
+        write (u, '(a)') 'set format y "10^{%L}"'
+        write (u, '(a)') 'set grid'
+        write (u, '(a)') 'set key outside right top'
+        write (u, '(a)') 'set xlabel "time per call [ns] (median)"'
+        write (u, '(a)') 'set ylabel "max relative error (floor 1e-17)"'
+        do p = 1, 2
+            if (p == 1) then
+                write (u, '(a)') 'set title "forward: alpha -> e, tau_c  (vs rk45 tol 1e-15)" noenhanced'
+            else
+                write (u, '(a)') 'set title "inverse: e, T_c, m, u_in -> alpha, k, d  (vs iterative tol 1e-13)" noenhanced'
+            end if
+            plots%n = 0
+            do f = 1, n_families
+                if (blocks(p, f) < 0) cycle
+                call plots%add(gp_string(dat) // ' index ' // itoa(blocks(p, f)) // &
+                               ' using 1:2 with linespoints pt ' // trim(pts(f)) // ' ps 1.5 lc rgb "' // colors(f) // &
+                               '" title "' // trim(fam(f)) // '" noenhanced')
+            end do
+            if (plots%n == 0) then
+                write (u, '(a)') 'set label 1 "no data" at graph 0.5, graph 0.5 center'
+                write (u, '(a)') 'plot [1:10] [1:10] NaN notitle'
+                write (u, '(a)') 'unset label 1'
+            else
+                cmd = 'plot '
+                do i = 1, plots%n
+                    cmd = cmd // plots%lines(i)%s
+                    if (i < plots%n) cmd = cmd // ', '
+                end do
+                write (u, '(a)') cmd
+            end if
+        end do
+        write (u, '(a)') 'unset multiplot'
+        write (u, '(a)') 'set output'
+        close (u)
+
+        call execute_command_line('gnuplot ' // sh_quote(gp) // ' >' // sh_quote(log_file) // ' 2>&1', &
+                                  exitstat=es, cmdstat=cs)
+        sz = -1
+        inquire (file=png_tmp, size=sz)
+        if (cs /= 0 .or. es /= 0 .or. sz <= 0) then
+            call copy_to_stderr(log_file)
+            call remove_file(dat)
+            call remove_file(gp)
+            call remove_file(log_file)
+            call remove_file(png_tmp)
+            call fail(EXIT_FAILURE, 'gnuplot failed (exit ' // itoa(es) // '): no plot written')
+        end if
+        call remove_file(dat)
+        call remove_file(gp)
+        call remove_file(log_file)
+        if (c_rename(c_str(png_tmp), c_str(file)) /= 0) then
+            call remove_file(png_tmp)
+            call fail(EXIT_FAILURE, 'cannot rename the plot into place: ' // file)
+        end if
+    end subroutine make_plot
+
+    subroutine copy_to_stderr(file)
+        character(len=*), intent(in) :: file
+        integer :: u, ios
+        character(len=512) :: line
+        open (newunit=u, file=file, status='old', action='read', iostat=ios)
+        if (ios /= 0) return
+        do
+            read (u, '(a)', iostat=ios) line
+            if (ios /= 0) exit
+            write (error_unit, '(a)') 'gnuplot: ' // trim(line)
+        end do
+        close (u)
+    end subroutine copy_to_stderr
+
+    subroutine remove_file(file)
+        character(len=*), intent(in) :: file
+        integer :: u, ios
+        logical :: exists
+        inquire (file=file, exist=exists)
+        if (.not. exists) return
+        open (newunit=u, file=file, status='old', iostat=ios)
+        if (ios == 0) close (u, status='delete')
+    end subroutine remove_file
+
+    function c_str(s) result(c)
+        character(len=*), intent(in) :: s
+        character(kind=c_char) :: c(len(s) + 1)
+        integer :: i
+        do i = 1, len(s)
+            c(i) = s(i:i)
+        end do
+        c(len(s) + 1) = c_null_char
+    end function c_str
+
+    !> A POSIX shell single-quoted word.
+    function sh_quote(s) result(r)
+        character(len=*), intent(in) :: s
+        character(len=:), allocatable :: r
+        integer :: i
+        r = ''''
+        do i = 1, len(s)
+            if (s(i:i) == '''') then
+                r = r // '''\'''''
+            else
+                r = r // s(i:i)
+            end if
+        end do
+        r = r // ''''
+    end function sh_quote
+
+    !> A gnuplot single-quoted string ('' stands for one quote).
+    function gp_string(s) result(r)
+        character(len=*), intent(in) :: s
+        character(len=:), allocatable :: r
+        integer :: i
+        r = ''''
+        do i = 1, len(s)
+            if (s(i:i) == '''') r = r // ''''
+            r = r // s(i:i)
+        end do
+        r = r // ''''
+    end function gp_string
+
+    function env_or(name, default) result(v)
+        character(len=*), intent(in) :: name, default
+        character(len=:), allocatable :: v
+        integer :: l, st
+        call get_environment_variable(name, length=l, status=st)
+        if (st /= 0 .or. l == 0) then
+            v = default
+            return
+        end if
+        allocate (character(len=l) :: v)
+        call get_environment_variable(name, v)
+    end function env_or
+
+    ! ------------------------------------------------------------------ small helpers
+
+    function itoa(i) result(s)
+        integer, intent(in) :: i
+        character(len=:), allocatable :: s
+        character(len=16) :: b
+        write (b, '(i0)') i
+        s = trim(b)
+    end function itoa
+
+    function itoa8(i) result(s)
+        integer(int64), intent(in) :: i
+        character(len=:), allocatable :: s
+        character(len=24) :: b
+        write (b, '(i0)') i
+        s = trim(b)
+    end function itoa8
+
+    function ftoa(x, f) result(s)
+        real(wp), intent(in) :: x
+        character(len=*), intent(in) :: f
+        character(len=:), allocatable :: s
+        character(len=40) :: b
+        if (.not. ieee_is_finite(x)) then
+            s = 'n/a'
+            return
+        end if
+        write (b, f) x
+        s = trim(adjustl(b))
+    end function ftoa
+
+end module hertzdamp_cmd_bench

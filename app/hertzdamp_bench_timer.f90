@@ -22,6 +22,7 @@ module hertzdamp_bench_timer
     abstract interface
         subroutine run_iface(self)
             import :: bench_case
+            implicit none
             class(bench_case), intent(inout) :: self
         end subroutine run_iface
     end interface

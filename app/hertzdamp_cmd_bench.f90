@@ -83,6 +83,7 @@ module hertzdamp_cmd_bench
     interface
         function c_rename(old, new) bind(C, name='rename') result(rc)
             import :: c_int, c_char
+            implicit none
             character(kind=c_char), intent(in) :: old(*), new(*)
             integer(c_int) :: rc
         end function c_rename

@@ -15,7 +15,7 @@ RELEASE_FLAGS := -O3 -march=x86-64-v2 -funroll-loops -fPIC
 # Test build: warnings on, standard conformance, run-time checks that are cheap.
 TEST_FLAGS := -O2 -g -fPIC -Wall -Wextra -Wimplicit-interface -std=f2018 -fcheck=bounds,do,pointer -fbacktrace
 
-.PHONY: all deps run test build install clean lint
+.PHONY: all deps run test build install clean lint fit-data fit-source
 
 all: build
 
@@ -49,6 +49,15 @@ test: deps
 	@$(FPM) build --tests --flag "$(TEST_FLAGS)"
 	@$(FPM) build --flag "$(RELEASE_FLAGS)"
 	@bash test/run_tests.sh "$(FPM)" "$(TEST_FLAGS)" "$(RELEASE_FLAGS)"
+
+# ---------------------------------------------------------------- generated fit tables
+# fit-data: run the generator (reference integrator at tol 1e-15 + LAPACK) -> CSV (~20 s).
+# fit-source: CSV -> Fortran module (deterministic; test/cli_sync_fit.sh checks it).
+fit-data: deps
+	$(FPM) run hertzdamp-gen-fit --flag "$(RELEASE_FLAGS)" -- data/fit_coefficients.csv
+
+fit-source:
+	$(PYTHON) tools/fit_csv_to_f90.py data/fit_coefficients.csv src/hertzdamp_fit_data.f90
 
 # ---------------------------------------------------------------- install
 install: build

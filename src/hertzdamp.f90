@@ -9,6 +9,7 @@ module hertzdamp
     use hertzdamp_constants
     use hertzdamp_rk45
     use hertzdamp_methods
+    use hertzdamp_fit
     implicit none
     public
 end module hertzdamp

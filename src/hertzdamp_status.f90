@@ -26,6 +26,7 @@ module hertzdamp_status
     integer, parameter, public :: HD_BAD_ORDER = 16        !! series order outside the stored range
     integer, parameter, public :: HD_BAD_KPHYS = 17        !! physical stiffness bound not finite and positive
     integer, parameter, public :: HD_BAD_ARGUMENT = 18     !! any other invalid argument
+    integer, parameter, public :: HD_OUTSIDE_FIT = 19      !! argument outside the range of the fitted approximant
 
     !> Contact ends when the overlap returns to zero (default).
     integer, parameter, public :: HD_END_OVERLAP = 0
@@ -55,13 +56,17 @@ contains
         case (HD_BAD_STIFFNESS); msg = 'invalid stiffness k: must be finite and positive'
         case (HD_BAD_DAMPING); msg = 'invalid damping coefficient d: must be finite and non-negative'
         case (HD_BAD_TIME); msg = 'invalid contact time: must be finite and positive'
-        case (HD_BAD_RESTITUTION); msg = 'invalid restitution coefficient: outside the supported range'
+        case (HD_BAD_RESTITUTION); msg = 'invalid restitution coefficient: outside the supported range ' // &
+            '(the inverse rule needs e_min <= e <= 1 with e_min = 1e-3 for the overlap and 1e-4 for the ' // &
+            'force definition; e -> 0 has no finite contact time)'
         case (HD_OUT_OF_RANGE); msg = 'result out of the representable double-precision range'
         case (HD_NOT_SUPPORTED); msg = 'method does not support this contact-end definition'
         case (HD_NO_CONVERGENCE); msg = 'iteration did not converge'
         case (HD_BAD_ORDER); msg = 'invalid series order: outside the stored range'
         case (HD_BAD_KPHYS); msg = 'invalid physical stiffness bound k_phys: must be finite and positive'
         case (HD_BAD_ARGUMENT); msg = 'invalid argument'
+        case (HD_OUTSIDE_FIT); msg = 'argument outside the range of the fitted approximant ' // &
+            '(fit/compact methods); use the rk45 method'
         case default; msg = 'unknown status code'
         end select
     end function hertzdamp_message

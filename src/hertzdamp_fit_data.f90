@@ -38,6 +38,14 @@
 ! measured max relative error of the result 7.271E-15
 ! block fo_fwd_ma: tau_max of alpha**(1/3), x in [0.000E+00, 3.745E+00], 16 pieces of degree 11
 ! measured max relative error of the result 6.661E-15
+! compact cov_inv_a: 4 constants, measured max relative error 1.043E-06 over e in [5.000E-02, 1]
+! compact cov_inv_t: 4 constants, measured max relative error 2.919E-06 over e in [5.000E-02, 1]
+! compact cov_fwd_l: 4 constants, measured max relative error 2.294E-05 over e in [5.000E-02, 1]
+! compact cov_fwd_t: 4 constants, measured max relative error 3.401E-06 over e in [5.000E-02, 1]
+! compact cfo_inv_a: 4 constants, measured max relative error 3.578E-04 over e in [5.000E-02, 1]
+! compact cfo_inv_t: 4 constants, measured max relative error 7.861E-04 over e in [5.000E-02, 1]
+! compact cfo_fwd_l: 4 constants, measured max relative error 3.185E-04 over e in [5.000E-02, 1]
+! compact cfo_fwd_t: 4 constants, measured max relative error 7.130E-04 over e in [5.000E-02, 1]
 ! rows: param,name,value | block,name,variable,x0,x1,np,deg | coef,name,piece,c_0,...,c_deg
 
 !> Coefficients of the approximants of hertzdamp_fit and the constants of hertzdamp_compact
@@ -67,6 +75,72 @@ module hertzdamp_fit_data
     real(wp), parameter, public :: fit_ov_fwd_tw_end = 9.39290958526260233e+00_wp
     !> generated constant ov_fwd_tw_slope
     real(wp), parameter, public :: fit_ov_fwd_tw_slope = 9.40510931472818057e-01_wp
+    !> generated constant cov_inv_a_1
+    real(wp), parameter, public :: fit_cov_inv_a_1 = 1.38228650972545997e-01_wp
+    !> generated constant cov_inv_a_2
+    real(wp), parameter, public :: fit_cov_inv_a_2 = 3.05964000983755674e-03_wp
+    !> generated constant cov_inv_a_3
+    real(wp), parameter, public :: fit_cov_inv_a_3 = 1.77028239472949434e-01_wp
+    !> generated constant cov_inv_a_4
+    real(wp), parameter, public :: fit_cov_inv_a_4 = 7.04458728686066862e-03_wp
+    !> generated constant cov_inv_t_1
+    real(wp), parameter, public :: fit_cov_inv_t_1 = 1.82687654930486776e-02_wp
+    !> generated constant cov_inv_t_2
+    real(wp), parameter, public :: fit_cov_inv_t_2 = -5.01614171509811267e-03_wp
+    !> generated constant cov_inv_t_3
+    real(wp), parameter, public :: fit_cov_inv_t_3 = -1.15221013855670833e-02_wp
+    !> generated constant cov_inv_t_4
+    real(wp), parameter, public :: fit_cov_inv_t_4 = -3.15561230037803356e-03_wp
+    !> generated constant cov_fwd_l_1
+    real(wp), parameter, public :: fit_cov_fwd_l_1 = -5.45312357124891678e-01_wp
+    !> generated constant cov_fwd_l_2
+    real(wp), parameter, public :: fit_cov_fwd_l_2 = -4.82594376995703400e-01_wp
+    !> generated constant cov_fwd_l_3
+    real(wp), parameter, public :: fit_cov_fwd_l_3 = -5.70262506394856455e-02_wp
+    !> generated constant cov_fwd_l_4
+    real(wp), parameter, public :: fit_cov_fwd_l_4 = 1.10167664423493417e+00_wp
+    !> generated constant cov_fwd_t_1
+    real(wp), parameter, public :: fit_cov_fwd_t_1 = -4.97483939600166902e-01_wp
+    !> generated constant cov_fwd_t_2
+    real(wp), parameter, public :: fit_cov_fwd_t_2 = -1.04879794129417683e-01_wp
+    !> generated constant cov_fwd_t_3
+    real(wp), parameter, public :: fit_cov_fwd_t_3 = -6.76168673796468056e-01_wp
+    !> generated constant cov_fwd_t_4
+    real(wp), parameter, public :: fit_cov_fwd_t_4 = 1.04887235028621828e+00_wp
+    !> generated constant cfo_inv_a_1
+    real(wp), parameter, public :: fit_cfo_inv_a_1 = -7.91296818152849801e-01_wp
+    !> generated constant cfo_inv_a_2
+    real(wp), parameter, public :: fit_cfo_inv_a_2 = 2.42895870465170832e-01_wp
+    !> generated constant cfo_inv_a_3
+    real(wp), parameter, public :: fit_cfo_inv_a_3 = -1.02271510689835754e+00_wp
+    !> generated constant cfo_inv_a_4
+    real(wp), parameter, public :: fit_cfo_inv_a_4 = 3.91991290508904910e-01_wp
+    !> generated constant cfo_inv_t_1
+    real(wp), parameter, public :: fit_cfo_inv_t_1 = -1.10050604870314594e+00_wp
+    !> generated constant cfo_inv_t_2
+    real(wp), parameter, public :: fit_cfo_inv_t_2 = 4.30536011812123920e-01_wp
+    !> generated constant cfo_inv_t_3
+    real(wp), parameter, public :: fit_cfo_inv_t_3 = -8.90449611638394312e-01_wp
+    !> generated constant cfo_inv_t_4
+    real(wp), parameter, public :: fit_cfo_inv_t_4 = 2.85398144641533069e-01_wp
+    !> generated constant cfo_fwd_l_1
+    real(wp), parameter, public :: fit_cfo_fwd_l_1 = -6.25004783304239808e-01_wp
+    !> generated constant cfo_fwd_l_2
+    real(wp), parameter, public :: fit_cfo_fwd_l_2 = 2.10092209089296100e-01_wp
+    !> generated constant cfo_fwd_l_3
+    real(wp), parameter, public :: fit_cfo_fwd_l_3 = -3.21294621619194809e-01_wp
+    !> generated constant cfo_fwd_l_4
+    real(wp), parameter, public :: fit_cfo_fwd_l_4 = 7.99973568734091006e-02_wp
+    !> generated constant cfo_fwd_t_1
+    real(wp), parameter, public :: fit_cfo_fwd_t_1 = -8.75341667416274061e-01_wp
+    !> generated constant cfo_fwd_t_2
+    real(wp), parameter, public :: fit_cfo_fwd_t_2 = 3.06847072381427333e-01_wp
+    !> generated constant cfo_fwd_t_3
+    real(wp), parameter, public :: fit_cfo_fwd_t_3 = -5.78666647559657021e-01_wp
+    !> generated constant cfo_fwd_t_4
+    real(wp), parameter, public :: fit_cfo_fwd_t_4 = 1.22502519178053992e-01_wp
+    !> generated constant e_min_compact
+    real(wp), parameter, public :: fit_e_min_compact = 5.00000000000000028e-02_wp
 
     !> block ov_inv_a: variable code 1, 8 pieces of degree 9
     integer, parameter, public :: ov_inv_a_np = 8, ov_inv_a_deg = 9

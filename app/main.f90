@@ -4,6 +4,7 @@ program main
     use hertzdamp_cli, only: fail, quit, EXIT_USAGE, EXIT_OK
     use hertzdamp_cmd_basic, only: cmd_table, cmd_forward, cmd_constants
     use hertzdamp_cli_help, only: print_help
+    use hertzdamp_cmd_invert, only: cmd_invert
     implicit none
     character(len=64) :: command
     integer :: n
@@ -24,6 +25,8 @@ program main
         call cmd_forward()
     case ('constants')
         call cmd_constants()
+    case ('invert')
+        call cmd_invert()
     case default
         call fail(EXIT_USAGE, 'unknown command "' // trim(command) // '" (see hertzdamp --help)')
     end select

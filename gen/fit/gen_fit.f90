@@ -96,7 +96,7 @@ program gen_fit
     amax_ov = alpha_of_l(HD_END_OVERLAP, lmax_ov)
     amax_fo = alpha_of_l(HD_END_FORCE, lmax_fo)
     ! forward ranges reach a little beyond alpha(e_min): alpha(e_min/2)
-    amax_ov = alpha_of_l(HD_END_OVERLAP, lmax_ov + log(2.0_wp))
+    amax_ov = alpha_of_l(HD_END_OVERLAP, log(1.0e5_wp))   ! overlap forward: down to e = 1e-5
     amax_fo = alpha_of_l(HD_END_FORCE, lmax_fo + log(2.0_wp))
     wmax_ov = -log(1.0_wp - amax_ov / alpha_c)
 
@@ -107,8 +107,8 @@ program gen_fit
         block_spec('fo_inv_t', HD_END_FORCE, VAR_CBRT_L, Q_TAU_C, 0.0_wp, lmax_fo**(1.0_wp/3), 16, 9), &
         block_spec('ov_fwd_la', HD_END_OVERLAP, VAR_ALPHA, Q_L_OVER_ALPHA, 0.0_wp, 0.6_wp, 4, 11), &
         block_spec('ov_fwd_ta', HD_END_OVERLAP, VAR_ALPHA, Q_TAU_C, 0.0_wp, 0.6_wp, 4, 11), &
-        block_spec('ov_fwd_lw', HD_END_OVERLAP, VAR_W, Q_L, -log(1.0_wp - 0.6_wp / alpha_c), wmax_ov, 12, 11), &
-        block_spec('ov_fwd_tw', HD_END_OVERLAP, VAR_W, Q_TAU_C, -log(1.0_wp - 0.6_wp / alpha_c), wmax_ov, 12, 11), &
+        block_spec('ov_fwd_lw', HD_END_OVERLAP, VAR_W, Q_L, -log(1.0_wp - 0.6_wp / alpha_c), wmax_ov, 16, 11), &
+        block_spec('ov_fwd_tw', HD_END_OVERLAP, VAR_W, Q_TAU_C, -log(1.0_wp - 0.6_wp / alpha_c), wmax_ov, 16, 11), &
         block_spec('fo_fwd_la', HD_END_FORCE, VAR_CBRT_ALPHA, Q_L_OVER_ALPHA, 0.0_wp, amax_fo**(1.0_wp/3), 16, 11), &
         block_spec('fo_fwd_ta', HD_END_FORCE, VAR_CBRT_ALPHA, Q_TAU_C, 0.0_wp, amax_fo**(1.0_wp/3), 16, 11), &
         block_spec('ov_fwd_za', HD_END_OVERLAP, VAR_ALPHA, Q_Z_MAX, 0.0_wp, 0.6_wp, 4, 11), &
@@ -159,7 +159,7 @@ program gen_fit
     write (u, '(a)') '# Piece i of a block covers u = (x - x0) np / (x1 - x0) in [i, i+1]; t = 2 (u - i) - 1;' // &
         ' y = sum_j c_j t^j.'
     write (u, '(a)') '# Ranges: overlap e in [' // g(e_min_ov) // ', 1], force e in [' // g(e_min_fo) // &
-        ', 1]; forward alpha up to alpha(e_min/2).'
+        ', 1]; forward alpha up to alpha(e_min/2) (force), alpha(1e-5) (overlap).'
     write (u, '(a)', advance='no') summary
     write (u, '(a)') '# rows: param,name,value | block,name,variable,x0,x1,np,deg | coef,name,piece,c_0,...,c_deg'
     write (u, '(a)') 'param,alpha_c,' // r2s(alpha_c)

@@ -14,9 +14,9 @@
 !>     L/alpha = e1 (1 + p1 sigma^2 + p2 sigma^3)/(1 + p3 sigma^2 + p4 sigma^3), tau_c likewise.
 !> e1 and tau_c0 come from hertzdamp_constants; the constants from the generator
 !> (data/fit_coefficients.csv, `compact` rows).  Accuracy (measured on e in [0.05, 1]):
-!> see doc/compact.md.  Range accepted: as hertzdamp_fit (overlap e >= 1e-3, force
-!> e >= 1e-4; forward overlap alpha < alpha_c, force alpha <= 52.5); outside [0.05, 1]
-!> the formulas are smooth and monotone but less accurate.
+!> see doc/compact.md.  Range accepted: inverse overlap e >= 0.01 (error grows to ~1e-2
+!> there), force e >= 0.05; forward overlap alpha < alpha_c (HD_NO_REBOUND above),
+!> force alpha <= 2.9; outside: HD_BAD_RESTITUTION / HD_OUTSIDE_FIT.
 module hertzdamp_compact
     use hertzdamp_kinds, only: hertzdamp_rk
     use hertzdamp_status, only: HD_OK, HD_NO_REBOUND, HD_BAD_END, HD_BAD_ALPHA, HD_BAD_RESTITUTION, &
@@ -31,13 +31,19 @@ module hertzdamp_compact
 
     !> Lower end of the restitution range on which the compact accuracy is stated.
     real(wp), parameter, public :: hertzdamp_compact_e_low = fit_e_min_compact
+    !> Smallest e accepted by the compact inverse, overlap (error ~1e-2 there).
+    real(wp), parameter, public :: hertzdamp_compact_e_min_overlap = 0.01_wp
+    !> Smallest e accepted by the compact inverse, force (the rationals in L^(1/3) fail below).
+    real(wp), parameter, public :: hertzdamp_compact_e_min_force = 0.05_wp
+    !> Largest alpha accepted by the compact forward map, force (alpha(0.05) = 2.85).
+    real(wp), parameter, public :: hertzdamp_compact_alpha_max_force = 2.9_wp
 
     public :: hertzdamp_compact_inverse, hertzdamp_compact_forward
 
 contains
 
     !> Inverse compact rule e -> (alpha, tau_c).  HD_BAD_RESTITUTION for e outside
-    !> [e_min, 1] (e_min = 1e-3 overlap, 1e-4 force).
+    !> [e_min, 1] (e_min = 0.01 overlap, 0.05 force).
     pure elemental subroutine hertzdamp_compact_inverse(e, iend, alpha, tau_c, status)
         real(wp), intent(in) :: e          !! restitution coefficient
         integer, intent(in) :: iend        !! HD_END_OVERLAP or HD_END_FORCE
@@ -49,7 +55,7 @@ contains
         tau_c = 0.0_wp
         status = HD_OK
         if (iend == HD_END_OVERLAP) then
-            if (.not. (e >= fit_e_min_overlap .and. e <= 1.0_wp)) then
+            if (.not. (e >= hertzdamp_compact_e_min_overlap .and. e <= 1.0_wp)) then
                 status = HD_BAD_RESTITUTION
                 return
             end if
@@ -61,7 +67,7 @@ contains
             tau_c = hertzdamp_tau_c0() / g * (1.0_wp + fit_cov_inv_t_1 * x + fit_cov_inv_t_2 * x * x) &
                     / (1.0_wp + fit_cov_inv_t_3 * x + fit_cov_inv_t_4 * x * x)
         else if (iend == HD_END_FORCE) then
-            if (.not. (e >= fit_e_min_force .and. e <= 1.0_wp)) then
+            if (.not. (e >= hertzdamp_compact_e_min_force .and. e <= 1.0_wp)) then
                 status = HD_BAD_RESTITUTION
                 return
             end if
@@ -77,7 +83,7 @@ contains
     end subroutine hertzdamp_compact_inverse
 
     !> Forward compact rule alpha -> (e, tau_c).  Overlap: HD_NO_REBOUND (e = 0,
-    !> tau_c = +inf) for alpha >= alpha_c; force: HD_OUTSIDE_FIT beyond alpha = 52.5.
+    !> tau_c = +inf) for alpha >= alpha_c; force: HD_OUTSIDE_FIT beyond alpha = 2.9.
     pure elemental subroutine hertzdamp_compact_forward(alpha, iend, e, tau_c, status)
         real(wp), intent(in) :: alpha      !! damping parameter
         integer, intent(in) :: iend        !! HD_END_OVERLAP or HD_END_FORCE
@@ -108,7 +114,7 @@ contains
             tau_c = hertzdamp_tau_c0() * (1.0_wp + fit_cov_fwd_t_1 * alpha + fit_cov_fwd_t_2 * alpha * alpha) &
                     / (1.0_wp + fit_cov_fwd_t_3 * alpha) - fit_cov_fwd_t_4 * lg
         else
-            if (alpha > fit_alpha_max_force) then
+            if (alpha > hertzdamp_compact_alpha_max_force) then
                 status = HD_OUTSIDE_FIT
                 return
             end if

@@ -16,7 +16,7 @@ RELEASE_FLAGS := -O3 -march=x86-64-v2 -funroll-loops -fPIC
 TEST_FLAGS := -O2 -g -fPIC -fopenmp -Wall -Wextra -Wimplicit-interface -std=f2018 -fcheck=bounds,do,pointer -fbacktrace
 TEST_LINK := -fopenmp
 
-.PHONY: all deps run test build install clean lint series-data series-source bench
+.PHONY: all deps run test build install clean lint series-data series-source fit-data fit-source bench
 
 all: build
 
@@ -69,6 +69,15 @@ series-source:
 # '#' header naming machine, compiler, flags, date), bench.png, bench.txt (figures).
 bench: build
 	@bash tools/bench.sh "$(FPM)" "$(RELEASE_FLAGS)"
+
+# ---------------------------------------------------------------- generated fit tables
+# fit-data: run the generator (reference integrator at tol 1e-15 + LAPACK) -> CSV (~20 s).
+# fit-source: CSV -> Fortran module (deterministic; test/cli_sync_fit.sh checks it).
+fit-data: deps
+	$(FPM) run hertzdamp-gen-fit --flag "$(RELEASE_FLAGS)" -- data/fit_coefficients.csv
+
+fit-source:
+	$(PYTHON) tools/fit_csv_to_f90.py data/fit_coefficients.csv src/hertzdamp_fit_data.f90
 
 # ---------------------------------------------------------------- install
 install: build

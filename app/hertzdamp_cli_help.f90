@@ -10,9 +10,10 @@ module hertzdamp_cli_help
     character(len=*), parameter :: common_opts = &
         '  --end overlap|force   contact-end definition: overlap returns to zero (default),' // nl // &
         '                        or the total contact force returns to zero' // nl // &
-        '  --method M            rk45 (reference integrator, default), series (Taylor' // nl // &
-        '                        series in alpha, overlap only, |alpha| < 1), pade (Pade' // nl // &
-        '                        summation of the series, overlap only, 0 <= alpha <= 0.8)' // nl // &
+        '  --method M            rk45 (reference integrator, default), fit (machine-precision' // nl // &
+        '                        approximant, ~1e-13), compact (closed form, ~1e-5),' // nl // &
+        '                        series (Taylor series in alpha, overlap only, |alpha| < 1),' // nl // &
+        '                        pade (Pade summation, overlap only, 0 <= alpha <= 0.8)' // nl // &
         '  --order N             series truncation order, 0..24 (default 13: 1e-12 at' // nl // &
         '                        alpha <= 0.2)' // nl // &
         '  --tol T               rk45 tolerance, 1e-15 <= T <= 1e-2 (default 1e-13)' // nl // &
@@ -32,6 +33,7 @@ module hertzdamp_cli_help
         '  table      e, tau_c, z_max, tau_max (dimensionless) for a list of alpha' // nl // &
         '  forward    e, contact time, deepest overlap (SI) from k, d, m, u_in' // nl // &
         '  constants  alpha_c, tau_c(0), z_max(0), e1 as computed by the library' // nl // &
+        '  invert     stiffness k and damping d (SI) from target e and contact time' // nl // &
         '  bench      work-precision report of every method (forward, inverse, throughput)' // nl // &
         '' // nl // &
         'Exit codes: 0 success, 2 bad usage, 3 no solution, 4 computation failed.' // nl // &
@@ -72,6 +74,32 @@ module hertzdamp_cli_help
         '  e1       restitution slope: e = 1 - e1 alpha + O(alpha^2)' // nl // &
         'CSV columns: name,value.'
 
+    character(len=*), parameter :: invert = &
+        'Usage: hertzdamp invert --e E[,E2,...] (--tc TC | --dt DT --steps N) --mass M' // nl // &
+        '                        --velocity U [--k-phys K] [options]' // nl // &
+        '' // nl // &
+        'The inverse rule of the adaptive collision time model: k and d such that a' // nl // &
+        'contact of mass M hit at velocity U has restitution E and contact time TC.' // nl // &
+        '' // nl // &
+        '  --e LIST       target restitution coefficients [-], comma-separated;' // nl // &
+        '                 1e-3 <= e <= 1 (overlap) or 1e-4 <= e <= 1 (force)' // nl // &
+        '  --tc TC        target contact time T_c [s]' // nl // &
+        '  --dt DT        DEM time step [s], with --steps N: T_c = N DT' // nl // &
+        '  --steps N      time steps per collision (integer >= 1)' // nl // &
+        '  --mass M       effective mass m [kg]' // nl // &
+        '  --velocity U   normal impact velocity u_in [m s^-1]' // nl // &
+        '  --k-phys K     physical stiffness bound [N m^-3/2]: if K <= k, k = K and' // nl // &
+        '                 d = alpha m^(3/5) K^(2/5) u^(1/5) (bound_active = true)' // nl // &
+        '  --end overlap|force   contact-end definition (default overlap)' // nl // &
+        '  --method M     fit (default, ~1e-13), compact (closed form, ~1e-5) or' // nl // &
+        '                 iterative (secant over reference-integrator solves)' // nl // &
+        '  --tol T        tolerance of --method iterative, 1e-14 <= T <= 1e-2 (default 1e-10)' // nl // &
+        '  --format F     text (aligned, default), csv or json' // nl // &
+        '  --help         this text' // nl // &
+        '' // nl // &
+        'Columns: e, tc [s], mass [kg], velocity [m s^-1], alpha [-], tau_c [-],' // nl // &
+        't_star [s] (time unit of k: contact time = t_star tau_c), k [N m^-3/2],' // nl // &
+        'd [kg s^-1], bound_active, status.  Exit 3 when e is outside the range.'
     character(len=*), parameter :: bench = &
         'Usage: hertzdamp bench [--quick] [--format text|csv|json] [--plot FILE.png]' // nl // &
         '' // nl // &
@@ -111,6 +139,7 @@ contains
         case ('table'); write (output_unit, '(a)') table
         case ('forward'); write (output_unit, '(a)') forward
         case ('constants'); write (output_unit, '(a)') constants
+        case ('invert'); write (output_unit, '(a)') invert
         case ('bench'); write (output_unit, '(a)') bench
         case default; write (output_unit, '(a)') top
         end select

@@ -4,6 +4,7 @@ program main
     use hertzdamp_cli, only: fail, quit, EXIT_USAGE, EXIT_OK
     use hertzdamp_cmd_basic, only: cmd_table, cmd_forward, cmd_constants
     use hertzdamp_cli_help, only: print_help
+    use hertzdamp_cmd_invert, only: cmd_invert
     use hertzdamp_cmd_bench, only: cmd_bench
     implicit none
     character(len=64) :: command
@@ -25,6 +26,8 @@ program main
         call cmd_forward()
     case ('constants')
         call cmd_constants()
+    case ('invert')
+        call cmd_invert()
     case ('bench')
         call cmd_bench()
     case default

@@ -3,12 +3,12 @@
 !> forward problem.  Run with `fpm run --example example_invert`.
 program example_invert
     use hertzdamp, only: hertzdamp_rk, hertzdamp_invert, hertzdamp_forward_dim, hertzdamp_message, &
-                         HD_OK, HD_END_OVERLAP, HD_METHOD_FIT, HD_METHOD_RK45
+                         HD_OK, HD_END_OVERLAP, HD_METHOD_FIT
     implicit none
     integer, parameter :: wp = hertzdamp_rk
     integer, parameter :: n = 5
-    !> The method used below; HD_METHOD_FIT once the fit is wired into the forward problem.
-    integer, parameter :: method = HD_METHOD_RK45
+    !> The method used below: the machine-precision fit.
+    integer, parameter :: method = HD_METHOD_FIT
     real(wp), parameter :: e_target = 0.7_wp          ! physical restitution
     real(wp), parameter :: dt = 1.0e-6_wp             ! DEM time step [s]
     real(wp), parameter :: tc = 10 * dt               ! resolve each contact by 10 steps

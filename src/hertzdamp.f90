@@ -1,7 +1,8 @@
 !> hertzdamp: the damped Hertzian normal collision, forward and inverse.
 !>
 !> `use hertzdamp` gives the whole public API: kinds, status codes and messages,
-!> the dimensionless reduction, the reference integrator and the named constants.
+!> the dimensionless reduction, the reference integrator, the named constants, the
+!> fitted and compact approximants and the inverse rule `hertzdamp_invert`.
 module hertzdamp
     use hertzdamp_kinds
     use hertzdamp_status
@@ -10,6 +11,8 @@ module hertzdamp
     use hertzdamp_rk45
     use hertzdamp_series
     use hertzdamp_methods
+    use hertzdamp_fit
+    use hertzdamp_compact
     use hertzdamp_inverse
     implicit none
     public

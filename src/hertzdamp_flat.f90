@@ -6,17 +6,16 @@
 module hertzdamp_flat
     use hertzdamp_kinds, only: hertzdamp_rk
     use hertzdamp_status, only: HD_OK, HD_NO_REBOUND
-    use hertzdamp_methods, only: hertzdamp_forward_dim, HD_METHOD_RK45
+    use hertzdamp_methods, only: hertzdamp_forward_dim, HD_METHOD_FIT
     use hertzdamp_inverse, only: mod_invert => hertzdamp_invert
     implicit none
     private
 
     integer, parameter :: wp = hertzdamp_rk
 
-    !> The method of every legacy and C entry point (forward and inverse).
-    !> TEMPORARY: HD_METHOD_RK45 until the fit method is wired into hertzdamp_forward_dim;
-    !> set back to HD_METHOD_FIT on merge (revert this commit).
-    integer, parameter, public :: legacy_method = HD_METHOD_RK45
+    !> The method of every legacy and C entry point (forward and inverse): the fit,
+    !> which needs nothing but the Fortran runtime.
+    integer, parameter, public :: legacy_method = HD_METHOD_FIT
 
     public :: flat_invert, flat_forward
 

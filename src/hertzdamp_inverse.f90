@@ -1,112 +1,128 @@
-!> TEMPORARY stand-in, replaced by the fit-based module on merge.
+!> The inverse problem of THEORY.md section 6 (adaptive collision time model): from a
+!> target restitution e and contact time T_c, for a contact with effective mass m and
+!> impact velocity u_in, the Hertz stiffness k and damping d
 !>
-!> The inverse problem of THEORY.md section 6 with the final signature of
-!> `hertzdamp_invert`, implemented correctly but slowly: alpha(e) by a safeguarded
-!> regula falsi (Illinois) on ln e(alpha) over reference-integrator solves, then
-!> tau_c(alpha), t* = T_c / tau_c, k = m t*^(-5/2) u^(-1/2), d = alpha m / t*.
-!> Every method code is accepted and computed this same way.  It exists only so that
-!> the legacy and C entry points can be built and tested before the fit lands.
+!>     alpha = alpha(e),  tau = tau_c(alpha),  t* = T_c / tau,
+!>     k = m t*^(-5/2) u^(-1/2),  d = alpha m / t*,
+!>
+!> with the physical bound: if k_phys <= k, then k = k_phys and
+!> d = alpha m^(3/5) k_phys^(2/5) u^(1/5) (the contact is then shorter than T_c).
+!>
+!> alpha(e) and tau_c(alpha(e)) come from the fitted approximant (default, ~1e-13
+!> relative, no iteration), the compact formula (~1e-5 on e in [0.05, 1]) or a
+!> secant iteration over reference-integrator solves (the baseline; slow).
+!>
+!> Supported restitution: e_min <= e <= 1 with e_min = 1e-3 (overlap; e -> 0 has
+!> no finite contact time) and 1e-4 (force), for every method; outside:
+!> HD_BAD_RESTITUTION.  e = 1 gives alpha = 0, d = 0, tau_c = tau_c(0).
+!> Inputs whose powers could overflow go through the logarithmic path of
+!> hertzdamp_scaling; a result outside double precision gives HD_OUT_OF_RANGE.
 module hertzdamp_inverse
     use hertzdamp_kinds, only: hertzdamp_rk
-    use hertzdamp_status, only: HD_OK, HD_NO_REBOUND, HD_BAD_END, HD_BAD_TOL, HD_BAD_MASS, &
-                                HD_BAD_VELOCITY, HD_BAD_TIME, HD_BAD_RESTITUTION, HD_BAD_KPHYS, &
-                                HD_BAD_ARGUMENT, HD_NO_CONVERGENCE, HD_END_OVERLAP, HD_END_FORCE
-    use hertzdamp_scaling, only: hertzdamp_expand, hertzdamp_check_positive, hertzdamp_safe_exp
-    use hertzdamp_rk45, only: hertzdamp_collision, hertzdamp_rk45_collide, &
-                              hertzdamp_rk45_default_tol
-    use hertzdamp_methods, only: HD_METHOD_RK45, HD_METHOD_ITERATIVE, HD_METHOD_FIT
-    use hertzdamp_constants, only: hertzdamp_e1
+    use hertzdamp_status, only: HD_OK, HD_BAD_RESTITUTION, HD_BAD_TIME, HD_BAD_MASS, HD_BAD_VELOCITY, &
+                                HD_BAD_KPHYS, HD_BAD_END, HD_BAD_TOL, HD_BAD_ARGUMENT, HD_NOT_SUPPORTED, &
+                                HD_NO_CONVERGENCE, HD_NO_REBOUND, HD_OUT_OF_RANGE, HD_END_OVERLAP, HD_END_FORCE
+    use hertzdamp_scaling, only: hertzdamp_safe_exp
+    use hertzdamp_constants, only: hertzdamp_e1, hertzdamp_tau_c0
+    use hertzdamp_rk45, only: hertzdamp_collision, hertzdamp_rk45_collide
+    use hertzdamp_methods, only: HD_METHOD_RK45, HD_METHOD_SERIES, HD_METHOD_PADE, HD_METHOD_COMPACT, &
+                                 HD_METHOD_FIT, HD_METHOD_ITERATIVE
+    use hertzdamp_fit, only: hertzdamp_fit_inverse, hertzdamp_fit_e_min_overlap, hertzdamp_fit_e_min_force
+    use hertzdamp_compact, only: hertzdamp_compact_inverse
     use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
     implicit none
     private
 
     integer, parameter :: wp = hertzdamp_rk
 
-    !> Upper end of the alpha search: above alpha_c = 1.12799 (overlap), and the largest
-    !> alpha the library supports (force).
-    real(wp), parameter :: alpha_hi_overlap = 1.2_wp
-    real(wp), parameter :: alpha_hi_force = 1.0e4_wp
-    integer, parameter :: max_iter = 200
+    !> Default tolerance of the iterative method (relative, on alpha).
+    real(wp), parameter, public :: hertzdamp_invert_default_tol = 1.0e-10_wp
+    !> Inputs m, u, T_c in [safe_lo, safe_hi] take the direct (power-free) path.
+    real(wp), parameter :: safe_lo = 1.0e-30_wp, safe_hi = 1.0e30_wp
 
-    public :: hertzdamp_invert
+    public :: hertzdamp_invert, hertzdamp_invert_alpha
 
 contains
 
-    !> Stiffness and damping that give restitution `e` and contact time `tc` for a
-    !> contact of mass `m` hit at speed `u` (THEORY.md section 6).  On failure k = d = 0.
-    pure elemental subroutine hertzdamp_invert(e, tc, m, u, iend, k, d, status, alpha, tstar, &
-                                               tau_c, bound_active, k_phys, method, tol)
-        real(wp), intent(in) :: e                  !! target restitution coefficient, in (0, 1]
-        real(wp), intent(in) :: tc                 !! target contact time [s]
-        real(wp), intent(in) :: m                  !! effective mass [kg]
-        real(wp), intent(in) :: u                  !! impact velocity [m s^-1]
-        integer, intent(in) :: iend                !! HD_END_OVERLAP or HD_END_FORCE
-        real(wp), intent(out) :: k                 !! Hertz stiffness [N m^-3/2]
-        real(wp), intent(out) :: d                 !! damping coefficient [kg s^-1]
-        integer, intent(out) :: status             !! HD_OK or an error code
-        real(wp), intent(out), optional :: alpha   !! damping parameter alpha(e)
-        real(wp), intent(out), optional :: tstar   !! time unit t* of the returned k [s]
-        real(wp), intent(out), optional :: tau_c   !! dimensionless contact time tau_c(alpha)
-        logical, intent(out), optional :: bound_active !! true when k_phys <= k replaced k
-        real(wp), intent(in), optional :: k_phys   !! physical stiffness bound [N m^-3/2]
-        integer, intent(in), optional :: method    !! HD_METHOD_* (default HD_METHOD_FIT)
-        real(wp), intent(in), optional :: tol      !! integrator tolerance (default 1e-13)
-        real(wp) :: a, tau, ts, tol_
-        integer :: method_
+    !> k and d such that the collision has restitution e and contact time tc.
+    pure elemental subroutine hertzdamp_invert(e, tc, m, u, iend, k, d, status, alpha, tstar, tau_c, &
+                                               bound_active, k_phys, method, tol)
+        real(wp), intent(in) :: e                      !! target restitution coefficient, e_min <= e <= 1
+        real(wp), intent(in) :: tc                     !! target contact time T_c [s]
+        real(wp), intent(in) :: m                      !! effective mass [kg]
+        real(wp), intent(in) :: u                      !! impact velocity u_in [m s^-1]
+        integer, intent(in) :: iend                    !! HD_END_OVERLAP or HD_END_FORCE
+        real(wp), intent(out) :: k                     !! stiffness [N m^-3/2] (0 on error)
+        real(wp), intent(out) :: d                     !! damping coefficient [kg s^-1] (0 on error)
+        integer, intent(out) :: status                 !! HD_OK or an error code
+        real(wp), intent(out), optional :: alpha       !! damping parameter alpha(e)
+        real(wp), intent(out), optional :: tstar       !! time unit of the returned k [s] (contact time = tstar tau_c)
+        real(wp), intent(out), optional :: tau_c       !! dimensionless contact duration tau_c(alpha)
+        logical, intent(out), optional :: bound_active !! true when k = k_phys was used
+        real(wp), intent(in), optional :: k_phys       !! physical stiffness bound [N m^-3/2]
+        integer, intent(in), optional :: method        !! HD_METHOD_FIT (default), _COMPACT, _ITERATIVE or _RK45
+        real(wp), intent(in), optional :: tol          !! tolerance of the iterative method (default 1e-10)
+        real(wp) :: a, tau, ts, lk, lts
         logical :: bound
-
+        integer :: meth
         k = 0.0_wp
         d = 0.0_wp
         a = 0.0_wp
         tau = 0.0_wp
         ts = 0.0_wp
         bound = .false.
-        if (present(alpha)) alpha = 0.0_wp
-        if (present(tstar)) tstar = 0.0_wp
-        if (present(tau_c)) tau_c = 0.0_wp
-        if (present(bound_active)) bound_active = .false.
-        method_ = HD_METHOD_FIT
-        if (present(method)) method_ = method
-        tol_ = hertzdamp_rk45_default_tol
-        if (present(tol)) tol_ = tol
-
+        meth = HD_METHOD_FIT
+        if (present(method)) meth = method
         status = HD_OK
-        if (iend /= HD_END_OVERLAP .and. iend /= HD_END_FORCE) then
-            status = HD_BAD_END
-        else if (method_ < HD_METHOD_RK45 .or. method_ > HD_METHOD_ITERATIVE) then
-            status = HD_BAD_ARGUMENT
-        else if (.not. (tol_ >= 1.0e-15_wp .and. tol_ <= 1.0e-2_wp)) then
-            status = HD_BAD_TOL
-        else if (.not. (e > 0.0_wp .and. e <= 1.0_wp)) then
-            status = HD_BAD_RESTITUTION
-        end if
-        if (status == HD_OK) status = hertzdamp_check_positive(tc, HD_BAD_TIME)
-        if (status == HD_OK) status = hertzdamp_check_positive(m, HD_BAD_MASS)
-        if (status == HD_OK) status = hertzdamp_check_positive(u, HD_BAD_VELOCITY)
-        if (status == HD_OK .and. present(k_phys)) then
-          status = hertzdamp_check_positive(k_phys, HD_BAD_KPHYS)
-        end if
-        if (status /= HD_OK) return
-
-        call solve_alpha(e, iend, tol_, a, tau, status)
-        if (status /= HD_OK) return
-        ts = tc / tau
-        call hertzdamp_expand(a, ts, m, u, k, d, status)
-        if (status /= HD_OK) return
+        if (.not. (tc > 0.0_wp .and. tc <= huge(tc))) status = HD_BAD_TIME
+        if (.not. (m > 0.0_wp .and. m <= huge(m))) status = HD_BAD_MASS
+        if (.not. (u > 0.0_wp .and. u <= huge(u))) status = HD_BAD_VELOCITY
         if (present(k_phys)) then
-            if (k_phys <= k) then
-                bound = .true.
-                k = k_phys
-                call hertzdamp_safe_exp(0.4_wp * log(m) - 0.4_wp * log(k_phys) - 0.2_wp * log(u), ts, &
-                                        status)
-                d = 0.0_wp
-                if (a > 0.0_wp) call hertzdamp_safe_exp(log(a) + log(m) - log(ts), d, status)
-                if (status /= HD_OK) then
-                    k = 0.0_wp
-                    d = 0.0_wp
-                    return
+            if (.not. (k_phys > 0.0_wp .and. k_phys <= huge(k_phys))) status = HD_BAD_KPHYS
+        end if
+        if (status == HD_OK) call hertzdamp_invert_alpha(e, iend, a, tau, status, meth, tol)
+        if (status == HD_OK) then
+            ts = tc / tau
+            if (min(m, u, tc) >= safe_lo .and. max(m, u, tc) <= safe_hi) then
+                ! direct path: every intermediate is a normal double here
+                k = m / (ts * ts * sqrt(ts * u))
+                d = a * m / ts
+                lk = 0.0_wp
+                if (present(k_phys)) then
+                    if (k_phys <= k) then
+                        bound = .true.
+                        lts = 0.4_wp * (log(m) - log(k_phys)) - 0.2_wp * log(u)
+                        call hertzdamp_safe_exp(lts, ts, status)
+                        k = k_phys
+                        d = a * m / ts
+                    end if
                 end if
+            else
+                ! logarithmic path (extreme inputs)
+                lts = log(tc) - log(tau)
+                lk = log(m) - 2.5_wp * lts - 0.5_wp * log(u)
+                if (present(k_phys)) then
+                    if (log(k_phys) <= lk) then
+                        bound = .true.
+                        lk = log(k_phys)
+                        lts = 0.4_wp * (log(m) - lk) - 0.2_wp * log(u)
+                    end if
+                end if
+                call hertzdamp_safe_exp(lts, ts, status)
+                call hertzdamp_safe_exp(lk, k, status)
+                if (a > 0.0_wp) call hertzdamp_safe_exp(log(a) + log(m) - lts, d, status)
             end if
+            if (status == HD_OK) then
+                if (.not. (ieee_is_finite(d) .and. d < huge(d))) status = HD_OUT_OF_RANGE
+            end if
+        end if
+        if (status /= HD_OK) then
+            k = 0.0_wp
+            d = 0.0_wp
+            a = 0.0_wp
+            tau = 0.0_wp
+            ts = 0.0_wp
+            bound = .false.
         end if
         if (present(alpha)) alpha = a
         if (present(tstar)) tstar = ts
@@ -114,110 +130,130 @@ contains
         if (present(bound_active)) bound_active = bound
     end subroutine hertzdamp_invert
 
-    !> alpha with e(alpha) = e_target and tau_c(alpha), by Illinois regula falsi on
-    !> g(alpha) = ln e(alpha) - ln e_target (decreasing in alpha), bisection while the
-    !> upper end has no rebound.
-    pure subroutine solve_alpha(e_target, iend, tol, alpha, tau, status)
-        real(wp), intent(in) :: e_target   !! target restitution, in (0, 1]
-        integer, intent(in) :: iend        !! contact-end definition
-        real(wp), intent(in) :: tol        !! integrator tolerance
-        real(wp), intent(out) :: alpha     !! the damping parameter found
-        real(wp), intent(out) :: tau       !! tau_c(alpha)
-        integer, intent(out) :: status     !! HD_OK or an error code
-        type(hertzdamp_collision) :: r
-        real(wp) :: lo, hi, glo, ghi, g, x, lnt, best_g
-        logical :: hi_finite
-        integer :: it, side
-
+    !> The dimensionless inverse e -> (alpha, tau_c) by the chosen method.
+    pure elemental subroutine hertzdamp_invert_alpha(e, iend, alpha, tau_c, status, method, tol)
+        real(wp), intent(in) :: e                !! restitution coefficient, e_min <= e <= 1
+        integer, intent(in) :: iend              !! HD_END_OVERLAP or HD_END_FORCE
+        real(wp), intent(out) :: alpha           !! damping parameter
+        real(wp), intent(out) :: tau_c           !! dimensionless contact duration
+        integer, intent(out) :: status           !! HD_OK or an error code
+        integer, intent(in), optional :: method  !! HD_METHOD_FIT (default), _COMPACT, _ITERATIVE, _RK45
+        real(wp), intent(in), optional :: tol    !! iterative tolerance (default 1e-10, within [1e-14, 1e-2])
+        real(wp) :: emin, tol_
+        integer :: meth
         alpha = 0.0_wp
-        tau = 0.0_wp
-        lnt = log(e_target)
-        r = hertzdamp_rk45_collide(0.0_wp, iend, tol)
-        status = r%status
-        if (status /= HD_OK) return
-        tau = r%tau_c
-        if (e_target >= 1.0_wp) return
-
-        lo = 0.0_wp
-        glo = -lnt
-        hi_finite = .false.
-        ghi = 0.0_wp
-        if (iend == HD_END_OVERLAP) then
-            hi = alpha_hi_overlap
-        else
-            ! expand until the restitution falls below the target
-            hi = min(-lnt / hertzdamp_e1(), alpha_hi_force)
-            do
-                r = hertzdamp_rk45_collide(hi, iend, tol)
-                status = r%status
-                if (status /= HD_OK) return
-                g = log(r%e) - lnt
-                if (g <= 0.0_wp) exit
-                lo = hi
-                glo = g
-                if (hi >= alpha_hi_force) then
-                    status = HD_BAD_RESTITUTION
-                    return
-                end if
-                hi = min(4.0_wp * hi, alpha_hi_force)
-            end do
-            ghi = g
-            hi_finite = .true.
+        tau_c = 0.0_wp
+        meth = HD_METHOD_FIT
+        if (present(method)) meth = method
+        status = HD_OK
+        if (iend /= HD_END_OVERLAP .and. iend /= HD_END_FORCE) then
+            status = HD_BAD_END
+            return
         end if
+        emin = merge(hertzdamp_fit_e_min_overlap, hertzdamp_fit_e_min_force, iend == HD_END_OVERLAP)
+        if (.not. (e >= emin .and. e <= 1.0_wp)) then
+            status = HD_BAD_RESTITUTION
+            return
+        end if
+        select case (meth)
+        case (HD_METHOD_FIT)
+            call hertzdamp_fit_inverse(e, iend, alpha, tau_c, status)
+        case (HD_METHOD_COMPACT)
+            call hertzdamp_compact_inverse(e, iend, alpha, tau_c, status)
+        case (HD_METHOD_ITERATIVE, HD_METHOD_RK45)
+            tol_ = hertzdamp_invert_default_tol
+            if (present(tol)) tol_ = tol
+            if (.not. (tol_ >= 1.0e-14_wp .and. tol_ <= 1.0e-2_wp)) then
+                status = HD_BAD_TOL
+                return
+            end if
+            call iterate(e, iend, tol_, alpha, tau_c, status)
+        case (HD_METHOD_SERIES, HD_METHOD_PADE)
+            status = HD_NOT_SUPPORTED
+        case default
+            status = HD_BAD_ARGUMENT
+        end select
+        if (e == 1.0_wp .and. status == HD_OK) then
+            alpha = 0.0_wp
+            tau_c = hertzdamp_tau_c0()
+        end if
+    end subroutine hertzdamp_invert_alpha
 
-        x = min(-lnt / hertzdamp_e1(), 0.5_wp * (lo + hi))
-        side = 0
-        best_g = huge(1.0_wp)
-        status = HD_NO_CONVERGENCE
-        do it = 1, max_iter
-            r = hertzdamp_rk45_collide(x, iend, tol)
+    !> Safeguarded secant (bracketing, bisection fallback) on g(alpha) = ln e(alpha) - ln e
+    !> with one reference solve per trial.
+    pure subroutine iterate(e, iend, tol, alpha, tau_c, status)
+        real(wp), intent(in) :: e, tol
+        integer, intent(in) :: iend
+        real(wp), intent(out) :: alpha, tau_c
+        integer, intent(out) :: status
+        type(hertzdamp_collision) :: r
+        real(wp) :: lt, lo, hi, a0, g0, a1, g1, anew, rtol
+        integer :: it
+        logical :: have_hi
+        alpha = 0.0_wp
+        tau_c = hertzdamp_tau_c0()
+        status = HD_OK
+        lt = -log(e)
+        if (lt == 0.0_wp) return
+        rtol = min(1.0e-13_wp, max(1.0e-15_wp, 1.0e-3_wp * tol))
+        lo = 0.0_wp
+        have_hi = .false.
+        hi = huge(1.0_wp)
+        a0 = 0.0_wp
+        g0 = lt
+        a1 = lt / hertzdamp_e1()          ! first-order guess
+        if (iend == HD_END_OVERLAP) a1 = min(a1, 1.0_wp)
+        do it = 1, 200
+            r = hertzdamp_rk45_collide(a1, iend, rtol)
             if (r%status == HD_NO_REBOUND) then
-                hi = x
-                hi_finite = .false.
+                hi = a1
+                have_hi = .true.
+                a1 = 0.5_wp * (lo + hi)
+                cycle
             else if (r%status /= HD_OK) then
                 status = r%status
                 return
+            end if
+            g1 = -log(r%e) - lt
+            g1 = -g1                      ! g = ln e(alpha) - ln e_target, decreasing in alpha
+            alpha = a1
+            tau_c = r%tau_c
+            if (abs(g1) <= 4.0e-15_wp) return
+            if (g1 > 0.0_wp) then
+                lo = a1
             else
-                g = log(r%e) - lnt
-                if (abs(g) < best_g) then
-                    best_g = abs(g)
-                    alpha = x
-                    tau = r%tau_c
-                end if
-                if (abs(g) <= tol) then
-                    status = HD_OK
-                    exit
-                end if
-                if (g > 0.0_wp) then
-                    lo = x
-                    glo = g
-                    if (side == -1) ghi = 0.5_wp * ghi
-                    side = -1
-                else
-                    hi = x
-                    ghi = g
-                    hi_finite = .true.
-                    if (side == 1) glo = 0.5_wp * glo
-                    side = 1
-                end if
+                hi = a1
+                have_hi = .true.
             end if
-            if (hi - lo <= 4.0_wp * epsilon(1.0_wp) * hi) then
-                if (best_g < huge(1.0_wp)) status = HD_OK
-                exit
-            end if
-            if (hi_finite) then
-                x = (lo * ghi - hi * glo) / (ghi - glo)
-                if (.not. (x > lo .and. x < hi)) x = 0.5_wp * (lo + hi)
+            ! secant through the last two points, kept inside the bracket
+            if (g1 /= g0) then
+                anew = a1 - g1 * (a1 - a0) / (g1 - g0)
             else
-                x = 0.5_wp * (lo + hi)
+                anew = a1
             end if
+            if (.not. have_hi) then
+                if (.not. (anew > lo)) anew = 2.0_wp * lo
+                if (anew > 4.0_wp * lo) anew = 4.0_wp * lo
+            else if (.not. (anew > lo .and. anew < hi)) then
+                anew = 0.5_wp * (lo + hi)
+            end if
+            if (abs(anew - a1) <= tol * a1) then
+                if (abs(anew - a1) <= 1.0e-2_wp * tol * a1) return
+                a0 = a1
+                g0 = g1
+                a1 = anew
+                r = hertzdamp_rk45_collide(a1, iend, rtol)
+                if (r%status == HD_OK) then
+                    alpha = a1
+                    tau_c = r%tau_c
+                end if
+                return
+            end if
+            a0 = a1
+            g0 = g1
+            a1 = anew
         end do
-        if (status /= HD_OK) then
-            alpha = 0.0_wp
-            tau = 0.0_wp
-        else if (.not. ieee_is_finite(tau)) then
-            status = HD_NO_REBOUND
-        end if
-    end subroutine solve_alpha
+        status = HD_NO_CONVERGENCE
+    end subroutine iterate
 
 end module hertzdamp_inverse

@@ -9,6 +9,8 @@ module hertzdamp_methods
                                 HERTZDAMP_SERIES_INACCURATE, HERTZDAMP_SERIES_BAD_ORDER
     use hertzdamp_scaling, only: hertzdamp_reduce
     use hertzdamp_rk45, only: hertzdamp_collision, hertzdamp_rk45_collide, hertzdamp_rk45_default_tol
+    use hertzdamp_fit, only: hertzdamp_fit_forward
+    use hertzdamp_compact, only: hertzdamp_compact_forward
     use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
     implicit none
     private
@@ -44,6 +46,16 @@ contains
         select case (method)
         case (HD_METHOD_RK45)
             res = hertzdamp_rk45_collide(alpha, iend, tol_)
+        case (HD_METHOD_FIT)
+            ! z_max and tau_max are fitted too (0 beyond alpha = 1.3 for the overlap)
+            res%alpha = alpha
+            res%iend = iend
+            call hertzdamp_fit_forward(alpha, iend, res%e, res%tau_c, res%status, res%z_max, res%tau_max)
+        case (HD_METHOD_COMPACT)
+            ! the compact formulas give e and tau_c only (z_max = tau_max = 0)
+            res%alpha = alpha
+            res%iend = iend
+            call hertzdamp_compact_forward(alpha, iend, res%e, res%tau_c, res%status)
         case (HD_METHOD_SERIES, HD_METHOD_PADE)
             res%alpha = alpha
             res%iend = iend
@@ -71,7 +83,6 @@ contains
                 res%z_max = 0.0_wp
                 res%tau_max = 0.0_wp
             end if
-        case (HD_METHOD_COMPACT, HD_METHOD_FIT)
             res%alpha = alpha
             res%iend = iend
             res%status = HD_NOT_SUPPORTED

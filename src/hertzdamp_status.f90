@@ -34,7 +34,7 @@ module hertzdamp_status
     integer, parameter, public :: HD_END_FORCE = 1
 
     !> Length of the stored messages (each fits, blank-padded).
-    integer, parameter, public :: hertzdamp_message_len = 128
+    integer, parameter, public :: hertzdamp_message_len = 192
     !> Largest status code with a message of its own.
     integer, parameter, public :: hertzdamp_max_status = 19
     !> The message of every status code 0..hertzdamp_max_status, then that of unknown
@@ -55,15 +55,16 @@ module hertzdamp_status
         'invalid stiffness k: must be finite and positive', &
         'invalid damping coefficient d: must be finite and non-negative', &
         'invalid contact time: must be finite and positive', &
-        'invalid restitution coefficient: outside the supported range', &
+        'invalid restitution coefficient: the inverse rule needs 1e-3 <= e <= 1 (overlap) or ' // &
+            '1e-4 <= e <= 1 (force); e -> 0 has no finite contact time', &
         'result out of the representable double-precision range', &
         'method does not support this contact-end definition', &
         'iteration did not converge', &
         'invalid series order: outside the stored range', &
         'invalid physical stiffness bound k_phys: must be finite and positive', &
         'invalid argument', &
-        'alpha outside the validity range of the method (series: |alpha| < 1; ' // &
-            'pade: 0 <= alpha <= 0.8); use rk45 or fit', &
+        'alpha outside the validity range of the method (series: |alpha| < 1; pade: 0 <= alpha <= 0.8; ' // &
+            'fit: alpha >= 0, force alpha <= 52.5; compact: force alpha <= 2.9); use rk45', &
         'unknown status code']
 
     public :: hertzdamp_message, hertzdamp_end_name

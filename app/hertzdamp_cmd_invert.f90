@@ -42,12 +42,14 @@ contains
         if (.not. args%has('--e')) call fail(EXIT_USAGE, 'missing option --e (see --help)')
         e = parse_real_list(args%get('--e', ''), '--e')
         if (args%has('--tc')) then
-            if (args%has('--dt') .or. args%has('--steps')) &
-                call fail(EXIT_USAGE, 'give either --tc or --dt with --steps, not both')
+            if (args%has('--dt') .or. args%has('--steps')) then
+              call fail(EXIT_USAGE, 'give either --tc or --dt with --steps, not both')
+            end if
             tc = parse_real(args%get('--tc', ''), '--tc')
         else
-            if (.not. (args%has('--dt') .and. args%has('--steps'))) &
-                call fail(EXIT_USAGE, 'missing option --tc (or --dt with --steps) (see --help)')
+            if (.not. (args%has('--dt') .and. args%has('--steps'))) then
+              call fail(EXIT_USAGE, 'missing option --tc (or --dt with --steps) (see --help)')
+            end if
             dt = parse_real(args%get('--dt', ''), '--dt')
             steps = parse_int(args%get('--steps', ''), '--steps')
             if (steps < 1) call fail(EXIT_USAGE, '--steps must be >= 1')

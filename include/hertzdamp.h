@@ -39,7 +39,7 @@ extern "C" {
 #define HD_BAD_ORDER       16  /* series order outside the stored range */
 #define HD_BAD_KPHYS       17  /* physical stiffness bound not finite and positive */
 #define HD_BAD_ARGUMENT    18  /* any other invalid argument (e.g. a NULL pointer) */
-#define HD_OUTSIDE_VALIDITY 19 /* alpha outside the validity range of the method (series, pade) */
+#define HD_OUTSIDE_VALIDITY 19 /* alpha outside the validity range of the method (series, pade, fit, compact) */
 
 /* Contact-end definitions (argument `end`). */
 #define HD_END_OVERLAP 0  /* contact ends when the overlap returns to zero */

@@ -46,6 +46,7 @@ module hertzdamp_fit
         !> C99 cube root (libm), faster than x**(1/3) and exact for cubes.
         pure function c_cbrt(x) bind(C, name='cbrt') result(y)
             import :: c_double
+            implicit none
             real(c_double), value :: x
             real(c_double) :: y
         end function c_cbrt

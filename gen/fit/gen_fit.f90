@@ -70,6 +70,7 @@ program gen_fit
         !> LAPACK: least-squares solution of an overdetermined system by QR.
         subroutine dgels(trans, m, n, nrhs, a, lda, b, ldb, work, lwork, info)
             import :: wp
+            implicit none
             character, intent(in) :: trans
             integer, intent(in) :: m, n, nrhs, lda, ldb, lwork
             real(wp), intent(inout) :: a(lda, *), b(ldb, *)
@@ -199,8 +200,9 @@ contains
         r = hertzdamp_rk45_collide(alpha, iend, ref_tol)
         if (present(zm)) zm = r%z_max
         if (present(tm)) tm = r%tau_max
-        if (r%status /= HD_OK .and. .not. (r%status == HD_NO_REBOUND .and. present(zm))) &
-            call die('reference failed at alpha = ' // g(alpha))
+        if (r%status /= HD_OK .and. .not. (r%status == HD_NO_REBOUND .and. present(zm))) then
+          call die('reference failed at alpha = ' // g(alpha))
+        end if
         e = r%e
         tc = r%tau_c
         l = 0.0_wp

@@ -32,7 +32,7 @@ module hertzdamp_compact
     !> Lower end of the restitution range on which the compact accuracy is stated.
     real(wp), parameter, public :: hertzdamp_compact_e_low = fit_e_min_compact
     !> Smallest e accepted by the compact inverse, overlap (error ~1e-2 there).
-    real(wp), parameter, public :: hertzdamp_compact_e_min_overlap = 0.01_wp
+    real(wp), parameter, public :: hertzdamp_compact_e_min_overlap = 0.05_wp
     !> Smallest e accepted by the compact inverse, force (the rationals in L^(1/3) fail below).
     real(wp), parameter, public :: hertzdamp_compact_e_min_force = 0.05_wp
     !> Largest alpha accepted by the compact forward map, force (alpha(0.05) = 2.85).
@@ -43,7 +43,7 @@ module hertzdamp_compact
 contains
 
     !> Inverse compact rule e -> (alpha, tau_c).  HD_BAD_RESTITUTION for e outside
-    !> [e_min, 1] (e_min = 0.01 overlap, 0.05 force).
+    !> [e_min, 1] (e_min = 0.05 for both definitions: the fitted range).
     pure elemental subroutine hertzdamp_compact_inverse(e, iend, alpha, tau_c, status)
         real(wp), intent(in) :: e          !! restitution coefficient
         integer, intent(in) :: iend        !! HD_END_OVERLAP or HD_END_FORCE

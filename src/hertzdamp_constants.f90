@@ -9,6 +9,12 @@ module hertzdamp_constants
 
     public :: hertzdamp_z_max0, hertzdamp_tau_c0, hertzdamp_e1, hertzdamp_beta
 
+    ! The closed forms, evaluated once by the compiler (log_gamma is allowed in
+    ! constant expressions), so that the functions below cost nothing in hot loops.
+    real(wp), parameter :: z_max0 = 1.25_wp**0.4_wp
+    real(wp), parameter :: tau_c0 = 0.8_wp * z_max0 * exp(log_gamma(0.4_wp) + log_gamma(0.5_wp) - log_gamma(0.9_wp))
+    real(wp), parameter :: e1 = 0.8_wp * z_max0 * exp(log_gamma(0.4_wp) + log_gamma(1.5_wp) - log_gamma(1.9_wp))
+
 contains
 
     !> Euler's beta function B(a, b) = Gamma(a) Gamma(b) / Gamma(a + b).
@@ -20,18 +26,18 @@ contains
 
     !> Deepest overlap of the elastic collision, z_max(0) = (5/4)^(2/5).
     pure real(wp) function hertzdamp_z_max0()
-        hertzdamp_z_max0 = 1.25_wp**0.4_wp
+        hertzdamp_z_max0 = z_max0
     end function hertzdamp_z_max0
 
     !> Elastic contact duration, tau_c(0) = (4/5) (5/4)^(2/5) B(2/5, 1/2).
     pure real(wp) function hertzdamp_tau_c0()
-        hertzdamp_tau_c0 = 0.8_wp * 1.25_wp**0.4_wp * hertzdamp_beta(0.4_wp, 0.5_wp)
+        hertzdamp_tau_c0 = tau_c0
     end function hertzdamp_tau_c0
 
     !> First-order restitution slope, e = 1 - e1 alpha + O(alpha^2),
     !> e1 = (4/5) (5/4)^(2/5) B(2/5, 3/2).
     pure real(wp) function hertzdamp_e1()
-        hertzdamp_e1 = 0.8_wp * 1.25_wp**0.4_wp * hertzdamp_beta(0.4_wp, 1.5_wp)
+        hertzdamp_e1 = e1
     end function hertzdamp_e1
 
 end module hertzdamp_constants

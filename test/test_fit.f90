@@ -109,16 +109,21 @@ program test_fit
         end if
         call hertzdamp_compact_inverse(1.0_wp, iend, a2, tc2, st)
         call s%check(same(a2, 0.0_wp) .and. abs(tc2 - hertzdamp_tau_c0()) <= 1.0e-15_wp * tc2, 'compact exact at e = 1')
-        ! monotone and finite down to e_min
+        ! alpha(e) and tau_c(e) finite, positive and monotone down to e_min = 0.05
         l = 1.0_wp
         x = 0.0_wp
+        tc = 0.0_wp
         do i = 0, 200
-            e = exp(log(merge(1.0e-2_wp, 5.0e-2_wp, iend == HD_END_OVERLAP)) * real(i, wp) / 200.0_wp)
+            e = exp(log(5.0e-2_wp) * real(i, wp) / 200.0_wp)
             call hertzdamp_compact_inverse(e, iend, a2, tc2, st)
-            if (.not. (st == HD_OK .and. ieee_is_finite(a2) .and. a2 >= x)) l = -1.0_wp
+            if (.not. (st == HD_OK .and. ieee_is_finite(a2) .and. a2 >= x .and. tc2 > 0.0_wp)) l = -1.0_wp
+            if (iend == HD_END_OVERLAP .and. tc2 < tc) l = -1.0_wp   ! overlap: tau_c grows with damping
             x = a2
+            tc = tc2
         end do
-        call s%check(l > 0.0_wp, 'compact alpha(e) finite and monotone down to its e_min (0.01 overlap, 0.05 force)')
+        call s%check(l > 0.0_wp, 'compact alpha(e) increasing, tau_c(e) positive (overlap: increasing) down to e_min = 0.05')
+        call hertzdamp_compact_inverse(0.049_wp, iend, a2, tc2, st)
+        call s%check(st == HD_BAD_RESTITUTION, 'compact refuses e below 0.05')
     end do
     call s%finish()
 

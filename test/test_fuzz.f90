@@ -34,8 +34,17 @@ program test_fuzz
     do i = 1, 200000
         call fuzz_dispatch_cheap()
     end do
+    do i = 1, 300000
+        call fuzz_fit_compact()
+    end do
+    do i = 1, 200000
+        call fuzz_invert()
+    end do
     do i = 1, 1000
         call fuzz_rk45()
+    end do
+    do i = 1, 200
+        call fuzz_iterative()
     end do
     call fuzz_messages()
 
@@ -82,7 +91,10 @@ contains
         real(wp), intent(in) :: values(:)
         n_calls = n_calls + 1
         if (status == HD_OK) then
-            if (.not. all(ieee_is_finite(values))) n_bad_finite = n_bad_finite + 1
+            if (.not. all(ieee_is_finite(values))) then
+                n_bad_finite = n_bad_finite + 1
+                if (n_bad_finite <= 5) print '(a,*(es12.4))', '     non-finite output with success: ', values
+            end if
         else
             if (len_trim(hertzdamp_message(status)) == 0 .or. hertzdamp_message(status) == 'unknown status code') then
               n_no_message = n_no_message + 1
@@ -131,6 +143,71 @@ contains
                                    a, ts, e, tc, zm, st)
         call account(st, [a, ts, e, tc, zm])
     end subroutine fuzz_dispatch_cheap
+
+    !> The fitted and compact approximants, forward and inverse, both definitions.
+    subroutine fuzz_fit_compact()
+        real(wp) :: a, tc, zm, tm, u
+        integer :: st, iend
+        call random_number(u)
+        iend = int(3 * u)
+        call hertzdamp_fit_forward(random_alpha(), iend, a, tc, st, zm, tm)
+        call account(st, [a, tc, zm, tm])
+        call hertzdamp_fit_inverse(random_e(), iend, a, tc, st)
+        call account(st, [a, tc])
+        call hertzdamp_compact_forward(random_alpha(), iend, a, tc, st)
+        call account(st, [a, tc])
+        call hertzdamp_compact_inverse(random_e(), iend, a, tc, st)
+        call account(st, [a, tc])
+    end subroutine fuzz_fit_compact
+
+    !> A random restitution target: mostly in (0, 1], sometimes adversarial.
+    real(wp) function random_e() result(e)
+        real(wp) :: r
+        call random_number(r)
+        if (r < 0.6_wp) then
+            call random_number(e)
+            e = 10.0_wp**(-5 * e)
+        else if (r < 0.7_wp) then
+            e = 1.0_wp - epsilon(1.0_wp) * r
+        else
+            e = adversarial()
+        end if
+    end function random_e
+
+    !> The inverse rule with dimensional inputs over many decades and adversarial values.
+    subroutine fuzz_invert()
+        real(wp) :: k, d, a, ts, tau, u, kp
+        integer :: st, iend, meth
+        logical :: bound
+        call random_number(u)
+        iend = int(2.2_wp * u)
+        call random_number(u)
+        meth = merge(HD_METHOD_FIT, HD_METHOD_COMPACT, u < 0.8_wp)
+        call random_number(u)
+        if (u < 0.5_wp) then
+            call hertzdamp_invert(random_e(), adversarial(), adversarial(), adversarial(), iend, k, d, st, &
+                                  alpha=a, tstar=ts, tau_c=tau, bound_active=bound, method=meth)
+        else
+            kp = adversarial()
+            call hertzdamp_invert(random_e(), adversarial(), adversarial(), adversarial(), iend, k, d, st, &
+                                  alpha=a, tstar=ts, tau_c=tau, bound_active=bound, k_phys=kp, method=meth)
+        end if
+        call account(st, [k, d, a, ts, tau])
+        if (st == HD_OK) then
+            if (.not. (k > 0.0_wp .and. d >= 0.0_wp)) n_bad_finite = n_bad_finite + 1
+        end if
+    end subroutine fuzz_invert
+
+    !> The iterative baseline (rk45 inside a secant iteration) on random targets.
+    subroutine fuzz_iterative()
+        real(wp) :: k, d, u
+        integer :: st, iend
+        call random_number(u)
+        iend = int(2 * u)
+        call hertzdamp_invert(random_e(), 10.0_wp**(-9 * u), 10.0_wp**(12 * u - 9), 10.0_wp**(4 * u - 3), iend, &
+                              k, d, st, method=HD_METHOD_ITERATIVE, tol=1.0e-8_wp)
+        call account(st, [k, d])
+    end subroutine fuzz_iterative
 
     subroutine fuzz_rk45()
         type(hertzdamp_collision) :: r

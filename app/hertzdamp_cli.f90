@@ -20,7 +20,7 @@ module hertzdamp_cli
     integer, parameter, public :: EXIT_FAILURE = 4   !! the computation itself failed
 
     !> Largest number of values a list or range option may produce.
-    integer, parameter, public :: max_list_length = 100000
+    integer, parameter, public :: max_list_length = 10000
 
     !> One `--key value` pair (value empty for flags).
     type, public :: cli_option

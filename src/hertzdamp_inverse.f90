@@ -196,6 +196,15 @@ contains
         lt = -log(e)
         if (lt == 0.0_wp) return
         rtol = min(1.0e-13_wp, max(1.0e-15_wp, 1.0e-3_wp * tol))
+        if (lt < 1.0e-10_wp) then
+            ! 1 - e below what the reference integrator resolves (~1e-13): the first-order
+            ! law ln e = -e1 alpha + O(alpha^2) is exact to O(alpha) ~ 1e-10 relative here
+            alpha = lt / hertzdamp_e1()
+            r = hertzdamp_rk45_collide(alpha, iend, rtol)
+            status = r%status
+            if (status == HD_OK) tau_c = r%tau_c
+            return
+        end if
         lo = 0.0_wp
         have_hi = .false.
         hi = huge(1.0_wp)

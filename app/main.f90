@@ -3,6 +3,7 @@
 program main
     use hertzdamp_cli, only: fail, quit, EXIT_USAGE, EXIT_OK
     use hertzdamp_cmd_basic, only: cmd_table, cmd_forward, cmd_constants
+    use hertzdamp_cmd_scene, only: cmd_scene
     use hertzdamp_cli_help, only: print_help
     implicit none
     character(len=64) :: command
@@ -24,6 +25,8 @@ program main
         call cmd_forward()
     case ('constants')
         call cmd_constants()
+    case ('scene')
+        call cmd_scene()
     case default
         call fail(EXIT_USAGE, 'unknown command "' // trim(command) // '" (see hertzdamp --help)')
     end select

@@ -272,7 +272,7 @@ contains
                 if (.not. (ct%binary .and. ct%t_end >= 0.0_wp)) cycle
                 nrow = nrow + 1
                 if (nrow > max_rows) cycle
-                e_ach = ct%u_out / ct%u_in
+                e_ach = ct%u_out / max(ct%u_in, tiny(1.0_wp))
                 tc_ach = ct%t_end - ct%t_start
                 write (b, '(i0)') c
                 call t%str(trim(b))
@@ -312,7 +312,7 @@ contains
                     'per contact in the run); energy: no rise above 1/N^2 of the energy scale')
         bound = sc%accuracy + 2.0_wp / real(min_steps(sc, res), wp)**2
         if (count(bin) > 0) then
-            x = maxval(abs(res%contacts%u_out / res%contacts%u_in - res%contacts%e_target) / &
+            x = maxval(abs(res%contacts%u_out / max(res%contacts%u_in, tiny(1.0_wp)) - res%contacts%e_target) / &
                        res%contacts%e_target, mask=bin)
             call row('max_e_rel_err (binary contacts)', x, bound, x <= bound, sc%gravity)
             x = maxval(abs(res%contacts%t_end - res%contacts%t_start - res%contacts%tc_target) / &

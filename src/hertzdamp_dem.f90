@@ -610,11 +610,13 @@ contains
                         kk = kk + 1
                         cycle
                     end if
-                    if (sc%iend == HD_END_OVERLAP .and. zeta <= 0.0_wp) then
-                        ! in contact for the fraction phi of the step: the damping part of the
-                        ! last force acts for phi dt, its Hertz part (zeta -> 0 linearly) for
-                        ! 2/5 phi dt; the opening kick gave both dt/2.
-                        phi = min(1.0_wp, max(0.0_wp, ct%zeta_last / (ct%zeta_last - zeta)))
+                    if (zeta <= 0.0_wp) then
+                        ! overlap gone (the overlap end; with the force end only when a step
+                        ! jumps over the force zero).  In contact for the fraction phi of the
+                        ! step: the damping part of the last force acts for phi dt, its Hertz
+                        ! part (zeta -> 0 linearly) for 2/5 phi dt; the opening kick gave both dt/2.
+                        phi = 0.0_wp
+                        if (ct%zeta_last - zeta > 0.0_wp) phi = min(1.0_wp, max(0.0_wp, ct%zeta_last / (ct%zeta_last - zeta)))
                         fh = ct%k * max(ct%zeta_last, 0.0_wp)**1.5_wp
                         call add_impulse(ct%i, ct%j, ((ct%f_last - fh) * (phi - 0.5_wp) + fh * (0.4_wp * phi - 0.5_wp)) &
                                          * dt - start_error(phi) * ct%k * ((ct%zeta_last - zeta) / dt)**1.5_wp &
@@ -627,7 +629,8 @@ contains
                     end if
                     fn = ct%k * zeta * sqrt(zeta) + ct%d * zdot
                     if (sc%iend == HD_END_FORCE .and. fn <= 0.0_wp) then
-                        phi = min(1.0_wp, max(0.0_wp, ct%f_last / (ct%f_last - fn)))
+                        phi = 0.0_wp
+                        if (ct%f_last - fn > 0.0_wp) phi = min(1.0_wp, max(0.0_wp, ct%f_last / (ct%f_last - fn)))
                         call add_impulse(ct%i, ct%j, ct%f_last * (phi - 1.0_wp) * 0.5_wp * dt, ct%n_last)
                         ct%t_end = t + phi * dt
                         ct%state = 2
@@ -687,11 +690,14 @@ contains
             ap = aold
             v = vh + 0.5_wp * dt * a + dv
             do kk = 1, nended
+                ! separation speed at the end instant: back from the step end by the
+                ! remaining forces (gravity, other contacts)
                 associate (ct => res%contacts(ended(kk)))
+                    zo = t + dt - ct%t_end
                     if (ct%j > 0) then
-                        ct%u_out = dot_product(v(:, ct%j) - v(:, ct%i), ct%n_last)
+                        ct%u_out = dot_product(v(:, ct%j) - zo * a(:, ct%j) - v(:, ct%i) + zo * a(:, ct%i), ct%n_last)
                     else
-                        ct%u_out = -dot_product(v(:, ct%i), ct%n_last)
+                        ct%u_out = -dot_product(v(:, ct%i) - zo * a(:, ct%i), ct%n_last)
                     end if
                 end associate
             end do
@@ -816,7 +822,11 @@ contains
             real(wp) :: z1, zd1, nn(3), va(3), kp, rs, fn1
             integer :: st, mb
             ! fraction of the step before the touch, and the velocities then
-            s = min(1.0_wp, max(0.0_wp, -zo1 / (z - zo1)))
+            if (zo1 >= 0.0_wp .or. z <= zo1) then
+                s = 0.0_wp   ! touching at the start of the step already
+            else
+                s = min(1.0_wp, -zo1 / (z - zo1))
+            end if
             theta = 1.0_wp - s
             ct%i = i1
             ct%j = j1

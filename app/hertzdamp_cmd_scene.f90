@@ -222,10 +222,10 @@ contains
             write (b, '(i0)') c
             call t%str(trim(b))
             call t%str(hertzdamp_dem_method_name(hertzdamp_dem_cost_order(c)))
-            call t%str(merge('yes', 'no ', avail(c)))
+            call t%str(trim(merge('yes', 'no ', avail(c))))
             if (avail(c)) then
                 call t%num(err(c))
-                call t%str(merge('yes', 'no ', err(c) <= sc%accuracy))
+                call t%str(trim(merge('yes', 'no ', err(c) <= sc%accuracy)))
             else
                 call t%str('-')
                 call t%str('-')
@@ -280,7 +280,11 @@ contains
                 call t%num(ct%u_in)
                 call t%num(ct%k)
                 call t%num(ct%d)
-                call t%str(merge('physical', 'rule    ', ct%bound_active))
+                if (ct%bound_active) then
+                    call t%str('physical')
+                else
+                    call t%str('rule')
+                end if
                 call t%num(ct%e_target)
                 call t%num(e_ach)
                 call t%num(abs(e_ach - ct%e_target) / ct%e_target)
@@ -305,6 +309,7 @@ contains
         type(out_table) :: t
         logical, allocatable :: bin(:)
         real(wp) :: x, bound, escale
+        allocate (bin(res%ncontacts))
         bin = res%contacts%binary .and. res%contacts%t_end >= 0.0_wp
         call t%set_columns('check,value,bound,result')
         call t%meta('bounds', 'binary contacts: e and tc to the method accuracy plus the time-step error, ' // &

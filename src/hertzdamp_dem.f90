@@ -510,7 +510,7 @@ contains
         integer, intent(in) :: method                 !! HD_DEM_FIRST_ORDER or HD_METHOD_*
         real(wp), intent(in) :: tol                   !! iterative rule tolerance
         type(hertzdamp_dem_result), intent(out) :: res !! contacts, checks, trace
-        integer :: n, nw, nsteps, step, every, ns, isamp, ax, i, j, w, kk, c, nact, ip, jp, ntrace
+        integer :: n, nw, nsteps, step, every, ns, isamp, ax, i, j, w, kk, c, nact, ip, ntrace
         real(wp), allocatable :: x(:, :), v(:, :), a(:, :), ap(:, :), aold(:, :), xo(:, :), vo(:, :), vh(:, :), vp(:, :), &
                                  f(:, :), dv(:, :), mass(:), rad(:), estar_pp(:, :), e_pp(:, :)
         integer, allocatable :: pair_c(:), wall_c(:, :), act(:), perm(:), nc(:), ended(:), nbi(:), nbj(:)

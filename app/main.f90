@@ -3,6 +3,7 @@
 program main
     use hertzdamp_cli, only: fail, quit, EXIT_USAGE, EXIT_OK
     use hertzdamp_cmd_basic, only: cmd_table, cmd_forward, cmd_constants
+    use hertzdamp_cmd_scene, only: cmd_scene
     use hertzdamp_cli_help, only: print_help
     use hertzdamp_cmd_invert, only: cmd_invert
     use hertzdamp_cmd_bench, only: cmd_bench
@@ -30,6 +31,8 @@ program main
         call cmd_invert()
     case ('bench')
         call cmd_bench()
+    case ('scene')
+        call cmd_scene()
     case default
         call fail(EXIT_USAGE, 'unknown command "' // trim(command) // '" (see hertzdamp --help)')
     end select

@@ -1,0 +1,448 @@
+!> Reading a scene from a Fortran namelist file (the format of data/scenes/*.nml).
+!>
+!> The file holds namelist groups, each starting with `&name` and ending with `/`;
+!> blank lines and lines starting with `!` or `#` may separate them:
+!>
+!>     &scene    title, dt, steps_per_contact, end_time, gravity, g, contact_end,
+!>               report, accuracy, domain_lo, domain_hi, rest_speed, samples /   (once)
+!>     &material name, density, youngs_modulus, poisson_ratio, restitution /     (repeated)
+!>     &particle material, radius, position, velocity, count, spacing /          (repeated)
+!>     &wall     material, point, normal /                                       (repeated)
+!>
+!> `count` > 1 repeats a particle at position + (i-1) spacing, i = 1..count.
+!> `report` is 'restitution' or 'restitution duration'.  Each group is read with
+!> the Fortran namelist READ from its own lines, so the compiler's own message
+!> names an unknown key; this module adds the line number.  Nothing is printed:
+!> failures return HD_BAD_ARGUMENT and a one-line message.
+module hertzdamp_scene_io
+    use hertzdamp_kinds, only: hertzdamp_rk
+    use hertzdamp_status, only: HD_OK, HD_BAD_ARGUMENT, HD_END_OVERLAP, HD_END_FORCE
+    use hertzdamp_dem, only: hertzdamp_dem_scene, hertzdamp_dem_material, hertzdamp_dem_wall, &
+                             hertzdamp_dem_max_particles
+    implicit none
+    private
+
+    integer, parameter :: wp = hertzdamp_rk
+    !> Marks a real key that the file did not set.
+    real(wp), parameter :: unset = -huge(1.0_wp)
+    integer, parameter :: line_len = 1024
+
+    public :: hertzdamp_scene_read
+
+contains
+
+    !> True when x still holds the `unset` marker.
+    pure elemental logical function is_unset(x)
+        real(wp), intent(in) :: x
+        is_unset = x <= 0.5_wp * unset
+    end function is_unset
+
+    !> Read and validate the syntax of a scene file (physical validity is checked by
+    !> hertzdamp_dem_check).  status HD_OK, or HD_BAD_ARGUMENT with a message.
+    subroutine hertzdamp_scene_read(path, sc, status, message)
+        character(len=*), intent(in) :: path                  !! scene file
+        type(hertzdamp_dem_scene), intent(out) :: sc           !! the scene
+        integer, intent(out) :: status                         !! HD_OK or HD_BAD_ARGUMENT
+        character(len=:), allocatable, intent(out) :: message  !! empty on success
+        character(len=line_len), allocatable :: lines(:)
+        character(len=line_len) :: buf
+        character(len=256) :: iom
+        character(len=32) :: gname
+        integer :: u, ios, nl, i, first, last, nscene
+        logical :: done
+
+        status = HD_BAD_ARGUMENT
+        message = ''
+        allocate (sc%mat(0), sc%pmat(0), sc%radius(0), sc%x(3, 0), sc%v(3, 0), sc%pline(0), sc%wall(0))
+        sc%title = ''
+        open (newunit=u, file=path, status='old', action='read', iostat=ios, iomsg=iom)
+        if (ios /= 0) then
+            message = 'cannot open scene file ' // path // ': ' // trim(iom)
+            return
+        end if
+        allocate (lines(0))
+        nl = 0
+        do
+            read (u, '(a)', iostat=ios) buf
+            if (ios /= 0) exit
+            nl = nl + 1
+            lines = [lines, buf]
+            if (nl > 1000000) exit
+        end do
+        close (u)
+        nscene = 0
+        i = 1
+        do while (i <= nl)
+            buf = adjustl(lines(i))
+            if (len_trim(buf) == 0 .or. buf(1:1) == '!' .or. buf(1:1) == '#') then
+                i = i + 1
+                cycle
+            end if
+            if (buf(1:1) /= '&') then
+                message = at(i) // 'text outside a namelist group (groups start with &scene, &material, ' // &
+                          '&particle or &wall)'
+                return
+            end if
+            gname = group_name(buf)
+            first = i
+            call find_end(lines, first, nl, last, done)
+            if (.not. done) then
+                message = at(first) // '&' // trim(gname) // ' is not closed by /'
+                return
+            end if
+            select case (trim(gname))
+            case ('scene')
+                nscene = nscene + 1
+                if (nscene > 1) then
+                    message = at(first) // 'second &scene group (only one is allowed)'
+                    return
+                end if
+                call read_scene(lines(first:last), first, sc, message)
+            case ('material')
+                call read_material(lines(first:last), first, sc, message)
+            case ('particle')
+                call read_particle(lines(first:last), first, sc, message)
+            case ('wall')
+                call read_wall(lines(first:last), first, sc, message)
+            case default
+                message = at(first) // 'unknown group &' // trim(gname) // &
+                          ' (expected &scene, &material, &particle or &wall)'
+            end select
+            if (len(message) > 0) return
+            i = last + 1
+        end do
+        if (nscene == 0) then
+            message = path // ': no &scene group'
+            return
+        end if
+        status = HD_OK
+    end subroutine hertzdamp_scene_read
+
+    !> 'line N: '
+    pure function at(line) result(s)
+        integer, intent(in) :: line
+        character(len=:), allocatable :: s
+        character(len=16) :: b
+        write (b, '(i0)') line
+        s = 'line ' // trim(b) // ': '
+    end function at
+
+    !> The (lower-case) name after '&'.
+    pure function group_name(text) result(name)
+        character(len=*), intent(in) :: text
+        character(len=32) :: name
+        integer :: k, c
+        name = ''
+        do k = 2, min(len_trim(text), 33)
+            c = iachar(text(k:k))
+            if (.not. (text(k:k) >= 'a' .and. text(k:k) <= 'z' .or. text(k:k) >= 'A' .and. text(k:k) <= 'Z' &
+                       .or. text(k:k) >= '0' .and. text(k:k) <= '9' .or. text(k:k) == '_')) exit
+            if (c >= iachar('A') .and. c <= iachar('Z')) c = c + 32
+            name(k - 1:k - 1) = achar(c)
+        end do
+    end function group_name
+
+    !> The line holding the '/' that closes the group opened on line `first`
+    !> ('/' inside quotes and after '!' do not count).
+    pure subroutine find_end(lines, first, nl, last, done)
+        character(len=*), intent(in) :: lines(:)
+        integer, intent(in) :: first, nl
+        integer, intent(out) :: last
+        logical, intent(out) :: done
+        integer :: i, k
+        character :: q
+        q = ' '
+        done = .false.
+        last = first
+        do i = first, nl
+            q = ' '
+            do k = 1, len_trim(lines(i))
+                associate (ch => lines(i)(k:k))
+                    if (q /= ' ') then
+                        if (ch == q) q = ' '
+                    else if (ch == '''' .or. ch == '"') then
+                        q = ch
+                    else if (ch == '!') then
+                        exit
+                    else if (ch == '/') then
+                        last = i
+                        done = .true.
+                        return
+                    end if
+                end associate
+            end do
+        end do
+    end subroutine find_end
+
+    !> Turn a namelist READ failure into 'line N: &group: message', with N the line
+    !> of the offending key when the compiler's message names it.
+    function nml_error(lines, first, group, iom) result(msg)
+        character(len=*), intent(in) :: lines(:), group, iom
+        integer, intent(in) :: first
+        character(len=:), allocatable :: msg
+        integer :: k, p, q, line
+        character(len=:), allocatable :: key, low
+        line = first
+        low = lower(iom)
+        ! gfortran: "Cannot match namelist object name <key>"
+        p = index(low, 'object name ')
+        if (p > 0) then
+            key = trim(adjustl(low(p + 12:)))
+            q = scan(key, ' (=')
+            if (q > 0) key = key(1:q - 1)
+            do k = 1, size(lines)
+                if (index(lower(lines(k)), key) > 0) then
+                    line = first + k - 1
+                    exit
+                end if
+            end do
+            msg = at(line) // '&' // group // ': unknown key "' // key // '"'
+        else
+            msg = at(line) // '&' // group // ': ' // trim(iom)
+        end if
+    end function nml_error
+
+    pure function lower(s) result(r)
+        character(len=*), intent(in) :: s
+        character(len=len(s)) :: r
+        integer :: k
+        r = s
+        do k = 1, len(s)
+            if (s(k:k) >= 'A' .and. s(k:k) <= 'Z') r(k:k) = achar(iachar(s(k:k)) + 32)
+        end do
+    end function lower
+
+    subroutine read_scene(lines, first, sc, msg)
+        character(len=*), intent(in) :: lines(:)
+        integer, intent(in) :: first
+        type(hertzdamp_dem_scene), intent(inout) :: sc
+        character(len=:), allocatable, intent(inout) :: msg
+        character(len=256) :: title, contact_end, report, iom
+        real(wp) :: dt, end_time, g(3), accuracy, domain_lo(3), domain_hi(3), rest_speed
+        integer :: steps_per_contact, samples, ios
+        logical :: gravity
+        namelist /scene/ title, dt, steps_per_contact, end_time, gravity, g, contact_end, report, accuracy, &
+            domain_lo, domain_hi, rest_speed, samples
+        title = ''
+        dt = unset
+        end_time = unset
+        steps_per_contact = -huge(1)
+        gravity = .false.
+        g = [0.0_wp, 0.0_wp, -9.81_wp]
+        contact_end = 'overlap'
+        report = 'restitution duration'
+        accuracy = 1.0e-3_wp
+        domain_lo = unset
+        domain_hi = unset
+        rest_speed = 1.0e-3_wp
+        samples = 1000
+        read (lines, nml=scene, iostat=ios, iomsg=iom)
+        if (ios /= 0) then
+            msg = nml_error(lines, first, 'scene', iom)
+            return
+        end if
+        if (is_unset(dt)) then
+            msg = at(first) // '&scene: dt missing (time step [s])'
+        else if (is_unset(end_time)) then
+            msg = at(first) // '&scene: end_time missing [s]'
+        end if
+        if (len(msg) > 0) return
+        sc%title = trim(title)
+        sc%dt = dt
+        sc%end_time = end_time
+        sc%gravity = gravity
+        sc%g = g
+        sc%accuracy = accuracy
+        sc%rest_speed = rest_speed
+        sc%samples = samples
+        select case (trim(lower(contact_end)))
+        case ('overlap'); sc%iend = HD_END_OVERLAP
+        case ('force'); sc%iend = HD_END_FORCE
+        case default
+            msg = at(first) // '&scene: contact_end must be ''overlap'' or ''force'''
+            return
+        end select
+        select case (trim(lower(report)))
+        case ('restitution'); sc%want_duration = .false.
+        case ('restitution duration', 'restitution,duration', 'restitution, duration'); sc%want_duration = .true.
+        case default
+            msg = at(first) // '&scene: report must be ''restitution'' or ''restitution duration'''
+            return
+        end select
+        if (steps_per_contact == -huge(1)) then
+            if (sc%want_duration) then
+                msg = at(first) // '&scene: steps_per_contact missing (N, contact time N dt)'
+                return
+            end if
+            steps_per_contact = 10
+        end if
+        sc%steps_per_contact = steps_per_contact
+        if (any(is_unset(domain_lo)) .neqv. any(is_unset(domain_hi))) then
+            msg = at(first) // '&scene: give both domain_lo and domain_hi, or neither'
+            return
+        end if
+        sc%has_domain = .not. any(is_unset(domain_lo))
+        if (sc%has_domain) then
+            sc%domain_lo = domain_lo
+            sc%domain_hi = domain_hi
+        end if
+    end subroutine read_scene
+
+    subroutine read_material(lines, first, sc, msg)
+        character(len=*), intent(in) :: lines(:)
+        integer, intent(in) :: first
+        type(hertzdamp_dem_scene), intent(inout) :: sc
+        character(len=:), allocatable, intent(inout) :: msg
+        character(len=256) :: name, iom
+        real(wp) :: density, youngs_modulus, poisson_ratio, restitution
+        integer :: ios, k
+        type(hertzdamp_dem_material) :: mt
+        namelist /material/ name, density, youngs_modulus, poisson_ratio, restitution
+        name = ''
+        density = unset
+        youngs_modulus = unset
+        poisson_ratio = unset
+        restitution = unset
+        read (lines, nml=material, iostat=ios, iomsg=iom)
+        if (ios /= 0) then
+            msg = nml_error(lines, first, 'material', iom)
+            return
+        end if
+        if (len_trim(name) == 0) then
+            msg = at(first) // '&material: name missing'
+        else if (len_trim(name) > len(mt%name)) then
+            msg = at(first) // '&material: name longer than 32 characters'
+        else if (is_unset(density)) then
+            msg = at(first) // '&material: density missing [kg m^-3]'
+        else if (is_unset(youngs_modulus)) then
+            msg = at(first) // '&material: youngs_modulus missing [Pa]'
+        else if (is_unset(poisson_ratio)) then
+            msg = at(first) // '&material: poisson_ratio missing'
+        else if (is_unset(restitution)) then
+            msg = at(first) // '&material: restitution missing (target e)'
+        end if
+        if (len(msg) > 0) return
+        do k = 1, size(sc%mat)
+            if (sc%mat(k)%name == name) then
+                msg = at(first) // '&material: name ''' // trim(name) // ''' defined twice'
+                return
+            end if
+        end do
+        if (.not. (density > 0.0_wp)) then
+            msg = at(first) // '&material: density must be positive'
+        else if (.not. (youngs_modulus > 0.0_wp)) then
+            msg = at(first) // '&material: youngs_modulus must be positive'
+        else if (.not. (poisson_ratio > -1.0_wp .and. poisson_ratio <= 0.5_wp)) then
+            msg = at(first) // '&material: poisson_ratio must lie in (-1, 0.5]'
+        else if (.not. (restitution > 0.0_wp .and. restitution <= 1.0_wp)) then
+            msg = at(first) // '&material: restitution must lie in (0, 1]'
+        end if
+        if (len(msg) > 0) return
+        mt = hertzdamp_dem_material(name, density, youngs_modulus, poisson_ratio, restitution)
+        sc%mat = [sc%mat, mt]
+    end subroutine read_material
+
+    !> Index of a material by name, 0 if unknown.
+    pure integer function find_material(sc, name) result(k)
+        type(hertzdamp_dem_scene), intent(in) :: sc
+        character(len=*), intent(in) :: name
+        integer :: i
+        k = 0
+        do i = 1, size(sc%mat)
+            if (sc%mat(i)%name == name) k = i
+        end do
+    end function find_material
+
+    subroutine read_particle(lines, first, sc, msg)
+        character(len=*), intent(in) :: lines(:)
+        integer, intent(in) :: first
+        type(hertzdamp_dem_scene), intent(inout) :: sc
+        character(len=:), allocatable, intent(inout) :: msg
+        character(len=256) :: material, iom
+        real(wp) :: radius, position(3), velocity(3), spacing(3)
+        integer :: count, ios, k, im, n0
+        real(wp), allocatable :: xs(:, :), vs(:, :)
+        namelist /particle/ material, radius, position, velocity, count, spacing
+        material = ''
+        radius = unset
+        position = unset
+        velocity = 0.0_wp
+        count = 1
+        spacing = 0.0_wp
+        read (lines, nml=particle, iostat=ios, iomsg=iom)
+        if (ios /= 0) then
+            msg = nml_error(lines, first, 'particle', iom)
+            return
+        end if
+        im = find_material(sc, material)
+        if (len_trim(material) == 0) then
+            msg = at(first) // '&particle: material missing'
+        else if (im == 0) then
+            msg = at(first) // '&particle: unknown material ''' // trim(material) // &
+                  ''' (define it in a &material group before the particles)'
+        else if (is_unset(radius)) then
+            msg = at(first) // '&particle: radius missing [m]'
+        else if (.not. (radius > 0.0_wp)) then
+            msg = at(first) // '&particle: radius must be positive'
+        else if (any(is_unset(position))) then
+            msg = at(first) // '&particle: position missing (3 coordinates) [m]'
+        else if (count < 1) then
+            msg = at(first) // '&particle: count must be at least 1'
+        else if (count > hertzdamp_dem_max_particles - size(sc%radius)) then
+            msg = at(first) // '&particle: too many particles'
+        end if
+        if (len(msg) > 0) return
+        n0 = size(sc%radius)
+        allocate (xs(3, n0 + count), vs(3, n0 + count))
+        xs(:, 1:n0) = sc%x
+        vs(:, 1:n0) = sc%v
+        do k = 1, count
+            xs(:, n0 + k) = position + (k - 1) * spacing
+            vs(:, n0 + k) = velocity
+        end do
+        call move_alloc(xs, sc%x)
+        call move_alloc(vs, sc%v)
+        sc%radius = [sc%radius, spread(radius, 1, count)]
+        sc%pmat = [sc%pmat, spread(im, 1, count)]
+        sc%pline = [sc%pline, spread(first, 1, count)]
+    end subroutine read_particle
+
+    subroutine read_wall(lines, first, sc, msg)
+        character(len=*), intent(in) :: lines(:)
+        integer, intent(in) :: first
+        type(hertzdamp_dem_scene), intent(inout) :: sc
+        character(len=:), allocatable, intent(inout) :: msg
+        character(len=256) :: material, iom
+        real(wp) :: point(3), normal(3)
+        integer :: ios, im
+        type(hertzdamp_dem_wall) :: w
+        namelist /wall/ material, point, normal
+        material = ''
+        point = unset
+        normal = unset
+        read (lines, nml=wall, iostat=ios, iomsg=iom)
+        if (ios /= 0) then
+            msg = nml_error(lines, first, 'wall', iom)
+            return
+        end if
+        im = find_material(sc, material)
+        if (len_trim(material) == 0) then
+            msg = at(first) // '&wall: material missing'
+        else if (im == 0) then
+            msg = at(first) // '&wall: unknown material ''' // trim(material) // ''''
+        else if (any(is_unset(point))) then
+            msg = at(first) // '&wall: point missing (3 coordinates) [m]'
+        else if (any(is_unset(normal))) then
+            msg = at(first) // '&wall: normal missing (3 components)'
+        else if (.not. (norm2(normal) > 0.0_wp)) then
+            msg = at(first) // '&wall: normal must not be zero'
+        end if
+        if (len(msg) > 0) return
+        w%material = im
+        w%point = point
+        w%normal = normal / norm2(normal)
+        w%line = first
+        sc%wall = [sc%wall, w]
+    end subroutine read_wall
+
+end module hertzdamp_scene_io

@@ -1,0 +1,246 @@
+!> Scenes (data/scenes/*.nml) run through the library-level DEM engine:
+!> - binary collisions: achieved e and T_c meet the targets to the method accuracy
+!>   plus the time-step error 2/N^2 (velocity Verlet, N steps per contact), and the
+!>   error falls as N = 10, 20, 40 (overlap and force contact ends);
+!> - ball dropped on a wall: successive rebound heights follow e^2 up to the gravity
+!>   correction |e_eff/e - 1| <= 0.25 g T_c/u_in (measured 0.1 for e = 0.8), the
+!>   flights conserve energy, and the ball comes to rest at its static overlap;
+!> - chain: momentum conserved to round-off, energy never increases;
+!> - bed: finishes, no particle leaves the box, comes to rest;
+!> - method choice: the nearly elastic chain picks a cheaper rule than the strongly
+!>   damped bed, and both rules meet their scene's accuracy against the reference;
+!> - invalid scene files give a status and a message naming the line or key.
+program test_scene
+    use hertzdamp, only: hertzdamp_rk, hertzdamp_collision, hertzdamp_rk45_collide, HD_OK, HD_END_OVERLAP, &
+                         HD_END_FORCE, HD_METHOD_ITERATIVE
+    use hertzdamp_dem, only: hertzdamp_dem_scene, hertzdamp_dem_result, hertzdamp_dem_check, hertzdamp_dem_run, &
+                             hertzdamp_dem_select, hertzdamp_dem_rule, hertzdamp_dem_cost_order, hertzdamp_dem_mass, &
+                             HD_DEM_FIRST_ORDER
+    use hertzdamp_scene_io, only: hertzdamp_scene_read
+    use hertzdamp_testing, only: test_suite, new_suite
+    implicit none
+    integer, parameter :: wp = hertzdamp_rk
+    type(test_suite) :: s
+
+    s = new_suite('test_scene')
+    call binary_convergence(HD_END_OVERLAP)
+    call binary_convergence(HD_END_FORCE)
+    call drop()
+    call chain_and_bed()
+    call invalid_scenes()
+    call s%finish()
+
+contains
+
+    !> Read a shipped scene; a failure is a failed check and stops the program.
+    subroutine load(path, sc)
+        character(len=*), intent(in) :: path
+        type(hertzdamp_dem_scene), intent(out) :: sc
+        integer :: status
+        character(len=:), allocatable :: msg
+        call hertzdamp_scene_read(path, sc, status, msg)
+        call s%check(status == HD_OK, path // ' reads: ' // msg)
+        if (status /= HD_OK) call s%finish()
+        call hertzdamp_dem_check(sc, status, msg)
+        call s%check(status == HD_OK, path // ' is valid: ' // msg)
+        if (status /= HD_OK) call s%finish()
+    end subroutine load
+
+    !> The rule chosen by `auto` for a scene (checked to exist).
+    integer function auto_method(sc) result(m)
+        type(hertzdamp_dem_scene), intent(in) :: sc
+        real(wp) :: err(6)
+        logical :: avail(6)
+        integer :: status
+        call hertzdamp_dem_select(sc, m, err, avail, status)
+        call s%check(status == HD_OK .and. m >= 0, 'auto finds a rule')
+        if (m < 0) m = HD_METHOD_ITERATIVE
+    end function auto_method
+
+    subroutine binary_convergence(iend)
+        integer, intent(in) :: iend
+        type(hertzdamp_dem_scene) :: sc
+        type(hertzdamp_dem_result) :: res
+        integer :: k, nn(3), method
+        real(wp) :: ee(3), et(3), bound
+        character(len=40) :: lab
+        nn = [10, 20, 40]
+        call load('data/scenes/binary.nml', sc)
+        sc%iend = iend
+        method = auto_method(sc)
+        write (lab, '(a,i0)') 'binary, end ', iend
+        do k = 1, 3
+            sc%steps_per_contact = nn(k)
+            sc%dt = 1.0e-5_wp / nn(k)
+            call hertzdamp_dem_run(sc, method, 1.0e-5_wp, res)
+            call s%check(res%status == HD_OK, trim(lab) // ': run succeeds')
+            call s%check(res%ncontacts == 15, trim(lab) // ': 15 contacts')
+            call s%check(all(res%contacts%binary .and. res%contacts%t_end > 0.0_wp), &
+                         trim(lab) // ': all binary and ended')
+            ee(k) = maxval(abs(res%contacts%u_out / res%contacts%u_in - res%contacts%e_target) / res%contacts%e_target)
+            et(k) = maxval(abs(res%contacts%t_end - res%contacts%t_start - res%contacts%tc_target) / &
+                           res%contacts%tc_target)
+            bound = sc%accuracy + 2.0_wp / nn(k)**2
+            call s%check(ee(k) <= bound, trim(lab) // ': e within accuracy + 2/N^2')
+            call s%check(et(k) <= bound, trim(lab) // ': T_c within accuracy + 2/N^2')
+            ! both regimes present: rule-softened (fast) and physical (slow) contacts
+            call s%check(any(res%contacts%bound_active) .and. any(.not. res%contacts%bound_active), &
+                         trim(lab) // ': rule and physical-bound contacts present')
+            call s%check(abs(res%momentum_drift) <= 1.0e-13_wp * res%momentum_scale, trim(lab) // ': momentum')
+        end do
+        call s%check(ee(2) < ee(1) .and. ee(3) < ee(2) .and. ee(3) < ee(1) / 8.0_wp, &
+                     trim(lab) // ': e error falls with N (>= 8x from N = 10 to 40)')
+        call s%check(et(2) < et(1) .and. et(3) < et(2) .and. et(3) < et(1) / 8.0_wp, &
+                     trim(lab) // ': T_c error falls with N (>= 8x from N = 10 to 40)')
+    end subroutine binary_convergence
+
+    subroutine drop()
+        type(hertzdamp_dem_scene) :: sc
+        type(hertzdamp_dem_result) :: res
+        integer :: i, nb, nchecked
+        real(wp) :: g, h1, h2, eps, e, m, zs, bound
+        logical :: ok_h, ok_f
+        call load('data/scenes/drop.nml', sc)
+        call hertzdamp_dem_run(sc, auto_method(sc), 1.0e-4_wp, res)
+        call s%check(res%status == HD_OK, 'drop: run succeeds')
+        g = norm2(sc%g)
+        e = sc%mat(1)%restitution
+        nb = count(res%contacts%t_end > 0.0_wp)
+        call s%check(nb >= 20, 'drop: at least 20 bounces')
+        ok_h = .true.
+        ok_f = .true.
+        nchecked = 0
+        bound = 2.0_wp / sc%steps_per_contact**2
+        do i = 1, nb - 1
+            eps = g * res%contacts(i + 1)%tc_target / res%contacts(i + 1)%u_in
+            if (eps > 0.1_wp) cycle
+            ! flight between bounce i and i+1: x + v^2/(2g) is exact under velocity Verlet
+            if (abs(res%contacts(i + 1)%u_in / res%contacts(i)%u_out - 1.0_wp) > 1.0e-4_wp) ok_f = .false.
+            h1 = res%contacts(i)%u_out**2 / (2.0_wp * g)
+            h2 = res%contacts(i + 1)%u_out**2 / (2.0_wp * g)
+            nchecked = nchecked + 1
+            if (abs(sqrt(h2 / h1) / e - 1.0_wp) > 0.25_wp * eps + bound) ok_h = .false.
+        end do
+        call s%check(nchecked >= 15, 'drop: at least 15 bounces with g T_c/u_in <= 0.1')
+        call s%check(ok_h, 'drop: rebound heights h(i+1)/h(i) = e^2 within 0.25 g T_c/u_in + 2/N^2')
+        call s%check(ok_f, 'drop: impact speed = previous rebound speed to 1e-4 (flight conserves energy; ' // &
+                     'touch and release instants are interpolated)')
+        call s%check(res%at_rest, 'drop: the ball comes to rest')
+        ! at rest on the wall, pressed in by its weight: k zeta^(3/2) = m g
+        m = hertzdamp_dem_mass(sc%mat(1)%density, sc%radius(1))
+        zs = (m * g / res%contacts(res%ncontacts)%k)**(2.0_wp / 3.0_wp)
+        call s%check_close(sc%radius(1) - res%x_final(3, 1), zs, 1.0e-3_wp, 'drop: static overlap (m g/k)^(2/3)')
+        ! the discrete energy inside a contact carries the O(1/N^2) error of velocity Verlet
+        call s%check(res%energy_rise <= abs(res%energy0) / sc%steps_per_contact**2, &
+                     'drop: energy never increases (beyond the 1/N^2 time-step error)')
+    end subroutine drop
+
+    subroutine chain_and_bed()
+        type(hertzdamp_dem_scene) :: chain, bed
+        type(hertzdamp_dem_result) :: res
+        integer :: m_chain, m_bed, st, c
+        real(wp) :: alpha, err(6)
+        logical :: avail(6)
+        type(hertzdamp_collision) :: r
+
+        call load('data/scenes/chain.nml', chain)
+        m_chain = auto_method(chain)
+        call hertzdamp_dem_run(chain, m_chain, 1.0e-4_wp, res)
+        call s%check(res%status == HD_OK, 'chain: run succeeds')
+        call s%check(res%ncontacts >= 10, 'chain: every ball is hit')
+        call s%check(res%momentum_drift <= 1.0e-14_wp * res%momentum_scale, 'chain: momentum conserved to round-off')
+        call s%check(res%energy_rise <= 1.0e-5_wp * res%energy0, 'chain: energy never increases (beyond 1/N^2)')
+        call s%check(res%energy_final < res%energy0, 'chain: energy dissipated')
+        call s%check(res%v_final(1, 11) > 0.5_wp .and. abs(res%v_final(1, 1)) < 0.2_wp, &
+                     'chain: the last ball flies off, the striker nearly stops')
+
+        call load('data/scenes/bed.nml', bed)
+        m_bed = auto_method(bed)
+        call hertzdamp_dem_run(bed, m_bed, 1.0e-4_wp, res)
+        call s%check(res%status == HD_OK, 'bed: run succeeds')
+        call s%check(size(bed%radius) >= 100, 'bed: at least 100 particles')
+        call s%check(res%left_domain == 0, 'bed: no particle leaves the box')
+        call s%check(all(res%x_final(3, :) > 0.0_wp .and. res%x_final(1, :) > 0.0_wp .and. &
+                         res%x_final(1, :) < 0.05_wp .and. res%x_final(2, :) > 0.0_wp .and. &
+                         res%x_final(2, :) < 0.05_wp), 'bed: all centres inside the walls')
+        call s%check(res%at_rest, 'bed: comes to rest')
+        call s%check(res%energy_rise <= 1.0e-10_wp * abs(res%energy0), 'bed: energy never increases')
+        call s%check(res%energy_final < res%energy0, 'bed: energy dissipated')
+
+        ! method choice: nearly elastic chain (e = 0.98) is cheaper than the damped bed (e = 0.5)
+        call s%check(findloc(hertzdamp_dem_cost_order, m_chain, dim=1) < &
+                     findloc(hertzdamp_dem_cost_order, m_bed, dim=1), 'auto: elastic scene picks a cheaper rule')
+        call s%check(m_chain == HD_DEM_FIRST_ORDER, 'auto: elastic chain picks first-order')
+        ! ... and both meet their accuracy: alpha from the rule, e from the reference integrator
+        call rule_alpha(chain, m_chain, alpha, st)
+        r = hertzdamp_rk45_collide(alpha, chain%iend)
+        call s%check(st == HD_OK .and. abs(r%e - 0.98_wp) <= chain%accuracy * 0.98_wp, 'auto: chain rule accurate')
+        call rule_alpha(bed, m_bed, alpha, st)
+        r = hertzdamp_rk45_collide(alpha, bed%iend)
+        call s%check(st == HD_OK .and. abs(r%e - 0.5_wp) <= bed%accuracy * 0.5_wp, 'auto: bed rule accurate')
+        ! the first-order rule alone would not be accurate for the bed
+        call hertzdamp_dem_select(bed, c, err, avail, st)
+        call s%check(err(1) > bed%accuracy, 'auto: first-order misses the bed accuracy')
+    end subroutine chain_and_bed
+
+    !> alpha used by a rule for a material's own e: d = alpha m^(3/5) k^(2/5) u^(1/5)
+    !> with k = k_phys (restitution only), read back at m = u = k_phys = 1.
+    subroutine rule_alpha(sc, method, alpha, status)
+        type(hertzdamp_dem_scene), intent(in) :: sc
+        integer, intent(in) :: method
+        real(wp), intent(out) :: alpha
+        integer, intent(out) :: status
+        real(wp) :: k, d, tce
+        logical :: bound
+        call hertzdamp_dem_rule(sc%mat(1)%restitution, 1.0_wp, 1.0_wp, 1.0_wp, 1.0_wp, sc%iend, method, .false., &
+                                1.0e-8_wp, k, d, tce, bound, status)
+        alpha = d
+    end subroutine rule_alpha
+
+    !> A scene file with the given text must fail with a message containing `want`.
+    subroutine expect_invalid(text, want, label)
+        character(len=*), intent(in) :: text, want, label
+        type(hertzdamp_dem_scene) :: sc
+        integer :: u, status
+        character(len=:), allocatable :: msg
+        character(len=*), parameter :: path = 'build/test_scene_invalid.nml'
+        open (newunit=u, file=path, status='replace', action='write')
+        write (u, '(a)') text
+        close (u)
+        call hertzdamp_scene_read(path, sc, status, msg)
+        if (status == HD_OK) call hertzdamp_dem_check(sc, status, msg)
+        call s%check(status /= HD_OK, label // ': rejected')
+        call s%check(index(msg, want) > 0, label // ': message names "' // want // '" (got: ' // msg // ')')
+        open (newunit=u, file=path, status='old')
+        close (u, status='delete')
+    end subroutine expect_invalid
+
+    subroutine invalid_scenes()
+        character(len=*), parameter :: nl = new_line('a')
+        character(len=*), parameter :: head = '&scene dt = 1e-6, steps_per_contact = 10, end_time = 1e-4 /' // nl // &
+            '&material name = ''s'', density = 7800, youngs_modulus = 2e11, poisson_ratio = 0.3, restitution = 0.9 /'
+        call expect_invalid(head // nl // '&particle material = ''s'', radius = 1e-3, position = 0,0,0, colour = 1 /', &
+                            'line 3', 'unknown key')
+        call expect_invalid(head // nl // '&particle material = ''s'', radius = 1e-3, position = 0,0,0,' // nl // &
+                            '  velocty = 1,0,0 /', 'line 4', 'unknown key on a continuation line')
+        call expect_invalid(head // nl // '&particle material = ''s'', position = 0,0,0 /', 'radius missing', &
+                            'missing radius')
+        call expect_invalid(head // nl // '&particle material = ''s'', radius = -1e-3, position = 0,0,0 /', &
+                            'radius must be positive', 'negative radius')
+        call expect_invalid(head // nl // '&particle material = ''s'', radius = 1e-3, position = 0,0,0 /' // nl // &
+                            '&particle material = ''s'', radius = 1e-3, position = 1e-3,0,0 /', 'line 4', &
+                            'overlapping particles')
+        call expect_invalid(head // nl // '&particle material = ''t'', radius = 1e-3, position = 0,0,0 /', &
+                            'unknown material', 'unknown material')
+        call expect_invalid('&scene steps_per_contact = 10, end_time = 1e-4 /', 'dt missing', 'missing dt')
+        call expect_invalid(head // nl // '&particles material = ''s'' /', 'unknown group', 'unknown group')
+        call expect_invalid(head // nl // 'radius = 1', 'line 3', 'text outside a group')
+        call expect_invalid(head // nl // '&particle material = ''s'', radius = 1e-3, position = 0,0,0', &
+                            'not closed', 'unterminated group')
+        call expect_invalid(head, 'no &particle', 'no particles')
+        call expect_invalid(head // nl // '&wall material = ''s'', point = 0,0,0, normal = 0,0,1 /' // nl // &
+                            '&particle material = ''s'', radius = 1e-3, position = 0,0,5e-4 /', 'overlaps the wall', &
+                            'particle in the wall')
+    end subroutine invalid_scenes
+
+end program test_scene

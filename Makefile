@@ -44,13 +44,19 @@ $(VENV)/bin/fortitude: $(FPM)
 	@touch $@
 
 # ---------------------------------------------------------------- build and run
+# fpm 0.12 sometimes recompiles an object without refreshing libhertzdamp.a: drop
+# the archives before every build so that programs never link stale code.
+STALE_ARCHIVES = rm -f build/gfortran_*/hertzdamp/libhertzdamp.a
+
 build: deps
+	@$(STALE_ARCHIVES)
 	$(FPM) build --flag "$(RELEASE_FLAGS)"
 
 run: build
 	@$(FPM) run hertzdamp --flag "$(RELEASE_FLAGS)" -- table
 
 test: deps
+	@$(STALE_ARCHIVES)
 	@$(FPM) build --tests --flag "$(TEST_FLAGS)" --link-flag "$(TEST_LINK)"
 	@$(FPM) build --flag "$(RELEASE_FLAGS)"
 	@bash test/run_tests.sh "$(FPM)" "$(TEST_FLAGS)" "$(RELEASE_FLAGS)" "$(TEST_LINK)"

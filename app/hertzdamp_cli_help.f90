@@ -92,8 +92,10 @@ module hertzdamp_cli_help
         '  --k-phys K     physical stiffness bound [N m^-3/2]: if K <= k, k = K and' // nl // &
         '                 d = alpha m^(3/5) K^(2/5) u^(1/5) (bound_active = true)' // nl // &
         '  --end overlap|force   contact-end definition (default overlap)' // nl // &
-        '  --method M     fit (default, ~1e-13), compact (closed form, ~1e-5) or' // nl // &
-        '                 iterative (secant over reference-integrator solves)' // nl // &
+        '  --method M     fit (default, ~1e-13), compact (closed form, ~1e-5, e >= 0.05),' // nl // &
+        '                 series / pade (Newton on the series / Pade formula, overlap' // nl // &
+        '                 only, series alpha < 1, pade alpha <= 0.8) or iterative' // nl // &
+        '                 (secant over reference-integrator solves)' // nl // &
         '  --tol T        tolerance of --method iterative, 1e-14 <= T <= 1e-2 (default 1e-10)' // nl // &
         '  --format F     text (aligned, default), csv or json' // nl // &
         '  --help         this text' // nl // &

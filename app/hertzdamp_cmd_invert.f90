@@ -1,7 +1,8 @@
 !> The command `invert`: stiffness and damping from target restitution and contact time.
 module hertzdamp_cmd_invert
     use hertzdamp, only: hertzdamp_rk, hertzdamp_invert, hertzdamp_message, hertzdamp_end_name, &
-                         HD_OK, HD_BAD_RESTITUTION, HD_END_OVERLAP, HD_METHOD_FIT, HD_METHOD_COMPACT, &
+                         HD_OK, HD_BAD_RESTITUTION, HD_OUTSIDE_VALIDITY, HD_END_OVERLAP, HD_METHOD_FIT, HD_METHOD_COMPACT, &
+                         HD_METHOD_SERIES, HD_METHOD_PADE, &
                          HD_METHOD_ITERATIVE
     use hertzdamp_cli, only: cli_args, cli_buffer, parse_args, parse_real, parse_real_list, parse_int, &
                              parse_choice, fail, quit, fmt_csv, EXIT_USAGE, EXIT_OK, EXIT_NO_SOLUTION
@@ -32,10 +33,12 @@ contains
         call parse_args(2, '--e --tc --dt --steps --mass --velocity --k-phys --end --method --tol --format', '', args)
         iend = parse_choice(args%get('--end', 'overlap'), 'overlap force', 'contact-end definition (--end)') - 1
         mname = args%get('--method', 'fit')
-        method = parse_choice(mname, 'fit compact iterative', 'method (--method)')
+        method = parse_choice(mname, 'fit compact series pade iterative', 'method (--method)')
         select case (method)
         case (1); method = HD_METHOD_FIT
         case (2); method = HD_METHOD_COMPACT
+        case (3); method = HD_METHOD_SERIES
+        case (4); method = HD_METHOD_PADE
         case default; method = HD_METHOD_ITERATIVE
         end select
         fmt = parse_choice(args%get('--format', 'text'), format_choices, 'format (--format)')
@@ -73,7 +76,7 @@ contains
             call hertzdamp_invert(e, tc, m, u, iend, k, d, status, alpha, tstar, tau, bound, method=method, tol=tol)
         end if
         do i = 1, size(e)
-            if (status(i) == HD_BAD_RESTITUTION) then
+            if (status(i) == HD_BAD_RESTITUTION .or. status(i) == HD_OUTSIDE_VALIDITY) then
                 call fail(EXIT_NO_SOLUTION, 'e = ' // fmt_csv(e(i)) // ': ' // hertzdamp_message(status(i)))
             else if (status(i) /= HD_OK) then
                 call fail(EXIT_USAGE, 'e = ' // fmt_csv(e(i)) // ': ' // hertzdamp_message(status(i)))

@@ -21,7 +21,8 @@ module hertzdamp_inverse
     use hertzdamp_kinds, only: hertzdamp_rk
     use hertzdamp_status, only: HD_OK, HD_BAD_RESTITUTION, HD_BAD_TIME, HD_BAD_MASS, HD_BAD_VELOCITY, &
                                 HD_BAD_KPHYS, HD_BAD_END, HD_BAD_TOL, HD_BAD_ARGUMENT, HD_NOT_SUPPORTED, &
-                                HD_NO_CONVERGENCE, HD_NO_REBOUND, HD_OUT_OF_RANGE, HD_END_OVERLAP, HD_END_FORCE
+                                HD_NO_CONVERGENCE, HD_NO_REBOUND, HD_OUT_OF_RANGE, HD_END_OVERLAP, HD_END_FORCE, &
+                                HD_OUTSIDE_VALIDITY
     use hertzdamp_scaling, only: hertzdamp_safe_exp
     use hertzdamp_constants, only: hertzdamp_e1, hertzdamp_tau_c0
     use hertzdamp_rk45, only: hertzdamp_collision, hertzdamp_rk45_collide
@@ -29,6 +30,8 @@ module hertzdamp_inverse
                                  HD_METHOD_FIT, HD_METHOD_ITERATIVE
     use hertzdamp_fit, only: hertzdamp_fit_inverse, hertzdamp_fit_e_min_overlap, hertzdamp_fit_e_min_force
     use hertzdamp_compact, only: hertzdamp_compact_inverse
+    use hertzdamp_series, only: hertzdamp_series_eval, hertzdamp_pade_eval, HERTZDAMP_SERIES_OK, &
+                                hertzdamp_pade_alpha_max
     use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
     implicit none
     private
@@ -169,7 +172,11 @@ contains
             end if
             call iterate(e, iend, tol_, alpha, tau_c, status)
         case (HD_METHOD_SERIES, HD_METHOD_PADE)
-            status = HD_NOT_SUPPORTED
+            if (iend /= HD_END_OVERLAP) then
+                status = HD_NOT_SUPPORTED   ! the force definition has no Taylor series
+                return
+            end if
+            call series_inverse(e, meth, alpha, tau_c, status)
         case default
             status = HD_BAD_ARGUMENT
         end select
@@ -178,6 +185,68 @@ contains
             tau_c = hertzdamp_tau_c0()
         end if
     end subroutine hertzdamp_invert_alpha
+
+    !> Invert the truncated series (default order) or its Pade summation: a few Newton
+    !> steps on ln e(alpha) = ln e with the derivative of the same formula (central
+    !> difference), no ODE solves.  Valid where the formula is (series |alpha| < 1,
+    !> Pade alpha <= 0.8), otherwise HD_OUTSIDE_VALIDITY.
+    pure subroutine series_inverse(e, meth, alpha, tau_c, status)
+        real(wp), intent(in) :: e
+        integer, intent(in) :: meth
+        real(wp), intent(out) :: alpha, tau_c
+        integer, intent(out) :: status
+        real(wp) :: lt, a, g, gp, gm, h, step, ee
+        integer :: it
+        alpha = 0.0_wp
+        tau_c = hertzdamp_tau_c0()
+        status = HD_OK
+        lt = log(e)
+        if (lt == 0.0_wp) return
+        ! start from the first-order law, inside the range where both formulas are valid
+        a = min(-lt / hertzdamp_e1(), 0.79_wp)
+        do it = 1, 30
+            call series_ln_e(a, meth, g, tau_c, status)
+            if (status /= HD_OK) exit
+            h = 1.0e-6_wp * max(a, 1.0e-3_wp)
+            call series_ln_e(a + h, meth, gp, ee, status)
+            if (status == HD_OK) call series_ln_e(max(a - h, 0.0_wp), meth, gm, ee, status)
+            if (status /= HD_OK) exit
+            step = (g - lt) * (a + h - max(a - h, 0.0_wp)) / (gp - gm)
+            a = a - step
+            if (.not. (a >= 0.0_wp)) a = 0.0_wp
+            a = min(a, hertzdamp_pade_alpha_max)
+            if (abs(step) <= 4.0_wp * epsilon(1.0_wp) * a) exit
+        end do
+        if (status == HD_OK) then
+            call series_ln_e(a, meth, g, tau_c, status)
+            if (abs(g - lt) > 1.0e-12_wp * abs(lt)) status = HD_OUTSIDE_VALIDITY
+        end if
+        if (status /= HD_OK) then
+            status = HD_OUTSIDE_VALIDITY
+            alpha = 0.0_wp
+            tau_c = 0.0_wp
+            return
+        end if
+        alpha = a
+    end subroutine series_inverse
+
+    !> ln e and tau_c of the series or Pade formula at alpha (status 0 = valid there).
+    pure subroutine series_ln_e(a, meth, lne, tau_c, status)
+        real(wp), intent(in) :: a
+        integer, intent(in) :: meth
+        real(wp), intent(out) :: lne, tau_c
+        integer, intent(out) :: status
+        real(wp) :: e
+        integer :: st
+        if (meth == HD_METHOD_SERIES) then
+            call hertzdamp_series_eval(a, e, tau_c, status=st)
+        else
+            call hertzdamp_pade_eval(a, e, tau_c, status=st)
+        end if
+        status = merge(HD_OK, HD_OUTSIDE_VALIDITY, st == HERTZDAMP_SERIES_OK .and. e > 0.0_wp)
+        lne = 0.0_wp
+        if (status == HD_OK) lne = log(e)
+    end subroutine series_ln_e
 
     !> Safeguarded secant (bracketing, bisection fallback) on g(alpha) = ln e(alpha) - ln e
     !> with one reference solve per trial.

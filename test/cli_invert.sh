@@ -48,7 +48,8 @@ check_err 2 invert --e 0.5 --tc 1e-4 --mass 1e-3 --velocity 1 --k-phys 0
 check_err 2 invert --e 0.5 --tc 1e-4 --mass 1e-3
 check_err 2 invert --e 0.5 --mass 1e-3 --velocity 1
 check_err 2 invert --e 0.5 --tc 1e-4 --dt 1e-5 --steps 10 --mass 1e-3 --velocity 1
-check_err 2 invert --e 0.5 --tc 1e-4 --mass 1e-3 --velocity 1 --method series
+check_err 2 invert --e 0.5 --tc 1e-4 --mass 1e-3 --velocity 1 --method series --end force
+check_err 3 invert --e 0.05 --tc 1e-4 --mass 1e-3 --velocity 1 --method pade
 check_err 2 invert --e abc --tc 1e-4 --mass 1e-3 --velocity 1
 check_err 2 invert --e 0.5 --tc 1e-4 --mass 1e-3 --velocity 1 --tol 1e-12
 rc=$(run invert --help); [ "$rc" = 0 ] && grep -q 'N m^-3/2' "$out" && ok || ko "help"

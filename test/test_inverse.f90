@@ -121,9 +121,33 @@ program test_inverse
     call hertzdamp_invert(0.5_wp, 1.0e-4_wp, 1.0e-3_wp, 1.0_wp, 0, k2, d2, st, method=HD_METHOD_COMPACT)
     call s%check(st == HD_OK .and. rel_err(k2, k) < 3.0e-5_wp .and. rel_err(d2, d) < 3.0e-5_wp, &
                  'compact method: k, d within 3e-5')
+    call series_inverse_checks()
     call s%finish()
 
 contains
+
+    !> The series and Pade inverses (Newton on the formulas) against the fit: they agree
+    !> to the accuracy of the formula (default-order series 1e-12 at alpha <= 0.2, about
+    !> 1e-5 at 0.8; Pade 1e-10 on [0, 0.8]).
+    subroutine series_inverse_checks()
+        real(wp) :: e, af, tf, as, ts_, ap, tp
+        integer :: i, st1, st2, st3
+        do i = 0, 40
+            e = 0.14_wp + 0.86_wp * real(i, wp) / 40.0_wp
+            call hertzdamp_invert_alpha(e, HD_END_OVERLAP, af, tf, st1)
+            call hertzdamp_invert_alpha(e, HD_END_OVERLAP, as, ts_, st2, method=HD_METHOD_SERIES)
+            call hertzdamp_invert_alpha(e, HD_END_OVERLAP, ap, tp, st3, method=HD_METHOD_PADE)
+            call s%check(st1 == HD_OK .and. st2 == HD_OK .and. st3 == HD_OK, 'series/pade inverse status')
+            call s%check(abs(as - af) <= merge(1.0e-11_wp, 1.0e-4_wp, af <= 0.2_wp) * max(af, 1.0e-3_wp), &
+                         'series inverse agrees with fit')
+            call s%check(abs(ap - af) <= 1.0e-9_wp * max(af, 1.0e-3_wp), 'pade inverse agrees with fit')
+            call s%check(abs(tp - tf) <= 1.0e-9_wp * tf, 'pade tau_c agrees with fit')
+        end do
+        call hertzdamp_invert_alpha(0.1_wp, HD_END_OVERLAP, as, ts_, st2, method=HD_METHOD_SERIES)
+        call s%check(st2 == HD_OUTSIDE_VALIDITY .and. same(as, 0.0_wp), 'series inverse: e = 0.1 outside validity')
+        call hertzdamp_invert_alpha(0.5_wp, HD_END_FORCE, as, ts_, st2, method=HD_METHOD_PADE)
+        call s%check(st2 == HD_NOT_SUPPORTED, 'pade inverse: force definition not supported')
+    end subroutine series_inverse_checks
 
     !> Exact equality without -Wcompare-reals.
     pure logical function same(x, y)

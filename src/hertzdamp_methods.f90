@@ -83,9 +83,6 @@ contains
                 res%z_max = 0.0_wp
                 res%tau_max = 0.0_wp
             end if
-            res%alpha = alpha
-            res%iend = iend
-            res%status = HD_NOT_SUPPORTED
         case default
             res%alpha = alpha
             res%iend = iend

@@ -27,6 +27,31 @@ check "range+force exit 0" test "$RC" -eq 0
 check "range gives 6 rows" test "$(wc -l <"$OUT")" -eq 7
 check "force rows all ok" test "$(grep -c ',ok$' "$OUT")" -eq 6
 
+# every forward method through the same dispatch agrees with rk45 where it is valid
+run table --format csv --alpha 0.1,0.2
+cp "$OUT" "$OUT.ref"
+for m in series pade fit compact; do
+  run table --format csv --alpha 0.1,0.2 --method $m
+  check "table --method $m exit 0" test "$RC" -eq 0
+  tolm=1e-11; [ $m = compact ] && tolm=1e-4
+  check "table --method $m agrees with rk45 to $tolm" python3 -c '
+import sys
+a = [l.split(",") for l in open(sys.argv[1]).read().splitlines()[1:]]
+b = [l.split(",") for l in open(sys.argv[2]).read().splitlines()[1:]]
+tol = float(sys.argv[3])
+assert len(a) == len(b) == 2
+for x, y in zip(a, b):
+    assert x[5] == y[5] == "ok"
+    for j in (1, 2):
+        assert abs(float(x[j]) / float(y[j]) - 1) < tol, (x, y)' "$OUT" "$OUT.ref" "$tolm"
+done
+rm -f "$OUT.ref"
+run table --format csv --method series --order 20 --alpha 0.3
+check "series --order 20 exit 0" test "$RC" -eq 0
+expect_fail 2 "series beyond its radius" table --method series --alpha 1.05
+expect_fail 2 "series with the force end" table --method series --end force
+expect_fail 2 "--order without series" table --order 3
+
 # JSON
 run table --format json --alpha 0.3,1.5
 check "json exit 0" test "$RC" -eq 0

@@ -57,6 +57,19 @@ done
 check "forward gsl-rk8pd rows present" $([ -n "$(row forward gsl-rk8pd 1e-8)" ]; echo $?)
 check "inverse iterative 1e-10 row present" $([ -n "$(row inverse iterative 1e-10)" ]; echo $?)
 
+# every method of the project and both GSL peers appear
+for n in 1 2 3 5 10 20; do
+  check "forward series N=$n row present" $([ -n "$(row forward series N=$n)" ]; echo $?)
+done
+for m in pade compact fit; do
+  check "forward $m row present" $([ -n "$(row forward $m '')" ]; echo $?)
+done
+for m in fit compact series pade; do
+  check "inverse $m row present" $([ -n "$(row inverse $m '')" ]; echo $?)
+done
+check "forward gsl-rkf45 rows present" $([ -n "$(row forward gsl-rkf45 1e-8)" ]; echo $?)
+check "throughput row present" $([ -n "$(awk -F, '$1 == "throughput"' "$tmp/out.csv")" ]; echo $?)
+
 r=$(row forward fit '')
 if [ -n "$r" ]; then
   IFS=, read -r _ _ _ ee et _ _ _ _ _ <<<"$r"

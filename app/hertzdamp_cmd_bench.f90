@@ -830,6 +830,9 @@ contains
         write (u, '(a)') 'set multiplot layout 1,2 title "hertzdamp bench: work-precision' // &
             trim(merge(' (--quick)', '          ', quick)) // '"'
         write (u, '(a)') 'set logscale xy'
+        ! fixed decades wide enough for every method (no point on the frame)
+        write (u, '(a)') 'set xrange [3:3e7]'
+        write (u, '(a)') 'set yrange [1e-16:1e2]'
         write (u, '(a)') 'set format x "10^{%L}"'
         write (u, '(a)') 'set format y "10^{%L}"'
         write (u, '(a)') 'set grid'

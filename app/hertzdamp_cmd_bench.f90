@@ -14,7 +14,7 @@ module hertzdamp_cmd_bench
     use hertzdamp_inverse, only: hertzdamp_invert
     use hertzdamp_gsl, only: hertzdamp_gsl_collide, HERTZDAMP_GSL_RKF45, HERTZDAMP_GSL_RK8PD, &
                              HERTZDAMP_GSL_OK, HERTZDAMP_GSL_NO_REBOUND, HERTZDAMP_GSL_OVERLAP, HERTZDAMP_GSL_FORCE
-    use hertzdamp_bench_timer, only: bench_case, bench_measure, wall_seconds
+    use hertzdamp_bench_timer, only: bench_case, bench_measure, wall_seconds, median
     use hertzdamp_cli, only: cli_args, cli_buffer, parse_args, parse_choice, fail, quit, pad, EXIT_USAGE, EXIT_OK, &
                              EXIT_FAILURE
     use hertzdamp_cli_output, only: out_table, format_choices, FORMAT_TEXT, FORMAT_CSV, FORMAT_JSON
@@ -472,30 +472,11 @@ contains
             times(r) = wall_seconds() - t0
         end do
         nbad = count(c%status /= HD_OK)
-        t0 = median_of(times)
+        t0 = median(times)
         ns = 1.0e9_wp * t0 / n
         rate = n / max(t0, tiny(1.0_wp))
     end subroutine throughput
 
-    real(wp) function median_of(x)
-        real(wp), intent(in) :: x(:)
-        real(wp) :: y(size(x))
-        integer :: i, j
-        real(wp) :: v
-        y = x
-        do i = 2, size(y)
-            v = y(i)
-            j = i - 1
-            do while (j >= 1)
-                if (y(j) <= v) exit
-                y(j + 1) = y(j)
-                j = j - 1
-            end do
-            y(j + 1) = v
-        end do
-        median_of = y((size(y) + 1) / 2)
-        if (mod(size(y), 2) == 0) median_of = 0.5_wp * (y(size(y) / 2) + y(size(y) / 2 + 1))
-    end function median_of
 
     !> n uniform numbers in (0, 1) from the Park-Miller generator (reproducible everywhere).
     function lcg_uniform(seed, n) result(x)

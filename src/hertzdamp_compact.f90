@@ -23,6 +23,7 @@ module hertzdamp_compact
                                 HD_OUTSIDE_VALIDITY, HD_END_OVERLAP, HD_END_FORCE
     use hertzdamp_constants, only: hertzdamp_e1, hertzdamp_tau_c0
     use hertzdamp_fit_data
+    use hertzdamp_fit, only: hertzdamp_approx_alpha_status
     use, intrinsic :: ieee_arithmetic, only: ieee_value, ieee_positive_inf
     implicit none
     private
@@ -93,13 +94,9 @@ contains
         real(wp) :: s, lg, l
         e = 0.0_wp
         tau_c = 0.0_wp
-        status = HD_OK
-        if (iend /= HD_END_OVERLAP .and. iend /= HD_END_FORCE) then
-            status = HD_BAD_END
-        else if (.not. (abs(alpha) <= huge(alpha))) then
-            status = HD_BAD_ALPHA
-        else if (alpha < 0.0_wp) then
-            status = HD_OUTSIDE_VALIDITY
+        status = hertzdamp_approx_alpha_status(alpha, iend)
+        if (status /= HD_OK) then
+            continue
         else if (iend == HD_END_OVERLAP) then
             if (alpha >= fit_alpha_c) then
                 status = HD_NO_REBOUND

@@ -53,9 +53,24 @@ module hertzdamp_fit
     end interface
 
     public :: hertzdamp_fit_inverse, hertzdamp_fit_alpha, hertzdamp_fit_tau_c_of_e
-    public :: hertzdamp_fit_forward, hertzdamp_fit_e, hertzdamp_fit_tau_c
+    public :: hertzdamp_fit_forward, hertzdamp_fit_e, hertzdamp_fit_tau_c, hertzdamp_approx_alpha_status
 
 contains
+
+    !> Status of alpha and iend for the forward problem of the approximants (fit,
+    !> compact): HD_OK, HD_BAD_END, HD_BAD_ALPHA (not finite) or HD_OUTSIDE_VALIDITY (< 0).
+    pure elemental integer function hertzdamp_approx_alpha_status(alpha, iend) result(status)
+        real(wp), intent(in) :: alpha   !! damping parameter
+        integer, intent(in) :: iend     !! HD_END_OVERLAP or HD_END_FORCE
+        status = HD_OK
+        if (iend /= HD_END_OVERLAP .and. iend /= HD_END_FORCE) then
+            status = HD_BAD_END
+        else if (.not. (abs(alpha) <= huge(alpha))) then
+            status = HD_BAD_ALPHA
+        else if (alpha < 0.0_wp) then
+            status = HD_OUTSIDE_VALIDITY
+        end if
+    end function hertzdamp_approx_alpha_status
 
     !> Polynomial of piece `i` of a block at local variable t (Horner).
     pure real(wp) function horner(c, t) result(y)
@@ -155,13 +170,9 @@ contains
         tau_c = 0.0_wp
         zm = 0.0_wp
         tm = 0.0_wp
-        status = HD_OK
-        if (iend /= HD_END_OVERLAP .and. iend /= HD_END_FORCE) then
-            status = HD_BAD_END
-        else if (.not. (abs(alpha) <= huge(alpha))) then
-            status = HD_BAD_ALPHA
-        else if (alpha < 0.0_wp) then
-            status = HD_OUTSIDE_VALIDITY
+        status = hertzdamp_approx_alpha_status(alpha, iend)
+        if (status /= HD_OK) then
+            continue
         else if (iend == HD_END_OVERLAP) then
             if (alpha <= ov_fwd_la_x1) then
                 call locate(alpha, ov_fwd_la_x0, ov_fwd_la_scale, ov_fwd_la_np, i, t)

@@ -413,26 +413,16 @@ contains
                     end if
                 end if
                 if (th_f <= th_g .and. th_f <= 1.0_wp) then
-                    call polish(2, model, t, y, k1, h, th_f, alpha, tp, res%stats, status)
-                    res%status = status
-                    if (status == HD_OK) then
-                        res%tau_c = tp(1)
-                        res%e = -tp(3)
-                    end if
+                    call end_at_force(model, t, y, k1, h, th_f, alpha, res)
                     return
                 else if (th_g <= 1.0_wp) then
                     ! switch to the time-reversed local series for the end of contact
                     call sub_step(model, y, k1, th_g * h, alpha, yc, res%stats)
                     call finish_from_series(t + th_g * h, yc, alpha, force, kmax, res)
+                    ! force event already passed in the matched region: locate it in the step
                     if (res%status == HD_NO_CONVERGENCE .and. force) then
-                        ! force event already passed in the matched region: locate it in the step
-                        th_f = locate(2, model, cont, alpha, 0.0_wp, theta_tp, 1.0_wp)
-                        call polish(2, model, t, y, k1, h, th_f, alpha, tp, res%stats, status)
-                        res%status = status
-                        if (status == HD_OK) then
-                            res%tau_c = tp(1)
-                            res%e = -tp(3)
-                        end if
+                      call end_at_force(model, t, y, k1, h, locate(2, model, cont, alpha, 0.0_wp, theta_tp, 1.0_wp), &
+                                          alpha, res)
                     end if
                     return
                 else if (iend == HD_END_OVERLAP .and. alpha > 0.0_wp) then
@@ -457,6 +447,19 @@ contains
             h = min(hnew, hmax)
         end do
     end subroutine hertzdamp_rk45_solve
+
+    !> Contact end at the zero of the total force, located at theta of the step.
+    pure subroutine end_at_force(model, t, y, k1, h, theta, alpha, res)
+        integer, intent(in) :: model
+        real(wp), intent(in) :: t, y(2), k1(2), h, theta, alpha
+        type(hertzdamp_collision), intent(inout) :: res
+        real(wp) :: ev(3)
+        call polish(2, model, t, y, k1, h, theta, alpha, ev, res%stats, res%status)
+        if (res%status == HD_OK) then
+            res%tau_c = ev(1)
+            res%e = -ev(3)
+        end if
+    end subroutine end_at_force
 
     !> True once the state is in the invariant no-rebound region (see module header).
     pure logical function no_rebound_certified(y, alpha)

@@ -12,8 +12,11 @@ SUDO := $(shell [ "$$(id -u)" = 0 ] || echo sudo)
 
 # Optimised build of the library and the program (what users run and benchmark).
 RELEASE_FLAGS := -O3 -march=x86-64-v2 -funroll-loops -fPIC
-# Test build: warnings on, standard conformance, run-time checks that are cheap.
-TEST_FLAGS := -O2 -g -fPIC -fopenmp -Wall -Wextra -Wimplicit-interface -std=f2018 -fcheck=bounds,do,pointer -fbacktrace
+# Test build: warnings on and fatal, standard conformance, run-time checks that are
+# cheap.  -Wno-compare-reals: the exact comparisons left (x == 0 in root finders and
+# guards) are intended.  fpm hides compiler output unless a build fails, so -Werror
+# is what makes a warning visible.
+TEST_FLAGS := -O2 -g -fPIC -fopenmp -Wall -Wextra -Wno-compare-reals -Werror -Wimplicit-interface -std=f2018 -fcheck=bounds,do,pointer -fbacktrace
 TEST_LINK := -fopenmp
 
 .PHONY: all deps run test build install clean lint series-data series-source fit-data fit-source bench

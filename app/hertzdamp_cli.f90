@@ -100,6 +100,7 @@ contains
         i = first
         do while (i <= n)
             a = get_arg(i)
+            v = ''
             if (len(a) >= 2) then
                 if (a(1:2) == '--') then
                     j = index(a, '=')

@@ -209,6 +209,8 @@ contains
         type(out_table) :: t
         type(cli_buffer) :: figs
 
+        plot_file = ''
+        terminal = ''
         if (wants_help()) then
             call print_help('bench')
             call quit(EXIT_OK)

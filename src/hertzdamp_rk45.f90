@@ -215,11 +215,11 @@ contains
             m = k - 2
             if (k >= 2) then
                 acc = ak * ser%p(m) * (1.0_wp + 0.5_wp * m)
-                if (k >= 5) acc = acc + q(k - 5) * k5
+                if (k >= 5) acc = acc + q(max(k - 5, 0)) * k5
                 ser%p(k) = -acc / (0.25_wp * (k + 2) * k)
                 if (deriv) then
                     dacc = ak * dser%p(m) * (1.0_wp + 0.5_wp * m)
-                    if (k >= 5) dacc = dacc + dq(k - 5) * k5
+                    if (k >= 5) dacc = dacc + dq(max(k - 5, 0)) * k5
                     dser%p(k) = -dacc / (0.25_wp * (k + 2) * k)
                 end if
             end if

@@ -58,7 +58,7 @@ contains
     end subroutine seen
 
     subroutine alpha_edges()
-        real(wp), allocatable :: ov(:)
+        real(wp) :: ov(10)
         real(wp), parameter :: fo(8) = [0.0_wp, 1.0e-300_wp, 1.0e-6_wp, 2.0_wp, 10.0_wp, 100.0_wp, 1.0e4_wp, 1.0e20_wp]
         type(hertzdamp_collision) :: r
         integer :: i

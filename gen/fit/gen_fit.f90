@@ -32,7 +32,7 @@ program gen_fit
     real(wp), parameter :: nu_max = 1.0e-14_wp
 
     ! variables x
-    integer, parameter :: VAR_L = 1, VAR_CBRT_L = 2, VAR_ALPHA = 3, VAR_W = 4, VAR_CBRT_ALPHA = 5, VAR_LOG_ALPHA = 6
+    integer, parameter :: VAR_L = 1, VAR_CBRT_L = 2, VAR_ALPHA = 3, VAR_W = 4, VAR_CBRT_ALPHA = 5
     character(len=*), parameter :: var_names(6) = [character(len=40) :: &
         'L = -ln e', 'L**(1/3)', 'alpha', 'w = -ln(1 - alpha/alpha_c)', 'alpha**(1/3)', 'ln alpha']
     ! quantities y
@@ -101,7 +101,8 @@ program gen_fit
     amax_fo = alpha_of_l(HD_END_FORCE, lmax_fo + log(2.0_wp))
     wmax_ov = -log(1.0_wp - amax_ov / alpha_c)
 
-    blocks = [ &
+    allocate (blocks(16))   ! explicit: allocation on assignment trips -Wuninitialized
+    blocks(:) = [ &
         block_spec('ov_inv_a', HD_END_OVERLAP, VAR_L, Q_ALPHA_OVER_L, 0.0_wp, lmax_ov, 8, 9), &
         block_spec('ov_inv_t', HD_END_OVERLAP, VAR_L, Q_TAU_C, 0.0_wp, lmax_ov, 8, 9), &
         block_spec('fo_inv_a', HD_END_FORCE, VAR_CBRT_L, Q_ALPHA_OVER_L, 0.0_wp, lmax_fo**(1.0_wp/3), 16, 9), &
@@ -120,6 +121,8 @@ program gen_fit
         block_spec('fo_fwd_ma', HD_END_FORCE, VAR_CBRT_ALPHA, Q_TAU_MAX, 0.0_wp, amax_fo**(1.0_wp/3), 16, 11) ]
 
     nb = size(blocks)
+    ilw = 0
+    itw = 0
     body = ''
     summary = ''
     do ib = 1, nb

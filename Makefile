@@ -68,6 +68,7 @@ test: deps
 # Series coefficients: the generator writes data/*.csv, the converter turns them into
 # Fortran source.  `make test` checks that both are in sync (test/sync_series.sh).
 series-data: deps
+	@$(STALE_ARCHIVES)
 	$(FPM) run hertzdamp-gen-series --flag "$(RELEASE_FLAGS)" -- data
 
 series-source:
@@ -83,6 +84,7 @@ bench: build
 # fit-data: run the generator (reference integrator at tol 1e-15 + LAPACK) -> CSV (~20 s).
 # fit-source: CSV -> Fortran module (deterministic; test/cli_sync_fit.sh checks it).
 fit-data: deps
+	@$(STALE_ARCHIVES)
 	$(FPM) run hertzdamp-gen-fit --flag "$(RELEASE_FLAGS)" -- data/fit_coefficients.csv
 
 fit-source:

@@ -16,5 +16,8 @@ if python3 tools/fit_csv_to_f90.py data/fit_coefficients.csv - | cmp -s - "$tmp"
 if grep -q '^# .*gen/fit/gen_fit.f90' data/fit_coefficients.csv && grep -q 'tolerance 1.000E-15' data/fit_coefficients.csv; then
   p=$((p + 1)); else echo "FAIL sync_fit: CSV header"; f=$((f + 1)); fi
 if grep -q 'do not edit' src/hertzdamp_fit_data.f90; then p=$((p + 1)); else echo "FAIL sync_fit: no do-not-edit note"; f=$((f + 1)); fi
+# the constants table of doc/compact.md is what tools/compact_table.py prints from the CSV
+if [ "$(python3 tools/compact_table.py data/fit_coefficients.csv | grep -cxFf - doc/compact.md)" -eq 10 ]; then
+  p=$((p + 1)); else echo "FAIL sync_fit: doc/compact.md constants differ from the CSV"; f=$((f + 1)); fi
 echo "sync_fit: $p passed, $f failed"
 [ "$f" -eq 0 ]

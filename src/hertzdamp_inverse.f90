@@ -83,7 +83,15 @@ contains
         if (present(k_phys)) then
             if (.not. (k_phys > 0.0_wp .and. k_phys <= huge(k_phys))) status = HD_BAD_KPHYS
         end if
-        if (status == HD_OK) call hertzdamp_invert_alpha(e, iend, a, tau, status, meth, tol)
+        if (status == HD_OK) then
+            if (meth == HD_METHOD_FIT) then
+                ! the hot path of DEM codes: straight to the approximant (it checks e and iend)
+                call hertzdamp_fit_inverse(e, iend, a, tau, status)
+                if (e == 1.0_wp) tau = hertzdamp_tau_c0()
+            else
+                call hertzdamp_invert_alpha(e, iend, a, tau, status, meth, tol)
+            end if
+        end if
         if (status == HD_OK) then
             ts = tc / tau
             if (min(m, u, tc) >= safe_lo .and. max(m, u, tc) <= safe_hi) then

@@ -37,8 +37,12 @@ deps: .deps-apt $(FPM) $(VENV)/bin/fortitude
 	fi
 	@touch $@
 
+# Debian's python3 needs the python3-venv package for `-m venv` (ensurepip): install
+# it only when the first attempt fails.
 $(FPM):
-	$(PYTHON) -m venv $(VENV)
+	@$(PYTHON) -m venv $(VENV) 2>/dev/null || { rm -rf $(VENV); echo "installing python3-venv"; \
+	  $(SUDO) apt-get update -qq && $(SUDO) env DEBIAN_FRONTEND=noninteractive apt-get install -y -qq python3-venv >/dev/null && \
+	  $(PYTHON) -m venv $(VENV); }
 	$(VENV)/bin/pip install -q fpm
 	@touch $@
 

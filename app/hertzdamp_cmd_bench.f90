@@ -14,6 +14,7 @@ module hertzdamp_cmd_bench
     use hertzdamp_inverse, only: hertzdamp_invert
     use hertzdamp_gsl, only: hertzdamp_gsl_collide, HERTZDAMP_GSL_RKF45, HERTZDAMP_GSL_RK8PD, &
                              HERTZDAMP_GSL_OK, HERTZDAMP_GSL_NO_REBOUND, HERTZDAMP_GSL_OVERLAP, HERTZDAMP_GSL_FORCE
+    use hertzdamp_cli_plot, only: plot_check_target, plot_run, plot_temp_name, gp_string
     use hertzdamp_bench_timer, only: bench_case, bench_measure, wall_seconds, median
     use hertzdamp_cli, only: cli_args, cli_buffer, parse_args, parse_choice, fail, quit, pad, EXIT_USAGE, EXIT_OK, &
                              EXIT_FAILURE
@@ -80,14 +81,6 @@ module hertzdamp_cmd_bench
         real(wp) :: steps = -1.0_wp, rejected = -1.0_wp, rhs = -1.0_wp  !! means per collision; < 0: n/a
     end type bench_row
 
-    interface
-        function c_rename(old, new) bind(C, name='rename') result(rc)
-            import :: c_int, c_char
-            implicit none
-            character(kind=c_char), intent(in) :: old(*), new(*)
-            integer(c_int) :: rc
-        end function c_rename
-    end interface
 
 contains
 
@@ -222,7 +215,7 @@ contains
         terminal = ''
         if (want_plot) then
             plot_file = args%get('--plot', '')
-            call check_plot_target(plot_file, terminal)
+            call plot_check_target(plot_file, terminal)
         end if
         t_start = wall_seconds()
 
@@ -724,32 +717,6 @@ contains
 
     !> Before any work: gnuplot present (else exit 4) and the target writable (else
     !> exit 2).  Chooses the terminal: pngcairo if gnuplot has it, else png.
-    subroutine check_plot_target(file, terminal)
-        character(len=*), intent(in) :: file
-        character(len=:), allocatable, intent(out) :: terminal
-        integer :: es, cs, u, ios
-        logical :: exists
-        if (len_trim(file) == 0) call fail(EXIT_USAGE, 'option --plot needs a file name')
-        es = 1
-        cs = 0
-        call execute_command_line('command -v gnuplot >/dev/null 2>&1', exitstat=es, cmdstat=cs)
-        if (cs /= 0 .or. es /= 0) call fail(EXIT_FAILURE, '--plot needs gnuplot, which was not found ' // &
-                                              '(Debian: apt-get install gnuplot-nox)')
-        es = 1
-        call execute_command_line('gnuplot -e "set terminal pngcairo" >/dev/null 2>&1', exitstat=es, cmdstat=cs)
-        terminal = 'png'
-        if (cs == 0 .and. es == 0) terminal = 'pngcairo'
-        inquire (file=file, exist=exists)
-        if (exists) then
-            ! must be a writable regular file (opening for append writes nothing)
-            open (newunit=u, file=file, status='old', action='write', position='append', iostat=ios)
-            if (ios /= 0) call fail(EXIT_USAGE, 'cannot write the plot file "' // file // '"')
-            close (u)
-        end if
-        open (newunit=u, file=file // '.tmp', status='replace', action='write', iostat=ios)
-        if (ios /= 0) call fail(EXIT_USAGE, 'cannot write the plot file "' // file // '" (directory not writable?)')
-        close (u, status='delete')
-    end subroutine check_plot_target
 
     !> Work-precision diagram: forward and inverse panels.  Data and script go to
     !> temporary files; the PNG is written to FILE.tmp and renamed into place only
@@ -758,12 +725,11 @@ contains
         type(bench_row), intent(in) :: rows(:)
         character(len=*), intent(in) :: file, terminal
         logical, intent(in) :: quick
-        character(len=:), allocatable :: tmpdir, base, dat, gp, log_file, png_tmp
+        character(len=:), allocatable :: tmpdir, base, dat, gp, png_tmp
         type(cli_buffer) :: plots
         character(len=:), allocatable :: cmd
-        integer :: u, ios, p, f, i, nblock, es, cs, blocks(2, n_families)
+        integer :: u, ios, p, f, i, nblock, blocks(2, n_families)
         integer(int64) :: cnt
-        integer(int64) :: sz
         character(len=*), parameter :: pts(n_families) = ['7 ', '5 ', '9 ', '13', '11', '3 ', '2 ', '1 ']
         character(len=*), parameter :: colors(n_families) = ['#1f77b4', '#ff7f0e', '#2ca02c', '#9467bd', &
                                                              '#8c564b', '#e377c2', '#d62728', '#7f7f7f']
@@ -774,8 +740,7 @@ contains
         base = tmpdir // '/hertzdamp_bench_' // itoa8(cnt)
         dat = base // '.dat'
         gp = base // '.gp'
-        log_file = base // '.log'
-        png_tmp = file // '.tmp'
+        png_tmp = plot_temp_name(file)
 
         open (newunit=u, file=dat, status='replace', action='write', iostat=ios)
         if (ios /= 0) call fail(EXIT_FAILURE, 'cannot write a temporary file in ' // tmpdir)
@@ -852,89 +817,13 @@ contains
         write (u, '(a)') 'set output'
         close (u)
 
-        call execute_command_line('gnuplot ' // sh_quote(gp) // ' >' // sh_quote(log_file) // ' 2>&1', &
-                                  exitstat=es, cmdstat=cs)
-        sz = -1
-        inquire (file=png_tmp, size=sz)
-        if (cs /= 0 .or. es /= 0 .or. sz <= 0) then
-            call copy_to_stderr(log_file)
-            call remove_file(dat)
-            call remove_file(gp)
-            call remove_file(log_file)
-            call remove_file(png_tmp)
-            call fail(EXIT_FAILURE, 'gnuplot failed (exit ' // itoa(es) // '): no plot written')
-        end if
-        call remove_file(dat)
-        call remove_file(gp)
-        call remove_file(log_file)
-        if (c_rename(c_str(png_tmp), c_str(file)) /= 0) then
-            call remove_file(png_tmp)
-            call fail(EXIT_FAILURE, 'cannot rename the plot into place: ' // file)
-        end if
+        call plot_run(gp, png_tmp, file, [character(len=len(dat)) :: dat])
     end subroutine make_plot
 
-    subroutine copy_to_stderr(file)
-        character(len=*), intent(in) :: file
-        integer :: u, ios
-        character(len=512) :: line
-        open (newunit=u, file=file, status='old', action='read', iostat=ios)
-        if (ios /= 0) return
-        do
-            read (u, '(a)', iostat=ios) line
-            if (ios /= 0) exit
-            write (error_unit, '(a)') 'gnuplot: ' // trim(line)
-        end do
-        close (u)
-    end subroutine copy_to_stderr
 
-    subroutine remove_file(file)
-        character(len=*), intent(in) :: file
-        integer :: u, ios
-        logical :: exists
-        inquire (file=file, exist=exists)
-        if (.not. exists) return
-        open (newunit=u, file=file, status='old', iostat=ios)
-        if (ios == 0) close (u, status='delete')
-    end subroutine remove_file
 
-    function c_str(s) result(c)
-        character(len=*), intent(in) :: s
-        character(kind=c_char) :: c(len(s) + 1)
-        integer :: i
-        do i = 1, len(s)
-            c(i) = s(i:i)
-        end do
-        c(len(s) + 1) = c_null_char
-    end function c_str
 
-    !> A POSIX shell single-quoted word.
-    function sh_quote(s) result(r)
-        character(len=*), intent(in) :: s
-        character(len=:), allocatable :: r
-        integer :: i
-        r = ''''
-        do i = 1, len(s)
-            if (s(i:i) == '''') then
-                r = r // '''\'''''
-            else
-                r = r // s(i:i)
-            end if
-        end do
-        r = r // ''''
-    end function sh_quote
 
-    !> A gnuplot single-quoted string ('' stands for one quote).
-    function gp_string(s) result(r)
-        character(len=*), intent(in) :: s
-        character(len=:), allocatable :: r
-        integer :: i
-        r = ''''
-        do i = 1, len(s)
-            if (s(i:i) == '''') r = r // ''''
-            r = r // s(i:i)
-        end do
-        r = r // ''''
-    end function gp_string
 
     function env_or(name, default) result(v)
         character(len=*), intent(in) :: name, default

@@ -3,7 +3,7 @@
 !> and exits non-zero when any check failed.  (test-drive cannot be fetched here.)
 module hertzdamp_testing
     use hertzdamp_kinds, only: hertzdamp_rk
-    use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
+    use, intrinsic :: ieee_arithmetic, only: ieee_is_finite, ieee_is_nan
     use, intrinsic :: iso_fortran_env, only: output_unit
     implicit none
     private
@@ -42,6 +42,8 @@ contains
         if (present(floor)) den = max(den, floor)
         den = max(den, tiny(1.0_wp))
         rel_err = abs(got - want) / den
+        ! NaN anywhere is the largest error there is (max() and maxval() would drop it)
+        if (ieee_is_nan(got) .or. ieee_is_nan(want)) rel_err = huge(1.0_wp)
     end function rel_err
 
     !> Record one check; a failure is printed with its label.
@@ -70,7 +72,8 @@ contains
         a = 0.0_wp
         if (present(atol)) a = atol
         ok = ieee_is_finite(got) .and. abs(got - want) <= rtol * abs(want) + a
-        if (.not. abs(got - want) > 0.0_wp) ok = .true.   ! equal, also both infinite
+        if (got == want) ok = .true.   ! equal, also both infinite (never true for a NaN)
+        if (ieee_is_nan(got) .or. ieee_is_nan(want)) ok = .false.
         call self%check(ok, label)
         if (.not. ok) write (output_unit, '(a,es24.16,a,es24.16,a,es10.2)') &
             '     got ', got, ' want ', want, ' rel ', rel_err(got, want)

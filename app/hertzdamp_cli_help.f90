@@ -96,7 +96,7 @@ module hertzdamp_cli_help
         '                 series / pade (Newton on the series / Pade formula, overlap' // nl // &
         '                 only, series alpha < 1, pade alpha <= 0.8) or iterative' // nl // &
         '                 (secant over reference-integrator solves)' // nl // &
-        '  --tol T        tolerance of --method iterative, 1e-14 <= T <= 1e-2 (default 1e-10)' // nl // &
+        '  --tol T        tolerance of --method iterative, 1e-15 <= T <= 1e-2 (default 1e-10)' // nl // &
         '  --format F     text (aligned, default), csv or json' // nl // &
         '  --help         this text' // nl // &
         '' // nl // &

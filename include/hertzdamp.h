@@ -47,7 +47,8 @@ extern "C" {
 
 /*
  * Inverse problem (adaptive collision time): the Hertz stiffness *k [N m^-3/2] and
- * linear damping *d [kg/s] that give restitution coefficient e (0 < e <= 1) and
+ * linear damping *d [kg/s] that give restitution coefficient e (1e-3 <= e <= 1 for the
+ * overlap end, 1e-4 <= e <= 1 for the force end) and
  * contact time tc [s] to a contact of effective mass m [kg] hit at speed u [m/s],
  * with contact end `end` (HD_END_OVERLAP or HD_END_FORCE).
  * On failure *k = *d = 0.

@@ -17,7 +17,7 @@ module hertzdamp_capi
 
     public :: hertzdamp_c_invert, hertzdamp_c_forward, hertzdamp_c_strerror
 
-    integer :: i_
+    integer, private :: i_   ! implied-do index of the initialisation below (never used at run time)
     !> The NUL-terminated messages of hertzdamp_message_table (the one table behind
     !> hertzdamp_message), built at compile time.  Never written to: a variable only
     !> so that `c_loc` can point into it.
@@ -34,7 +34,7 @@ contains
     !> HD_BAD_ARGUMENT.
     integer(c_int) function hertzdamp_c_invert(e, tc, m, u, iend, k, d) &
             bind(c, name='hertzdamp_invert') result(status)
-        real(c_double), value, intent(in) :: e       !! target restitution coefficient, in (0, 1]
+        real(c_double), value, intent(in) :: e       !! target restitution: [1e-3, 1] (overlap), [1e-4, 1] (force)
         real(c_double), value, intent(in) :: tc      !! target contact time [s]
         real(c_double), value, intent(in) :: m       !! effective mass [kg]
         real(c_double), value, intent(in) :: u       !! impact velocity [m/s]

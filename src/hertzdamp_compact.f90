@@ -60,7 +60,7 @@ contains
                 status = HD_BAD_RESTITUTION
                 return
             end if
-            l = -log(e)
+            l = 0.0_wp - log(e)   ! +0 at e = 1 (-log(1) is -0)
             x = l * l
             g = e**0.1_wp
             alpha = g * l / hertzdamp_e1() * (1.0_wp + fit_cov_inv_a_1 * x + fit_cov_inv_a_2 * x * x) &
@@ -72,7 +72,7 @@ contains
                 status = HD_BAD_RESTITUTION
                 return
             end if
-            l = -log(e)
+            l = 0.0_wp - log(e)   ! +0 at e = 1 (-log(1) is -0)
             s = l**(1.0_wp / 3)
             alpha = l * (1.0_wp + fit_cfo_inv_a_1 * s**2 + fit_cfo_inv_a_2 * s**3) &
                     / (hertzdamp_e1() * (1.0_wp + fit_cfo_inv_a_3 * s**2 + fit_cfo_inv_a_4 * s**3))

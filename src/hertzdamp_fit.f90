@@ -113,7 +113,7 @@ contains
                 status = HD_BAD_RESTITUTION
                 return
             end if
-            l = -log(e)
+            l = 0.0_wp - log(e)   ! +0 at e = 1 (-log(1) is -0)
             call locate(l, ov_inv_a_x0, ov_inv_a_scale, ov_inv_a_np, i, t)
             alpha = l * horner(ov_inv_a_c(:, i), t)
             tau_c = horner(ov_inv_t_c(:, i), t)
@@ -122,7 +122,7 @@ contains
                 status = HD_BAD_RESTITUTION
                 return
             end if
-            l = -log(e)
+            l = 0.0_wp - log(e)   ! +0 at e = 1 (-log(1) is -0)
             x = c_cbrt(l)
             call locate(x, fo_inv_a_x0, fo_inv_a_scale, fo_inv_a_np, i, t)
             alpha = l * horner(fo_inv_a_c(:, i), t)

@@ -24,7 +24,7 @@ contains
     !> k and d for target restitution e and contact time tc (THEORY.md section 6).
     !> On failure k = d = 0 and status names the bad argument.
     pure elemental subroutine flat_invert(e, tc, m, u, iend, k, d, status)
-        real(wp), intent(in) :: e        !! target restitution coefficient, in (0, 1]
+        real(wp), intent(in) :: e        !! target restitution coefficient: 1e-3 <= e <= 1 (overlap), 1e-4 <= e <= 1 (force)
         real(wp), intent(in) :: tc       !! target contact time [s]
         real(wp), intent(in) :: m        !! effective mass [kg]
         real(wp), intent(in) :: u        !! impact velocity [m s^-1]

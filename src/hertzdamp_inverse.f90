@@ -23,7 +23,7 @@ module hertzdamp_inverse
                                 HD_BAD_KPHYS, HD_BAD_END, HD_BAD_TOL, HD_BAD_ARGUMENT, HD_NOT_SUPPORTED, &
                                 HD_NO_CONVERGENCE, HD_NO_REBOUND, HD_OUT_OF_RANGE, HD_END_OVERLAP, HD_END_FORCE, &
                                 HD_OUTSIDE_VALIDITY
-    use hertzdamp_scaling, only: hertzdamp_safe_exp
+    use hertzdamp_scaling, only: hertzdamp_safe_exp, hertzdamp_safe_exp_or_zero
     use hertzdamp_constants, only: hertzdamp_e1, hertzdamp_tau_c0
     use hertzdamp_rk45, only: hertzdamp_collision, hertzdamp_rk45_collide
     use hertzdamp_methods, only: HD_METHOD_RK45, HD_METHOD_SERIES, HD_METHOD_PADE, HD_METHOD_COMPACT, &
@@ -31,7 +31,7 @@ module hertzdamp_inverse
     use hertzdamp_fit, only: hertzdamp_fit_inverse, hertzdamp_fit_e_min_overlap, hertzdamp_fit_e_min_force
     use hertzdamp_compact, only: hertzdamp_compact_inverse
     use hertzdamp_series, only: hertzdamp_series_eval, hertzdamp_pade_eval, HERTZDAMP_SERIES_OK, &
-                                hertzdamp_pade_alpha_max
+                                HERTZDAMP_SERIES_INACCURATE, hertzdamp_pade_alpha_max
     use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
     implicit none
     private
@@ -87,7 +87,10 @@ contains
             if (meth == HD_METHOD_FIT) then
                 ! the hot path of DEM codes: straight to the approximant (it checks e and iend)
                 call hertzdamp_fit_inverse(e, iend, a, tau, status)
-                if (e == 1.0_wp) tau = hertzdamp_tau_c0()
+                if (e == 1.0_wp .and. status == HD_OK) then
+                    a = 0.0_wp            ! exactly (the fit gives -0 there)
+                    tau = hertzdamp_tau_c0()
+                end if
             else
                 call hertzdamp_invert_alpha(e, iend, a, tau, status, meth, tol)
             end if
@@ -98,7 +101,6 @@ contains
                 ! direct path: every intermediate is a normal double here
                 k = m / (ts * ts * sqrt(ts * u))
                 d = a * m / ts
-                lk = 0.0_wp
                 if (present(k_phys)) then
                     if (k_phys <= k) then
                         bound = .true.
@@ -121,7 +123,7 @@ contains
                 end if
                 call hertzdamp_safe_exp(lts, ts, status)
                 call hertzdamp_safe_exp(lk, k, status)
-                if (a > 0.0_wp) call hertzdamp_safe_exp(log(a) + log(m) - lts, d, status)
+                if (a > 0.0_wp) call hertzdamp_safe_exp_or_zero(log(a) + log(m) - lts, d, status)
             end if
             if (status == HD_OK) then
                 if (.not. (ieee_is_finite(d) .and. d < huge(d))) status = HD_OUT_OF_RANGE
@@ -149,7 +151,7 @@ contains
         real(wp), intent(out) :: tau_c           !! dimensionless contact duration
         integer, intent(out) :: status           !! HD_OK or an error code
         integer, intent(in), optional :: method  !! HD_METHOD_FIT (default), _COMPACT, _ITERATIVE, _RK45
-        real(wp), intent(in), optional :: tol    !! iterative tolerance (default 1e-10, within [1e-14, 1e-2])
+        real(wp), intent(in), optional :: tol    !! iterative tolerance (default 1e-10, within [1e-15, 1e-2])
         real(wp) :: emin, tol_
         integer :: meth
         alpha = 0.0_wp
@@ -174,7 +176,7 @@ contains
         case (HD_METHOD_ITERATIVE, HD_METHOD_RK45)
             tol_ = hertzdamp_invert_default_tol
             if (present(tol)) tol_ = tol
-            if (.not. (tol_ >= 1.0e-14_wp .and. tol_ <= 1.0e-2_wp)) then
+            if (.not. (tol_ >= 1.0e-15_wp .and. tol_ <= 1.0e-2_wp)) then
                 status = HD_BAD_TOL
                 return
             end if
@@ -189,7 +191,7 @@ contains
             status = HD_BAD_ARGUMENT
         end select
         if (e == 1.0_wp .and. status == HD_OK) then
-            alpha = 0.0_wp
+            alpha = 0.0_wp            ! exactly: no damping
             tau_c = hertzdamp_tau_c0()
         end if
     end subroutine hertzdamp_invert_alpha
@@ -203,15 +205,18 @@ contains
         integer, intent(in) :: meth
         real(wp), intent(out) :: alpha, tau_c
         integer, intent(out) :: status
-        real(wp) :: lt, a, g, gp, gm, h, step, ee
+        real(wp) :: lt, a, g, gp, gm, h, step, ee, amax
         integer :: it
         alpha = 0.0_wp
         tau_c = hertzdamp_tau_c0()
         status = HD_OK
         lt = log(e)
         if (lt == 0.0_wp) return
-        ! start from the first-order law, inside the range where both formulas are valid
-        a = min(-lt / hertzdamp_e1(), 0.79_wp)
+        ! start from the first-order law, inside the range where the formula is valid
+        ! (series: |alpha| < 1 -- with status OK up to 0.8 -- Pade: alpha <= 0.8)
+        amax = hertzdamp_pade_alpha_max
+        if (meth == HD_METHOD_SERIES) amax = 0.999_wp
+        a = min(-lt / hertzdamp_e1(), 0.99_wp * amax)
         do it = 1, 30
             call series_ln_e(a, meth, g, tau_c, status)
             if (status /= HD_OK) exit
@@ -222,7 +227,7 @@ contains
             step = (g - lt) * (a + h - max(a - h, 0.0_wp)) / (gp - gm)
             a = a - step
             if (.not. (a >= 0.0_wp)) a = 0.0_wp
-            a = min(a, hertzdamp_pade_alpha_max)
+            a = min(a, amax)
             if (abs(step) <= 4.0_wp * epsilon(1.0_wp) * a) exit
         end do
         if (status == HD_OK) then
@@ -251,7 +256,9 @@ contains
         else
             call hertzdamp_pade_eval(a, e, tau_c, status=st)
         end if
-        status = merge(HD_OK, HD_OUTSIDE_VALIDITY, st == HERTZDAMP_SERIES_OK .and. e > 0.0_wp)
+        ! the series is usable (as in the forward problem) up to |alpha| < 1
+        status = merge(HD_OK, HD_OUTSIDE_VALIDITY, (st == HERTZDAMP_SERIES_OK .or. &
+                       (meth == HD_METHOD_SERIES .and. st == HERTZDAMP_SERIES_INACCURATE)) .and. e > 0.0_wp)
         lne = 0.0_wp
         if (status == HD_OK) lne = log(e)
     end subroutine series_ln_e

@@ -18,7 +18,7 @@
 subroutine hertzdamp_invert(e, tc, m, u, iend, k, d, ierr)
     use hertzdamp_flat, only: flat_invert
     implicit none
-    double precision, intent(in) :: e     !! target restitution coefficient, in (0, 1]
+    double precision, intent(in) :: e     !! target restitution coefficient: 1e-3 <= e <= 1 (overlap), 1e-4 <= e <= 1 (force)
     double precision, intent(in) :: tc    !! target contact time [s]
     double precision, intent(in) :: m     !! effective mass [kg]
     double precision, intent(in) :: u     !! impact velocity [m/s]

@@ -72,6 +72,8 @@ contains
             select case (st)
             case (HERTZDAMP_SERIES_OK, HERTZDAMP_SERIES_INACCURATE)
                 res%status = HD_OK
+                ! a truncated series far from alpha = 0 can give a meaningless value
+                if (.not. (res%e > 0.0_wp .and. res%tau_c > 0.0_wp)) res%status = HD_OUTSIDE_VALIDITY
             case (HERTZDAMP_SERIES_BAD_ORDER)
                 res%status = HD_BAD_ORDER
             case default
@@ -116,7 +118,11 @@ contains
         if (status /= HD_OK) return
         r = hertzdamp_forward_alpha(alpha, iend, method, tol, order)
         status = r%status
-        if (status /= HD_OK .and. status /= HD_NO_REBOUND) return
+        if (status /= HD_OK .and. status /= HD_NO_REBOUND) then
+            alpha = 0.0_wp
+            tstar = 0.0_wp
+            return
+        end if
         e = r%e
         tc = tstar * r%tau_c
         zeta_max = u * tstar * r%z_max
@@ -125,6 +131,8 @@ contains
             e = 0.0_wp
             tc = 0.0_wp
             zeta_max = 0.0_wp
+            alpha = 0.0_wp
+            tstar = 0.0_wp
         end if
     end subroutine hertzdamp_forward_dim
 

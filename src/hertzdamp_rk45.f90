@@ -33,7 +33,7 @@ module hertzdamp_rk45
 
     integer, parameter :: wp = hertzdamp_rk
 
-    !> Default tolerance of the reference integrator (relative; absolute is 1e-3 of it).
+    !> Default tolerance of the reference integrator (relative; the absolute one is 1e-30 of it).
     real(wp), parameter, public :: hertzdamp_rk45_default_tol = 1.0e-13_wp
     !> Smallest alpha accepted for the overlap definition (energy-injecting contacts).
     real(wp), parameter, public :: hertzdamp_alpha_min = -10.0_wp
@@ -691,6 +691,11 @@ contains
         type(hertzdamp_rk45_options) :: opts
         w = 1.0e-11_wp
         if (present(tol)) w = tol
+        alpha_c = 0.0_wp
+        if (.not. (w >= 1.0e-14_wp .and. w <= 0.1_wp)) then
+            status = HD_BAD_TOL     ! (a width below round-off would never end the bisection)
+            return
+        end if
         call hertzdamp_rk45_tolerances(1.0e-13_wp, opts)
         lo = 1.0_wp
         hi = 1.25_wp

@@ -20,7 +20,8 @@ module hertzdamp_scaling
     real(wp), parameter :: log_huge = log(huge(1.0_wp)) - 1.0_wp
     real(wp), parameter :: log_tiny = log(tiny(1.0_wp)) + 1.0_wp
 
-    public :: hertzdamp_reduce, hertzdamp_expand, hertzdamp_check_positive, hertzdamp_safe_exp
+    public :: hertzdamp_reduce, hertzdamp_expand, hertzdamp_check_positive, hertzdamp_safe_exp, &
+              hertzdamp_safe_exp_or_zero
 
 contains
 
@@ -50,6 +51,18 @@ contains
         end if
     end subroutine hertzdamp_safe_exp
 
+    !> exp(x) like hertzdamp_safe_exp, but a result below the normal range is 0 (not an
+    !> error): for quantities where 0 is a valid answer (alpha, d: no damping).
+    pure elemental subroutine hertzdamp_safe_exp_or_zero(x, y, status)
+        real(wp), intent(in) :: x        !! logarithm of the result
+        real(wp), intent(out) :: y       !! exp(x), 0 on underflow or failure
+        integer, intent(inout) :: status !! set to HD_OUT_OF_RANGE when exp(x) overflows
+        y = 0.0_wp
+        if (status /= HD_OK) return
+        if (x < log_tiny) return
+        call hertzdamp_safe_exp(x, y, status)
+    end subroutine hertzdamp_safe_exp_or_zero
+
     !> From dimensional inputs to the similarity parameters: alpha and t* [s].
     pure elemental subroutine hertzdamp_reduce(k, d, m, u, alpha, tstar, status)
         real(wp), intent(in) :: k        !! Hertz stiffness [N m^-3/2]
@@ -75,7 +88,7 @@ contains
         if (status /= HD_OK) return
         ltstar = 0.4_wp * log(m) - 0.4_wp * log(k) - 0.2_wp * log(u)
         call hertzdamp_safe_exp(ltstar, tstar, status)
-        if (d > 0.0_wp) call hertzdamp_safe_exp(log(d) + ltstar - log(m), alpha, status)
+        if (d > 0.0_wp) call hertzdamp_safe_exp_or_zero(log(d) + ltstar - log(m), alpha, status)
         if (status /= HD_OK) then
             alpha = 0.0_wp
             tstar = 0.0_wp
@@ -105,7 +118,7 @@ contains
         end if
         if (status /= HD_OK) return
         call hertzdamp_safe_exp(log(m) - 2.5_wp * log(tstar) - 0.5_wp * log(u), k, status)
-        if (alpha > 0.0_wp) call hertzdamp_safe_exp(log(alpha) + log(m) - log(tstar), d, status)
+        if (alpha > 0.0_wp) call hertzdamp_safe_exp_or_zero(log(alpha) + log(m) - log(tstar), d, status)
         if (status /= HD_OK) then
             k = 0.0_wp
             d = 0.0_wp

@@ -219,6 +219,28 @@ contains
         end do
         call hertzdamp_invert(0.5_wp, 1.0e-4_wp, 1.0_wp, 1.0_wp, 7, k, d, st)
         call s%check(st == HD_BAD_END, 'invert: bad end named')
+        call review_fixes()
     end subroutine bad_arguments
+
+    !> Cases found in review: each once gave a wrong answer or hung.
+    subroutine review_fixes()
+        real(wp) :: ac, k, d, a, ts, e, tc, zm
+        integer :: st
+        type(hertzdamp_collision) :: r
+        call hertzdamp_alpha_c(ac, st, tol=0.0_wp)          ! used to loop for ever
+        call s%check(st == HD_BAD_TOL, 'alpha_c: zero bisection width refused')
+        call hertzdamp_alpha_c(ac, st, tol=nan)             ! used to return 1.125 with HD_OK
+        call s%check(st == HD_BAD_TOL, 'alpha_c: NaN width refused')
+        r = hertzdamp_forward_alpha(0.7_wp, HD_END_OVERLAP, HD_METHOD_SERIES, order=1)  ! e < 0 from order 1
+        call s%check(r%status == HD_OUTSIDE_VALIDITY .and. r%e == 0.0_wp, 'series: negative e is not a result')
+        call hertzdamp_invert(1.0_wp, 1.0e-4_wp, 1.0e-3_wp, 1.0_wp, HD_END_OVERLAP, k, d, st, alpha=a)
+        call s%check(st == HD_OK .and. .not. sign(1.0_wp, a) < 0.0_wp .and. .not. sign(1.0_wp, d) < 0.0_wp, &
+                     'e = 1: alpha and d are +0, not -0')
+        call hertzdamp_reduce(1.0e10_wp, 1.0e-310_wp, 1.0_wp, 1.0_wp, a, ts, st)
+        call s%check(st == HD_OK .and. a == 0.0_wp .and. ts > 0.0_wp, 'subnormal damping: alpha underflows to 0')
+        call hertzdamp_forward_dim(1.0e10_wp, 1.0e6_wp, 1.0e-3_wp, 1.0_wp, HD_END_FORCE, HD_METHOD_FIT, a, ts, e, tc, zm, st)
+        call s%check(st /= HD_OK .and. a == 0.0_wp .and. ts == 0.0_wp .and. e == 0.0_wp, &
+                     'forward_dim: every output 0 on failure')
+    end subroutine review_fixes
 
 end program test_edges

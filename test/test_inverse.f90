@@ -143,8 +143,14 @@ contains
             call s%check(abs(ap - af) <= 1.0e-9_wp * max(af, 1.0e-3_wp), 'pade inverse agrees with fit')
             call s%check(abs(tp - tf) <= 1.0e-9_wp * tf, 'pade tau_c agrees with fit')
         end do
+        call hertzdamp_invert_alpha(0.03_wp, HD_END_OVERLAP, as, ts_, st2, method=HD_METHOD_SERIES)
+        call s%check(st2 == HD_OUTSIDE_VALIDITY .and. same(as, 0.0_wp), 'series inverse: e = 0.03 (alpha > 1) outside validity')
         call hertzdamp_invert_alpha(0.1_wp, HD_END_OVERLAP, as, ts_, st2, method=HD_METHOD_SERIES)
-        call s%check(st2 == HD_OUTSIDE_VALIDITY .and. same(as, 0.0_wp), 'series inverse: e = 0.1 outside validity')
+        call hertzdamp_invert_alpha(0.1_wp, HD_END_OVERLAP, af, tf, st1)
+        call s%check(st2 == HD_OK .and. abs(as - af) < 1.0e-2_wp * af, &
+                     'series inverse at e = 0.1 (alpha 0.86 < 1, as the forward series) within its truncation error')
+        call hertzdamp_invert_alpha(0.1_wp, HD_END_OVERLAP, ap, tp, st3, method=HD_METHOD_PADE)
+        call s%check(st3 == HD_OUTSIDE_VALIDITY, 'pade inverse: e = 0.1 (alpha > 0.8) outside validity')
         call hertzdamp_invert_alpha(0.5_wp, HD_END_FORCE, as, ts_, st2, method=HD_METHOD_PADE)
         call s%check(st2 == HD_NOT_SUPPORTED, 'pade inverse: force definition not supported')
     end subroutine series_inverse_checks

@@ -6,8 +6,10 @@
 !> and stderr gets one line.
 module hertzdamp_cli
     use hertzdamp_kinds, only: hertzdamp_rk
+    use hertzdamp_status, only: HD_OK, HD_NO_REBOUND, HD_BAD_RESTITUTION, HD_OUTSIDE_VALIDITY, HD_OUT_OF_RANGE, &
+                                HD_MAX_STEPS, HD_STEP_UNDERFLOW, HD_NO_CONVERGENCE
     use, intrinsic :: iso_fortran_env, only: output_unit, error_unit
-    use, intrinsic :: iso_c_binding, only: c_int
+    use, intrinsic :: iso_c_binding, only: c_int, c_char, c_size_t, c_long
     use, intrinsic :: ieee_arithmetic, only: ieee_is_finite, ieee_is_nan
     implicit none
     private
@@ -52,6 +54,15 @@ module hertzdamp_cli
     end type cli_buffer
 
     interface
+        !> POSIX write(2): stdout is written with it so that a failed write is seen.
+        function c_write(fd, buf, n) bind(C, name='write') result(written)
+            import :: c_int, c_char, c_size_t, c_long
+            implicit none
+            integer(c_int), value :: fd
+            character(kind=c_char), intent(in) :: buf(*)
+            integer(c_size_t), value :: n
+            integer(c_long) :: written
+        end function c_write
         subroutine c_exit(status) bind(C, name='exit')
             import :: c_int
             implicit none
@@ -60,9 +71,34 @@ module hertzdamp_cli
     end interface
 
     public :: parse_args, parse_real, parse_real_list, parse_range, parse_int, parse_choice
+    public :: exit_code_of, write_failed
     public :: fail, quit, fmt_csv, fmt_text, fmt_json, json_string, csv_join, pad
 
 contains
+
+    !> The exit code for a library status: 3 when the input is valid but has no solution
+    !> (target outside the method's range, result not representable), 4 when the
+    !> computation failed (step limit, step underflow, no convergence), 2 otherwise.
+    integer function exit_code_of(status) result(code)
+        integer, intent(in) :: status   !! a status returned by hertzdamp
+        select case (status)
+        case (HD_OK, HD_NO_REBOUND)
+            code = EXIT_OK
+        case (HD_BAD_RESTITUTION, HD_OUTSIDE_VALIDITY, HD_OUT_OF_RANGE)
+            code = EXIT_NO_SOLUTION
+        case (HD_MAX_STEPS, HD_STEP_UNDERFLOW, HD_NO_CONVERGENCE)
+            code = EXIT_FAILURE
+        case default
+            code = EXIT_USAGE
+        end select
+    end function exit_code_of
+
+    !> Stdout could not be written (a full disk, a closed pipe): one line on stderr, exit 4.
+    subroutine write_failed()
+        write (error_unit, '(a)') 'hertzdamp: cannot write the output (stdout)'
+        flush (error_unit)
+        call c_exit(int(EXIT_FAILURE, c_int))
+    end subroutine write_failed
 
     !> Print `hertzdamp: message` on stderr and exit with `code` (stdout untouched).
     subroutine fail(code, message)
@@ -341,11 +377,30 @@ contains
 
     subroutine buffer_flush(self)
         class(cli_buffer), intent(in) :: self
-        integer :: i
-        do i = 1, self%n
-            write (output_unit, '(a)') self%lines(i)%s
-        end do
+        character(kind=c_char), allocatable :: bytes(:)
+        integer :: i, j, n, pos
+        integer(c_long) :: w
         flush (output_unit)
+        n = 0
+        do i = 1, self%n
+            n = n + len(self%lines(i)%s) + 1
+        end do
+        allocate (bytes(max(n, 1)))
+        pos = 0
+        do i = 1, self%n
+            do j = 1, len(self%lines(i)%s)
+                bytes(pos + j) = self%lines(i)%s(j:j)
+            end do
+            pos = pos + len(self%lines(i)%s) + 1
+            bytes(pos) = achar(10)
+        end do
+        ! all of it through write(2), checking every call (a full disk, a closed pipe)
+        pos = 0
+        do while (pos < n)
+            w = c_write(1_c_int, bytes(pos + 1:), int(n - pos, c_size_t))
+            if (w <= 0) call write_failed()
+            pos = pos + int(w)
+        end do
     end subroutine buffer_flush
 
     !> A number with 16 significant digits for CSV; 'inf', '-inf' or 'nan' if not finite.
@@ -409,8 +464,14 @@ contains
         character(len=*), intent(in) :: s
         character(len=:), allocatable :: r
         integer :: i
+        character(len=6) :: esc
         r = '"'
         do i = 1, len(s)
+            if (iachar(s(i:i)) < 32) then
+                write (esc, '(a,z4.4)') '\u', iachar(s(i:i))   ! control characters as \u00XX
+                r = r // esc
+                cycle
+            end if
             if (s(i:i) == '"' .or. s(i:i) == '\') r = r // '\'
             r = r // s(i:i)
         end do

@@ -6,7 +6,8 @@ module hertzdamp_cmd_basic
                          hertzdamp_series_default_order, &
                          HD_OK, HD_NO_REBOUND, HD_END_OVERLAP, HD_METHOD_RK45, HD_METHOD_SERIES, HD_METHOD_PADE
     use hertzdamp_cli, only: cli_args, cli_buffer, parse_args, parse_real, parse_real_list, parse_range, &
-                             parse_choice, parse_int, fail, quit, EXIT_USAGE, EXIT_OK, EXIT_FAILURE, fmt_csv
+                             parse_choice, parse_int, fail, quit, EXIT_USAGE, EXIT_OK, EXIT_FAILURE, fmt_csv, &
+                             exit_code_of, max_list_length
     use hertzdamp_cli_output, only: out_table, format_choices
     use hertzdamp_cli_help, only: print_help, wants_help
     implicit none
@@ -44,7 +45,8 @@ contains
         type(common_opts), intent(out) :: c
         c%iend = parse_choice(args%get('--end', 'overlap'), 'overlap force', 'contact-end definition (--end)') - 1
         c%method_name = args%get('--method', 'rk45')
-        c%method = parse_choice(c%method_name, hertzdamp_method_names, 'method (--method)')
+        ! the forward methods (iterative is the inverse baseline only)
+        c%method = parse_choice(c%method_name, 'rk45 series pade compact fit', 'method (--method)')
         c%fmt = parse_choice(args%get('--format', 'text'), format_choices, 'format (--format)')
         c%tol_text = args%get('--tol', '1e-13')
         if (args%has('--tol')) then
@@ -81,6 +83,7 @@ contains
         allocate (alpha(0))
         if (args%has('--alpha')) alpha = [alpha, parse_real_list(args%get('--alpha', ''), '--alpha')]
         if (args%has('--alpha-range')) alpha = [alpha, parse_range(args%get('--alpha-range', ''), '--alpha-range')]
+        if (size(alpha) > max_list_length) call fail(EXIT_USAGE, 'too many values of alpha (at most 10000 rows)')
         if (.not. (args%has('--alpha') .or. args%has('--alpha-range'))) then
           alpha = [(0.05_wp * i, i=0, 22), 1.12_wp, 1.13_wp]
         end if
@@ -92,7 +95,7 @@ contains
         end if
         do i = 1, size(r)
             if (r(i)%status /= HD_OK .and. r(i)%status /= HD_NO_REBOUND) then
-              call fail(EXIT_USAGE, 'alpha = ' // fmt_csv(alpha(i)) // ': ' // hertzdamp_message(r(i)%status))
+              call fail(exit_code_of(r(i)%status), 'alpha = ' // fmt_csv(alpha(i)) // ': ' // hertzdamp_message(r(i)%status))
             end if
         end do
         call t%set_columns('alpha,e,tau_c,z_max,tau_max,status')
@@ -135,7 +138,7 @@ contains
         else
             call hertzdamp_forward_dim(k, d, m, u, c%iend, c%method, alpha, tstar, e, tc, zmax, status, c%tol)
         end if
-        if (status /= HD_OK .and. status /= HD_NO_REBOUND) call fail(EXIT_USAGE, hertzdamp_message(status))
+        if (status /= HD_OK .and. status /= HD_NO_REBOUND) call fail(exit_code_of(status), hertzdamp_message(status))
         call t%set_columns('alpha,t_star,e,t_c,zeta_max,status')
         call t%meta('end', hertzdamp_end_name(c%iend))
         call t%meta('method', c%method_name)

@@ -5,7 +5,7 @@ module hertzdamp_cmd_invert
                          HD_METHOD_SERIES, HD_METHOD_PADE, &
                          HD_METHOD_ITERATIVE
     use hertzdamp_cli, only: cli_args, cli_buffer, parse_args, parse_real, parse_real_list, parse_int, &
-                             parse_choice, fail, quit, fmt_csv, EXIT_USAGE, EXIT_OK, EXIT_NO_SOLUTION
+                             parse_choice, fail, quit, fmt_csv, EXIT_USAGE, EXIT_OK, exit_code_of
     use hertzdamp_cli_output, only: out_table, format_choices
     use hertzdamp_cli_help, only: print_help, wants_help
     implicit none
@@ -76,10 +76,8 @@ contains
             call hertzdamp_invert(e, tc, m, u, iend, k, d, status, alpha, tstar, tau, bound, method=method, tol=tol)
         end if
         do i = 1, size(e)
-            if (status(i) == HD_BAD_RESTITUTION .or. status(i) == HD_OUTSIDE_VALIDITY) then
-                call fail(EXIT_NO_SOLUTION, 'e = ' // fmt_csv(e(i)) // ': ' // hertzdamp_message(status(i)))
-            else if (status(i) /= HD_OK) then
-                call fail(EXIT_USAGE, 'e = ' // fmt_csv(e(i)) // ': ' // hertzdamp_message(status(i)))
+            if (status(i) /= HD_OK) then
+              call fail(exit_code_of(status(i)), 'e = ' // fmt_csv(e(i)) // ': ' // hertzdamp_message(status(i)))
             end if
         end do
         call t%set_columns('e,tc,mass,velocity,alpha,tau_c,t_star,k,d,bound_active,status')

@@ -8,16 +8,18 @@ program main
     use hertzdamp_cmd_invert, only: cmd_invert
     use hertzdamp_cmd_bench, only: cmd_bench
     implicit none
-    character(len=64) :: command
-    integer :: n
+    character(len=:), allocatable :: command
+    integer :: n, l
 
     n = command_argument_count()
     if (n == 0) then
         call print_help('')
         call quit(EXIT_OK)
     end if
+    call get_command_argument(1, length=l)
+    allocate (character(len=l) :: command)
     call get_command_argument(1, command)
-    select case (trim(command))
+    select case (command)
     case ('--help', '-h', 'help')
         call print_help('')
         call quit(EXIT_OK)
@@ -34,6 +36,6 @@ program main
     case ('scene')
         call cmd_scene()
     case default
-        call fail(EXIT_USAGE, 'unknown command "' // trim(command) // '" (see hertzdamp --help)')
+        call fail(EXIT_USAGE, 'unknown command "' // command // '" (see hertzdamp --help)')
     end select
 end program main

@@ -48,9 +48,18 @@ done
 rm -f "$OUT.ref"
 run table --format csv --method series --order 20 --alpha 0.3
 check "series --order 20 exit 0" test "$RC" -eq 0
-expect_fail 2 "series beyond its radius" table --method series --alpha 1.05
+expect_fail 3 "series beyond its radius (no solution)" table --method series --alpha 1.05
 expect_fail 2 "series with the force end" table --method series --end force
 expect_fail 2 "--order without series" table --order 3
+expect_fail 2 "iterative is not a forward method" table --method iterative
+expect_fail 2 "list and range together beyond 10000 rows" table --alpha 0.5 --alpha-range 0:1:10000
+run table --alpha "$(printf 'x%.0s' {1..100})"; check "long malformed value: exit 2" test "$RC" -eq 2
+run "table$(printf ' %.0s' {1..70})junk"; check "command name is read whole (exit 2)" test "$RC" -eq 2
+if [ -w /dev/full ]; then
+  "$BIN" table >/dev/full 2>"$ERR"; RC=$?
+  check "stdout write error: exit 4 (got $RC)" test "$RC" -eq 4
+  check "stdout write error: one line on stderr" test "$(wc -l <"$ERR")" -eq 1
+fi
 
 # JSON
 run table --format json --alpha 0.3,1.5

@@ -16,8 +16,11 @@
 !>   d = alpha m^(3/5) k_phys^(2/5) u_in^(1/5) are computed.
 !> - Force F = k zeta^(3/2) + d zeta' (repulsive when positive) while in contact.
 !>   The contact ends by the scene's definition: overlap (zeta returns to 0) or
-!>   force (F returns to 0; the contact is then released and exerts no force until
-!>   the overlap has vanished).
+!>   force (F returns to 0; the contact is then released and exerts no force).  A
+!>   released contact is closed when its overlap vanishes or when the bodies approach
+!>   again (zeta' > 0 while still overlapping, as in a slow bounce under gravity);
+!>   a renewed approach is then a new contact with its own k and d from the rule
+!>   (its impact speed is small, so the rule gets rest_speed).
 !> - The contact-start and contact-end instants fall inside a step.  The damping
 !>   force jumps there, which would make the scheme first order; both instants are
 !>   located by linear interpolation (of the overlap, or of the force) and the
@@ -608,7 +611,11 @@ contains
                 call geometry(res%contacts(c)%i, res%contacts(c)%j, x, vp, zeta, zdot, nv)
                 associate (ct => res%contacts(c))
                     if (ct%state == 2) then
-                        if (zeta <= 0.0_wp) then
+                        ! released at the force zero: closed when the overlap vanishes or
+                        ! when the bodies approach again (zeta' > 0, e.g. pulled back by
+                        ! gravity before the overlap is gone); an approach then starts a
+                        ! new contact below, with its own k and d from the rule.
+                        if (zeta <= 0.0_wp .or. zdot > 0.0_wp) then
                             call close_contact(kk)
                             cycle
                         end if

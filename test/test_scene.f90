@@ -26,6 +26,7 @@ program test_scene
     call binary_convergence(HD_END_OVERLAP)
     call binary_convergence(HD_END_FORCE)
     call drop()
+    call drop_force_end()
     call chain_and_bed()
     call invalid_scenes()
     call s%finish()
@@ -134,6 +135,26 @@ contains
         call s%check(res%energy_rise <= abs(res%energy0) / sc%steps_per_contact**2, &
                      'drop: energy never increases (beyond the 1/N^2 time-step error)')
     end subroutine drop
+
+    !> The drop scene with the force contact end: a contact released at the force zero
+    !> while the ball still overlaps the wall must not keep the wall from acting again
+    !> (slow bounces under gravity reverse before the overlap is gone).
+    subroutine drop_force_end()
+        type(hertzdamp_dem_scene) :: sc
+        type(hertzdamp_dem_result) :: res
+        real(wp) :: m, zs
+        call load('data/scenes/drop.nml', sc)
+        sc%iend = HD_END_FORCE
+        call hertzdamp_dem_run(sc, auto_method(sc), 1.0e-4_wp, res)
+        call s%check(res%status == HD_OK, 'drop, force end: run succeeds')
+        call s%check(res%left_domain == 0, 'drop, force end: the ball stays in the box')
+        call s%check(res%at_rest, 'drop, force end: the ball comes to rest')
+        call s%check(res%x_final(3, 1) > 0.0_wp, 'drop, force end: the ball stays above the wall')
+        m = hertzdamp_dem_mass(sc%mat(1)%density, sc%radius(1))
+        zs = (m * norm2(sc%g) / res%contacts(res%ncontacts)%k)**(2.0_wp / 3.0_wp)
+        call s%check_close(sc%radius(1) - res%x_final(3, 1), zs, 1.0e-3_wp, &
+                           'drop, force end: static overlap (m g/k)^(2/3)')
+    end subroutine drop_force_end
 
     subroutine chain_and_bed()
         type(hertzdamp_dem_scene) :: chain, bed

@@ -34,7 +34,7 @@ contains
     !> True when x still holds the `unset` marker.
     pure elemental logical function is_unset(x)
         real(wp), intent(in) :: x
-        is_unset = x <= 0.5_wp * unset
+        is_unset = x <= 0.5_wp * unset .and. x >= unset   ! not -Inf: a given value (rejected as non-finite)
     end function is_unset
 
     !> Read and validate the syntax of a scene file (physical validity is checked by
@@ -434,6 +434,8 @@ contains
             msg = at(first) // '&wall: point missing (3 coordinates) [m]'
         else if (any(is_unset(normal))) then
             msg = at(first) // '&wall: normal missing (3 components)'
+        else if (.not. all(abs(normal) <= huge(1.0_wp))) then
+            msg = at(first) // '&wall: normal must be finite'
         else if (.not. (norm2(normal) > 0.0_wp)) then
             msg = at(first) // '&wall: normal must not be zero'
         end if

@@ -127,6 +127,20 @@ bad "unknown material" "unknown material 't'" "$HEAD
 bad "bad contact_end" 'contact_end' "&scene dt = 1e-6, steps_per_contact = 10, end_time = 1e-4, contact_end = 'sometimes' /"
 bad "malformed value" 'line 3' "$HEAD
 &particle material = 's', radius = 1e-3x, position = 0,0,0 /"
+bad "NaN velocity" 'line 3: &particle velocity must be finite' "$HEAD
+&particle material = 's', radius = 1e-3, position = 0,0,0, velocity = 0, 0, NaN /"
+bad "Inf density" 'density must be finite' "&scene dt = 1e-6, steps_per_contact = 10, end_time = 1e-4 /
+&material name = 's', density = Inf, youngs_modulus = 2e11, poisson_ratio = 0.3, restitution = 0.9 /
+&particle material = 's', radius = 1e-3, position = 0,0,0 /"
+bad "Inf gravity" 'g must be finite' "&scene dt = 1e-6, steps_per_contact = 10, end_time = 1e-4, gravity = .true., g = 0, 0, -Inf /
+&material name = 's', density = 7800, youngs_modulus = 2e11, poisson_ratio = 0.3, restitution = 0.9 /
+&particle material = 's', radius = 1e-3, position = 0,0,0 /"
+bad "NaN wall normal" 'line 3: &wall: normal must be finite' "$HEAD
+&wall material = 's', point = 0,0,0, normal = 0,0,NaN /
+&particle material = 's', radius = 1e-3, position = 0,0,5e-3 /"
+bad "NaN dt" 'dt must be finite' "&scene dt = NaN, steps_per_contact = 10, end_time = 1e-4 /
+&material name = 's', density = 7800, youngs_modulus = 2e11, poisson_ratio = 0.3, restitution = 0.9 /
+&particle material = 's', radius = 1e-3, position = 0,0,0 /"
 expect_fail 2 "missing file argument" scene
 expect_fail 2 "nonexistent file" scene "$TMPD/nothere.nml"
 expect_fail 2 "bad method" scene $S/chain.nml --method magic

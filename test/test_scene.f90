@@ -259,6 +259,12 @@ contains
         call expect_invalid(head // nl // '&particle material = ''s'', radius = 1e-3, position = 0,0,0', &
                             'not closed', 'unterminated group')
         call expect_invalid(head, 'no &particle', 'no particles')
+        call expect_invalid(head // nl // '&particle material = ''s'', radius = 1e-3, position = 0,0,0, ' // &
+                            'velocity = 0,0,NaN /', 'line 3: &particle velocity must be finite', 'NaN velocity')
+        call expect_invalid('&scene dt = 1e-6, steps_per_contact = 10, end_time = 1e-4 /' // nl // &
+                            '&material name = ''s'', density = Inf, youngs_modulus = 2e11, poisson_ratio = 0.3, ' // &
+                            'restitution = 0.9 /' // nl // '&particle material = ''s'', radius = 1e-3, position = 0,0,0 /', &
+                            'density must be finite', 'Inf density')
         call expect_invalid(head // nl // '&wall material = ''s'', point = 0,0,0, normal = 0,0,1 /' // nl // &
                             '&particle material = ''s'', radius = 1e-3, position = 0,0,5e-4 /', 'overlaps the wall', &
                             'particle in the wall')

@@ -12,7 +12,9 @@
 !> `count` > 1 repeats a particle at position + (i-1) spacing, i = 1..count.
 !> `report` is 'restitution' or 'restitution duration'.  Each group is read with
 !> the Fortran namelist READ from its own lines, so the compiler's own message
-!> names an unknown key; this module adds the line number.  Nothing is printed:
+!> names an unknown key; this module adds the line number.  Lines longer than 1024
+!> characters and files of more than 1,000,000 lines are refused (an endless input
+!> such as /dev/zero fails after its first 1025 characters).  Nothing is printed:
 !> failures return HD_BAD_ARGUMENT and a one-line message.
 module hertzdamp_scene_io
     use hertzdamp_kinds, only: hertzdamp_rk
@@ -25,7 +27,10 @@ module hertzdamp_scene_io
     integer, parameter :: wp = hertzdamp_rk
     !> Marks a real key that the file did not set.
     real(wp), parameter :: unset = -huge(1.0_wp)
+    !> Longest line of a scene file [characters]; longer lines are refused.
     integer, parameter :: line_len = 1024
+    !> Most lines of a scene file.
+    integer, parameter :: max_lines = 1000000
 
     public :: hertzdamp_scene_read
 
@@ -44,11 +49,12 @@ contains
         type(hertzdamp_dem_scene), intent(out) :: sc           !! the scene
         integer, intent(out) :: status                         !! HD_OK or HD_BAD_ARGUMENT
         character(len=:), allocatable, intent(out) :: message  !! empty on success
-        character(len=line_len), allocatable :: lines(:)
+        character(len=line_len), allocatable :: lines(:), grown(:)
         character(len=line_len) :: buf
+        character(len=line_len + 1) :: rbuf
         character(len=256) :: iom
         character(len=32) :: gname
-        integer :: u, ios, nl, i, first, last, nscene
+        integer :: u, ios, nl, i, first, last, nscene, sz
         logical :: done
 
         status = HD_BAD_ARGUMENT
@@ -60,14 +66,38 @@ contains
             message = 'cannot open scene file ' // path // ': ' // trim(iom)
             return
         end if
-        allocate (lines(0))
+        ! lines into a buffer that doubles when full; a line longer than line_len
+        ! characters (or endless input without a newline, such as /dev/zero) is
+        ! refused after reading at most line_len characters of it
+        allocate (lines(64))
         nl = 0
         do
-            read (u, '(a)', iostat=ios) buf
-            if (ios /= 0) exit
+            read (u, '(a)', advance='no', size=sz, iostat=ios, iomsg=iom) rbuf
+            if (is_iostat_end(ios)) exit
+            if (ios == 0) then
+                close (u)
+                write (iom, '(i0)') line_len
+                message = at(nl + 1) // 'longer than ' // trim(iom) // ' characters'
+                return
+            end if
+            if (.not. is_iostat_eor(ios)) then
+                close (u)
+                message = at(nl + 1) // 'cannot read: ' // trim(iom)
+                return
+            end if
+            if (nl == max_lines) then
+                close (u)
+                write (iom, '(i0)') max_lines
+                message = 'more than ' // trim(iom) // ' lines'
+                return
+            end if
+            if (nl == size(lines)) then
+                allocate (grown(2 * nl))
+                grown(1:nl) = lines(1:nl)
+                call move_alloc(grown, lines)
+            end if
             nl = nl + 1
-            lines = [lines, buf]
-            if (nl > 1000000) exit
+            lines(nl) = rbuf(1:sz)
         end do
         close (u)
         nscene = 0

@@ -141,6 +141,11 @@ bad "NaN wall normal" 'line 3: &wall: normal must be finite' "$HEAD
 bad "NaN dt" 'dt must be finite' "&scene dt = NaN, steps_per_contact = 10, end_time = 1e-4 /
 &material name = 's', density = 7800, youngs_modulus = 2e11, poisson_ratio = 0.3, restitution = 0.9 /
 &particle material = 's', radius = 1e-3, position = 0,0,0 /"
+# endless input without a newline fails fast (the read is bounded), exit 2
+RC=0; timeout 20 "$BIN" scene /dev/zero >"$OUT" 2>"$ERR" || RC=$?
+check "/dev/zero: exit 2 within 20 s (got $RC)" test "$RC" -eq 2
+check "/dev/zero: one line on stderr naming the limit" test "$(grep -c 'longer than 1024 characters' "$ERR")" -eq 1
+check "/dev/zero: stdout empty" test ! -s "$OUT"
 expect_fail 2 "missing file argument" scene
 expect_fail 2 "nonexistent file" scene "$TMPD/nothere.nml"
 expect_fail 2 "bad method" scene $S/chain.nml --method magic

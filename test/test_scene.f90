@@ -29,6 +29,7 @@ program test_scene
     call drop_force_end()
     call chain_and_bed()
     call invalid_scenes()
+    call long_file()
     call s%finish()
 
 contains
@@ -236,6 +237,31 @@ contains
         close (u, status='delete')
     end subroutine expect_invalid
 
+    !> A scene with 5000 comment lines and a line of exactly 1024 characters reads
+    !> (the line buffer grows by doubling).
+    subroutine long_file()
+        character(len=*), parameter :: path = 'build/test_scene_long.nml'
+        type(hertzdamp_dem_scene) :: sc
+        integer :: u, k, status
+        character(len=:), allocatable :: msg
+        open (newunit=u, file=path, status='replace', action='write')
+        do k = 1, 5000
+            write (u, '(a,i0)') '! comment line ', k
+        end do
+        write (u, '(a)') '&scene dt = 1e-6, steps_per_contact = 10, end_time = 1e-4 /'
+        write (u, '(a)') '&material name = ''s'', density = 7800, youngs_modulus = 2e11, poisson_ratio = 0.3, ' // &
+            'restitution = 0.9 /'
+        write (u, '(a)') '! ' // repeat('y', 1022)
+        write (u, '(a)') '&particle material = ''s'', radius = 1e-3, position = 0,0,0 /'
+        close (u)
+        call hertzdamp_scene_read(path, sc, status, msg)
+        call s%check(status == HD_OK, '5000 comment lines and a 1024-character line: read (' // msg // ')')
+        if (status == HD_OK) call s%check(size(sc%radius) == 1 .and. sc%pline(1) == 5004, &
+                                          'long file: the particle and its line number')
+        open (newunit=u, file=path, status='old')
+        close (u, status='delete')
+    end subroutine long_file
+
     subroutine invalid_scenes()
         character(len=*), parameter :: nl = new_line('a')
         character(len=*), parameter :: head = '&scene dt = 1e-6, steps_per_contact = 10, end_time = 1e-4 /' // nl // &
@@ -259,6 +285,9 @@ contains
         call expect_invalid(head // nl // '&particle material = ''s'', radius = 1e-3, position = 0,0,0', &
                             'not closed', 'unterminated group')
         call expect_invalid(head, 'no &particle', 'no particles')
+        call expect_invalid(head // nl // '! ' // repeat('x', 1100) // nl // &
+                            '&particle material = ''s'', radius = 1e-3, position = 0,0,0 /', &
+                            'line 3: longer than 1024 characters', 'line too long')
         call expect_invalid(head // nl // '&particle material = ''s'', radius = 1e-3, position = 0,0,0, ' // &
                             'velocity = 0,0,NaN /', 'line 3: &particle velocity must be finite', 'NaN velocity')
         call expect_invalid('&scene dt = 1e-6, steps_per_contact = 10, end_time = 1e-4 /' // nl // &

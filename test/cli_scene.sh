@@ -90,9 +90,31 @@ check "plot: PNG written" python3 -c 'import sys; assert open(sys.argv[1], "rb")
 check "plot: no temporary files left" test "$(ls "$TMPD" | grep -c tmp)" -eq 0
 expect_fail 2 "plot: unwritable path" scene $S/drop.nml --plot "$TMPD/no/such/dir/x.png"
 check "plot: unwritable path leaves no file" test ! -e "$TMPD/no/such/dir/x.png"
+mkdir "$TMPD/pd"
+expect_fail 2 "plot: target is a directory" scene $S/chain.nml --plot "$TMPD/pd"
+check "plot: directory target, nothing written into it" test -z "$(ls -A "$TMPD/pd")"
+mkdir "$TMPD/ro"; chmod 555 "$TMPD/ro"
+if [ "$(id -u)" != 0 ]; then
+  expect_fail 2 "plot: unwritable directory" scene $S/chain.nml --plot "$TMPD/ro/x.png"
+fi
+check "plot: unwritable directory, no file" test ! -e "$TMPD/ro/x.png"
+chmod 755 "$TMPD/ro"
+# a name starting with '-' and one with quotes: written under their own names
+( cd "$TMPD" && "$BIN" scene "$OLDPWD/$S/chain.nml" --plot -x.png >/dev/null 2>"$ERR" ); RC=$?
+check "plot: file name starting with - (exit $RC)" test "$RC" -eq 0 -a -s "$TMPD/-x.png" -a ! -s "$ERR"
+run scene $S/chain.nml --plot "$TMPD/it's \"q\".png"
+check "plot: file name with quotes (exit $RC)" test "$RC" -eq 0 -a -s "$TMPD/it's \"q\".png"
+check "plot: no temporary files left" test "$(ls "$TMPD" | grep -c tmp)" -eq 0
+# the temporary name is never clobbered
+echo keep >"$TMPD/t.png.hertzdamp-tmp"
+expect_fail 2 "plot: temporary name in the way" scene $S/chain.nml --plot "$TMPD/t.png"
+check "plot: temporary name in the way is kept" grep -q keep "$TMPD/t.png.hertzdamp-tmp"
+rm -f "$TMPD/t.png.hertzdamp-tmp"
 PATH=/nonexistent run scene $S/chain.nml --plot "$TMPD/nognuplot.png"
+check "plot: gnuplot missing: exit 4 (got $RC)" test "$RC" -eq 4
+check "plot: gnuplot missing: stdout empty" test ! -s "$OUT"
+check "plot: gnuplot missing: one line on stderr" test "$(wc -l <"$ERR")" -eq 1
 check "plot: gnuplot missing gives a clear message" grep -q 'needs gnuplot' "$ERR"
-check "plot: gnuplot missing exits non-zero" test "$RC" -ne 0
 check "plot: gnuplot missing, no file" test ! -e "$TMPD/nognuplot.png"
 
 # invalid scenes: exit 2, one line naming the line or key, nothing on stdout, no files

@@ -100,7 +100,8 @@ fi
 check "plot: unwritable directory, no file" test ! -e "$TMPD/ro/x.png"
 chmod 755 "$TMPD/ro"
 # a name starting with '-' and one with quotes: written under their own names
-( cd "$TMPD" && "$BIN" scene "$OLDPWD/$S/chain.nml" --plot -x.png >/dev/null 2>"$ERR" ); RC=$?
+BIN_ABS=$(cd "$(dirname "$BIN")" && pwd)/$(basename "$BIN"); SCENE_ABS=$PWD/$S/chain.nml
+( cd "$TMPD" && "$BIN_ABS" scene "$SCENE_ABS" --plot -x.png >/dev/null 2>"$ERR" ); RC=$?
 check "plot: file name starting with - (exit $RC)" test "$RC" -eq 0 -a -s "$TMPD/-x.png" -a ! -s "$ERR"
 run scene $S/chain.nml --plot "$TMPD/it's \"q\".png"
 check "plot: file name with quotes (exit $RC)" test "$RC" -eq 0 -a -s "$TMPD/it's \"q\".png"
@@ -147,8 +148,12 @@ bad "overlap inside a count group" 'of this &particle group overlap' "$HEAD
 bad "unknown material" "unknown material 't'" "$HEAD
 &particle material = 't', radius = 1e-3, position = 0,0,0 /"
 bad "bad contact_end" 'contact_end' "&scene dt = 1e-6, steps_per_contact = 10, end_time = 1e-4, contact_end = 'sometimes' /"
-bad "malformed value" 'line 3' "$HEAD
+bad "malformed value" 'line 3: &particle: malformed value of radius' "$HEAD
 &particle material = 's', radius = 1e-3x, position = 0,0,0 /"
+bad "malformed value dt = abc" 'line 1: &scene: malformed value of dt' "&scene dt = abc, steps_per_contact = 10, end_time = 1e-4 /"
+bad "malformed integer" 'malformed value of steps_per_contact' "&scene dt = 1e-6, steps_per_contact = 1.5, end_time = 1e-4 /"
+bad "malformed vector" 'line 3: &particle: malformed value of position' "$HEAD
+&particle material = 's', radius = 1e-3, position = 0,0,x /"
 bad "NaN velocity" 'line 3: &particle velocity must be finite' "$HEAD
 &particle material = 's', radius = 1e-3, position = 0,0,0, velocity = 0, 0, NaN /"
 bad "Inf density" 'density must be finite' "&scene dt = 1e-6, steps_per_contact = 10, end_time = 1e-4 /

@@ -285,6 +285,10 @@ contains
         call expect_invalid(head // nl // '&particle material = ''s'', radius = 1e-3, position = 0,0,0', &
                             'not closed', 'unterminated group')
         call expect_invalid(head, 'no &particle', 'no particles')
+        call expect_invalid('&scene dt = abc, steps_per_contact = 10, end_time = 1e-4 /', &
+                            'line 1: &scene: malformed value of dt', 'malformed value (not an unknown key)')
+        call expect_invalid(head // nl // '&particle material = ''s'', radius = 1e-3x, position = 0,0,0 /', &
+                            'line 3: &particle: malformed value of radius', 'value glued to a number')
         call expect_invalid(head // nl // '! ' // repeat('x', 1100) // nl // &
                             '&particle material = ''s'', radius = 1e-3, position = 0,0,0 /', &
                             'line 3: longer than 1024 characters', 'line too long')

@@ -12,6 +12,7 @@ module hertzdamp_cmd_scene
                              EXIT_USAGE, EXIT_OK, EXIT_FAILURE, EXIT_NO_SOLUTION
     use hertzdamp_cli_output, only: out_table, format_choices, FORMAT_JSON, FORMAT_CSV
     use hertzdamp_cli_help, only: print_help, wants_help
+    use hertzdamp_cli_plot, only: plot_check_target, plot_run, plot_temp_name, gp_string
     use, intrinsic :: iso_fortran_env, only: int64
     implicit none
     private
@@ -39,7 +40,7 @@ contains
         type(hertzdamp_dem_result) :: res, res_it
         type(run_cost) :: cost, cost_it
         type(cli_buffer) :: buf
-        character(len=:), allocatable :: file, msg, plot, reason
+        character(len=:), allocatable :: file, msg, plot, reason, terminal
         integer :: fmt, mchoice, method, status, chosen, c, nsec
         real(wp) :: err(6), tol_it, t_select
         logical :: avail(6)
@@ -55,7 +56,7 @@ contains
         mchoice = parse_choice(args%get('--method', 'auto'), method_choices, 'method (--method)')
         fmt = parse_choice(args%get('--format', 'text'), format_choices, 'format (--format)')
         plot = args%get('--plot', '')
-        if (args%has('--plot')) call check_plot_target(plot)
+        if (args%has('--plot')) call plot_check_target(plot, terminal)
 
         call hertzdamp_scene_read(file, sc, status, msg)
         if (status /= HD_OK) call fail(EXIT_USAGE, file // ': ' // msg)
@@ -101,7 +102,7 @@ contains
         call report_checks(sc, res, fmt, buf, nsec)
         call report_cost(method, res, cost, res_it, cost_it, fmt, buf, nsec)
         if (fmt == FORMAT_JSON) call buf%add('}')
-        if (len(plot) > 0) call write_plot(sc, res, plot)
+        if (args%has('--plot')) call write_plot(sc, res, plot, terminal)
         call buf%flush_to_stdout()
         call quit(EXIT_OK)
     end subroutine cmd_scene
@@ -426,91 +427,63 @@ contains
 
     end subroutine report_cost
 
-    !> --plot: gnuplot must exist and the target (via its temporary name) must be
-    !> writable; both are checked before anything runs (exit 4 / exit 2).
-    subroutine check_plot_target(plot)
-        character(len=*), intent(in) :: plot
-        integer :: u, ios, ex, cs
-        character(len=256) :: iom
-        if (len(plot) == 0) call fail(EXIT_USAGE, '--plot needs a file name')
-        if (scan(plot, '"''' // achar(10) // achar(13) // '\$`') > 0) then
-            call fail(EXIT_USAGE, '--plot file name must not contain quotes, backslashes, $ or backquotes')
-        end if
-        call execute_command_line('command -v gnuplot >/dev/null 2>&1', exitstat=ex, cmdstat=cs)
-        if (cs /= 0 .or. ex /= 0) call fail(EXIT_FAILURE, '--plot needs gnuplot, which was not found on PATH')
-        open (newunit=u, file=plot // '.tmp', status='replace', action='write', iostat=ios, iomsg=iom)
-        if (ios /= 0) call fail(EXIT_USAGE, 'cannot write --plot file ' // plot // ': ' // trim(iom))
-        close (u, status='delete')
-    end subroutine check_plot_target
-
     !> Positions and velocities along the trace axis against time, for up to
-    !> max_plot_lines particles, drawn by gnuplot into plot.tmp and renamed to plot.
-    subroutine write_plot(sc, res, plot)
+    !> max_plot_lines particles: data and script in $TMPDIR (default /tmp), drawn by
+    !> gnuplot into plot_temp_name(plot) and renamed into place by plot_run.
+    subroutine write_plot(sc, res, plot, terminal)
         type(hertzdamp_dem_scene), intent(in) :: sc
         type(hertzdamp_dem_result), intent(in) :: res
-        character(len=*), intent(in) :: plot
-        character(len=:), allocatable :: dat, gp, tmp, ax
-        integer :: u, ios, i, k, np, stride, ex, cs
+        character(len=*), intent(in) :: plot      !! target PNG (checked by plot_check_target)
+        character(len=*), intent(in) :: terminal  !! pngcairo or png
+        character(len=:), allocatable :: dat, gp, ax, tmpdir
+        integer :: u, ios, i, k, np, stride, try, ln
+        integer(int64) :: cnt
         integer, allocatable :: pick(:)
         character(len=32) :: b
-        dat = plot // '.tmp.dat'
-        gp = plot // '.tmp.gp'
-        tmp = plot // '.tmp'
+        character(len=4096) :: env
+        call get_environment_variable('TMPDIR', env, length=ln, status=ios)
+        tmpdir = '/tmp'
+        if (ios == 0 .and. ln > 0) tmpdir = trim(env)
+        call system_clock(cnt)
+        ! a data file of our own: status='new' never opens someone else's file
+        do try = 1, 100
+            write (b, '(i0)') cnt + try
+            dat = tmpdir // '/hertzdamp_scene_' // trim(b) // '.dat'
+            open (newunit=u, file=dat, status='new', action='write', iostat=ios)
+            if (ios == 0) exit
+        end do
+        if (ios /= 0) call fail(EXIT_FAILURE, 'cannot write a temporary file in ' // tmpdir)
+        gp = tmpdir // '/hertzdamp_scene_' // trim(b) // '.gp'
         ax = 'xyz'(res%axis:res%axis)
         np = size(res%x_trace, 2)
         stride = max(1, (np + max_plot_lines - 1) / max_plot_lines)
         pick = [(i, i=1, np, stride)]
-        open (newunit=u, file=dat, status='replace', action='write', iostat=ios)
-        if (ios /= 0) call fail(EXIT_FAILURE, 'cannot write the plot data ' // dat)
         do k = 1, size(res%t_trace)
             write (u, '(*(es16.8))') res%t_trace(k), res%x_trace(k, pick), res%v_trace(k, pick)
         end do
         close (u)
-        open (newunit=u, file=gp, status='replace', action='write', iostat=ios)
-        if (ios /= 0) call fail(EXIT_FAILURE, 'cannot write the gnuplot script ' // gp)
-        write (u, '(a)') 'set terminal pngcairo size 1000,800 noenhanced'
-        write (u, '(a)') 'set output "' // tmp // '"'
-        write (u, '(a)') 'set multiplot layout 2,1 title "' // clean(sc%title) // '"'
+        open (newunit=u, file=gp, status='new', action='write', iostat=ios)
+        if (ios /= 0) then
+            open (newunit=u, file=dat, status='old', iostat=ios)
+            if (ios == 0) close (u, status='delete')
+            call fail(EXIT_FAILURE, 'cannot write a temporary file in ' // tmpdir)
+        end if
+        write (u, '(a)') 'set terminal ' // terminal // ' size 1000,800 noenhanced'
+        write (u, '(a)') 'set output ' // gp_string(plot_temp_name(plot))
+        write (u, '(a)') 'set multiplot layout 2,1 title ' // gp_string(sc%title)
         write (u, '(a)') 'set key off'
         write (u, '(a)') 'set grid'
         write (u, '(a)') 'set xlabel "t [s]"'
         write (u, '(a)') 'set ylabel "' // ax // ' [m]"'
         write (b, '(i0)') size(pick)
-        write (u, '(a)') 'plot for [i=2:' // trim(b) // '+1] "' // dat // '" using 1:i with lines'
+        write (u, '(a)') 'plot for [i=2:' // trim(b) // '+1] ' // gp_string(dat) // ' using 1:i with lines'
         write (u, '(a)') 'set ylabel "v_' // ax // ' [m/s]"'
-        write (u, '(a)') 'plot for [i=' // trim(b) // '+2:2*' // trim(b) // '+1] "' // dat // '" using 1:i with lines'
+        write (u, '(a)') 'plot for [i=' // trim(b) // '+2:2*' // trim(b) // '+1] ' // gp_string(dat) // &
+                         ' using 1:i with lines'
         write (u, '(a)') 'unset multiplot'
+        write (u, '(a)') 'set output'
         close (u)
-        call execute_command_line('gnuplot "' // gp // '" >/dev/null 2>&1', exitstat=ex, cmdstat=cs)
-        call remove_file(dat)
-        call remove_file(gp)
-        if (cs /= 0 .or. ex /= 0) then
-            call remove_file(tmp)
-            call fail(EXIT_FAILURE, 'gnuplot failed to draw ' // plot)
-        end if
-        call execute_command_line('mv -f "' // tmp // '" "' // plot // '"', exitstat=ex, cmdstat=cs)
-        if (cs /= 0 .or. ex /= 0) then
-            call remove_file(tmp)
-            call fail(EXIT_FAILURE, 'cannot rename the plot to ' // plot)
-        end if
+        call plot_run(gp, plot_temp_name(plot), plot, [character(len=len(dat)) :: dat])
     end subroutine write_plot
-
-    !> Text safe inside a gnuplot double-quoted string.
-    function clean(s) result(r)
-        character(len=*), intent(in) :: s
-        character(len=:), allocatable :: r
-        integer :: i
-        r = s
-        do i = 1, len(r)
-            if (r(i:i) == '"' .or. r(i:i) == '\') r(i:i) = ''''
-        end do
-    end function clean
-
-    subroutine remove_file(path)
-        character(len=*), intent(in) :: path
-        integer :: u, ios
-        open (newunit=u, file=path, status='old', iostat=ios)
-        if (ios == 0) close (u, status='delete')
-    end subroutine remove_file
 
 end module hertzdamp_cmd_scene

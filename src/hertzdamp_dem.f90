@@ -16,8 +16,11 @@
 !>   d = alpha m^(3/5) k_phys^(2/5) u_in^(1/5) are computed.
 !> - Force F = k zeta^(3/2) + d zeta' (repulsive when positive) while in contact.
 !>   The contact ends by the scene's definition: overlap (zeta returns to 0) or
-!>   force (F returns to 0; the contact is then released and exerts no force until
-!>   the overlap has vanished).
+!>   force (F returns to 0; the contact is then released and exerts no force).  A
+!>   released contact is closed when its overlap vanishes or when the bodies approach
+!>   again (zeta' > 0 while still overlapping, as in a slow bounce under gravity);
+!>   a renewed approach is then a new contact with its own k and d from the rule
+!>   (its impact speed is small, so the rule gets rest_speed).
 !> - The contact-start and contact-end instants fall inside a step.  The damping
 !>   force jumps there, which would make the scheme first order; both instants are
 !>   located by linear interpolation (of the overlap, or of the force) and the
@@ -244,6 +247,57 @@ contains
         status = HD_BAD_ARGUMENT
         message = ''
         n = size(sc%radius)
+        ! every real value finite first (NaN or Inf would reach the report)
+        if (.not. finite(sc%dt)) then
+            message = '&scene: dt must be finite'
+        else if (.not. finite(sc%end_time)) then
+            message = '&scene: end_time must be finite'
+        else if (.not. finite(sc%accuracy)) then
+            message = '&scene: accuracy must be finite'
+        else if (.not. finite(sc%rest_speed)) then
+            message = '&scene: rest_speed must be finite'
+        else if (.not. all(finite(sc%g))) then
+            message = '&scene: g must be finite'
+        else if (sc%has_domain .and. .not. all(finite(sc%domain_lo))) then
+            message = '&scene: domain_lo must be finite'
+        else if (sc%has_domain .and. .not. all(finite(sc%domain_hi))) then
+            message = '&scene: domain_hi must be finite'
+        end if
+        if (len(message) > 0) return
+        do i = 1, size(sc%mat)
+            associate (mt => sc%mat(i))
+                if (.not. finite(mt%density)) then
+                    message = 'material ' // trim(mt%name) // ': density must be finite'
+                else if (.not. finite(mt%youngs_modulus)) then
+                    message = 'material ' // trim(mt%name) // ': youngs_modulus must be finite'
+                else if (.not. finite(mt%poisson_ratio)) then
+                    message = 'material ' // trim(mt%name) // ': poisson_ratio must be finite'
+                else if (.not. finite(mt%restitution)) then
+                    message = 'material ' // trim(mt%name) // ': restitution must be finite'
+                end if
+            end associate
+            if (len(message) > 0) return
+        end do
+        do i = 1, n
+            write (b1, '(i0)') sc%pline(i)
+            if (.not. finite(sc%radius(i))) then
+                message = 'line ' // trim(b1) // ': &particle radius must be finite'
+            else if (.not. all(finite(sc%x(:, i)))) then
+                message = 'line ' // trim(b1) // ': &particle position must be finite'
+            else if (.not. all(finite(sc%v(:, i)))) then
+                message = 'line ' // trim(b1) // ': &particle velocity must be finite'
+            end if
+            if (len(message) > 0) return
+        end do
+        do w = 1, size(sc%wall)
+            write (b2, '(i0)') sc%wall(w)%line
+            if (.not. all(finite(sc%wall(w)%point))) then
+                message = 'line ' // trim(b2) // ': &wall point must be finite'
+            else if (.not. all(finite(sc%wall(w)%normal))) then
+                message = 'line ' // trim(b2) // ': &wall normal must be finite'
+            end if
+            if (len(message) > 0) return
+        end do
         if (.not. (sc%dt > 0.0_wp .and. sc%dt < huge(1.0_wp))) then
             message = '&scene: dt must be positive'
         else if (.not. (sc%end_time > 0.0_wp .and. sc%end_time < huge(1.0_wp))) then
@@ -335,6 +389,12 @@ contains
         end do
         status = HD_OK
     end subroutine hertzdamp_dem_check
+
+    !> True for a finite number (false for NaN and +-Inf).
+    pure elemental logical function finite(x)
+        real(wp), intent(in) :: x
+        finite = abs(x) <= huge(1.0_wp)
+    end function finite
 
     !> The contact rule: k and d for one contact from the target restitution e,
     !> the contact time tc = N dt (used when want_duration), effective mass m,
@@ -608,7 +668,11 @@ contains
                 call geometry(res%contacts(c)%i, res%contacts(c)%j, x, vp, zeta, zdot, nv)
                 associate (ct => res%contacts(c))
                     if (ct%state == 2) then
-                        if (zeta <= 0.0_wp) then
+                        ! released at the force zero: closed when the overlap vanishes or
+                        ! when the bodies approach again (zeta' > 0, e.g. pulled back by
+                        ! gravity before the overlap is gone); an approach then starts a
+                        ! new contact below, with its own k and d from the rule.
+                        if (zeta <= 0.0_wp .or. zdot > 0.0_wp) then
                             call close_contact(kk)
                             cycle
                         end if

@@ -12,7 +12,9 @@
 !> `count` > 1 repeats a particle at position + (i-1) spacing, i = 1..count.
 !> `report` is 'restitution' or 'restitution duration'.  Each group is read with
 !> the Fortran namelist READ from its own lines, so the compiler's own message
-!> names an unknown key; this module adds the line number.  Nothing is printed:
+!> names an unknown key; this module adds the line number.  Lines longer than 1024
+!> characters and files of more than 1,000,000 lines are refused (an endless input
+!> such as /dev/zero fails after its first 1025 characters).  Nothing is printed:
 !> failures return HD_BAD_ARGUMENT and a one-line message.
 module hertzdamp_scene_io
     use hertzdamp_kinds, only: hertzdamp_rk
@@ -25,7 +27,10 @@ module hertzdamp_scene_io
     integer, parameter :: wp = hertzdamp_rk
     !> Marks a real key that the file did not set.
     real(wp), parameter :: unset = -huge(1.0_wp)
+    !> Longest line of a scene file [characters]; longer lines are refused.
     integer, parameter :: line_len = 1024
+    !> Most lines of a scene file.
+    integer, parameter :: max_lines = 1000000
 
     public :: hertzdamp_scene_read
 
@@ -34,7 +39,7 @@ contains
     !> True when x still holds the `unset` marker.
     pure elemental logical function is_unset(x)
         real(wp), intent(in) :: x
-        is_unset = x <= 0.5_wp * unset
+        is_unset = x <= 0.5_wp * unset .and. x >= unset   ! not -Inf: a given value (rejected as non-finite)
     end function is_unset
 
     !> Read and validate the syntax of a scene file (physical validity is checked by
@@ -44,11 +49,12 @@ contains
         type(hertzdamp_dem_scene), intent(out) :: sc           !! the scene
         integer, intent(out) :: status                         !! HD_OK or HD_BAD_ARGUMENT
         character(len=:), allocatable, intent(out) :: message  !! empty on success
-        character(len=line_len), allocatable :: lines(:)
+        character(len=line_len), allocatable :: lines(:), grown(:)
         character(len=line_len) :: buf
+        character(len=line_len + 1) :: rbuf
         character(len=256) :: iom
         character(len=32) :: gname
-        integer :: u, ios, nl, i, first, last, nscene
+        integer :: u, ios, nl, i, first, last, nscene, sz
         logical :: done
 
         status = HD_BAD_ARGUMENT
@@ -60,14 +66,38 @@ contains
             message = 'cannot open scene file ' // path // ': ' // trim(iom)
             return
         end if
-        allocate (lines(0))
+        ! lines into a buffer that doubles when full; a line longer than line_len
+        ! characters (or endless input without a newline, such as /dev/zero) is
+        ! refused after reading at most line_len characters of it
+        allocate (lines(64))
         nl = 0
         do
-            read (u, '(a)', iostat=ios) buf
-            if (ios /= 0) exit
+            read (u, '(a)', advance='no', size=sz, iostat=ios, iomsg=iom) rbuf
+            if (is_iostat_end(ios)) exit
+            if (ios == 0) then
+                close (u)
+                write (iom, '(i0)') line_len
+                message = at(nl + 1) // 'longer than ' // trim(iom) // ' characters'
+                return
+            end if
+            if (.not. is_iostat_eor(ios)) then
+                close (u)
+                message = at(nl + 1) // 'cannot read: ' // trim(iom)
+                return
+            end if
+            if (nl == max_lines) then
+                close (u)
+                write (iom, '(i0)') max_lines
+                message = 'more than ' // trim(iom) // ' lines'
+                return
+            end if
+            if (nl == size(lines)) then
+                allocate (grown(2 * nl))
+                grown(1:nl) = lines(1:nl)
+                call move_alloc(grown, lines)
+            end if
             nl = nl + 1
-            lines = [lines, buf]
-            if (nl > 1000000) exit
+            lines(nl) = rbuf(1:sz)
         end do
         close (u)
         nscene = 0
@@ -180,27 +210,119 @@ contains
         character(len=*), intent(in) :: lines(:), group, iom
         integer, intent(in) :: first
         character(len=:), allocatable :: msg
-        integer :: k, p, q, line
-        character(len=:), allocatable :: key, low
+        integer :: k, p, q, line, kind, from
+        character(len=:), allocatable :: key, low, text, name
         line = first
         low = lower(iom)
-        ! gfortran: "Cannot match namelist object name <key>"
+        ! gfortran: "Cannot match namelist object name <token>".  The token is an
+        ! unknown key when it stands where a key stands (after a separator, followed
+        ! by '='); it is the rest of a malformed value when it follows '=' or is glued
+        ! to a number (dt = abc, count = 1.5, radius = 1e-3x).
         p = index(low, 'object name ')
         if (p > 0) then
             key = trim(adjustl(low(p + 12:)))
             q = scan(key, ' (=')
             if (q > 0) key = key(1:q - 1)
-            do k = 1, size(lines)
-                if (index(lower(lines(k)), key) > 0) then
-                    line = first + k - 1
-                    exit
-                end if
-            end do
-            msg = at(line) // '&' // group // ': unknown key "' // key // '"'
+            kind = 0
+            name = ''
+            if (len(key) > 0) then
+                do k = 1, size(lines)
+                    text = lower(lines(k))
+                    from = 1
+                    do
+                        q = index(text(from:), key)
+                        if (q == 0) exit
+                        q = from + q - 1
+                        call classify(text, q, q + len(key) - 1, kind, name)
+                        if (kind /= 0) exit
+                        from = q + 1
+                        if (from > len(text)) exit
+                    end do
+                    if (kind /= 0) then
+                        line = first + k - 1
+                        exit
+                    end if
+                end do
+            end if
+            select case (kind)
+            case (1)
+                msg = at(line) // '&' // group // ': unknown key "' // key // '"'
+            case (2)
+                msg = at(line) // '&' // group // ': malformed value of ' // name // ' (near "' // key // '")'
+            case default
+                msg = at(line) // '&' // group // ': unknown key or malformed value near "' // key // '"'
+            end select
+        else if (index(low, 'bad data for namelist object ') > 0) then
+            ! gfortran: "Bad data for namelist object <key>" (e.g. position = 0,0,x)
+            p = index(low, 'bad data for namelist object ')
+            key = trim(adjustl(low(p + 29:)))
+            q = scan(key, ' (')
+            if (q > 0) key = key(1:q - 1)
+            msg = at(line) // '&' // group // ': malformed value of ' // key
         else
             msg = at(line) // '&' // group // ': ' // trim(iom)
         end if
     end function nml_error
+
+    !> The token text(a:b) in a namelist line: 1 where a key stands (after a separator
+    !> or at the start, followed by '='), 2 inside a value (after '=' or glued to a
+    !> number; name = the key before the last '=' of the line), 0 neither.
+    subroutine classify(text, a, b, kind, name)
+        character(len=*), intent(in) :: text
+        integer, intent(in) :: a, b
+        integer, intent(out) :: kind
+        character(len=:), allocatable, intent(inout) :: name
+        integer :: pb, na, k, e
+        character :: cp, cn
+        kind = 0
+        if (b < len(text)) then
+            if (is_name_char(text(b + 1:b + 1))) return   ! only part of a longer word
+        end if
+        cp = ' '
+        pb = a - 1
+        do while (pb >= 1)
+            if (text(pb:pb) /= ' ') exit
+            pb = pb - 1
+        end do
+        if (pb >= 1) cp = text(pb:pb)
+        cn = ' '
+        na = b + 1
+        do while (na <= len(text))
+            if (text(na:na) /= ' ') exit
+            na = na + 1
+        end do
+        if (na <= len(text)) cn = text(na:na)
+        if (cn == '=' .and. cp /= '=' .and. (pb < 1 .or. cp == ',' .or. pb < a - 1)) then
+            kind = 1
+            return
+        end if
+        if (cp == '=' .or. (pb == a - 1 .and. (index('0123456789.+-', cp) > 0))) then
+            ! the key: the name before the last '=' at or before pb
+            e = index(text(1:max(pb, 1)), '=', back=.true.)
+            name = ''
+            if (e > 1) then
+                k = e - 1
+                do while (k >= 1)
+                    if (text(k:k) /= ' ') exit
+                    k = k - 1
+                end do
+                na = k
+                do while (k >= 1)
+                    if (.not. is_name_char(text(k:k))) exit
+                    k = k - 1
+                end do
+                if (na > k) name = text(k + 1:na)
+            end if
+            if (len(name) == 0) name = 'a key'
+            kind = 2
+        end if
+    end subroutine classify
+
+    pure logical function is_name_char(c)
+        character, intent(in) :: c
+        is_name_char = (c >= 'a' .and. c <= 'z') .or. (c >= 'A' .and. c <= 'Z') .or. (c >= '0' .and. c <= '9') &
+                       .or. c == '_'
+    end function is_name_char
 
     pure function lower(s) result(r)
         character(len=*), intent(in) :: s
@@ -434,6 +556,8 @@ contains
             msg = at(first) // '&wall: point missing (3 coordinates) [m]'
         else if (any(is_unset(normal))) then
             msg = at(first) // '&wall: normal missing (3 components)'
+        else if (.not. all(abs(normal) <= huge(1.0_wp))) then
+            msg = at(first) // '&wall: normal must be finite'
         else if (.not. (norm2(normal) > 0.0_wp)) then
             msg = at(first) // '&wall: normal must not be zero'
         end if

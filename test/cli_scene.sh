@@ -90,9 +90,32 @@ check "plot: PNG written" python3 -c 'import sys; assert open(sys.argv[1], "rb")
 check "plot: no temporary files left" test "$(ls "$TMPD" | grep -c tmp)" -eq 0
 expect_fail 2 "plot: unwritable path" scene $S/drop.nml --plot "$TMPD/no/such/dir/x.png"
 check "plot: unwritable path leaves no file" test ! -e "$TMPD/no/such/dir/x.png"
+mkdir "$TMPD/pd"
+expect_fail 2 "plot: target is a directory" scene $S/chain.nml --plot "$TMPD/pd"
+check "plot: directory target, nothing written into it" test -z "$(ls -A "$TMPD/pd")"
+mkdir "$TMPD/ro"; chmod 555 "$TMPD/ro"
+if [ "$(id -u)" != 0 ]; then
+  expect_fail 2 "plot: unwritable directory" scene $S/chain.nml --plot "$TMPD/ro/x.png"
+fi
+check "plot: unwritable directory, no file" test ! -e "$TMPD/ro/x.png"
+chmod 755 "$TMPD/ro"
+# a name starting with '-' and one with quotes: written under their own names
+BIN_ABS=$(cd "$(dirname "$BIN")" && pwd)/$(basename "$BIN"); SCENE_ABS=$PWD/$S/chain.nml
+( cd "$TMPD" && "$BIN_ABS" scene "$SCENE_ABS" --plot -x.png >/dev/null 2>"$ERR" ); RC=$?
+check "plot: file name starting with - (exit $RC)" test "$RC" -eq 0 -a -s "$TMPD/-x.png" -a ! -s "$ERR"
+run scene $S/chain.nml --plot "$TMPD/it's \"q\".png"
+check "plot: file name with quotes (exit $RC)" test "$RC" -eq 0 -a -s "$TMPD/it's \"q\".png"
+check "plot: no temporary files left" test "$(ls "$TMPD" | grep -c tmp)" -eq 0
+# the temporary name is never clobbered
+echo keep >"$TMPD/t.png.hertzdamp-tmp"
+expect_fail 2 "plot: temporary name in the way" scene $S/chain.nml --plot "$TMPD/t.png"
+check "plot: temporary name in the way is kept" grep -q keep "$TMPD/t.png.hertzdamp-tmp"
+rm -f "$TMPD/t.png.hertzdamp-tmp"
 PATH=/nonexistent run scene $S/chain.nml --plot "$TMPD/nognuplot.png"
+check "plot: gnuplot missing: exit 4 (got $RC)" test "$RC" -eq 4
+check "plot: gnuplot missing: stdout empty" test ! -s "$OUT"
+check "plot: gnuplot missing: one line on stderr" test "$(wc -l <"$ERR")" -eq 1
 check "plot: gnuplot missing gives a clear message" grep -q 'needs gnuplot' "$ERR"
-check "plot: gnuplot missing exits non-zero" test "$RC" -ne 0
 check "plot: gnuplot missing, no file" test ! -e "$TMPD/nognuplot.png"
 
 # invalid scenes: exit 2, one line naming the line or key, nothing on stdout, no files
@@ -125,8 +148,31 @@ bad "overlap inside a count group" 'of this &particle group overlap' "$HEAD
 bad "unknown material" "unknown material 't'" "$HEAD
 &particle material = 't', radius = 1e-3, position = 0,0,0 /"
 bad "bad contact_end" 'contact_end' "&scene dt = 1e-6, steps_per_contact = 10, end_time = 1e-4, contact_end = 'sometimes' /"
-bad "malformed value" 'line 3' "$HEAD
+bad "malformed value" 'line 3: &particle: malformed value of radius' "$HEAD
 &particle material = 's', radius = 1e-3x, position = 0,0,0 /"
+bad "malformed value dt = abc" 'line 1: &scene: malformed value of dt' "&scene dt = abc, steps_per_contact = 10, end_time = 1e-4 /"
+bad "malformed integer" 'malformed value of steps_per_contact' "&scene dt = 1e-6, steps_per_contact = 1.5, end_time = 1e-4 /"
+bad "malformed vector" 'line 3: &particle: malformed value of position' "$HEAD
+&particle material = 's', radius = 1e-3, position = 0,0,x /"
+bad "NaN velocity" 'line 3: &particle velocity must be finite' "$HEAD
+&particle material = 's', radius = 1e-3, position = 0,0,0, velocity = 0, 0, NaN /"
+bad "Inf density" 'density must be finite' "&scene dt = 1e-6, steps_per_contact = 10, end_time = 1e-4 /
+&material name = 's', density = Inf, youngs_modulus = 2e11, poisson_ratio = 0.3, restitution = 0.9 /
+&particle material = 's', radius = 1e-3, position = 0,0,0 /"
+bad "Inf gravity" 'g must be finite' "&scene dt = 1e-6, steps_per_contact = 10, end_time = 1e-4, gravity = .true., g = 0, 0, -Inf /
+&material name = 's', density = 7800, youngs_modulus = 2e11, poisson_ratio = 0.3, restitution = 0.9 /
+&particle material = 's', radius = 1e-3, position = 0,0,0 /"
+bad "NaN wall normal" 'line 3: &wall: normal must be finite' "$HEAD
+&wall material = 's', point = 0,0,0, normal = 0,0,NaN /
+&particle material = 's', radius = 1e-3, position = 0,0,5e-3 /"
+bad "NaN dt" 'dt must be finite' "&scene dt = NaN, steps_per_contact = 10, end_time = 1e-4 /
+&material name = 's', density = 7800, youngs_modulus = 2e11, poisson_ratio = 0.3, restitution = 0.9 /
+&particle material = 's', radius = 1e-3, position = 0,0,0 /"
+# endless input without a newline fails fast (the read is bounded), exit 2
+RC=0; timeout 20 "$BIN" scene /dev/zero >"$OUT" 2>"$ERR" || RC=$?
+check "/dev/zero: exit 2 within 20 s (got $RC)" test "$RC" -eq 2
+check "/dev/zero: one line on stderr naming the limit" test "$(grep -c 'longer than 1024 characters' "$ERR")" -eq 1
+check "/dev/zero: stdout empty" test ! -s "$OUT"
 expect_fail 2 "missing file argument" scene
 expect_fail 2 "nonexistent file" scene "$TMPD/nothere.nml"
 expect_fail 2 "bad method" scene $S/chain.nml --method magic

@@ -26,8 +26,10 @@ program test_scene
     call binary_convergence(HD_END_OVERLAP)
     call binary_convergence(HD_END_FORCE)
     call drop()
+    call drop_force_end()
     call chain_and_bed()
     call invalid_scenes()
+    call long_file()
     call s%finish()
 
 contains
@@ -135,6 +137,26 @@ contains
                      'drop: energy never increases (beyond the 1/N^2 time-step error)')
     end subroutine drop
 
+    !> The drop scene with the force contact end: a contact released at the force zero
+    !> while the ball still overlaps the wall must not keep the wall from acting again
+    !> (slow bounces under gravity reverse before the overlap is gone).
+    subroutine drop_force_end()
+        type(hertzdamp_dem_scene) :: sc
+        type(hertzdamp_dem_result) :: res
+        real(wp) :: m, zs
+        call load('data/scenes/drop.nml', sc)
+        sc%iend = HD_END_FORCE
+        call hertzdamp_dem_run(sc, auto_method(sc), 1.0e-4_wp, res)
+        call s%check(res%status == HD_OK, 'drop, force end: run succeeds')
+        call s%check(res%left_domain == 0, 'drop, force end: the ball stays in the box')
+        call s%check(res%at_rest, 'drop, force end: the ball comes to rest')
+        call s%check(res%x_final(3, 1) > 0.0_wp, 'drop, force end: the ball stays above the wall')
+        m = hertzdamp_dem_mass(sc%mat(1)%density, sc%radius(1))
+        zs = (m * norm2(sc%g) / res%contacts(res%ncontacts)%k)**(2.0_wp / 3.0_wp)
+        call s%check_close(sc%radius(1) - res%x_final(3, 1), zs, 1.0e-3_wp, &
+                           'drop, force end: static overlap (m g/k)^(2/3)')
+    end subroutine drop_force_end
+
     subroutine chain_and_bed()
         type(hertzdamp_dem_scene) :: chain, bed
         type(hertzdamp_dem_result) :: res
@@ -215,6 +237,31 @@ contains
         close (u, status='delete')
     end subroutine expect_invalid
 
+    !> A scene with 5000 comment lines and a line of exactly 1024 characters reads
+    !> (the line buffer grows by doubling).
+    subroutine long_file()
+        character(len=*), parameter :: path = 'build/test_scene_long.nml'
+        type(hertzdamp_dem_scene) :: sc
+        integer :: u, k, status
+        character(len=:), allocatable :: msg
+        open (newunit=u, file=path, status='replace', action='write')
+        do k = 1, 5000
+            write (u, '(a,i0)') '! comment line ', k
+        end do
+        write (u, '(a)') '&scene dt = 1e-6, steps_per_contact = 10, end_time = 1e-4 /'
+        write (u, '(a)') '&material name = ''s'', density = 7800, youngs_modulus = 2e11, poisson_ratio = 0.3, ' // &
+            'restitution = 0.9 /'
+        write (u, '(a)') '! ' // repeat('y', 1022)
+        write (u, '(a)') '&particle material = ''s'', radius = 1e-3, position = 0,0,0 /'
+        close (u)
+        call hertzdamp_scene_read(path, sc, status, msg)
+        call s%check(status == HD_OK, '5000 comment lines and a 1024-character line: read (' // msg // ')')
+        if (status == HD_OK) call s%check(size(sc%radius) == 1 .and. sc%pline(1) == 5004, &
+                                          'long file: the particle and its line number')
+        open (newunit=u, file=path, status='old')
+        close (u, status='delete')
+    end subroutine long_file
+
     subroutine invalid_scenes()
         character(len=*), parameter :: nl = new_line('a')
         character(len=*), parameter :: head = '&scene dt = 1e-6, steps_per_contact = 10, end_time = 1e-4 /' // nl // &
@@ -238,6 +285,19 @@ contains
         call expect_invalid(head // nl // '&particle material = ''s'', radius = 1e-3, position = 0,0,0', &
                             'not closed', 'unterminated group')
         call expect_invalid(head, 'no &particle', 'no particles')
+        call expect_invalid('&scene dt = abc, steps_per_contact = 10, end_time = 1e-4 /', &
+                            'line 1: &scene: malformed value of dt', 'malformed value (not an unknown key)')
+        call expect_invalid(head // nl // '&particle material = ''s'', radius = 1e-3x, position = 0,0,0 /', &
+                            'line 3: &particle: malformed value of radius', 'value glued to a number')
+        call expect_invalid(head // nl // '! ' // repeat('x', 1100) // nl // &
+                            '&particle material = ''s'', radius = 1e-3, position = 0,0,0 /', &
+                            'line 3: longer than 1024 characters', 'line too long')
+        call expect_invalid(head // nl // '&particle material = ''s'', radius = 1e-3, position = 0,0,0, ' // &
+                            'velocity = 0,0,NaN /', 'line 3: &particle velocity must be finite', 'NaN velocity')
+        call expect_invalid('&scene dt = 1e-6, steps_per_contact = 10, end_time = 1e-4 /' // nl // &
+                            '&material name = ''s'', density = Inf, youngs_modulus = 2e11, poisson_ratio = 0.3, ' // &
+                            'restitution = 0.9 /' // nl // '&particle material = ''s'', radius = 1e-3, position = 0,0,0 /', &
+                            'density must be finite', 'Inf density')
         call expect_invalid(head // nl // '&wall material = ''s'', point = 0,0,0, normal = 0,0,1 /' // nl // &
                             '&particle material = ''s'', radius = 1e-3, position = 0,0,5e-4 /', 'overlaps the wall', &
                             'particle in the wall')

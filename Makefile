@@ -43,11 +43,11 @@ $(FPM):
 	@$(PYTHON) -m venv $(VENV) 2>/dev/null || { rm -rf $(VENV); echo "installing python3-venv"; \
 	  $(SUDO) apt-get update -qq && $(SUDO) env DEBIAN_FRONTEND=noninteractive apt-get install -y -qq python3-venv >/dev/null && \
 	  $(PYTHON) -m venv $(VENV); }
-	$(VENV)/bin/pip install -q fpm
+	$(VENV)/bin/pip install -q fpm==0.12.0
 	@touch $@
 
 $(VENV)/bin/fortitude: $(FPM)
-	$(VENV)/bin/pip install -q fortitude-lint
+	$(VENV)/bin/pip install -q fortitude-lint==0.10.0
 	@touch $@
 
 # ---------------------------------------------------------------- build and run
@@ -99,7 +99,7 @@ install: build
 	@bash tools/install.sh "$(FPM)" "$(RELEASE_FLAGS)" "$(PREFIX)"
 
 lint: deps
-	$(VENV)/bin/fortitude check src app test gen
+	$(VENV)/bin/fortitude check src app test gen example
 
 clean:
 	rm -rf build .deps-apt

@@ -14,8 +14,8 @@
 !>     L/alpha = e1 (1 + p1 sigma^2 + p2 sigma^3)/(1 + p3 sigma^2 + p4 sigma^3), tau_c likewise.
 !> e1 and tau_c0 come from hertzdamp_constants; the constants from the generator
 !> (data/fit_coefficients.csv, `compact` rows).  Accuracy (measured on e in [0.05, 1]):
-!> see doc/compact.md.  Range accepted: inverse overlap e >= 0.01 (error grows to ~1e-2
-!> there), force e >= 0.05; forward overlap alpha < alpha_c (HD_NO_REBOUND above),
+!> see doc/compact.md.  Range accepted: inverse e >= 0.05 for both definitions (below,
+!> the overlap rational has a pole near e = 0.018); forward overlap alpha < alpha_c (HD_NO_REBOUND above),
 !> force alpha <= 2.9; outside: HD_BAD_RESTITUTION / HD_OUTSIDE_VALIDITY.
 module hertzdamp_compact
     use hertzdamp_kinds, only: hertzdamp_rk

@@ -14,7 +14,7 @@
 !>   z_max, tau_max of alpha on [0, 1.3] (turning-point quantities are analytic);
 !> - forward, force:    L/alpha, tau_c, z_max, tau_max of alpha^(1/3).
 !>
-!> Ranges: overlap e in [1e-3, 1] (alpha up to alpha(5e-4) = 1.1257 forward); force
+!> Ranges: overlap e in [1e-3, 1] (forward: alpha up to alpha(1e-5) = 1.12794); force
 !> e in [1e-4, 1] (alpha up to alpha(5e-5) = 52.5).  Overlap forward beyond the fitted
 !> range and below alpha_c: e and tau_c continue linearly in w (value and slope of
 !> the last piece; the exact asymptote is also linear in w), status HD_OK but accuracy

@@ -421,8 +421,11 @@ contains
                     call finish_from_series(t + th_g * h, yc, alpha, force, kmax, res)
                     ! force event already passed in the matched region: locate it in the step
                     if (res%status == HD_NO_CONVERGENCE .and. force) then
-                      call end_at_force(model, t, y, k1, h, locate(2, model, cont, alpha, 0.0_wp, theta_tp, 1.0_wp), &
-                                          alpha, res)
+                        ! only where the force really changes sign inside the step
+                        if (event_value(2, model, ynew, alpha, 0.0_wp) >= 0.0_wp) then
+                          call end_at_force(model, t, y, k1, h, locate(2, model, cont, alpha, 0.0_wp, theta_tp, 1.0_wp), &
+                                              alpha, res)
+                        end if
                     end if
                     return
                 else if (iend == HD_END_OVERLAP .and. alpha > 0.0_wp) then

@@ -11,13 +11,14 @@ program series_accuracy
     type(hertzdamp_collision) :: ref(npts)
     integer :: i, j, k, st
     character(len=16) :: cells(3, 2)
+    character(len=16) :: name
 
     do i = 1, npts
         alpha(i) = 0.99_wp * real(i - 1, wp) / real(npts - 1, wp)   ! |alpha| < 1 for the series
     end do
     alpha(npts) = 0.999_wp
     ref = hertzdamp_rk45_collide(alpha, tol=1.0e-14_wp)
-    print '(a)', '| method | [0, 0.3] e | [0, 0.3] tau_c | [0, 0.6] e | [0, 0.6] tau_c | [0, 1.0) e | [0, 1.0) tau_c |'
+    print '(a)', '| method | [0, 0.3] e | [0, 0.3] τ_c | [0, 0.6] e | [0, 0.6] τ_c | [0, 1.0) e | [0, 1.0) τ_c |'
     print '(a)', '|---|---|---|---|---|---|---|'
     do k = 1, size(orders)
         err = 0.0_wp
@@ -28,7 +29,8 @@ program series_accuracy
             end do
         end do
         call cellfmt(err, cells)
-        print '(a,i0,a,6(a,a),a)', '| series N=', orders(k), ' ', ('| ', trim(cells(j, 1)), ' | ', trim(cells(j, 2)), j=1, 3), ' |'
+        write (name, '(a,i0)') 'series N=', orders(k)
+        call print_row(trim(name), cells)
     end do
     err = 0.0_wp
     do i = 1, npts
@@ -40,9 +42,22 @@ program series_accuracy
     end do
     call cellfmt(err, cells)
     cells(3, :) = 'n/a (> 0.8)'
-    print '(a,6(a,a),a)', '| pade ', ('| ', trim(cells(j, 1)), ' | ', trim(cells(j, 2)), j=1, 3), ' |'
+    call print_row('Padé', cells)
 
 contains
+
+    !> One markdown row: | name | e | tau_c | e | tau_c | e | tau_c |
+    subroutine print_row(label, cells)
+        character(len=*), intent(in) :: label
+        character(len=16), intent(in) :: cells(3, 2)
+        character(len=:), allocatable :: line
+        integer :: a
+        line = '| ' // label
+        do a = 1, 3
+            line = line // ' | ' // trim(adjustl(cells(a, 1))) // ' | ' // trim(adjustl(cells(a, 2)))
+        end do
+        print '(a)', line // ' |'
+    end subroutine print_row
 
     subroutine cellfmt(err, cells)
         real(wp), intent(in) :: err(3, 2)

@@ -9,7 +9,7 @@ for ex in example_invert series_accuracy; do
   if [ $? -eq 0 ] && [ -n "$out" ]; then p=$((p + 1)); else f=$((f + 1)); echo "FAIL examples: $ex"; fi
 done
 # the series accuracy table has the seven method rows of README.md
-n=$("$fpm" run --example series_accuracy --flag "${HERTZDAMP_RELEASE_FLAGS:-}" 2>/dev/null | grep -c '^| \(series\|pade\)')
+n=$("$fpm" run --example series_accuracy --flag "${HERTZDAMP_RELEASE_FLAGS:-}" 2>/dev/null | grep -c '^| \(series\|Padé\)')
 if [ "$n" -eq 7 ]; then p=$((p + 1)); else f=$((f + 1)); echo "FAIL examples: series_accuracy rows ($n)"; fi
 echo "examples: $p passed, $f failed"
 [ "$f" -eq 0 ]

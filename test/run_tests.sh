@@ -33,8 +33,13 @@ run_one() {  # name, command...
 }
 
 mapfile -t exes < <("$fpm" test --flag "$test_flags" --link-flag "$test_link" --runner echo 2>/dev/null | grep -v '^\[' )
+# every test program in test/ must have been built and listed
+want=$(grep -l '^ *program ' test/*.f90 | wc -l)
+if [ "${#exes[@]}" -ne "$want" ]; then
+  echo "run_tests: ${#exes[@]} test programs listed by fpm, $want in test/"; failed=$((failed + 1))
+fi
 for exe in "${exes[@]}"; do
-  [ -x "$exe" ] || continue
+  if [ ! -x "$exe" ]; then echo "run_tests: $exe missing"; failed=$((failed + 1)); continue; fi
   run_one "$(basename "$exe")" "$exe"
 done
 for script in test/*.sh; do

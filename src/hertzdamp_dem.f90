@@ -45,7 +45,7 @@ module hertzdamp_dem
     use hertzdamp_kinds, only: hertzdamp_rk
     use hertzdamp_status, only: HD_OK, HD_NO_REBOUND, HD_BAD_ARGUMENT, HD_BAD_RESTITUTION, HD_END_OVERLAP, HD_END_FORCE, &
                                 hertzdamp_message
-    use hertzdamp_scaling, only: hertzdamp_expand, hertzdamp_safe_exp
+    use hertzdamp_scaling, only: hertzdamp_expand, hertzdamp_reduce
     use hertzdamp_constants, only: hertzdamp_e1, hertzdamp_tau_c0
     use hertzdamp_rk45, only: hertzdamp_collision, hertzdamp_rk45_collide
     use hertzdamp_methods, only: HD_METHOD_SERIES, HD_METHOD_PADE, HD_METHOD_COMPACT, HD_METHOD_FIT, &
@@ -415,7 +415,7 @@ contains
         real(wp), intent(out) :: tc_expected    !! contact time the parameters give [s]
         logical, intent(out) :: bound           !! k = kp
         integer, intent(out) :: status          !! HD_OK or the rule's failure
-        real(wp) :: alpha, tau, ts, kk, dd, lts
+        real(wp) :: alpha, tau, ts, kk, dd
         k = 0.0_wp
         d = 0.0_wp
         tc_expected = 0.0_wp
@@ -438,33 +438,23 @@ contains
                 bound = .true.
             end if
         else if (want_duration) then
-            if (method == HD_METHOD_ITERATIVE) then
-                call hertzdamp_invert(e, tc, m, u, iend, k, d, status, alpha=alpha, tau_c=tau, &
-                                      bound_active=bound, k_phys=kp, method=method, tol=tol)
-            else
-                call hertzdamp_invert(e, tc, m, u, iend, k, d, status, alpha=alpha, tau_c=tau, &
-                                      bound_active=bound, k_phys=kp, method=method)
-            end if
+            ! (tol matters to the iterative rule only)
+            call hertzdamp_invert(e, tc, m, u, iend, k, d, status, alpha=alpha, tau_c=tau, &
+                                  bound_active=bound, k_phys=kp, method=method, tol=tol)
             if (status /= HD_OK) return
             tc_expected = tc
         else
-            if (method == HD_METHOD_ITERATIVE) then
-                call hertzdamp_invert(e, 1.0_wp, 1.0_wp, 1.0_wp, iend, kk, dd, status, alpha=alpha, tau_c=tau, &
-                                      method=method, tol=tol)
-            else
-                call hertzdamp_invert(e, 1.0_wp, 1.0_wp, 1.0_wp, iend, kk, dd, status, alpha=alpha, tau_c=tau, &
-                                      method=method)
-            end if
+            call hertzdamp_invert(e, 1.0_wp, 1.0_wp, 1.0_wp, iend, kk, dd, status, alpha=alpha, tau_c=tau, &
+                                  method=method, tol=tol)
             if (status /= HD_OK) return
             bound = .true.
         end if
         if (bound) then
-            ! physical stiffness: t* from kp, d = alpha m / t* = alpha m^(3/5) kp^(2/5) u^(1/5)
+            ! physical stiffness: t* of kp (the reduction), then d = alpha m / t*
+            ! (= alpha m^(3/5) kp^(2/5) u^(1/5)) from the same expansion the inverse uses
+            call hertzdamp_reduce(kp, 0.0_wp, m, u, dd, ts, status)
+            if (status == HD_OK) call hertzdamp_expand(alpha, ts, m, u, kk, d, status)
             k = kp
-            lts = 0.4_wp * log(m) - 0.4_wp * log(kp) - 0.2_wp * log(u)
-            call hertzdamp_safe_exp(lts, ts, status)
-            d = 0.0_wp
-            if (status == HD_OK .and. alpha > 0.0_wp) call hertzdamp_safe_exp(log(alpha) + log(m) - lts, d, status)
             tc_expected = ts * tau
             if (status /= HD_OK) then
                 k = 0.0_wp

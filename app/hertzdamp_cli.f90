@@ -220,7 +220,7 @@ contains
     function parse_real(text, what) result(x)
         character(len=*), intent(in) :: text, what
         real(wp) :: x
-        integer :: i, n, nd, ios
+        integer :: i, n, nd, k, ios
         character(len=:), allocatable :: s
         logical :: ok
         s = trim(adjustl(text))
@@ -229,20 +229,12 @@ contains
         ok = n > 0
         if (ok) then
             if (s(1:1) == '+' .or. s(1:1) == '-') i = 2
-            nd = 0
-            do while (i <= n)
-                if (.not. is_digit(s(i:i))) exit
-                i = i + 1
-                nd = nd + 1
-            end do
+            call skip_digits(s, i, nd)
             if (i <= n) then
                 if (s(i:i) == '.') then
                     i = i + 1
-                    do while (i <= n)
-                        if (.not. is_digit(s(i:i))) exit
-                        i = i + 1
-                        nd = nd + 1
-                    end do
+                    call skip_digits(s, i, k)
+                    nd = nd + k
                 end if
             end if
             ok = nd > 0
@@ -252,12 +244,7 @@ contains
                     if (i <= n) then
                         if (s(i:i) == '+' .or. s(i:i) == '-') i = i + 1
                     end if
-                    nd = 0
-                    do while (i <= n)
-                        if (.not. is_digit(s(i:i))) exit
-                        i = i + 1
-                        nd = nd + 1
-                    end do
+                    call skip_digits(s, i, nd)
                     ok = nd > 0
                 end if
             end if
@@ -271,7 +258,20 @@ contains
         if (.not. ok) call fail(EXIT_USAGE, 'malformed number "' // text // '" for ' // what)
     end function parse_real
 
-    logical function is_digit(c)
+    !> Advance i over the decimal digits of s from position i; nd = how many.
+    pure subroutine skip_digits(s, i, nd)
+        character(len=*), intent(in) :: s
+        integer, intent(inout) :: i
+        integer, intent(out) :: nd
+        nd = 0
+        do while (i <= len(s))
+            if (.not. is_digit(s(i:i))) exit
+            i = i + 1
+            nd = nd + 1
+        end do
+    end subroutine skip_digits
+
+    pure logical function is_digit(c)
         character, intent(in) :: c
         is_digit = c >= '0' .and. c <= '9'
     end function is_digit

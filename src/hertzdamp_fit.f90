@@ -25,6 +25,7 @@ module hertzdamp_fit
     use hertzdamp_kinds, only: hertzdamp_rk
     use hertzdamp_status, only: HD_OK, HD_NO_REBOUND, HD_BAD_END, HD_BAD_ALPHA, HD_BAD_RESTITUTION, &
                                 HD_OUTSIDE_VALIDITY, HD_END_OVERLAP, HD_END_FORCE
+    use hertzdamp_constants, only: hertzdamp_tau_c0
     use hertzdamp_fit_data
     use, intrinsic :: ieee_arithmetic, only: ieee_value, ieee_positive_inf
     use, intrinsic :: iso_c_binding, only: c_double
@@ -114,6 +115,10 @@ contains
                 return
             end if
             l = 0.0_wp - log(e)   ! +0 at e = 1 (-log(1) is -0)
+            if (l == 0.0_wp) then   ! e = 1: the elastic limit, exactly
+                tau_c = hertzdamp_tau_c0()
+                return
+            end if
             call locate(l, ov_inv_a_x0, ov_inv_a_scale, ov_inv_a_np, i, t)
             alpha = l * horner(ov_inv_a_c(:, i), t)
             tau_c = horner(ov_inv_t_c(:, i), t)
@@ -123,6 +128,10 @@ contains
                 return
             end if
             l = 0.0_wp - log(e)   ! +0 at e = 1 (-log(1) is -0)
+            if (l == 0.0_wp) then   ! e = 1: the elastic limit, exactly
+                tau_c = hertzdamp_tau_c0()
+                return
+            end if
             x = c_cbrt(l)
             call locate(x, fo_inv_a_x0, fo_inv_a_scale, fo_inv_a_np, i, t)
             alpha = l * horner(fo_inv_a_c(:, i), t)

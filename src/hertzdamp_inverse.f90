@@ -87,10 +87,6 @@ contains
             if (meth == HD_METHOD_FIT) then
                 ! the hot path of DEM codes: straight to the approximant (it checks e and iend)
                 call hertzdamp_fit_inverse(e, iend, a, tau, status)
-                if (e == 1.0_wp .and. status == HD_OK) then
-                    a = 0.0_wp            ! exactly (the fit gives -0 there)
-                    tau = hertzdamp_tau_c0()
-                end if
             else
                 call hertzdamp_invert_alpha(e, iend, a, tau, status, meth, tol)
             end if
@@ -190,10 +186,6 @@ contains
         case default
             status = HD_BAD_ARGUMENT
         end select
-        if (e == 1.0_wp .and. status == HD_OK) then
-            alpha = 0.0_wp            ! exactly: no damping
-            tau_c = hertzdamp_tau_c0()
-        end if
     end subroutine hertzdamp_invert_alpha
 
     !> Invert the truncated series (default order) or its Pade summation: a few Newton

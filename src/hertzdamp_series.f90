@@ -66,6 +66,18 @@ module hertzdamp_series
 
 contains
 
+    !> Outputs of a failed evaluation: values 0, error estimates huge.
+    pure subroutine no_result(e, tau_c, z_max, tau_max, err_e, err_tau)
+        real(wp), intent(out) :: e, tau_c
+        real(wp), intent(out), optional :: z_max, tau_max, err_e, err_tau
+        e = 0.0_wp
+        tau_c = 0.0_wp
+        if (present(z_max)) z_max = 0.0_wp
+        if (present(tau_max)) tau_max = 0.0_wp
+        if (present(err_e)) err_e = huge(1.0_wp)
+        if (present(err_tau)) err_tau = huge(1.0_wp)
+    end subroutine no_result
+
     !> Truncated Taylor series at alpha = 0 of the overlap-definition results.
     !>
     !> err_e, err_tau estimate the absolute error of e and tau_c: twice the size of
@@ -100,12 +112,7 @@ contains
         end if
         if (present(status)) status = st
         if (st == HERTZDAMP_SERIES_BAD_ORDER .or. st == HERTZDAMP_SERIES_OUT_OF_RANGE) then
-            e = 0.0_wp
-            tau_c = 0.0_wp
-            if (present(z_max)) z_max = 0.0_wp
-            if (present(tau_max)) tau_max = 0.0_wp
-            if (present(err_e)) err_e = huge(1.0_wp)
-            if (present(err_tau)) err_tau = huge(1.0_wp)
+            call no_result(e, tau_c, z_max, tau_max, err_e, err_tau)
             return
         end if
 
@@ -140,12 +147,7 @@ contains
         if (.not. bad) bad = alpha < 0.0_wp .or. alpha > hertzdamp_pade_alpha_max
         if (bad) then
             if (present(status)) status = HERTZDAMP_SERIES_OUT_OF_RANGE
-            e = 0.0_wp
-            tau_c = 0.0_wp
-            if (present(z_max)) z_max = 0.0_wp
-            if (present(tau_max)) tau_max = 0.0_wp
-            if (present(err_e)) err_e = huge(1.0_wp)
-            if (present(err_tau)) err_tau = huge(1.0_wp)
+            call no_result(e, tau_c, z_max, tau_max, err_e, err_tau)
             return
         end if
         if (present(status)) status = HERTZDAMP_SERIES_OK

@@ -99,7 +99,7 @@ install: build
 	@bash tools/install.sh "$(FPM)" "$(RELEASE_FLAGS)" "$(PREFIX)"
 
 lint: deps
-	$(VENV)/bin/fortitude check src app test gen example
+	$(VENV)/bin/fortitude check src cli apps peers test gen example
 
 clean:
 	rm -rf build .deps-apt

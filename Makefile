@@ -7,7 +7,7 @@ PREFIX ?= $(CURDIR)/_install
 VENV := .venv
 FPM := $(VENV)/bin/fpm
 PYTHON ?= python3
-APT_PKGS := gfortran liblapack-dev libblas-dev libgsl-dev gnuplot-nox
+APT_PKGS := gfortran liblapack-dev libblas-dev libgsl-dev gnuplot-nox cmake pkg-config
 SUDO := $(shell [ "$$(id -u)" = 0 ] || echo sudo)
 
 # Optimised build of the library and the program (what users run and benchmark).
@@ -27,7 +27,7 @@ all: build
 deps: .deps-apt $(FPM) $(VENV)/bin/fortitude
 
 # Install only the Debian packages that are missing; a stamp keeps reruns silent.
-.deps-apt:
+.deps-apt: Makefile
 	@missing=""; for p in $(APT_PKGS); do \
 	  dpkg-query -W -f='$${Status}' $$p 2>/dev/null | grep -q "install ok installed" || missing="$$missing $$p"; \
 	done; \
@@ -95,8 +95,11 @@ fit-source:
 	$(PYTHON) tools/fit_csv_to_f90.py data/fit_coefficients.csv src/hertzdamp_fit_data.f90
 
 # ---------------------------------------------------------------- install
-install: build
-	@bash tools/install.sh "$(FPM)" "$(RELEASE_FLAGS)" "$(PREFIX)"
+# CMake builds and installs the core library (shared and static), its modules, the C
+# header, the legacy include file, pkg-config and CMake package files, the program
+# and its man page (CMakeLists.txt); tools/install.sh stages and checks first.
+install: deps
+	@bash tools/install.sh "$(abspath $(PREFIX))"
 
 lint: deps
 	$(VENV)/bin/fortitude check src cli apps peers test gen example

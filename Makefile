@@ -51,19 +51,13 @@ $(VENV)/bin/fortitude: $(FPM)
 	@touch $@
 
 # ---------------------------------------------------------------- build and run
-# fpm 0.12 sometimes recompiles an object without refreshing libhertzdamp.a: drop
-# the archives before every build so that programs never link stale code.
-STALE_ARCHIVES = rm -f build/gfortran_*/hertzdamp/libhertzdamp.a
-
 build: deps
-	@$(STALE_ARCHIVES)
 	$(FPM) build --flag "$(RELEASE_FLAGS)"
 
 run: build
 	@$(FPM) run hertzdamp --flag "$(RELEASE_FLAGS)" -- table
 
 test: deps
-	@$(STALE_ARCHIVES)
 	@$(FPM) build --tests --flag "$(TEST_FLAGS)" --link-flag "$(TEST_LINK)"
 	@$(FPM) build --flag "$(RELEASE_FLAGS)"
 	@bash test/run_tests.sh "$(FPM)" "$(TEST_FLAGS)" "$(RELEASE_FLAGS)" "$(TEST_LINK)"
@@ -72,7 +66,6 @@ test: deps
 # Series coefficients: the generator writes data/*.csv, the converter turns them into
 # Fortran source.  `make test` checks that both are in sync (test/sync_series.sh).
 series-data: deps
-	@$(STALE_ARCHIVES)
 	$(FPM) run hertzdamp-gen-series --flag "$(RELEASE_FLAGS)" -- data
 
 series-source:
@@ -88,7 +81,6 @@ bench: build
 # fit-data: run the generator (reference integrator at tol 1e-15 + LAPACK) -> CSV (~20 s).
 # fit-source: CSV -> Fortran module (deterministic; test/cli_sync_fit.sh checks it).
 fit-data: deps
-	@$(STALE_ARCHIVES)
 	$(FPM) run hertzdamp-gen-fit --flag "$(RELEASE_FLAGS)" -- data/fit_coefficients.csv
 
 fit-source:

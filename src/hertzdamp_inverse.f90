@@ -12,6 +12,13 @@
 !> relative, no iteration), the compact formula (~1e-5 on e in [0.05, 1]) or a
 !> secant iteration over reference-integrator solves (the baseline; slow).
 !>
+!> `hertzdamp_invert` is generic: scalars (or arrays of any rank, elementally) and
+!> rank-1 arrays.  Both run the fit through hertzdamp_fit_invert_n, the vectorised
+!> kernel that also serves the C and legacy entry points, so every way of calling gives
+!> the same bits; the rank-1 form runs it over whole arrays (SIMD) and takes only the
+!> contacts that need more (extreme inputs, the physical bound, errors, other methods)
+!> through the scalar path.
+!>
 !> Supported restitution: e_min <= e <= 1 with e_min = 1e-3 (overlap; e -> 0 has
 !> no finite contact time) and 1e-4 (force), for every method; outside:
 !> HD_BAD_RESTITUTION.  e = 1 gives alpha = 0, d = 0, tau_c = tau_c(0).
@@ -29,10 +36,12 @@ module hertzdamp_inverse
     use hertzdamp_methods, only: HD_METHOD_RK45, HD_METHOD_SERIES, HD_METHOD_PADE, HD_METHOD_COMPACT, &
                                  HD_METHOD_FIT, HD_METHOD_ITERATIVE, HD_METHOD_FIRST_ORDER, hertzdamp_forward_alpha, &
                                  hertzdamp_default_accuracy
-    use hertzdamp_fit, only: hertzdamp_fit_inverse, hertzdamp_fit_e_min_overlap, hertzdamp_fit_e_min_force
-    use hertzdamp_compact, only: hertzdamp_compact_inverse
+    use hertzdamp_fit, only: hertzdamp_fit_inverse, hertzdamp_fit_invert, hertzdamp_fit_invert_n, &
+                             hertzdamp_fit_e_min_overlap, &
+                             hertzdamp_fit_e_min_force
+    use hertzdamp_compact, only: hertzdamp_compact_inverse, hertzdamp_compact_e_min_overlap, &
+                                 hertzdamp_compact_e_min_force
     use hertzdamp_series, only: hertzdamp_pade_alpha_max
-    use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
     implicit none
     private
 
@@ -42,14 +51,23 @@ module hertzdamp_inverse
     real(wp), parameter, public :: hertzdamp_invert_default_tol = 1.0e-10_wp
     !> Inputs m, u, T_c in [safe_lo, safe_hi] take the direct (power-free) path.
     real(wp), parameter :: safe_lo = 1.0e-30_wp, safe_hi = 1.0e30_wp
+    !> Contacts per pass of the rank-1 form (buffers on the stack).
+    integer, parameter :: chunk = 256
+
+    !> k and d such that the collision has restitution e and contact time tc: for
+    !> scalars (elemental: also arrays of any rank) or rank-1 arrays (vectorised).
+    interface hertzdamp_invert
+        module procedure invert_scalar
+        module procedure invert_array
+    end interface hertzdamp_invert
 
     public :: hertzdamp_invert, hertzdamp_invert_alpha
 
 contains
 
     !> k and d such that the collision has restitution e and contact time tc.
-    pure elemental subroutine hertzdamp_invert(e, tc, m, u, iend, k, d, status, alpha, tstar, tau_c, &
-                                               bound_active, k_phys, method, tol, accuracy)
+    pure elemental subroutine invert_scalar(e, tc, m, u, iend, k, d, status, alpha, tstar, tau_c, &
+                                            bound_active, k_phys, method, tol, accuracy)
         real(wp), intent(in) :: e                      !! target restitution coefficient, e_min <= e <= 1
         real(wp), intent(in) :: tc                     !! target contact time T_c [s]
         real(wp), intent(in) :: m                      !! effective mass [kg]
@@ -66,27 +84,145 @@ contains
         integer, intent(in), optional :: method        !! HD_METHOD_FIT (default), _COMPACT, _ITERATIVE or _RK45
         real(wp), intent(in), optional :: tol          !! tolerance of the iterative method (default 1e-10)
         real(wp), intent(in), optional :: accuracy     !! relative accuracy asked of series and Pade (default 1e-10)
-        real(wp) :: a, tau, ts, lk, lts
+        real(wp) :: a, tau, ts, kp
         logical :: bound
         integer :: meth
+        meth = HD_METHOD_FIT
+        if (present(method)) meth = method
+        kp = 0.0_wp
+        if (present(k_phys)) kp = k_phys
+        ts = 0.0_wp
+        bound = .false.
+        status = -1
+        if (meth == HD_METHOD_FIT) then
+            ! the kernel of every fit entry point (bit-identical to the rank-1 form)
+            call hertzdamp_fit_invert(e, tc, m, u, iend, k, d, a, tau, status)
+            if (status == HD_OK) then
+                if (present(tstar)) ts = tc / tau
+                if (present(k_phys)) call apply_bound(a, m, u, kp, k, d, ts, bound, status)
+            end if
+        end if
+        if (status /= HD_OK) then
+            call invert_general(e, tc, m, u, iend, present(k_phys), kp, meth, tol, accuracy, k, d, status, a, ts, &
+                                tau, bound)
+        end if
+        if (present(alpha)) alpha = a
+        if (present(tstar)) tstar = ts
+        if (present(tau_c)) tau_c = tau
+        if (present(bound_active)) bound_active = bound
+    end subroutine invert_scalar
+
+    !> invert_scalar for rank-1 arrays (all of the size of e): the fit runs vectorised
+    !> over whole arrays, the remaining contacts go one by one through the scalar path.
+    !> Results are those of the scalar calls, bit for bit.
+    pure subroutine invert_array(e, tc, m, u, iend, k, d, status, alpha, tstar, tau_c, bound_active, k_phys, &
+                                 method, tol, accuracy)
+        real(wp), intent(in), contiguous :: e(:)                 !! target restitution coefficients
+        real(wp), intent(in), contiguous :: tc(:)                !! target contact times [s]
+        real(wp), intent(in), contiguous :: m(:)                 !! effective masses [kg]
+        real(wp), intent(in), contiguous :: u(:)                 !! impact velocities [m s^-1]
+        integer, intent(in) :: iend                              !! HD_END_OVERLAP or HD_END_FORCE
+        real(wp), intent(out), contiguous :: k(:)                !! stiffnesses [N m^-3/2] (0 on error)
+        real(wp), intent(out), contiguous :: d(:)                !! damping coefficients [kg s^-1] (0 on error)
+        integer, intent(out), contiguous :: status(:)            !! HD_OK or an error code, per contact
+        real(wp), intent(out), optional, contiguous :: alpha(:)  !! damping parameters alpha(e)
+        real(wp), intent(out), optional, contiguous :: tstar(:)  !! time units of the returned k [s]
+        real(wp), intent(out), optional, contiguous :: tau_c(:)  !! dimensionless contact durations
+        logical, intent(out), optional, contiguous :: bound_active(:) !! true where k = k_phys was used
+        real(wp), intent(in), optional, contiguous :: k_phys(:)  !! physical stiffness bounds [N m^-3/2]
+        integer, intent(in), optional :: method                  !! as for the scalar form
+        real(wp), intent(in), optional :: tol                    !! as for the scalar form
+        real(wp), intent(in), optional :: accuracy               !! as for the scalar form
+        real(wp) :: ab(chunk), tb(chunk), sb_ts(chunk), kp
+        integer :: sb(chunk), i0, nc, j, i, meth
+        logical :: bb(chunk)
+        meth = HD_METHOD_FIT
+        if (present(method)) meth = method
+        do i0 = 0, size(e) - 1, chunk
+            nc = min(chunk, size(e) - i0)
+            if (meth == HD_METHOD_FIT) then
+                call hertzdamp_fit_invert_n(nc, e(i0 + 1:i0 + nc), tc(i0 + 1:i0 + nc), m(i0 + 1:i0 + nc), &
+                                            u(i0 + 1:i0 + nc), iend, k(i0 + 1:i0 + nc), d(i0 + 1:i0 + nc), ab, tb, sb)
+            else
+                sb = -1
+            end if
+            do j = 1, nc
+                i = i0 + j
+                status(i) = sb(j)
+                bb(j) = .false.
+                sb_ts(j) = 0.0_wp
+                if (sb(j) == HD_OK) then
+                    if (present(tstar)) sb_ts(j) = tc(i) / tb(j)
+                    if (present(k_phys)) call apply_bound(ab(j), m(i), u(i), k_phys(i), k(i), d(i), sb_ts(j), bb(j), &
+                                                          status(i))
+                end if
+                if (status(i) /= HD_OK) then
+                    kp = 0.0_wp
+                    if (present(k_phys)) kp = k_phys(i)
+                    call invert_general(e(i), tc(i), m(i), u(i), iend, present(k_phys), kp, meth, tol, accuracy, &
+                                        k(i), d(i), status(i), ab(j), sb_ts(j), tb(j), bb(j))
+                end if
+            end do
+            if (present(alpha)) alpha(i0 + 1:i0 + nc) = ab(1:nc)
+            if (present(tstar)) tstar(i0 + 1:i0 + nc) = sb_ts(1:nc)
+            if (present(tau_c)) tau_c(i0 + 1:i0 + nc) = tb(1:nc)
+            if (present(bound_active)) bound_active(i0 + 1:i0 + nc) = bb(1:nc)
+        end do
+    end subroutine invert_array
+
+    !> The physical bound on a contact of the fast path (k from the direct formulas): a
+    !> valid k_phys <= k replaces k, with t* = (m/k_phys)^(2/5) u^(-1/5) and
+    !> d = alpha m / t*; an invalid k_phys gives HD_BAD_KPHYS and zero outputs.
+    pure elemental subroutine apply_bound(a, m, u, k_phys, k, d, ts, bound, status)
+        real(wp), intent(in) :: a, m, u, k_phys
+        real(wp), intent(inout) :: k, d, ts
+        logical, intent(out) :: bound
+        integer, intent(inout) :: status
+        real(wp) :: lts
+        bound = .false.
+        if (.not. (k_phys > 0.0_wp .and. k_phys <= huge(k_phys))) then
+            status = HD_BAD_KPHYS
+            k = 0.0_wp
+            d = 0.0_wp
+            ts = 0.0_wp
+        else if (k_phys <= k) then
+            bound = .true.
+            lts = 0.4_wp * (log(m) - log(k_phys)) - 0.2_wp * log(u)
+            call hertzdamp_safe_exp(lts, ts, status)
+            k = k_phys
+            d = a * m / ts
+        end if
+    end subroutine apply_bound
+
+    !> Every contact the fast path does not serve: the argument checks in their order
+    !> (T_c, m, u, k_phys, then e and iend by the method), the dimensionless inverse by
+    !> any method, the direct formulas of hertzdamp_fit_invert_n where T_c, m, u allow
+    !> (so that every method scales alike) and logarithms elsewhere, the bound.
+    pure elemental subroutine invert_general(e, tc, m, u, iend, has_kphys, k_phys, meth, tol, accuracy, k, d, &
+                                             status, a, ts, tau, bound)
+        real(wp), intent(in) :: e, tc, m, u, k_phys
+        integer, intent(in) :: iend, meth
+        logical, intent(in) :: has_kphys
+        real(wp), intent(in), optional :: tol, accuracy
+        real(wp), intent(out) :: k, d, a, ts, tau
+        integer, intent(out) :: status
+        logical, intent(out) :: bound
+        real(wp) :: lk, lts
         k = 0.0_wp
         d = 0.0_wp
         a = 0.0_wp
         tau = 0.0_wp
         ts = 0.0_wp
         bound = .false.
-        meth = HD_METHOD_FIT
-        if (present(method)) meth = method
         status = HD_OK
         if (.not. (tc > 0.0_wp .and. tc <= huge(tc))) status = HD_BAD_TIME
         if (.not. (m > 0.0_wp .and. m <= huge(m))) status = HD_BAD_MASS
         if (.not. (u > 0.0_wp .and. u <= huge(u))) status = HD_BAD_VELOCITY
-        if (present(k_phys)) then
+        if (has_kphys) then
             if (.not. (k_phys > 0.0_wp .and. k_phys <= huge(k_phys))) status = HD_BAD_KPHYS
         end if
         if (status == HD_OK) then
             if (meth == HD_METHOD_FIT) then
-                ! the hot path of DEM codes: straight to the approximant (it checks e and iend)
                 call hertzdamp_fit_inverse(e, iend, a, tau, status)
             else
                 call hertzdamp_invert_alpha(e, iend, a, tau, status, meth, tol, accuracy)
@@ -95,23 +231,14 @@ contains
         if (status == HD_OK) then
             ts = tc / tau
             if (min(m, u, tc) >= safe_lo .and. max(m, u, tc) <= safe_hi) then
-                ! direct path: every intermediate is a normal double here
-                k = m / (ts * ts * sqrt(ts * u))
-                d = a * m / ts
-                if (present(k_phys)) then
-                    if (k_phys <= k) then
-                        bound = .true.
-                        lts = 0.4_wp * (log(m) - log(k_phys)) - 0.2_wp * log(u)
-                        call hertzdamp_safe_exp(lts, ts, status)
-                        k = k_phys
-                        d = a * m / ts
-                    end if
-                end if
+                ! direct path: the formulas of the fast path (every intermediate a normal double)
+                call direct_scale(tc, m, u, a, tau, k, d)
+                if (has_kphys) call apply_bound(a, m, u, k_phys, k, d, ts, bound, status)
             else
                 ! logarithmic path (extreme inputs)
                 lts = log(tc) - log(tau)
                 lk = log(m) - 2.5_wp * lts - 0.5_wp * log(u)
-                if (present(k_phys)) then
+                if (has_kphys) then
                     if (log(k_phys) <= lk) then
                         bound = .true.
                         lk = log(k_phys)
@@ -123,7 +250,7 @@ contains
                 if (a > 0.0_wp) call hertzdamp_safe_exp_or_zero(log(a) + log(m) - lts, d, status)
             end if
             if (status == HD_OK) then
-                if (.not. (ieee_is_finite(d) .and. d < huge(d))) status = HD_OUT_OF_RANGE
+                if (.not. (abs(d) < huge(d))) status = HD_OUT_OF_RANGE
             end if
         end if
         if (status /= HD_OK) then
@@ -134,11 +261,20 @@ contains
             ts = 0.0_wp
             bound = .false.
         end if
-        if (present(alpha)) alpha = a
-        if (present(tstar)) tstar = ts
-        if (present(tau_c)) tau_c = tau
-        if (present(bound_active)) bound_active = bound
-    end subroutine hertzdamp_invert
+    end subroutine invert_general
+
+    !> k and d from alpha and tau_c by the direct formulas, those of the fit's kernel
+    !> (hertzdamp_fit_invert_out.inc, the same operations): r = tau_c / T_c = 1/t*,
+    !> k = m r^2 (r/u)^(1/2), d = alpha m r.  For T_c, m, u in [1e-30, 1e30] every
+    !> intermediate is a normal double.
+    pure elemental subroutine direct_scale(tc, m, u, a, tau, k, d)
+        real(wp), intent(in) :: tc, m, u, a, tau
+        real(wp), intent(out) :: k, d
+        real(wp) :: r
+        r = tau * (1.0_wp / tc)
+        k = m * (r * r) * sqrt(tau * (1.0_wp / (tc * u)))
+        d = a * m * r
+    end subroutine direct_scale
 
     !> The dimensionless inverse e -> (alpha, tau_c) by the chosen method.
     !> These are the constants of a material pair: they depend on e and the contact end
@@ -269,23 +405,34 @@ contains
         if (status == HD_OK) lne = log(r%e)
     end subroutine series_ln_e
 
-    !> Safeguarded secant (bracketing, bisection fallback) on g(alpha) = ln e(alpha) - ln e
-    !> with one reference solve per trial.
+    !> The iterative baseline, written as a careful DEM developer would: a secant on
+    !> g(alpha) = ln e(alpha) - ln e with one reference (rk45) solve per trial, kept
+    !> inside a bracket (bisection fallback, no-rebound trials shrink it).
+    !> - Start: the compact rule where it is defined (e >= 0.05; alpha within ~1e-6 for
+    !>   the overlap end, ~1e-3 for the force end), else the first-order law
+    !>   alpha = -ln(e)/e1; the second trial is the proportional step
+    !>   alpha * ln e / ln e(alpha) (exact where ln e is linear in alpha).
+    !> - Each solve at a tolerance derived from the accuracy asked of alpha:
+    !>   rk45 tol = tol/10 min(1, |ln e|), since the relative error of alpha is about that of
+    !>   ln e, (delta e / e) / |ln e|; tau_c, hence k ~ tau_c^(5/2), then carries the
+    !>   solve's own error, below tol/4.
+    !> - Stop when the secant step is below tol/10 alpha or the residual below
+    !>   tol/10 |ln e| (test/test_inverse.f90 checks alpha within tol).
     pure subroutine iterate(e, iend, tol, alpha, tau_c, status)
         real(wp), intent(in) :: e, tol
         integer, intent(in) :: iend
         real(wp), intent(out) :: alpha, tau_c
         integer, intent(out) :: status
         type(hertzdamp_collision) :: r
-        real(wp) :: lt, lo, hi, a0, g0, a1, g1, anew, rtol
-        integer :: it
-        logical :: have_hi
+        real(wp) :: lt, lo, hi, a0, g0, a1, g1, anew, rtol, tau_start
+        integer :: it, st
+        logical :: have_hi, have_prev
         alpha = 0.0_wp
         tau_c = hertzdamp_tau_c0()
         status = HD_OK
         lt = -log(e)
         if (lt == 0.0_wp) return
-        rtol = min(1.0e-13_wp, max(1.0e-15_wp, 1.0e-3_wp * tol))
+        rtol = max(1.0e-15_wp, min(1.0e-3_wp, 0.1_wp * tol * min(1.0_wp, lt)))
         if (lt < 1.0e-10_wp) then
             ! 1 - e below what the reference integrator resolves (~1e-13): the first-order
             ! law ln e = -e1 alpha + O(alpha^2) is exact to O(alpha) ~ 1e-10 relative here
@@ -295,14 +442,20 @@ contains
             if (status == HD_OK) tau_c = r%tau_c
             return
         end if
+        ! start: the compact rule where defined, else the first-order law
+        a1 = lt / hertzdamp_e1()
+        if (iend == HD_END_OVERLAP) a1 = min(a1, 1.0_wp)
+        if (e >= merge(hertzdamp_compact_e_min_overlap, hertzdamp_compact_e_min_force, iend == HD_END_OVERLAP)) then
+            call hertzdamp_compact_inverse(e, iend, anew, tau_start, st)
+            if (st == HD_OK .and. anew > 0.0_wp) a1 = anew
+        end if
         lo = 0.0_wp
         have_hi = .false.
+        have_prev = .false.
         hi = huge(1.0_wp)
         a0 = 0.0_wp
-        g0 = lt
-        a1 = lt / hertzdamp_e1()          ! first-order guess
-        if (iend == HD_END_OVERLAP) a1 = min(a1, 1.0_wp)
-        do it = 1, 200
+        g0 = 0.0_wp
+        do it = 1, 100
             r = hertzdamp_rk45_collide(a1, iend, rtol)
             if (r%status == HD_NO_REBOUND) then
                 hi = a1
@@ -313,43 +466,32 @@ contains
                 status = r%status
                 return
             end if
-            g1 = -log(r%e) - lt
-            g1 = -g1                      ! g = ln e(alpha) - ln e_target, decreasing in alpha
+            g1 = log(r%e) + lt            ! ln e(alpha) - ln e_target, decreasing in alpha
             alpha = a1
             tau_c = r%tau_c
-            if (abs(g1) <= 4.0e-15_wp) return
+            if (abs(g1) <= 0.1_wp * tol * lt) return
             if (g1 > 0.0_wp) then
                 lo = a1
             else
                 hi = a1
                 have_hi = .true.
             end if
-            ! secant through the last two points, kept inside the bracket
-            if (g1 /= g0) then
+            if (have_prev .and. g1 /= g0) then
                 anew = a1 - g1 * (a1 - a0) / (g1 - g0)
             else
-                anew = a1
+                anew = a1 * lt / (lt - g1)   ! proportional step: ln e(alpha) = (ln e(a1)/a1) alpha
             end if
+            ! kept inside the bracket
             if (.not. have_hi) then
                 if (.not. (anew > lo)) anew = 2.0_wp * lo
                 if (anew > 4.0_wp * lo) anew = 4.0_wp * lo
             else if (.not. (anew > lo .and. anew < hi)) then
                 anew = 0.5_wp * (lo + hi)
             end if
-            if (abs(anew - a1) <= tol * a1) then
-                if (abs(anew - a1) <= 1.0e-2_wp * tol * a1) return
-                a0 = a1
-                g0 = g1
-                a1 = anew
-                r = hertzdamp_rk45_collide(a1, iend, rtol)
-                if (r%status == HD_OK) then
-                    alpha = a1
-                    tau_c = r%tau_c
-                end if
-                return
-            end if
+            if (abs(anew - a1) <= 0.1_wp * tol * a1) return
             a0 = a1
             g0 = g1
+            have_prev = .true.
             a1 = anew
         end do
         status = HD_NO_CONVERGENCE

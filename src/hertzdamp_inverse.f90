@@ -38,7 +38,7 @@ module hertzdamp_inverse
                                  hertzdamp_default_accuracy
     use hertzdamp_fit, only: hertzdamp_fit_inverse, hertzdamp_fit_invert, hertzdamp_fit_invert_n, &
                              hertzdamp_fit_e_min_overlap, &
-                             hertzdamp_fit_e_min_force
+                             hertzdamp_fit_e_min_force, hertzdamp_fit_alpha_c
     use hertzdamp_compact, only: hertzdamp_compact_inverse, hertzdamp_compact_e_min_overlap, &
                                  hertzdamp_compact_e_min_force
     use hertzdamp_series, only: hertzdamp_pade_alpha_max
@@ -61,7 +61,21 @@ module hertzdamp_inverse
         module procedure invert_array
     end interface hertzdamp_invert
 
-    public :: hertzdamp_invert, hertzdamp_invert_alpha
+    !> State of the iterative inverse (hertzdamp_secant_start, hertzdamp_secant_next).
+    type, public :: hertzdamp_secant
+        real(wp) :: lt = 0.0_wp          !! -ln e of the target
+        real(wp) :: tol = 0.0_wp         !! relative accuracy asked of alpha
+        real(wp) :: lo = 0.0_wp          !! bracket: e(lo) > e
+        real(wp) :: hi = huge(1.0_wp)    !! bracket: e(hi) < e or no rebound (when have_hi)
+        real(wp) :: a0 = 0.0_wp          !! previous trial
+        real(wp) :: g0 = 0.0_wp          !! its residual ln e(a0) - ln e
+        real(wp) :: a1 = 0.0_wp          !! current trial
+        logical :: have_hi = .false.
+        logical :: have_prev = .false.
+        integer :: trials = 0            !! trials evaluated
+    end type hertzdamp_secant
+
+    public :: hertzdamp_invert, hertzdamp_invert_alpha, hertzdamp_secant_start, hertzdamp_secant_next
 
 contains
 
@@ -405,28 +419,119 @@ contains
         if (status == HD_OK) lne = log(r%e)
     end subroutine series_ln_e
 
-    !> The iterative baseline, written as a careful DEM developer would: a secant on
-    !> g(alpha) = ln e(alpha) - ln e with one reference (rk45) solve per trial, kept
-    !> inside a bracket (bisection fallback, no-rebound trials shrink it).
-    !> - Start: the compact rule where it is defined (e >= 0.05; alpha within ~1e-6 for
-    !>   the overlap end, ~1e-3 for the force end), else the first-order law
-    !>   alpha = -ln(e)/e1; the second trial is the proportional step
-    !>   alpha * ln e / ln e(alpha) (exact where ln e is linear in alpha).
-    !> - Each solve at a tolerance derived from the accuracy asked of alpha:
-    !>   rk45 tol = tol/10 min(1, |ln e|), since the relative error of alpha is about that of
-    !>   ln e, (delta e / e) / |ln e|; tau_c, hence k ~ tau_c^(5/2), then carries the
-    !>   solve's own error, below tol/4.
-    !> - Stop when the secant step is below tol/10 alpha or the residual below
-    !>   tol/10 |ln e| (test/test_inverse.f90 checks alpha within tol).
+    !> Start of the iterative inverse (see hertzdamp_secant): the first trial alpha for
+    !> restitution e (0 < e < 1, -ln e >= 1e-10) and the state.  Written as a careful DEM
+    !> developer would: the compact rule where it is defined (e >= 0.05; alpha within
+    !> ~1e-6 for the overlap end, ~1e-3 for the force end), else the first-order law
+    !> alpha = -ln(e)/e1 (at most 1 for the overlap end, whose bracket starts as
+    !> [0, alpha_c]: no trial is wasted on alpha >= alpha_c, where nothing rebounds).
+    pure subroutine hertzdamp_secant_start(e, iend, tol, state, alpha)
+        real(wp), intent(in) :: e                         !! target restitution coefficient
+        integer, intent(in) :: iend                       !! HD_END_OVERLAP or HD_END_FORCE
+        real(wp), intent(in) :: tol                       !! relative accuracy asked of alpha
+        type(hertzdamp_secant), intent(out) :: state      !! the iteration's state
+        real(wp), intent(out) :: alpha                    !! first trial: solve e(alpha) there
+        real(wp) :: a, tau
+        integer :: st
+        state%lt = -log(e)
+        state%tol = tol
+        alpha = state%lt / hertzdamp_e1()
+        if (iend == HD_END_OVERLAP) then
+            ! every rebound of the overlap end has alpha < alpha_c: the bracket's top
+            state%hi = hertzdamp_fit_alpha_c
+            state%have_hi = .true.
+            alpha = min(alpha, 1.0_wp)
+        end if
+        if (e >= merge(hertzdamp_compact_e_min_overlap, hertzdamp_compact_e_min_force, iend == HD_END_OVERLAP)) then
+            call hertzdamp_compact_inverse(e, iend, a, tau, st)
+            if (st == HD_OK .and. a > 0.0_wp) alpha = a
+        end if
+        state%a1 = alpha
+    end subroutine hertzdamp_secant_start
+
+    !> One step of the iterative inverse, by reverse communication: the caller solves the
+    !> collision at the trial alpha with any integrator and passes the outcome (e of the
+    !> trial, or no_rebound); this returns the next trial, or done = .true. with alpha
+    !> the answer (the last trial), or status HD_NO_CONVERGENCE after 100 trials.
+    !> A secant on g(alpha) = ln e(alpha) - ln e, kept inside a bracket (bisection
+    !> fallback; a no-rebound trial shrinks it); the second trial is the proportional
+    !> step alpha ln e / ln e(alpha) (exact where ln e is linear in alpha).  It stops
+    !> when the secant step is below tol/10 alpha or the residual below tol/10 |ln e|.
+    !> Used by the iterative method (rk45) and by the GSL peer (peers/gsl).
+    pure subroutine hertzdamp_secant_next(state, e_trial, no_rebound, alpha, done, status)
+        type(hertzdamp_secant), intent(inout) :: state    !! the iteration's state
+        real(wp), intent(in) :: e_trial                   !! e(alpha) of the last trial (ignored without rebound)
+        logical, intent(in) :: no_rebound                 !! the last trial did not rebound
+        real(wp), intent(out) :: alpha                    !! next trial, or the answer when done
+        logical, intent(out) :: done                      !! alpha is the answer
+        integer, intent(out) :: status                    !! HD_OK or HD_NO_CONVERGENCE
+        real(wp) :: g1, anew
+        done = .false.
+        status = HD_OK
+        state%trials = state%trials + 1
+        if (state%trials > 100) then
+            status = HD_NO_CONVERGENCE
+            alpha = state%a1
+            return
+        end if
+        if (no_rebound) then
+            state%hi = state%a1
+            state%have_hi = .true.
+            state%a1 = 0.5_wp * (state%lo + state%hi)
+            alpha = state%a1
+            return
+        end if
+        g1 = log(e_trial) + state%lt            ! ln e(alpha) - ln e_target, decreasing in alpha
+        alpha = state%a1
+        if (abs(g1) <= 0.1_wp * state%tol * state%lt) then
+            done = .true.
+            return
+        end if
+        if (g1 > 0.0_wp) then
+            state%lo = state%a1
+        else
+            state%hi = state%a1
+            state%have_hi = .true.
+        end if
+        if (state%have_prev .and. g1 /= state%g0) then
+            anew = state%a1 - g1 * (state%a1 - state%a0) / (g1 - state%g0)
+        else
+            anew = state%a1 * state%lt / (state%lt - g1)   ! proportional step
+        end if
+        ! kept inside the bracket
+        if (.not. state%have_hi) then
+            if (.not. (anew > state%lo)) anew = 2.0_wp * state%lo
+            if (anew > 4.0_wp * state%lo) anew = 4.0_wp * state%lo
+        else if (.not. (anew > state%lo .and. anew < state%hi)) then
+            anew = 0.5_wp * (state%lo + state%hi)
+        end if
+        if (abs(anew - state%a1) <= 0.1_wp * state%tol * state%a1) then
+            done = .true.
+            return
+        end if
+        state%a0 = state%a1
+        state%g0 = g1
+        state%have_prev = .true.
+        state%a1 = anew
+        alpha = anew
+    end subroutine hertzdamp_secant_next
+
+    !> The iterative baseline: hertzdamp_secant over rk45 solves, each at a tolerance
+    !> derived from the accuracy asked of alpha: rk45 tol = tol/10 min(1, |ln e|), since
+    !> the relative error of alpha is about that of ln e, (delta e / e) / |ln e|
+    !> (test/test_inverse.f90 checks alpha within tol).  tau_c is that of the last solve:
+    !> its error is the error of alpha times d ln tau_c / d ln alpha, which grows towards
+    !> alpha_c (7 tol at e = 1e-3, overlap); `hertzdamp bench` reports the errors of
+    !> alpha, k and d it achieves.
     pure subroutine iterate(e, iend, tol, alpha, tau_c, status)
         real(wp), intent(in) :: e, tol
         integer, intent(in) :: iend
         real(wp), intent(out) :: alpha, tau_c
         integer, intent(out) :: status
         type(hertzdamp_collision) :: r
-        real(wp) :: lt, lo, hi, a0, g0, a1, g1, anew, rtol, tau_start
-        integer :: it, st
-        logical :: have_hi, have_prev
+        type(hertzdamp_secant) :: state
+        real(wp) :: lt, rtol, a
+        logical :: done
         alpha = 0.0_wp
         tau_c = hertzdamp_tau_c0()
         status = HD_OK
@@ -442,59 +547,20 @@ contains
             if (status == HD_OK) tau_c = r%tau_c
             return
         end if
-        ! start: the compact rule where defined, else the first-order law
-        a1 = lt / hertzdamp_e1()
-        if (iend == HD_END_OVERLAP) a1 = min(a1, 1.0_wp)
-        if (e >= merge(hertzdamp_compact_e_min_overlap, hertzdamp_compact_e_min_force, iend == HD_END_OVERLAP)) then
-            call hertzdamp_compact_inverse(e, iend, anew, tau_start, st)
-            if (st == HD_OK .and. anew > 0.0_wp) a1 = anew
-        end if
-        lo = 0.0_wp
-        have_hi = .false.
-        have_prev = .false.
-        hi = huge(1.0_wp)
-        a0 = 0.0_wp
-        g0 = 0.0_wp
-        do it = 1, 100
-            r = hertzdamp_rk45_collide(a1, iend, rtol)
-            if (r%status == HD_NO_REBOUND) then
-                hi = a1
-                have_hi = .true.
-                a1 = 0.5_wp * (lo + hi)
-                cycle
-            else if (r%status /= HD_OK) then
+        call hertzdamp_secant_start(e, iend, tol, state, a)
+        do
+            r = hertzdamp_rk45_collide(a, iend, rtol)
+            if (r%status /= HD_OK .and. r%status /= HD_NO_REBOUND) then
                 status = r%status
                 return
             end if
-            g1 = log(r%e) + lt            ! ln e(alpha) - ln e_target, decreasing in alpha
-            alpha = a1
-            tau_c = r%tau_c
-            if (abs(g1) <= 0.1_wp * tol * lt) return
-            if (g1 > 0.0_wp) then
-                lo = a1
-            else
-                hi = a1
-                have_hi = .true.
+            if (r%status == HD_OK) then
+                alpha = a
+                tau_c = r%tau_c
             end if
-            if (have_prev .and. g1 /= g0) then
-                anew = a1 - g1 * (a1 - a0) / (g1 - g0)
-            else
-                anew = a1 * lt / (lt - g1)   ! proportional step: ln e(alpha) = (ln e(a1)/a1) alpha
-            end if
-            ! kept inside the bracket
-            if (.not. have_hi) then
-                if (.not. (anew > lo)) anew = 2.0_wp * lo
-                if (anew > 4.0_wp * lo) anew = 4.0_wp * lo
-            else if (.not. (anew > lo .and. anew < hi)) then
-                anew = 0.5_wp * (lo + hi)
-            end if
-            if (abs(anew - a1) <= 0.1_wp * tol * a1) return
-            a0 = a1
-            g0 = g1
-            have_prev = .true.
-            a1 = anew
+            call hertzdamp_secant_next(state, r%e, r%status == HD_NO_REBOUND, a, done, status)
+            if (done .or. status /= HD_OK) exit
         end do
-        status = HD_NO_CONVERGENCE
     end subroutine iterate
 
 end module hertzdamp_inverse

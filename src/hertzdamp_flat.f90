@@ -11,6 +11,7 @@ module hertzdamp_flat
     use hertzdamp_status, only: HD_OK, HD_NO_REBOUND
     use hertzdamp_methods, only: hertzdamp_forward_dim, HD_METHOD_FIT
     use hertzdamp_inverse, only: mod_invert => hertzdamp_invert, hertzdamp_invert_alpha
+    use hertzdamp_fit, only: hertzdamp_fit_invert
     implicit none
     private
 
@@ -35,7 +36,12 @@ contains
         real(wp), intent(out) :: k       !! Hertz stiffness [N m^-3/2]
         real(wp), intent(out) :: d       !! damping coefficient [kg s^-1]
         integer, intent(out) :: status   !! HD_OK or an error code
-        call mod_invert(e, tc, m, u, iend, k, d, status, method=legacy_method)
+        real(wp) :: a, tau
+        ! what hertzdamp_invert does for the fit without optional arguments, without the
+        ! layer of its optional arguments: the fit's kernel, then the general path for the
+        ! contacts the kernel does not serve
+        call hertzdamp_fit_invert(e, tc, m, u, iend, k, d, a, tau, status)
+        if (status /= HD_OK) call mod_invert(e, tc, m, u, iend, k, d, status, method=legacy_method)
         if (status /= HD_OK) then
             k = 0.0_wp
             d = 0.0_wp

@@ -148,7 +148,7 @@ contains
         real(wp), intent(in), optional :: tol                    !! as for the scalar form
         real(wp), intent(in), optional :: accuracy               !! as for the scalar form
         real(wp) :: ab(chunk), tb(chunk), sb_ts(chunk), kp
-        integer :: sb(chunk), i0, nc, j, i, meth
+        integer :: i0, nc, j, i, meth
         logical :: bb(chunk)
         meth = HD_METHOD_FIT
         if (present(method)) meth = method
@@ -156,27 +156,33 @@ contains
             nc = min(chunk, size(e) - i0)
             if (meth == HD_METHOD_FIT) then
                 call hertzdamp_fit_invert_n(nc, e(i0 + 1:i0 + nc), tc(i0 + 1:i0 + nc), m(i0 + 1:i0 + nc), &
-                                            u(i0 + 1:i0 + nc), iend, k(i0 + 1:i0 + nc), d(i0 + 1:i0 + nc), ab, tb, sb)
+                                            u(i0 + 1:i0 + nc), iend, k(i0 + 1:i0 + nc), d(i0 + 1:i0 + nc), ab, tb, &
+                                            status(i0 + 1:i0 + nc))
             else
-                sb = -1
+                status(i0 + 1:i0 + nc) = -1
             end if
-            do j = 1, nc
-                i = i0 + j
-                status(i) = sb(j)
-                bb(j) = .false.
-                sb_ts(j) = 0.0_wp
-                if (sb(j) == HD_OK) then
-                    if (present(tstar)) sb_ts(j) = tc(i) / tb(j)
-                    if (present(k_phys)) call apply_bound(ab(j), m(i), u(i), k_phys(i), k(i), d(i), sb_ts(j), bb(j), &
-                                                          status(i))
-                end if
-                if (status(i) /= HD_OK) then
-                    kp = 0.0_wp
-                    if (present(k_phys)) kp = k_phys(i)
-                    call invert_general(e(i), tc(i), m(i), u(i), iend, present(k_phys), kp, meth, tol, accuracy, &
-                                        k(i), d(i), status(i), ab(j), sb_ts(j), tb(j), bb(j))
-                end if
-            end do
+            bb(1:nc) = .false.
+            if (present(tstar)) then
+                sb_ts(1:nc) = tc(i0 + 1:i0 + nc) / tb(1:nc)
+            else
+                sb_ts(1:nc) = 0.0_wp
+            end if
+            ! one contact at a time only where needed: the bound, and the contacts the
+            ! kernel does not serve (the same code as the scalar form)
+            if (present(k_phys) .or. any(status(i0 + 1:i0 + nc) /= HD_OK)) then
+                do j = 1, nc
+                    i = i0 + j
+                    if (status(i) == HD_OK .and. present(k_phys)) then
+                        call apply_bound(ab(j), m(i), u(i), k_phys(i), k(i), d(i), sb_ts(j), bb(j), status(i))
+                    end if
+                    if (status(i) /= HD_OK) then
+                        kp = 0.0_wp
+                        if (present(k_phys)) kp = k_phys(i)
+                        call invert_general(e(i), tc(i), m(i), u(i), iend, present(k_phys), kp, meth, tol, accuracy, &
+                                            k(i), d(i), status(i), ab(j), sb_ts(j), tb(j), bb(j))
+                    end if
+                end do
+            end if
             if (present(alpha)) alpha(i0 + 1:i0 + nc) = ab(1:nc)
             if (present(tstar)) tstar(i0 + 1:i0 + nc) = sb_ts(1:nc)
             if (present(tau_c)) tau_c(i0 + 1:i0 + nc) = tb(1:nc)

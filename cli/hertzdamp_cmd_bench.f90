@@ -20,6 +20,7 @@ module hertzdamp_cmd_bench
     use hertzdamp_gsl, only: hertzdamp_gsl_collide, HERTZDAMP_GSL_RKF45, HERTZDAMP_GSL_RK8PD
     use hertzdamp_gsl_secant, only: hertzdamp_gsl_secant_invert
     use hertzdamp_capi, only: hertzdamp_c_invert, hertzdamp_c_invert_n
+    use hertzdamp_bench_legacy, only: legacy_invert_each, legacy_invert_all
     use hertzdamp_cli_plot, only: plot_check_target, plot_run, plot_temp_name, gp_string
     use hertzdamp_bench_timer, only: bench_case, bench_measure, bench_measure_all, bench_slot, wall_seconds, median
     use hertzdamp_cli, only: cli_args, cli_buffer, parse_args, parse_choice, fail, quit, pad, EXIT_USAGE, EXIT_OK, &
@@ -27,7 +28,7 @@ module hertzdamp_cmd_bench
     use hertzdamp_cli_output, only: out_table, format_choices, FORMAT_TEXT, FORMAT_CSV, FORMAT_JSON
     use hertzdamp_cli_help, only: print_help, wants_help
     use, intrinsic :: iso_fortran_env, only: int64, error_unit
-    use, intrinsic :: iso_c_binding, only: c_int, c_char, c_null_char, c_double
+    use, intrinsic :: iso_c_binding, only: c_int, c_char, c_null_char
     use, intrinsic :: ieee_arithmetic, only: ieee_value, ieee_quiet_nan, ieee_is_nan, ieee_is_finite
     implicit none
     private
@@ -121,27 +122,6 @@ module hertzdamp_cmd_bench
         integer :: failed = 0              !! contacts whose status is not ok
     end type entry_result
 
-    interface
-        !> The legacy externals as a fixed-form program calls them (by reference, the
-        !> link names of HERTZDAMP_INVERT and HERTZDAMP_INVERT_N).
-        subroutine legacy_invert(e, tc, m, u, iend, k, d, ierr) bind(c, name='hertzdamp_invert_')
-            import :: c_double, c_int
-            implicit none
-            real(c_double), intent(in) :: e, tc, m, u
-            integer(c_int), intent(in) :: iend
-            real(c_double), intent(out) :: k, d
-            integer(c_int), intent(out) :: ierr
-        end subroutine legacy_invert
-        subroutine legacy_invert_n(n, e, tc, m, u, iend, k, d, ierr) bind(c, name='hertzdamp_invert_n_')
-            import :: c_double, c_int
-            implicit none
-            integer(c_int), intent(in) :: n
-            real(c_double), intent(in) :: e(n), tc(n), m(n), u(n)
-            integer(c_int), intent(in) :: iend
-            real(c_double), intent(out) :: k(n), d(n)
-            integer(c_int), intent(out) :: ierr(n)
-        end subroutine legacy_invert_n
-    end interface
 
     !> One result row.
     type :: bench_row
@@ -235,13 +215,12 @@ contains
             st = hertzdamp_c_invert_n(int(n, c_int), self%in%e, self%in%tc, self%in%m, self%in%u, &
                                       int(HD_END_OVERLAP, c_int), self%k, self%d, self%status)
         case (WAY_LEGACY)
-            do i = 1, n
-                call legacy_invert(self%in%e(i), self%in%tc(i), self%in%m(i), self%in%u(i), int(HD_END_OVERLAP, c_int), &
-                                   self%k(i), self%d(i), self%status(i))
-            end do
+            ! HERTZDAMP_INVERT once per contact, declared by include/hertzdamp.fi
+            call legacy_invert_each(int(n, c_int), self%in%e, self%in%tc, self%in%m, self%in%u, &
+                                    int(HD_END_OVERLAP, c_int), self%k, self%d, self%status)
         case default
-            call legacy_invert_n(int(n, c_int), self%in%e, self%in%tc, self%in%m, self%in%u, &
-                                 int(HD_END_OVERLAP, c_int), self%k, self%d, self%status)
+            call legacy_invert_all(int(n, c_int), self%in%e, self%in%tc, self%in%m, self%in%u, &
+                                   int(HD_END_OVERLAP, c_int), self%k, self%d, self%status)
         end select
     end subroutine entry_run
 
@@ -486,8 +465,8 @@ contains
         integer, intent(in) :: repeats
         type(bench_row), allocatable, intent(inout) :: rows(:)
         integer :: j
-        real(wp), parameter :: tols(4) = [1.0e-6_wp, 1.0e-8_wp, 1.0e-10_wp, 1.0e-12_wp]
-        character(len=*), parameter :: tol_names(4) = ['1e-6 ', '1e-8 ', '1e-10', '1e-12']
+        real(wp), parameter :: tols(5) = [1.0e-6_wp, 1.0e-8_wp, 1.0e-10_wp, 1.0e-11_wp, 1.0e-12_wp]
+        character(len=*), parameter :: tol_names(5) = ['1e-6 ', '1e-8 ', '1e-10', '1e-11', '1e-12']
         call one(HD_METHOD_FIT, 0.0_wp, 'fit', '', 7)
         call one(HD_METHOD_COMPACT, 0.0_wp, 'compact', '', 6)
         call one(HD_METHOD_SERIES, 0.0_wp, 'series', '', 4)
@@ -648,7 +627,7 @@ contains
         if (ent%n > 0) then
             line = 'entry points over ' // itoa(ent%n) // ' contacts, ns per contact (ratio to the module scalar call):'
             do w = 1, n_ways
-                line = line // ' ' // trim(way_name(w)) // ' ' // ftoa(ent%ns(w), '(f0.1)') // ' (' // &
+                line = line // ' ' // trim(way_name(w)) // ' ' // ftoa(ent%ns(w), '(f6.1)') // ' (' // &
                        fratio(ent%ns(w) / ent%ns(WAY_SCALAR)) // ')' // trim(merge(',', ' ', w < n_ways))
             end do
             call figs%add(line)
@@ -668,16 +647,16 @@ contains
                           fratio(ent%ns(WAY_LEGACY) / ent%ns(WAY_SCALAR)) // ' and ' // &
                           fratio(ent%ns(WAY_C) / ent%ns(WAY_SCALAR)) // ' (' // &
                           met(worst_c <= 1.3_wp, 'short by ' // fratio(worst_c / 1.3_wp) // ' x') // &
-                          '); module scalar at most 40 ns: ' // ftoa(ent%ns(WAY_SCALAR), '(f0.1)') // ' ns (' // &
+                          '); module scalar at most 40 ns: ' // ftoa(ent%ns(WAY_SCALAR), '(f6.1)') // ' ns (' // &
                           met(ent%ns(WAY_SCALAR) <= 40.0_wp, 'short by ' // &
-                          ftoa(ent%ns(WAY_SCALAR) - 40.0_wp, '(f0.1)') // ' ns') // &
+                          ftoa(ent%ns(WAY_SCALAR) - 40.0_wp, '(f6.1)') // ' ns') // &
                           '); array at least 2.5 x cheaper than the scalar call: ' // &
                           fratio(ent%ns(WAY_SCALAR) / ent%ns(WAY_ARRAY)) // ' x (' // &
                           met(ent%ns(WAY_SCALAR) / ent%ns(WAY_ARRAY) >= 2.5_wp, 'short by ' // &
                           fratio(2.5_wp * ent%ns(WAY_ARRAY) / ent%ns(WAY_SCALAR)) // ' x') // &
-                          '); array at most 15 ns per contact: ' // ftoa(ent%ns(WAY_ARRAY), '(f0.1)') // ' ns (' // &
+                          '); array at most 15 ns per contact: ' // ftoa(ent%ns(WAY_ARRAY), '(f6.1)') // ' ns (' // &
                           met(ent%ns(WAY_ARRAY) <= 15.0_wp, 'short by ' // &
-                          ftoa(ent%ns(WAY_ARRAY) - 15.0_wp, '(f0.1)') // ' ns') // ')')
+                          ftoa(ent%ns(WAY_ARRAY) - 15.0_wp, '(f6.1)') // ' ns') // ')')
         end if
         ! ---- against the iterative baselines, at equal accuracy
         i_fit = find_row(rows, 'inverse', 'fit', '')

@@ -75,6 +75,15 @@ module hertzdamp_fit
     ! if the generated degrees change.
     integer, parameter :: inv_deg = fit_inv_deg + 0 * (1 / merge(1, 0, fit_inv_deg == 9))
     integer, parameter :: fwd_deg = fit_fwd_deg + 0 * (1 / merge(1, 0, fit_fwd_deg == 11 .and. fit_turn_deg == 11))
+    ! hertzdamp_fit_forward.inc takes the turning point from the piece of the forward map
+    ! where their grids agree (force; overlap up to 0.6): stop the build if they do not.
+    integer, parameter :: turn_first_fo = fit_turn_first(fit_map_fo_turn) + 0 * (1 / merge(1, 0, &
+        fit_turn_np(fit_map_fo_turn) == fit_fwd_np(fit_map_fo_fwd) .and. fit_turn_var(fit_map_fo_turn) == &
+        fit_fwd_var(fit_map_fo_fwd) .and. fit_turn_x0(fit_map_fo_turn) == fit_fwd_x0(fit_map_fo_fwd) .and. &
+        fit_turn_x1(fit_map_fo_turn) == fit_fwd_x1(fit_map_fo_fwd) .and. &
+        fit_turn_np(fit_map_ov_turn_a) == fit_fwd_np(fit_map_ov_fwd_a) .and. fit_turn_var(fit_map_ov_turn_a) == &
+        fit_fwd_var(fit_map_ov_fwd_a) .and. fit_turn_x0(fit_map_ov_turn_a) == fit_fwd_x0(fit_map_ov_fwd_a) .and. &
+        fit_turn_x1(fit_map_ov_turn_a) == fit_fwd_x1(fit_map_ov_fwd_a)))
 
     ! ---- IEEE double bit patterns (integer masks select values without branches)
     integer(int64), parameter :: mant_bits = int(z'000FFFFFFFFFFFFF', int64)   ! fraction field
@@ -445,69 +454,25 @@ contains
                 valid = all_valid(nc, e(i0 + 1:i0 + nc), tc(i0 + 1:i0 + nc), m(i0 + 1:i0 + nc), u(i0 + 1:i0 + nc), &
                                   emin_bits)
                 if (cubic .and. valid) then
-                    do i = i0 + 1, i0 + nc
-                        kin_e = e(i)
-                        kin_tc = tc(i)
-                        kin_m = m(i)
-                        kin_u = u(i)
-                        block
-                            logical, parameter :: cube = .true., masked = .false.
-                            include 'hertzdamp_fit_invert_element.inc'
-                        end block
-                        k(i) = kout_k
-                        d(i) = kout_d
-                        alpha(i) = kout_alpha
-                        tau_c(i) = kout_tau
-                        status(i) = kout_status
-                    end do
+                    block
+                        logical, parameter :: cube = .true., masked = .false.
+                        include 'hertzdamp_fit_invert_loop.inc'
+                    end block
                 else if (cubic) then
-                    do i = i0 + 1, i0 + nc
-                        kin_e = e(i)
-                        kin_tc = tc(i)
-                        kin_m = m(i)
-                        kin_u = u(i)
-                        block
-                            logical, parameter :: cube = .true., masked = .true.
-                            include 'hertzdamp_fit_invert_element.inc'
-                        end block
-                        k(i) = kout_k
-                        d(i) = kout_d
-                        alpha(i) = kout_alpha
-                        tau_c(i) = kout_tau
-                        status(i) = kout_status
-                    end do
+                    block
+                        logical, parameter :: cube = .true., masked = .true.
+                        include 'hertzdamp_fit_invert_loop.inc'
+                    end block
                 else if (valid) then
-                    do i = i0 + 1, i0 + nc
-                        kin_e = e(i)
-                        kin_tc = tc(i)
-                        kin_m = m(i)
-                        kin_u = u(i)
-                        block
-                            logical, parameter :: cube = .false., masked = .false.
-                            include 'hertzdamp_fit_invert_element.inc'
-                        end block
-                        k(i) = kout_k
-                        d(i) = kout_d
-                        alpha(i) = kout_alpha
-                        tau_c(i) = kout_tau
-                        status(i) = kout_status
-                    end do
+                    block
+                        logical, parameter :: cube = .false., masked = .false.
+                        include 'hertzdamp_fit_invert_loop.inc'
+                    end block
                 else
-                    do i = i0 + 1, i0 + nc
-                        kin_e = e(i)
-                        kin_tc = tc(i)
-                        kin_m = m(i)
-                        kin_u = u(i)
-                        block
-                            logical, parameter :: cube = .false., masked = .true.
-                            include 'hertzdamp_fit_invert_element.inc'
-                        end block
-                        k(i) = kout_k
-                        d(i) = kout_d
-                        alpha(i) = kout_alpha
-                        tau_c(i) = kout_tau
-                        status(i) = kout_status
-                    end do
+                    block
+                        logical, parameter :: cube = .false., masked = .true.
+                        include 'hertzdamp_fit_invert_loop.inc'
+                    end block
                 end if
             end do
         end associate
@@ -666,7 +631,7 @@ contains
                 do i = 1, n
                     kin_alpha = alpha(i)
                     block
-                        logical, parameter :: force = .true.
+                        logical, parameter :: force = .true., lazy = .false., masked = .true., turning = .true.
                         include 'hertzdamp_fit_forward.inc'
                     end block
                     e(i) = kout_e
@@ -679,7 +644,7 @@ contains
                 do i = 1, n
                     kin_alpha = alpha(i)
                     block
-                        logical, parameter :: force = .false.
+                        logical, parameter :: force = .false., lazy = .false., masked = .true., turning = .true.
                         include 'hertzdamp_fit_forward.inc'
                     end block
                     e(i) = kout_e
@@ -722,6 +687,8 @@ contains
         real(wp) :: kin_alpha, kout_e, kout_tau, kout_zmax, kout_tmax
         integer(int64) :: top, beyond_code
         integer :: kout_status
+        logical :: turning, valid
+        turning = present(z_max) .or. present(tau_max)
         if (iend /= HD_END_OVERLAP .and. iend /= HD_END_FORCE) then
             kout_e = 0.0_wp
             kout_tau = 0.0_wp
@@ -731,15 +698,27 @@ contains
         else
             kin_alpha = alpha
             call forward_range(iend == HD_END_FORCE, top, beyond_code)
+            ! finite, >= 0 (or -0) and within the range: no masks (the same bits)
+            valid = mag_bits(alpha) <= top .and. .not. (transfer(alpha, 0_int64) < 0_int64 .and. mag_bits(alpha) /= 0)
             associate (cf => fit_fwd_c, ct => fit_turn_c)
-                if (iend == HD_END_FORCE) then
+                if (iend == HD_END_FORCE .and. valid) then
                     block
-                        logical, parameter :: force = .true.
+                        logical, parameter :: force = .true., lazy = .true., masked = .false.
+                        include 'hertzdamp_fit_forward.inc'
+                    end block
+                else if (iend == HD_END_FORCE) then
+                    block
+                        logical, parameter :: force = .true., lazy = .true., masked = .true.
+                        include 'hertzdamp_fit_forward.inc'
+                    end block
+                else if (valid) then
+                    block
+                        logical, parameter :: force = .false., lazy = .true., masked = .false.
                         include 'hertzdamp_fit_forward.inc'
                     end block
                 else
                     block
-                        logical, parameter :: force = .false.
+                        logical, parameter :: force = .false., lazy = .true., masked = .true.
                         include 'hertzdamp_fit_forward.inc'
                     end block
                 end if

@@ -131,10 +131,15 @@ void FixHertzdampWall::post_force(int /*vflag*/)
         const double prev = p[P_PREV_OV], tprev = p[P_TPREV];
         const double tend_ov = (prev > 0.0 && tprev < step) ? tprev + (step - tprev) * prev / (prev - ov) : step;
         const double tend = (force_end && p[P_TEND] >= 0.0) ? p[P_TEND] : tend_ov;
-        book.finish(p, static_cast<double>(tag[i]), side == 0 ? -1.0 : -2.0, tend, -approach, dt);
+        double fc = 0.0;
+        if (rule.phase && !force_end && tprev < step)
+          fc = p[P_D] * approach * phase_weight((tend_ov - tprev) / (step - tprev));
+        book.finish(p, static_cast<double>(tag[i]), side == 0 ? -1.0 : -2.0, tend, -approach + fc * dt / p[P_M], dt);
+        f[i][axis] += side == 0 ? fc : -fc;
         s[0] = 0.0;
         continue;
       }
+      double f_phase = 0.0;
       if (s[0] == 0.0) {
         // onset: first step with overlap > 0 for an atom without wall history
         const double m = rmass[i];
@@ -153,9 +158,10 @@ void FixHertzdampWall::post_force(int /*vflag*/)
         p[P_TEND] = -1.0;
         p[P_FLAGS] = o.bounded;
         book.onset(o, approach);
+        if (rule.phase && approach > 0.0) f_phase = o.d * approach * phase_weight(ov / (approach * dt));
       }
       const double f_unclipped = p[P_K] * ov * sqrt(ov) + p[P_D] * approach;
-      double fn = f_unclipped;
+      double fn = f_unclipped + f_phase;
       if (force_end && f_unclipped <= 0.0) {
         fn = 0.0;
         if (p[P_TEND] < 0.0) {

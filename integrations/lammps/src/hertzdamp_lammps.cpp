@@ -105,6 +105,17 @@ int RuleSettings::parse(LAMMPS *lmp, const char *cmd, int narg, char **arg, int 
     if (!(vmin >= 0.0)) fail_all(lmp, __FILE__, __LINE__, std::string(cmd) + ": vmin must be >= 0");
     return 2;
   }
+  if (key == "phase") {
+    need(1);
+    const std::string v = arg[iarg + 1];
+    if (v == "yes")
+      phase = 1;
+    else if (v == "no")
+      phase = 0;
+    else
+      fail_all(lmp, __FILE__, __LINE__, std::string(cmd) + ": phase must be yes or no");
+    return 2;
+  }
   if (key == "log") {
     need(1);
     logfile = arg[iarg + 1];
@@ -130,6 +141,7 @@ std::string RuleSettings::describe() const
     s = "fixed k " + fmt_g(kfix) + " d " + fmt_g(dfix) + " (no rule)";
   s += std::string(", end ") + (end == HERTZDAMP_END_FORCE ? "force" : "overlap");
   s += ", vmin " + fmt_g(vmin);
+  s += std::string(", phase correction ") + (phase ? "yes" : "no");
   return s;
 }
 

@@ -45,6 +45,7 @@ struct RuleSettings {
   double kfix = 0.0, dfix = 0.0;    // fixed K D (comparison mode: no rule)
   int end = HERTZDAMP_END_OVERLAP;
   double vmin = 0.0;         // floor of the impact speed used by the rule
+  int phase = 1;             // 1: weight the damping force's jumps by the contact phase (see README)
   std::string logfile;       // per-contact log ("" = none)
 
   // Parse one keyword at arg[iarg]; return the number of words used (0 = not ours).
@@ -66,6 +67,21 @@ struct Onset {
 // Errors (no solution, bad input) stop the run on this processor with a message.
 Onset contact_rule(LAMMPS *lmp, const RuleSettings &rs, double e, double kphys, double m,
                    double u_raw, double dt);
+
+// Contact phase correction.  The damping force jumps from 0 to d u at the onset
+// and (overlap end) from d zeta' to 0 at the end.  Velocity Verlet applies the
+// force of a step as an impulse centred on that step, so a jump at a fraction phi
+// of a step gives an impulse error d u (1/2 - phi) dt: an O(dt) error that depends
+// on where the contact starts in a step.  The correction adds d zeta' (phi - 1/2)
+// at the step that detects the onset (phi = fraction of the step already in
+// contact) and d zeta' (psi - 1/2) at the step that detects the overlap end
+// (psi = fraction of the last step still in contact).
+inline double phase_weight(double frac)
+{
+  if (!(frac > 0.0)) frac = 0.0;
+  if (frac > 1.0) frac = 1.0;
+  return frac - 0.5;
+}
 
 // E* from two materials: 1/E* = (1-nu1^2)/E1 + (1-nu2^2)/E2.
 inline double effective_modulus(double y1, double nu1, double y2, double nu2)

@@ -278,9 +278,26 @@ void PairGranularHertzdamp::compute(int eflag, int vflag)
         const double prev = p[P_PREV_OV], tprev = p[P_TPREV];
         const double tend_ov = (prev > 0.0 && tprev < step) ? tprev + (step - tprev) * prev / (prev - ov) : step;
         const double tend = (force_end && p[P_TEND] >= 0.0) ? p[P_TEND] : tend_ov;
+        double f_end = 0.0;
+        // the overlap ended a fraction psi into the last step: d zeta' (psi - 1/2)
+        if (rule.phase && !force_end && tprev < step)
+          f_end = p[P_D] * (-u_out) * phase_weight((tend_ov - tprev) / (step - tprev));
         if (newton_pair || j < nlocal || tag[i] < tag[j]) {
           const double ta = tag[i] < tag[j] ? tag[i] : tag[j], tb = tag[i] < tag[j] ? tag[j] : tag[i];
-          book.finish(p, ta, tb, tend, u_out, dt);
+          // separation speed once the kick f_end (applied now) is complete
+          book.finish(p, ta, tb, tend, u_out + f_end * dt / p[P_M], dt);
+        }
+        if (f_end != 0.0) {
+          const double fpair = f_end * rinv;
+          f[i][0] += delx * fpair;
+          f[i][1] += dely * fpair;
+          f[i][2] += delz * fpair;
+          if (newton_pair || j < nlocal) {
+            f[j][0] -= delx * fpair;
+            f[j][1] -= dely * fpair;
+            f[j][2] -= delz * fpair;
+          }
+          if (evflag) ev_tally(i, j, nlocal, newton_pair, 0.0, 0.0, fpair, delx, dely, delz);
         }
         free_contact(c);
         ci[jj] = -1;
@@ -292,6 +309,7 @@ void PairGranularHertzdamp::compute(int eflag, int vflag)
       const double approach = -((v[i][0] - v[j][0]) * delx + (v[i][1] - v[j][1]) * dely +
                                 (v[i][2] - v[j][2]) * delz) * rinv;
       double *p;
+      double f_phase = 0.0;
       if (c < 0) {
         // contact onset: first step with overlap > 0 for a pair without history
         const double mi = rmass[i], mj = rmass[j];
@@ -316,12 +334,14 @@ void PairGranularHertzdamp::compute(int eflag, int vflag)
         p[P_TEND] = -1.0;
         p[P_FLAGS] = o.bounded;
         if (newton_pair || j < nlocal || tag[i] < tag[j]) book.onset(o, approach);
+        // onset a fraction phi = ov / (approach dt) of a step ago: d zeta' (phi - 1/2)
+        if (rule.phase && approach > 0.0) f_phase = o.d * approach * phase_weight(ov / (approach * dt));
       } else {
         p = &pool[static_cast<size_t>(c) * NPAYLOAD];
       }
 
       const double f_unclipped = p[P_K] * ov * sqrt(ov) + p[P_D] * approach;
-      double fn = f_unclipped;
+      double fn = f_unclipped + f_phase;
       if (force_end && f_unclipped <= 0.0) {
         // force end: the total force is clipped at zero (like limit_damping)
         fn = 0.0;

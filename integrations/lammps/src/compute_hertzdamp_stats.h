@@ -3,7 +3,8 @@
  * pair_style granular/hertzdamp, summed / reduced over all processors:
  *   1 contacts   2 u_min  3 u_max  4 k_min  5 k_max  6 d_min  7 d_max
  *   8 contacts with k = k_phys  9 contacts ended  10 e_min  11 e_max
- *   12 log rows not yet written  13 (reserved, 0)
+ *   12 log rows not yet written  13 contacts carried through neighbor-list
+ *   rebuilds (per rebuild and processor; not a count of contacts)
  * u = relative normal approach speed at onset (before the vmin floor); e = speed
  * of separation / u, measured when the overlap ends.  Counts since pair_style.
  */

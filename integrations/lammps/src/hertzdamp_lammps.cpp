@@ -184,13 +184,13 @@ const char *ContactBook::stat_name(int i)
 {
   static const char *names[NSTATS] = {"contacts", "u_min", "u_max", "k_min", "k_max",
                                       "d_min",    "d_max", "bounded", "ended", "e_min",
-                                      "e_max",    "log_rows", "reserved"};
+                                      "e_max",    "log_rows", "carried"};
   return (i >= 0 && i < NSTATS) ? names[i] : "?";
 }
 
 void ContactBook::reset()
 {
-  n_onset = n_bounded = n_end = 0;
+  n_onset = n_bounded = n_end = carried = 0;
   umin = kmin = dmin = emin = 1e300;
   umax = kmax = dmax = emax = -1e300;
   logbuf.clear();
@@ -211,11 +211,11 @@ void ContactBook::finish(const double *p, double tag_a, double tag_b, double ten
 
 void ContactBook::vector(LAMMPS *lmp, double *out) const
 {
-  double sums[4] = {n_onset, n_bounded, n_end, static_cast<double>(logbuf.size() / LOG_NCOL)};
+  double sums[5] = {n_onset, n_bounded, n_end, static_cast<double>(logbuf.size() / LOG_NCOL), carried};
   double mins[5] = {umin, kmin, dmin, emin, 0.0};
   double maxs[5] = {umax, kmax, dmax, emax, 0.0};
-  double gs[4], gmin[5], gmax[5];
-  MPI_Allreduce(sums, gs, 4, MPI_DOUBLE, MPI_SUM, lmp->world);
+  double gs[5], gmin[5], gmax[5];
+  MPI_Allreduce(sums, gs, 5, MPI_DOUBLE, MPI_SUM, lmp->world);
   MPI_Allreduce(mins, gmin, 5, MPI_DOUBLE, MPI_MIN, lmp->world);
   MPI_Allreduce(maxs, gmax, 5, MPI_DOUBLE, MPI_MAX, lmp->world);
   const bool none = gs[0] == 0.0;
@@ -232,7 +232,7 @@ void ContactBook::vector(LAMMPS *lmp, double *out) const
   out[9] = none_ended ? 0.0 : gmin[3];
   out[10] = none_ended ? 0.0 : gmax[3];
   out[11] = gs[3];
-  out[12] = 0.0;
+  out[12] = gs[4];
 }
 
 void ContactBook::open_log(LAMMPS *lmp, const std::string &file, const std::string &header)

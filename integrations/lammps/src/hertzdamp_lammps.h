@@ -135,6 +135,11 @@ class ContactBook {
     if (x > hi) hi = x;
   }
   double n_onset = 0, n_bounded = 0, n_end = 0;
+
+ public:
+  double carried = 0;    // contacts carried through per-atom records (neighbor-list builds)
+
+ private:
   double umin = 1e300, umax = -1e300, kmin = 1e300, kmax = -1e300, dmin = 1e300, dmax = -1e300;
   double emin = 1e300, emax = -1e300;
   std::string logfile;

@@ -457,6 +457,7 @@ void PairGranularHertzdamp::history_from_atoms(FixHertzdampHistory *fix)
         std::memcpy(&pool[static_cast<size_t>(c) * NPAYLOAD], r, sizeof(double) * NPAYLOAD);
         cidx[offset[ii] + jj] = c;
         fix->transferred++;
+        book.carried += 1;
       }
     }
   }

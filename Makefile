@@ -7,7 +7,7 @@ PREFIX ?= $(CURDIR)/_install
 VENV := .venv
 FPM := $(VENV)/bin/fpm
 PYTHON ?= python3
-APT_PKGS := gfortran liblapack-dev libblas-dev libgsl-dev gnuplot-nox
+APT_PKGS := gfortran liblapack-dev libblas-dev libgsl-dev gnuplot-nox cmake pkg-config
 SUDO := $(shell [ "$$(id -u)" = 0 ] || echo sudo)
 
 # Optimised build of the library and the program (what users run and benchmark).
@@ -19,15 +19,15 @@ RELEASE_FLAGS := -O3 -march=x86-64-v2 -funroll-loops -fPIC
 TEST_FLAGS := -O2 -g -fPIC -fopenmp -Wall -Wextra -Wno-compare-reals -Werror -Wimplicit-interface -std=f2018 -fcheck=bounds,do,pointer -fbacktrace
 TEST_LINK := -fopenmp
 
-.PHONY: all deps run test build install clean lint series-data series-source fit-data fit-source bench
+.PHONY: all deps run test build install clean lint docs series-data series-source fit-data fit-source bench
 
 all: build
 
 # ---------------------------------------------------------------- set-up
-deps: .deps-apt $(FPM) $(VENV)/bin/fortitude
+deps: .deps-apt $(FPM) $(VENV)/bin/fortitude $(VENV)/bin/ford
 
 # Install only the Debian packages that are missing; a stamp keeps reruns silent.
-.deps-apt:
+.deps-apt: Makefile
 	@missing=""; for p in $(APT_PKGS); do \
 	  dpkg-query -W -f='$${Status}' $$p 2>/dev/null | grep -q "install ok installed" || missing="$$missing $$p"; \
 	done; \
@@ -50,20 +50,18 @@ $(VENV)/bin/fortitude: $(FPM)
 	$(VENV)/bin/pip install -q fortitude-lint==0.10.0
 	@touch $@
 
-# ---------------------------------------------------------------- build and run
-# fpm 0.12 sometimes recompiles an object without refreshing libhertzdamp.a: drop
-# the archives before every build so that programs never link stale code.
-STALE_ARCHIVES = rm -f build/gfortran_*/hertzdamp/libhertzdamp.a
+$(VENV)/bin/ford: $(FPM)
+	$(VENV)/bin/pip install -q ford==7.0.13
+	@touch $@
 
+# ---------------------------------------------------------------- build and run
 build: deps
-	@$(STALE_ARCHIVES)
 	$(FPM) build --flag "$(RELEASE_FLAGS)"
 
 run: build
 	@$(FPM) run hertzdamp --flag "$(RELEASE_FLAGS)" -- table
 
 test: deps
-	@$(STALE_ARCHIVES)
 	@$(FPM) build --tests --flag "$(TEST_FLAGS)" --link-flag "$(TEST_LINK)"
 	@$(FPM) build --flag "$(RELEASE_FLAGS)"
 	@bash test/run_tests.sh "$(FPM)" "$(TEST_FLAGS)" "$(RELEASE_FLAGS)" "$(TEST_LINK)"
@@ -72,7 +70,6 @@ test: deps
 # Series coefficients: the generator writes data/*.csv, the converter turns them into
 # Fortran source.  `make test` checks that both are in sync (test/sync_series.sh).
 series-data: deps
-	@$(STALE_ARCHIVES)
 	$(FPM) run hertzdamp-gen-series --flag "$(RELEASE_FLAGS)" -- data
 
 series-source:
@@ -88,18 +85,24 @@ bench: build
 # fit-data: run the generator (reference integrator at tol 1e-15 + LAPACK) -> CSV (~20 s).
 # fit-source: CSV -> Fortran module (deterministic; test/cli_sync_fit.sh checks it).
 fit-data: deps
-	@$(STALE_ARCHIVES)
 	$(FPM) run hertzdamp-gen-fit --flag "$(RELEASE_FLAGS)" -- data/fit_coefficients.csv
 
 fit-source:
 	$(PYTHON) tools/fit_csv_to_f90.py data/fit_coefficients.csv src/hertzdamp_fit_data.f90
 
 # ---------------------------------------------------------------- install
-install: build
-	@bash tools/install.sh "$(FPM)" "$(RELEASE_FLAGS)" "$(PREFIX)"
+# CMake builds and installs the core library (shared and static), its modules, the C
+# header, the legacy include file, pkg-config and CMake package files, the program
+# and its man page (CMakeLists.txt); tools/install.sh stages and checks first.
+install: deps
+	@bash tools/install.sh "$(abspath $(PREFIX))"
+
+# API documentation of the core library (FORD, settings in ford.md) -> build/docs/index.html
+docs: deps
+	$(VENV)/bin/ford -q ford.md
 
 lint: deps
-	$(VENV)/bin/fortitude check src app test gen example
+	$(VENV)/bin/fortitude check src cli apps peers test gen example
 
 clean:
 	rm -rf build .deps-apt

@@ -35,7 +35,7 @@ program series_accuracy
     err = 0.0_wp
     do i = 1, npts
         call hertzdamp_pade_eval(alpha(i), e, tc, zm, tm, status=st)
-        if (st /= HERTZDAMP_SERIES_OK) cycle
+        if (st /= HD_OK) cycle
         do j = 1, 3
             if (alpha(i) <= amax(j)) err(j, :) = max(err(j, :), [abs(e / ref(i)%e - 1), abs(tc / ref(i)%tau_c - 1)])
         end do

@@ -1,16 +1,22 @@
 /*
  * hertzdamp.h: C interface of hertzdamp, the damped Hertzian normal collision.
  *
- *     m z'' = -d z' - k z^{3/2},  z(0) = 0,  z'(0) = u   (overlap z, THEORY.md)
+ *     m z'' = -d z' - k z^{3/2},  z(0) = 0,  z'(0) = u   (overlap z; doc/theory.md)
  *
- * Link:  cc prog.c -I<prefix>/include -L<prefix>/lib -lhertzdamp -lgfortran -lm
- *   (or: cc prog.c $(pkg-config --cflags --libs --static hertzdamp))
+ * Link (shared):  cc prog.c -I<prefix>/include -L<prefix>/lib -Wl,-rpath,<prefix>/lib -lhertzdamp
+ * Link (static):  cc prog.c -I<prefix>/include <prefix>/lib/libhertzdamp.a -lgfortran -lm
+ *   or pkg-config: $(pkg-config --cflags --libs hertzdamp), $(pkg-config --cflags --libs hertzdamp-static)
+ *   or CMake:      find_package(hertzdamp CONFIG REQUIRED), target hertzdamp::hertzdamp
  *
- * Every function returns a status: 0 (HD_OK) on success, otherwise one of the
- * codes below; hertzdamp_strerror() explains it.  Results are written through the
- * pointers, which must not be NULL (NULL gives HD_BAD_ARGUMENT).  The functions
- * keep no state and may be called from any number of threads at once.
- * Units: SI (kg, m, s); k in N m^-3/2, d in kg/s.
+ * Every function returns a status: 0 (HERTZDAMP_OK) on success, otherwise one of
+ * the codes below; hertzdamp_c_strerror() explains it.  Results are written
+ * through the pointers, which must not be NULL (NULL gives HERTZDAMP_BAD_ARGUMENT).
+ * The functions keep no state and may be called from any number of threads at
+ * once.  Units: SI (kg, m, s); k in N m^-3/2, d in kg/s.
+ *
+ * Every C name starts with hertzdamp_c_ (macros with HERTZDAMP_): the legacy
+ * Fortran externals (HERTZDAMP_INVERT ... -> hertzdamp_invert_) never collide
+ * with them, not even under -fno-underscoring.
  */
 #ifndef HERTZDAMP_H
 #define HERTZDAMP_H
@@ -20,56 +26,78 @@ extern "C" {
 #endif
 
 /* Status codes (the values of the Fortran module hertzdamp_status; stable). */
-#define HD_OK               0  /* success */
-#define HD_NO_REBOUND       1  /* overlap end, alpha >= alpha_c: e = 0, contact time infinite */
-#define HD_MAX_STEPS        2  /* integrator reached its step limit */
-#define HD_STEP_UNDERFLOW   3  /* step size collapsed below round-off */
-#define HD_BAD_ALPHA        4  /* alpha not finite or outside the supported range */
-#define HD_BAD_END          5  /* contact-end definition not 0 (overlap) or 1 (force) */
-#define HD_BAD_TOL          6  /* tolerance not in [1e-15, 1e-2] */
-#define HD_BAD_MASS         7  /* mass not finite and positive */
-#define HD_BAD_VELOCITY     8  /* impact velocity not finite and positive */
-#define HD_BAD_STIFFNESS    9  /* stiffness not finite and positive */
-#define HD_BAD_DAMPING     10  /* damping not finite and non-negative */
-#define HD_BAD_TIME        11  /* contact time not finite and positive */
-#define HD_BAD_RESTITUTION 12  /* restitution outside the supported range */
-#define HD_OUT_OF_RANGE    13  /* a result overflows or underflows double precision */
-#define HD_NOT_SUPPORTED   14  /* method does not support this contact-end definition */
-#define HD_NO_CONVERGENCE  15  /* an iteration did not converge */
-#define HD_BAD_ORDER       16  /* series order outside the stored range */
-#define HD_BAD_KPHYS       17  /* physical stiffness bound not finite and positive */
-#define HD_BAD_ARGUMENT    18  /* any other invalid argument (e.g. a NULL pointer) */
-#define HD_OUTSIDE_VALIDITY 19 /* alpha outside the validity range of the method (series, pade, fit, compact) */
+#define HERTZDAMP_OK                   0  /* success */
+#define HERTZDAMP_NO_REBOUND           1  /* overlap end with alpha >= alpha_c: e = 0, tau_c = +inf */
+#define HERTZDAMP_MAX_STEPS            2  /* integrator reached its step limit */
+#define HERTZDAMP_STEP_UNDERFLOW       3  /* step size collapsed below round-off */
+#define HERTZDAMP_BAD_ALPHA            4  /* alpha not finite or outside the supported range */
+#define HERTZDAMP_BAD_END              5  /* contact-end definition not 0 (overlap) or 1 (force) */
+#define HERTZDAMP_BAD_TOL              6  /* tolerance not in [1e-15, 1e-2] */
+#define HERTZDAMP_BAD_MASS             7  /* mass not finite and positive */
+#define HERTZDAMP_BAD_VELOCITY         8  /* impact velocity not finite and positive */
+#define HERTZDAMP_BAD_STIFFNESS        9  /* stiffness not finite and positive */
+#define HERTZDAMP_BAD_DAMPING         10  /* damping not finite and non-negative */
+#define HERTZDAMP_BAD_TIME            11  /* contact time not finite and positive */
+#define HERTZDAMP_BAD_RESTITUTION     12  /* restitution outside the supported range */
+#define HERTZDAMP_OUT_OF_RANGE        13  /* a result overflows or underflows double precision */
+#define HERTZDAMP_NOT_SUPPORTED       14  /* method does not support this contact-end definition */
+#define HERTZDAMP_NO_CONVERGENCE      15  /* an iteration did not converge */
+#define HERTZDAMP_BAD_ORDER           16  /* series order outside the stored range */
+#define HERTZDAMP_BAD_KPHYS           17  /* physical stiffness bound not finite and positive */
+#define HERTZDAMP_BAD_ARGUMENT        18  /* any other invalid argument */
+#define HERTZDAMP_OUTSIDE_VALIDITY    19  /* alpha outside the range where the method is valid */
+#define HERTZDAMP_INACCURATE          20  /* the method's error estimate exceeds the accuracy asked */
 
 /* Contact-end definitions (argument `end`). */
-#define HD_END_OVERLAP 0  /* contact ends when the overlap returns to zero */
-#define HD_END_FORCE   1  /* contact ends when the total contact force returns to zero */
+#define HERTZDAMP_END_OVERLAP 0  /* contact ends when the overlap returns to zero */
+#define HERTZDAMP_END_FORCE   1  /* contact ends when the total contact force returns to zero */
 
 /*
  * Inverse problem (adaptive collision time): the Hertz stiffness *k [N m^-3/2] and
- * linear damping *d [kg/s] that give restitution coefficient e (1e-3 <= e <= 1 for the
- * overlap end, 1e-4 <= e <= 1 for the force end) and
- * contact time tc [s] to a contact of effective mass m [kg] hit at speed u [m/s],
- * with contact end `end` (HD_END_OVERLAP or HD_END_FORCE).
- * On failure *k = *d = 0.
+ * linear damping *d [kg/s] that give restitution coefficient e (1e-3 <= e <= 1 for
+ * the overlap end, 1e-4 <= e <= 1 for the force end) and contact time tc [s] to a
+ * contact of effective mass m [kg] hit at relative normal speed u [m/s] > 0, with
+ * contact end `end`.  On failure *k = *d = 0.
  */
-int hertzdamp_invert(double e, double tc, double m, double u, int end,
-                     double *k, double *d);
+int hertzdamp_c_invert(double e, double tc, double m, double u, int end,
+                       double *k, double *d);
+
+/*
+ * hertzdamp_c_invert with the physical-stiffness bound k_phys = (4/3) E* sqrt(R*):
+ * where k_phys <= k the contact keeps *k = k_phys and
+ * *d = alpha m^{3/5} k_phys^{2/5} u^{1/5} (it is then shorter than tc).
+ */
+int hertzdamp_c_invert_bounded(double e, double tc, double m, double u, double k_phys,
+                               int end, double *k, double *d);
+
+/*
+ * hertzdamp_c_invert for n contacts: status[i] is the status of contact i.  Returns
+ * HERTZDAMP_OK when all succeeded, else the first non-zero status.
+ */
+int hertzdamp_c_invert_n(int n, const double *e, const double *tc, const double *m,
+                         const double *u, int end, double *k, double *d, int *status);
+
+/*
+ * The constants of a material pair: *alpha = alpha(e) and *tau_c = tau_c(alpha(e)),
+ * which depend only on e and the contact end.  Per contact (mass m, speed u,
+ * contact time T_c):  k = m (tau_c/T_c)^{5/2} u^{-1/2},  d = alpha m tau_c/T_c.
+ */
+int hertzdamp_c_pair(double e, int end, double *alpha, double *tau_c);
 
 /*
  * Forward problem: restitution coefficient *e and contact time *tc [s] of a contact
  * with stiffness k, damping d, effective mass m hit at speed u.
  * Without rebound (overlap end, too much damping): *e = 0, *tc = DBL_MAX and the
- * status is HD_NO_REBOUND.  On other failures *e = *tc = 0.
+ * status is HERTZDAMP_NO_REBOUND.  On other failures *e = *tc = 0.
  */
-int hertzdamp_forward(double k, double d, double m, double u, int end,
-                      double *e, double *tc);
+int hertzdamp_c_forward(double k, double d, double m, double u, int end,
+                        double *e, double *tc);
 
 /*
  * A static, NUL-terminated English message for a status code (never NULL; do not
  * free it).  Unknown codes give "unknown status code".
  */
-const char *hertzdamp_strerror(int status);
+const char *hertzdamp_c_strerror(int status);
 
 #ifdef __cplusplus
 }

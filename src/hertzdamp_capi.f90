@@ -1,5 +1,9 @@
 !> C entry points, declared in `include/hertzdamp.h`.
 !>
+!> Every C name carries the prefix `hertzdamp_c_`, so that it never collides with
+!> the legacy Fortran externals (`hertzdamp_invert_` ...), not even when a host
+!> compiles with -fno-underscoring.
+!>
 !> Scalars are passed by value, results through pointers, and every function
 !> returns an `int` status (0 = success; the codes of `hertzdamp_status`, mirrored
 !> as `#define`s in the header).  No callbacks cross the boundary and there is no
@@ -11,11 +15,12 @@ module hertzdamp_capi
     use, intrinsic :: iso_c_binding, only: c_double, c_int, c_char, c_ptr, c_loc, c_null_char
     use hertzdamp_status, only: HD_OK, HD_BAD_ARGUMENT, hertzdamp_message_table, hertzdamp_max_status, &
                                 hertzdamp_message_len
-    use hertzdamp_flat, only: flat_invert, flat_forward
+    use hertzdamp_flat, only: flat_invert, flat_invert_bounded, flat_pair, flat_forward
     implicit none
     private
 
-    public :: hertzdamp_c_invert, hertzdamp_c_forward, hertzdamp_c_strerror
+    public :: hertzdamp_c_invert, hertzdamp_c_invert_bounded, hertzdamp_c_invert_n, hertzdamp_c_pair, &
+              hertzdamp_c_forward, hertzdamp_c_strerror
 
     integer, private :: i_   ! implied-do index of the initialisation below (never used at run time)
     !> The NUL-terminated messages of hertzdamp_message_table (the one table behind
@@ -28,12 +33,12 @@ module hertzdamp_capi
 
 contains
 
-    !> `int hertzdamp_invert(double e, double tc, double m, double u, int end,
+    !> `int hertzdamp_c_invert(double e, double tc, double m, double u, int end,
     !> double *k, double *d)`: stiffness and damping for restitution e and contact
     !> time tc (THEORY.md section 6).  On failure *k = *d = 0; a NULL k or d gives
     !> HD_BAD_ARGUMENT.
     integer(c_int) function hertzdamp_c_invert(e, tc, m, u, iend, k, d) &
-            bind(c, name='hertzdamp_invert') result(status)
+            bind(c, name='hertzdamp_c_invert') result(status)
         real(c_double), value, intent(in) :: e       !! target restitution: [1e-3, 1] (overlap), [1e-4, 1] (force)
         real(c_double), value, intent(in) :: tc      !! target contact time [s]
         real(c_double), value, intent(in) :: m       !! effective mass [kg]
@@ -51,12 +56,80 @@ contains
         status = int(st, c_int)
     end function hertzdamp_c_invert
 
-    !> `int hertzdamp_forward(double k, double d, double m, double u, int end,
+    !> `int hertzdamp_c_invert_bounded(double e, double tc, double m, double u,
+    !> double k_phys, int end, double *k, double *d)`: hertzdamp_c_invert with the
+    !> physical-stiffness bound (k = k_phys where k_phys <= k).  On failure
+    !> *k = *d = 0; a NULL k or d gives HD_BAD_ARGUMENT.
+    integer(c_int) function hertzdamp_c_invert_bounded(e, tc, m, u, k_phys, iend, k, d) &
+            bind(c, name='hertzdamp_c_invert_bounded') result(status)
+        real(c_double), value, intent(in) :: e       !! target restitution
+        real(c_double), value, intent(in) :: tc      !! target contact time [s]
+        real(c_double), value, intent(in) :: m       !! effective mass [kg]
+        real(c_double), value, intent(in) :: u       !! impact velocity [m/s]
+        real(c_double), value, intent(in) :: k_phys  !! physical stiffness bound [N m^-3/2]
+        integer(c_int), value, intent(in) :: iend    !! contact end: 0 overlap, 1 force
+        real(c_double), intent(out), optional :: k   !! Hertz stiffness [N m^-3/2]
+        real(c_double), intent(out), optional :: d   !! damping coefficient [kg/s]
+        real(c_double) :: k_, d_
+        integer :: st
+        status = HD_BAD_ARGUMENT
+        if (.not. (present(k) .and. present(d))) return
+        call flat_invert_bounded(e, tc, m, u, k_phys, int(iend), k_, d_, st)
+        k = k_
+        d = d_
+        status = int(st, c_int)
+    end function hertzdamp_c_invert_bounded
+
+    !> `int hertzdamp_c_invert_n(int n, const double *e, const double *tc, const double *m,
+    !> const double *u, int end, double *k, double *d, int *status)`: hertzdamp_c_invert
+    !> for n contacts; status[i] is each contact's status.  Returns HD_OK when every
+    !> contact succeeded, else the first non-zero status; n <= 0 does nothing.
+    integer(c_int) function hertzdamp_c_invert_n(n, e, tc, m, u, iend, k, d, st) &
+            bind(c, name='hertzdamp_c_invert_n') result(status)
+        integer(c_int), value, intent(in) :: n       !! number of contacts
+        real(c_double), intent(in) :: e(n)           !! target restitution coefficients (n)
+        real(c_double), intent(in) :: tc(n)          !! target contact times [s] (n)
+        real(c_double), intent(in) :: m(n)           !! effective masses [kg] (n)
+        real(c_double), intent(in) :: u(n)           !! impact velocities [m/s] (n)
+        integer(c_int), value, intent(in) :: iend    !! contact end: 0 overlap, 1 force
+        real(c_double), intent(out) :: k(n)          !! Hertz stiffnesses [N m^-3/2] (n)
+        real(c_double), intent(out) :: d(n)          !! damping coefficients [kg/s] (n)
+        integer(c_int), intent(out) :: st(n)         !! status of each contact (n)
+        integer :: i, s
+        status = HD_OK
+        do i = 1, n
+            call flat_invert(e(i), tc(i), m(i), u(i), int(iend), k(i), d(i), s)
+            st(i) = int(s, c_int)
+            if (status == HD_OK) status = st(i)
+        end do
+    end function hertzdamp_c_invert_n
+
+    !> `int hertzdamp_c_pair(double e, int end, double *alpha, double *tau_c)`: the
+    !> constants of a material pair, alpha(e) and tau_c(alpha(e)); per contact
+    !> k = m (tau_c/T_c)^{5/2} u^{-1/2} and d = alpha m tau_c/T_c.  On failure
+    !> *alpha = *tau_c = 0; a NULL pointer gives HD_BAD_ARGUMENT.
+    integer(c_int) function hertzdamp_c_pair(e, iend, alpha, tau_c) &
+            bind(c, name='hertzdamp_c_pair') result(status)
+        real(c_double), value, intent(in) :: e          !! target restitution
+        integer(c_int), value, intent(in) :: iend       !! contact end: 0 overlap, 1 force
+        real(c_double), intent(out), optional :: alpha  !! damping parameter alpha(e)
+        real(c_double), intent(out), optional :: tau_c  !! dimensionless contact duration
+        real(c_double) :: a_, t_
+        integer :: st
+        status = HD_BAD_ARGUMENT
+        if (.not. (present(alpha) .and. present(tau_c))) return
+        call flat_pair(e, int(iend), a_, t_, st)
+        alpha = a_
+        tau_c = t_
+        status = int(st, c_int)
+    end function hertzdamp_c_pair
+
+    !> `int hertzdamp_c_forward(double k, double d, double m, double u, int end,
     !> double *e, double *tc)`: restitution and contact time of a contact.  Without
     !> rebound *e = 0, *tc = DBL_MAX and the status is HD_NO_REBOUND (1); on other
     !> failures *e = *tc = 0; a NULL e or tc gives HD_BAD_ARGUMENT.
     integer(c_int) function hertzdamp_c_forward(k, d, m, u, iend, e, tc) &
-            bind(c, name='hertzdamp_forward') result(status)
+            bind(c, name='hertzdamp_c_forward') result(status)
         real(c_double), value, intent(in) :: k       !! Hertz stiffness [N m^-3/2]
         real(c_double), value, intent(in) :: d       !! damping coefficient [kg/s]
         real(c_double), value, intent(in) :: m       !! effective mass [kg]
@@ -74,9 +147,9 @@ contains
         status = int(st, c_int)
     end function hertzdamp_c_forward
 
-    !> `const char *hertzdamp_strerror(int status)`: a static NUL-terminated English
+    !> `const char *hertzdamp_c_strerror(int status)`: a static NUL-terminated English
     !> message for a status code (never NULL; unknown codes get "unknown status code").
-    type(c_ptr) function hertzdamp_c_strerror(status) bind(c, name='hertzdamp_strerror') result(msg)
+    type(c_ptr) function hertzdamp_c_strerror(status) bind(c, name='hertzdamp_c_strerror') result(msg)
         integer(c_int), value, intent(in) :: status  !! a status code
         integer :: i
         i = hertzdamp_max_status + 1

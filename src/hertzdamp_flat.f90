@@ -7,7 +7,7 @@ module hertzdamp_flat
     use hertzdamp_kinds, only: hertzdamp_rk
     use hertzdamp_status, only: HD_OK, HD_NO_REBOUND
     use hertzdamp_methods, only: hertzdamp_forward_dim, HD_METHOD_FIT
-    use hertzdamp_inverse, only: mod_invert => hertzdamp_invert
+    use hertzdamp_inverse, only: mod_invert => hertzdamp_invert, hertzdamp_invert_alpha
     implicit none
     private
 
@@ -17,7 +17,7 @@ module hertzdamp_flat
     !> which needs nothing but the Fortran runtime.
     integer, parameter, public :: legacy_method = HD_METHOD_FIT
 
-    public :: flat_invert, flat_forward
+    public :: flat_invert, flat_invert_bounded, flat_pair, flat_forward
 
 contains
 
@@ -38,6 +38,42 @@ contains
             d = 0.0_wp
         end if
     end subroutine flat_invert
+
+    !> flat_invert with the physical-stiffness bound k_phys: where k_phys <= k the
+    !> contact keeps k = k_phys and d = alpha m^(3/5) k_phys^(2/5) u^(1/5) (it is then
+    !> shorter than tc).  On failure k = d = 0 and status names the bad argument.
+    pure elemental subroutine flat_invert_bounded(e, tc, m, u, k_phys, iend, k, d, status)
+        real(wp), intent(in) :: e        !! target restitution coefficient
+        real(wp), intent(in) :: tc       !! target contact time [s]
+        real(wp), intent(in) :: m        !! effective mass [kg]
+        real(wp), intent(in) :: u        !! impact velocity [m s^-1]
+        real(wp), intent(in) :: k_phys   !! physical stiffness (4/3) E* sqrt(R*) [N m^-3/2]
+        integer, intent(in) :: iend      !! 0 overlap, 1 force
+        real(wp), intent(out) :: k       !! Hertz stiffness [N m^-3/2]
+        real(wp), intent(out) :: d       !! damping coefficient [kg s^-1]
+        integer, intent(out) :: status   !! HD_OK or an error code
+        call mod_invert(e, tc, m, u, iend, k, d, status, k_phys=k_phys, method=legacy_method)
+        if (status /= HD_OK) then
+            k = 0.0_wp
+            d = 0.0_wp
+        end if
+    end subroutine flat_invert_bounded
+
+    !> The per-material-pair constants alpha(e) and tau_c(alpha(e)): a host stores them
+    !> once per pair and forms, per contact, k = m (tau_c/T_c)^(5/2) u^(-1/2) and
+    !> d = alpha m tau_c/T_c.  On failure alpha = tau_c = 0.
+    pure elemental subroutine flat_pair(e, iend, alpha, tau_c, status)
+        real(wp), intent(in) :: e        !! target restitution coefficient
+        integer, intent(in) :: iend      !! 0 overlap, 1 force
+        real(wp), intent(out) :: alpha   !! damping parameter alpha(e)
+        real(wp), intent(out) :: tau_c   !! dimensionless contact duration tau_c(alpha)
+        integer, intent(out) :: status   !! HD_OK or an error code
+        call hertzdamp_invert_alpha(e, iend, alpha, tau_c, status, method=legacy_method)
+        if (status /= HD_OK) then
+            alpha = 0.0_wp
+            tau_c = 0.0_wp
+        end if
+    end subroutine flat_pair
 
     !> Restitution and contact time of a contact (k, d, m, u).  Without rebound
     !> e = 0, tc = huge(1.0_wp) and status = HD_NO_REBOUND; on any other failure

@@ -22,16 +22,16 @@ module hertzdamp_inverse
     use hertzdamp_status, only: HD_OK, HD_BAD_RESTITUTION, HD_BAD_TIME, HD_BAD_MASS, HD_BAD_VELOCITY, &
                                 HD_BAD_KPHYS, HD_BAD_END, HD_BAD_TOL, HD_BAD_ARGUMENT, HD_NOT_SUPPORTED, &
                                 HD_NO_CONVERGENCE, HD_NO_REBOUND, HD_OUT_OF_RANGE, HD_END_OVERLAP, HD_END_FORCE, &
-                                HD_OUTSIDE_VALIDITY
+                                HD_OUTSIDE_VALIDITY, HD_INACCURATE
     use hertzdamp_scaling, only: hertzdamp_safe_exp, hertzdamp_safe_exp_or_zero
     use hertzdamp_constants, only: hertzdamp_e1, hertzdamp_tau_c0
     use hertzdamp_rk45, only: hertzdamp_collision, hertzdamp_rk45_collide
     use hertzdamp_methods, only: HD_METHOD_RK45, HD_METHOD_SERIES, HD_METHOD_PADE, HD_METHOD_COMPACT, &
-                                 HD_METHOD_FIT, HD_METHOD_ITERATIVE
+                                 HD_METHOD_FIT, HD_METHOD_ITERATIVE, HD_METHOD_FIRST_ORDER, hertzdamp_forward_alpha, &
+                                 hertzdamp_default_accuracy
     use hertzdamp_fit, only: hertzdamp_fit_inverse, hertzdamp_fit_e_min_overlap, hertzdamp_fit_e_min_force
     use hertzdamp_compact, only: hertzdamp_compact_inverse
-    use hertzdamp_series, only: hertzdamp_series_eval, hertzdamp_pade_eval, HERTZDAMP_SERIES_OK, &
-                                HERTZDAMP_SERIES_INACCURATE, hertzdamp_pade_alpha_max
+    use hertzdamp_series, only: hertzdamp_pade_alpha_max
     use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
     implicit none
     private
@@ -49,7 +49,7 @@ contains
 
     !> k and d such that the collision has restitution e and contact time tc.
     pure elemental subroutine hertzdamp_invert(e, tc, m, u, iend, k, d, status, alpha, tstar, tau_c, &
-                                               bound_active, k_phys, method, tol)
+                                               bound_active, k_phys, method, tol, accuracy)
         real(wp), intent(in) :: e                      !! target restitution coefficient, e_min <= e <= 1
         real(wp), intent(in) :: tc                     !! target contact time T_c [s]
         real(wp), intent(in) :: m                      !! effective mass [kg]
@@ -65,6 +65,7 @@ contains
         real(wp), intent(in), optional :: k_phys       !! physical stiffness bound [N m^-3/2]
         integer, intent(in), optional :: method        !! HD_METHOD_FIT (default), _COMPACT, _ITERATIVE or _RK45
         real(wp), intent(in), optional :: tol          !! tolerance of the iterative method (default 1e-10)
+        real(wp), intent(in), optional :: accuracy     !! relative accuracy asked of series and Pade (default 1e-10)
         real(wp) :: a, tau, ts, lk, lts
         logical :: bound
         integer :: meth
@@ -88,7 +89,7 @@ contains
                 ! the hot path of DEM codes: straight to the approximant (it checks e and iend)
                 call hertzdamp_fit_inverse(e, iend, a, tau, status)
             else
-                call hertzdamp_invert_alpha(e, iend, a, tau, status, meth, tol)
+                call hertzdamp_invert_alpha(e, iend, a, tau, status, meth, tol, accuracy)
             end if
         end if
         if (status == HD_OK) then
@@ -140,15 +141,19 @@ contains
     end subroutine hertzdamp_invert
 
     !> The dimensionless inverse e -> (alpha, tau_c) by the chosen method.
-    pure elemental subroutine hertzdamp_invert_alpha(e, iend, alpha, tau_c, status, method, tol)
+    !> These are the constants of a material pair: they depend on e and the contact end
+    !> only (HERTZDAMP_PAIR, hertzdamp_c_pair).
+    pure elemental subroutine hertzdamp_invert_alpha(e, iend, alpha, tau_c, status, method, tol, accuracy)
         real(wp), intent(in) :: e                !! restitution coefficient, e_min <= e <= 1
         integer, intent(in) :: iend              !! HD_END_OVERLAP or HD_END_FORCE
         real(wp), intent(out) :: alpha           !! damping parameter
         real(wp), intent(out) :: tau_c           !! dimensionless contact duration
         integer, intent(out) :: status           !! HD_OK or an error code
-        integer, intent(in), optional :: method  !! HD_METHOD_FIT (default), _COMPACT, _ITERATIVE, _RK45
+        integer, intent(in), optional :: method  !! HD_METHOD_FIT (default), _COMPACT, _SERIES, _PADE,
+                                                 !! _FIRST_ORDER, _ITERATIVE, _RK45
         real(wp), intent(in), optional :: tol    !! iterative tolerance (default 1e-10, within [1e-15, 1e-2])
-        real(wp) :: emin, tol_
+        real(wp), intent(in), optional :: accuracy !! relative accuracy asked of series and Pade (default 1e-10)
+        real(wp) :: emin, tol_, acc
         integer :: meth
         alpha = 0.0_wp
         tau_c = 0.0_wp
@@ -169,6 +174,10 @@ contains
             call hertzdamp_fit_inverse(e, iend, alpha, tau_c, status)
         case (HD_METHOD_COMPACT)
             call hertzdamp_compact_inverse(e, iend, alpha, tau_c, status)
+        case (HD_METHOD_FIRST_ORDER)
+            ! e = 1 - e1 alpha + O(alpha^2), tau_c = tau_c(0) + O(alpha) (both ends)
+            alpha = (1.0_wp - e) / hertzdamp_e1()
+            tau_c = hertzdamp_tau_c0()
         case (HD_METHOD_ITERATIVE, HD_METHOD_RK45)
             tol_ = hertzdamp_invert_default_tol
             if (present(tol)) tol_ = tol
@@ -182,7 +191,9 @@ contains
                 status = HD_NOT_SUPPORTED   ! the force definition has no Taylor series
                 return
             end if
-            call series_inverse(e, meth, alpha, tau_c, status)
+            acc = hertzdamp_default_accuracy
+            if (present(accuracy)) acc = accuracy
+            call series_inverse(e, meth, acc, alpha, tau_c, status)
         case default
             status = HD_BAD_ARGUMENT
         end select
@@ -191,12 +202,14 @@ contains
     !> Invert the truncated series (default order) or its Pade summation: a few Newton
     !> steps on ln e(alpha) = ln e with the derivative of the same formula (central
     !> difference), no ODE solves.  Valid where the formula is (series |alpha| < 1,
-    !> Pade alpha <= 0.8), otherwise HD_OUTSIDE_VALIDITY.
-    pure subroutine series_inverse(e, meth, alpha, tau_c, status)
-        real(wp), intent(in) :: e
+    !> Pade alpha <= 0.8), otherwise HD_OUTSIDE_VALIDITY; where the formula's own error
+    !> estimate at the solution exceeds `accuracy` (relative), HD_INACCURATE.
+    pure subroutine series_inverse(e, meth, accuracy, alpha, tau_c, status)
+        real(wp), intent(in) :: e, accuracy
         integer, intent(in) :: meth
         real(wp), intent(out) :: alpha, tau_c
         integer, intent(out) :: status
+        type(hertzdamp_collision) :: r
         real(wp) :: lt, a, g, gp, gm, h, step, ee, amax
         integer :: it
         alpha = 0.0_wp
@@ -205,7 +218,7 @@ contains
         lt = log(e)
         if (lt == 0.0_wp) return
         ! start from the first-order law, inside the range where the formula is valid
-        ! (series: |alpha| < 1 -- with status OK up to 0.8 -- Pade: alpha <= 0.8)
+        ! (series: |alpha| < 1, Pade: alpha <= 0.8)
         amax = hertzdamp_pade_alpha_max
         if (meth == HD_METHOD_SERIES) amax = 0.999_wp
         a = min(-lt / hertzdamp_e1(), 0.99_wp * amax)
@@ -226,8 +239,14 @@ contains
             call series_ln_e(a, meth, g, tau_c, status)
             if (abs(g - lt) > 1.0e-12_wp * abs(lt)) status = HD_OUTSIDE_VALIDITY
         end if
-        if (status /= HD_OK) then
+        if (status == HD_OK) then
+            ! the formula's own error estimate at the solution
+            r = hertzdamp_forward_alpha(a, HD_END_OVERLAP, meth, accuracy=accuracy)
+            if (r%status /= HD_OK) status = merge(HD_INACCURATE, HD_OUTSIDE_VALIDITY, r%status == HD_INACCURATE)
+        else
             status = HD_OUTSIDE_VALIDITY
+        end if
+        if (status /= HD_OK) then
             alpha = 0.0_wp
             tau_c = 0.0_wp
             return
@@ -235,24 +254,19 @@ contains
         alpha = a
     end subroutine series_inverse
 
-    !> ln e and tau_c of the series or Pade formula at alpha (status 0 = valid there).
+    !> ln e and tau_c of the series or Pade formula at alpha (status HD_OK where the
+    !> formula is defined, whatever its error estimate).
     pure subroutine series_ln_e(a, meth, lne, tau_c, status)
         real(wp), intent(in) :: a
         integer, intent(in) :: meth
         real(wp), intent(out) :: lne, tau_c
         integer, intent(out) :: status
-        real(wp) :: e
-        integer :: st
-        if (meth == HD_METHOD_SERIES) then
-            call hertzdamp_series_eval(a, e, tau_c, status=st)
-        else
-            call hertzdamp_pade_eval(a, e, tau_c, status=st)
-        end if
-        ! the series is usable (as in the forward problem) up to |alpha| < 1
-        status = merge(HD_OK, HD_OUTSIDE_VALIDITY, (st == HERTZDAMP_SERIES_OK .or. &
-                       (meth == HD_METHOD_SERIES .and. st == HERTZDAMP_SERIES_INACCURATE)) .and. e > 0.0_wp)
+        type(hertzdamp_collision) :: r
+        r = hertzdamp_forward_alpha(a, HD_END_OVERLAP, meth, accuracy=huge(1.0_wp))
+        status = r%status
+        tau_c = r%tau_c
         lne = 0.0_wp
-        if (status == HD_OK) lne = log(e)
+        if (status == HD_OK) lne = log(r%e)
     end subroutine series_ln_e
 
     !> Safeguarded secant (bracketing, bisection fallback) on g(alpha) = ln e(alpha) - ln e

@@ -11,6 +11,9 @@
 !>       CALL HERTZDAMP_INVERT(E, TC, M, U, IEND, K, D, IERR)
 !>       IF (IERR .NE. 0) CALL HERTZDAMP_MESSAGE(IERR, TEXT)
 !>
+!> `include/hertzdamp.fi` declares them all with explicit interfaces (`INCLUDE
+!> 'hertzdamp.fi'` in fixed or free form): a REAL*4 argument, or DOUBLE PRECISION
+!> promoted by -fdefault-real-8, is then a compile error instead of garbage.
 !> The status codes are those of `hertzdamp_status` (0 = success, 1 = no rebound).
 
 !> Stiffness k and damping d that give restitution e and contact time tc to a
@@ -28,6 +31,41 @@ subroutine hertzdamp_invert(e, tc, m, u, iend, k, d, ierr)
     integer, intent(out) :: ierr          !! 0 on success, else a status code
     call flat_invert(e, tc, m, u, iend, k, d, ierr)
 end subroutine hertzdamp_invert
+
+!> hertzdamp_invert with the physical-stiffness bound kphys = (4/3) E* sqrt(R*): where
+!> kphys <= k the contact keeps k = kphys and d = alpha m^(3/5) kphys^(2/5) u^(1/5)
+!> (it is then shorter than tc, and the material's own stiffness is recovered once
+!> the time step is small enough).  On failure k = d = 0, ierr /= 0.
+subroutine hertzdamp_invert_bounded(e, tc, m, u, kphys, iend, k, d, ierr)
+    use hertzdamp_flat, only: flat_invert_bounded
+    implicit none
+    double precision, intent(in) :: e     !! target restitution coefficient
+    double precision, intent(in) :: tc    !! target contact time [s]
+    double precision, intent(in) :: m     !! effective mass [kg]
+    double precision, intent(in) :: u     !! impact velocity [m/s]
+    double precision, intent(in) :: kphys !! physical stiffness bound [N m^-3/2]
+    integer, intent(in) :: iend           !! contact end: 0 overlap, 1 force
+    double precision, intent(out) :: k    !! Hertz stiffness [N m^-3/2]
+    double precision, intent(out) :: d    !! linear damping coefficient [kg/s]
+    integer, intent(out) :: ierr          !! 0 on success, else a status code
+    call flat_invert_bounded(e, tc, m, u, kphys, iend, k, d, ierr)
+end subroutine hertzdamp_invert_bounded
+
+!> The constants of a material pair: alpha(e) and tau_c(alpha(e)), which depend on e
+!> and the contact end only.  Per contact (mass m, impact speed u, contact time tc):
+!>     k = m (tauc/tc)**2.5 / sqrt(u),   d = alpha m tauc/tc
+!> (d is the same for every contact of the pair with the same tc).  On failure
+!> alpha = tauc = 0, ierr /= 0.
+subroutine hertzdamp_pair(e, iend, alpha, tauc, ierr)
+    use hertzdamp_flat, only: flat_pair
+    implicit none
+    double precision, intent(in) :: e      !! target restitution coefficient
+    integer, intent(in) :: iend            !! contact end: 0 overlap, 1 force
+    double precision, intent(out) :: alpha !! damping parameter alpha(e)
+    double precision, intent(out) :: tauc  !! dimensionless contact duration tau_c(alpha)
+    integer, intent(out) :: ierr           !! 0 on success, else a status code
+    call flat_pair(e, iend, alpha, tauc, ierr)
+end subroutine hertzdamp_pair
 
 !> Restitution e and contact time tc of the contact (k, d, m, u).  Without rebound
 !> e = 0, tc = huge(1d0) and ierr = 1 (HD_NO_REBOUND); on other failures e = tc = 0.

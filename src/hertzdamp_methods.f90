@@ -4,12 +4,13 @@
 module hertzdamp_methods
     use hertzdamp_kinds, only: hertzdamp_rk
     use hertzdamp_status, only: HD_OK, HD_NO_REBOUND, HD_NOT_SUPPORTED, HD_BAD_ARGUMENT, HD_OUT_OF_RANGE, &
-                                HD_END_OVERLAP, HD_END_FORCE, HD_OUTSIDE_VALIDITY, HD_BAD_ORDER, HD_BAD_END
-    use hertzdamp_series, only: hertzdamp_series_eval, hertzdamp_pade_eval, HERTZDAMP_SERIES_OK, &
-                                HERTZDAMP_SERIES_INACCURATE, HERTZDAMP_SERIES_BAD_ORDER
+                                HD_END_OVERLAP, HD_END_FORCE, HD_OUTSIDE_VALIDITY, HD_BAD_ORDER, HD_BAD_END, &
+                                HD_INACCURATE
+    use hertzdamp_series, only: hertzdamp_series_eval, hertzdamp_pade_eval
     use hertzdamp_scaling, only: hertzdamp_reduce
     use hertzdamp_rk45, only: hertzdamp_collision, hertzdamp_rk45_collide, hertzdamp_rk45_default_tol
-    use hertzdamp_fit, only: hertzdamp_fit_forward
+    use hertzdamp_fit, only: hertzdamp_fit_forward, hertzdamp_approx_alpha_status
+    use hertzdamp_constants, only: hertzdamp_e1, hertzdamp_tau_c0
     use hertzdamp_compact, only: hertzdamp_compact_forward
     use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
     implicit none
@@ -23,26 +24,62 @@ module hertzdamp_methods
     integer, parameter, public :: HD_METHOD_COMPACT = 4  !! closed-form engineering formula
     integer, parameter, public :: HD_METHOD_FIT = 5      !! machine-precision approximant
     integer, parameter, public :: HD_METHOD_ITERATIVE = 6 !! inverse only: secant iteration over rk45 solves
+    integer, parameter, public :: HD_METHOD_FIRST_ORDER = 7 !! first order in alpha: e = 1 - e1 alpha, tau_c = tau_c(0)
 
-    !> Method names in the order of the HD_METHOD_* constants.
-    character(len=*), parameter, public :: hertzdamp_method_names = 'rk45 series pade compact fit iterative'
+    !> Method names in the order of the HD_METHOD_* constants (the one table of them).
+    character(len=11), parameter :: method_table(HD_METHOD_FIRST_ORDER) = [character(len=11) :: &
+        'rk45', 'series', 'pade', 'compact', 'fit', 'iterative', 'first-order']
 
-    public :: hertzdamp_forward_alpha, hertzdamp_forward_dim
+    !> Default accuracy asked of the series and Pade formulas (relative): where their own
+    !> error estimate exceeds it, they answer HD_INACCURATE instead of HD_OK.
+    real(wp), parameter, public :: hertzdamp_default_accuracy = 1.0e-10_wp
+
+    public :: hertzdamp_forward_alpha, hertzdamp_forward_dim, hertzdamp_method_name, hertzdamp_method_code
 
 contains
 
+    !> Name of a method code ('rk45', ..., 'first-order'; 'unknown' for others).
+    pure function hertzdamp_method_name(method) result(name)
+        integer, intent(in) :: method   !! HD_METHOD_*
+        character(len=:), allocatable :: name
+        if (method >= 1 .and. method <= size(method_table)) then
+            name = trim(method_table(method))
+        else
+            name = 'unknown'
+        end if
+    end function hertzdamp_method_name
+
+    !> Code of a method name (HD_METHOD_*), 0 when the name is not a method.
+    pure integer function hertzdamp_method_code(name) result(method)
+        character(len=*), intent(in) :: name   !! 'rk45', 'series', ..., 'first-order'
+        integer :: k
+        method = 0
+        do k = 1, HD_METHOD_FIRST_ORDER
+            if (hertzdamp_method_name(k) == name) then
+                method = k
+                return
+            end if
+        end do
+    end function hertzdamp_method_code
+
     !> e, tau_c, z_max, tau_max for one alpha by the chosen method.
-    pure elemental function hertzdamp_forward_alpha(alpha, iend, method, tol, order) result(res)
-        real(wp), intent(in) :: alpha            !! damping parameter
-        integer, intent(in) :: iend              !! HD_END_OVERLAP or HD_END_FORCE
-        integer, intent(in) :: method            !! HD_METHOD_*
-        real(wp), intent(in), optional :: tol    !! rk45 tolerance
-        integer, intent(in), optional :: order   !! series truncation order
+    !> Series and Pade check their own error estimate against `accuracy` (relative,
+    !> default hertzdamp_default_accuracy): beyond it the status is HD_INACCURATE.
+    !> On any status but HD_OK and HD_NO_REBOUND the results are 0.
+    pure elemental function hertzdamp_forward_alpha(alpha, iend, method, tol, order, accuracy) result(res)
+        real(wp), intent(in) :: alpha              !! damping parameter
+        integer, intent(in) :: iend                !! HD_END_OVERLAP or HD_END_FORCE
+        integer, intent(in) :: method              !! HD_METHOD_*
+        real(wp), intent(in), optional :: tol      !! rk45 tolerance
+        integer, intent(in), optional :: order     !! series truncation order
+        real(wp), intent(in), optional :: accuracy !! relative accuracy asked of series and Pade
         type(hertzdamp_collision) :: res
-        real(wp) :: tol_
+        real(wp) :: tol_, acc, err_e, err_tau
         integer :: st
         tol_ = hertzdamp_rk45_default_tol
         if (present(tol)) tol_ = tol
+        acc = hertzdamp_default_accuracy
+        if (present(accuracy)) acc = accuracy
         select case (method)
         case (HD_METHOD_RK45)
             res = hertzdamp_rk45_collide(alpha, iend, tol_)
@@ -56,6 +93,20 @@ contains
             res%alpha = alpha
             res%iend = iend
             call hertzdamp_compact_forward(alpha, iend, res%e, res%tau_c, res%status)
+        case (HD_METHOD_FIRST_ORDER)
+            ! e = 1 - e1 alpha, tau_c = tau_c(0): first order in alpha (z_max, tau_max: not provided)
+            res%alpha = alpha
+            res%iend = iend
+            res%status = hertzdamp_approx_alpha_status(alpha, iend)
+            if (res%status == HD_OK) then
+                res%e = 1.0_wp - hertzdamp_e1() * alpha
+                res%tau_c = hertzdamp_tau_c0()
+                if (.not. (res%e > 0.0_wp)) then
+                    res%status = HD_OUTSIDE_VALIDITY
+                    res%e = 0.0_wp
+                    res%tau_c = 0.0_wp
+                end if
+            end if
         case (HD_METHOD_SERIES, HD_METHOD_PADE)
             res%alpha = alpha
             res%iend = iend
@@ -65,16 +116,19 @@ contains
                 return
             end if
             if (method == HD_METHOD_SERIES) then
-                call hertzdamp_series_eval(alpha, res%e, res%tau_c, res%z_max, res%tau_max, order=order, status=st)
+                call hertzdamp_series_eval(alpha, res%e, res%tau_c, res%z_max, res%tau_max, order=order, &
+                                           err_e=err_e, err_tau=err_tau, status=st)
             else
-                call hertzdamp_pade_eval(alpha, res%e, res%tau_c, res%z_max, res%tau_max, status=st)
+                call hertzdamp_pade_eval(alpha, res%e, res%tau_c, res%z_max, res%tau_max, err_e=err_e, &
+                                         err_tau=err_tau, status=st)
             end if
             select case (st)
-            case (HERTZDAMP_SERIES_OK, HERTZDAMP_SERIES_INACCURATE)
+            case (HD_OK, HD_INACCURATE)
                 res%status = HD_OK
+                if (.not. (err_e <= acc * res%e .and. err_tau <= acc * res%tau_c)) res%status = HD_INACCURATE
                 ! a truncated series far from alpha = 0 can give a meaningless value
                 if (.not. (res%e > 0.0_wp .and. res%tau_c > 0.0_wp)) res%status = HD_OUTSIDE_VALIDITY
-            case (HERTZDAMP_SERIES_BAD_ORDER)
+            case (HD_BAD_ORDER)
                 res%status = HD_BAD_ORDER
             case default
                 res%status = HD_OUTSIDE_VALIDITY
@@ -95,7 +149,7 @@ contains
     !> The dimensional forward problem.  On no rebound e = 0 and T_c = +inf with
     !> status HD_NO_REBOUND; on any other failure all outputs are 0.
     pure elemental subroutine hertzdamp_forward_dim(k, d, m, u, iend, method, alpha, tstar, e, tc, &
-                                                   zeta_max, status, tol, order)
+                                                   zeta_max, status, tol, order, accuracy)
         real(wp), intent(in) :: k                !! Hertz stiffness [N m^-3/2]
         real(wp), intent(in) :: d                !! damping coefficient [kg s^-1]
         real(wp), intent(in) :: m                !! effective mass [kg]
@@ -110,13 +164,14 @@ contains
         integer, intent(out) :: status           !! HD_OK, HD_NO_REBOUND or an error
         real(wp), intent(in), optional :: tol    !! rk45 tolerance
         integer, intent(in), optional :: order   !! series order
+        real(wp), intent(in), optional :: accuracy !! relative accuracy asked of series and Pade
         type(hertzdamp_collision) :: r
         e = 0.0_wp
         tc = 0.0_wp
         zeta_max = 0.0_wp
         call hertzdamp_reduce(k, d, m, u, alpha, tstar, status)
         if (status /= HD_OK) return
-        r = hertzdamp_forward_alpha(alpha, iend, method, tol, order)
+        r = hertzdamp_forward_alpha(alpha, iend, method, tol, order, accuracy)
         status = r%status
         if (status /= HD_OK .and. status /= HD_NO_REBOUND) then
             alpha = 0.0_wp

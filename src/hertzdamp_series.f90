@@ -20,23 +20,20 @@ module hertzdamp_series
                                        pade_tau_c_den2, &
                                    pade_z_max_num, pade_z_max_den, pade_tau_max_num, &
                                        pade_tau_max_den
+    use hertzdamp_status, only: HD_OK, HD_INACCURATE, HD_OUTSIDE_VALIDITY, HD_BAD_ORDER
     use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
     implicit none (type, external)
     private
 
     integer, parameter :: wp = hertzdamp_rk
 
-    !> Status: success.
-    integer, parameter, public :: HERTZDAMP_SERIES_OK = 0
-    !> Status: values computed, but |alpha| lies beyond the range in which the
-    !> truncated series was validated (0.8 < |alpha| < 1); trust the error estimate only.
-    integer, parameter, public :: HERTZDAMP_SERIES_INACCURATE = 1
-    !> Status: alpha not finite, or outside the range of the formula (series:
-    !> |alpha| >= 1, near the radius of convergence 1.1265; Pade: alpha outside
-    !> [0, 0.8]); outputs are 0 and the error estimates huge().
-    integer, parameter, public :: HERTZDAMP_SERIES_OUT_OF_RANGE = 2
-    !> Status: requested truncation order outside 0..hertzdamp_series_max_order.
-    integer, parameter, public :: HERTZDAMP_SERIES_BAD_ORDER = 3
+    ! Statuses (hertzdamp_status): HD_OK; HD_INACCURATE: values computed, but |alpha|
+    ! lies beyond the range in which the truncated series was validated
+    ! (0.8 < |alpha| < 1), trust the error estimate only; HD_OUTSIDE_VALIDITY: alpha
+    ! not finite, or outside the range of the formula (series: |alpha| >= 1, near the
+    ! radius of convergence 1.128; Pade: alpha outside [0, 0.8]), outputs 0 and the
+    ! error estimates huge(); HD_BAD_ORDER: truncation order outside
+    ! 0..hertzdamp_series_max_order.
 
     !> Highest order stored (the coefficients are n = 0..max_order).
     integer, parameter, public :: hertzdamp_series_max_order = series_nrows - 1
@@ -53,8 +50,10 @@ module hertzdamp_series
     !> (max relative error 7.3e-11 for e and 3.9e-11 for tau_c there).
     real(wp), parameter, public :: hertzdamp_pade_alpha_max = 0.8_wp
 
-    !> Geometric ratio of the coefficient tail, |c_N / c_{N-1}| (the larger of e
-    !> and tau_c; 0.847 for N = 24), a ratio-test estimate of 1/radius (1/1.1265).
+    !> Geometric ratio of the coefficient tail, |c_N / c_{N-1}| at N = 24, the larger
+    !> of e (0.792) and tau_c (0.847).  It is a ratio-test estimate of 1/radius that
+    !> has not converged at N = 24: the Domb-Sykes fit of doc/series.md gives the
+    !> radius 1.127 +- 0.002 = alpha_c, i.e. 1/radius = 0.887.
     real(wp), parameter :: tail_ratio = &
         max(abs(series_tau_c(series_nrows - 1) / series_tau_c(series_nrows - 2)), &
             abs(series_e(series_nrows - 1) / series_e(series_nrows - 2)))
@@ -62,7 +61,7 @@ module hertzdamp_series
     real(wp), parameter :: series_alpha_ok = 0.8_wp    ! status OK below this |alpha|
     real(wp), parameter :: series_alpha_max = 1.0_wp   ! out of range from here
 
-    public :: hertzdamp_series_eval, hertzdamp_pade_eval, hertzdamp_series_message
+    public :: hertzdamp_series_eval, hertzdamp_pade_eval
 
 contains
 
@@ -94,24 +93,24 @@ contains
             optional :: order     !! truncation order (default hertzdamp_series_default_order)
         real(wp), intent(out), optional :: err_e   !! estimated absolute error of e
         real(wp), intent(out), optional :: err_tau !! estimated absolute error of tau_c
-        integer, intent(out), optional :: status   !! HERTZDAMP_SERIES_* status (0 = ok)
+        integer, intent(out), optional :: status   !! HD_OK, HD_INACCURATE, HD_OUTSIDE_VALIDITY or HD_BAD_ORDER
         integer :: n, st
         real(wp) :: ee, et
 
         n = hertzdamp_series_default_order
         if (present(order)) n = order
-        st = HERTZDAMP_SERIES_OK
+        st = HD_OK
         if (n < 0 .or. n > hertzdamp_series_max_order) then
-            st = HERTZDAMP_SERIES_BAD_ORDER
+            st = HD_BAD_ORDER
         else if (.not. ieee_is_finite(alpha)) then
-            st = HERTZDAMP_SERIES_OUT_OF_RANGE
+            st = HD_OUTSIDE_VALIDITY
         else if (abs(alpha) >= series_alpha_max) then
-            st = HERTZDAMP_SERIES_OUT_OF_RANGE
+            st = HD_OUTSIDE_VALIDITY
         else if (abs(alpha) > series_alpha_ok) then
-            st = HERTZDAMP_SERIES_INACCURATE
+            st = HD_INACCURATE
         end if
         if (present(status)) status = st
-        if (st == HERTZDAMP_SERIES_BAD_ORDER .or. st == HERTZDAMP_SERIES_OUT_OF_RANGE) then
+        if (st == HD_BAD_ORDER .or. st == HD_OUTSIDE_VALIDITY) then
             call no_result(e, tau_c, z_max, tau_max, err_e, err_tau)
             return
         end if
@@ -141,16 +140,16 @@ contains
         real(wp), intent(out), optional :: tau_max !! time of deepest overlap
         real(wp), intent(out), optional :: err_e   !! estimated absolute error of e
         real(wp), intent(out), optional :: err_tau !! estimated absolute error of tau_c
-        integer, intent(out), optional :: status   !! HERTZDAMP_SERIES_* status (0 = ok)
+        integer, intent(out), optional :: status   !! HD_OK, HD_INACCURATE, HD_OUTSIDE_VALIDITY or HD_BAD_ORDER
         logical :: bad
         bad = .not. ieee_is_finite(alpha)
         if (.not. bad) bad = alpha < 0.0_wp .or. alpha > hertzdamp_pade_alpha_max
         if (bad) then
-            if (present(status)) status = HERTZDAMP_SERIES_OUT_OF_RANGE
+            if (present(status)) status = HD_OUTSIDE_VALIDITY
             call no_result(e, tau_c, z_max, tau_max, err_e, err_tau)
             return
         end if
-        if (present(status)) status = HERTZDAMP_SERIES_OK
+        if (present(status)) status = HD_OK
         e = horner(pade_e_num, alpha) / horner(pade_e_den, alpha)
         tau_c = horner(pade_tau_c_num, alpha) / horner(pade_tau_c_den, alpha)
         if (present(z_max)) z_max = horner(pade_z_max_num, alpha) / horner(pade_z_max_den, alpha)
@@ -160,26 +159,6 @@ contains
         if (present(err_tau)) err_tau = abs(tau_c - horner(pade_tau_c_num2, &
             alpha) / horner(pade_tau_c_den2, alpha))
     end subroutine hertzdamp_pade_eval
-
-    !> Message for a HERTZDAMP_SERIES_* status.
-    pure function hertzdamp_series_message(status) result(msg)
-        integer, intent(in) :: status          !! status returned by an eval routine
-        character(len=:), allocatable :: msg   !! human-readable description
-        select case (status)
-        case (HERTZDAMP_SERIES_OK)
-            msg = 'ok'
-        case (HERTZDAMP_SERIES_INACCURATE)
-            msg = 'alpha beyond the validated range of the series (0.8 < |alpha| < 1): ' // &
-                  'see the error estimate'
-        case (HERTZDAMP_SERIES_OUT_OF_RANGE)
-            msg = 'alpha not finite or outside the range of the formula ' // &
-                  '(series |alpha| < 1, Pade 0 <= alpha <= 0.8)'
-        case (HERTZDAMP_SERIES_BAD_ORDER)
-            msg = 'truncation order outside 0..hertzdamp_series_max_order'
-        case default
-            msg = 'unknown status'
-        end select
-    end function hertzdamp_series_message
 
     !> Horner value of sum_k c(k) x^k (c indexed from 1 here, holding orders 0..).
     pure real(wp) function horner(c, x)

@@ -27,6 +27,7 @@ module hertzdamp_status
     integer, parameter, public :: HD_BAD_KPHYS = 17        !! physical stiffness bound not finite and positive
     integer, parameter, public :: HD_BAD_ARGUMENT = 18     !! any other invalid argument
     integer, parameter, public :: HD_OUTSIDE_VALIDITY = 19 !! alpha outside the range where the method is valid
+    integer, parameter, public :: HD_INACCURATE = 20       !! the method's error estimate exceeds the accuracy asked
 
     !> Contact ends when the overlap returns to zero (default).
     integer, parameter, public :: HD_END_OVERLAP = 0
@@ -36,7 +37,7 @@ module hertzdamp_status
     !> Length of the stored messages (each fits, blank-padded).
     integer, parameter, public :: hertzdamp_message_len = 192
     !> Largest status code with a message of its own.
-    integer, parameter, public :: hertzdamp_max_status = 19
+    integer, parameter, public :: hertzdamp_max_status = 20
     !> The message of every status code 0..hertzdamp_max_status, then that of unknown
     !> codes: the one table behind hertzdamp_message and the C hertzdamp_strerror.
     character(len=hertzdamp_message_len), parameter, public :: &
@@ -65,6 +66,8 @@ module hertzdamp_status
         'invalid argument', &
         'alpha outside the validity range of the method (series: |alpha| < 1; pade: 0 <= alpha <= 0.8; ' // &
             'fit: alpha >= 0, force alpha <= 52.5; compact: force alpha <= 2.9); use rk45', &
+        'inaccurate: the method''s own error estimate exceeds the accuracy asked (or alpha lies ' // &
+            'beyond its validated range); use fit or rk45', &
         'unknown status code']
 
     public :: hertzdamp_message, hertzdamp_end_name

@@ -119,13 +119,13 @@ contains
         order = int(r * 30) - 2
         call hertzdamp_series_eval(random_alpha(), e, tc, zm, tm, order=order, err_e=ee, err_tau=et, status=st)
         n_calls = n_calls + 1
-        if (st == HERTZDAMP_SERIES_OK .and. .not. all(ieee_is_finite([e, tc, zm, tm, ee, et]))) then
+        if (st == HD_OK .and. .not. all(ieee_is_finite([e, tc, zm, tm, ee, et]))) then
           n_bad_finite = n_bad_finite + 1
         end if
-        if (st /= HERTZDAMP_SERIES_OK .and. len_trim(hertzdamp_series_message(st)) == 0) n_no_message = n_no_message + 1
+        if (st /= HD_OK .and. len_trim(hertzdamp_message(st)) == 0) n_no_message = n_no_message + 1
         call hertzdamp_pade_eval(random_alpha(), e, tc, zm, tm, status=st)
         n_calls = n_calls + 1
-        if (st == HERTZDAMP_SERIES_OK .and. .not. all(ieee_is_finite([e, tc, zm, tm]))) n_bad_finite = n_bad_finite + 1
+        if (st == HD_OK .and. .not. all(ieee_is_finite([e, tc, zm, tm]))) n_bad_finite = n_bad_finite + 1
     end subroutine fuzz_series
 
     !> The method dispatch and the dimensional forward problem with the cheap methods.

@@ -5,14 +5,13 @@
 program test_gsl_peer
     use hertzdamp_kinds, only: hertzdamp_rk
     use hertzdamp_testing, only: test_suite, new_suite
-    use hertzdamp_gsl, only: hertzdamp_gsl_collide, gsl_sf_beta, HERTZDAMP_GSL_OK, &
-        HERTZDAMP_GSL_NO_REBOUND, HERTZDAMP_GSL_BAD_INPUT, HERTZDAMP_GSL_RKF45, &
-        HERTZDAMP_GSL_RK8PD, HERTZDAMP_GSL_OVERLAP, HERTZDAMP_GSL_FORCE
+    use hertzdamp_gsl, only: hertzdamp_gsl_collide, gsl_sf_beta, HERTZDAMP_GSL_RKF45, HERTZDAMP_GSL_RK8PD
+    use hertzdamp_status, only: HD_OK, HD_NO_REBOUND, HD_BAD_ARGUMENT, HD_END_OVERLAP, HD_END_FORCE
     use, intrinsic :: ieee_arithmetic, only: ieee_is_finite, ieee_is_nan
     implicit none
 
     integer, parameter :: wp = hertzdamp_rk
-    integer, parameter :: ov = HERTZDAMP_GSL_OVERLAP, fo = HERTZDAMP_GSL_FORCE
+    integer, parameter :: ov = HD_END_OVERLAP, fo = HD_END_FORCE
     integer, parameter :: rkf45 = HERTZDAMP_GSL_RKF45, rk8pd = HERTZDAMP_GSL_RK8PD
 
     type(test_suite) :: s
@@ -50,14 +49,14 @@ contains
         call s%check_close(zmax0, 1.0933620739432780_wp, 1e-15_wp, 'closed form z_max(0)')
         call s%check_close(tc0, 3.2180654597190431_wp, 1e-14_wp, 'closed form tau_c(0)')
         call solve(0.0_wp, ov, 1e-14_wp, rk8pd, r, st, nev)
-        call s%check(st == HERTZDAMP_GSL_OK, 'alpha=0 status')
+        call s%check(st == HD_OK, 'alpha=0 status')
         call s%check_close(r(1), 1.0_wp, 1e-11_wp, 'alpha=0 e = 1')
         call s%check_close(r(2), tc0, 1e-11_wp, 'alpha=0 tau_c')
         call s%check_close(r(3), zmax0, 1e-11_wp, 'alpha=0 z_max')
         call s%check_close(r(4), 0.5_wp * tc0, 1e-11_wp, 'alpha=0 tau_max = tau_c/2')
         ! the force definition coincides with the overlap one at alpha = 0
         call solve(0.0_wp, fo, 1e-14_wp, rk8pd, r, st, nev)
-        call s%check(st == HERTZDAMP_GSL_OK, 'alpha=0 force status')
+        call s%check(st == HD_OK, 'alpha=0 force status')
         call s%check_close(r(1), 1.0_wp, 1e-11_wp, 'alpha=0 force e = 1')
         call s%check_close(r(2), tc0, 1e-11_wp, 'alpha=0 force tau_c')
     end subroutine test_elastic
@@ -91,7 +90,7 @@ contains
             call solve(alphas(i), ov, 1e-13_wp, rk8pd, r, st, nev)
             ab = -alphas(i) * r(1)**(-0.2_wp)
             call solve(ab, ov, 1e-13_wp, rk8pd, rb, stb, nev)
-            call s%check(st == HERTZDAMP_GSL_OK .and. stb == HERTZDAMP_GSL_OK, &
+            call s%check(st == HD_OK .and. stb == HD_OK, &
                 'time reversal status' // trim(lab))
             call s%check(rb(1) > 1.0_wp, 'energy injection rebounds faster' // trim(lab))
             call s%check_close(r(1) * rb(1), 1.0_wp, 1e-10_wp, &
@@ -114,7 +113,7 @@ contains
             write (lab, '(a,f5.2)') ' overlap alpha=', alphas(i)
             call solve(alphas(i), ov, 1e-12_wp, rkf45, r4, st4, nev)
             call solve(alphas(i), ov, 1e-14_wp, rk8pd, r8, st8, nev)
-            call s%check(st4 == HERTZDAMP_GSL_OK .and. st8 == HERTZDAMP_GSL_OK, &
+            call s%check(st4 == HD_OK .and. st8 == HD_OK, &
                 'rkf45/rk8pd status' // trim(lab))
             do k = 1, 4
                 call s%check_close(r4(k), r8(k), 1e-9_wp, 'rkf45 = rk8pd' // trim(lab))
@@ -124,7 +123,7 @@ contains
             write (lab, '(a,f5.1)') ' force alpha=', alphas_f(i)
             call solve(alphas_f(i), fo, 1e-12_wp, rkf45, r4, st4, nev)
             call solve(alphas_f(i), fo, 1e-14_wp, rk8pd, r8, st8, nev)
-            call s%check(st4 == HERTZDAMP_GSL_OK .and. st8 == HERTZDAMP_GSL_OK, &
+            call s%check(st4 == HD_OK .and. st8 == HD_OK, &
                 'rkf45/rk8pd status' // trim(lab))
             ! tau_c of the force definition is ill-conditioned at large alpha: the force
             ! -alpha z' - z^{3/2} = z'' crosses zero with slope 1.5 z^{1/2} z' ~ e, so
@@ -144,7 +143,7 @@ contains
         do m = rkf45, rk8pd
             do i = 1, size(alphas)
                 call solve(alphas(i), ov, 1e-10_wp, m, r, st, nev)
-                call s%check(st == HERTZDAMP_GSL_NO_REBOUND, 'no rebound status')
+                call s%check(st == HD_NO_REBOUND, 'no rebound status')
                 call s%check(nev < 5000, 'no rebound found quickly')
                 call s%check(r(1) <= 0.0_wp .and. r(1) >= 0.0_wp .and. r(2) > huge(1.0_wp), &
                     'no rebound: e = 0, tau_c = Inf')
@@ -154,7 +153,7 @@ contains
         end do
         ! just below alpha_c there still is a rebound
         call solve(1.12_wp, ov, 1e-12_wp, rk8pd, r, st, nev)
-        call s%check(st == HERTZDAMP_GSL_OK .and. r(1) > 0.0_wp .and. r(1) < 0.01_wp, &
+        call s%check(st == HD_OK .and. r(1) > 0.0_wp .and. r(1) < 0.01_wp, &
             'alpha=1.12 rebounds weakly')
     end subroutine test_no_rebound
 
@@ -165,13 +164,13 @@ contains
         integer :: st, sto, nev, i
         do i = 1, size(alphas)
             call solve(alphas(i), fo, 1e-10_wp, rk8pd, r, st, nev)
-            call s%check(st == HERTZDAMP_GSL_OK .and. r(1) > 0.0_wp .and. r(1) < 1.0_wp, &
+            call s%check(st == HD_OK .and. r(1) > 0.0_wp .and. r(1) < 1.0_wp, &
                 'force definition rebounds')
             call s%check(r(2) > r(4) .and. ieee_is_finite(r(2)), 'force: tau_c > tau_max')
         end do
         call solve(0.5_wp, fo, 1e-12_wp, rk8pd, r, st, nev)
         call solve(0.5_wp, ov, 1e-12_wp, rk8pd, ro, sto, nev)
-        call s%check(st == HERTZDAMP_GSL_OK .and. sto == HERTZDAMP_GSL_OK, 'alpha=0.5 status')
+        call s%check(st == HD_OK .and. sto == HD_OK, 'alpha=0.5 status')
         call s%check(r(1) > ro(1), 'force e > overlap e at alpha=0.5')
         call s%check(r(2) < ro(2), 'force tau_c < overlap tau_c at alpha=0.5')
         call s%check_close(r(3), ro(3), 1e-14_wp, 'same turning point for both definitions')
@@ -188,7 +187,7 @@ contains
         do i = -5, 11
             a = 0.1_wp * i
             call solve(a, ov, 1e-10_wp, rk8pd, r, st, nev)
-            ok = ok .and. st == HERTZDAMP_GSL_OK .and. r(1) < e_prev .and. r(2) > t_prev
+            ok = ok .and. st == HD_OK .and. r(1) < e_prev .and. r(2) > t_prev
             e_prev = r(1)
             t_prev = r(2)
         end do
@@ -200,13 +199,13 @@ contains
         real(wp) :: r(4)
         integer :: st, nev
         call solve(-0.5_wp, fo, 1e-10_wp, rk8pd, r, st, nev)
-        call s%check(st == HERTZDAMP_GSL_BAD_INPUT, 'force with alpha < 0 rejected')
+        call s%check(st == HD_BAD_ARGUMENT, 'force with alpha < 0 rejected')
         call solve(0.5_wp, ov, 0.0_wp, rk8pd, r, st, nev)
-        call s%check(st == HERTZDAMP_GSL_BAD_INPUT, 'tol = 0 rejected')
+        call s%check(st == HD_BAD_ARGUMENT, 'tol = 0 rejected')
         call solve(0.5_wp, ov, 1e-10_wp, 7, r, st, nev)
-        call s%check(st == HERTZDAMP_GSL_BAD_INPUT, 'unknown method rejected')
+        call s%check(st == HD_BAD_ARGUMENT, 'unknown method rejected')
         call solve(0.5_wp, 2, 1e-10_wp, rk8pd, r, st, nev)
-        call s%check(st == HERTZDAMP_GSL_BAD_INPUT .and. .not. any(ieee_is_nan(r)), &
+        call s%check(st == HD_BAD_ARGUMENT .and. .not. any(ieee_is_nan(r)), &
             'unknown contact end rejected, no NaN')
     end subroutine test_bad_input
 

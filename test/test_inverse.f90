@@ -126,33 +126,66 @@ program test_inverse
 
 contains
 
-    !> The series and Pade inverses (Newton on the formulas) against the fit: they agree
-    !> to the accuracy of the formula (default-order series 1e-12 at alpha <= 0.2, about
-    !> 1e-5 at 0.8; Pade 1e-10 on [0, 0.8]).
+    !> The series and Pade inverses (Newton on the formulas) against the fit (1e-13):
+    !> without the accuracy guard they agree to the accuracy of the formula
+    !> (default-order series 1e-12 at alpha <= 0.2, about 1e-5 at 0.8; Pade 1e-10 on
+    !> [0, 0.8]); with it (default 1e-10, or 1e-6) every answer with status HD_OK is
+    !> within that accuracy, and the guard lets the validated range through.
     subroutine series_inverse_checks()
         real(wp) :: e, af, tf, as, ts_, ap, tp
-        integer :: i, st1, st2, st3
+        real(wp), parameter :: accs(2) = [1.0e-10_wp, 1.0e-6_wp]
+        integer :: i, j, st1, st2, st3, n_ok(2)
         do i = 0, 40
             e = 0.14_wp + 0.86_wp * real(i, wp) / 40.0_wp
             call hertzdamp_invert_alpha(e, HD_END_OVERLAP, af, tf, st1)
-            call hertzdamp_invert_alpha(e, HD_END_OVERLAP, as, ts_, st2, method=HD_METHOD_SERIES)
-            call hertzdamp_invert_alpha(e, HD_END_OVERLAP, ap, tp, st3, method=HD_METHOD_PADE)
-            call s%check(st1 == HD_OK .and. st2 == HD_OK .and. st3 == HD_OK, 'series/pade inverse status')
+            call hertzdamp_invert_alpha(e, HD_END_OVERLAP, as, ts_, st2, method=HD_METHOD_SERIES, accuracy=huge(1.0_wp))
+            call hertzdamp_invert_alpha(e, HD_END_OVERLAP, ap, tp, st3, method=HD_METHOD_PADE, accuracy=huge(1.0_wp))
+            call s%check(st1 == HD_OK .and. st2 == HD_OK .and. st3 == HD_OK, 'series/pade inverse status (no guard)')
             call s%check(abs(as - af) <= merge(1.0e-11_wp, 1.0e-4_wp, af <= 0.2_wp) * max(af, 1.0e-3_wp), &
                          'series inverse agrees with fit')
             call s%check(abs(ap - af) <= 1.0e-9_wp * max(af, 1.0e-3_wp), 'pade inverse agrees with fit')
             call s%check(abs(tp - tf) <= 1.0e-9_wp * tf, 'pade tau_c agrees with fit')
         end do
+        do j = 1, 2
+            n_ok(j) = 0
+            do i = 0, 200
+                e = 0.05_wp + 0.95_wp * real(i, wp) / 200.0_wp
+                call hertzdamp_invert_alpha(e, HD_END_OVERLAP, af, tf, st1)
+                call hertzdamp_invert_alpha(e, HD_END_OVERLAP, as, ts_, st2, method=HD_METHOD_SERIES, accuracy=accs(j))
+                call s%check(st2 == HD_OK .or. st2 == HD_INACCURATE .or. st2 == HD_OUTSIDE_VALIDITY, &
+                             'series inverse with a guard: ok, inaccurate or outside validity')
+                if (st2 == HD_OK) then
+                    n_ok(j) = n_ok(j) + 1
+                    call s%check(abs(as - af) <= accs(j) * max(af, 1.0e-3_wp) .and. abs(ts_ - tf) <= accs(j) * tf, &
+                                 'series inverse with status ok is within the accuracy asked')
+                else
+                    call s%check(same(as, 0.0_wp) .and. same(ts_, 0.0_wp), 'series inverse refused: alpha = tau_c = 0')
+                end if
+                call hertzdamp_invert_alpha(e, HD_END_OVERLAP, ap, tp, st3, method=HD_METHOD_PADE, accuracy=accs(j))
+                if (st3 == HD_OK) call s%check(abs(ap - af) <= accs(j) * max(af, 1.0e-3_wp) .and. &
+                                               abs(tp - tf) <= accs(j) * tf, &
+                                               'pade inverse with status ok is within the accuracy asked')
+                ! the documented validated range: series at alpha <= 0.2 to 1e-12, Pade on [0, 0.8] to 1e-10
+                if (af <= 0.2_wp) call s%check(st2 == HD_OK, 'series inverse ok at alpha <= 0.2')
+            end do
+        end do
+        call s%check(n_ok(2) > n_ok(1), 'a looser accuracy lets more e through the series guard')
         call hertzdamp_invert_alpha(0.03_wp, HD_END_OVERLAP, as, ts_, st2, method=HD_METHOD_SERIES)
         call s%check(st2 == HD_OUTSIDE_VALIDITY .and. same(as, 0.0_wp), 'series inverse: e = 0.03 (alpha > 1) outside validity')
-        call hertzdamp_invert_alpha(0.1_wp, HD_END_OVERLAP, as, ts_, st2, method=HD_METHOD_SERIES)
+        call hertzdamp_invert_alpha(0.1_wp, HD_END_OVERLAP, as, ts_, st2, method=HD_METHOD_SERIES, accuracy=huge(1.0_wp))
         call hertzdamp_invert_alpha(0.1_wp, HD_END_OVERLAP, af, tf, st1)
         call s%check(st2 == HD_OK .and. abs(as - af) < 1.0e-2_wp * af, &
                      'series inverse at e = 0.1 (alpha 0.86 < 1, as the forward series) within its truncation error')
+        call hertzdamp_invert_alpha(0.1_wp, HD_END_OVERLAP, as, ts_, st2, method=HD_METHOD_SERIES)
+        call s%check(st2 == HD_INACCURATE, 'series inverse at e = 0.1 with the default guard: inaccurate')
         call hertzdamp_invert_alpha(0.1_wp, HD_END_OVERLAP, ap, tp, st3, method=HD_METHOD_PADE)
         call s%check(st3 == HD_OUTSIDE_VALIDITY, 'pade inverse: e = 0.1 (alpha > 0.8) outside validity')
         call hertzdamp_invert_alpha(0.5_wp, HD_END_FORCE, as, ts_, st2, method=HD_METHOD_PADE)
         call s%check(st2 == HD_NOT_SUPPORTED, 'pade inverse: force definition not supported')
+        ! first order: alpha = (1 - e)/e1, tau_c = tau_c(0), exact at e = 1 with slope -e1
+        call hertzdamp_invert_alpha(0.9_wp, HD_END_OVERLAP, as, ts_, st2, method=HD_METHOD_FIRST_ORDER)
+        call s%check(st2 == HD_OK .and. abs(as - 0.1_wp / hertzdamp_e1()) <= 1.0e-15_wp .and. &
+                     same(ts_, hertzdamp_tau_c0()), 'first-order inverse: alpha = (1 - e)/e1, tau_c = tau_c(0)')
     end subroutine series_inverse_checks
 
     !> Exact equality without -Wcompare-reals.

@@ -7,10 +7,10 @@
 !> fixed-form code are exercised by example/legacy_dem, built and run by
 !> test/cli_install.sh.
 program test_legacy
-    use hertzdamp, only: hertzdamp_rk, mod_invert => hertzdamp_invert, hertzdamp_forward_dim, &
+    use hertzdamp, only: hertzdamp_rk, mod_invert => hertzdamp_invert, hertzdamp_forward_dim, hertzdamp_invert_alpha, &
                          mod_message => hertzdamp_message, HD_OK, HD_NO_REBOUND, HD_BAD_RESTITUTION, &
                          HD_BAD_MASS, HD_BAD_END, HD_BAD_TIME, HD_BAD_VELOCITY, HD_BAD_STIFFNESS, &
-                         HD_BAD_DAMPING, HD_END_OVERLAP, HD_END_FORCE
+                         HD_BAD_DAMPING, HD_BAD_KPHYS, HD_END_OVERLAP, HD_END_FORCE
     use hertzdamp_flat, only: legacy_method
     use hertzdamp_testing, only: test_suite, new_suite
     use, intrinsic :: ieee_arithmetic, only: ieee_value, ieee_quiet_nan
@@ -24,6 +24,20 @@ program test_legacy
             double precision, intent(out) :: k, d
             integer, intent(out) :: ierr
         end subroutine hertzdamp_invert
+        subroutine hertzdamp_invert_bounded(e, tc, m, u, kphys, iend, k, d, ierr)
+            implicit none
+            double precision, intent(in) :: e, tc, m, u, kphys
+            integer, intent(in) :: iend
+            double precision, intent(out) :: k, d
+            integer, intent(out) :: ierr
+        end subroutine hertzdamp_invert_bounded
+        subroutine hertzdamp_pair(e, iend, alpha, tauc, ierr)
+            implicit none
+            double precision, intent(in) :: e
+            integer, intent(in) :: iend
+            double precision, intent(out) :: alpha, tauc
+            integer, intent(out) :: ierr
+        end subroutine hertzdamp_pair
         subroutine hertzdamp_forward(k, d, m, u, iend, e, tc, ierr)
             implicit none
             double precision, intent(in) :: k, d, m, u
@@ -53,7 +67,7 @@ program test_legacy
     real(wp), parameter :: tcs(nc) = [1.0e-4_wp, 5.0e-5_wp, 2.0e-3_wp, 1.0e-6_wp, 3.0e-4_wp]
     real(wp), parameter :: ms(nc) = [1.0e-3_wp, 2.0e-2_wp, 5.0_wp, 1.0e-9_wp, 0.3_wp]
     real(wp), parameter :: us(nc) = [1.0_wp, 0.01_wp, 3.0_wp, 20.0_wp, 0.5_wp]
-    real(wp) :: k, d, km, dm, e, tc, em, tcm, alpha, tstar, zmax, nan
+    real(wp) :: k, d, km, dm, e, tc, em, tcm, alpha, tstar, zmax, nan, tauc, am, taum, kb, db, kp
     real(wp) :: kn(nc + 1), dn(nc + 1)
     integer :: ierr, st, i, iend, ierrn(nc + 1)
     character(len=20) :: short, want_short
@@ -74,12 +88,46 @@ program test_legacy
             ! round trip through the legacy forward problem
             call hertzdamp_forward(k, d, ms(i), us(i), iend, e, tc, ierr)
             call suite%check(ierr == HD_OK, 'forward status after invert, end ' // cend)
-            call suite%check_close(e, es(i), 1.0e-9_wp, 'round trip e, end ' // cend)
-            call suite%check_close(tc, tcs(i), 1.0e-9_wp, 'round trip tc, end ' // cend)
+            ! the fit's stated round-trip accuracy (README: e 8.8e-13, T_c 1.7e-13 at worst)
+            call suite%check_close(e, es(i), 1.0e-12_wp, 'round trip e, end ' // cend)
+            call suite%check_close(tc, tcs(i), 1.0e-12_wp, 'round trip tc, end ' // cend)
             call hertzdamp_forward_dim(k, d, ms(i), us(i), iend, legacy_method, alpha, tstar, em, tcm, zmax, st)
             call suite%check(.not. (abs(e - em) > 0.0_wp .or. abs(tc - tcm) > 0.0_wp), &
                              'forward e, tc bit-identical to the module API, end ' // cend)
         end do
+
+        ! the pair constants and the bounded entry point
+        do i = 1, nc
+            call mod_invert(es(i), tcs(i), ms(i), us(i), iend, km, dm, st, method=legacy_method)
+            call hertzdamp_pair(es(i), iend, alpha, tauc, ierr)
+            call hertzdamp_invert_alpha(es(i), iend, am, taum, st, method=legacy_method)
+            call suite%check(ierr == HD_OK .and. .not. (abs(alpha - am) > 0.0_wp .or. abs(tauc - taum) > 0.0_wp), &
+                             'pair: alpha, tau_c bit-identical to the module API, end ' // cend)
+            ! the two documented per-contact formulas reproduce HERTZDAMP_INVERT
+            call suite%check_close(ms(i) * (tauc / tcs(i))**2.5_wp / sqrt(us(i)), km, 1.0e-14_wp, &
+                                   'pair: k = m (tau_c/T_c)^(5/2) u^(-1/2), end ' // cend)
+            call suite%check_close(alpha * ms(i) * tauc / tcs(i), dm, 1.0e-14_wp, &
+                                   'pair: d = alpha m tau_c/T_c, end ' // cend)
+            ! bounded: a soft k_phys is kept, with d = alpha m^(3/5) k_phys^(2/5) u^(1/5)
+            kp = 0.25_wp * km
+            call hertzdamp_invert_bounded(es(i), tcs(i), ms(i), us(i), kp, iend, kb, db, ierr)
+            call mod_invert(es(i), tcs(i), ms(i), us(i), iend, k, d, st, k_phys=kp, method=legacy_method)
+            call suite%check(ierr == HD_OK .and. .not. (abs(kb - k) > 0.0_wp .or. abs(db - d) > 0.0_wp), &
+                             'bounded: bit-identical to the module API with k_phys, end ' // cend)
+            call suite%check(.not. (abs(kb - kp) > 0.0_wp), 'bounded: k = k_phys when k_phys < k, end ' // cend)
+            call suite%check_close(db, alpha * ms(i)**0.6_wp * kp**0.4_wp * us(i)**0.2_wp, 1.0e-14_wp, &
+                                   'bounded: d = alpha m^(3/5) k_phys^(2/5) u^(1/5), end ' // cend, atol=1.0e-300_wp)
+            ! a stiff k_phys is not used: the unbounded k, d bit for bit
+            call hertzdamp_invert_bounded(es(i), tcs(i), ms(i), us(i), 4.0_wp * km, iend, kb, db, ierr)
+            call suite%check(ierr == HD_OK .and. .not. (abs(kb - km) > 0.0_wp .or. abs(db - dm) > 0.0_wp), &
+                             'bounded: stiff k_phys leaves k, d unchanged, end ' // cend)
+        end do
+        call hertzdamp_invert_bounded(0.5_wp, 1.0e-4_wp, 1.0_wp, 1.0_wp, -1.0_wp, iend, kb, db, ierr)
+        call suite%check(ierr == HD_BAD_KPHYS .and. .not. (abs(kb) > 0.0_wp .or. abs(db) > 0.0_wp), &
+                         'bounded: k_phys < 0 gives HD_BAD_KPHYS, k = d = 0')
+        call hertzdamp_pair(1.5_wp, iend, alpha, tauc, ierr)
+        call suite%check(ierr == HD_BAD_RESTITUTION .and. .not. (abs(alpha) > 0.0_wp .or. abs(tauc) > 0.0_wp), &
+                         'pair: e > 1 gives HD_BAD_RESTITUTION, alpha = tau_c = 0')
 
         ! the array version, with one bad contact at the end
         call hertzdamp_invert_n(nc + 1, [es, 1.5_wp], [tcs, 1.0e-4_wp], [ms, 1.0_wp], [us, 1.0_wp], &

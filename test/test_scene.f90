@@ -12,10 +12,9 @@
 !> - invalid scene files give a status and a message naming the line or key.
 program test_scene
     use hertzdamp, only: hertzdamp_rk, hertzdamp_collision, hertzdamp_rk45_collide, HD_OK, HD_END_OVERLAP, &
-                         HD_END_FORCE, HD_METHOD_ITERATIVE
+                         HD_END_FORCE, HD_METHOD_ITERATIVE, HD_METHOD_FIRST_ORDER
     use hertzdamp_dem, only: hertzdamp_dem_scene, hertzdamp_dem_result, hertzdamp_dem_check, hertzdamp_dem_run, &
-                             hertzdamp_dem_select, hertzdamp_dem_rule, hertzdamp_dem_cost_order, hertzdamp_dem_mass, &
-                             HD_DEM_FIRST_ORDER
+                             hertzdamp_dem_select, hertzdamp_dem_rule, hertzdamp_dem_cost_order, hertzdamp_dem_mass
     use hertzdamp_scene_io, only: hertzdamp_scene_read
     use hertzdamp_testing, only: test_suite, new_suite
     implicit none
@@ -192,7 +191,7 @@ contains
         ! method choice: nearly elastic chain (e = 0.98) is cheaper than the damped bed (e = 0.5)
         call s%check(findloc(hertzdamp_dem_cost_order, m_chain, dim=1) < &
                      findloc(hertzdamp_dem_cost_order, m_bed, dim=1), 'auto: elastic scene picks a cheaper rule')
-        call s%check(m_chain == HD_DEM_FIRST_ORDER, 'auto: elastic chain picks first-order')
+        call s%check(m_chain == HD_METHOD_FIRST_ORDER, 'auto: elastic chain picks first-order')
         ! ... and both meet their accuracy: alpha from the rule, e from the reference integrator
         call rule_alpha(chain, m_chain, alpha, st)
         r = hertzdamp_rk45_collide(alpha, chain%iend)

@@ -320,10 +320,8 @@ program test_series
     use hertzdamp_kinds, only: hertzdamp_rk
     use hertzdamp_testing, only: test_suite, new_suite
     use hertzdamp_series, only: hertzdamp_series_eval, hertzdamp_pade_eval, &
-        hertzdamp_series_message, &
-                                hertzdamp_series_default_order, hertzdamp_series_max_order, &
-                                HERTZDAMP_SERIES_OK, HERTZDAMP_SERIES_INACCURATE, &
-                                HERTZDAMP_SERIES_OUT_OF_RANGE, HERTZDAMP_SERIES_BAD_ORDER
+                                hertzdamp_series_default_order, hertzdamp_series_max_order
+    use hertzdamp_status, only: HD_OK, HD_INACCURATE, HD_OUTSIDE_VALIDITY, HD_BAD_ORDER, hertzdamp_message
     use hertzdamp_series_data, only: series_e, series_e_err, series_tau_c, series_tau_c_err, &
                                      series_z_max, series_tau_max
     use test_series_support, only: tr_residual, beta_ln_e, beta_tce, sensitivity_tolerance, &
@@ -394,7 +392,7 @@ program test_series
             call hertzdamp_series_eval(al, e, tc, z_max=zm, tau_max=tm, order=orders(j), &
                                        err_e=ee, err_tau=et, status=st)
             write (lab, '(a,f5.2,a,i0)') 'series alpha = ', al, ', order ', orders(j)
-            call s%check(st == HERTZDAMP_SERIES_OK, trim(lab) // ': status')
+            call s%check(st == HD_OK, trim(lab) // ': status')
             call s%check_close(e, re, 0.0_wp, trim(lab) // ': e', atol=ee + 10 * rerr + 1.0e-15_wp)
             call s%check_close(tc, rt, 0.0_wp, trim(lab) // ': tau_c', &
                 atol=et + 10 * rerr + 4.0e-15_wp)
@@ -414,7 +412,7 @@ program test_series
         call s%check_close(e, re, 1.0e-12_wp, 'default order, e, 1e-12')
         call s%check_close(tc, rt, 1.0e-12_wp, 'default order, tau_c, 1e-12')
         call hertzdamp_pade_eval(al, e, tc, z_max=zm, tau_max=tm, err_e=ee, err_tau=et, status=st)
-        call s%check(st == HERTZDAMP_SERIES_OK, 'pade status')
+        call s%check(st == HD_OK, 'pade status')
         call s%check_close(e, re, 1.0e-12_wp, 'pade e small alpha', atol=ee + 10 * rerr)
         call s%check_close(tc, rt, 1.0e-12_wp, 'pade tau_c small alpha', atol=et + 10 * rerr)
     end do
@@ -425,7 +423,7 @@ program test_series
         call reference_rk4(al, re, rt, rz, rm, rerr)
         call hertzdamp_pade_eval(al, e, tc, z_max=zm, tau_max=tm, err_e=ee, err_tau=et, status=st)
         write (lab, '(a,f5.2)') 'pade alpha = ', al
-        call s%check(st == HERTZDAMP_SERIES_OK, trim(lab) // ': status')
+        call s%check(st == HD_OK, trim(lab) // ': status')
         call s%check_close(e, re, 1.0e-9_wp, trim(lab) // ': e 1e-9', atol=10 * rerr)
         call s%check_close(tc, rt, 1.0e-9_wp, trim(lab) // ': tau_c 1e-9', atol=10 * rerr)
         call s%check_close(zm, rz, 1.0e-12_wp, trim(lab) // ': z_max', atol=10 * rerr)
@@ -445,22 +443,22 @@ program test_series
     ! --- status handling, elemental use
     nan = ieee_value(1.0_wp, ieee_quiet_nan)
     call hertzdamp_series_eval(nan, e, tc, err_e=ee, status=st)
-    call s%check(st == HERTZDAMP_SERIES_OUT_OF_RANGE .and. abs(e) + abs(tc) < tiny(1.0_wp), &
+    call s%check(st == HD_OUTSIDE_VALIDITY .and. abs(e) + abs(tc) < tiny(1.0_wp), &
         'NaN alpha: status 2, zeros')
     call hertzdamp_series_eval(0.9_wp, e, tc, status=st)
-    call s%check(st == HERTZDAMP_SERIES_INACCURATE .and. ieee_is_finite(e), &
+    call s%check(st == HD_INACCURATE .and. ieee_is_finite(e), &
         'alpha 0.9: status inaccurate')
     call hertzdamp_series_eval(1.2_wp, e, tc, status=st)
-    call s%check(st == HERTZDAMP_SERIES_OUT_OF_RANGE, 'alpha 1.2: out of range')
+    call s%check(st == HD_OUTSIDE_VALIDITY, 'alpha 1.2: out of range')
     call hertzdamp_series_eval(0.1_wp, e, tc, order=nmax + 1, status=st)
-    call s%check(st == HERTZDAMP_SERIES_BAD_ORDER, 'order too high: bad order')
+    call s%check(st == HD_BAD_ORDER, 'order too high: bad order')
     call hertzdamp_pade_eval(0.81_wp, e, tc, status=st)
-    call s%check(st == HERTZDAMP_SERIES_OUT_OF_RANGE, 'pade alpha 0.81: out of range')
+    call s%check(st == HD_OUTSIDE_VALIDITY, 'pade alpha 0.81: out of range')
     call hertzdamp_pade_eval(-0.1_wp, e, tc, status=st)
-    call s%check(st == HERTZDAMP_SERIES_OUT_OF_RANGE, 'pade alpha < 0: out of range')
-    call s%check(len(hertzdamp_series_message(HERTZDAMP_SERIES_OUT_OF_RANGE)) > 0, 'status message')
+    call s%check(st == HD_OUTSIDE_VALIDITY, 'pade alpha < 0: out of range')
+    call s%check(len(hertzdamp_message(HD_OUTSIDE_VALIDITY)) > 0, 'status message')
     call hertzdamp_series_eval(-0.3_wp, e, tc, status=st)
-    call s%check(st == HERTZDAMP_SERIES_OK .and. e > 1.0_wp, 'negative alpha: e > 1')
+    call s%check(st == HD_OK .and. e > 1.0_wp, 'negative alpha: e > 1')
     call hertzdamp_series_eval([0.1_wp, 0.2_wp, 0.3_wp], ea, ta, status=sta)
     call s%check(all(sta == 0) .and. ea(1) > ea(2) .and. ea(2) > ea(3) &
                  .and. ta(1) < ta(2) .and. ta(2) < ta(3), &

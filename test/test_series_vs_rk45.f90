@@ -20,7 +20,7 @@ program test_series_vs_rk45
         do n = 1, hertzdamp_series_max_order
             call hertzdamp_series_eval(alphas(i), e, tc, zm, tm, order=n, err_e=ee, err_tau=et, status=st)
             write (lab, '(a,f5.2,a,i0)') 'alpha=', alphas(i), ' N=', n
-            call s%check(st == HERTZDAMP_SERIES_OK, trim(lab) // ' status')
+            call s%check(st == HD_OK, trim(lab) // ' status')
             call s%check(abs(e - r%e) <= ee + ref_acc * r%e, trim(lab) // ' e within its error estimate')
             call s%check(abs(tc - r%tau_c) <= et + ref_acc * r%tau_c, trim(lab) // ' tau_c within its error estimate')
         end do
@@ -35,7 +35,7 @@ program test_series_vs_rk45
     do i = 0, 40
         r = hertzdamp_rk45_collide(0.02_wp * i, tol=ref_tol)
         call hertzdamp_pade_eval(0.02_wp * i, e, tc, zm, tm, status=st)
-        call s%check(st == HERTZDAMP_SERIES_OK, 'pade status')
+        call s%check(st == HD_OK, 'pade status')
         worst = max(worst, [rel_err(e, r%e), rel_err(tc, r%tau_c)])
     end do
     call s%check(worst(1) < 1.0e-9_wp, 'pade e within 1e-9 on [0, 0.8] (target 1e-6)')

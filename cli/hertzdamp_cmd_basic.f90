@@ -1,7 +1,7 @@
 !> The commands `table`, `forward` and `constants`.
 module hertzdamp_cmd_basic
     use hertzdamp, only: hertzdamp_rk, hertzdamp_collision, hertzdamp_forward_alpha, hertzdamp_forward_dim, &
-                         hertzdamp_method_names, hertzdamp_message, hertzdamp_alpha_c, hertzdamp_tau_c0, &
+                         hertzdamp_message, hertzdamp_alpha_c, hertzdamp_tau_c0, &
                          hertzdamp_z_max0, hertzdamp_e1, hertzdamp_rk45_default_tol, hertzdamp_end_name, &
                          hertzdamp_series_default_order, &
                          HD_OK, HD_NO_REBOUND, HD_END_OVERLAP, HD_METHOD_RK45, HD_METHOD_SERIES, HD_METHOD_PADE

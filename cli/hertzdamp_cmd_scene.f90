@@ -3,10 +3,9 @@
 !> energy/momentum checks, the cost, and the same scene with the iterative rule.
 module hertzdamp_cmd_scene
     use hertzdamp, only: hertzdamp_rk, hertzdamp_end_name, HD_OK, HD_METHOD_ITERATIVE, HD_METHOD_SERIES, &
-                         HD_METHOD_PADE, HD_METHOD_COMPACT, HD_METHOD_FIT
+                         HD_METHOD_PADE, HD_METHOD_COMPACT, HD_METHOD_FIT, HD_METHOD_FIRST_ORDER, hertzdamp_method_name
     use hertzdamp_dem, only: hertzdamp_dem_scene, hertzdamp_dem_result, hertzdamp_dem_check, hertzdamp_dem_run, &
-                             hertzdamp_dem_rule, hertzdamp_dem_select, hertzdamp_dem_method_name, &
-                             hertzdamp_dem_cost_order, HD_DEM_FIRST_ORDER
+                             hertzdamp_dem_rule, hertzdamp_dem_select, hertzdamp_dem_cost_order
     use hertzdamp_scene_io, only: hertzdamp_scene_read
     use hertzdamp_cli, only: cli_args, cli_buffer, parse_args, parse_choice, fail, quit, fmt_csv, &
                              EXIT_USAGE, EXIT_OK, EXIT_FAILURE, EXIT_NO_SOLUTION
@@ -79,7 +78,7 @@ contains
         else
             method = method_code(mchoice)
             c = findloc(hertzdamp_dem_cost_order, method, dim=1)
-            if (.not. avail(c)) call fail(EXIT_USAGE, 'method ' // hertzdamp_dem_method_name(method) // &
+            if (.not. avail(c)) call fail(EXIT_USAGE, 'method ' // hertzdamp_method_name(method) // &
                                           ' is not available in this build of the library')
             reason = 'requested; measured error ' // trim(fmt_csv(err(c)))
         end if
@@ -111,7 +110,7 @@ contains
     integer function method_code(k) result(m)
         integer, intent(in) :: k
         select case (k)
-        case (2); m = HD_DEM_FIRST_ORDER
+        case (2); m = HD_METHOD_FIRST_ORDER
         case (3); m = HD_METHOD_COMPACT
         case (4); m = HD_METHOD_SERIES
         case (5); m = HD_METHOD_PADE
@@ -216,13 +215,13 @@ contains
         end if
         call t%meta('accuracy', trim(fmt_csv(sc%accuracy)))
         call t%meta('dt', trim(fmt_csv(sc%dt)) // ' s')
-        call t%meta('method', hertzdamp_dem_method_name(method))
+        call t%meta('method', hertzdamp_method_name(method))
         call t%meta('why', reason)
         call t%meta('selection_time', trim(fmt_csv(t_select)) // ' s (one reference solve per candidate and target e)')
         do c = 1, 6
             write (b, '(i0)') c
             call t%str(trim(b))
-            call t%str(hertzdamp_dem_method_name(hertzdamp_dem_cost_order(c)))
+            call t%str(hertzdamp_method_name(hertzdamp_dem_cost_order(c)))
             call t%str(trim(merge('yes', 'no ', avail(c))))
             if (avail(c)) then
                 call t%num(err(c))
@@ -404,7 +403,7 @@ contains
         type(out_table) :: t
         call t%set_columns('rule,total_time_s,param_time_s,contacts,param_time_per_contact_s,speedup_total,speedup_params')
         call t%meta('timing', 'total: wall time of the run; params: the rule replayed on the run''s contacts')
-        call line(hertzdamp_dem_method_name(method), res, cost)
+        call line(hertzdamp_method_name(method), res, cost)
         if (method /= HD_METHOD_ITERATIVE) call line('iterative', res_it, cost_it)
         call add_section('cost', t, fmt, buf, nsec)
 

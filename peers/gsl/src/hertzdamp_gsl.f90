@@ -29,33 +29,26 @@ module hertzdamp_gsl
     use, intrinsic :: ieee_arithmetic, only: ieee_value, ieee_positive_inf, ieee_is_finite, &
         ieee_is_nan
     use hertzdamp_kinds, only: hertzdamp_rk
+    use hertzdamp_status, only: HD_OK, HD_NO_REBOUND, HD_MAX_STEPS, HD_BAD_ARGUMENT, HD_NO_CONVERGENCE, &
+                                HD_END_OVERLAP, HD_END_FORCE
     implicit none
     private
 
     integer, parameter :: wp = hertzdamp_rk
 
-    public :: hertzdamp_gsl_collide, hertzdamp_gsl_status_message
+    public :: hertzdamp_gsl_collide
     public :: gsl_sf_gamma, gsl_sf_beta
 
-    !> Status: the collision ended normally (rebound found).
-    integer, parameter, public :: HERTZDAMP_GSL_OK = 0
-    !> Status: overlap definition, no rebound (certified): e = 0, tau_c = +Inf.
-    integer, parameter, public :: HERTZDAMP_GSL_NO_REBOUND = 1
-    !> Status: the step limit was reached before the collision ended.
-    integer, parameter, public :: HERTZDAMP_GSL_MAX_STEPS = 2
-    !> Status: invalid argument (alpha, iend, tol or method).
-    integer, parameter, public :: HERTZDAMP_GSL_BAD_INPUT = 3
-    !> Status: a GSL routine failed (allocation, step size underflow, bad RHS value).
-    integer, parameter, public :: HERTZDAMP_GSL_FAILURE = 4
+    ! Statuses are those of the library (hertzdamp_status): HD_OK (rebound found),
+    ! HD_NO_REBOUND (overlap definition, certified: e = 0, tau_c = +Inf), HD_MAX_STEPS
+    ! (step limit reached before the collision ended), HD_BAD_ARGUMENT (alpha, iend, tol
+    ! or method invalid), HD_NO_CONVERGENCE (a GSL routine failed: allocation, step
+    ! size underflow, non-finite state).
 
     !> `method` value: GSL's embedded Runge-Kutta-Fehlberg 4(5).
     integer, parameter, public :: HERTZDAMP_GSL_RKF45 = 0
     !> `method` value: GSL's embedded Runge-Kutta Prince-Dormand 8(9).
     integer, parameter, public :: HERTZDAMP_GSL_RK8PD = 1
-    !> `iend` value: contact ends when the overlap z returns to zero.
-    integer, parameter, public :: HERTZDAMP_GSL_OVERLAP = 0
-    !> `iend` value: contact ends when the total force -alpha z' - z^{3/2} returns to zero.
-    integer, parameter, public :: HERTZDAMP_GSL_FORCE = 1
 
     !> Largest number of accepted steps of the main march.
     integer, parameter :: max_steps = 100000
@@ -240,12 +233,12 @@ contains
         tau_max = 0.0_wp
         rhs_evals = 0
         steps = 0
-        status = HERTZDAMP_GSL_BAD_INPUT
+        status = HD_BAD_ARGUMENT
 
         if (.not. ieee_is_finite(alpha) .or. ieee_is_nan(tol)) return
         if (.not. (tol > 0.0_wp .and. tol < 1.0_wp)) return
-        if (iend /= HERTZDAMP_GSL_OVERLAP .and. iend /= HERTZDAMP_GSL_FORCE) return
-        if (iend == HERTZDAMP_GSL_FORCE .and. alpha < 0.0_wp) return
+        if (iend /= HD_END_OVERLAP .and. iend /= HD_END_FORCE) return
+        if (iend == HD_END_FORCE .and. alpha < 0.0_wp) return
         if (method /= HERTZDAMP_GSL_RKF45 .and. method /= HERTZDAMP_GSL_RK8PD) return
         if (abs(alpha) > 1.0e8_wp) return
 
@@ -256,7 +249,7 @@ contains
             steptype = gsl_odeiv2_step_rk8pd
         end if
 
-        status = HERTZDAMP_GSL_FAILURE
+        status = HD_NO_CONVERGENCE
         if (.not. c_associated(steptype)) return
         ctx%alpha = alpha
         ctx%par%alpha = real(alpha, c_double)
@@ -276,7 +269,7 @@ contains
             return
         end if
 
-        if (iend == HERTZDAMP_GSL_OVERLAP) then
+        if (iend == HD_END_OVERLAP) then
             kind_end = ev_overlap
         else
             kind_end = ev_force
@@ -291,7 +284,7 @@ contains
 
         march: do
             if (steps >= max_steps) then
-                status = HERTZDAMP_GSL_MAX_STEPS
+                status = HD_MAX_STEPS
                 exit march
             end if
             ta = t
@@ -299,7 +292,7 @@ contains
             rc = gsl_odeiv2_evolve_apply(ctx%evolve, ctx%control, ctx%step, ctx%sys, &
                 t, t_far, h, y)
             if (rc /= gsl_success .or. .not. all(ieee_is_finite(y))) then
-                status = HERTZDAMP_GSL_FAILURE
+                status = HD_NO_CONVERGENCE
                 exit march
             end if
             steps = steps + 1
@@ -308,7 +301,7 @@ contains
                 if (event_g(ev_turn, alpha, y) <= 0.0_wp) then
                     call locate(ctx, ev_turn, ta, ya, t, y, tr, yr, ok)
                     if (.not. ok) then
-                        status = HERTZDAMP_GSL_FAILURE
+                        status = HD_NO_CONVERGENCE
                         exit march
                     end if
                     tau_max = tr
@@ -319,7 +312,7 @@ contains
                     rc = gsl_odeiv2_evolve_reset(ctx%evolve)
                     phase = 2
                     if (no_rebound(iend, alpha, y)) then
-                        status = HERTZDAMP_GSL_NO_REBOUND
+                        status = HD_NO_REBOUND
                         exit march
                     end if
                 end if
@@ -329,24 +322,24 @@ contains
             if (event_g(kind_end, alpha, y) <= 0.0_wp) then
                 call locate(ctx, kind_end, ta, ya, t, y, tr, yr, ok)
                 if (.not. ok) then
-                    status = HERTZDAMP_GSL_FAILURE
+                    status = HD_NO_CONVERGENCE
                     exit march
                 end if
                 tau_c = tr
                 e = -yr(2)
-                status = HERTZDAMP_GSL_OK
+                status = HD_OK
                 exit march
             end if
             if (no_rebound(iend, alpha, y)) then
-                status = HERTZDAMP_GSL_NO_REBOUND
+                status = HD_NO_REBOUND
                 exit march
             end if
         end do march
 
-        if (status == HERTZDAMP_GSL_NO_REBOUND) then
+        if (status == HD_NO_REBOUND) then
             e = 0.0_wp
             tau_c = ieee_value(1.0_wp, ieee_positive_inf)
-        else if (status /= HERTZDAMP_GSL_OK) then
+        else if (status /= HD_OK) then
             e = 0.0_wp
             tau_c = 0.0_wp
         end if
@@ -357,26 +350,6 @@ contains
         rhs_evals = int(min(ctx%par%nevals, int(huge(rhs_evals), c_long)))
         call free_ctx(ctx)
     end subroutine hertzdamp_gsl_collide
-
-    !> A short message describing a status of `hertzdamp_gsl_collide`.
-    pure function hertzdamp_gsl_status_message(status) result(msg)
-        integer, intent(in) :: status          !! status returned by hertzdamp_gsl_collide
-        character(len=:), allocatable :: msg   !! its meaning
-        select case (status)
-        case (HERTZDAMP_GSL_OK)
-            msg = 'success'
-        case (HERTZDAMP_GSL_NO_REBOUND)
-            msg = 'no rebound: the overlap never returns to zero (e = 0, tau_c = Inf)'
-        case (HERTZDAMP_GSL_MAX_STEPS)
-            msg = 'step limit reached before the contact ended'
-        case (HERTZDAMP_GSL_BAD_INPUT)
-            msg = 'invalid argument (alpha, iend, tol or method)'
-        case (HERTZDAMP_GSL_FAILURE)
-            msg = 'GSL failure (allocation, step size underflow or non-finite state)'
-        case default
-            msg = 'unknown status'
-        end select
-    end function hertzdamp_gsl_status_message
 
     ! ---------------------------------------------------------------- internals
 
@@ -435,7 +408,7 @@ contains
         integer, intent(in) :: iend
         real(wp), intent(in) :: alpha, y(2)
         no_rebound = .false.
-        if (iend /= HERTZDAMP_GSL_OVERLAP .or. alpha <= 0.0_wp) return
+        if (iend /= HD_END_OVERLAP .or. alpha <= 0.0_wp) return
         if (.not. (y(1) > 0.0_wp .and. y(1) <= alpha**4 / 36.0_wp)) return
         no_rebound = y(2) <= 0.0_wp .and. &
             y(2) >= -(2.0_wp / alpha) * y(1) * sqrt(y(1))

@@ -49,18 +49,17 @@ module hertzdamp_dem
     use hertzdamp_constants, only: hertzdamp_e1, hertzdamp_tau_c0
     use hertzdamp_rk45, only: hertzdamp_collision, hertzdamp_rk45_collide
     use hertzdamp_methods, only: HD_METHOD_SERIES, HD_METHOD_PADE, HD_METHOD_COMPACT, HD_METHOD_FIT, &
-                                 HD_METHOD_ITERATIVE
-    use hertzdamp_inverse, only: hertzdamp_invert
+                                 HD_METHOD_ITERATIVE, HD_METHOD_FIRST_ORDER
+    use hertzdamp_inverse, only: hertzdamp_invert, hertzdamp_invert_alpha
     implicit none
     private
 
     integer, parameter :: wp = hertzdamp_rk
 
-    !> Method code of the first-order rule alpha = (1 - e)/e1, tau_c = tau_c(0)
-    !> (THEORY.md section 4), the cheapest candidate, valid for nearly elastic contacts.
-    integer, parameter, public :: HD_DEM_FIRST_ORDER = 0
-    !> Candidate rules of `--method auto`, cheapest first (the documented cost order).
-    integer, parameter, public :: hertzdamp_dem_cost_order(6) = [HD_DEM_FIRST_ORDER, HD_METHOD_COMPACT, &
+    !> Candidate rules of `--method auto`, cheapest first (the documented cost order);
+    !> the first-order rule alpha = (1 - e)/e1, tau_c = tau_c(0) is valid for nearly
+    !> elastic contacts only.
+    integer, parameter, public :: hertzdamp_dem_cost_order(6) = [HD_METHOD_FIRST_ORDER, HD_METHOD_COMPACT, &
         HD_METHOD_SERIES, HD_METHOD_PADE, HD_METHOD_FIT, HD_METHOD_ITERATIVE]
     !> Most particles a scene may hold (the pair table is dense).
     integer, parameter, public :: hertzdamp_dem_max_particles = 2000
@@ -160,24 +159,9 @@ module hertzdamp_dem
 
     public :: hertzdamp_dem_check, hertzdamp_dem_run, hertzdamp_dem_rule, hertzdamp_dem_select
     public :: hertzdamp_dem_pair_e, hertzdamp_dem_pair_estar, hertzdamp_dem_pairs_met
-    public :: hertzdamp_dem_method_name, hertzdamp_dem_mass
+    public :: hertzdamp_dem_mass
 
 contains
-
-    !> Name of a rule: 'first-order', 'series', 'pade', 'compact', 'fit', 'iterative'.
-    pure function hertzdamp_dem_method_name(method) result(name)
-        integer, intent(in) :: method   !! HD_DEM_FIRST_ORDER or HD_METHOD_*
-        character(len=:), allocatable :: name
-        select case (method)
-        case (HD_DEM_FIRST_ORDER); name = 'first-order'
-        case (HD_METHOD_SERIES); name = 'series'
-        case (HD_METHOD_PADE); name = 'pade'
-        case (HD_METHOD_COMPACT); name = 'compact'
-        case (HD_METHOD_FIT); name = 'fit'
-        case (HD_METHOD_ITERATIVE); name = 'iterative'
-        case default; name = 'unknown'
-        end select
-    end function hertzdamp_dem_method_name
 
     !> Mass of a sphere [kg].
     pure elemental real(wp) function hertzdamp_dem_mass(density, radius)
@@ -407,7 +391,7 @@ contains
         real(wp), intent(in) :: u               !! impact velocity [m s^-1]
         real(wp), intent(in) :: kp              !! physical stiffness [N m^-3/2]
         integer, intent(in) :: iend             !! contact-end definition
-        integer, intent(in) :: method           !! HD_DEM_FIRST_ORDER or HD_METHOD_*
+        integer, intent(in) :: method           !! HD_METHOD_*
         logical, intent(in) :: want_duration    !! impose tc (else k = kp)
         real(wp), intent(in) :: tol             !! tolerance of the iterative rule
         real(wp), intent(out) :: k              !! stiffness [N m^-3/2]
@@ -421,31 +405,15 @@ contains
         tc_expected = 0.0_wp
         bound = .false.
         status = HD_OK
-        if (method == HD_DEM_FIRST_ORDER) then
-            if (.not. (e > 0.0_wp .and. e <= 1.0_wp)) then
-                status = HD_BAD_RESTITUTION
-                return
-            end if
-            alpha = (1.0_wp - e) / hertzdamp_e1()
-            tau = hertzdamp_tau_c0()
-            if (want_duration) then
-                ts = tc / tau
-                call hertzdamp_expand(alpha, ts, m, u, k, d, status)
-                if (status /= HD_OK) return
-                tc_expected = tc
-                bound = kp <= k
-            else
-                bound = .true.
-            end if
-        else if (want_duration) then
+        if (want_duration) then
             ! (tol matters to the iterative rule only)
             call hertzdamp_invert(e, tc, m, u, iend, k, d, status, alpha=alpha, tau_c=tau, &
                                   bound_active=bound, k_phys=kp, method=method, tol=tol)
             if (status /= HD_OK) return
             tc_expected = tc
         else
-            call hertzdamp_invert(e, 1.0_wp, 1.0_wp, 1.0_wp, iend, kk, dd, status, alpha=alpha, tau_c=tau, &
-                                  method=method, tol=tol)
+            ! restitution only: the pair constants, then k = kp
+            call hertzdamp_invert_alpha(e, iend, alpha, tau, status, method=method, tol=tol)
             if (status /= HD_OK) return
             bound = .true.
         end if
@@ -480,7 +448,7 @@ contains
         integer, intent(out) :: status               !! HD_OK or a reference-solver failure
         logical, allocatable :: met(:, :)
         real(wp), allocatable :: targets(:)
-        real(wp) :: e, alpha, tau, kk, dd, ec, tc
+        real(wp) :: e, alpha, tau, ec, tc
         integer :: a, b, c, it, st, meth
         type(hertzdamp_collision) :: r
         status = HD_OK
@@ -502,14 +470,7 @@ contains
             err(c) = 0.0_wp
             do it = 1, size(targets)
                 e = targets(it)
-                if (meth == HD_DEM_FIRST_ORDER) then
-                    alpha = (1.0_wp - e) / hertzdamp_e1()
-                    tau = hertzdamp_tau_c0()
-                    st = HD_OK
-                else
-                    call hertzdamp_invert(e, 1.0_wp, 1.0_wp, 1.0_wp, sc%iend, kk, dd, st, alpha=alpha, tau_c=tau, &
-                                          method=meth)
-                end if
+                call hertzdamp_invert_alpha(e, sc%iend, alpha, tau, st, method=meth)
                 if (st /= HD_OK) then
                     avail(c) = .false.
                     err(c) = huge(1.0_wp)
@@ -562,7 +523,7 @@ contains
     !> keeps no state between calls and does no I/O: safe to call from threads.
     subroutine hertzdamp_dem_run(sc, method, tol, res)
         type(hertzdamp_dem_scene), intent(in) :: sc   !! a scene that passed hertzdamp_dem_check
-        integer, intent(in) :: method                 !! HD_DEM_FIRST_ORDER or HD_METHOD_*
+        integer, intent(in) :: method                 !! HD_METHOD_*
         real(wp), intent(in) :: tol                   !! iterative rule tolerance
         type(hertzdamp_dem_result), intent(out) :: res !! contacts, checks, trace
         integer :: n, nw, nsteps, step, every, ns, isamp, ax, i, j, w, kk, c, nact, ip, ntrace

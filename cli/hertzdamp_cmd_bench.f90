@@ -12,8 +12,7 @@ module hertzdamp_cmd_bench
                          HD_METHOD_RK45, HD_METHOD_SERIES, HD_METHOD_PADE, HD_METHOD_COMPACT, HD_METHOD_FIT, &
                          HD_METHOD_ITERATIVE
     use hertzdamp_inverse, only: hertzdamp_invert
-    use hertzdamp_gsl, only: hertzdamp_gsl_collide, HERTZDAMP_GSL_RKF45, HERTZDAMP_GSL_RK8PD, &
-                             HERTZDAMP_GSL_OK, HERTZDAMP_GSL_NO_REBOUND, HERTZDAMP_GSL_OVERLAP, HERTZDAMP_GSL_FORCE
+    use hertzdamp_gsl, only: hertzdamp_gsl_collide, HERTZDAMP_GSL_RKF45, HERTZDAMP_GSL_RK8PD
     use hertzdamp_cli_plot, only: plot_check_target, plot_run, plot_temp_name, gp_string
     use hertzdamp_bench_timer, only: bench_case, bench_measure, wall_seconds, median
     use hertzdamp_cli, only: cli_args, cli_buffer, parse_args, parse_choice, fail, quit, pad, EXIT_USAGE, EXIT_OK, &
@@ -89,7 +88,7 @@ contains
     subroutine fwd_run(self)
         class(fwd_case), intent(inout) :: self
         type(hertzdamp_collision) :: r
-        integer :: i, st, nrhs, nst, gend
+        integer :: i, nrhs, nst
         real(wp) :: zm, tm
         do i = 1, size(self%alpha)
             select case (self%engine)
@@ -106,14 +105,8 @@ contains
                 self%rejected(i) = r%stats%rejected
                 self%rhs(i) = r%stats%rhs_evals
             case default
-                gend = merge(HERTZDAMP_GSL_OVERLAP, HERTZDAMP_GSL_FORCE, self%iend(i) == HD_END_OVERLAP)
-                call hertzdamp_gsl_collide(self%alpha(i), gend, self%tol, self%method, self%e(i), self%tau(i), &
-                                           zm, tm, st, nrhs, nst, atol=1.0e-30_wp * self%tol)
-                select case (st)
-                case (HERTZDAMP_GSL_OK); self%status(i) = HD_OK
-                case (HERTZDAMP_GSL_NO_REBOUND); self%status(i) = HD_NO_REBOUND
-                case default; self%status(i) = HD_NO_CONVERGENCE
-                end select
+                call hertzdamp_gsl_collide(self%alpha(i), self%iend(i), self%tol, self%method, self%e(i), &
+                                           self%tau(i), zm, tm, self%status(i), nrhs, nst, atol=1.0e-30_wp * self%tol)
                 self%steps(i) = nst
                 self%rejected(i) = -1
                 self%rhs(i) = nrhs

@@ -17,9 +17,6 @@
 #include "pointers.h"
 
 #include <hertzdamp.h>
-#ifndef HERTZDAMP_END_FORCE
-#include "compat/hertzdamp_compat.h"
-#endif
 
 #include <string>
 #include <vector>

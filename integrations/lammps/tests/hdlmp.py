@@ -44,22 +44,15 @@ def read_log(path):
 
 
 class CApi:
-    """The core library through ctypes (final names, with the pre-rename names as
-    a fallback until main's header has them)."""
+    """The core library's C API through ctypes."""
 
     def __init__(self):
         self.lib = ctypes.CDLL(os.path.join(BUILD, "core", "lib", "libhertzdamp.so"))
         D, P, I = ctypes.c_double, ctypes.POINTER(ctypes.c_double), ctypes.c_int
-        self._inv = self._fn("hertzdamp_c_invert", "hertzdamp_invert")
+        self._inv = self.lib.hertzdamp_c_invert
         self._inv.argtypes = [D, D, D, D, I, P, P]
-        self._fwd = self._fn("hertzdamp_c_forward", "hertzdamp_forward")
+        self._fwd = self.lib.hertzdamp_c_forward
         self._fwd.argtypes = [D, D, D, D, I, P, P]
-
-    def _fn(self, *names):
-        for n in names:
-            if hasattr(self.lib, n):
-                return getattr(self.lib, n)
-        raise AttributeError(names[0])
 
     @staticmethod
     def _end(end):

@@ -1,4 +1,4 @@
-!> hertzdamp: the damped Hertzian normal collision, forward and inverse.
+!> The umbrella module of hertzdamp, the damped Hertzian normal collision, forward and inverse.
 !>
 !> `use hertzdamp` gives the whole public API: kinds, status codes and messages,
 !> the dimensionless reduction, the damping laws, the reference integrator, the named constants, the
@@ -15,6 +15,7 @@ module hertzdamp
     use hertzdamp_fit
     use hertzdamp_compact
     use hertzdamp_inverse
+    use hertzdamp_materials
     implicit none
     public
 end module hertzdamp

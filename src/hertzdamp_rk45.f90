@@ -546,7 +546,9 @@ contains
 
     !> The critical damping alpha_c of the overlap definition: the smallest alpha
     !> without rebound.  linear: by bisection on the trajectory's own rebound decision
-    !> (reference integrator at tolerance max(1e-15, min(1e-13, width))); tsuji: sqrt(5), exact
+    !> (reference integrator at tolerance 1e-13: its decision threshold lies within a few
+    !> ulp of alpha_c there, while tighter tolerances accumulate more round-off, 26 ulp
+    !> at 1e-15; doc/damping-laws.md); tsuji: sqrt(5), exact
     !> (doc/damping-laws.md); kuwabara-kono: none, status HD_NOT_SUPPORTED, alpha_c = 0.
     pure subroutine hertzdamp_alpha_c(alpha_c, status, tol, law)
         real(wp), intent(out) :: alpha_c          !! critical damping parameter
@@ -575,7 +577,7 @@ contains
             status = HD_NOT_SUPPORTED
             return
         end if
-        call hertzdamp_rk45_tolerances(max(1.0e-15_wp, min(1.0e-13_wp, w)), opts)
+        call hertzdamp_rk45_tolerances(1.0e-13_wp, opts)
         lo = 1.0_wp
         hi = 1.25_wp
         do while (hi - lo > w)

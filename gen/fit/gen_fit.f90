@@ -73,7 +73,7 @@ program gen_fit
 
     real(wp) :: alpha_c, e1, tc0, lmax_ov, lmax_fo, amax_ov, amax_fo, wmax_ov
     real(wp) :: e_min_ov, e_min_fo
-    integer :: status, u, nb, ib, i, j, ilw, itw
+    integer :: status, u, nb, ib, j, ilw, itw
     real(wp) :: end_val(40, 0:1), h1
     integer :: im
     real(wp) :: cc(4, 8), cerr(8)

@@ -70,7 +70,7 @@ int hertzdamp_c_invert(double e, double tc, double m, double u, int end,
 /*
  * hertzdamp_c_invert with the physical-stiffness bound k_phys = (4/3) E* sqrt(R*):
  * where k_phys <= k the contact keeps *k = k_phys and
- * *d = alpha m^{3/5} k_phys^{2/5} u^{1/5} (it is then shorter than tc).
+ * *d = alpha m^{3/5} k_phys^{2/5} u^{1/5} (it is then longer than tc).
  */
 int hertzdamp_c_invert_bounded(double e, double tc, double m, double u, double k_phys,
                                int end, double *k, double *d);

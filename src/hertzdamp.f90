@@ -13,6 +13,7 @@ module hertzdamp
     use hertzdamp_series
     use hertzdamp_methods
     use hertzdamp_fit
+    use hertzdamp_fit_laws
     use hertzdamp_compact
     use hertzdamp_inverse
     use hertzdamp_materials

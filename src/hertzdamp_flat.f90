@@ -41,7 +41,7 @@ contains
 
     !> flat_invert with the physical-stiffness bound k_phys: where k_phys <= k the
     !> contact keeps k = k_phys and d = alpha m^(3/5) k_phys^(2/5) u^(1/5) (it is then
-    !> shorter than tc).  On failure k = d = 0 and status names the bad argument.
+    !> longer than tc: k_phys is softer).  On failure k = d = 0 and status names the bad argument.
     pure elemental subroutine flat_invert_bounded(e, tc, m, u, k_phys, iend, k, d, status)
         real(wp), intent(in) :: e        !! target restitution coefficient
         real(wp), intent(in) :: tc       !! target contact time [s]

@@ -34,7 +34,7 @@ end subroutine hertzdamp_invert
 
 !> hertzdamp_invert with the physical-stiffness bound kphys = (4/3) E* sqrt(R*): where
 !> kphys <= k the contact keeps k = kphys and d = alpha m^(3/5) kphys^(2/5) u^(1/5)
-!> (it is then shorter than tc, and the material's own stiffness is recovered once
+!> (it is then longer than tc, and the material's own stiffness is recovered once
 !> the time step is small enough).  On failure k = d = 0, ierr /= 0.
 subroutine hertzdamp_invert_bounded(e, tc, m, u, kphys, iend, k, d, ierr)
     use hertzdamp_flat, only: flat_invert_bounded

@@ -10,7 +10,8 @@ module hertzdamp_methods
     use hertzdamp_series, only: hertzdamp_series_eval, hertzdamp_pade_eval
     use hertzdamp_scaling, only: hertzdamp_reduce
     use hertzdamp_rk45, only: hertzdamp_collision, hertzdamp_rk45_collide, hertzdamp_rk45_default_tol
-    use hertzdamp_fit, only: hertzdamp_fit_forward, hertzdamp_approx_alpha_status
+    use hertzdamp_fit, only: hertzdamp_approx_alpha_status
+    use hertzdamp_fit_laws, only: hertzdamp_fit_law_forward
     use hertzdamp_constants, only: hertzdamp_e1, hertzdamp_tau_c0
     use hertzdamp_compact, only: hertzdamp_compact_forward
     use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
@@ -64,7 +65,7 @@ contains
     end function hertzdamp_method_code
 
     !> e, tau_c, z_max, tau_max for one alpha by the chosen method, for the damping law
-    !> `law` (default linear).  Every law: rk45 and first-order (e1 of the law); the
+    !> `law` (default linear).  Every law: rk45, fit and first-order (e1 of the law); the
     !> other methods exist for the linear law only (HD_NOT_SUPPORTED for the others).
     !> Series and Pade check their own error estimate against `accuracy` (relative,
     !> default hertzdamp_default_accuracy): beyond it the status is HD_INACCURATE.
@@ -93,7 +94,8 @@ contains
             res%status = hertzdamp_law_status(law_)
             return
         end if
-        if (law_ /= HD_DAMPING_LINEAR .and. method /= HD_METHOD_RK45 .and. method /= HD_METHOD_FIRST_ORDER) then
+        if (law_ /= HD_DAMPING_LINEAR .and. method /= HD_METHOD_RK45 .and. method /= HD_METHOD_FIRST_ORDER .and. &
+            method /= HD_METHOD_FIT) then
             res%alpha = alpha
             res%iend = iend
             res%status = HD_NOT_SUPPORTED
@@ -107,7 +109,7 @@ contains
             ! z_max and tau_max are fitted too (0 beyond alpha = 1.3 for the overlap)
             res%alpha = alpha
             res%iend = iend
-            call hertzdamp_fit_forward(alpha, iend, res%e, res%tau_c, res%status, res%z_max, res%tau_max)
+            call hertzdamp_fit_law_forward(alpha, iend, law_, res%e, res%tau_c, res%status, res%z_max, res%tau_max)
         case (HD_METHOD_COMPACT)
             ! the compact formulas give e and tau_c only (z_max = tau_max = 0)
             res%alpha = alpha

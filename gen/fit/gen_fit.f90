@@ -1,10 +1,11 @@
 !> hertzdamp-gen-fit: generator of the approximants of `hertzdamp_fit` and the
 !> constants of `hertzdamp_compact`, for every damping law (doc/damping-laws.md).
 !>
-!> Usage: hertzdamp-gen-fit [LINEAR_CSV [LAWS_CSV]]
-!> Writes the linear law (and the compact constants) to data/fit_coefficients.csv and
-!> the tsuji and kuwabara-kono laws to data/fit_laws.csv (or the paths given; '-'
-!> skips one).  Every number in them comes from the reference integrator
+!> Usage: hertzdamp-gen-fit [CSV]
+!> Writes data/fit_coefficients.csv (or CSV): the blocks of the linear law and the
+!> compact constants, then the blocks of the tsuji and kuwabara-kono laws (the linear
+!> rows are the same whether or not the laws follow).  Every number in it comes from
+!> the reference integrator
 !> `hertzdamp_rk45_collide` at tolerance 1e-15 and from LAPACK least squares (dgels);
 !> nothing is typed in.
 !>
@@ -80,11 +81,11 @@ program gen_fit
     real(wp), parameter :: e_compact = 0.05_wp
     character(len=*), parameter :: cm_names(8) = [character(len=16) :: 'cov_inv_a', 'cov_inv_t', 'cov_fwd_l', &
         'cov_fwd_t', 'cfo_inv_a', 'cfo_inv_t', 'cfo_fwd_l', 'cfo_fwd_t']
-    character(len=256) :: path, path_laws
+    character(len=256) :: path
     type(block_spec), allocatable :: blocks(:)
     real(wp), allocatable :: coef(:, :)
     real(wp) :: maxerr
-    character(len=:), allocatable :: body, summary
+    character(len=:), allocatable :: body, summary, law_body, law_summary, law_params
 
     interface
         !> LAPACK: least-squares solution of an overdetermined system by QR.
@@ -100,20 +101,19 @@ program gen_fit
     end interface
 
     path = 'data/fit_coefficients.csv'
-    path_laws = 'data/fit_laws.csv'
     if (command_argument_count() >= 1) call get_command_argument(1, path)
-    if (command_argument_count() >= 2) call get_command_argument(2, path_laws)
 
     e1 = hertzdamp_e1()
     tc0 = hertzdamp_tau_c0()
     call hertzdamp_alpha_c(alpha_c, status, 1.0e-15_wp)
     if (status /= HD_OK) call die('alpha_c failed')
-    if (trim(path) /= '-') call linear_fits()
-    if (trim(path_laws) /= '-') call law_fits()
+    call law_fits()
+    call linear_fits()
 
 contains
 
-    !> The linear law: data/fit_coefficients.csv (blocks and compact constants).
+    !> The linear law (blocks and compact constants), and the CSV with the rows of
+    !> every law.
     subroutine linear_fits()
 
     e_min_ov = 1.0e-3_wp
@@ -130,6 +130,7 @@ contains
     amax_fo = alpha_of_l(HD_DAMPING_LINEAR, HD_END_FORCE, lmax_fo + log(2.0_wp))
     wmax_ov = -log(1.0_wp - amax_ov / alpha_c)
 
+    if (allocated(blocks)) deallocate (blocks)
     allocate (blocks(16))   ! explicit: allocation on assignment trips -Wuninitialized
     blocks(:) = [ &
         block_spec('ov_inv_a', HD_END_OVERLAP, VAR_L, Q_ALPHA_OVER_L, 0.0_wp, lmax_ov, 8, 9), &
@@ -178,6 +179,7 @@ contains
     write (u, '(a)') '# Ranges: overlap e in [' // g(e_min_ov) // ', 1], force e in [' // g(e_min_fo) // &
         ', 1]; forward alpha up to alpha(e_min/2) (force), alpha(1e-5) (overlap).'
     write (u, '(a)', advance='no') summary
+    write (u, '(a)', advance='no') law_summary
     write (u, '(a)') '# rows: param,name,value | block,name,variable,x0,x1,np,deg | coef,name,piece,c_0,...,c_deg'
     write (u, '(a)') 'param,alpha_c,' // r2s(alpha_c)
     write (u, '(a)') 'param,e_min_overlap,' // r2s(e_min_ov)
@@ -194,7 +196,9 @@ contains
         end do
     end do
     write (u, '(a)') 'param,e_min_compact,' // r2s(e_compact)
+    write (u, '(a)', advance='no') law_params
     write (u, '(a)', advance='no') body
+    write (u, '(a)', advance='no') law_body
     close (u)
     write (output_unit, '(a)') 'wrote ' // trim(path)
     end subroutine linear_fits
@@ -226,12 +230,12 @@ contains
         end do
     end subroutine fit_and_record
 
-    !> The tsuji and kuwabara-kono laws: data/fit_laws.csv.  Inverse ranges e in
-    !> [1e-4, 1], forward ranges down to e = 1e-5 (both ends).
+    !> The tsuji and kuwabara-kono laws: their summary lines, params and rows (written
+    !> with the linear ones).  Inverse ranges e in [1e-4, 1], forward ranges down to
+    !> e = 1e-5 (both ends).
     subroutine law_fits()
         real(wp), parameter :: e_min_law = 1.0e-4_wp, e_fwd_law = 1.0e-5_wp
         real(wp) :: lmin, lfwd, a_t_fo, a_k_ov, a_k_fo, a_t_ov
-        integer :: ul
         lmin = -log(e_min_law)
         lfwd = -log(e_fwd_law)
         call make_table(HD_DAMPING_TSUJI, HD_END_FORCE)
@@ -245,6 +249,8 @@ contains
         allocate (blocks(15))
         blocks(:) = [ &
             block_spec('ts_ov_inv_t', HD_END_OVERLAP, VAR_L, Q_TAU_C, 0.0_wp, lfwd, 16, 11, HD_DAMPING_TSUJI), &
+            ! alpha(e) of the force end is analytic in L (its e(alpha) is): in L^(1/5) it would
+            ! be exp(x^5/2)-steep at large L (6.5e-12 measured), so it keeps its own grid
             block_spec('ts_fo_inv_a', HD_END_FORCE, VAR_L, Q_ALPHA_OVER_L, 0.0_wp, lfwd, 16, 11, HD_DAMPING_TSUJI), &
             block_spec('ts_fo_inv_t', HD_END_FORCE, VAR_ROOT_L, Q_TAU_C, 0.0_wp, lfwd**0.2_wp, 16, 11, &
                        HD_DAMPING_TSUJI, 5), &
@@ -276,26 +282,17 @@ contains
         do ib = 1, size(blocks)
             call fit_and_record(blocks(ib))
         end do
-        open (newunit=ul, file=trim(path_laws), status='replace', action='write')
-        write (ul, '(a)') '# hertzdamp fit coefficients of the damping laws tsuji and kuwabara-kono: generated by' // &
-            ' gen/fit/gen_fit.f90 (fpm run hertzdamp-gen-fit, make fit-data); do not edit.'
-        write (ul, '(a)') '# Reference: hertzdamp_rk45_collide at tolerance ' // g(ref_tol) // ' (relative error control).'
-        write (ul, '(a)') '# Fit: LAPACK dgels weighted least squares per piece, Chebyshev basis, stored as monomials.'
-        write (ul, '(a)') '# Piece i of a block covers u = (x - x0) np / (x1 - x0) in [i, i+1]; t = 2 (u - i) - 1;' // &
-            ' y = sum_j c_j t^j.'
-        write (ul, '(a)') '# Ranges: inverse e in [' // g(e_min_law) // ', 1], forward down to e = ' // g(e_fwd_law) // &
-            ' (both ends); tsuji e(alpha) of both ends and alpha(e) of the overlap end are exact (no block).'
-        write (ul, '(a)', advance='no') summary
-        write (ul, '(a)') '# rows: param,name,value | block,name,variable,x0,x1,np,deg | coef,name,piece,c_0,...,c_deg'
-        write (ul, '(a)') 'param,law_e_min,' // r2s(e_min_law)
-        write (ul, '(a)') 'param,law_e_min_forward,' // r2s(e_fwd_law)
-        write (ul, '(a)') 'param,ts_alpha_max_overlap,' // r2s(a_t_ov)
-        write (ul, '(a)') 'param,ts_alpha_max_force,' // r2s(a_t_fo)
-        write (ul, '(a)') 'param,kk_alpha_max_overlap,' // r2s(a_k_ov)
-        write (ul, '(a)') 'param,kk_alpha_max_force,' // r2s(a_k_fo)
-        write (ul, '(a)', advance='no') body
-        close (ul)
-        write (output_unit, '(a)') 'wrote ' // trim(path_laws)
+        law_summary = '# Damping laws tsuji and kuwabara-kono (doc/damping-laws.md): inverse e in [' // g(e_min_law) // &
+            ', 1],' // new_line('a') // '# forward down to e = ' // g(e_fwd_law) // &
+            ' (both ends); tsuji e(alpha) of both ends and alpha(e) of the overlap end are exact (no block).' // &
+            new_line('a') // summary
+        law_body = body
+        law_params = 'param,law_e_min,' // r2s(e_min_law) // new_line('a') // &
+            'param,law_e_min_forward,' // r2s(e_fwd_law) // new_line('a') // &
+            'param,ts_alpha_max_overlap,' // r2s(a_t_ov) // new_line('a') // &
+            'param,ts_alpha_max_force,' // r2s(a_t_fo) // new_line('a') // &
+            'param,kk_alpha_max_overlap,' // r2s(a_k_ov) // new_line('a') // &
+            'param,kk_alpha_max_force,' // r2s(a_k_fo) // new_line('a')
     end subroutine law_fits
 
     subroutine die(msg)

@@ -13,16 +13,18 @@
 !> closed form, the tsuji closed forms).  Everything is pure, no module state.
 module hertzdamp_laws
     use hertzdamp_kinds, only: hertzdamp_rk
-    use hertzdamp_status, only: HD_OK, HD_BAD_LAW, HD_NOT_SUPPORTED
+    use hertzdamp_status, only: HD_OK, HD_BAD_LAW, HD_NOT_SUPPORTED, HD_DAMPING_LINEAR, HD_DAMPING_TSUJI, &
+                                HD_DAMPING_KUWABARA_KONO
     use hertzdamp_fit_data, only: fit_alpha_c
     implicit none
     private
 
     integer, parameter :: wp = hertzdamp_rk
 
-    integer, parameter, public :: HD_DAMPING_LINEAR = 0         !! q = 0: d zeta' (constant damping; the default)
-    integer, parameter, public :: HD_DAMPING_TSUJI = 1          !! q = 1/4: d zeta^(1/4) zeta' (Tsuji et al. 1992)
-    integer, parameter, public :: HD_DAMPING_KUWABARA_KONO = 2  !! q = 1/2: d zeta^(1/2) zeta' (Kuwabara & Kono 1987)
+    ! the law codes live in hertzdamp_status (with the contact-end codes, mirrored in
+    ! hertzdamp.h): linear 0 (q = 0), tsuji 1 (q = 1/4, Tsuji et al. 1992), kuwabara-kono 2
+    ! (q = 1/2, Kuwabara & Kono 1987)
+    public :: HD_DAMPING_LINEAR, HD_DAMPING_TSUJI, HD_DAMPING_KUWABARA_KONO
     !> Largest law code.
     integer, parameter, public :: hertzdamp_max_law = 2
 

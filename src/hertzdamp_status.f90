@@ -39,6 +39,12 @@ module hertzdamp_status
     !> Contact ends when the total contact force returns to zero.
     integer, parameter, public :: HD_END_FORCE = 1
 
+    !> Damping laws (hertzdamp_laws, doc/damping-laws.md): force d zeta^q zeta' with
+    !> q = 0 (linear, the default), 1/4 (tsuji), 1/2 (kuwabara-kono).
+    integer, parameter, public :: HD_DAMPING_LINEAR = 0
+    integer, parameter, public :: HD_DAMPING_TSUJI = 1
+    integer, parameter, public :: HD_DAMPING_KUWABARA_KONO = 2
+
     !> Length of the stored messages (each fits, blank-padded).
     integer, parameter, public :: hertzdamp_message_len = 192
     !> Largest status code with a message of its own.

@@ -15,8 +15,7 @@ module hertzdamp_capi
     use, intrinsic :: iso_c_binding, only: c_double, c_int, c_char, c_ptr, c_loc, c_null_char
     use hertzdamp_status, only: HD_OK, HD_BAD_ARGUMENT, hertzdamp_message_table, hertzdamp_max_status, &
                                 hertzdamp_message_len
-    use hertzdamp_flat, only: flat_invert, flat_invert_bounded, flat_pair, flat_forward, flat_invert_law, &
-                              flat_pair_law, flat_forward_law
+    use hertzdamp_flat, only: flat_invert, flat_invert_bounded, flat_invert_law, flat_pair_law, flat_forward_law
     implicit none
     private
 
@@ -116,14 +115,7 @@ contains
         integer(c_int), value, intent(in) :: iend       !! contact end: 0 overlap, 1 force
         real(c_double), intent(out), optional :: alpha  !! damping parameter alpha(e)
         real(c_double), intent(out), optional :: tau_c  !! dimensionless contact duration
-        real(c_double) :: a_, t_
-        integer :: st
-        status = HD_BAD_ARGUMENT
-        if (.not. (present(alpha) .and. present(tau_c))) return
-        call flat_pair(e, int(iend), a_, t_, st)
-        alpha = a_
-        tau_c = t_
-        status = int(st, c_int)
+        status = hertzdamp_c_pair_law(e, 0_c_int, iend, alpha, tau_c)
     end function hertzdamp_c_pair
 
     !> `int hertzdamp_c_forward(double k, double d, double m, double u, int end,
@@ -139,14 +131,7 @@ contains
         integer(c_int), value, intent(in) :: iend    !! contact end: 0 overlap, 1 force
         real(c_double), intent(out), optional :: e   !! restitution coefficient
         real(c_double), intent(out), optional :: tc  !! contact time [s]
-        real(c_double) :: e_, tc_
-        integer :: st
-        status = HD_BAD_ARGUMENT
-        if (.not. (present(e) .and. present(tc))) return
-        call flat_forward(k, d, m, u, int(iend), e_, tc_, st)
-        e = e_
-        tc = tc_
-        status = int(st, c_int)
+        status = hertzdamp_c_forward_law(k, d, m, u, 0_c_int, iend, e, tc)
     end function hertzdamp_c_forward
 
     !> `int hertzdamp_c_invert_law(double e, double tc, double m, double u, double k_phys,

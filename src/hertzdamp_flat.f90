@@ -69,11 +69,7 @@ contains
         real(wp), intent(out) :: alpha   !! damping parameter alpha(e)
         real(wp), intent(out) :: tau_c   !! dimensionless contact duration tau_c(alpha)
         integer, intent(out) :: status   !! HD_OK or an error code
-        call hertzdamp_invert_alpha(e, iend, alpha, tau_c, status, method=legacy_method)
-        if (status /= HD_OK) then
-            alpha = 0.0_wp
-            tau_c = 0.0_wp
-        end if
+        call flat_pair_law(e, 0, iend, alpha, tau_c, status)
     end subroutine flat_pair
 
     !> Restitution and contact time of a contact (k, d, m, u).  Without rebound
@@ -88,18 +84,7 @@ contains
         real(wp), intent(out) :: e       !! restitution coefficient
         real(wp), intent(out) :: tc      !! contact time [s]
         integer, intent(out) :: status   !! HD_OK, HD_NO_REBOUND or an error code
-        real(wp) :: alpha, tstar, zeta_max
-        call hertzdamp_forward_dim(k, d, m, u, iend, legacy_method, alpha, tstar, e, tc, zeta_max, &
-                                   status)
-        select case (status)
-        case (HD_OK)
-        case (HD_NO_REBOUND)
-            e = 0.0_wp
-            tc = huge(1.0_wp)
-        case default
-            e = 0.0_wp
-            tc = 0.0_wp
-        end select
+        call flat_forward_law(k, d, m, u, 0, iend, e, tc, status)
     end subroutine flat_forward
 
     !> flat_invert for the damping law `law` (0 linear, 1 tsuji, 2 kuwabara-kono;

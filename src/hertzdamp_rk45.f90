@@ -155,12 +155,12 @@ contains
 
     !> Width of the band [alpha_c - w, alpha_c) below the critical damping of the overlap
     !> end in which hertzdamp_rk45_solve reports HD_INACCURATE, for relative tolerance
-    !> rtol (0 for a law without alpha_c).  linear: e ~ 2.07 (alpha_c - alpha) near
+    !> rtol (0 for a law without alpha_c).  linear: e ~ 0.207 (alpha_c - alpha) near
     !> alpha_c, and the integrator's own rebound threshold (its numerical alpha_c) lies
-    !> within 0.05 rtol of alpha_c for rtol >= 1e-13 and within 26 ulp below that
-    !> (round-off; measured for rtol = 1e-8 ... 1e-15, doc/damping-laws.md):
-    !> w = rtol + 256 ulp(alpha_c) keeps a margin of 10 or more.  tsuji: the band where
-    !> the exact e is below hertzdamp_rk45_e_floor_tsuji.
+    !> within 0.52 rtol of alpha_c (measured for rtol = 1e-2 ... 1e-12; below alpha_c at
+    !> loose tolerances) and within 26 ulp for rtol <= 1e-13 (round-off): w = 4 rtol +
+    !> 256 ulp(alpha_c) keeps a margin of 7.8 or more (doc/damping-laws.md).  tsuji: the
+    !> band where the exact e is below hertzdamp_rk45_e_floor_tsuji.
     pure elemental real(wp) function hertzdamp_rk45_band(rtol, law) result(w)
         real(wp), intent(in) :: rtol              !! relative tolerance of the integrator
         integer, intent(in), optional :: law      !! HD_DAMPING_* (default linear)
@@ -169,7 +169,7 @@ contains
         if (present(law)) law_ = law
         select case (law_)
         case (HD_DAMPING_LINEAR)
-            w = rtol + 256.0_wp * spacing(hertzdamp_law_alpha_c(law_))
+            w = 4.0_wp * rtol + 256.0_wp * spacing(hertzdamp_law_alpha_c(law_))
         case (HD_DAMPING_TSUJI)
             w = hertzdamp_alpha_c_tsuji - hertzdamp_tsuji_alpha(hertzdamp_rk45_e_floor_tsuji)
         case default
@@ -184,7 +184,7 @@ contains
     !> - alpha >= alpha_c: HD_NO_REBOUND, e = 0, tau_c = +inf (z_max, tau_max computed);
     !> - alpha_c - w <= alpha < alpha_c, w = hertzdamp_rk45_band(rtol, law): HD_INACCURATE,
     !>   e = tau_c = 0: the collision rebounds, but with e below what the integrator
-    !>   resolves (linear: e < 2.1 w, 3.3e-13 at the default tolerance; tsuji: e < 1e-30);
+    !>   resolves (linear: e < 0.21 w, 9.5e-14 at the default tolerance; tsuji: e < 1e-30);
     !> - alpha < alpha_c - w: the integration decides (and rebounds); e and tau_c as computed.
     !> (linear: alpha_c is the generated constant hertzdamp_law_alpha_c; tsuji: sqrt 5.)
     pure subroutine hertzdamp_rk45_solve(alpha, iend, opts, res, law)

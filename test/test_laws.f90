@@ -289,6 +289,29 @@ contains
         call s%check(r%status == HD_INACCURATE .and. r%e == 0.0_wp .and. r%tau_c == 0.0_wp, 'in the band: inaccurate')
         r = hertzdamp_rk45_collide(ac)
         call s%check(r%status == HD_NO_REBOUND .and. r%tau_c > huge(1.0_wp), 'at alpha_c: no rebound')
+        ! loose tolerances (where the trajectory's own threshold is furthest from alpha_c,
+        ! 0.5 rtol below it at 1e-3): status monotone over [alpha_c - 3 w, alpha_c + w]
+        do st = 2, 8, 3
+            w = hertzdamp_rk45_band(10.0_wp**(-st))
+            stage = 0
+            ok = .true.
+            do i = 0, 400
+                a = ac - 3.0_wp * w + 4.0_wp * w * i / 400.0_wp
+                r = hertzdamp_rk45_collide(a, tol=10.0_wp**(-st))
+                select case (r%status)
+                case (HD_OK)
+                    ok = ok .and. stage == 0
+                case (HD_INACCURATE)
+                    ok = ok .and. stage <= 1
+                    stage = 1
+                case (HD_NO_REBOUND)
+                    stage = 2
+                case default
+                    ok = .false.
+                end select
+            end do
+            call s%check(ok .and. stage == 2, 'status monotone near alpha_c at a loose tolerance')
+        end do
         ! at a loose tolerance the band is wider, and still monotone at its edges
         r = hertzdamp_rk45_collide(ac - 0.5_wp * hertzdamp_rk45_band(1.0e-8_wp), tol=1.0e-8_wp)
         call s%check(r%status == HD_INACCURATE, 'band at tol 1e-8')

@@ -42,6 +42,27 @@ program damping_laws
     end do
     print '(a)', ''
 
+    ! ------------------------------------------------------------------ negative alpha
+    ! the reversal of alpha -> infinity (tsuji: of alpha_c) bounds the energy-injecting
+    ! contacts that end: alpha_- = -lim(alpha e^p) with p = (4q-1)/5
+    r2 = hertzdamp_rk45_collide(256.0_wp, HD_END_OVERLAP, law=HD_DAMPING_KUWABARA_KONO)
+    print '(a)', '| law | alpha_- (contact ends for alpha > alpha_-) | rk45 at 0.99 alpha_-: status, e | ' // &
+        'rk45 at 1.01 alpha_-: status, work (rhs) |'
+    print '(a)', '| --- | --- | --- | --- |'
+    do law = HD_DAMPING_TSUJI, HD_DAMPING_KUWABARA_KONO
+        if (law == HD_DAMPING_TSUJI) then
+            a = -sqrt(5.0_wp)
+        else
+            a = -(r2%e * 256.0_wp**5)**0.2_wp
+        end if
+        r = hertzdamp_rk45_collide(0.99_wp * a, law=law)
+        r2 = hertzdamp_rk45_collide(1.01_wp * a, law=law)
+        print '(a,a,a,f8.5,a,i0,a,es9.3,a,i0,a,i0,a)', '| ', hertzdamp_law_name(law), ' | ', a, ' | ', r%status, ', ', &
+            r%e, ' | ', r2%status, ', ', r2%stats%rhs_evals, ' |'
+        r2 = hertzdamp_rk45_collide(256.0_wp, HD_END_OVERLAP, law=HD_DAMPING_KUWABARA_KONO)
+    end do
+    print '(a)', ''
+
     ! ------------------------------------------------------------------ linear near alpha_c
     ac = hertzdamp_law_alpha_c(HD_DAMPING_LINEAR)
     print '(a)', '| alpha_c - alpha | e (tol 1e-13) | e / (alpha_c - alpha) | e(tol 1e-13) - e(tol 1e-15) |'

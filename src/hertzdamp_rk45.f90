@@ -34,7 +34,7 @@ module hertzdamp_rk45
     use hertzdamp_status, only: HD_OK, HD_NO_REBOUND, HD_MAX_STEPS, HD_STEP_UNDERFLOW, &
                                 HD_BAD_ALPHA, HD_BAD_END, HD_BAD_TOL, HD_NO_CONVERGENCE, &
                                 HD_END_OVERLAP, HD_END_FORCE, HD_INACCURATE, HD_NOT_SUPPORTED, HD_BAD_LAW
-    use hertzdamp_laws, only: HD_DAMPING_LINEAR, HD_DAMPING_TSUJI, hertzdamp_law_status, &
+    use hertzdamp_laws, only: HD_DAMPING_LINEAR, HD_DAMPING_TSUJI, HD_DAMPING_KUWABARA_KONO, hertzdamp_law_status, &
                               hertzdamp_law_has_alpha_c, hertzdamp_law_alpha_c, hertzdamp_law_q, &
                               hertzdamp_alpha_c_tsuji, hertzdamp_tsuji_alpha
     use hertzdamp_rk45_kernel, only: hertzdamp_rk45_stats, hertzdamp_local_series_t, HD_MODEL_HERTZ, &
@@ -249,6 +249,12 @@ contains
             res%status = HD_BAD_ALPHA
             return
         end if
+        ! tsuji, alpha <= -sqrt(5): the energy-injecting contact never ends (the anti-damped
+        ! oscillator of doc/damping-laws.md does not return; time reversal of alpha_c)
+        if (law == HD_DAMPING_TSUJI .and. alpha <= -hertzdamp_alpha_c_tsuji) then
+            res%status = HD_BAD_ALPHA
+            return
+        end if
         if (.not. (opts%rtol > 0.0_wp .and. opts%atol > 0.0_wp)) then
             res%status = HD_BAD_TOL
             return
@@ -316,6 +322,16 @@ contains
             fac = max(0.1_wp, min(5.0_wp, fac / 0.9_wp))
             hnew = h / fac
             lfacold = max(lerr, log(1.0e-4_wp))
+
+            ! kuwabara-kono, alpha < 0: once z >= 16/alpha^4 and z' >= 2 z/|alpha| the overlap
+            ! grows without bound (forward-invariant region, doc/damping-laws.md): the contact
+            ! never ends (alpha below -1.3884, the time reversal of alpha -> infinity)
+            if (phase == 1 .and. alpha < 0.0_wp .and. law == HD_DAMPING_KUWABARA_KONO) then
+                if (ynew(1) >= 16.0_wp / alpha**4 .and. ynew(2) >= -2.0_wp * ynew(1) / alpha) then
+                    res%status = HD_BAD_ALPHA
+                    return
+                end if
+            end if
 
             theta_tp = 0.0_wp
             if (phase == 1 .and. ynew(2) <= 0.0_wp) then

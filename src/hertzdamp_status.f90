@@ -58,8 +58,8 @@ module hertzdamp_status
             '0, contact time infinite)', &
         'integrator reached its maximum number of steps', &
         'integrator step size collapsed below round-off', &
-        'invalid damping parameter alpha: must be finite, at most 1e100, >= 0 ' // &
-            'for the force definition and >= -10 for the overlap definition', &
+        'invalid damping parameter alpha: must be finite, at most 1e100, >= 0 for the force ' // &
+            'definition and >= -10 for the overlap definition (tsuji > -sqrt5, kuwabara-kono > -1.3884)', &
         'invalid contact-end definition: use 0 (overlap) or 1 (force)', &
         'invalid tolerance: must lie in [1e-15, 1e-2]', &
         'invalid mass: must be finite and positive', &

@@ -218,7 +218,7 @@ contains
     !> with e ~ C alpha^-5 (the end game is a universal inner problem, z ~ alpha^-4).
     subroutine critical_damping()
         type(hertzdamp_collision) :: r, r2
-        real(wp) :: ac
+        real(wp) :: ac, ex
         integer :: st, i
         call hertzdamp_alpha_c(ac, st, law=HD_DAMPING_TSUJI)
         call s%check(st == HD_OK .and. ac == sqrt(5.0_wp), 'tsuji alpha_c = sqrt 5')
@@ -240,6 +240,21 @@ contains
         r = hertzdamp_rk45_collide(128.0_wp, law=HD_DAMPING_KUWABARA_KONO)
         r2 = hertzdamp_rk45_collide(256.0_wp, law=HD_DAMPING_KUWABARA_KONO)
         call s%check_close(r2%e * 256.0_wp**5, r%e * 128.0_wp**5, 1.0e-6_wp, 'kuwabara-kono overlap e alpha^5 -> constant')
+        ! energy injection: the contact ends above alpha_- = -(lim e alpha^5)^(1/5) (kuwabara-kono)
+        ! and -sqrt(5) (tsuji), the time reversals of alpha -> infinity and alpha_c
+        ac = -(r2%e * 256.0_wp**5)**0.2_wp
+        r = hertzdamp_rk45_collide(0.99_wp * ac, law=HD_DAMPING_KUWABARA_KONO)
+        call s%check(r%status == HD_OK .and. r%e > 10.0_wp, 'kuwabara-kono just above alpha_-: rebounds with large e')
+        r = hertzdamp_rk45_collide(1.01_wp * ac, law=HD_DAMPING_KUWABARA_KONO)
+        call s%check(r%status == HD_BAD_ALPHA .and. r%stats%rhs_evals < 20000, &
+                     'kuwabara-kono below alpha_-: runaway certified, HD_BAD_ALPHA')
+        r = hertzdamp_rk45_collide(-5.0_wp, law=HD_DAMPING_KUWABARA_KONO)
+        call s%check(r%status == HD_BAD_ALPHA .and. r%stats%rhs_evals < 20000, 'kuwabara-kono alpha = -5: HD_BAD_ALPHA')
+        r = hertzdamp_rk45_collide(-0.99_wp * sqrt(5.0_wp), law=HD_DAMPING_TSUJI)
+        call hertzdamp_tsuji_e(-0.99_wp * sqrt(5.0_wp), HD_END_OVERLAP, ex, st)
+        call s%check(r%status == HD_OK .and. rel_err(r%e, ex) < 1.0e-9_wp, 'tsuji at -0.99 sqrt5: e = closed form (> 1)')
+        r = hertzdamp_rk45_collide(-sqrt(5.0_wp), law=HD_DAMPING_TSUJI)
+        call s%check(r%status == HD_BAD_ALPHA, 'tsuji at -sqrt5: the contact never ends, HD_BAD_ALPHA')
     end subroutine critical_damping
 
     !> Issue 17 item 10: over consecutive doubles around alpha_c the status is monotone

@@ -17,6 +17,7 @@ program test_scene
                              hertzdamp_dem_select, hertzdamp_dem_rule, hertzdamp_dem_cost_order, hertzdamp_dem_mass
     use hertzdamp_scene_io, only: hertzdamp_scene_read
     use hertzdamp_testing, only: test_suite, new_suite
+    use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
     implicit none
     integer, parameter :: wp = hertzdamp_rk
     type(test_suite) :: s
@@ -28,6 +29,8 @@ program test_scene
     call drop_force_end()
     call chain_and_bed()
     call invalid_scenes()
+    call unrepresentable_scenes()
+    call coincident_centres()
     call long_file()
     call s%finish()
 
@@ -301,5 +304,114 @@ contains
                             '&particle material = ''s'', radius = 1e-3, position = 0,0,5e-4 /', 'overlaps the wall', &
                             'particle in the wall')
     end subroutine invalid_scenes
+
+    !> Scenes the engine cannot compute are refused at load with a message naming
+    !> the key (issue 17): masses that overflow or underflow, energies that overflow,
+    !> a modulus that makes the contact time overflow a step count, trace buffers
+    !> beyond memory; and no value a file gives is taken for a missing key.
+    subroutine unrepresentable_scenes()
+        character(len=*), parameter :: nl = new_line('a')
+        character(len=*), parameter :: scene = '&scene dt = 1e-6, steps_per_contact = 10, end_time = 1e-4 /'
+        character(len=*), parameter :: steel = '&material name = ''s'', density = 7800, youngs_modulus = 2e11, ' // &
+                                               'poisson_ratio = 0.3, restitution = 0.9 /'
+        character(len=*), parameter :: head = scene // nl // steel
+        character(len=*), parameter :: two = '&particle material = ''s'', radius = 1e-3, position = -2e-3,0,0, ' // &
+            'velocity = 1,0,0 /' // nl // '&particle material = ''s'', radius = 1e-3, position = 2e-3,0,0, ' // &
+            'velocity = -1,0,0 /'
+        ! masses: radius 1e200 overflows, 2.2e-308 underflows, 1e100 gives a finite mass
+        ! whose pair product overflows (today: exit 4 at the first contact)
+        call expect_invalid(head // nl // '&particle material = ''s'', radius = 1e200, position = 0,0,0 /', &
+                            'line 3: &particle radius: the mass', 'radius 1e200 (mass overflows)')
+        call expect_invalid(head // nl // '&particle material = ''s'', radius = 2.2e-308, position = 0,0,0 /', &
+                            'line 3: &particle radius: the mass', 'radius 2.2e-308 (mass underflows)')
+        call expect_invalid(head // nl // '&particle material = ''s'', radius = 1e100, position = 0,0,0 /' // nl // &
+                            '&particle material = ''s'', radius = 1e100, position = 3e100,0,0, velocity = -1,0,0 /', &
+                            'line 3: &particle radius: the mass', 'radius 1e100 (mass product overflows)')
+        ! energies: a speed of 1e200 overflows 1/2 m v^2; 1e100 is finite but its energy is not
+        call expect_invalid(head // nl // '&particle material = ''s'', radius = 1e-3, position = 0,0,0, ' // &
+                            'velocity = 1e200,0,0 /', 'line 3: &particle velocity must be at most', 'velocity 1e200')
+        call expect_invalid(head // nl // '&particle material = ''s'', radius = 1e-3, position = 0,0,0, ' // &
+                            'velocity = 1e80,0,0 /', 'line 3: &particle velocity: the kinetic energy scale', &
+                            'velocity 1e80 (energy overflows)')
+        call expect_invalid('&scene dt = 1e-6, steps_per_contact = 10, end_time = 1e-4, gravity = .true., ' // &
+                            'g = 0,0,-1e200 /' // nl // steel // nl // &
+                            '&particle material = ''s'', radius = 1e-3, position = 0,0,0 /', 'g must be at most', 'g 1e200')
+        ! moduli: 1e-300 (the contact time 1.8e119 s overflowed the step count of the
+        ! report) and 1e-100 (within the window, but 1e47 steps per contact)
+        call expect_invalid(scene // nl // '&material name = ''s'', density = 7800, youngs_modulus = 1e-300, ' // &
+                            'poisson_ratio = 0.3, restitution = 0.9 /' // nl // two, 'youngs_modulus must lie within', &
+                            'youngs_modulus 1e-300')
+        call expect_invalid(scene // nl // '&material name = ''s'', density = 7800, youngs_modulus = 1e-100, ' // &
+                            'poisson_ratio = 0.3, restitution = 0.9 /' // nl // two, &
+                            'youngs_modulus: the physical contact time at rest_speed', 'youngs_modulus 1e-100')
+        ! trace buffers: samples = 2147483647 (today: dies allocating 32 GB), and the
+        ! product with the traced particles
+        call expect_invalid('&scene dt = 1e-6, steps_per_contact = 10, end_time = 20, samples = 2147483647 /' // nl // &
+                            steel // nl // '&particle material = ''s'', radius = 1e-3, position = 0,0,0, count = 200, ' // &
+                            'spacing = 0.01,0,0 /', '&scene: samples must be at most 1000000', 'samples 2147483647')
+        call expect_invalid('&scene dt = 1e-6, steps_per_contact = 10, end_time = 20, samples = 100000 /' // nl // &
+                            steel // nl // '&particle material = ''s'', radius = 1e-3, position = 0,0,0, count = 200, ' // &
+                            'spacing = 0.01,0,0 /', 'for a trace of 200 particles', 'samples x traced particles')
+        ! no collision with the missing-key marker: -8.99e307 and -huge are given values
+        call expect_invalid(head // nl // '&particle material = ''s'', radius = 1e-3, position = -9e307,0,0 /', &
+                            'line 3: &particle position must lie within', 'coordinate -9e307 is not missing')
+        call expect_invalid(head // nl // '&particle material = ''s'', radius = 1e-3, ' // &
+                            'position = -1.7976931348623157e308,0,0 /', 'line 3: &particle position must lie within', &
+                            'coordinate -huge is not missing')
+        call expect_invalid('&scene dt = -1.7976931348623157e308, steps_per_contact = 10, end_time = 1 /' // nl // &
+                            steel // nl // '&particle material = ''s'', radius = 1e-3, position = 0,0,0 /', &
+                            'dt must be positive', 'dt = -huge is not missing')
+        call expect_invalid('&scene dt = 1e-6, steps_per_contact = -2147483647, end_time = 1e-4 /' // nl // &
+                            steel // nl // '&particle material = ''s'', radius = 1e-3, position = 0,0,0 /', &
+                            'steps_per_contact must be at least 1', 'steps_per_contact = -huge(1) is not missing')
+        call expect_invalid(head // nl // '&particle material = ''s'', radius = 1e-3, position = 0,0 /', &
+                            'position missing', 'two coordinates: the third is missing')
+        call expect_invalid(scene // nl // '&material name = ''s'', density = 7800, youngs_modulus = 2e11, ' // &
+                            'restitution = 0.9 /' // nl // '&particle material = ''s'', radius = 1e-3, position = 0,0,0 /', &
+                            'poisson_ratio missing', 'missing key still found')
+    end subroutine unrepresentable_scenes
+
+    !> Two centres that meet exactly at a step point: the contact normal is defined
+    !> (the direction between the centres at the start of the step, +x here), the
+    !> run ends normally and no result is NaN or Inf, in every build.
+    subroutine coincident_centres()
+        character(len=*), parameter :: nl = new_line('a')
+        character(len=*), parameter :: path = 'build/test_scene_coincident.nml'
+        type(hertzdamp_dem_scene) :: sc
+        type(hertzdamp_dem_result) :: res
+        integer :: u, status, c
+        character(len=:), allocatable :: msg
+        logical :: finite_all
+        open (newunit=u, file=path, status='replace', action='write')
+        write (u, '(a)') '&scene dt = 1e-6, steps_per_contact = 10, end_time = 3e-6 /' // nl // &
+            '&material name = ''s'', density = 7800, youngs_modulus = 2e11, poisson_ratio = 0.3, restitution = 0.9 /' &
+            // nl // '&particle material = ''s'', radius = 1e-3, position = -0.5,0,0, velocity = 5e5,0,0 /' // nl // &
+            '&particle material = ''s'', radius = 1e-3, position = 0.5,0,0, velocity = -5e5,0,0 /'
+        close (u)
+        call hertzdamp_scene_read(path, sc, status, msg)
+        if (status == HD_OK) call hertzdamp_dem_check(sc, status, msg)
+        call s%check(status == HD_OK, 'coincident centres: scene valid (' // msg // ')')
+        open (newunit=u, file=path, status='old')
+        close (u, status='delete')
+        if (status /= HD_OK) return
+        call hertzdamp_dem_run(sc, HD_METHOD_ITERATIVE, 1.0e-8_wp, res)
+        call s%check(res%status == HD_OK, 'coincident centres: the run ends normally (' // res%message // ')')
+        call s%check(res%ncontacts >= 1, 'coincident centres: a contact starts')
+        if (res%ncontacts < 1) return
+        call s%check(all(abs(res%contacts(1)%n_last - [1.0_wp, 0.0_wp, 0.0_wp]) <= 0.0_wp), &
+                     'coincident centres: normal at onset is the start-of-step direction +x')
+        finite_all = all(ieee_is_finite(res%x_final)) .and. all(ieee_is_finite(res%v_final)) .and. &
+                     ieee_is_finite(res%energy_final) .and. ieee_is_finite(res%energy_rise) .and. &
+                     ieee_is_finite(res%momentum_drift)
+        do c = 1, res%ncontacts
+            associate (ct => res%contacts(c))
+                finite_all = finite_all .and. ieee_is_finite(ct%u_in) .and. ieee_is_finite(ct%u_out) .and. &
+                             ieee_is_finite(ct%k) .and. ieee_is_finite(ct%d) .and. ieee_is_finite(ct%t_end) .and. &
+                             all(ieee_is_finite(ct%n_last)) .and. ieee_is_finite(ct%f_last)
+            end associate
+        end do
+        call s%check(finite_all, 'coincident centres: every result finite')
+        call s%check(res%momentum_drift <= 1.0e-12_wp * res%momentum_scale, 'coincident centres: momentum conserved')
+    end subroutine coincident_centres
 
 end program test_scene

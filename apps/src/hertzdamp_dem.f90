@@ -9,7 +9,8 @@
 module hertzdamp_dem
     use hertzdamp_dem_types, only: hertzdamp_dem_scene, hertzdamp_dem_material, hertzdamp_dem_wall, &
                                    hertzdamp_dem_contact, hertzdamp_dem_result, hertzdamp_dem_max_particles, &
-                                   hertzdamp_dem_max_steps, hertzdamp_dem_max_traced, hertzdamp_dem_u_floor, &
+                                   hertzdamp_dem_max_steps, hertzdamp_dem_max_traced, hertzdamp_dem_max_samples, &
+                                   hertzdamp_dem_max_trace_values, hertzdamp_dem_u_floor, hertzdamp_dem_big, &
                                    HD_CONTACT_ACTIVE, HD_CONTACT_RELEASED, HD_CONTACT_CLOSED, &
                                    hertzdamp_dem_mass, hertzdamp_dem_pair_e, hertzdamp_dem_pair_estar, &
                                    hertzdamp_dem_pairs_met, hertzdamp_dem_nsteps, hertzdamp_dem_trace_size

@@ -17,9 +17,19 @@ module hertzdamp_dem_types
     integer, parameter, public :: hertzdamp_dem_max_steps = 20000000
     !> Most particles whose trace is kept (the first ones of the scene).
     integer, parameter, public :: hertzdamp_dem_max_traced = 200
+    !> Most trace samples a scene may ask for.
+    integer, parameter, public :: hertzdamp_dem_max_samples = 1000000
+    !> Most trace values (samples times traced particles) a run may keep: with a
+    !> position and a velocity of 8 bytes each, 64 MB.
+    integer, parameter, public :: hertzdamp_dem_max_trace_values = 4000000
     !> Lower bound of the impact velocity passed to the rule [m s^-1]: the rule gets
     !> max(u_in, rest_speed, hertzdamp_dem_u_floor).
     real(wp), parameter, public :: hertzdamp_dem_u_floor = 1.0e-9_wp
+    !> Magnitude window of the quantities a scene may put into the engine (SI units):
+    !> masses, stiffnesses and moduli within [1/big, big], energies, momenta, speeds,
+    !> coordinates and accelerations at most big.  The engine forms products of two
+    !> such quantities, which stay finite in double precision.
+    real(wp), parameter, public :: hertzdamp_dem_big = 1.0e150_wp
 
     !> One material.
     type, public :: hertzdamp_dem_material

@@ -134,6 +134,7 @@ module hertzdamp_cli_help
         'the series order (N=10), the array size (n=1000000) or empty.'
     character(len=*), parameter :: scene = &
         'Usage: hertzdamp scene FILE [--method M] [--format text|csv|json] [--plot FILE.png]' // nl // &
+        '                            [--progress] [--no-compare]' // nl // &
         '' // nl // &
         'Runs the DEM scene in FILE (Fortran namelist, see data/scenes/*.nml): spheres and' // nl // &
         'plane walls, normal forces only (tangential forces, friction and rotation are out' // nl // &
@@ -157,18 +158,25 @@ module hertzdamp_cli_help
         '' // nl // &
         '  --method M   auto (default): the cheapest rule whose error, measured against the' // nl // &
         '               reference integrator at the scene''s target e values (pairs of' // nl // &
-        '               materials that can meet), is within the scene''s accuracy.  Cost' // nl // &
+        '               materials that can meet), is within the scene''s accuracy in e and' // nl // &
+        '               in the contact duration tau_c (the report checks both).  Cost' // nl // &
         '               order: first-order < compact < series < pade < fit < iterative.' // nl // &
         '               Or one of first-order compact series pade fit iterative.' // nl // &
         '  --format F   text (default), csv (sections, each after a "# name" line), json' // nl // &
         '  --plot P     positions and velocities against time (gnuplot, PNG)' // nl // &
+        '  --progress   percentage and time left on stderr (also when stderr is a terminal' // nl // &
+        '               and a run takes more than 2 s)' // nl // &
+        '  --no-compare skip the re-run with the iterative rule (no speed-up figures)' // nl // &
         '' // nl // &
         'Reports: the method choice; for every binary contact (no other contact on either' // nl // &
         'body meanwhile) the achieved restitution (separation/impact normal speed) and' // nl // &
         'contact duration against the targets; momentum (no walls, no gravity), energy,' // nl // &
         'domain and rest checks; run time, time in the contact rule, and the same scene' // nl // &
         'run with the iterative rule, with the speed-up.' // nl // &
-        'Invalid scene: one line naming the line or key on stderr, exit 2, no output.'
+        'Invalid scene (also values the engine cannot represent: masses, energies, step' // nl // &
+        'counts, trace sizes): one line naming the line or key on stderr, exit 2, no output.' // nl // &
+        'A check that fails: the report on stdout, one line naming the failed checks on' // nl // &
+        'stderr, exit 5.'
 
 contains
 

@@ -4,6 +4,7 @@
 !> - hertzdamp_dem_types: scene, material, wall, contact, result; limits; pair formulas
 !> - hertzdamp_dem_validate: hertzdamp_dem_check (values, representable magnitudes, layout)
 !> - hertzdamp_dem_rules: hertzdamp_dem_rule (k, d of one contact), hertzdamp_dem_select (auto)
+!> - hertzdamp_dem_checks: the checks of a run (values, bounds, outcomes) that the report prints
 !> - hertzdamp_dem_engine: the state type and the phases of a step; hertzdamp_dem_run, or
 !>   hertzdamp_dem_start / _advance / _finish for a run in pieces (progress reports)
 module hertzdamp_dem
@@ -15,6 +16,10 @@ module hertzdamp_dem
                                    hertzdamp_dem_mass, hertzdamp_dem_pair_e, hertzdamp_dem_pair_estar, &
                                    hertzdamp_dem_pairs_met, hertzdamp_dem_nsteps, hertzdamp_dem_trace_size
     use hertzdamp_dem_validate, only: hertzdamp_dem_check
+    use hertzdamp_dem_checks, only: hertzdamp_dem_check_row, hertzdamp_dem_checks_of, hertzdamp_dem_steps_min, &
+                                    hertzdamp_dem_verlet_energy, hertzdamp_dem_ratio, hertzdamp_dem_checked, &
+                                    hertzdamp_dem_min_resolved, HD_CHECK_PASS, HD_CHECK_FAIL, HD_CHECK_INFO, &
+                                    HD_CHECK_GRAVITY
     use hertzdamp_dem_rules, only: hertzdamp_dem_rule, hertzdamp_dem_select, hertzdamp_dem_targets, &
                                    hertzdamp_dem_cost_order
     use hertzdamp_dem_engine, only: hertzdamp_dem_state, hertzdamp_dem_run, hertzdamp_dem_start, &

@@ -357,16 +357,14 @@ contains
         namelist /scene/ title, dt, steps_per_contact, end_time, gravity, g, contact_end, report, accuracy, &
             domain_lo, domain_hi, rest_speed, samples
         call load(unset_b, iunset_b)
-        if (ios /= 0) then
-            msg = nml_error(lines, first, 'scene', iom)
-            return
-        end if
+        if (len(msg) > 0) return
         dt_b = dt
         end_time_b = end_time
         steps_b = steps_per_contact
         domain_lo_b = domain_lo
         domain_hi_b = domain_hi
         call load(unset_a, iunset_a)
+        if (len(msg) > 0) return
         if (missing(dt, dt_b)) then
             msg = at(first) // '&scene: dt missing (time step [s])'
         else if (missing(end_time, end_time_b)) then
@@ -441,6 +439,7 @@ contains
             rest_speed = 1.0e-3_wp
             samples = 1000
             read (lines, nml=scene, iostat=ios, iomsg=iom)
+            if (ios /= 0) msg = nml_error(lines, first, 'scene', iom)
         end subroutine load
 
     end subroutine read_scene
@@ -457,15 +456,13 @@ contains
         real(wp) :: density_b, youngs_modulus_b, poisson_ratio_b, restitution_b
         namelist /material/ name, density, youngs_modulus, poisson_ratio, restitution
         call load(unset_b)
-        if (ios /= 0) then
-            msg = nml_error(lines, first, 'material', iom)
-            return
-        end if
+        if (len(msg) > 0) return
         density_b = density
         youngs_modulus_b = youngs_modulus
         poisson_ratio_b = poisson_ratio
         restitution_b = restitution
         call load(unset_a)
+        if (len(msg) > 0) return
         if (len_trim(name) == 0) then
             msg = at(first) // '&material: name missing'
         else if (len_trim(name) > len(mt%name)) then
@@ -509,6 +506,7 @@ contains
             poisson_ratio = marker
             restitution = marker
             read (lines, nml=material, iostat=ios, iomsg=iom)
+            if (ios /= 0) msg = nml_error(lines, first, 'material', iom)
         end subroutine load
 
     end subroutine read_material
@@ -536,13 +534,11 @@ contains
         real(wp) :: radius_b, position_b(3)
         namelist /particle/ material, radius, position, velocity, count, spacing
         call load(unset_b)
-        if (ios /= 0) then
-            msg = nml_error(lines, first, 'particle', iom)
-            return
-        end if
+        if (len(msg) > 0) return
         radius_b = radius
         position_b = position
         call load(unset_a)
+        if (len(msg) > 0) return
         im = find_material(sc, material)
         if (len_trim(material) == 0) then
             msg = at(first) // '&particle: material missing'
@@ -586,6 +582,7 @@ contains
             count = 1
             spacing = 0.0_wp
             read (lines, nml=particle, iostat=ios, iomsg=iom)
+            if (ios /= 0) msg = nml_error(lines, first, 'particle', iom)
         end subroutine load
 
     end subroutine read_particle
@@ -602,13 +599,11 @@ contains
         real(wp) :: point_b(3), normal_b(3)
         namelist /wall/ material, point, normal
         call load(unset_b)
-        if (ios /= 0) then
-            msg = nml_error(lines, first, 'wall', iom)
-            return
-        end if
+        if (len(msg) > 0) return
         point_b = point
         normal_b = normal
         call load(unset_a)
+        if (len(msg) > 0) return
         im = find_material(sc, material)
         if (len_trim(material) == 0) then
             msg = at(first) // '&wall: material missing'
@@ -639,6 +634,7 @@ contains
             point = marker
             normal = marker
             read (lines, nml=wall, iostat=ios, iomsg=iom)
+            if (ios /= 0) msg = nml_error(lines, first, 'wall', iom)
         end subroutine load
 
     end subroutine read_wall

@@ -331,9 +331,22 @@ contains
                     kk = kk + 1
                     cycle
                 end if
+                if (zeta <= 0.0_wp .and. sc%iend == HD_END_FORCE .and. ct%d * zdot < 0.0_wp) then
+                    ! force end, and the step jumped over the force zero and the overlap
+                    ! zero: the contact ended at the force zero, from the last force to
+                    ! the force at the step end (its Hertz part is gone with the overlap)
+                    fn = ct%d * zdot
+                    phi = min(1.0_wp, max(0.0_wp, ct%f_last / (ct%f_last - fn)))
+                    call add_impulse(st, ct%i, ct%j, ct%f_last * (phi - 1.0_wp) * 0.5_wp * dt, ct%n_last)
+                    ct%t_end = t + phi * dt
+                    ct%state = HD_CONTACT_CLOSED
+                    call push(st%ended, st%nended, c)
+                    call close_contact(st, res, kk)
+                    cycle
+                end if
                 if (zeta <= 0.0_wp) then
-                    ! overlap gone (the overlap end; with the force end only when a step
-                    ! jumps over the force zero).  In contact for the fraction phi of the
+                    ! overlap gone (the overlap end; with the force end when a step jumps
+                    ! over the overlap zero with a force still positive).  In contact for the fraction phi of the
                     ! step: the damping part of the last force acts for phi dt, its Hertz
                     ! part (zeta -> 0 linearly) for 2/5 phi dt; the opening kick gave both dt/2.
                     phi = 0.0_wp

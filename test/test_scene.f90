@@ -360,6 +360,18 @@ contains
         call expect_invalid(scene // nl // '&material name = ''s'', density = 7800, youngs_modulus = 1e-100, ' // &
                             'poisson_ratio = 0.3, restitution = 0.9 /' // nl // two, &
                             'youngs_modulus: the physical contact time at rest_speed', 'youngs_modulus 1e-100')
+        ! restitution only (k = k_phys at every contact): a contact far shorter than one
+        ! step (a density of 1e-50, a modulus of 1e100) made the run overflow at once
+        call expect_invalid('&scene dt = 1e-7, end_time = 1e-5, report = ''restitution'' /' // nl // &
+                            '&material name = ''s'', density = 1e-50, youngs_modulus = 2e11, poisson_ratio = 0.3, ' // &
+                            'restitution = 0.9 /' // nl // two, 'dt: the shortest physical contact', 'density 1e-50')
+        call expect_invalid('&scene dt = 1e-7, end_time = 1e-5, report = ''restitution'' /' // nl // &
+                            '&material name = ''s'', density = 7800, youngs_modulus = 1e100, poisson_ratio = 0.3, ' // &
+                            'restitution = 0.9 /' // nl // two, 'dt: the shortest physical contact', 'youngs_modulus 1e100')
+        ! one step of dt = 1e50 s (end_time 5e-5): the travel of that step counts
+        call expect_invalid('&scene dt = 1e50, steps_per_contact = 10, end_time = 5e-5 /' // nl // steel // nl // &
+                            '&particle material = ''s'', radius = 1e-3, position = 0,0,0, velocity = 1e120,0,0 /', &
+                            'the distance travelled in the run', 'one huge step')
         ! trace buffers: samples = 2147483647 (today: dies allocating 32 GB), and the
         ! product with the traced particles
         call expect_invalid('&scene dt = 1e-6, steps_per_contact = 10, end_time = 20, samples = 2147483647 /' // nl // &

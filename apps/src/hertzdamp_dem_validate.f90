@@ -6,8 +6,10 @@
 !> particle mass, density, Young's modulus and each meeting pair's physical stiffness
 !> k_phys lie within [1/big, big]; coordinates, speeds, g, rest_speed, dt and
 !> end_time at most big; the scene's kinetic-energy, momentum and gravitational
-!> energy scales at most big, counting what gravity can add in end_time; the longest
-!> physical contact (at rest_speed) fewer than 2^31 - 1 steps; the contact rule gives
+!> energy scales at most big, counting what gravity can add in the run; the longest
+!> physical contact (at rest_speed) fewer than 2^31 - 1 steps, and with k = k_phys at
+!> every contact (restitution only) the shortest (the fastest impact) at least one
+!> step; the contact rule gives
 !> finite k and d at the extreme masses and speeds of each meeting pair; the trace
 !> within hertzdamp_dem_max_samples and hertzdamp_dem_max_trace_values.  The engine
 !> forms products of two such quantities at most, which stay far inside double
@@ -260,7 +262,7 @@ contains
     pure function magnitudes(sc) result(message)
         type(hertzdamp_dem_scene), intent(in) :: sc
         character(len=:), allocatable :: message
-        real(wp) :: lm(size(sc%radius)), lspeed, lfall, lgrav, lx, ltot_m, lsum
+        real(wp) :: lm(size(sc%radius)), lspeed, lfall, lgrav, lx, ltot_m, lsum, lrun
         integer :: i, w
         character(len=:), allocatable :: at
         message = ''
@@ -296,19 +298,21 @@ contains
             end if
             if (len(message) > 0) return
         end do
-        ! scales over the run: speeds up to |v| + |g| end_time, travel up to that
-        ! times end_time, energy 1/2 m speed^2, momentum m speed, gravity m |g| |x|
+        ! scales over the run (the time run, T = steps dt, at least one step): speeds
+        ! up to |v| + |g| T, travel up to that times T, energy 1/2 m speed^2, momentum
+        ! m speed, gravity m |g| |x|
+        lrun = lg(run_time(sc))
         ltot_m = maxval(lm) + lg(real(size(lm), wp))
-        lfall = lg(norm2(sc%g)) + lg(sc%end_time)
+        lfall = lg(norm2(sc%g)) + lrun
         lx = lg(maxval(abs(sc%x)))
         if (sc%has_domain) lx = max(lx, lg(maxval(abs([sc%domain_lo, sc%domain_hi]))))
         do i = 1, size(sc%radius)
             lspeed = lg_add(lg(norm2(sc%v(:, i))), lfall)
-            lsum = lg_add(lx, lspeed + lg(sc%end_time))
+            lsum = lg_add(lx, lspeed + lrun)
             lgrav = ltot_m + lg(norm2(sc%g)) + lsum
             at = line_text(sc%pline(i)) // '&particle velocity: '
-            if (lspeed + lg(sc%end_time) > lg_big) then
-                message = at // 'the distance travelled in end_time, about ' // pow10_text(lspeed + lg(sc%end_time)) // &
+            if (lspeed + lrun > lg_big) then
+                message = at // 'the distance travelled in the run, about ' // pow10_text(lspeed + lrun) // &
                           ' m, exceeds 1e150 m'
             else if (ltot_m + 2.0_wp * lspeed > lg_big) then
                 message = at // 'the kinetic energy scale 1/2 sum(m) |v|^2, about ' // &
@@ -350,7 +354,7 @@ contains
         end do
         ! slowest speed the rule gets, and the fastest impact: the speed scale
         lu(1) = max(sc%rest_speed, hertzdamp_dem_u_floor)
-        lu(2) = max(lu(1), 2.0_wp * (maxval(norm2(sc%v, dim=1)) + norm2(sc%g) * sc%end_time))
+        lu(2) = max(lu(1), 2.0_wp * (maxval(norm2(sc%v, dim=1)) + norm2(sc%g) * run_time(sc)))
         do a = 1, nm
             do b = a, nm
                 if (.not. met(a, b)) cycle
@@ -375,6 +379,17 @@ contains
                     message = pair // 'youngs_modulus: the physical contact time at rest_speed, about ' // &
                               pow10_text(lts) // ' s, is more than ' // int_text(huge(1)) // &
                               ' steps of dt (youngs_modulus too small for dt)'
+                    return
+                end if
+                ! shortest physical contact (restitution only: k = k_phys at every
+                ! contact): at the smallest mass, largest stiffness and fastest speed; a
+                ! contact shorter than one step cannot be integrated (the force
+                ! overshoots and the run overflows)
+                lts = (2.0_wp * lm(1) - 2.0_wp * lkp(2) - lg(lu(2))) / 5.0_wp + lg(tau)
+                if (.not. sc%want_duration .and. lts < lg(sc%dt)) then
+                    message = pair // 'dt: the shortest physical contact (impact at ' // pow10_text(lg(lu(2))) // &
+                              ' m/s) lasts about ' // pow10_text(lts) // ' s, less than one step dt = ' // &
+                              pow10_text(lg(sc%dt)) // ' s (dt too large, or youngs_modulus or density out of scale)'
                     return
                 end if
                 ! the rule at the corners (mass, stiffness) x (slowest, fastest speed)
@@ -432,6 +447,12 @@ contains
         end subroutine ranges
 
     end function pair_limits
+
+    !> Time the run covers: its steps times dt (at least one step) [s].
+    pure real(wp) function run_time(sc)
+        type(hertzdamp_dem_scene), intent(in) :: sc
+        run_time = hertzdamp_dem_nsteps(sc) * sc%dt
+    end function run_time
 
     !> Walls: unit normals, no particle in a wall at the start; no two particles
     !> overlapping at the start.

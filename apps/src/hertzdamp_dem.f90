@@ -13,8 +13,7 @@ module hertzdamp_dem
                                    hertzdamp_dem_max_steps, hertzdamp_dem_max_traced, hertzdamp_dem_max_samples, &
                                    hertzdamp_dem_max_trace_values, hertzdamp_dem_u_floor, hertzdamp_dem_big, &
                                    HD_CONTACT_ACTIVE, HD_CONTACT_RELEASED, HD_CONTACT_CLOSED, &
-                                   hertzdamp_dem_mass, hertzdamp_dem_pair_e, hertzdamp_dem_pair_estar, &
-                                   hertzdamp_dem_pairs_met, hertzdamp_dem_nsteps, hertzdamp_dem_trace_size
+                                   hertzdamp_dem_pair_e, hertzdamp_dem_pairs_met, hertzdamp_dem_nsteps, hertzdamp_dem_trace_size
     use hertzdamp_dem_validate, only: hertzdamp_dem_check
     use hertzdamp_dem_checks, only: hertzdamp_dem_check_row, hertzdamp_dem_checks_of, hertzdamp_dem_steps_min, &
                                     hertzdamp_dem_verlet_energy, hertzdamp_dem_ratio, hertzdamp_dem_checked, &

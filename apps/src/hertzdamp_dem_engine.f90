@@ -60,9 +60,10 @@
 module hertzdamp_dem_engine
     use hertzdamp_kinds, only: hertzdamp_rk
     use hertzdamp_status, only: HD_OK, HD_END_FORCE, HD_OUT_OF_RANGE, hertzdamp_message
+    use hertzdamp_materials, only: hertzdamp_sphere_mass, hertzdamp_effective_mass, hertzdamp_effective_radius, &
+                                   hertzdamp_effective_modulus, hertzdamp_hertz_stiffness
     use hertzdamp_dem_types, only: hertzdamp_dem_scene, hertzdamp_dem_contact, hertzdamp_dem_result, &
-                                   hertzdamp_dem_mass, hertzdamp_dem_pair_e, hertzdamp_dem_pair_estar, &
-                                   hertzdamp_dem_nsteps, hertzdamp_dem_trace_size, hertzdamp_dem_u_floor, &
+                                   hertzdamp_dem_pair_e, hertzdamp_dem_nsteps, hertzdamp_dem_trace_size, hertzdamp_dem_u_floor, &
                                    HD_CONTACT_ACTIVE, HD_CONTACT_RELEASED, HD_CONTACT_CLOSED
     use hertzdamp_dem_rules, only: hertzdamp_dem_rule
     implicit none
@@ -161,8 +162,9 @@ contains
         integer, intent(in) :: method                  !! HD_METHOD_*
         real(wp), intent(in) :: tol                    !! iterative rule tolerance
         type(hertzdamp_dem_state), intent(out) :: st   !! the state at t = 0
-        type(hertzdamp_dem_result), intent(out) :: res !! the result so far
+        type(hertzdamp_dem_result), intent(out) :: res !! the result so far (status set when the scene cannot start)
         integer :: n, nw, nm, i, j, nsamples
+        integer, allocatable :: status(:)
         n = size(sc%radius)
         nw = size(sc%wall)
         nm = size(sc%mat)
@@ -176,16 +178,30 @@ contains
         if (sc%gravity) st%g = sc%g
         res%method = method
         res%message = ''
-        allocate (st%mass(n), st%rad(n), st%estar(nm, nm), st%e_pair(nm, nm))
+        allocate (st%mass(n), st%rad(n), st%estar(nm, nm), st%e_pair(nm, nm), status(n))
+        ! masses and E* from the core (hertzdamp_materials); a scene that passed
+        ! hertzdamp_dem_check gets HD_OK, any other failure stops the run before its start
         do i = 1, nm
             do j = 1, nm
-                st%estar(i, j) = hertzdamp_dem_pair_estar(sc%mat(i), sc%mat(j))
+                call hertzdamp_effective_modulus(sc%mat(i)%youngs_modulus, sc%mat(i)%poisson_ratio, &
+                                                 sc%mat(j)%youngs_modulus, sc%mat(j)%poisson_ratio, st%estar(i, j), &
+                                                 status(1))
+                if (status(1) /= HD_OK .and. res%status == HD_OK) then
+                    res%status = status(1)
+                    res%message = 'material pair ' // trim(sc%mat(i)%name) // ' - ' // trim(sc%mat(j)%name) // &
+                                  ': E*: ' // hertzdamp_message(status(1))
+                end if
                 st%e_pair(i, j) = hertzdamp_dem_pair_e(sc%mat(i), sc%mat(j))
             end do
         end do
         st%rad = sc%radius
         st%rmax = maxval(st%rad)
-        st%mass = hertzdamp_dem_mass(sc%mat(sc%pmat)%density, st%rad)
+        call hertzdamp_sphere_mass(st%rad, sc%mat(sc%pmat)%density, st%mass, status)
+        if (any(status /= HD_OK) .and. res%status == HD_OK) then
+            i = findloc(status /= HD_OK, .true., dim=1)
+            res%status = status(i)
+            res%message = 'particle ' // int_text(i) // ': mass: ' // hertzdamp_message(status(i))
+        end if
         st%x = sc%x
         st%v = sc%v
         allocate (st%acc(3, n))
@@ -549,25 +565,28 @@ contains
         in_contact = 1.0_wp - before
         ct%i = i
         ct%j = j
+        ! effective mass and radius, k_phys from the core (hertzdamp_materials)
         if (j > 0) then
-            ct%m = st%mass(i) * st%mass(j) / (st%mass(i) + st%mass(j))
+            call hertzdamp_effective_mass(st%mass(i), st%mass(j), ct%m, status)
+            if (status == HD_OK) call hertzdamp_effective_radius(st%rad(i), st%rad(j), r_eff, status)
             mb = sc%pmat(j)
-            r_eff = st%rad(i) * st%rad(j) / (st%rad(i) + st%rad(j))
             va = (st%v_start(:, j) + before * dt * st%acc(:, j)) - (st%v_start(:, i) + before * dt * st%acc(:, i))
         else
             ct%m = st%mass(i)
-            mb = sc%wall(-j)%material
             r_eff = st%rad(i)
+            status = HD_OK
+            mb = sc%wall(-j)%material
             va = -(st%v_start(:, i) + before * dt * st%acc(:, i))
         end if
+        if (status == HD_OK) call hertzdamp_hertz_stiffness(st%estar(sc%pmat(i), mb), r_eff, ct%k_phys, status)
         call geometry(sc, st, i, j, st%x, st%v_pred, onset_normal(sc, st, i, j), z, zdot, nv)
         u = -dot_product(va, nv)
         ct%u_in = u
         ct%u_rule = max(u, sc%rest_speed, hertzdamp_dem_u_floor)
-        ct%k_phys = 4.0_wp / 3.0_wp * st%estar(sc%pmat(i), mb) * sqrt(r_eff)
         ct%e_target = st%e_pair(sc%pmat(i), mb)
-        call hertzdamp_dem_rule(ct%e_target, st%tc_wanted, ct%m, ct%u_rule, ct%k_phys, sc%iend, st%method, &
-                                sc%want_duration, st%tol, ct%k, ct%d, ct%tc_target, ct%bound_active, status)
+        if (status == HD_OK) call hertzdamp_dem_rule(ct%e_target, st%tc_wanted, ct%m, ct%u_rule, ct%k_phys, sc%iend, &
+                                                     st%method, sc%want_duration, st%tol, ct%k, ct%d, ct%tc_target, &
+                                                     ct%bound_active, status)
         if (status /= HD_OK) then
             res%status = status
             res%message = contact_name(i, j) // ' at t = ' // real_text(t + before * dt) // ': ' // hertzdamp_message(status)
@@ -628,6 +647,14 @@ contains
         end if
         s = trim(b)
     end function contact_name
+
+    pure function int_text(i) result(s)
+        integer, intent(in) :: i
+        character(len=:), allocatable :: s
+        character(len=16) :: b
+        write (b, '(i0)') i
+        s = trim(b)
+    end function int_text
 
     pure function real_text(x) result(s)
         real(wp), intent(in) :: x

@@ -1,7 +1,8 @@
 !> The data of the DEM engine: a scene (settings, materials, particles, walls), the
 !> record of one contact, the result of a run, the engine's limits, and the small
-!> pure formulas of the material pairs (mass of a sphere, pair restitution, E*, which
-!> pairs can meet).  No procedure here changes anything but its own result.
+!> pure formulas of the scene's material pairs (pair restitution, which pairs can
+!> meet).  Masses, effective masses and radii, E* and k_phys come from the core
+!> (hertzdamp_materials).  No procedure here changes anything but its own result.
 module hertzdamp_dem_types
     use hertzdamp_kinds, only: hertzdamp_rk
     use hertzdamp_status, only: HD_OK, HD_END_OVERLAP
@@ -125,17 +126,10 @@ module hertzdamp_dem_types
         real(wp), allocatable :: v_final(:, :)  !! final velocities (3, n)
     end type hertzdamp_dem_result
 
-    public :: hertzdamp_dem_mass, hertzdamp_dem_pair_e, hertzdamp_dem_pair_estar, hertzdamp_dem_pairs_met
+    public :: hertzdamp_dem_pair_e, hertzdamp_dem_pairs_met
     public :: hertzdamp_dem_nsteps, hertzdamp_dem_trace_size
 
 contains
-
-    !> Mass of a sphere [kg].
-    pure elemental real(wp) function hertzdamp_dem_mass(density, radius)
-        real(wp), intent(in) :: density  !! [kg m^-3]
-        real(wp), intent(in) :: radius   !! [m]
-        hertzdamp_dem_mass = density * 4.0_wp / 3.0_wp * acos(-1.0_wp) * radius**3
-    end function hertzdamp_dem_mass
 
     !> Target restitution of a material pair, sqrt(e_a e_b).
     pure real(wp) function hertzdamp_dem_pair_e(a, b)
@@ -143,14 +137,6 @@ contains
         type(hertzdamp_dem_material), intent(in) :: b  !! second material
         hertzdamp_dem_pair_e = sqrt(a%restitution * b%restitution)
     end function hertzdamp_dem_pair_e
-
-    !> Effective modulus E* of a material pair, 1/E* = (1-nu_a^2)/E_a + (1-nu_b^2)/E_b.
-    pure real(wp) function hertzdamp_dem_pair_estar(a, b)
-        type(hertzdamp_dem_material), intent(in) :: a  !! first material
-        type(hertzdamp_dem_material), intent(in) :: b  !! second material
-        hertzdamp_dem_pair_estar = 1.0_wp / ((1.0_wp - a%poisson_ratio**2) / a%youngs_modulus + &
-                                             (1.0_wp - b%poisson_ratio**2) / b%youngs_modulus)
-    end function hertzdamp_dem_pair_estar
 
     !> The material pairs that can meet, decided from the layout before the run:
     !> (a, b) of two particles' materials (a = b needs two particles of a), and

@@ -21,10 +21,12 @@ module hertzdamp_dem_validate
     use hertzdamp_methods, only: HD_METHOD_FIT
     use hertzdamp_constants, only: hertzdamp_tau_c0
     use hertzdamp_inverse, only: hertzdamp_invert_alpha
+    use hertzdamp_materials, only: hertzdamp_sphere_mass, hertzdamp_effective_mass, hertzdamp_effective_radius, &
+                                   hertzdamp_effective_modulus
     use hertzdamp_dem_types, only: hertzdamp_dem_scene, hertzdamp_dem_max_particles, hertzdamp_dem_max_steps, &
                                    hertzdamp_dem_max_samples, hertzdamp_dem_max_trace_values, hertzdamp_dem_big, &
-                                   hertzdamp_dem_u_floor, hertzdamp_dem_mass, hertzdamp_dem_pair_e, &
-                                   hertzdamp_dem_pair_estar, hertzdamp_dem_pairs_met, hertzdamp_dem_nsteps, &
+                                   hertzdamp_dem_u_floor, hertzdamp_dem_pair_e, hertzdamp_dem_pairs_met, &
+                                   hertzdamp_dem_nsteps, &
                                    hertzdamp_dem_trace_size
     use hertzdamp_dem_rules, only: hertzdamp_dem_rule
     implicit none
@@ -349,8 +351,8 @@ contains
             if (count(sc%pmat == a) == 0) cycle
             rlo(a) = minval(sc%radius, mask=sc%pmat == a)
             rhi(a) = maxval(sc%radius, mask=sc%pmat == a)
-            mlo(a) = hertzdamp_dem_mass(sc%mat(a)%density, rlo(a))
-            mhi(a) = hertzdamp_dem_mass(sc%mat(a)%density, rhi(a))
+            call hertzdamp_sphere_mass(rlo(a), sc%mat(a)%density, mlo(a), st)   ! within the window: HD_OK
+            call hertzdamp_sphere_mass(rhi(a), sc%mat(a)%density, mhi(a), st)
         end do
         ! slowest speed the rule gets, and the fastest impact: the speed scale
         lu(1) = max(sc%rest_speed, hertzdamp_dem_u_floor)
@@ -359,7 +361,12 @@ contains
             do b = a, nm
                 if (.not. met(a, b)) cycle
                 pair = 'material pair ''' // trim(sc%mat(a)%name) // ''' - ''' // trim(sc%mat(b)%name) // ''': '
-                estar = hertzdamp_dem_pair_estar(sc%mat(a), sc%mat(b))
+                call hertzdamp_effective_modulus(sc%mat(a)%youngs_modulus, sc%mat(a)%poisson_ratio, &
+                                                 sc%mat(b)%youngs_modulus, sc%mat(b)%poisson_ratio, estar, st)
+                if (st /= HD_OK) then
+                    message = pair // 'youngs_modulus, poisson_ratio: E*: ' // hertzdamp_message(st)
+                    return
+                end if
                 call ranges(a, b, estar, mm, lkp)
                 lm = lg(mm)
                 if (any(abs(lkp) > lg_big)) then
@@ -419,7 +426,7 @@ contains
             real(wp), intent(in) :: estar
             real(wp), intent(out) :: mm(2), lkp(2)
             real(wp) :: m_lo, m_hi, r_lo, r_hi
-            integer :: na, nb, side, p, q
+            integer :: na, nb, side, p, q, st
             na = count(sc%pmat == a)
             nb = count(sc%pmat == b)
             m_lo = huge(1.0_wp)
@@ -428,10 +435,10 @@ contains
             r_hi = 0.0_wp
             if (na > 0 .and. nb > 0 .and. (a /= b .or. na >= 2)) then
                 ! m1 m2/(m1 + m2) and r1 r2/(r1 + r2) grow with each of m1, m2 (r1, r2)
-                m_lo = mlo(a) * mlo(b) / (mlo(a) + mlo(b))
-                m_hi = mhi(a) * mhi(b) / (mhi(a) + mhi(b))
-                r_lo = rlo(a) * rlo(b) / (rlo(a) + rlo(b))
-                r_hi = rhi(a) * rhi(b) / (rhi(a) + rhi(b))
+                call hertzdamp_effective_mass(mlo(a), mlo(b), m_lo, st)   ! within the window: HD_OK
+                call hertzdamp_effective_mass(mhi(a), mhi(b), m_hi, st)
+                call hertzdamp_effective_radius(rlo(a), rlo(b), r_lo, st)
+                call hertzdamp_effective_radius(rhi(a), rhi(b), r_hi, st)
             end if
             do side = 1, 2
                 p = merge(a, b, side == 1)   ! particles of p against a wall of q

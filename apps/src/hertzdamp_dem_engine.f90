@@ -66,6 +66,7 @@ module hertzdamp_dem_engine
                                    hertzdamp_dem_pair_e, hertzdamp_dem_nsteps, hertzdamp_dem_trace_size, hertzdamp_dem_u_floor, &
                                    HD_CONTACT_ACTIVE, HD_CONTACT_RELEASED, HD_CONTACT_CLOSED
     use hertzdamp_dem_rules, only: hertzdamp_dem_rule
+    use hertzdamp_dem_types, only: int_text => hertzdamp_dem_int_text
     implicit none
     private
 
@@ -647,14 +648,6 @@ contains
         end if
         s = trim(b)
     end function contact_name
-
-    pure function int_text(i) result(s)
-        integer, intent(in) :: i
-        character(len=:), allocatable :: s
-        character(len=16) :: b
-        write (b, '(i0)') i
-        s = trim(b)
-    end function int_text
 
     pure function real_text(x) result(s)
         real(wp), intent(in) :: x

@@ -127,7 +127,7 @@ module hertzdamp_dem_types
     end type hertzdamp_dem_result
 
     public :: hertzdamp_dem_pair_e, hertzdamp_dem_pairs_met
-    public :: hertzdamp_dem_nsteps, hertzdamp_dem_trace_size
+    public :: hertzdamp_dem_nsteps, hertzdamp_dem_trace_size, hertzdamp_dem_int_text
 
 contains
 
@@ -192,5 +192,14 @@ contains
         nsamples = nsteps / every + 1
         ntraced = min(size(sc%radius), hertzdamp_dem_max_traced)
     end subroutine hertzdamp_dem_trace_size
+
+    !> An integer as text, for messages.
+    pure function hertzdamp_dem_int_text(i) result(s)
+        integer, intent(in) :: i       !! the integer
+        character(len=:), allocatable :: s  !! its decimal digits
+        character(len=16) :: b
+        write (b, '(i0)') i
+        s = trim(b)
+    end function hertzdamp_dem_int_text
 
 end module hertzdamp_dem_types

@@ -29,6 +29,7 @@ module hertzdamp_dem_validate
                                    hertzdamp_dem_nsteps, &
                                    hertzdamp_dem_trace_size
     use hertzdamp_dem_rules, only: hertzdamp_dem_rule
+    use hertzdamp_dem_types, only: int_text => hertzdamp_dem_int_text
     implicit none
     private
 
@@ -102,14 +103,6 @@ contains
         character(len=:), allocatable :: s
         s = 'line ' // int_text(line) // ': '
     end function line_text
-
-    pure function int_text(i) result(s)
-        integer, intent(in) :: i
-        character(len=:), allocatable :: s
-        character(len=16) :: b
-        write (b, '(i0)') i
-        s = trim(b)
-    end function int_text
 
     !> Every real value finite (NaN or Inf would reach the report).
     pure function finite_values(sc) result(message)

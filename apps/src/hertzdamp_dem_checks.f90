@@ -135,7 +135,7 @@ contains
         logical :: ok
         allocate (rows(0))
         nmin = hertzdamp_dem_steps_min(sc, res)
-        nb = min(nmin, 1.0e100_wp)   ! for the bounds: 1/N^2 without overflow
+        nb = min(max(nmin, 1.0e-50_wp), 1.0e100_wp)   ! for the bounds: 1/N^2 and its square without overflow
         bound = sc%accuracy + 2.0_wp / nb**2
         mask = hertzdamp_dem_checked(sc, res)
         if (any(mask)) call add_errors(rows, res, 'binary contacts', mask, bound, sc%gravity)

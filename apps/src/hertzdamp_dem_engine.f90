@@ -353,7 +353,8 @@ contains
                     ! zero: the contact ended at the force zero, from the last force to
                     ! the force at the step end (its Hertz part is gone with the overlap)
                     fn = ct%d * zdot
-                    phi = min(1.0_wp, max(0.0_wp, ct%f_last / (ct%f_last - fn)))
+                    phi = 0.0_wp
+                    if (ct%f_last - fn > 0.0_wp) phi = min(1.0_wp, max(0.0_wp, ct%f_last / (ct%f_last - fn)))
                     call add_impulse(st, ct%i, ct%j, ct%f_last * (phi - 1.0_wp) * 0.5_wp * dt, ct%n_last)
                     ct%t_end = t + phi * dt
                     ct%state = HD_CONTACT_CLOSED

@@ -39,8 +39,8 @@ module hertzdamp_cli_plot
 
     !> The last 12 bytes of every complete PNG: the empty IEND chunk with its CRC.
     character(len=*), parameter :: png_end = achar(0) // achar(0) // achar(0) // achar(0) // 'IEND' // &
-                                             achar(174) // achar(66) // achar(96) // achar(130)
-    character(len=*), parameter :: png_signature = achar(137) // 'PNG' // achar(13) // achar(10) // achar(26) // &
+                                             char(174) // achar(66) // achar(96) // char(130)
+    character(len=*), parameter :: png_signature = char(137) // 'PNG' // achar(13) // achar(10) // achar(26) // &
                                                    achar(10)
 
 contains
@@ -197,19 +197,19 @@ contains
         character(len=:), allocatable, intent(out) :: bytes
         character(len=:), allocatable, intent(inout) :: why
         integer :: u, ios, n
-        bytes = ''
         open (newunit=u, file=file, status='old', action='read', access='stream', form='unformatted', iostat=ios)
         if (ios /= 0) then
+            bytes = ''
             why = 'gnuplot wrote no plot'
             return
         end if
         inquire (unit=u, size=n)
+        allocate (character(len=max(n, 0)) :: bytes)
         if (n <= 0) then
             close (u)
             why = 'gnuplot wrote an empty plot'
             return
         end if
-        allocate (character(len=n) :: bytes)
         read (u, iostat=ios) bytes
         close (u)
         if (ios /= 0) why = 'cannot read the plot gnuplot wrote'

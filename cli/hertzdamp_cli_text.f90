@@ -9,7 +9,7 @@ module hertzdamp_cli_text
 
     integer, parameter :: wp = hertzdamp_rk
     !> U+FFFD REPLACEMENT CHARACTER, in UTF-8.
-    character(len=*), parameter :: replacement = achar(239) // achar(191) // achar(189)
+    character(len=*), parameter :: replacement = char(239) // char(191) // char(189)
 
     public :: utf8_clean, one_line, json_string, csv_field, fmt_csv, fmt_json, fmt_text, fmt_short, itoa
 

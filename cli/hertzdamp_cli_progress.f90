@@ -1,8 +1,8 @@
 !> Progress of long work on stderr: a percentage and an estimate of the time left.
 !>
 !> Shown only when stderr is a terminal, or when the user asked for it (`--progress`);
-!> stdout is never touched, and nothing is printed for work that ends within
-!> `delay` seconds (default 2).  On a terminal one line is rewritten in place
+!> stdout is never touched.  On a terminal nothing is printed for work that ends
+!> within `delay` seconds (default 2); on request the first line comes at once.  On a terminal one line is rewritten in place
 !> (carriage return) at most 4 times a second and erased by `finish`; otherwise (with
 !> --progress into a file or pipe) a full line is written at most every 5 seconds.
 !>
@@ -74,7 +74,8 @@ contains
         self%total = max(total, tiny(1.0_wp))
         self%label = label
         self%shown = .false.
-        self%delay = 2.0_wp
+        ! on request, from the start; on a terminal alone, only for work over 2 s
+        self%delay = merge(0.0_wp, 2.0_wp, self%active .and. .not. self%tty)
         if (present(delay)) self%delay = max(delay, 0.0_wp)
         call system_clock(self%t0, self%rate)
         self%last = self%t0

@@ -177,18 +177,18 @@ contains
         end if
     end function fmt_json
 
-    !> A number for aligned text: 12 significant digits in a field of width 19.
+    !> A number for aligned text (people): 7 significant digits, e.g. 5.235988E-006;
+    !> 'inf', '-inf' or 'nan' if not finite.  CSV and JSON carry 16.
     function fmt_text(x) result(s)
         real(wp), intent(in) :: x
         character(len=:), allocatable :: s
-        character(len=19) :: buf
+        character(len=24) :: buf
         if (.not. ieee_is_finite(x)) then
-            buf = ''
-            buf(19 - len(fmt_csv(x)) + 1:) = fmt_csv(x)
+            s = fmt_csv(x)
         else
-            write (buf, '(es19.11)') x
+            write (buf, '(es16.6e3)') x
+            s = trim(adjustl(buf))
         end if
-        s = buf
     end function fmt_text
 
     !> A number in a message: at most 6 significant digits, trailing zeros dropped,

@@ -1,4 +1,4 @@
-!> hertzdamp: the damped Hertzian normal collision, forward and inverse.
+!> The umbrella module of hertzdamp, the damped Hertzian normal collision, forward and inverse.
 !>
 !> `use hertzdamp` gives the whole public API: kinds, status codes and messages,
 !> the dimensionless reduction, the reference integrator, the named constants, the

@@ -1,5 +1,5 @@
 !> A compact DEM engine for spheres with normal contact forces only, used to run the
-!> scenes of `data/scenes/` (THEORY.md section 6: the inverse rule at every contact).
+!> scenes of `data/scenes/` (doc/theory.md section 6: the inverse rule at every contact).
 !>
 !> - Spheres in 3-D (a 1-D column is a scene whose particles lie on one line),
 !>   plane walls, optional uniform gravity.  Tangential forces, friction and

@@ -71,7 +71,8 @@ module hertzdamp_cli
         end subroutine c_exit
     end interface
 
-    public :: parse_args, parse_real, parse_real_list, parse_range, parse_sweep, parse_int, parse_choice
+    public :: parse_args, parse_real, parse_real_list, parse_range, parse_sweep, required_sweep, parse_int, parse_choice
+    public :: check_combinations
     public :: exit_code_of, write_failed, write_stdout
     public :: fail, quit, fmt_csv, fmt_text, fmt_json, fmt_short, json_string, csv_join, pad
 
@@ -386,6 +387,23 @@ contains
             j = i + 1
         end do
     end function parse_sweep
+
+    !> A required sweep option (exit 2 when it is missing).
+    function required_sweep(args, key) result(x)
+        type(cli_args), intent(in) :: args
+        character(len=*), intent(in) :: key    !! the option, e.g. '--velocity'
+        real(wp), allocatable :: x(:)
+        if (.not. args%has(key)) call fail(EXIT_USAGE, 'missing option ' // key // ' (see --help)')
+        x = parse_sweep(args%get(key, ''), key)
+    end function required_sweep
+
+    !> Exit 2 when the combinations of the swept lists exceed max_list_length rows.
+    subroutine check_combinations(sizes, names)
+        integer, intent(in) :: sizes(:)          !! number of values of each list
+        character(len=*), intent(in) :: names    !! the lists, for the message
+        if (product(real(sizes, wp)) > max_list_length) call fail(EXIT_USAGE, 'too many combinations of ' // &
+            names // ' (at most ' // itoa(max_list_length) // ' rows)')
+    end subroutine check_combinations
 
     !> Index (1-based) of `text` in the space-separated `choices`; exit 2 otherwise.
     integer function parse_choice(text, choices, what) result(k)

@@ -22,8 +22,10 @@
 module hertzdamp_cli_materials
     use hertzdamp, only: hertzdamp_rk, hertzdamp_sphere_mass, hertzdamp_effective_mass, hertzdamp_effective_radius, &
                          hertzdamp_plane_strain_modulus, hertzdamp_effective_modulus, hertzdamp_hertz_stiffness, &
-                         hertzdamp_message, HD_OK, HD_OUT_OF_RANGE, HD_BAD_DENSITY, HD_BAD_POISSON
+                         hertzdamp_message, hertzdamp_end_name, HD_OK, HD_OUT_OF_RANGE, HD_BAD_DENSITY, HD_BAD_POISSON
     use hertzdamp_cli, only: cli_args, parse_real, fail, EXIT_USAGE
+    use hertzdamp_cli_output, only: out_table
+    use hertzdamp_cli_model, only: model_opts
     implicit none
     private
 
@@ -49,7 +51,7 @@ module hertzdamp_cli_materials
         character(len=:), allocatable :: description   !! e.g. 'two spheres', 'sphere and wall'
     end type cli_contact
 
-    public :: parse_contact
+    public :: parse_contact, contact_table
 
 contains
 
@@ -141,6 +143,21 @@ contains
             ct%from_materials = .true.
         end if
     end subroutine parse_contact
+
+    !> Start a table of a command on a contact: its columns, and as metadata the
+    !> contact end, the method, the kind of contact and the units.
+    subroutine contact_table(t, c, ct, columns, units)
+        type(out_table), intent(inout) :: t
+        type(model_opts), intent(in) :: c
+        type(cli_contact), intent(in) :: ct
+        character(len=*), intent(in) :: columns   !! comma-separated column names
+        character(len=*), intent(in) :: units     !! the units of the columns, one line
+        call t%set_columns(columns)
+        call t%meta('end', hertzdamp_end_name(c%iend))
+        call t%meta('method', c%method_name)
+        call t%meta('contact', ct%description)
+        call t%meta('units', units)
+    end subroutine contact_table
 
     !> Exit 2 when `opt` is given without `other`.
     subroutine needs(args, opt, other)

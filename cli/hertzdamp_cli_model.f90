@@ -17,7 +17,7 @@ module hertzdamp_cli_model
                          hertzdamp_compact_e_min_force, hertzdamp_pade_alpha_max, hertzdamp_fit_alpha_max_force, &
                          hertzdamp_compact_alpha_max_force, hertzdamp_forward_alpha, hertzdamp_collision, &
                          hertzdamp_method_code, &
-                         HD_END_OVERLAP, HD_END_FORCE, HD_METHOD_RK45, HD_METHOD_SERIES, HD_METHOD_PADE, &
+                         HD_END_OVERLAP, HD_METHOD_RK45, HD_METHOD_SERIES, HD_METHOD_PADE, &
                          HD_METHOD_COMPACT, HD_METHOD_FIT, HD_METHOD_ITERATIVE, HD_OK
     use hertzdamp_cli, only: cli_args, parse_real, parse_int, parse_choice, fail, EXIT_USAGE
     use hertzdamp_cli_text, only: fmt_short, itoa

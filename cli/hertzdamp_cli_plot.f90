@@ -219,7 +219,7 @@ contains
     subroutine write_bytes(file, bytes, why)
         character(len=*), intent(in) :: file, bytes
         character(len=:), allocatable, intent(inout) :: why
-        integer :: u, ios, n
+        integer :: u, ios, n, ios_close
         open (newunit=u, file=file, status='new', action='write', access='stream', form='unformatted', iostat=ios)
         if (ios /= 0) then
             why = 'cannot create the temporary plot file'
@@ -228,8 +228,9 @@ contains
         write (u, iostat=ios) bytes
         if (ios == 0) flush (u, iostat=ios)
         if (ios /= 0) then
-            close (u, iostat=n)
+            close (u, iostat=ios_close)   ! the write failed already: its status decides
             why = 'cannot write the plot (disk full?)'
+            if (ios_close /= 0) why = why // ' (and cannot close it)'
             return
         end if
         close (u, iostat=ios)

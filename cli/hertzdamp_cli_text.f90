@@ -83,7 +83,6 @@ contains
         character(len=:), allocatable :: r
         character(len=4 * len(s)) :: buf
         integer :: i, j, n, c
-        character(len=*), parameter :: hex = '0123456789abcdef'
         i = 1
         j = 0
         do while (i <= len(s))
@@ -94,7 +93,7 @@ contains
                 j = j + 2
                 i = i + 1
             else if (c < 32 .or. c == 127 .or. n == 0) then
-                buf(j + 1:j + 4) = '\x' // hex(c / 16 + 1:c / 16 + 1) // hex(mod(c, 16) + 1:mod(c, 16) + 1)
+                buf(j + 1:j + 4) = '\x' // hex2(c)
                 j = j + 4
                 i = i + 1
             else
@@ -106,13 +105,20 @@ contains
         r = buf(1:j)
     end function one_line
 
+    !> Two lower-case hexadecimal digits of a byte.
+    pure function hex2(c) result(h)
+        integer, intent(in) :: c
+        character(len=2) :: h
+        character(len=*), parameter :: hex = '0123456789abcdef'
+        h = hex(c / 16 + 1:c / 16 + 1) // hex(mod(c, 16) + 1:mod(c, 16) + 1)
+    end function hex2
+
     !> A JSON string literal: valid UTF-8, quotes, backslashes and control characters escaped.
     pure function json_string(s) result(r)
         character(len=*), intent(in) :: s
         character(len=:), allocatable :: r
         character(len=:), allocatable :: u
         character(len=:), allocatable :: buf
-        character(len=*), parameter :: hex = '0123456789abcdef'
         integer :: i, j, c
         u = utf8_clean(s)
         allocate (character(len=6 * len(u) + 2) :: buf)
@@ -121,7 +127,7 @@ contains
         do i = 1, len(u)
             c = iachar(u(i:i))
             if (c < 32 .or. c == 127) then
-                buf(j + 1:j + 6) = '\u00' // hex(c / 16 + 1:c / 16 + 1) // hex(mod(c, 16) + 1:mod(c, 16) + 1)
+                buf(j + 1:j + 6) = '\u00' // hex2(c)
                 j = j + 6
             else if (u(i:i) == '"' .or. u(i:i) == '\') then
                 buf(j + 1:j + 2) = '\' // u(i:i)
@@ -210,6 +216,10 @@ contains
         write (buf, '(es14.5e3)') abs(x)            ! d.ddddde+xxx
         buf = adjustl(buf)
         read (buf(9:12), *, iostat=ios) ex
+        if (ios /= 0) then
+            s = fmt_csv(x)
+            return
+        end if
         digits = buf(1:1) // buf(3:7)
         k = len(digits)
         do while (k > 1)

@@ -7,13 +7,13 @@ module hertzdamp_cmd_basic
                          HD_BAD_ALPHA, HD_BAD_STIFFNESS, HD_BAD_DAMPING, HD_BAD_VELOCITY, HD_BAD_MASS, &
                          HD_OUT_OF_RANGE, HD_OUTSIDE_VALIDITY, HD_INACCURATE
     use hertzdamp_cli, only: cli_args, cli_buffer, parse_args, parse_choice, parse_sweep, parse_range, fail, quit, &
-                             EXIT_USAGE, EXIT_OK, EXIT_FAILURE, max_list_length
+                             required_sweep, check_combinations, EXIT_USAGE, EXIT_OK, EXIT_FAILURE, max_list_length
     use hertzdamp_cli_text, only: fmt_short, itoa
     use hertzdamp_cli_output, only: out_table, format_choices
     use hertzdamp_cli_help, only: print_help, wants_help
     use hertzdamp_cli_model, only: model_opts, parse_model, model_options, method_accepts, instead
-    use hertzdamp_cli_rows, only: row_log, row_kind, row_word, row_has_result, ROW_NO_REBOUND, ROW_OK
-    use hertzdamp_cli_materials, only: cli_contact, parse_contact, contact_options, contact_flags
+    use hertzdamp_cli_rows, only: row_log, row_kind, row_word, row_has_result
+    use hertzdamp_cli_materials, only: cli_contact, parse_contact, contact_table, contact_options, contact_flags
     use hertzdamp_cli_progress, only: progress_reporter
     use, intrinsic :: ieee_arithmetic, only: ieee_value, ieee_positive_inf
     implicit none
@@ -112,6 +112,7 @@ contains
         type(row_log) :: rows
         type(progress_reporter) :: p
         logical :: have, have_alpha, have_tstar
+        allocate (ks(0), ds(0), us(0))   ! (defined descriptors for the reallocating assignments)
         if (wants_help()) call print_help('forward')
         call parse_args(2, '--k --d --velocity ' // contact_options // ' ' // model_options, &
                         contact_flags // ' --progress', args)
@@ -127,16 +128,10 @@ contains
         end if
         ds = required_sweep(args, '--d')
         us = required_sweep(args, '--velocity')
-        if (real(size(ks), wp) * size(ds) * size(us) > max_list_length) then
-            call fail(EXIT_USAGE, 'too many combinations of --k, --d and --velocity (at most ' // &
-                      itoa(max_list_length) // ' rows)')
-        end if
-        call t%set_columns('k,d,velocity,mass,radius_eff,k_phys,alpha,t_star,e,t_c,zeta_max,status')
-        call t%meta('end', hertzdamp_end_name(c%iend))
-        call t%meta('method', c%method_name)
-        call t%meta('contact', ct%description)
-        call t%meta('units', 'k, k_phys [N m^-3/2], d [kg/s], velocity [m/s], mass [kg], radius_eff [m], ' // &
-                    't_star [s], t_c [s], zeta_max [m]')
+        call check_combinations([size(ks), size(ds), size(us)], '--k, --d and --velocity')
+        call contact_table(t, c, ct, 'k,d,velocity,mass,radius_eff,k_phys,alpha,t_star,e,t_c,zeta_max,status', &
+                           'k, k_phys [N m^-3/2], d [kg/s], velocity [m/s], mass [kg], radius_eff [m], ' // &
+                           't_star [s], t_c [s], zeta_max [m]')
         n = 0
         call p%start(real(size(ks) * size(ds) * size(us), wp), 'forward', force=args%has('--progress'))
         do ik = 1, size(ks)
@@ -239,15 +234,6 @@ contains
                 failure_reason(c, status, merge(alpha, huge(alpha), have_alpha))
         end select
     end function forward_reason
-
-    !> A required sweep option.
-    function required_sweep(args, key) result(x)
-        type(cli_args), intent(in) :: args
-        character(len=*), intent(in) :: key
-        real(wp), allocatable :: x(:)
-        if (.not. args%has(key)) call fail(EXIT_USAGE, 'missing option ' // key // ' (see --help)')
-        x = parse_sweep(args%get(key, ''), key)
-    end function required_sweep
 
     subroutine cmd_constants()
         type(cli_args) :: args

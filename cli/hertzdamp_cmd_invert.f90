@@ -1,17 +1,17 @@
 !> The commands `invert` (stiffness and damping from target restitution and contact
 !> time) and `timestep` (the time step that resolves the physical contacts).
 module hertzdamp_cmd_invert
-    use hertzdamp, only: hertzdamp_rk, hertzdamp_invert, hertzdamp_invert_alpha, hertzdamp_message, hertzdamp_end_name, &
+    use hertzdamp, only: hertzdamp_rk, hertzdamp_invert, hertzdamp_invert_alpha, hertzdamp_message, &
                          hertzdamp_reduce, hertzdamp_hertz_time, &
                          HD_OK, HD_BAD_RESTITUTION, HD_OUTSIDE_VALIDITY, HD_INACCURATE, HD_BAD_TIME, HD_BAD_VELOCITY, &
                          HD_OUT_OF_RANGE, HD_METHOD_ITERATIVE
-    use hertzdamp_cli, only: cli_args, parse_args, parse_sweep, fail, EXIT_USAGE, max_list_length
-    use hertzdamp_cli_text, only: fmt_short, itoa
+    use hertzdamp_cli, only: cli_args, parse_args, parse_sweep, required_sweep, check_combinations, fail, EXIT_USAGE
+    use hertzdamp_cli_text, only: fmt_short
     use hertzdamp_cli_output, only: out_table
     use hertzdamp_cli_help, only: print_help, wants_help
     use hertzdamp_cli_model, only: model_opts, parse_model, model_options, e_range_message, instead
-    use hertzdamp_cli_rows, only: row_log, row_kind, row_word, row_has_result, ROW_OUTSIDE_VALIDITY, ROW_BAD_INPUT
-    use hertzdamp_cli_materials, only: cli_contact, parse_contact, contact_options, contact_flags
+    use hertzdamp_cli_rows, only: row_log, row_kind, row_word, row_has_result, ROW_OUTSIDE_VALIDITY
+    use hertzdamp_cli_materials, only: cli_contact, parse_contact, contact_table, contact_options, contact_flags
     use hertzdamp_cli_progress, only: progress_reporter
     implicit none
     private
@@ -33,28 +33,20 @@ contains
         type(out_table) :: t
         type(row_log) :: rows
         type(progress_reporter) :: p
+        allocate (es(0), tcs(0), us(0))   ! (defined descriptors for the reallocating assignments)
         if (wants_help()) call print_help('invert')
         call parse_args(2, '--e --tc --dt --steps --velocity ' // contact_options // ' ' // model_options, &
                         contact_flags // ' --progress', args)
         call parse_model(args, c, inverse=.true.)
         call parse_contact(args, ct)
-        if (.not. args%has('--e')) call fail(EXIT_USAGE, 'missing option --e (see --help)')
-        es = parse_sweep(args%get('--e', ''), '--e')
+        es = required_sweep(args, '--e')
         call contact_times(args, tcs, tc_key)
-        if (.not. args%has('--velocity')) call fail(EXIT_USAGE, 'missing option --velocity (see --help)')
-        us = parse_sweep(args%get('--velocity', ''), '--velocity')
+        us = required_sweep(args, '--velocity')
         if (.not. ct%has_mass) call fail(EXIT_USAGE, 'missing option --mass (or --radius with --density) (see --help)')
-        if (real(size(es), wp) * size(tcs) * size(us) > max_list_length) then
-            call fail(EXIT_USAGE, 'too many combinations of --e, the contact times and --velocity (at most ' // &
-                      itoa(max_list_length) // ' rows)')
-        end if
-
-        call t%set_columns('e,tc,velocity,mass,radius_eff,k_phys,alpha,tau_c,t_star,k,d,bound_active,tc_actual,status')
-        call t%meta('end', hertzdamp_end_name(c%iend))
-        call t%meta('method', c%method_name)
-        call t%meta('contact', ct%description)
-        call t%meta('units', 'tc, t_star, tc_actual [s], velocity [m/s], mass [kg], radius_eff [m], ' // &
-                    'k, k_phys [N m^-3/2], d [kg/s]')
+        call check_combinations([size(es), size(tcs), size(us)], '--e, the contact times and --velocity')
+        call contact_table(t, c, ct, 'e,tc,velocity,mass,radius_eff,k_phys,alpha,tau_c,t_star,k,d,bound_active,' // &
+                           'tc_actual,status', 'tc, t_star, tc_actual [s], velocity [m/s], mass [kg], radius_eff [m], ' // &
+                           'k, k_phys [N m^-3/2], d [kg/s]')
         n = 0
         call p%start(real(size(es) * size(tcs) * size(us), wp), 'invert', force=args%has('--progress'))
         do ie = 1, size(es)
@@ -126,8 +118,7 @@ contains
         end if
         dts = parse_sweep(args%get('--dt', ''), '--dt')
         steps = parse_steps(args)
-        if (real(size(dts), wp) * size(steps) > max_list_length) call fail(EXIT_USAGE, &
-            'too many combinations of --dt and --steps (at most ' // itoa(max_list_length) // ')')
+        call check_combinations([size(dts), size(steps)], '--dt and --steps')
         tcs = [((dts(i) * steps(j), j=1, size(steps)), i=1, size(dts))]
         key = '--dt x --steps'
     end subroutine contact_times
@@ -190,6 +181,7 @@ contains
         logical :: have
         type(out_table) :: t
         type(row_log) :: rows
+        allocate (es(0), us(0), steps(0))
         if (wants_help()) call print_help('timestep')
         call parse_args(2, '--e --velocity --steps ' // contact_options // ' ' // model_options, contact_flags, args)
         call parse_model(args, c, inverse=.true.)
@@ -197,13 +189,10 @@ contains
         if (.not. ct%has_mass) call fail(EXIT_USAGE, 'missing option --mass (or --radius with --density) (see --help)')
         if (.not. ct%has_kphys) call fail(EXIT_USAGE, 'missing option --k-phys (or --radius with --youngs-modulus ' // &
                                           'and --poisson-ratio) (see --help)')
-        if (.not. args%has('--e')) call fail(EXIT_USAGE, 'missing option --e (see --help)')
-        es = parse_sweep(args%get('--e', ''), '--e')
-        if (.not. args%has('--velocity')) call fail(EXIT_USAGE, 'missing option --velocity (see --help)')
-        us = parse_sweep(args%get('--velocity', ''), '--velocity')
+        es = required_sweep(args, '--e')
+        us = required_sweep(args, '--velocity')
         steps = parse_steps(args, 10.0_wp)
-        if (real(size(es), wp) * size(steps) > max_list_length) call fail(EXIT_USAGE, &
-            'too many combinations of --e and --steps (at most ' // itoa(max_list_length) // ' rows)')
+        call check_combinations([size(es), size(steps)], '--e and --steps')
         ! the time unit t* and the elastic Hertz time at every velocity; both fall as u^(-1/5)
         tmin = huge(1.0_wp)
         thertz = huge(1.0_wp)
@@ -220,13 +209,10 @@ contains
             thertz = min(thertz, th)
         end do
 
-        call t%set_columns('e,steps,velocity_max,mass,radius_eff,k_phys,alpha,tau_c,tc_damped,tc_elastic,' // &
-                           'elastic_excess,dt_max,dt_elastic,status')
-        call t%meta('end', hertzdamp_end_name(c%iend))
-        call t%meta('method', c%method_name)
-        call t%meta('contact', ct%description)
-        call t%meta('units', 'velocity_max [m/s], mass [kg], radius_eff [m], k_phys [N m^-3/2], ' // &
-                    'tc_damped, tc_elastic, dt_max, dt_elastic [s]; elastic_excess = tc_elastic/tc_damped - 1')
+        call contact_table(t, c, ct, 'e,steps,velocity_max,mass,radius_eff,k_phys,alpha,tau_c,tc_damped,tc_elastic,' // &
+                           'elastic_excess,dt_max,dt_elastic,status', 'velocity_max [m/s], mass [kg], radius_eff [m], ' // &
+                           'k_phys [N m^-3/2], tc_damped, tc_elastic, dt_max, dt_elastic [s]; ' // &
+                           'elastic_excess = tc_elastic/tc_damped - 1')
         do ie = 1, size(es)
             call hertzdamp_invert_alpha(es(ie), c%iend, alpha, tau, status, c%method, c%tol, c%accuracy)
             kind = row_kind(status)
@@ -249,10 +235,8 @@ contains
                 call t%str(row_word(kind))
                 if (have) then
                     call rows%add(kind, '')
-                else if (kind == ROW_BAD_INPUT .or. kind == ROW_OUTSIDE_VALIDITY) then
-                    call rows%add(kind, e_range_message(c, es(ie), fmt_short(es(ie))))
                 else
-                    call rows%add(kind, '--e ' // fmt_short(es(ie)) // ': ' // hertzdamp_message(status))
+                    call rows%add(kind, invert_reason(c, status, es(ie), 0.0_wp, 0.0_wp, ''))
                 end if
             end do
         end do

@@ -45,7 +45,7 @@ while i < len(lines):
 PY
   ncmd=$(ls "$tmp/cmds" | grep -c '\.cmd$')
   check "README shows at least 5 hertzdamp commands with their output ($ncmd)" test "$ncmd" -ge 5
-  bindir=$tmp/bin; mkdir -p "$bindir"; ln -s "$HERTZDAMP_BIN" "$bindir/hertzdamp"
+  bindir=$tmp/bin; mkdir -p "$bindir"; ln -s "$(realpath "$HERTZDAMP_BIN")" "$bindir/hertzdamp"
   for c in "$tmp"/cmds/*.cmd; do
     PATH=$bindir:$PATH bash -c "$(cat "$c")" >"${c%.cmd}.got" 2>/dev/null
     check "README command prints what the README shows: $(head -c 90 "$c")" cmp -s "${c%.cmd}.got" "${c%.cmd}.want"

@@ -142,6 +142,7 @@ contains
             ct%has_kphys = .true.
             ct%from_materials = .true.
         end if
+        if (.not. (ct%wall .or. ct%has_radius)) ct%description = 'effective mass given'
     end subroutine parse_contact
 
     !> Start a table of a command on a contact: its columns, and as metadata the

@@ -24,8 +24,8 @@ module hertzdamp_cli_help
         '  --mass M              effective mass m* [kg]; or from the materials:' // nl // &
         '  --radius R            sphere 1 radius [m] (gives R*; with --density, m*)' // nl // &
         '  --density RHO         sphere 1 density [kg m^-3]' // nl // &
-        '  --youngs-modulus E    sphere 1 Young''s modulus [Pa]  (with --radius:' // nl // &
-        '  --poisson-ratio NU    sphere 1 Poisson''s ratio [-]    k_phys = (4/3) E* sqrt(R*))' // nl // &
+        '  --youngs-modulus E    sphere 1 Young''s modulus [Pa]    with --radius: k_phys' // nl // &
+        '  --poisson-ratio NU    sphere 1 Poisson''s ratio [-]     = (4/3) E* sqrt(R*)' // nl // &
         '  --radius2 R2  --density2 RHO2  --youngs-modulus2 E2  --poisson-ratio2 NU2' // nl // &
         '                        sphere 2; each defaults to sphere 1''s (two equal spheres)' // nl // &
         '  --wall                body 2 is a wall: infinite radius and mass (m* = m,' // nl // &
@@ -51,7 +51,7 @@ module hertzdamp_cli_help
         '  --accuracy A          relative accuracy asked of series and pade (default' // nl // &
         '                        1e-10): beyond it the row is inaccurate' // nl // &
         '  --format F            text (aligned, default), csv or json' // nl // &
-        '  --progress            progress on stderr (default: only on a terminal, after 2 s)' // nl // &
+        '  --progress            progress on stderr (default: on a terminal, after 2 s)' // nl // &
         '  --help                this text'
 
     character(len=*), parameter :: forward_methods_help = &
@@ -78,7 +78,7 @@ module hertzdamp_cli_help
         '' // nl // &
         'Model: m* zeta'''' = -d zeta'' - k zeta^(3/2), zeta(0) = 0, zeta''(0) = u_in, with' // nl // &
         'zeta the overlap.  Every collision depends on one parameter' // nl // &
-        '  alpha = d m*^(-3/5) k^(-2/5) u_in^(-1/5)   (time unit t* = (m*/(k u_in^(1/2)))^(2/5)).' // nl // &
+        '  alpha = d m*^(-3/5) k^(-2/5) u_in^(-1/5),  time unit t* = (m*/(k u_in^(1/2)))^(2/5).' // nl // &
         '' // nl // &
         'Usage: hertzdamp COMMAND [options]      hertzdamp COMMAND --help' // nl // &
         '       hertzdamp --version' // nl // &
@@ -90,7 +90,7 @@ module hertzdamp_cli_help
         '  table      e, tau_c, z_max, tau_max (dimensionless) for a list of alpha' // nl // &
         '  constants  alpha_c, tau_c(0), z_max(0), e1 as computed by the library' // nl // &
         '  bench      work-precision report of every method (forward, inverse, throughput)' // nl // &
-        '  scene      run a DEM scene file (namelist) with the inverse rule at every contact' // nl // &
+        '  scene      run a DEM scene file (namelist), the inverse rule at every contact' // nl // &
         '' // nl // &
         'Definitions (SI units; body 1 and body 2 touch):' // nl // &
         '  effective mass m*     m1 m2 / (m1 + m2); against a wall, or a particle held' // nl // &
@@ -103,7 +103,7 @@ module hertzdamp_cli_help
         '                        the speed at which the two surfaces approach along the' // nl // &
         '                        line of centres when they first touch: (v1 - v2) . n' // nl // &
         '                        with n the unit vector from body 1 to body 2 [m s^-1].' // nl // &
-        '  e                     restitution coefficient: separation / approach normal speed.' // nl // &
+        '  e                     restitution: normal separation speed / approach speed.' // nl // &
         '' // nl // &
         'Exit codes: 0 success, 2 bad usage, 3 no solution, 4 computation failed.' // nl // &
         'Errors go to stderr as one line; stdout is then empty, except for commands that' // nl // &
@@ -160,14 +160,16 @@ module hertzdamp_cli_help
     character(len=*), parameter :: invert = &
         'Usage: hertzdamp invert --e LIST (--tc LIST | --dt LIST --steps LIST)' // nl // &
         '                        --velocity LIST (--mass M | --radius R --density RHO ...)' // nl // &
-        '                        [--k-phys K | --youngs-modulus E --poisson-ratio NU] [options]' // nl // &
+        '                        [--k-phys K | --youngs-modulus E --poisson-ratio NU]' // nl // &
+        '                        [options]' // nl // &
         '' // nl // &
         'The inverse rule of the adaptive collision time model: the stiffness k and' // nl // &
         'damping d that give a contact with effective mass m*, hit at relative normal' // nl // &
         'velocity u_in, the restitution e and the contact time T_c.  With a physical' // nl // &
         'stiffness (--k-phys, or k_phys = (4/3) E* sqrt(R*) from the materials) the bound' // nl // &
-        'applies: if k_phys <= k, then k = k_phys, d = alpha m*^(3/5) k_phys^(2/5) u_in^(1/5)' // nl // &
-        '(bound_active true) and the contact lasts tc_actual > T_c.' // nl // &
+        'applies: if k_phys <= k, then k = k_phys and' // nl // &
+        'd = alpha m*^(3/5) k_phys^(2/5) u_in^(1/5) (bound_active true), and the contact' // nl // &
+        'lasts tc_actual > T_c.' // nl // &
         '' // nl // &
         'Target:' // nl // &
         '  --e LIST              restitution coefficients [-]' // nl // &
@@ -187,7 +189,8 @@ module hertzdamp_cli_help
     character(len=*), parameter :: timestep = &
         'Usage: hertzdamp timestep --e LIST --velocity LIST [--steps LIST]' // nl // &
         '                          (--mass M | --radius R --density RHO ...)' // nl // &
-        '                          (--k-phys K | --youngs-modulus E --poisson-ratio NU) [options]' // nl // &
+        '                          (--k-phys K | --youngs-modulus E --poisson-ratio NU)' // nl // &
+        '                          [options]' // nl // &
         '' // nl // &
         'The time step a DEM code needs for its physical contacts (k = k_phys, d from' // nl // &
         'e): the contact time t* tau_c(alpha(e)) falls as u_in^(-1/5), so the shortest' // nl // &

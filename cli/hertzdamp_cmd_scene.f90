@@ -17,8 +17,8 @@ module hertzdamp_cmd_scene
     use hertzdamp_cli_output, only: out_table, format_choices, FORMAT_JSON, FORMAT_CSV
     use hertzdamp_cli_help, only: print_help, wants_help
     use hertzdamp_cli_plot, only: plot_check_target, plot_run, plot_temp_name, gp_string
-    use, intrinsic :: iso_fortran_env, only: int64, error_unit
-    use, intrinsic :: iso_c_binding, only: c_int
+    use hertzdamp_cli_progress, only: progress_reporter
+    use, intrinsic :: iso_fortran_env, only: int64
     implicit none
     private
     public :: cmd_scene
@@ -32,37 +32,12 @@ module hertzdamp_cmd_scene
     integer, parameter :: max_rows = 200
     !> Most particles drawn by --plot.
     integer, parameter :: max_plot_lines = 20
-    !> Progress: first report after this many seconds, then at most this often.
-    real(wp), parameter :: progress_after = 2.0_wp, progress_every = 1.0_wp
 
     !> Cost of one run.
     type :: run_cost
         real(wp) :: total = 0.0_wp     !! wall time of the run [s]
         real(wp) :: params = 0.0_wp    !! time in the contact rule [s]
     end type run_cost
-
-    !> Progress of the runs on stderr: when stderr is a terminal (one line rewritten
-    !> in place) or with --progress (one line per report).  Reports start once a run
-    !> has taken progress_after seconds, so short runs print nothing; with --progress
-    !> each run ends with a 100 % line.
-    !> (A minimal local reporter: to be replaced by the CLI's shared one when it lands.)
-    type :: progress_meter
-        logical :: on = .false.        !! report at all
-        logical :: tty = .false.       !! stderr is a terminal
-        logical :: forced = .false.    !! --progress
-        logical :: shown = .false.     !! a line was printed for this run
-        integer(int64) :: t0 = 0, last = 0, rate = 1
-        character(len=:), allocatable :: label
-    end type progress_meter
-
-    interface
-        function c_isatty(fd) bind(C, name='isatty') result(r)
-            import :: c_int
-            implicit none
-            integer(c_int), value :: fd
-            integer(c_int) :: r
-        end function c_isatty
-    end interface
 
 contains
 
@@ -72,7 +47,7 @@ contains
         type(hertzdamp_dem_result) :: res, res_it
         type(run_cost) :: cost, cost_it
         type(cli_buffer) :: buf
-        type(progress_meter) :: meter
+        logical :: progress
         type(hertzdamp_dem_check_row), allocatable :: rows(:)
         character(len=:), allocatable :: file, msg, plot, reason, terminal, failed_names
         integer :: fmt, mchoice, method, status, chosen, c, nsec, nfailed, nruns
@@ -124,11 +99,11 @@ contains
         compare = compare .and. method /= HD_METHOD_ITERATIVE
         nruns = merge(2, 1, compare)
 
-        call meter_init(meter, args%has('--progress'))
-        call timed_run(sc, method, tol_it, res, cost, meter, run_label(1, nruns, method))
+        progress = args%has('--progress')
+        call timed_run(sc, method, tol_it, res, cost, progress, run_label(1, nruns, method))
         if (res%status /= HD_OK) call fail(EXIT_FAILURE, file // ': ' // res%message)
         if (compare) then
-            call timed_run(sc, HD_METHOD_ITERATIVE, tol_it, res_it, cost_it, meter, &
+            call timed_run(sc, HD_METHOD_ITERATIVE, tol_it, res_it, cost_it, progress, &
                            run_label(2, nruns, HD_METHOD_ITERATIVE))
             if (res_it%status /= HD_OK) call fail(EXIT_FAILURE, file // ' (iterative rule): ' // res_it%message)
         end if
@@ -157,12 +132,12 @@ contains
         call quit(EXIT_OK)
     end subroutine cmd_scene
 
-    !> 'run 1 of 2 (compact)'
+    !> 'scene run 1 of 2 (compact)'
     function run_label(k, n, method) result(s)
         integer, intent(in) :: k, n, method
         character(len=:), allocatable :: s
         character(len=32) :: b
-        write (b, '(a,i0,a,i0)') 'run ', k, ' of ', n
+        write (b, '(a,i0,a,i0)') 'scene run ', k, ' of ', n
         s = trim(b) // ' (' // hertzdamp_method_name(method) // ')'
     end function run_label
 
@@ -179,18 +154,20 @@ contains
         end select
     end function method_code
 
-    !> Run the scene and time it, in pieces so that the progress can be reported;
-    !> the rule's share is timed by replaying the rule on the recorded contacts (the
-    !> same e, N dt, m, u_in, k_phys), repeated until at least 20 ms have passed.
-    subroutine timed_run(sc, method, tol, res, cost, meter, label)
+    !> Run the scene and time it, in pieces so that the progress can be reported
+    !> (hertzdamp_cli_progress: on a terminal after 2 s, or with --progress); the
+    !> rule's share is timed by replaying the rule on the recorded contacts (the same
+    !> e, N dt, m, u_in, k_phys), repeated until at least 20 ms have passed.
+    subroutine timed_run(sc, method, tol, res, cost, progress, label)
         type(hertzdamp_dem_scene), intent(in) :: sc
         integer, intent(in) :: method
         real(wp), intent(in) :: tol
         type(hertzdamp_dem_result), intent(out) :: res
         type(run_cost), intent(out) :: cost
-        type(progress_meter), intent(inout) :: meter
+        logical, intent(in) :: progress   !! --progress given
         character(len=*), intent(in) :: label
         type(hertzdamp_dem_state) :: st
+        type(progress_reporter) :: p
         integer(int64) :: c0, c1, rate
         integer :: reps, n, chunk, total
         real(wp), allocatable :: k(:), d(:), tce(:)
@@ -200,13 +177,13 @@ contains
         call hertzdamp_dem_start(sc, method, tol, st, res)
         total = hertzdamp_dem_steps_total(st)
         chunk = max(1, min(20000, total / 200))
-        call meter_start(meter, label)
+        call p%start(real(total, wp), label, force=progress)
         do while (hertzdamp_dem_steps_done(st) < total .and. res%status == HD_OK)
             call hertzdamp_dem_advance(sc, st, res, chunk)
-            call meter_update(meter, hertzdamp_dem_steps_done(st), total)
+            call p%update(real(hertzdamp_dem_steps_done(st), wp))
         end do
+        call p%finish()
         call hertzdamp_dem_finish(sc, st, res)
-        call meter_end(meter, res%status == HD_OK)
         call system_clock(c1)
         cost%total = real(c1 - c0, wp) / real(rate, wp)
         if (res%status /= HD_OK) return
@@ -225,94 +202,6 @@ contains
         end do
         cost%params = real(c1 - c0, wp) / real(rate, wp) / reps
     end subroutine timed_run
-
-    !> Progress on when stderr is a terminal or with --progress.
-    subroutine meter_init(meter, forced)
-        type(progress_meter), intent(out) :: meter
-        logical, intent(in) :: forced
-        meter%forced = forced
-        meter%tty = c_isatty(2_c_int) == 1
-        meter%on = meter%forced .or. meter%tty
-    end subroutine meter_init
-
-    subroutine meter_start(meter, label)
-        type(progress_meter), intent(inout) :: meter
-        character(len=*), intent(in) :: label
-        call system_clock(meter%t0, meter%rate)
-        meter%last = meter%t0
-        meter%shown = .false.
-        meter%label = label
-    end subroutine meter_start
-
-    !> A report after progress_after seconds, then at most every progress_every
-    !> seconds: percentage of the steps and the time left at the rate so far.
-    subroutine meter_update(meter, done, total)
-        type(progress_meter), intent(inout) :: meter
-        integer, intent(in) :: done, total
-        integer(int64) :: now
-        real(wp) :: elapsed, since, f
-        if (.not. meter%on .or. total <= 0) return
-        call system_clock(now)
-        elapsed = real(now - meter%t0, wp) / real(meter%rate, wp)
-        since = real(now - meter%last, wp) / real(meter%rate, wp)
-        if (elapsed < progress_after .or. (meter%shown .and. since < progress_every)) return
-        f = real(done, wp) / real(total, wp)
-        if (f <= 0.0_wp) return
-        call meter_line(meter, 100.0_wp * f, elapsed * (1.0_wp - f) / f, .false.)
-        meter%last = now
-        meter%shown = .true.
-    end subroutine meter_update
-
-    !> End of a run: the 100 % line when lines were shown on a terminal or with
-    !> --progress.
-    subroutine meter_end(meter, ok)
-        type(progress_meter), intent(inout) :: meter
-        logical, intent(in) :: ok
-        if (.not. meter%on) return
-        if (.not. (meter%forced .or. meter%shown)) return
-        if (ok) call meter_line(meter, 100.0_wp, 0.0_wp, .true.)
-        if (.not. ok .and. meter%tty .and. meter%shown) write (error_unit, '(a)') ''
-        flush (error_unit)
-    end subroutine meter_end
-
-    subroutine meter_line(meter, percent, left, final)
-        type(progress_meter), intent(in) :: meter
-        real(wp), intent(in) :: percent, left
-        logical, intent(in) :: final
-        character(len=64) :: b
-        character(len=:), allocatable :: text
-        integer(int64) :: now
-        if (final) then
-            call system_clock(now)
-            write (b, '(a,f0.1,a)') '100 % in ', real(now - meter%t0, wp) / real(meter%rate, wp), ' s'
-        else
-            write (b, '(f5.1,a)') percent, ' %, about ' // duration_text(left) // ' left'
-        end if
-        text = 'hertzdamp: scene ' // meter%label // ': ' // trim(adjustl(b))
-        if (meter%tty) then
-            ! one line rewritten in place; the final report ends it
-            write (error_unit, '(a)', advance='no') achar(13) // text // achar(27) // '[K'
-            if (final) write (error_unit, '(a)') ''
-        else
-            write (error_unit, '(a)') text
-        end if
-        flush (error_unit)
-    end subroutine meter_line
-
-    !> '45 s', '12 min', '3.2 h'
-    function duration_text(t) result(s)
-        real(wp), intent(in) :: t
-        character(len=:), allocatable :: s
-        character(len=24) :: b
-        if (t < 120.0_wp) then
-            write (b, '(i0,a)') nint(t), ' s'
-        else if (t < 7200.0_wp) then
-            write (b, '(i0,a)') nint(t / 60.0_wp), ' min'
-        else
-            write (b, '(f0.1,a)') t / 3600.0_wp, ' h'
-        end if
-        s = trim(b)
-    end function duration_text
 
     !> Render a table as one section: text and CSV one after the other (CSV with a
     !> `# name` line before its header), JSON as a member "name" of the top object.

@@ -1,4 +1,4 @@
-!> The inverse problem of THEORY.md section 6 (adaptive collision time model): from a
+!> The inverse problem of doc/theory.md section 6 (adaptive collision time model): from a
 !> target restitution e and contact time T_c, for a contact with effective mass m and
 !> impact velocity u_in, the Hertz stiffness k and damping d
 !>

@@ -1,9 +1,9 @@
 !> The reference integrator: adaptive Dormand-Prince 5(4) for one damped Hertz collision.
 !>
-!> Solves  z'' + alpha z' + z^(3/2) = 0,  z(0) = 0, z'(0) = 1  (THEORY.md section 2)
+!> Solves  z'' + alpha z' + z^(3/2) = 0,  z(0) = 0, z'(0) = 1  (doc/theory.md section 2)
 !> and returns e, tau_c, z_max, tau_max for either contact-end definition.
 !>
-!> How the non-smooth points are handled (THEORY.md section 5):
+!> How the non-smooth points are handled (doc/theory.md section 5):
 !> - Start: z^(3/2) is not smooth at z = 0, so the integration starts at
 !>   tau0 = 0.1 min(1, 1/|alpha|) from the local series z = tau sum_k p_k tau^(k/2)
 !>   (`local_series`), accurate to round-off there.

@@ -1,4 +1,4 @@
-!> The dimensionless reduction of THEORY.md section 2, and its inverse.
+!> The dimensionless reduction of doc/theory.md section 2, and its inverse.
 !>
 !>     t* = m^(2/5) k^(-2/5) u^(-1/5),   alpha = d t* / m,
 !>     k  = m t*^(-5/2) u^(-1/2),         d = alpha m / t*.

@@ -1,5 +1,5 @@
 !> The DEM engine: spheres with normal contact forces only, run step by step around
-!> a state type (THEORY.md section 6: the inverse rule at every contact).
+!> a state type (doc/theory.md section 6: the inverse rule at every contact).
 !>
 !> - Spheres in 3-D (a 1-D column is a scene whose particles lie on one line),
 !>   plane walls, optional uniform gravity.  Tangential forces, friction and

@@ -350,23 +350,18 @@ contains
                 end if
                 if (zeta <= 0.0_wp .and. sc%iend == HD_END_FORCE .and. ct%d * zdot < 0.0_wp) then
                     ! force end, and the step jumped over the force zero and the overlap
-                    ! zero: the contact ended at the force zero, from the last force to
-                    ! the force at the step end (its Hertz part is gone with the overlap)
-                    fn = ct%d * zdot
-                    phi = 0.0_wp
-                    if (ct%f_last - fn > 0.0_wp) phi = min(1.0_wp, max(0.0_wp, ct%f_last / (ct%f_last - fn)))
-                    call add_impulse(st, ct%i, ct%j, ct%f_last * (phi - 1.0_wp) * 0.5_wp * dt, ct%n_last)
-                    ct%t_end = t + phi * dt
-                    ct%state = HD_CONTACT_CLOSED
-                    call push(st%ended, st%nended, c)
+                    ! zero: the contact ended at the force zero, between the last force
+                    ! and the force at the step end (its Hertz part gone with the overlap)
+                    call end_at_force_zero(st, ct, c, ct%d * zdot, t, HD_CONTACT_CLOSED)
                     call close_contact(st, res, kk)
                     cycle
                 end if
                 if (zeta <= 0.0_wp) then
                     ! overlap gone (the overlap end; with the force end when a step jumps
-                    ! over the overlap zero with a force still positive).  In contact for the fraction phi of the
-                    ! step: the damping part of the last force acts for phi dt, its Hertz
-                    ! part (zeta -> 0 linearly) for 2/5 phi dt; the opening kick gave both dt/2.
+                    ! over the overlap zero with a force still positive).  In contact for
+                    ! the fraction phi of the step: the damping part of the last force
+                    ! acts for phi dt, its Hertz part (zeta -> 0 linearly) for 2/5 phi dt;
+                    ! the opening kick gave both dt/2.
                     phi = 0.0_wp
                     if (ct%zeta_last - zeta > 0.0_wp) phi = min(1.0_wp, max(0.0_wp, ct%zeta_last / (ct%zeta_last - zeta)))
                     fh = ct%k * max(ct%zeta_last, 0.0_wp)**1.5_wp
@@ -381,12 +376,7 @@ contains
                 end if
                 fn = ct%k * zeta * sqrt(zeta) + ct%d * zdot
                 if (sc%iend == HD_END_FORCE .and. fn <= 0.0_wp) then
-                    phi = 0.0_wp
-                    if (ct%f_last - fn > 0.0_wp) phi = min(1.0_wp, max(0.0_wp, ct%f_last / (ct%f_last - fn)))
-                    call add_impulse(st, ct%i, ct%j, ct%f_last * (phi - 1.0_wp) * 0.5_wp * dt, ct%n_last)
-                    ct%t_end = t + phi * dt
-                    ct%state = HD_CONTACT_RELEASED
-                    call push(st%ended, st%nended, c)
+                    call end_at_force_zero(st, ct, c, fn, t, HD_CONTACT_RELEASED)
                     kk = kk + 1
                     cycle
                 end if
@@ -399,6 +389,24 @@ contains
             kk = kk + 1
         end do
     end subroutine contact_forces
+
+    !> End contact c at the force zero, interpolated between its last force and fn
+    !> (<= 0, at the end of the step), with the impulse correction (the opening kick
+    !> gave the last force for dt/2; it acted, falling linearly, for phi dt); the
+    !> contact goes to new_state and into the list of contacts ended in the step.
+    pure subroutine end_at_force_zero(st, ct, c, fn, t, new_state)
+        type(hertzdamp_dem_state), intent(inout) :: st
+        type(hertzdamp_dem_contact), intent(inout) :: ct
+        integer, intent(in) :: c, new_state
+        real(wp), intent(in) :: fn, t
+        real(wp) :: phi
+        phi = 0.0_wp
+        if (ct%f_last - fn > 0.0_wp) phi = min(1.0_wp, max(0.0_wp, ct%f_last / (ct%f_last - fn)))
+        call add_impulse(st, ct%i, ct%j, ct%f_last * (phi - 1.0_wp) * 0.5_wp * st%dt, ct%n_last)
+        ct%t_end = t + phi * st%dt
+        ct%state = new_state
+        call push(st%ended, st%nended, c)
+    end subroutine end_at_force_zero
 
     !> New contacts of particles with walls.
     pure subroutine wall_onsets(sc, st, res, t)

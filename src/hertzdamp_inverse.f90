@@ -262,7 +262,7 @@ contains
         real(wp), intent(out) :: lne, tau_c
         integer, intent(out) :: status
         type(hertzdamp_collision) :: r
-        r = hertzdamp_forward_alpha(a, HD_END_OVERLAP, meth, accuracy=huge(1.0_wp))
+        r = hertzdamp_forward_alpha(a, HD_END_OVERLAP, meth, accuracy=1.0_wp)   ! no guard while iterating
         status = r%status
         tau_c = r%tau_c
         lne = 0.0_wp

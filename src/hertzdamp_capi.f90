@@ -36,7 +36,7 @@ contains
 
     !> `int hertzdamp_c_invert(double e, double tc, double m, double u, int end,
     !> double *k, double *d)`: stiffness and damping for restitution e and contact
-    !> time tc (THEORY.md section 6).  On failure *k = *d = 0; a NULL k or d gives
+    !> time tc (doc/theory.md section 6).  On failure *k = *d = 0; a NULL k or d gives
     !> HD_BAD_ARGUMENT.
     integer(c_int) function hertzdamp_c_invert(e, tc, m, u, iend, k, d) &
             bind(c, name='hertzdamp_c_invert') result(status)

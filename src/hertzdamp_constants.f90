@@ -1,4 +1,4 @@
-!> Closed-form constants of the elastic limit (THEORY.md section 4), computed from
+!> Closed-form constants of the elastic limit (doc/theory.md section 4), computed from
 !> the Fortran `gamma` intrinsic, never typed in.
 module hertzdamp_constants
     use hertzdamp_kinds, only: hertzdamp_rk

@@ -22,7 +22,7 @@ module hertzdamp_flat
 
 contains
 
-    !> k and d for target restitution e and contact time tc (THEORY.md section 6).
+    !> k and d for target restitution e and contact time tc (doc/theory.md section 6).
     !> On failure k = d = 0 and status names the bad argument.
     pure elemental subroutine flat_invert(e, tc, m, u, iend, k, d, status)
         real(wp), intent(in) :: e        !! target restitution coefficient: 1e-3 <= e <= 1 (overlap), 1e-4 <= e <= 1 (force)

@@ -1,4 +1,4 @@
-!> The inverse problem of THEORY.md section 6 (adaptive collision time model): from a
+!> The inverse problem of doc/theory.md section 6 (adaptive collision time model): from a
 !> target restitution e and contact time T_c, for a contact with effective mass m and
 !> impact velocity u_in, the Hertz stiffness k and damping d
 !>
@@ -295,7 +295,7 @@ contains
         real(wp), intent(out) :: lne, tau_c
         integer, intent(out) :: status
         type(hertzdamp_collision) :: r
-        r = hertzdamp_forward_alpha(a, HD_END_OVERLAP, meth, accuracy=huge(1.0_wp))
+        r = hertzdamp_forward_alpha(a, HD_END_OVERLAP, meth, accuracy=1.0_wp)   ! no guard while iterating
         status = r%status
         tau_c = r%tau_c
         lne = 0.0_wp

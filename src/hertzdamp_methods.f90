@@ -68,7 +68,8 @@ contains
     !> `law` (default linear).  Every law: rk45, fit and first-order (e1 of the law); the
     !> other methods exist for the linear law only (HD_NOT_SUPPORTED for the others).
     !> Series and Pade check their own error estimate against `accuracy` (relative,
-    !> default hertzdamp_default_accuracy): beyond it the status is HD_INACCURATE.
+    !> default hertzdamp_default_accuracy): beyond it the status is HD_INACCURATE;
+    !> an accuracy of 1 or more asks for no such check.
     !> On any status but HD_OK and HD_NO_REBOUND the results are 0.
     pure elemental function hertzdamp_forward_alpha(alpha, iend, method, tol, order, accuracy, law) result(res)
         real(wp), intent(in) :: alpha              !! damping parameter
@@ -147,7 +148,10 @@ contains
             select case (st)
             case (HD_OK, HD_INACCURATE)
                 res%status = HD_OK
-                if (.not. (err_e <= acc * res%e .and. err_tau <= acc * res%tau_c)) res%status = HD_INACCURATE
+                ! accuracy >= 1 asks for no guard (and never multiplies a huge value)
+                if (acc < 1.0_wp) then
+                    if (.not. (err_e <= acc * res%e .and. err_tau <= acc * res%tau_c)) res%status = HD_INACCURATE
+                end if
                 ! a truncated series far from alpha = 0 can give a meaningless value
                 if (.not. (res%e > 0.0_wp .and. res%tau_c > 0.0_wp)) res%status = HD_OUTSIDE_VALIDITY
             case (HD_BAD_ORDER)

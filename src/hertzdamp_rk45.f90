@@ -4,7 +4,7 @@
 !> q = 0 (linear, the default), 1/4 (tsuji) or 1/2 (kuwabara-kono) (doc/damping-laws.md)
 !> and returns e, tau_c, z_max, tau_max for either contact-end definition.
 !>
-!> How the non-smooth points are handled (THEORY.md section 5):
+!> How the non-smooth points are handled (doc/theory.md section 5):
 !> - Start: z^(3/2) and z^q are not smooth at z = 0, so the integration starts at
 !>   tau0 = rho0^N / kappa^N from the local series z = tau sum_k p_k (kappa tau^(1/N))^k
 !>   (hertzdamp_local_series; N = 2, or 4 for tsuji; kappa = max(1, |alpha|^(1/(N(1+q))));

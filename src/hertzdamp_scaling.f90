@@ -1,4 +1,4 @@
-!> The dimensionless reduction of THEORY.md section 2, and its inverse, for the damping
+!> The dimensionless reduction of doc/theory.md section 2, and its inverse, for the damping
 !> law q (0 linear, the default; 1/4 tsuji; 1/2 kuwabara-kono; doc/damping-laws.md):
 !>
 !>     t* = m^(2/5) k^(-2/5) u^(-1/5),   alpha = d t* (u t*)^q / m,

@@ -1,4 +1,4 @@
-!> Checks of the GSL odeiv2 peer solver against exact facts (THEORY.md section 4):
+!> Checks of the GSL odeiv2 peer solver against exact facts (doc/theory.md section 4):
 !> the elastic closed forms, the first-order slope e1, the time-reversal identities,
 !> agreement of the two GSL steppers, the no-rebound certificate and the force
 !> definition.  Prints only the summary line on success.

@@ -1,4 +1,4 @@
-!> The reference integrator against exact facts (THEORY.md section 4), its own
+!> The reference integrator against exact facts (doc/theory.md section 4), its own
 !> convergence order, and its statuses.
 program test_rk45
     use hertzdamp
@@ -105,7 +105,7 @@ contains
         type(hertzdamp_collision) :: r
         call hertzdamp_alpha_c(ac, st)
         call s%check(st == HD_OK, 'alpha_c bisection status')
-        call s%check(abs(ac - 1.12799_wp) < 1.0e-5_wp, 'alpha_c = 1.12799 (THEORY.md)')
+        call s%check(abs(ac - 1.12799_wp) < 1.0e-5_wp, 'alpha_c = 1.12799 (doc/theory.md)')
         r = hertzdamp_rk45_collide(ac - 1.0e-6_wp)
         call s%check(r%status == HD_OK .and. r%e > 0.0_wp .and. r%e < 1.0e-4_wp, 'just below alpha_c: small rebound')
         call s%check(r%tau_c > 10.0_wp, 'just below alpha_c: long contact')

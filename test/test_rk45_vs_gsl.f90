@@ -25,7 +25,7 @@ program test_rk45_vs_gsl
 
 contains
 
-    !> THEORY.md section 4 with GSL's beta function, independent of the Fortran gamma.
+    !> doc/theory.md section 4 with GSL's beta function, independent of the Fortran gamma.
     subroutine closed_forms()
         type(hertzdamp_collision) :: r
         real(wp) :: tc0, z0, e1
@@ -34,8 +34,8 @@ contains
         e1 = 0.8_wp * z0 * gsl_sf_beta(0.4_wp, 1.5_wp)
         call s%check_close(hertzdamp_tau_c0(), tc0, 4.0e-15_wp, 'library tau_c0 = GSL beta closed form')
         call s%check_close(hertzdamp_e1(), e1, 4.0e-15_wp, 'library e1 = GSL beta closed form')
-        call s%check_close(tc0, 3.2180654597190431_wp, 4.0e-15_wp, 'tau_c0 = THEORY.md value (GSL beta: a few ulp)')
-        call s%check_close(e1, 1.7878141442883573_wp, 4.0e-15_wp, 'e1 = THEORY.md value (GSL beta: a few ulp)')
+        call s%check_close(tc0, 3.2180654597190431_wp, 4.0e-15_wp, 'tau_c0 = doc/theory.md value (GSL beta: a few ulp)')
+        call s%check_close(e1, 1.7878141442883573_wp, 4.0e-15_wp, 'e1 = doc/theory.md value (GSL beta: a few ulp)')
         r = hertzdamp_rk45_collide(0.0_wp)
         call s%check_close(r%tau_c, tc0, 1.0e-12_wp, 'rk45 tau_c(0) vs GSL closed form')
         call s%check_close(r%tau_max, 0.5_wp * tc0, 1.0e-12_wp, 'rk45 tau_max(0) vs GSL closed form')

@@ -2,7 +2,7 @@
 !> explicit Runge-Kutta steppers (rkf45 and rk8pd), called through hand-written
 !> `bind(C)` interfaces.
 !>
-!> It solves the similarity form (THEORY.md section 2; doc/damping-laws.md)
+!> It solves the similarity form (doc/theory.md section 2; doc/damping-laws.md)
 !>
 !>     z'' + alpha z^q z' + z^{3/2} = 0,   z(0) = 0,  z'(0) = 1,
 !>

@@ -587,7 +587,7 @@ contains
                 deck%p = x(2)
                 deck%e_deck = x(2)
                 deck%p_name = 'restitution argument of ' // key
-                deck%p_template = key // '(' // peer_fmt(x(1)) // ', {})'
+                deck%p_template = key // '=' // peer_fmt(x(1)) // ',{}'
             case ('setEffectiveElasticModulus', 'setEffectiveElasticModulusAndPoissonRatio')
                 if (old) call wrong_species()
                 call nargs(merge(1, 2, key == 'setEffectiveElasticModulus'))
@@ -608,7 +608,7 @@ contains
                 deck%p = x(1)
                 deck%e_deck = -1.0_wp
                 deck%p_name = 'setDissipation'
-                deck%p_template = 'setDissipation({})'
+                deck%p_template = 'setDissipation={}'
             case ('setStiffnessAndRestitutionCoefficient')
                 if (.not. old) call wrong_species()
                 call nargs(3)
@@ -627,7 +627,7 @@ contains
                 deck%e_deck = x(2)
                 deck%mass_arg = x(3)
                 deck%p_name = 'restitution argument of setStiffnessAndRestitutionCoefficient'
-                deck%p_template = key // '(' // peer_fmt(x(1)) // ', {}, ' // peer_fmt(x(3)) // ')'
+                deck%p_template = key // '=' // peer_fmt(x(1)) // ',{},' // peer_fmt(x(3))
             case ('setDensity')
                 call nargs(1)
                 if (len(msg) > 0) return

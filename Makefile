@@ -106,3 +106,15 @@ lint: deps
 
 clean:
 	rm -rf build .deps-apt
+
+# ---------------------------------------------------------------- LAMMPS plugin
+# `make lammps`: Debian's lammps/liblammps-dev/openmpi (if missing), the core
+# installed under build/lammps/core, the plugin and build/lammps/load.lmp
+# (integrations/lammps/Makefile).
+LAMMPS_CORE := $(CURDIR)/build/lammps/core
+.PHONY: lammps
+lammps: deps $(LAMMPS_CORE)/lib/libhertzdamp.so
+	@$(MAKE) --no-print-directory -C integrations/lammps HERTZDAMP_PREFIX=$(LAMMPS_CORE)
+
+$(LAMMPS_CORE)/lib/libhertzdamp.so: $(wildcard src/*.f90) include/hertzdamp.h fpm.toml
+	@$(MAKE) --no-print-directory install PREFIX=$(LAMMPS_CORE) >/dev/null

@@ -14,6 +14,7 @@ module hertzdamp
     use hertzdamp_fit
     use hertzdamp_compact
     use hertzdamp_inverse
+    use hertzdamp_materials
     implicit none
     public
 end module hertzdamp

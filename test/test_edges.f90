@@ -8,13 +8,14 @@
 program test_edges
     use hertzdamp
     use hertzdamp_testing, only: test_suite, new_suite, rel_err
+    use, intrinsic :: iso_fortran_env, only: int64
     use, intrinsic :: ieee_arithmetic, only: ieee_value, ieee_quiet_nan, ieee_positive_inf, &
                                              ieee_negative_inf, ieee_is_finite
     implicit none
     integer, parameter :: wp = hertzdamp_rk
     type(test_suite) :: s
     integer :: ncase(5), nnan(5), max_rhs
-    integer(8) :: last_tick, slowest(5), rate
+    integer(int64) :: last_tick, slowest(5), rate
     real(wp) :: alpha_c, nan, pinf, ninf
     integer :: st
 
@@ -63,7 +64,7 @@ contains
     subroutine seen(i, values)
         integer, intent(in) :: i
         real(wp), intent(in) :: values(:)
-        integer(8) :: tick
+        integer(int64) :: tick
         ncase(i) = ncase(i) + 1
         if (any(values /= values)) nnan(i) = nnan(i) + 1
         call system_clock(tick)

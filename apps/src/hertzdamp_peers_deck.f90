@@ -12,7 +12,9 @@
 !>   per-body values; see `peer_known_keys`).
 !> Errors give a one-line message naming the key or token; nothing is printed.
 module hertzdamp_peers_deck
-    use hertzdamp, only: hertzdamp_rk, HD_OK, HD_BAD_ARGUMENT, HD_END_OVERLAP, HD_END_FORCE
+    use hertzdamp, only: hertzdamp_rk, hertzdamp_message, HD_OK, HD_BAD_ARGUMENT
+    use hertzdamp_materials, only: hertzdamp_sphere_mass, hertzdamp_effective_mass, hertzdamp_effective_radius, &
+                                   hertzdamp_effective_modulus
     use hertzdamp_peers, only: peer_deck, peer_text, peer_spec_row, peer_row_law, peer_row_end, peer_row_coef, &
                                PEER_LAMMPS, PEER_LIGGGHTS, PEER_MERCURYDPM, PEER_YADE, PEER_MFIX, PEER_CHRONO, &
                                TSTEP_LIGGGHTS, TSTEP_MERCURY, TSTEP_MFIX, peer_names, peer_fmt, peer_itoa, &
@@ -23,7 +25,6 @@ module hertzdamp_peers_deck
     private
 
     integer, parameter :: wp = hertzdamp_rk
-    real(wp), parameter :: pi = acos(-1.0_wp)
 
     !> LAMMPS releases whose formulas differ (doc/peers.md section 1).
     integer, parameter, public :: LAMMPS_2021 = 1     !! 29 Sep 2021 update 2 (Debian 12)
@@ -1006,12 +1007,14 @@ contains
 
     ! ------------------------------------------------------------------ shared helpers
 
-    !> Masses and radii of the bodies: effective mass and radius (a flat wall: the particle's).
+    !> Masses and radii of the bodies: effective mass and radius (a flat wall: the
+    !> particle's), by the library's hertzdamp_materials.
     subroutine bodies(mat, deck, msg)
         type(peer_materials), intent(in) :: mat
         type(peer_deck), intent(inout) :: deck
         character(len=:), allocatable, intent(inout) :: msg
         real(wp) :: r(2), rho(2), m(2)
+        integer :: st(2), st3
         r = mat%radius
         rho = mat%density
         if (.not. r(1) > 0.0_wp) then
@@ -1024,9 +1027,9 @@ contains
         end if
         if (.not. r(2) > 0.0_wp) r(2) = r(1)
         if (.not. rho(2) > 0.0_wp) rho(2) = rho(1)
-        m = (4.0_wp * pi / 3.0_wp) * rho * r**3
-        if (.not. all(m > 0.0_wp .and. m <= huge(m))) then
-            msg = 'the particle mass (4/3) pi rho r^3 is out of the double-precision range'
+        call hertzdamp_sphere_mass(r, rho, m, st)
+        if (any(st /= HD_OK)) then
+            msg = 'the particle mass (4/3) pi rho r^3: ' // hertzdamp_message(maxval(st))
             return
         end if
         deck%radius1 = r(1)
@@ -1036,8 +1039,9 @@ contains
             deck%m = m(1)
             deck%radius = r(1)
         else
-            deck%m = m(1) * m(2) / (m(1) + m(2))
-            deck%radius = r(1) * r(2) / (r(1) + r(2))
+            call hertzdamp_effective_mass(m(1), m(2), deck%m, st3)
+            if (st3 == HD_OK) call hertzdamp_effective_radius(r(1), r(2), deck%radius, st3)
+            if (st3 /= HD_OK) msg = 'effective mass or radius: ' // hertzdamp_message(st3)
         end if
         deck%m_damp = deck%m
     end subroutine bodies
@@ -1053,10 +1057,13 @@ contains
         end if
     end function end_word
 
-    !> 1/E* = (1 - nu1^2)/E1 + (1 - nu2^2)/E2.
-    pure real(wp) function effective_modulus(ymod, nu) result(es)
+    !> 1/E* = (1 - nu1^2)/E1 + (1 - nu2^2)/E2 (hertzdamp_effective_modulus; the inputs
+    !> are checked before).
+    function effective_modulus(ymod, nu) result(es)
         real(wp), intent(in) :: ymod(2), nu(2)
-        es = 1.0_wp / ((1.0_wp - nu(1)) * (1.0_wp + nu(1)) / ymod(1) + (1.0_wp - nu(2)) * (1.0_wp + nu(2)) / ymod(2))
+        real(wp) :: es
+        integer :: st
+        call hertzdamp_effective_modulus(ymod(1), nu(1), ymod(2), nu(2), es, st)
     end function effective_modulus
 
     subroutine check_modulus(x, what, text, msg)

@@ -51,6 +51,7 @@ extern "C" {
 #define HERTZDAMP_BAD_DENSITY         22  /* density not finite and positive */
 #define HERTZDAMP_BAD_MODULUS         23  /* Young's modulus not finite and positive */
 #define HERTZDAMP_BAD_POISSON         24  /* Poisson's ratio outside (-1, 0.5] */
+#define HERTZDAMP_BAD_LAW             25  /* damping law not 0 (linear), 1 (tsuji) or 2 (kuwabara-kono) */
 
 /* Contact-end definitions (argument `end`). */
 #define HERTZDAMP_END_OVERLAP 0  /* contact ends when the overlap returns to zero */

@@ -6,6 +6,7 @@ module hertzdamp_methods
     use hertzdamp_status, only: HD_OK, HD_NO_REBOUND, HD_NOT_SUPPORTED, HD_BAD_ARGUMENT, HD_OUT_OF_RANGE, &
                                 HD_END_OVERLAP, HD_END_FORCE, HD_OUTSIDE_VALIDITY, HD_BAD_ORDER, HD_BAD_END, &
                                 HD_INACCURATE
+    use hertzdamp_laws, only: HD_DAMPING_LINEAR, hertzdamp_law_status
     use hertzdamp_series, only: hertzdamp_series_eval, hertzdamp_pade_eval
     use hertzdamp_scaling, only: hertzdamp_reduce
     use hertzdamp_rk45, only: hertzdamp_collision, hertzdamp_rk45_collide, hertzdamp_rk45_default_tol
@@ -62,27 +63,46 @@ contains
         end do
     end function hertzdamp_method_code
 
-    !> e, tau_c, z_max, tau_max for one alpha by the chosen method.
+    !> e, tau_c, z_max, tau_max for one alpha by the chosen method, for the damping law
+    !> `law` (default linear).  Every law: rk45 and first-order (e1 of the law); the
+    !> other methods exist for the linear law only (HD_NOT_SUPPORTED for the others).
     !> Series and Pade check their own error estimate against `accuracy` (relative,
     !> default hertzdamp_default_accuracy): beyond it the status is HD_INACCURATE.
     !> On any status but HD_OK and HD_NO_REBOUND the results are 0.
-    pure elemental function hertzdamp_forward_alpha(alpha, iend, method, tol, order, accuracy) result(res)
+    pure elemental function hertzdamp_forward_alpha(alpha, iend, method, tol, order, accuracy, law) result(res)
         real(wp), intent(in) :: alpha              !! damping parameter
         integer, intent(in) :: iend                !! HD_END_OVERLAP or HD_END_FORCE
         integer, intent(in) :: method              !! HD_METHOD_*
         real(wp), intent(in), optional :: tol      !! rk45 tolerance
         integer, intent(in), optional :: order     !! series truncation order
         real(wp), intent(in), optional :: accuracy !! relative accuracy asked of series and Pade
+        integer, intent(in), optional :: law       !! HD_DAMPING_* (default linear)
         type(hertzdamp_collision) :: res
         real(wp) :: tol_, acc, err_e, err_tau
-        integer :: st
+        integer :: st, law_
         tol_ = hertzdamp_rk45_default_tol
         if (present(tol)) tol_ = tol
         acc = hertzdamp_default_accuracy
         if (present(accuracy)) acc = accuracy
+        law_ = HD_DAMPING_LINEAR
+        if (present(law)) law_ = law
+        res%law = law_
+        if (hertzdamp_law_status(law_) /= HD_OK) then
+            res%alpha = alpha
+            res%iend = iend
+            res%status = hertzdamp_law_status(law_)
+            return
+        end if
+        if (law_ /= HD_DAMPING_LINEAR .and. method /= HD_METHOD_RK45 .and. method /= HD_METHOD_FIRST_ORDER) then
+            res%alpha = alpha
+            res%iend = iend
+            res%status = HD_NOT_SUPPORTED
+            if (method < HD_METHOD_RK45 .or. method > HD_METHOD_FIRST_ORDER) res%status = HD_BAD_ARGUMENT
+            return
+        end if
         select case (method)
         case (HD_METHOD_RK45)
-            res = hertzdamp_rk45_collide(alpha, iend, tol_)
+            res = hertzdamp_rk45_collide(alpha, iend, tol_, law_)
         case (HD_METHOD_FIT)
             ! z_max and tau_max are fitted too (0 beyond alpha = 1.3 for the overlap)
             res%alpha = alpha
@@ -99,7 +119,7 @@ contains
             res%iend = iend
             res%status = hertzdamp_approx_alpha_status(alpha, iend)
             if (res%status == HD_OK) then
-                res%e = 1.0_wp - hertzdamp_e1() * alpha
+                res%e = 1.0_wp - hertzdamp_e1(law_) * alpha
                 res%tau_c = hertzdamp_tau_c0()
                 if (.not. (res%e > 0.0_wp)) then
                     res%status = HD_OUTSIDE_VALIDITY
@@ -146,12 +166,13 @@ contains
         end select
     end function hertzdamp_forward_alpha
 
-    !> The dimensional forward problem.  On no rebound e = 0 and T_c = +inf with
+    !> The dimensional forward problem (damping force d zeta^q zeta' of the law, default
+    !> linear q = 0: d in kg s^-1 m^-q).  On no rebound e = 0 and T_c = +inf with
     !> status HD_NO_REBOUND; on any other failure all outputs are 0.
     pure elemental subroutine hertzdamp_forward_dim(k, d, m, u, iend, method, alpha, tstar, e, tc, &
-                                                   zeta_max, status, tol, order, accuracy)
+                                                   zeta_max, status, tol, order, accuracy, law)
         real(wp), intent(in) :: k                !! Hertz stiffness [N m^-3/2]
-        real(wp), intent(in) :: d                !! damping coefficient [kg s^-1]
+        real(wp), intent(in) :: d                !! damping coefficient [kg s^-1 m^-q] of the law
         real(wp), intent(in) :: m                !! effective mass [kg]
         real(wp), intent(in) :: u                !! impact velocity [m s^-1]
         integer, intent(in) :: iend              !! HD_END_OVERLAP or HD_END_FORCE
@@ -165,13 +186,14 @@ contains
         real(wp), intent(in), optional :: tol    !! rk45 tolerance
         integer, intent(in), optional :: order   !! series order
         real(wp), intent(in), optional :: accuracy !! relative accuracy asked of series and Pade
+        integer, intent(in), optional :: law     !! HD_DAMPING_* (default linear)
         type(hertzdamp_collision) :: r
         e = 0.0_wp
         tc = 0.0_wp
         zeta_max = 0.0_wp
-        call hertzdamp_reduce(k, d, m, u, alpha, tstar, status)
+        call hertzdamp_reduce(k, d, m, u, alpha, tstar, status, law)
         if (status /= HD_OK) return
-        r = hertzdamp_forward_alpha(alpha, iend, method, tol, order, accuracy)
+        r = hertzdamp_forward_alpha(alpha, iend, method, tol, order, accuracy, law)
         status = r%status
         if (status /= HD_OK .and. status /= HD_NO_REBOUND) then
             alpha = 0.0_wp

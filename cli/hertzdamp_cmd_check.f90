@@ -6,17 +6,18 @@
 !> The engine's parameters are read by hertzdamp_peers_deck, evaluated by
 !> hertzdamp_peers (numbers from the library); this module parses and prints only.
 module hertzdamp_cmd_check
-    use hertzdamp, only: hertzdamp_rk, hertzdamp_message, hertzdamp_end_name, hertzdamp_alpha_c, &
+    use hertzdamp, only: hertzdamp_rk, hertzdamp_message, hertzdamp_end_name, hertzdamp_law_name, &
+                         hertzdamp_law_has_alpha_c, hertzdamp_law_alpha_c, hertzdamp_law_speed_exponent, &
                          HD_OK, HD_NO_REBOUND, HD_END_OVERLAP, HD_END_FORCE, HD_OUTSIDE_VALIDITY, &
-                         HD_BAD_RESTITUTION, HD_NOT_SUPPORTED
+                         HD_BAD_RESTITUTION, HD_NOT_SUPPORTED, HD_DAMPING_LINEAR, HD_DAMPING_TSUJI, &
+                         HD_DAMPING_KUWABARA_KONO
     use hertzdamp_peers, only: peer_deck, peer_point, peer_text, peer_evaluate, peer_spec_field, peer_spec_count, &
-                               peer_law_name, peer_law_inverse, peer_law_forward, peer_beta, peer_beta_inverse, &
+                               peer_law_inverse, peer_law_forward, peer_beta, peer_beta_inverse, &
                                peer_damping, peer_fmt, peer_itoa, peer_row_law, peer_row_end, peer_row_coef, &
-                               peer_nan, peer_float, peer_p6, &
+                               peer_nan, peer_float, &
                                PEER_LAMMPS, PEER_LIGGGHTS, PEER_MERCURYDPM, PEER_YADE, PEER_MFIX, PEER_CHRONO, &
-                               PEER_LAW_LINEAR, PEER_LAW_TSUJI, PEER_LAW_KK, TSTEP_NONE, TSTEP_LIGGGHTS, &
-                               TSTEP_MERCURY, TSTEP_MFIX, COEF_GAMMA_P6, COEF_GAMMA_SQRT2_P6, COEF_GAMMA_SQRT5_BETA, &
-                               COEF_GAMMA_2BETA, COEF_GAMMA_SQRT6, COEF_GAMMA_SQRT5_BETA_EPS
+                               TSTEP_LIGGGHTS, TSTEP_MERCURY, TSTEP_MFIX, COEF_GAMMA_P6, COEF_GAMMA_SQRT2_P6, &
+                               COEF_GAMMA_SQRT5_BETA, COEF_GAMMA_2BETA, COEF_GAMMA_SQRT6, COEF_GAMMA_SQRT5_BETA_EPS
     use hertzdamp_peers_deck, only: peer_materials, peer_read_deck, peer_code, peer_parameter_problem, &
                                     LAMMPS_2021, LAMMPS_2023, LAMMPS_CURRENT, lammps_releases
     use hertzdamp_cli, only: cli_buffer, parse_real, parse_int, parse_choice, fail, quit, EXIT_USAGE, EXIT_OK, &
@@ -305,7 +306,7 @@ contains
         integer, intent(in) :: status
         character(len=:), allocatable :: s
         if (status == HD_NOT_SUPPORTED) then
-            s = 'the ' // peer_law_name(deck%law) // ' damping law with the ' // hertzdamp_end_name(deck%iend) // &
+            s = 'the ' // hertzdamp_law_name(deck%law) // ' damping law with the ' // hertzdamp_end_name(deck%iend) // &
                 ' end is not available in this build of the library'
         else
             s = hertzdamp_message(status)
@@ -316,9 +317,9 @@ contains
         integer, intent(in) :: law
         character(len=:), allocatable :: s
         select case (law)
-        case (PEER_LAW_LINEAR)
+        case (HD_DAMPING_LINEAR)
             s = 'linear: damping force d zeta'' (q = 0); alpha = d t*/m falls with speed as u^(-1/5)'
-        case (PEER_LAW_TSUJI)
+        case (HD_DAMPING_TSUJI)
             s = 'tsuji: damping force d zeta^(1/4) zeta'' (q = 1/4) with d = gamma sqrt(m k); alpha = gamma, ' // &
                 'the same at every speed'
         case default
@@ -340,7 +341,7 @@ contains
     function formula_text(deck) result(s)
         type(peer_deck), intent(in) :: deck
         character(len=:), allocatable :: s
-        if (deck%law == PEER_LAW_TSUJI) then
+        if (deck%law == HD_DAMPING_TSUJI) then
             s = 'gamma = ' // peer_spec_field(deck%row, 'alpha_expr') // ' = ' // &
                 peer_fmt(peer_damping(deck, deck%p), 10) // ' (alpha = gamma)'
             if (deck%m_damp /= deck%m) s = s // ', times sqrt(M_w/(m + M_w)) for the wall body''s mass'
@@ -424,20 +425,25 @@ contains
         end if
         lo = pt(ilo)%p_corrected
         hi = pt(ihi)%p_corrected
-        if (deck%law == PEER_LAW_TSUJI) then
+        if (deck%law == HD_DAMPING_TSUJI) then
             s = subst(deck%p_template, peer_fmt(lo, 12)) // ' gives e = ' // peer_fmt(et) // ' (alpha = ' // &
                 peer_fmt(pt(ilo)%alpha_target, 10) // ')'
             problem = peer_parameter_problem(deck, lo)
             if (len(problem) > 0) s = s // '; but ' // problem
         else
-            s = 'no single value of ' // deck%p_name // ' gives e = ' // peer_fmt(et) // ' at every speed ' // &
-                '(alpha depends on u); per speed in the column corrected, from ' // peer_fmt(lo, 6) // &
-                ' (u = ' // peer_fmt(pt(ilo)%u, 6) // ' m/s) to ' // peer_fmt(hi, 6) // ' (u = ' // &
-                peer_fmt(pt(ihi)%u, 6) // ' m/s): ' // subst(deck%p_template, peer_fmt(lo, 12)) // ' ... ' // &
-                subst(deck%p_template, peer_fmt(hi, 12))
+            if (ilo == ihi) then
+                s = subst(deck%p_template, peer_fmt(lo, 12)) // ' gives e = ' // peer_fmt(et) // ' at u = ' // &
+                    peer_fmt(pt(ilo)%u, 6) // ' m/s only (alpha depends on u)'
+            else
+                s = 'no single value of ' // deck%p_name // ' gives e = ' // peer_fmt(et) // ' at every speed ' // &
+                    '(alpha depends on u); per speed in the column corrected, from ' // peer_fmt(lo, 6) // &
+                    ' (u = ' // peer_fmt(pt(ilo)%u, 6) // ' m/s) to ' // peer_fmt(hi, 6) // ' (u = ' // &
+                    peer_fmt(pt(ihi)%u, 6) // ' m/s): ' // subst(deck%p_template, peer_fmt(lo, 12)) // ' ... ' // &
+                    subst(deck%p_template, peer_fmt(hi, 12))
+            end if
             if (deck%peer == PEER_LAMMPS) then
                 ! the zeta^(1/4) law is speed-independent: coeff_restitution with the e that gives the target
-                call peer_law_inverse(PEER_LAW_TSUJI, et, deck%iend, alpha, st)
+                call peer_law_inverse(HD_DAMPING_TSUJI, et, deck%iend, alpha, st)
                 if (st == HD_OK .and. alpha < sqrt(5.0_wp)) then
                     ealt = peer_beta_inverse(alpha / sqrt(5.0_wp))
                     s = s // '. Speed-independent instead (LAMMPS 27 Jun 2024 and later): damping coeff_restitution ' // &
@@ -516,7 +522,6 @@ contains
         integer :: i, nno, iworst
         real(wp) :: umax, frac, worst, ac
         character(len=:), allocatable :: s
-        integer :: st
         nno = 0
         umax = 0.0_wp
         iworst = 0
@@ -537,9 +542,9 @@ contains
         if (nno > 0) then
             s = 'no rebound at ' // peer_itoa(nno) // ' of ' // peer_itoa(size(pt)) // ' speeds (up to u = ' // &
                 peer_fmt(umax, 6) // ' m/s): the overlap never returns to zero'
-            if (deck%law == PEER_LAW_LINEAR .and. deck%iend == HD_END_OVERLAP) then
-                call hertzdamp_alpha_c(ac, st)
-                if (st == HD_OK) s = s // ' (alpha >= alpha_c = ' // peer_fmt(ac, 6) // ')'
+            if (hertzdamp_law_has_alpha_c(deck%law) .and. deck%iend == HD_END_OVERLAP) then
+                ac = hertzdamp_law_alpha_c(deck%law)
+                s = s // ' (alpha >= alpha_c = ' // peer_fmt(ac, 6) // ')'
             end if
             warn = [warn, peer_text(s)]
         end if
@@ -650,7 +655,7 @@ contains
         e = 0.0_wp
         call peer_law_inverse(law, et, iend, a0, st)
         if (st /= HD_OK) return
-        expo = merge(-0.2_wp, 0.2_wp, law == PEER_LAW_LINEAR)
+        expo = hertzdamp_law_speed_exponent(law)
         call peer_law_forward(law, a0 * ratio**expo, iend, e, tau, st)
     end subroutine speed_achieved
 
@@ -758,7 +763,7 @@ contains
         integer :: row, j, st, law, iend, k
         real(wp) :: e
         character(len=:), allocatable :: s
-        integer, parameter :: laws(2) = [PEER_LAW_LINEAR, PEER_LAW_KK]
+        integer, parameter :: laws(2) = [HD_DAMPING_LINEAR, HD_DAMPING_KUWABARA_KONO]
         integer, parameter :: ends(2) = [HD_END_OVERLAP, HD_END_FORCE]
         allocate (lines(0))
         s = ''
@@ -770,7 +775,7 @@ contains
         do row = 1, peer_spec_count
             if (.not. restitution_row(row)) cycle
             s = '| ' // peer_spec_field(row, 'engine') // ' | ' // short_version(row) // ' | ' // short_option(row) // &
-                ' | ' // peer_law_name(peer_row_law(row)) // ' | ' // peer_spec_field(row, 'end') // ' | `' // &
+                ' | ' // hertzdamp_law_name(peer_row_law(row)) // ' | ' // peer_spec_field(row, 'end') // ' | `' // &
                 peer_spec_field(row, 'alpha_expr') // '` |'
             do j = 1, size(table_targets)
                 call row_achieved(row, table_targets(j), e, st)
@@ -789,8 +794,12 @@ contains
             law = laws(k)
             do iend = 1, size(ends)
                 do j = 1, size(table_targets)
-                    s = '| ' // peer_law_name(law) // ' | ' // hertzdamp_end_name(ends(iend)) // ' | ' // &
-                        used_by(law, ends(iend)) // ' | ' // peer_fmt(table_targets(j)) // ' |'
+                    if (j == 1) then
+                        s = '| ' // hertzdamp_law_name(law) // ' | ' // hertzdamp_end_name(ends(iend)) // ' | ' // &
+                            used_by(law, ends(iend)) // ' | ' // peer_fmt(table_targets(j)) // ' |'
+                    else
+                        s = '| | | | ' // peer_fmt(table_targets(j)) // ' |'
+                    end if
                     do row = 1, size(table_ratios)
                         call speed_achieved(law, ends(iend), table_targets(j), table_ratios(row), e, st)
                         s = s // ' ' // cell(e, st) // ' |'
@@ -813,7 +822,7 @@ contains
         type(out_table) :: t
         integer :: row, j, st, k, iend
         real(wp) :: e
-        integer, parameter :: laws(2) = [PEER_LAW_LINEAR, PEER_LAW_KK]
+        integer, parameter :: laws(2) = [HD_DAMPING_LINEAR, HD_DAMPING_KUWABARA_KONO]
         integer, parameter :: ends(2) = [HD_END_OVERLAP, HD_END_FORCE]
         call t%set_columns('id,law,end,formula,target,speed_ratio,e,status')
         call t%meta('table', 'e achieved: restitution rows at their target; speed-dependent laws at u = ratio u0 ' // &
@@ -831,7 +840,7 @@ contains
                 do j = 1, size(table_targets)
                     do row = 1, size(table_ratios)
                         call speed_achieved(laws(k), ends(iend), table_targets(j), table_ratios(row), e, st)
-                        call put(peer_law_name(laws(k)) // '-' // hertzdamp_end_name(ends(iend)), laws(k), ends(iend), &
+                        call put(hertzdamp_law_name(laws(k)) // '-' // hertzdamp_end_name(ends(iend)), laws(k), ends(iend), &
                                  'calibrated at u0', table_targets(j), table_ratios(row), e, st)
                     end do
                 end do
@@ -844,7 +853,7 @@ contains
             integer, intent(in) :: law, iend, st
             real(wp), intent(in) :: target, ratio, e
             call t%str(id)
-            call t%str(peer_law_name(law))
+            call t%str(hertzdamp_law_name(law))
             call t%str(hertzdamp_end_name(iend))
             call t%str(formula)
             call t%num(target)

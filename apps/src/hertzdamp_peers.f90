@@ -19,7 +19,10 @@
 !> and the fitted inverse for alpha(e) (`peer_law_forward`, `peer_law_inverse`).
 module hertzdamp_peers
     use hertzdamp, only: hertzdamp_rk, hertzdamp_collision, hertzdamp_rk45_collide, hertzdamp_invert_alpha, &
-                         hertzdamp_tau_c0, HD_OK, HD_NO_REBOUND, HD_NOT_SUPPORTED, HD_BAD_ARGUMENT, &
+                         hertzdamp_tau_c0, hertzdamp_law_q, hertzdamp_tsuji_alpha, hertzdamp_tsuji_e, &
+                         hertzdamp_fit_e_min_overlap, hertzdamp_fit_e_min_force, &
+                         HD_DAMPING_LINEAR, HD_DAMPING_TSUJI, HD_DAMPING_KUWABARA_KONO, &
+                         HD_OK, HD_NO_REBOUND, HD_BAD_ARGUMENT, &
                          HD_BAD_RESTITUTION, HD_OUT_OF_RANGE, HD_OUTSIDE_VALIDITY, HD_END_OVERLAP, HD_END_FORCE
     use hertzdamp_peers_data, only: peer_spec_field, peer_spec_row, peer_spec_count
     use, intrinsic :: ieee_arithmetic, only: ieee_value, ieee_quiet_nan, ieee_is_finite
@@ -34,11 +37,6 @@ module hertzdamp_peers
     integer, parameter, public :: PEER_LAMMPS = 1, PEER_LIGGGHTS = 2, PEER_MERCURYDPM = 3, PEER_YADE = 4, &
                                   PEER_MFIX = 5, PEER_CHRONO = 6
     character(len=*), parameter, public :: peer_names = 'lammps liggghts mercurydpm yade mfix chrono'
-
-    !> Damping laws, by the exponent q of  d zeta^q zeta'.
-    integer, parameter, public :: PEER_LAW_LINEAR = 0   !! q = 0, constant damping
-    integer, parameter, public :: PEER_LAW_TSUJI = 1    !! q = 1/4
-    integer, parameter, public :: PEER_LAW_KK = 2       !! q = 1/2, Kuwabara-Kono
 
     !> How the deck's damping parameter p gives the damping of the model.  For the
     !> q = 1/4 kinds the result is gamma (d = gamma sqrt(m k), so alpha = gamma); for the
@@ -71,7 +69,7 @@ module hertzdamp_peers
     type, public :: peer_deck
         integer :: peer = 0                 !! PEER_*
         integer :: row = 0                  !! row of the specification (hertzdamp_peers_data)
-        integer :: law = PEER_LAW_LINEAR    !! PEER_LAW_*, from the row's q
+        integer :: law = HD_DAMPING_LINEAR    !! PEER_LAW_*, from the row's q
         integer :: iend = HD_END_OVERLAP    !! from the row's end
         integer :: coef = 0                 !! COEF_*
         real(wp) :: p = 0.0_wp              !! the deck's damping parameter, as the engine stores it
@@ -113,7 +111,7 @@ module hertzdamp_peers
         integer :: status_corrected = HD_OK !! HD_OK, or why there is no corrected parameter
     end type peer_point
 
-    public :: peer_law_name, peer_law_q, peer_law_forward, peer_law_inverse
+    public :: peer_law_forward, peer_law_inverse
     public :: peer_beta, peer_beta_inverse, peer_p6, peer_p6_inverse
     public :: peer_damping, peer_parameter, peer_alpha, peer_evaluate, peer_time_estimate
     public :: peer_row_law, peer_row_end, peer_row_coef, peer_nan, peer_float, peer_fmt, peer_itoa
@@ -123,35 +121,13 @@ contains
 
     ! ------------------------------------------------------------------ laws
 
-    !> Name of a damping law: 'linear', 'tsuji' or 'kuwabara-kono'.
-    pure function peer_law_name(law) result(name)
-        integer, intent(in) :: law   !! PEER_LAW_*
-        character(len=:), allocatable :: name
-        select case (law)
-        case (PEER_LAW_LINEAR); name = 'linear'
-        case (PEER_LAW_TSUJI); name = 'tsuji'
-        case (PEER_LAW_KK); name = 'kuwabara-kono'
-        case default; name = 'unknown'
-        end select
-    end function peer_law_name
-
-    !> The exponent q of a law (0, 1/4, 1/2).
-    pure real(wp) function peer_law_q(law) result(q)
-        integer, intent(in) :: law   !! PEER_LAW_*
-        select case (law)
-        case (PEER_LAW_TSUJI); q = 0.25_wp
-        case (PEER_LAW_KK); q = 0.5_wp
-        case default; q = 0.0_wp
-        end select
-    end function peer_law_q
-
     !> The law of a specification row, from its q column; -1 if the row is unknown.
     pure integer function peer_row_law(row) result(law)
         integer, intent(in) :: row   !! row of the specification
         select case (peer_spec_field(row, 'q'))
-        case ('0'); law = PEER_LAW_LINEAR
-        case ('1/4'); law = PEER_LAW_TSUJI
-        case ('1/2'); law = PEER_LAW_KK
+        case ('0'); law = HD_DAMPING_LINEAR
+        case ('1/4'); law = HD_DAMPING_TSUJI
+        case ('1/2'); law = HD_DAMPING_KUWABARA_KONO
         case default; law = -1
         end select
     end function peer_row_law
@@ -206,44 +182,123 @@ contains
         end select
     end function peer_row_coef
 
-    !> e(alpha) and tau_c(alpha) of a law and contact end, by the reference integrator.
+    !> e(alpha) and tau_c(alpha) of a law and contact end, by the library's reference
+    !> integrator (hertzdamp_rk45_collide with the law).
     pure subroutine peer_law_forward(law, alpha, iend, e, tau_c, status)
-        integer, intent(in) :: law       !! PEER_LAW_*
+        integer, intent(in) :: law       !! HD_DAMPING_*
         real(wp), intent(in) :: alpha    !! damping parameter
         integer, intent(in) :: iend      !! HD_END_OVERLAP or HD_END_FORCE
         real(wp), intent(out) :: e       !! restitution coefficient (0: no rebound)
         real(wp), intent(out) :: tau_c   !! contact duration in units of t* (+inf: no rebound)
         integer, intent(out) :: status   !! HD_OK, HD_NO_REBOUND or an error
         type(hertzdamp_collision) :: r
-        e = 0.0_wp
-        tau_c = 0.0_wp
-        select case (law)
-        case (PEER_LAW_LINEAR)
-            r = hertzdamp_rk45_collide(alpha, iend)
-            status = r%status
-            e = r%e
-            tau_c = r%tau_c
-        case default
-            status = HD_NOT_SUPPORTED
-        end select
+        r = hertzdamp_rk45_collide(alpha, iend, law=law)
+        status = r%status
+        e = r%e
+        tau_c = r%tau_c
     end subroutine peer_law_forward
 
-    !> alpha(e) of a law and contact end, by the library's fitted inverse.
+    !> alpha(e) of a law and contact end: the library's fitted inverse (linear), the
+    !> closed form of the tsuji overlap end (alpha = sqrt(5) beta(e), hertzdamp_tsuji_alpha);
+    !> otherwise, until the library has fitted inverses for them, a bracketing root
+    !> search on the library's forward map (tsuji force: the closed form
+    !> hertzdamp_tsuji_e; kuwabara-kono: the reference integrator), which is monotone in
+    !> alpha.  Targets outside the linear fit's range give HD_BAD_RESTITUTION for every law.
     pure subroutine peer_law_inverse(law, e, iend, alpha, status)
-        integer, intent(in) :: law       !! PEER_LAW_*
+        integer, intent(in) :: law       !! HD_DAMPING_*
         real(wp), intent(in) :: e        !! target restitution coefficient
         integer, intent(in) :: iend      !! HD_END_OVERLAP or HD_END_FORCE
         real(wp), intent(out) :: alpha   !! damping parameter
         integer, intent(out) :: status   !! HD_OK or an error (HD_BAD_RESTITUTION: e outside the range)
-        real(wp) :: tau
+        real(wp) :: tau, emin
         alpha = 0.0_wp
-        select case (law)
-        case (PEER_LAW_LINEAR)
+        if (law == HD_DAMPING_LINEAR) then
             call hertzdamp_invert_alpha(e, iend, alpha, tau, status)
-        case default
-            status = HD_NOT_SUPPORTED
-        end select
+            return
+        end if
+        emin = merge(hertzdamp_fit_e_min_overlap, hertzdamp_fit_e_min_force, iend == HD_END_OVERLAP)
+        status = HD_OK
+        if (.not. (e >= emin .and. e <= 1.0_wp)) then
+            status = HD_BAD_RESTITUTION
+        else if (e == 1.0_wp) then
+            alpha = 0.0_wp
+        else if (law == HD_DAMPING_TSUJI .and. iend == HD_END_OVERLAP) then
+            alpha = hertzdamp_tsuji_alpha(e)
+        else
+            call root_on_forward(law, e, iend, alpha, status)
+        end if
     end subroutine peer_law_inverse
+
+    !> The alpha with e(alpha) = e on the library's forward map: bracket by doubling,
+    !> then Illinois steps on ln e(alpha) - ln e, safeguarded by bisection, to a relative
+    !> width of 4 ulp.
+    pure subroutine root_on_forward(law, e, iend, alpha, status)
+        integer, intent(in) :: law, iend
+        real(wp), intent(in) :: e
+        real(wp), intent(out) :: alpha
+        integer, intent(out) :: status
+        real(wp) :: lo, hi, flo, fhi, fm, x, target
+        integer :: it, side
+        target = log(e)
+        alpha = 0.0_wp
+        lo = 0.0_wp
+        flo = -target              ! ln e(0) - ln e = -ln e > 0
+        hi = 1.0_wp
+        call eval(hi, fhi, status)
+        do it = 1, 60
+            if (status /= HD_OK) return
+            if (fhi <= 0.0_wp) exit
+            lo = hi
+            flo = fhi
+            hi = 2.0_wp * hi
+            call eval(hi, fhi, status)
+        end do
+        if (.not. fhi <= 0.0_wp) then
+            status = HD_OUTSIDE_VALIDITY
+            return
+        end if
+        side = 0
+        do it = 1, 200
+            if (hi - lo <= 4.0_wp * spacing(hi)) exit
+            x = hi - fhi * (hi - lo) / (fhi - flo)
+            if (.not. (x > lo .and. x < hi) .or. mod(it, 4) == 0) x = 0.5_wp * (lo + hi)
+            call eval(x, fm, status)
+            if (status /= HD_OK) return
+            if (fm > 0.0_wp) then
+                lo = x
+                flo = fm
+                if (side == -1) fhi = 0.5_wp * fhi
+                side = -1
+            else
+                hi = x
+                fhi = fm
+                if (side == 1) flo = 0.5_wp * flo
+                side = 1
+            end if
+            if (fm == 0.0_wp) exit
+        end do
+        alpha = 0.5_wp * (lo + hi)
+        if (fm == 0.0_wp) alpha = x
+    contains
+        !> ln e(a) - ln e; no rebound counts as e = 0 (-huge)
+        pure subroutine eval(a, gv, st)
+            real(wp), intent(in) :: a
+            real(wp), intent(out) :: gv
+            integer, intent(out) :: st
+            real(wp) :: ea, ta
+            if (law == HD_DAMPING_TSUJI .and. iend == HD_END_FORCE) then
+                call hertzdamp_tsuji_e(a, iend, ea, st)
+            else
+                call peer_law_forward(law, a, iend, ea, ta, st)
+            end if
+            if (st == HD_NO_REBOUND .or. (st == HD_OK .and. ea <= 0.0_wp)) then
+                st = HD_OK
+                gv = -huge(1.0_wp)
+            else
+                gv = log(ea) - target
+            end if
+        end subroutine eval
+    end subroutine root_on_forward
 
     ! ------------------------------------------------------------------ formulas of the engines
 
@@ -435,10 +490,10 @@ contains
         alpha = 0.0_wp
         status = HD_OK
         tstar = exp(0.4_wp * (log(deck%m) - log(deck%k)) - 0.2_wp * log(u))
-        if (deck%law == PEER_LAW_TSUJI) then
+        if (deck%law == HD_DAMPING_TSUJI) then
             alpha = peer_damping(deck, deck%p)
         else
-            alpha = peer_damping(deck, deck%p) * tstar * (u * tstar)**peer_law_q(deck%law) / deck%m
+            alpha = peer_damping(deck, deck%p) * tstar * (u * tstar)**hertzdamp_law_q(deck%law) / deck%m
         end if
         if (.not. (ieee_is_finite(alpha) .and. ieee_is_finite(tstar) .and. tstar > 0.0_wp)) status = HD_OUT_OF_RANGE
     end subroutine peer_alpha
@@ -511,10 +566,10 @@ contains
             pt%alpha_target = peer_nan()
             return
         end if
-        if (deck%law == PEER_LAW_TSUJI) then
+        if (deck%law == HD_DAMPING_TSUJI) then
             c = pt%alpha_target
         else
-            c = pt%alpha_target * deck%m / (pt%tstar * (u * pt%tstar)**peer_law_q(deck%law))
+            c = pt%alpha_target * deck%m / (pt%tstar * (u * pt%tstar)**hertzdamp_law_q(deck%law))
         end if
         call peer_parameter(deck, c, pt%p_corrected, pt%status_corrected)
         if (pt%status_corrected /= HD_OK) pt%p_corrected = peer_nan()

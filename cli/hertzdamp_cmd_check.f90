@@ -386,7 +386,7 @@ contains
         if (abs(x) < 5.0e-7_wp) then
             s = 'exact to 1e-6'
         else
-            write (b, '(sp,f0.2)') 100.0_wp * x
+            write (b, '(sp,f16.2)') 100.0_wp * x
             if (abs(100.0_wp * x) < 0.005_wp) write (b, '(sp,es9.2)') 100.0_wp * x
             s = trim(adjustl(b)) // ' %'
         end if
@@ -506,7 +506,7 @@ contains
                     'units do not match); DTSOLID = ' // peer_fmt(dt_mfix, 6) // ' s gives ' // &
                     peer_fmt(pt(ib)%tc / dt_mfix, 4) // ' steps per contact at u = ' // peer_fmt(pt(ib)%u, 6) // ' m/s'
             else
-                s = 'MFiX TCOLL = pi/sqrt(k/m - (eta/m)^2/4) is not defined for this deck (negative radicand): ' // &
+                s = 'MFiX TCOLL = pi/sqrt(k/m - (eta/m)^2/4) is not defined for this deck (zero or negative radicand): ' // &
                     'MFiX''s DTSOLID would be NaN'
             end if
         case default

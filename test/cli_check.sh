@@ -101,6 +101,25 @@ run check mercurydpm species=HertzianViscoelasticSpecies setStiffnessAndRestitut
 check "old MercuryDPM 1 mm steel: no rebound" test "$RC" -eq 0 -a "$(col status)" = no-rebound
 check "old MercuryDPM 1 mm steel: alpha about 88 (doc/peers.md 3b)" close "$(col alpha)" 88 0.05
 
+# --- the README example runs as written and prints the lines it shows
+check "README check example: the command runs and prints the lines shown" python3 - "$BIN" <<'PYEOF'
+import shlex, subprocess, sys
+lines = open("README.md").read().splitlines()
+i = next(k for k, l in enumerate(lines) if l.startswith("    $ hertzdamp check lammps"))
+cmd = shlex.split(lines[i][len("    $ "):])
+cmd[0] = sys.argv[1]
+out = subprocess.run(cmd, capture_output=True, text=True, check=True).stdout.splitlines()
+shown = []
+for l in lines[i + 1:]:
+    if not l.startswith("    # "):
+        break
+    shown.append(l[4:])
+missing = [l for l in shown if l not in out]
+for l in missing:
+    print("not in the output:", l)
+sys.exit(1 if missing or len(shown) < 5 else 0)
+PYEOF
+
 # --- help
 run check --help
 check "check --help" test "$RC" -eq 0 -a "$(grep -c 'pair_coeff' "$OUT")" -ge 1

@@ -14,7 +14,7 @@ module hertzdamp_cmd_check
     use hertzdamp_peers, only: peer_deck, peer_point, peer_text, peer_evaluate, peer_spec_field, peer_spec_count, &
                                peer_law_inverse, peer_law_forward, peer_beta, peer_beta_inverse, &
                                peer_damping, peer_fmt, peer_itoa, peer_row_law, peer_row_end, peer_row_coef, &
-                               peer_nan, peer_float, &
+                               peer_nan, peer_float, peer_name, &
                                PEER_LAMMPS, PEER_LIGGGHTS, PEER_MERCURYDPM, PEER_YADE, PEER_MFIX, PEER_CHRONO, &
                                TSTEP_LIGGGHTS, TSTEP_MERCURY, TSTEP_MFIX, COEF_GAMMA_P6, COEF_GAMMA_SQRT2_P6, &
                                COEF_GAMMA_SQRT5_BETA, COEF_GAMMA_2BETA, COEF_GAMMA_SQRT6, COEF_GAMMA_SQRT5_BETA_EPS
@@ -106,8 +106,9 @@ contains
                         have_v = .true.
                     case ('--e')
                         e_user = parse_real(val, '--e')
-                        if (.not. (e_user > 0.0_wp .and. e_user <= 1.0_wp)) &
+                        if (.not. (e_user > 0.0_wp .and. e_user <= 1.0_wp)) then
                             call fail(EXIT_USAGE, '--e ' // val // ': the target restitution must be in (0, 1]')
+                        end if
                         have_e = .true.
                     case ('--steps')
                         steps = parse_int(val, '--steps')
@@ -117,6 +118,7 @@ contains
                         release_text = val
                     case ('--format')
                         fmt = parse_choice(val, format_choices, 'format (--format)')
+                    case default
                     end select
                     cycle
                 end if
@@ -128,8 +130,9 @@ contains
             end if
         end do
         if (table) then
-            if (len(peer_name) > 0 .or. size(opts_seen) > 1 + merge(1, 0, any_key(opts_seen, '--format'))) &
+            if (len(peer_name) > 0 .or. size(opts_seen) > 1 + merge(1, 0, any_key(opts_seen, '--format'))) then
                 call fail(EXIT_USAGE, '--table takes no engine and no option but --format')
+            end if
             call print_table(fmt)
             call quit(EXIT_OK)
         end if
@@ -171,13 +174,13 @@ contains
         real(wp) :: et
         integer :: status, i, ngood, nfail, first_fail
         call peer_read_deck(peer, tokens, mat, release, deck, status, msg)
-        if (status /= HD_OK) call fail(EXIT_USAGE, engine_label(peer) // ': ' // msg)
+        if (status /= HD_OK) call fail(EXIT_USAGE, peer_name(peer) // ': ' // msg)
         if (have_e) then
             et = e_user
         else if (deck%e_deck > 0.0_wp) then
             et = deck%e_deck
         else
-            call fail(EXIT_USAGE, 'missing --e (the restitution coefficient you want: this ' // engine_label(peer) // &
+            call fail(EXIT_USAGE, 'missing --e (the restitution coefficient you want: this ' // peer_name(peer) // &
                       ' deck sets ' // deck%p_name // ', not e)')
         end if
         allocate (pt(size(speeds)))
@@ -276,20 +279,6 @@ contains
         s = word
         if (n > 1) s = word // ' ' // peer_itoa(i)
     end function numbered
-
-    function engine_label(peer) result(s)
-        integer, intent(in) :: peer
-        character(len=:), allocatable :: s
-        select case (peer)
-        case (PEER_LAMMPS); s = 'lammps'
-        case (PEER_LIGGGHTS); s = 'liggghts'
-        case (PEER_MERCURYDPM); s = 'mercurydpm'
-        case (PEER_YADE); s = 'yade'
-        case (PEER_MFIX); s = 'mfix'
-        case (PEER_CHRONO); s = 'chrono'
-        case default; s = '?'
-        end select
-    end function engine_label
 
     function release_word(release) result(s)
         integer, intent(in) :: release
@@ -555,6 +544,7 @@ contains
             select case (deck%peer)
             case (PEER_LAMMPS); s = s // ' (limit_damping clips it: the force end)'
             case (PEER_LIGGGHTS); s = s // ' (limitForce on clips it: the force end)'
+            case default
             end select
             warn = [warn, peer_text(s)]
         end if
@@ -956,8 +946,9 @@ contains
         n = parse_int(count, '--velocity (number of points in ' // text // ')')
         if (n < 1 .or. n > max_list_length) call fail(EXIT_USAGE, 'range "' // text // '" for --velocity: ' // &
                                                       'N must be in 1..10000')
-        if (logscale .and. .not. (a0 > 0.0_wp .and. a1 > 0.0_wp)) &
+        if (logscale .and. .not. (a0 > 0.0_wp .and. a1 > 0.0_wp)) then
             call fail(EXIT_USAGE, 'logarithmic range "' // text // '" for --velocity needs A0 > 0 and A1 > 0')
+        end if
         allocate (x(n))
         x(1) = a0
         do i = 2, n - 1

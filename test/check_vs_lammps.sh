@@ -15,13 +15,20 @@ if [ -z "$LMP" ]; then
   echo "check_vs_lammps: 0 passed, 1 failed"; exit 1
 fi
 TMP=$(mktemp -d); trap 'rm -rf "$TMP"' EXIT
-cat >"$TMP/in.pair" <<'EOF'
-units si
+# the common head and tail, then the pair and the wall set-ups
+head='units si
 atom_style sphere
 atom_modify map array
 boundary f f f
 region box block -0.01 0.01 -0.01 0.01 -0.01 0.01
-create_box 1 box
+create_box 1 box'
+tail='comm_modify vel yes
+fix 1 all nve/sphere
+timestep 2.5e-8
+thermo 100000
+run 10000'
+cat >"$TMP/in.pair" <<EOF
+$head
 create_atoms 1 single -0.0010005 0 0
 create_atoms 1 single  0.0010005 0 0
 set type 1 diameter 0.002
@@ -31,36 +38,23 @@ group b id 2
 velocity a set 0.5 0 0
 velocity b set -0.5 0 0
 pair_style granular
-pair_coeff * * ${deck}
-comm_modify vel yes
+pair_coeff * * \${deck}
 neighbor 0.0005 bin
-fix 1 all nve/sphere
-timestep 2.5e-8
-thermo 100000
-run 10000
+$tail
 variable e equal vx[2]-vx[1]
-print "RESULT $(v_e:%.15g)"
+print "RESULT \$(v_e:%.15g)"
 EOF
-cat >"$TMP/in.wall" <<'EOF'
-units si
-atom_style sphere
-atom_modify map array
-boundary f f f
-region box block -0.01 0.01 -0.01 0.01 -0.01 0.01
-create_box 1 box
+cat >"$TMP/in.wall" <<EOF
+$head
 create_atoms 1 single 0 0 0.0010005
 set type 1 diameter 0.002
 set type 1 density 2500
 velocity all set 0 0 -1
 pair_style none
-comm_modify vel yes
-fix 1 all nve/sphere
-fix 2 all wall/gran granular ${deck} zplane 0 NULL
-timestep 2.5e-8
-thermo 100000
-run 10000
+fix 2 all wall/gran granular \${deck} zplane 0 NULL
+$tail
 variable e equal vz[1]
-print "RESULT $(v_e:%.15g)"
+print "RESULT \$(v_e:%.15g)"
 EOF
 p=0; f=0
 T="tangential linear_nohistory 0 0"

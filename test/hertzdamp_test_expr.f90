@@ -293,6 +293,7 @@ contains
             ! (m / (k*sqrt(u)))^(2/5)
             x = (lookup(p, 'm', v) / (lookup(p, 'k', v) * sqrt(lookup(p, 'u', v))))**(2.0_wp / 5.0_wp)
             return
+        case default
         end select
         do j = 1, v%n
             if (v%name(j) == name) then

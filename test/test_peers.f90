@@ -16,7 +16,7 @@ program test_peers
     use hertzdamp_peers_deck
     use hertzdamp_test_expr, only: expr_vars, expr_eval
     use hertzdamp_testing, only: test_suite, new_suite, rel_err
-    use, intrinsic :: iso_fortran_env, only: real32
+    use, intrinsic :: iso_fortran_env, only: real32, int64
     implicit none
     integer, parameter :: wp = hertzdamp_rk
     real(wp), parameter :: pi = acos(-1.0_wp)
@@ -55,7 +55,7 @@ contains
 
     real(wp) function rnd()
         ! Park-Miller minimal standard generator: reproducible, no intrinsic state
-        seed = int(mod(int(seed, 8) * 48271_8, 2147483647_8))
+        seed = int(mod(int(seed, int64) * 48271_int64, 2147483647_int64))
         rnd = real(seed, wp) / 2147483647.0_wp
     end function rnd
 

@@ -100,6 +100,8 @@ def main(argv):
     for name in head:
         w("        case ('%s')" % name)
         w("            text = trim(spec_%s(row))" % name)
+    w("        case default")
+    w("            text = ''")
     w("        end select")
     w("    end function peer_spec_field")
     w("")

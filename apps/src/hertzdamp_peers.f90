@@ -37,6 +37,8 @@ module hertzdamp_peers
     integer, parameter, public :: PEER_LAMMPS = 1, PEER_LIGGGHTS = 2, PEER_MERCURYDPM = 3, PEER_YADE = 4, &
                                   PEER_MFIX = 5, PEER_CHRONO = 6
     character(len=*), parameter, public :: peer_names = 'lammps liggghts mercurydpm yade mfix chrono'
+    !> Their names as the engines write them, in the same order.
+    character(len=*), parameter :: peer_titles = 'LAMMPS LIGGGHTS MercuryDPM Yade MFiX Chrono'
 
     !> How the deck's damping parameter p gives the damping of the model.  For the
     !> q = 1/4 kinds the result is gamma (d = gamma sqrt(m k), so alpha = gamma); for the
@@ -114,7 +116,7 @@ module hertzdamp_peers
     public :: peer_law_forward, peer_law_inverse
     public :: peer_beta, peer_beta_inverse, peer_p6, peer_p6_inverse
     public :: peer_damping, peer_parameter, peer_alpha, peer_evaluate, peer_time_estimate
-    public :: peer_row_law, peer_row_end, peer_row_coef, peer_nan, peer_float, peer_fmt, peer_itoa
+    public :: peer_row_law, peer_row_end, peer_row_coef, peer_nan, peer_float, peer_fmt, peer_itoa, peer_name
     public :: peer_spec_field, peer_spec_row, peer_spec_count
 
 contains
@@ -299,6 +301,31 @@ contains
             end if
         end subroutine eval
     end subroutine root_on_forward
+
+    !> Name of an engine: as the command line takes it ('lammps', ...) or, with
+    !> `title`, as the engine writes it ('LAMMPS', 'MercuryDPM', ...); '?' if unknown.
+    pure function peer_name(peer, title) result(name)
+        integer, intent(in) :: peer            !! PEER_*
+        logical, intent(in), optional :: title !! the engine's own spelling
+        character(len=:), allocatable :: name
+        character(len=:), allocatable :: list
+        integer :: i, j, start
+        list = peer_names
+        if (present(title)) then
+            if (title) list = peer_titles
+        end if
+        name = '?'
+        start = 1
+        j = 0
+        do i = 1, len(list) + 1
+            if (i <= len(list)) then
+                if (list(i:i) /= ' ') cycle
+            end if
+            j = j + 1
+            if (j == peer) name = list(start:i - 1)
+            start = i + 1
+        end do
+    end function peer_name
 
     ! ------------------------------------------------------------------ formulas of the engines
 
@@ -521,6 +548,7 @@ contains
             eta = peer_damping(deck, deck%p) * sqrt(deck%m * deck%k)
             w2 = deck%k / deck%m - 0.25_wp * (eta / deck%m)**2
             if (w2 > 0.0_wp) t = pi / sqrt(w2)
+        case default
         end select
     end function peer_time_estimate
 

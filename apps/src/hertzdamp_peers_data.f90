@@ -699,6 +699,8 @@ contains
             text = trim(spec_source_lines(row))
         case ('notes')
             text = trim(spec_notes(row))
+        case default
+            text = ''
         end select
     end function peer_spec_field
 

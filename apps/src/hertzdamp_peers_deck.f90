@@ -17,7 +17,7 @@ module hertzdamp_peers_deck
                                    hertzdamp_effective_modulus
     use hertzdamp_peers, only: peer_deck, peer_text, peer_spec_row, peer_row_law, peer_row_end, peer_row_coef, &
                                PEER_LAMMPS, PEER_LIGGGHTS, PEER_MERCURYDPM, PEER_YADE, PEER_MFIX, PEER_CHRONO, &
-                               TSTEP_LIGGGHTS, TSTEP_MERCURY, TSTEP_MFIX, peer_names, peer_fmt, peer_itoa, &
+                               TSTEP_LIGGGHTS, TSTEP_MERCURY, TSTEP_MFIX, peer_name, peer_fmt, peer_itoa, &
                                COEF_GAMMA_SQRT5_BETA
     use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
     use, intrinsic :: iso_fortran_env, only: real32
@@ -53,17 +53,10 @@ contains
     !> The PEER_* code of an engine name (case-insensitive), 0 if unknown.
     pure integer function peer_code(name) result(code)
         character(len=*), intent(in) :: name   !! lammps, liggghts, mercurydpm, yade, mfix, chrono
-        integer :: i, j, start
+        integer :: j
         code = 0
-        start = 1
-        j = 0
-        do i = 1, len(peer_names) + 1
-            if (i <= len(peer_names)) then
-                if (peer_names(i:i) /= ' ') cycle
-            end if
-            j = j + 1
-            if (peer_names(start:i - 1) == lower(name)) code = j
-            start = i + 1
+        do j = PEER_LAMMPS, PEER_CHRONO
+            if (peer_name(j) == lower(name)) code = j
         end do
     end function peer_code
 
@@ -220,6 +213,7 @@ contains
             end if
             is_fix = .true.
             i = 6
+        case default
         end select
         do while (i <= n .and. len(msg) == 0)
             t = tok(i)%s
@@ -420,22 +414,27 @@ contains
             case ('linear_nohistory'); na = 2
             case ('linear_history', 'linear_history_classic', 'mindlin', 'mindlin_classic', 'mindlin/force', &
                   'mindlin_rescale', 'mindlin_rescale/force'); na = 3
+            case default
             end select
         case ('rolling')
             select case (name)
             case ('none'); na = 0
             case ('sds'); na = 3
+            case default
             end select
         case ('twisting')
             select case (name)
             case ('none', 'marshall'); na = 0
             case ('sds'); na = 3
+            case default
             end select
         case ('heat')
             select case (name)
             case ('none'); na = 0
             case ('area', 'radius'); na = 1
+            case default
             end select
+        case default
         end select
     end function submodel_args
 
@@ -638,6 +637,7 @@ contains
                     return
                 end if
                 m2%density = rho
+            case default
             end select
             if (len(msg) > 0) return
         end do
@@ -1290,9 +1290,9 @@ contains
         do i = 1, size(kv%key)
             if (.not. kv%used(i)) then
                 if (index(' ' // peer_known_keys(peer) // ' ', ' ' // base_key(kv%key(i)%s) // ' ') > 0) then
-                    msg = 'key ' // kv%key(i)%s // ' does not apply to this ' // trim(engine_name(peer)) // ' deck'
+                    msg = 'key ' // kv%key(i)%s // ' does not apply to this ' // peer_name(peer, title=.true.) // ' deck'
                 else
-                    msg = 'unknown key ' // kv%key(i)%s // ' for ' // trim(engine_name(peer)) // ' (known: ' // &
+                    msg = 'unknown key ' // kv%key(i)%s // ' for ' // peer_name(peer, title=.true.) // ' (known: ' // &
                           peer_known_keys(peer) // ')'
                 end if
                 return
@@ -1311,20 +1311,6 @@ contains
             b = key
         end if
     end function base_key
-
-    pure function engine_name(peer) result(name)
-        integer, intent(in) :: peer
-        character(len=10) :: name
-        select case (peer)
-        case (PEER_LAMMPS); name = 'LAMMPS'
-        case (PEER_LIGGGHTS); name = 'LIGGGHTS'
-        case (PEER_MERCURYDPM); name = 'MercuryDPM'
-        case (PEER_YADE); name = 'Yade'
-        case (PEER_MFIX); name = 'MFiX'
-        case (PEER_CHRONO); name = 'Chrono'
-        case default; name = '?'
-        end select
-    end function engine_name
 
     subroutine add_note(deck, text)
         type(peer_deck), intent(inout) :: deck
@@ -1368,8 +1354,9 @@ contains
         character(len=:), allocatable :: r
         r = s
         if (len(r) >= 2) then
-            if ((r(1:1) == '''' .and. r(len(r):len(r)) == '''') .or. (r(1:1) == '"' .and. r(len(r):len(r)) == '"')) &
+            if ((r(1:1) == '''' .and. r(len(r):len(r)) == '''') .or. (r(1:1) == '"' .and. r(len(r):len(r)) == '"')) then
                 r = r(2:len(r) - 1)
+            end if
         end if
     end function unquote
 

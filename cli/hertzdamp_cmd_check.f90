@@ -331,9 +331,9 @@ contains
         type(peer_deck), intent(in) :: deck
         character(len=:), allocatable :: s
         if (deck%law == HD_DAMPING_TSUJI) then
-            s = 'gamma = ' // peer_spec_field(deck%row, 'alpha_expr') // ' = ' // &
-                peer_fmt(peer_damping(deck, deck%p), 10) // ' (alpha = gamma)'
-            if (deck%m_damp /= deck%m) s = s // ', times sqrt(M_w/(m + M_w)) for the wall body''s mass'
+            s = 'gamma = ' // peer_spec_field(deck%row, 'alpha_expr')
+            if (deck%m_damp /= deck%m) s = s // ' times sqrt(M_w/(m + M_w)) (the wall body''s mass)'
+            s = s // ' = ' // peer_fmt(peer_damping(deck, deck%p), 10) // ' (alpha = gamma)'
         else
             s = 'alpha = ' // peer_spec_field(deck%row, 'alpha_expr') // ' with tstar = (m/(k sqrt(u)))^(2/5)'
         end if
@@ -368,8 +368,9 @@ contains
     end function achieved_text
 
     !> A relative error as a signed percentage.
-    function pct(x) result(s)
+    function pct(x, unsigned) result(s)
         real(wp), intent(in) :: x
+        logical, intent(in), optional :: unsigned   !! no + sign
         character(len=:), allocatable :: s
         character(len=24) :: b
         if (abs(x) < 5.0e-7_wp) then
@@ -378,6 +379,9 @@ contains
             write (b, '(sp,f16.2)') 100.0_wp * x
             if (abs(100.0_wp * x) < 0.005_wp) write (b, '(sp,es9.2)') 100.0_wp * x
             s = trim(adjustl(b)) // ' %'
+            if (present(unsigned)) then
+                if (unsigned .and. s(1:1) == '+') s = s(2:)
+            end if
         end if
     end function pct
 
@@ -476,7 +480,12 @@ contains
         s = peer_itoa(steps) // ' steps per contact need dt <= ' // peer_fmt(pt(ib)%tc / steps, 6) // ' s (u = ' // &
             peer_fmt(pt(ib)%u, 6) // ' m/s gives the shortest contact, t_c = ' // peer_fmt(pt(ib)%tc, 6) // &
             ' s); the elastic Hertz time there is ' // peer_fmt(pt(ib)%t_hertz, 6) // ' s, so the contact lasts ' // &
-            pct(pt(ib)%tc / pt(ib)%t_hertz - 1.0_wp) // ' longer than the elastic estimate'
+            pct(abs(pt(ib)%tc / pt(ib)%t_hertz - 1.0_wp), unsigned=.true.)
+        if (pt(ib)%tc >= pt(ib)%t_hertz) then
+            s = s // ' longer than the elastic estimate'
+        else
+            s = s // ' shorter than the elastic estimate'
+        end if
         call t%meta('time step', s)
         select case (deck%tstep)
         case (TSTEP_LIGGGHTS)

@@ -951,7 +951,7 @@ contains
             deck%m_damp = deck%m * mwall / (deck%m + mwall)
             call add_note(deck, 'against a fixed body of mass M_w = ' // peer_fmt(mwall) // ' kg the damping uses ' // &
                           'm M_w/(m + M_w) while the dynamics has m: gamma is scaled by sqrt(M_w/(m + M_w)) = ' // &
-                          peer_fmt(sqrt(deck%m_damp / deck%m)) // ' (wallMass)')
+                          peer_fmt(sqrt(deck%m_damp / deck%m), 6) // ' (wallMass)')
         end if
         if (matprops) then
             call pair_values(kv, 'SetYoungModulus', deck%wall, ymod, msg)

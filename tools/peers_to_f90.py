@@ -18,7 +18,7 @@ import sys
 
 NAME_RE = re.compile(r"^[a-z][a-z0-9_]*$")
 ID_RE = re.compile(r"^[a-z0-9][a-z0-9_.-]*$")
-CHUNK = 80   # characters of a literal per source line
+CHUNK = 80   # characters of a literal per source line (quotes doubled)
 
 
 def fail(msg):
@@ -32,9 +32,14 @@ def literal(text, indent):
         fail("non-ASCII or control character in %r" % text)
     if not text:
         return "''"
-    parts = []
-    for i in range(0, len(text), CHUNK):
-        parts.append("'" + text[i:i + CHUNK].replace("'", "''") + "'")
+    parts, cur = [], ""
+    for c in text:
+        esc = "''" if c == "'" else c
+        if len(cur) + len(esc) > CHUNK:      # never split a doubled quote
+            parts.append("'" + cur + "'")
+            cur = ""
+        cur += esc
+    parts.append("'" + cur + "'")
     return (" // &\n" + " " * indent).join(parts)
 
 

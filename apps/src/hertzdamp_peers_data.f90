@@ -197,8 +197,8 @@ module hertzdamp_peers_data
         'Ip2_FrictMat_FrictMat_MindlinPhys(en=e) + Law2_ScGeom_MindlinPhys_Mindlin (inclu' // &
         'deAdhesion=False)', &
         'Ip2_FrictMat_FrictMat_MindlinPhys(betan=b) + Law2_ScGeom_MindlinPhys_Mindlin', &
-        'DES_COLL_MODEL = ''HERTZIAN'' (particle-particle DES_EN_INPUT; particle-wall DES_E' // &
-        'N_WALL_INPUT)', &
+        'DES_COLL_MODEL = ''HERTZIAN'' (particle-particle DES_EN_INPUT; particle-wall DES' // &
+        '_EN_WALL_INPUT)', &
         'ChSystemSMC ContactForceModel::Hertz, UseMaterialProperties(true) (defaults)', &
         'ChSystemSMC ContactForceModel::Hertz, UseMaterialProperties(false)']
     character(len=114), parameter :: spec_input_params(33) = [character(len=114) :: &
@@ -239,8 +239,8 @@ module hertzdamp_peers_data
         'E_eff = effective elastic modulus (user supplies E_star), e in [0,1]', &
         'g = dimensionless dissipation (the species'' dissipation_)', &
         'E = elasticModulus, d = dissipation [kg/s]', &
-        'E = elasticModulus [Pa] passed as ''k_'', e, mass_arg = the mass argument (particl' // &
-        'e mass of two identical partners)', &
+        'E = elasticModulus [Pa] passed as ''k_'', e, mass_arg = the mass argument (parti' // &
+        'cle mass of two identical partners)', &
         'young E_i, poisson nu_i (FrictMat), en = MatchMaker (e)', &
         'betan = ''normal damping ratio'' b', &
         'E_YOUNG, V_POISSON (per phase), Ew_YOUNG, Vw_POISSON (wall), DES_EN_INPUT / DES_' // &
@@ -503,132 +503,132 @@ module hertzdamp_peers_data
         'ontactSMC.h@9.0.1:80,116-125,192-198; ChContactMaterialSMC.cpp:110-121', &
         'ChContactSMC.cpp@7689fbc0:105-111,170-177']
     character(len=589), parameter :: spec_notes(33) = [character(len=589) :: &
-        'k := kn*sqrt(R) for ''hertz kn eta''; k := (4/3)*E_star*sqrt(R) with E_star = E/(2' // &
-        '*(1-nu^2)) for ''hertz/material E eta nu'' pairs (same E,nu both sides); fix wall/' // &
-        'gran 2021 hertz/material/dmt/jkr use k := (4/3)*E/(2*(1-nu))*sqrt(R) (1-nu, not ' // &
-        '1-nu^2: bug, fix_wall_gran.cpp:160,171,183); m := meff (pair: m_i*m_j/(m_i+m_j);' // &
-        ' frozen partner: other mass; wall: particle mass); R := R_i*R_j/(R_i+R_j) (flat ' // &
-        'wall: particle radius); F_damp = -eta_n0*vn (d = eta_n0). DMT/JKR: same damping;' // &
-        ' limit_damping not allowed with them.', &
-        'k := kn*sqrt(R) for ''hertz kn eta''; k := (4/3)*E_star*sqrt(R) with E_star = E/(2' // &
-        '*(1-nu^2)) for ''hertz/material E eta nu'' pairs (same E,nu both sides); fix wall/' // &
-        'gran 2021 hertz/material/dmt/jkr use k := (4/3)*E/(2*(1-nu))*sqrt(R) (1-nu, not ' // &
-        '1-nu^2: bug, fix_wall_gran.cpp:160,171,183); m := meff (pair: m_i*m_j/(m_i+m_j);' // &
-        ' frozen partner: other mass; wall: particle mass); R := R_i*R_j/(R_i+R_j) (flat ' // &
-        'wall: particle radius); F_damp = -eta_n0*meff*vn (d = eta_n0*m).', &
-        'k := kn*sqrt(R) for ''hertz kn eta''; k := (4/3)*E_star*sqrt(R) with E_star = E/(2' // &
-        '*(1-nu^2)) for ''hertz/material E eta nu'' pairs (same E,nu both sides); fix wall/' // &
-        'gran 2021 hertz/material/dmt/jkr use k := (4/3)*E/(2*(1-nu))*sqrt(R) (1-nu, not ' // &
-        '1-nu^2: bug, fix_wall_gran.cpp:160,171,183); m := meff (pair: m_i*m_j/(m_i+m_j);' // &
-        ' frozen partner: other mass; wall: particle mass); R := R_i*R_j/(R_i+R_j) (flat ' // &
-        'wall: particle radius); F_damp = -eta_n0*meff*a*vn with a = sqrt(R*delta) (JKR: ' // &
-        'JKR contact radius) so d = eta_n0*m*sqrt(R) on zeta^(1/2)*zeta''.', &
-        'k := kn*sqrt(R) for ''hertz kn eta''; k := (4/3)*E_star*sqrt(R) with E_star = E/(2' // &
-        '*(1-nu^2)) for ''hertz/material E eta nu'' pairs (same E,nu both sides); fix wall/' // &
-        'gran 2021 hertz/material/dmt/jkr use k := (4/3)*E/(2*(1-nu))*sqrt(R) (1-nu, not ' // &
-        '1-nu^2: bug, fix_wall_gran.cpp:160,171,183); m := meff (pair: m_i*m_j/(m_i+m_j);' // &
-        ' frozen partner: other mass; wall: particle mass); R := R_i*R_j/(R_i+R_j) (flat ' // &
-        'wall: particle radius); F_damp = -eta_n0*vn (d = eta_n0). DMT/JKR: same damping;' // &
-        ' limit_damping not allowed with them.', &
-        'k := kn*sqrt(R) for ''hertz kn eta''; k := (4/3)*E_star*sqrt(R) with E_star = E/(2' // &
-        '*(1-nu^2)) for ''hertz/material E eta nu'' pairs (same E,nu both sides); fix wall/' // &
-        'gran 2021 hertz/material/dmt/jkr use k := (4/3)*E/(2*(1-nu))*sqrt(R) (1-nu, not ' // &
-        '1-nu^2: bug, fix_wall_gran.cpp:160,171,183); m := meff (pair: m_i*m_j/(m_i+m_j);' // &
-        ' frozen partner: other mass; wall: particle mass); R := R_i*R_j/(R_i+R_j) (flat ' // &
-        'wall: particle radius); F_damp = -eta_n0*meff*vn (d = eta_n0*m).', &
-        'k := kn*sqrt(R) for ''hertz kn eta''; k := (4/3)*E_star*sqrt(R) with E_star = E/(2' // &
-        '*(1-nu^2)) for ''hertz/material E eta nu'' pairs (same E,nu both sides); fix wall/' // &
-        'gran 2021 hertz/material/dmt/jkr use k := (4/3)*E/(2*(1-nu))*sqrt(R) (1-nu, not ' // &
-        '1-nu^2: bug, fix_wall_gran.cpp:160,171,183); m := meff (pair: m_i*m_j/(m_i+m_j);' // &
-        ' frozen partner: other mass; wall: particle mass); R := R_i*R_j/(R_i+R_j) (flat ' // &
-        'wall: particle radius); F_damp = -eta_n0*meff*a*vn with a = sqrt(R*delta) (JKR: ' // &
-        'JKR contact radius) so d = eta_n0*m*sqrt(R) on zeta^(1/2)*zeta''.', &
-        'k := kn*sqrt(R) (''hertz''); k := (4/3)*E/(2*(1-nu^2))*sqrt(R) (''hertz/material'', ' // &
-        'pair with one material, and fix wall/gran via mix_stiffnessE_wall); m := meff (w' // &
-        'all: particle mass); R := R_i*R_j/(R_i+R_j) (flat wall: particle radius); F_damp' // &
-        ' = -eta_n0*vn (d = eta_n0). DMT/JKR: same damping; limit_damping not allowed wit' // &
-        'h them.', &
-        'k := kn*sqrt(R) (''hertz''); k := (4/3)*E/(2*(1-nu^2))*sqrt(R) (''hertz/material'', ' // &
-        'pair with one material, and fix wall/gran via mix_stiffnessE_wall); m := meff (w' // &
-        'all: particle mass); R := R_i*R_j/(R_i+R_j) (flat wall: particle radius); F_damp' // &
-        ' = -eta_n0*meff*vn (d = eta_n0*m).', &
-        'k := kn*sqrt(R) (''hertz''); k := (4/3)*E/(2*(1-nu^2))*sqrt(R) (''hertz/material'', ' // &
-        'pair with one material, and fix wall/gran via mix_stiffnessE_wall); m := meff (w' // &
-        'all: particle mass); R := R_i*R_j/(R_i+R_j) (flat wall: particle radius); F_damp' // &
-        ' = -eta_n0*meff*a*vn with a = sqrt(R*delta) (JKR: JKR contact radius) so d = eta' // &
-        '_n0*m*sqrt(R) on zeta^(1/2)*zeta''.', &
-        'k := kn*sqrt(R) (''hertz''); k := (4/3)*E/(2*(1-nu^2))*sqrt(R) (''hertz/material'', ' // &
-        'pair with one material, and fix wall/gran via mix_stiffnessE_wall); m := meff (w' // &
-        'all: particle mass); R := R_i*R_j/(R_i+R_j) (flat wall: particle radius); F_damp' // &
-        ' = -eta_n0*vn (d = eta_n0). DMT/JKR: same damping; limit_damping not allowed wit' // &
-        'h them.', &
-        'k := kn*sqrt(R) (''hertz''); k := (4/3)*E/(2*(1-nu^2))*sqrt(R) (''hertz/material'', ' // &
-        'pair with one material, and fix wall/gran via mix_stiffnessE_wall); m := meff (w' // &
-        'all: particle mass); R := R_i*R_j/(R_i+R_j) (flat wall: particle radius); F_damp' // &
-        ' = -eta_n0*meff*vn (d = eta_n0*m).', &
-        'k := kn*sqrt(R) (''hertz''); k := (4/3)*E/(2*(1-nu^2))*sqrt(R) (''hertz/material'', ' // &
-        'pair with one material, and fix wall/gran via mix_stiffnessE_wall); m := meff (w' // &
-        'all: particle mass); R := R_i*R_j/(R_i+R_j) (flat wall: particle radius); F_damp' // &
-        ' = -eta_n0*meff*a*vn with a = sqrt(R*delta) (JKR: JKR contact radius) so d = eta' // &
-        '_n0*m*sqrt(R) on zeta^(1/2)*zeta''.', &
-        'k := kn*sqrt(R) for ''hertz kn eta''; k := (4/3)*E_star*sqrt(R) with E_star = E/(2' // &
-        '*(1-nu^2)) for ''hertz/material E eta nu'' pairs (same E,nu both sides); fix wall/' // &
-        'gran 2021 hertz/material/dmt/jkr use k := (4/3)*E/(2*(1-nu))*sqrt(R) (1-nu, not ' // &
-        '1-nu^2: bug, fix_wall_gran.cpp:160,171,183); m := meff (pair: m_i*m_j/(m_i+m_j);' // &
-        ' frozen partner: other mass; wall: particle mass); R := R_i*R_j/(R_i+R_j) (flat ' // &
-        'wall: particle radius); eta_n = P6(e)*sqrt(meff*kn*a), a = sqrt(R*delta) -> gamm' // &
-        'a = P6(e). No sqrt(2). DMT/JKR allowed in 2021: knfac = kn*a excludes cohesion (' // &
-        'JKR: a = JKR contact radius).', &
-        'k := kn*sqrt(R) for ''hertz kn eta''; k := (4/3)*E_star*sqrt(R) with E_star = E/(2' // &
-        '*(1-nu^2)) for ''hertz/material E eta nu'' pairs (same E,nu both sides); fix wall/' // &
-        'gran 2021 hertz/material/dmt/jkr use k := (4/3)*E/(2*(1-nu))*sqrt(R) (1-nu, not ' // &
-        '1-nu^2: bug, fix_wall_gran.cpp:160,171,183); m := meff (pair: m_i*m_j/(m_i+m_j);' // &
-        ' frozen partner: other mass; wall: particle mass); R := R_i*R_j/(R_i+R_j) (flat ' // &
-        'wall: particle radius); eta_n = P6(e)*sqrt(meff*kn*a), a = sqrt(R*delta) -> gamm' // &
-        'a = P6(e). No sqrt(2). DMT/JKR allowed in 2021: knfac = kn*a excludes cohesion (' // &
-        'JKR: a = JKR contact radius).', &
-        'k := kn*sqrt(R) (''hertz''); k := (4/3)*E/(2*(1-nu^2))*sqrt(R) (''hertz/material'', ' // &
-        'pair with one material, and fix wall/gran via mix_stiffnessE_wall); m := meff (w' // &
-        'all: particle mass); R := R_i*R_j/(R_i+R_j) (flat wall: particle radius); Fnorma' // &
-        'l/delta = k*delta^(1/2) for hertz, so gamma = P6(e). Cohesive normal models (dmt' // &
-        ', jkr) rejected (granular_model.cpp:264).', &
-        'k := kn*sqrt(R) (''hertz''); k := (4/3)*E/(2*(1-nu^2))*sqrt(R) (''hertz/material'', ' // &
-        'pair with one material, and fix wall/gran via mix_stiffnessE_wall); m := meff (w' // &
-        'all: particle mass); R := R_i*R_j/(R_i+R_j) (flat wall: particle radius); Fnorma' // &
-        'l/delta = k*delta^(1/2) for hertz, so gamma = P6(e). Cohesive normal models (dmt' // &
-        ', jkr) rejected (granular_model.cpp:264).', &
-        'k := kn*sqrt(R) (''hertz''); k := (4/3)*E/(2*(1-nu^2))*sqrt(R) (''hertz/material'', ' // &
-        'pair with one material, and fix wall/gran via mix_stiffnessE_wall); m := meff (w' // &
-        'all: particle mass); R := R_i*R_j/(R_i+R_j) (flat wall: particle radius); sqrt(2' // &
-        ')*P6(e) agrees with sqrt(5)*beta(e) within 0.7% for 0.05<=e<=0.9 (-3% at e=0.97,' // &
-        ' -5.7% at e=0.01); P6(1) = 3e-4, not 0.', &
-        'k := kn*sqrt(R) (''hertz''); k := (4/3)*E/(2*(1-nu^2))*sqrt(R) (''hertz/material'', ' // &
-        'pair with one material, and fix wall/gran via mix_stiffnessE_wall); m := meff (w' // &
-        'all: particle mass); R := R_i*R_j/(R_i+R_j) (flat wall: particle radius); sqrt(2' // &
-        ')*P6(e) agrees with sqrt(5)*beta(e) within 0.7% for 0.05<=e<=0.9 (-3% at e=0.97,' // &
-        ' -5.7% at e=0.01); P6(1) = 3e-4, not 0.', &
-        'k := kn*sqrt(R) (''hertz''); k := (4/3)*E/(2*(1-nu^2))*sqrt(R) (''hertz/material'', ' // &
-        'pair with one material, and fix wall/gran via mix_stiffnessE_wall); m := meff (w' // &
-        'all: particle mass); R := R_i*R_j/(R_i+R_j) (flat wall: particle radius); sqrt(3' // &
-        '/2)*2*sqrt(5/6) = sqrt(5). Normal hooke uses 2*beta(e) instead (linear). e = 0 g' // &
-        'ives ln(0): not guarded. Cohesive normal models rejected since 1a310f57 (2024-06' // &
-        '-11, issue #4180).', &
-        'k := kn*sqrt(R) (''hertz''); k := (4/3)*E/(2*(1-nu^2))*sqrt(R) (''hertz/material'', ' // &
-        'pair with one material, and fix wall/gran via mix_stiffnessE_wall); m := meff (w' // &
-        'all: particle mass); R := R_i*R_j/(R_i+R_j) (flat wall: particle radius); sqrt(3' // &
-        '/2)*2*sqrt(5/6) = sqrt(5). Normal hooke uses 2*beta(e) instead (linear). e = 0 g' // &
-        'ives ln(0): not guarded. Cohesive normal models rejected since 1a310f57 (2024-06' // &
-        '-11, issue #4180).', &
+        'k := kn*sqrt(R) for ''hertz kn eta''; k := (4/3)*E_star*sqrt(R) with E_star = E/' // &
+        '(2*(1-nu^2)) for ''hertz/material E eta nu'' pairs (same E,nu both sides); fix w' // &
+        'all/gran 2021 hertz/material/dmt/jkr use k := (4/3)*E/(2*(1-nu))*sqrt(R) (1-nu, ' // &
+        'not 1-nu^2: bug, fix_wall_gran.cpp:160,171,183); m := meff (pair: m_i*m_j/(m_i+m' // &
+        '_j); frozen partner: other mass; wall: particle mass); R := R_i*R_j/(R_i+R_j) (f' // &
+        'lat wall: particle radius); F_damp = -eta_n0*vn (d = eta_n0). DMT/JKR: same damp' // &
+        'ing; limit_damping not allowed with them.', &
+        'k := kn*sqrt(R) for ''hertz kn eta''; k := (4/3)*E_star*sqrt(R) with E_star = E/' // &
+        '(2*(1-nu^2)) for ''hertz/material E eta nu'' pairs (same E,nu both sides); fix w' // &
+        'all/gran 2021 hertz/material/dmt/jkr use k := (4/3)*E/(2*(1-nu))*sqrt(R) (1-nu, ' // &
+        'not 1-nu^2: bug, fix_wall_gran.cpp:160,171,183); m := meff (pair: m_i*m_j/(m_i+m' // &
+        '_j); frozen partner: other mass; wall: particle mass); R := R_i*R_j/(R_i+R_j) (f' // &
+        'lat wall: particle radius); F_damp = -eta_n0*meff*vn (d = eta_n0*m).', &
+        'k := kn*sqrt(R) for ''hertz kn eta''; k := (4/3)*E_star*sqrt(R) with E_star = E/' // &
+        '(2*(1-nu^2)) for ''hertz/material E eta nu'' pairs (same E,nu both sides); fix w' // &
+        'all/gran 2021 hertz/material/dmt/jkr use k := (4/3)*E/(2*(1-nu))*sqrt(R) (1-nu, ' // &
+        'not 1-nu^2: bug, fix_wall_gran.cpp:160,171,183); m := meff (pair: m_i*m_j/(m_i+m' // &
+        '_j); frozen partner: other mass; wall: particle mass); R := R_i*R_j/(R_i+R_j) (f' // &
+        'lat wall: particle radius); F_damp = -eta_n0*meff*a*vn with a = sqrt(R*delta) (J' // &
+        'KR: JKR contact radius) so d = eta_n0*m*sqrt(R) on zeta^(1/2)*zeta''.', &
+        'k := kn*sqrt(R) for ''hertz kn eta''; k := (4/3)*E_star*sqrt(R) with E_star = E/' // &
+        '(2*(1-nu^2)) for ''hertz/material E eta nu'' pairs (same E,nu both sides); fix w' // &
+        'all/gran 2021 hertz/material/dmt/jkr use k := (4/3)*E/(2*(1-nu))*sqrt(R) (1-nu, ' // &
+        'not 1-nu^2: bug, fix_wall_gran.cpp:160,171,183); m := meff (pair: m_i*m_j/(m_i+m' // &
+        '_j); frozen partner: other mass; wall: particle mass); R := R_i*R_j/(R_i+R_j) (f' // &
+        'lat wall: particle radius); F_damp = -eta_n0*vn (d = eta_n0). DMT/JKR: same damp' // &
+        'ing; limit_damping not allowed with them.', &
+        'k := kn*sqrt(R) for ''hertz kn eta''; k := (4/3)*E_star*sqrt(R) with E_star = E/' // &
+        '(2*(1-nu^2)) for ''hertz/material E eta nu'' pairs (same E,nu both sides); fix w' // &
+        'all/gran 2021 hertz/material/dmt/jkr use k := (4/3)*E/(2*(1-nu))*sqrt(R) (1-nu, ' // &
+        'not 1-nu^2: bug, fix_wall_gran.cpp:160,171,183); m := meff (pair: m_i*m_j/(m_i+m' // &
+        '_j); frozen partner: other mass; wall: particle mass); R := R_i*R_j/(R_i+R_j) (f' // &
+        'lat wall: particle radius); F_damp = -eta_n0*meff*vn (d = eta_n0*m).', &
+        'k := kn*sqrt(R) for ''hertz kn eta''; k := (4/3)*E_star*sqrt(R) with E_star = E/' // &
+        '(2*(1-nu^2)) for ''hertz/material E eta nu'' pairs (same E,nu both sides); fix w' // &
+        'all/gran 2021 hertz/material/dmt/jkr use k := (4/3)*E/(2*(1-nu))*sqrt(R) (1-nu, ' // &
+        'not 1-nu^2: bug, fix_wall_gran.cpp:160,171,183); m := meff (pair: m_i*m_j/(m_i+m' // &
+        '_j); frozen partner: other mass; wall: particle mass); R := R_i*R_j/(R_i+R_j) (f' // &
+        'lat wall: particle radius); F_damp = -eta_n0*meff*a*vn with a = sqrt(R*delta) (J' // &
+        'KR: JKR contact radius) so d = eta_n0*m*sqrt(R) on zeta^(1/2)*zeta''.', &
+        'k := kn*sqrt(R) (''hertz''); k := (4/3)*E/(2*(1-nu^2))*sqrt(R) (''hertz/material' // &
+        ''', pair with one material, and fix wall/gran via mix_stiffnessE_wall); m := mef' // &
+        'f (wall: particle mass); R := R_i*R_j/(R_i+R_j) (flat wall: particle radius); F_' // &
+        'damp = -eta_n0*vn (d = eta_n0). DMT/JKR: same damping; limit_damping not allowed' // &
+        ' with them.', &
+        'k := kn*sqrt(R) (''hertz''); k := (4/3)*E/(2*(1-nu^2))*sqrt(R) (''hertz/material' // &
+        ''', pair with one material, and fix wall/gran via mix_stiffnessE_wall); m := mef' // &
+        'f (wall: particle mass); R := R_i*R_j/(R_i+R_j) (flat wall: particle radius); F_' // &
+        'damp = -eta_n0*meff*vn (d = eta_n0*m).', &
+        'k := kn*sqrt(R) (''hertz''); k := (4/3)*E/(2*(1-nu^2))*sqrt(R) (''hertz/material' // &
+        ''', pair with one material, and fix wall/gran via mix_stiffnessE_wall); m := mef' // &
+        'f (wall: particle mass); R := R_i*R_j/(R_i+R_j) (flat wall: particle radius); F_' // &
+        'damp = -eta_n0*meff*a*vn with a = sqrt(R*delta) (JKR: JKR contact radius) so d =' // &
+        ' eta_n0*m*sqrt(R) on zeta^(1/2)*zeta''.', &
+        'k := kn*sqrt(R) (''hertz''); k := (4/3)*E/(2*(1-nu^2))*sqrt(R) (''hertz/material' // &
+        ''', pair with one material, and fix wall/gran via mix_stiffnessE_wall); m := mef' // &
+        'f (wall: particle mass); R := R_i*R_j/(R_i+R_j) (flat wall: particle radius); F_' // &
+        'damp = -eta_n0*vn (d = eta_n0). DMT/JKR: same damping; limit_damping not allowed' // &
+        ' with them.', &
+        'k := kn*sqrt(R) (''hertz''); k := (4/3)*E/(2*(1-nu^2))*sqrt(R) (''hertz/material' // &
+        ''', pair with one material, and fix wall/gran via mix_stiffnessE_wall); m := mef' // &
+        'f (wall: particle mass); R := R_i*R_j/(R_i+R_j) (flat wall: particle radius); F_' // &
+        'damp = -eta_n0*meff*vn (d = eta_n0*m).', &
+        'k := kn*sqrt(R) (''hertz''); k := (4/3)*E/(2*(1-nu^2))*sqrt(R) (''hertz/material' // &
+        ''', pair with one material, and fix wall/gran via mix_stiffnessE_wall); m := mef' // &
+        'f (wall: particle mass); R := R_i*R_j/(R_i+R_j) (flat wall: particle radius); F_' // &
+        'damp = -eta_n0*meff*a*vn with a = sqrt(R*delta) (JKR: JKR contact radius) so d =' // &
+        ' eta_n0*m*sqrt(R) on zeta^(1/2)*zeta''.', &
+        'k := kn*sqrt(R) for ''hertz kn eta''; k := (4/3)*E_star*sqrt(R) with E_star = E/' // &
+        '(2*(1-nu^2)) for ''hertz/material E eta nu'' pairs (same E,nu both sides); fix w' // &
+        'all/gran 2021 hertz/material/dmt/jkr use k := (4/3)*E/(2*(1-nu))*sqrt(R) (1-nu, ' // &
+        'not 1-nu^2: bug, fix_wall_gran.cpp:160,171,183); m := meff (pair: m_i*m_j/(m_i+m' // &
+        '_j); frozen partner: other mass; wall: particle mass); R := R_i*R_j/(R_i+R_j) (f' // &
+        'lat wall: particle radius); eta_n = P6(e)*sqrt(meff*kn*a), a = sqrt(R*delta) -> ' // &
+        'gamma = P6(e). No sqrt(2). DMT/JKR allowed in 2021: knfac = kn*a excludes cohesi' // &
+        'on (JKR: a = JKR contact radius).', &
+        'k := kn*sqrt(R) for ''hertz kn eta''; k := (4/3)*E_star*sqrt(R) with E_star = E/' // &
+        '(2*(1-nu^2)) for ''hertz/material E eta nu'' pairs (same E,nu both sides); fix w' // &
+        'all/gran 2021 hertz/material/dmt/jkr use k := (4/3)*E/(2*(1-nu))*sqrt(R) (1-nu, ' // &
+        'not 1-nu^2: bug, fix_wall_gran.cpp:160,171,183); m := meff (pair: m_i*m_j/(m_i+m' // &
+        '_j); frozen partner: other mass; wall: particle mass); R := R_i*R_j/(R_i+R_j) (f' // &
+        'lat wall: particle radius); eta_n = P6(e)*sqrt(meff*kn*a), a = sqrt(R*delta) -> ' // &
+        'gamma = P6(e). No sqrt(2). DMT/JKR allowed in 2021: knfac = kn*a excludes cohesi' // &
+        'on (JKR: a = JKR contact radius).', &
+        'k := kn*sqrt(R) (''hertz''); k := (4/3)*E/(2*(1-nu^2))*sqrt(R) (''hertz/material' // &
+        ''', pair with one material, and fix wall/gran via mix_stiffnessE_wall); m := mef' // &
+        'f (wall: particle mass); R := R_i*R_j/(R_i+R_j) (flat wall: particle radius); Fn' // &
+        'ormal/delta = k*delta^(1/2) for hertz, so gamma = P6(e). Cohesive normal models ' // &
+        '(dmt, jkr) rejected (granular_model.cpp:264).', &
+        'k := kn*sqrt(R) (''hertz''); k := (4/3)*E/(2*(1-nu^2))*sqrt(R) (''hertz/material' // &
+        ''', pair with one material, and fix wall/gran via mix_stiffnessE_wall); m := mef' // &
+        'f (wall: particle mass); R := R_i*R_j/(R_i+R_j) (flat wall: particle radius); Fn' // &
+        'ormal/delta = k*delta^(1/2) for hertz, so gamma = P6(e). Cohesive normal models ' // &
+        '(dmt, jkr) rejected (granular_model.cpp:264).', &
+        'k := kn*sqrt(R) (''hertz''); k := (4/3)*E/(2*(1-nu^2))*sqrt(R) (''hertz/material' // &
+        ''', pair with one material, and fix wall/gran via mix_stiffnessE_wall); m := mef' // &
+        'f (wall: particle mass); R := R_i*R_j/(R_i+R_j) (flat wall: particle radius); sq' // &
+        'rt(2)*P6(e) agrees with sqrt(5)*beta(e) within 0.7% for 0.05<=e<=0.9 (-3% at e=0' // &
+        '.97, -5.7% at e=0.01); P6(1) = 3e-4, not 0.', &
+        'k := kn*sqrt(R) (''hertz''); k := (4/3)*E/(2*(1-nu^2))*sqrt(R) (''hertz/material' // &
+        ''', pair with one material, and fix wall/gran via mix_stiffnessE_wall); m := mef' // &
+        'f (wall: particle mass); R := R_i*R_j/(R_i+R_j) (flat wall: particle radius); sq' // &
+        'rt(2)*P6(e) agrees with sqrt(5)*beta(e) within 0.7% for 0.05<=e<=0.9 (-3% at e=0' // &
+        '.97, -5.7% at e=0.01); P6(1) = 3e-4, not 0.', &
+        'k := kn*sqrt(R) (''hertz''); k := (4/3)*E/(2*(1-nu^2))*sqrt(R) (''hertz/material' // &
+        ''', pair with one material, and fix wall/gran via mix_stiffnessE_wall); m := mef' // &
+        'f (wall: particle mass); R := R_i*R_j/(R_i+R_j) (flat wall: particle radius); sq' // &
+        'rt(3/2)*2*sqrt(5/6) = sqrt(5). Normal hooke uses 2*beta(e) instead (linear). e =' // &
+        ' 0 gives ln(0): not guarded. Cohesive normal models rejected since 1a310f57 (202' // &
+        '4-06-11, issue #4180).', &
+        'k := kn*sqrt(R) (''hertz''); k := (4/3)*E/(2*(1-nu^2))*sqrt(R) (''hertz/material' // &
+        ''', pair with one material, and fix wall/gran via mix_stiffnessE_wall); m := mef' // &
+        'f (wall: particle mass); R := R_i*R_j/(R_i+R_j) (flat wall: particle radius); sq' // &
+        'rt(3/2)*2*sqrt(5/6) = sqrt(5). Normal hooke uses 2*beta(e) instead (linear). e =' // &
+        ' 0 gives ln(0): not guarded. Cohesive normal models rejected since 1a310f57 (202' // &
+        '4-06-11, issue #4180).', &
         'k := (4/3)*Y_star*sqrt(R), Y_star = 1/((1-nu_i^2)/Y_i + (1-nu_j^2)/Y_j) (wall: m' // &
-        'esh type''s Y,nu); m := meff (wall: particle mass); R := reff (wall: particle rad' // &
-        'ius). gamman = -2*sqrt(5/6)*betaeff*sqrt(Sn*meff), Sn = 2*Y_star*sqrt(R*delta) =' // &
-        ' (3/2)*k*delta^(1/2) -> gamma = sqrt(5)*beta(e). kn is divided by force->nktv2p ' // &
-        '(1 in SI).', &
+        'esh type''s Y,nu); m := meff (wall: particle mass); R := reff (wall: particle ra' // &
+        'dius). gamman = -2*sqrt(5/6)*betaeff*sqrt(Sn*meff), Sn = 2*Y_star*sqrt(R*delta) ' // &
+        '= (3/2)*k*delta^(1/2) -> gamma = sqrt(5)*beta(e). kn is divided by force->nktv2p' // &
+        ' (1 in SI).', &
         'k := (4/3)*Y_star*sqrt(R), Y_star = 1/((1-nu_i^2)/Y_i + (1-nu_j^2)/Y_j) (wall: m' // &
-        'esh type''s Y,nu); m := meff (wall: particle mass); R := reff (wall: particle rad' // &
-        'ius). gamman = -2*sqrt(5/6)*betaeff*sqrt(Sn*meff), Sn = 2*Y_star*sqrt(R*delta) =' // &
-        ' (3/2)*k*delta^(1/2) -> gamma = sqrt(5)*beta(e). kn is divided by force->nktv2p ' // &
-        '(1 in SI).', &
+        'esh type''s Y,nu); m := meff (wall: particle mass); R := reff (wall: particle ra' // &
+        'dius). gamman = -2*sqrt(5/6)*betaeff*sqrt(Sn*meff), Sn = 2*Y_star*sqrt(R*delta) ' // &
+        '= (3/2)*k*delta^(1/2) -> gamma = sqrt(5)*beta(e). kn is divided by force->nktv2p' // &
+        ' (1 in SI).', &
         'k := k_n*sqrt(R); F_damp = -sqrt(R*delta)*meff*gamma_n*vn, d = gamma_n*m*sqrt(R)' // &
         ' on zeta^(1/2)*zeta''.', &
         'k := k_n*sqrt(R); F_damp = -sqrt(R*delta)*meff*gamma_n*vn, d = gamma_n*m*sqrt(R)' // &
@@ -638,17 +638,18 @@ module hertzdamp_peers_data
         ' mean of E_eff and of dissipation (BaseSpecies::average).', &
         'k := (4/3)*E_eff*sqrt(R); same force law as the row above, dissipation_ taken as' // &
         ' given.', &
-        'k := (4/3)*sqrt(2)*E*sqrt(R) (stiffness uses sqrt(2*R_eff*delta): ''effectiveDiam' // &
-        'eter''); F = k*delta^(3/2) - d*vn; same law in gladk/MercuryDPM HEAD c50970ec (No' // &
-        'rmalForceSpecies/HertzianViscoelasticNormalSpecies, interaction lines 105-107).', &
+        'k := (4/3)*sqrt(2)*E*sqrt(R) (stiffness uses sqrt(2*R_eff*delta): ''effectiveDia' // &
+        'meter''); F = k*delta^(3/2) - d*vn; same law in gladk/MercuryDPM HEAD c50970ec (' // &
+        'NormalForceSpecies/HertzianViscoelasticNormalSpecies, interaction lines 105-107)' // &
+        '.', &
         'k := (4/3)*sqrt(2)*E*sqrt(R). Linear-spring formula d = 2*beta*sqrt(m_eff*k_lin)' // &
         ' with the modulus E in place of a spring constant: units of d are kg s^-1 m^-1/2' // &
         ', not kg/s; SI value is dimensionally meaningless. The functions are commented o' // &
         'ut in later versions (gladk HEAD c50970ec).', &
-        'k := Kno = (4/3)*E_star*sqrt(R); m := mbar (non-dynamic partner: dynamic body''s ' // &
-        'mass); R := R1*R2/(R1+R2) with Wall refR1 = sphere radius (R = r/2!) unless Ig2 ' // &
-        'hertzian=True, Facet refR1 = 2r (R = 2r/3). 2*sqrt(5/6)*sqrt(3/2) = sqrt(5). e =' // &
-        ' 0 gives NaN (ln 0, unguarded). Clip is unconditional without adhesion.', &
+        'k := Kno = (4/3)*E_star*sqrt(R); m := mbar (non-dynamic partner: dynamic body''s' // &
+        ' mass); R := R1*R2/(R1+R2) with Wall refR1 = sphere radius (R = r/2!) unless Ig2' // &
+        ' hertzian=True, Facet refR1 = 2r (R = 2r/3). 2*sqrt(5/6)*sqrt(3/2) = sqrt(5). e ' // &
+        '= 0 gives NaN (ln 0, unguarded). Clip is unconditional without adhesion.', &
         'k := Kno as above. cn = 2*betan*sqrt(m*(3/2)*k)*delta^(1/4): the tangent stiffne' // &
         'ss makes this Tsuji-type, gamma = sqrt(6)*betan (not a linear critical-damping f' // &
         'raction).', &
@@ -662,8 +663,8 @@ module hertzdamp_peers_data
         'm. R := eff_radius: only the MULTICORE collision system computes it; BULLET uses' // &
         ' ChCollisionInfo default 0.1 (ChCollisionSystemBullet.cpp:227-228).', &
         'k := kn*R (tmp = eff_radius*sqrt(delta): R, not sqrt(R)); F_damp = R*sqrt(delta)' // &
-        '*m*gn*vn, d = gn*m*R on zeta^(1/2)*zeta''. Units of kn, gn are odd (N m^-5/2, s^-' // &
-        '1 m^-3/2); engine''s choice, not a transcription error here.']
+        '*m*gn*vn, d = gn*m*R on zeta^(1/2)*zeta''. Units of kn, gn are odd (N m^-5/2, s^' // &
+        '-1 m^-3/2); engine''s choice, not a transcription error here.']
 
     public :: peer_spec_field, peer_spec_row
 

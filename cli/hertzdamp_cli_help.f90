@@ -91,6 +91,8 @@ module hertzdamp_cli_help
         '  constants  alpha_c, tau_c(0), z_max(0), e1 as computed by the library' // nl // &
         '  bench      work-precision report of every method (forward, inverse, throughput)' // nl // &
         '  scene      run a DEM scene file (namelist), the inverse rule at every contact' // nl // &
+        '  check      what a peer engine''s deck (LAMMPS, LIGGGHTS, MercuryDPM, Yade, MFiX, Chrono)' // nl // &
+        '             really does: achieved e, contact time, time step, corrected parameters' // nl // &
         '' // nl // &
         'Definitions (SI units; body 1 and body 2 touch):' // nl // &
         '  effective mass m*     m1 m2 / (m1 + m2); against a wall, or a particle held' // nl // &
@@ -287,6 +289,61 @@ module hertzdamp_cli_help
         'A check that fails: the report on stdout, one line naming the failed checks on' // nl // &
         'stderr, exit 5.'
 
+    character(len=*), parameter :: check = &
+        'Usage: hertzdamp check ENGINE DECK... --radius R --density RHO --velocity U [options]' // nl // &
+        '       hertzdamp check --table [--format F]' // nl // &
+        '' // nl // &
+        'What a peer DEM engine does with its Hertz contact parameters: the damping law and' // nl // &
+        'formula it applies (with its source file), the restitution e and contact time t_c it' // nl // &
+        'achieves at each impact speed, the error against the e you want, the time step for' // nl // &
+        'N steps per contact against the elastic Hertz time and the engine''s own estimate,' // nl // &
+        'warnings (no rebound, attractive force before separation) and the value of the' // nl // &
+        'engine''s parameter that gives the e you want.  Formulas: doc/peers.md.' // nl // &
+        '' // nl // &
+        'ENGINE and DECK, in the engine''s own terms (one quoted argument or several words):' // nl // &
+        '  lammps      the arguments of pair_coeff for pair_style granular, e.g.' // nl // &
+        '              "hertz/material 1e8 0.5 0.3 tangential linear_nohistory 0 0 damping tsuji"' // nl // &
+        '              (normal hertz kn eta_n0 | hertz/material E eta_n0 nu; damping velocity |' // nl // &
+        '              mass_velocity | viscoelastic (default) | tsuji | coeff_restitution;' // nl // &
+        '              limit_damping); a leading "pair_coeff I J" is skipped, and' // nl // &
+        '              "fix ID group wall/gran granular ... zplane lo hi" checks a flat wall' // nl // &
+        '  liggghts    model=hertz|hertz/stiffness limitForce=on|off youngsModulus=Y[,Y2]' // nl // &
+        '              poissonsRatio=NU[,NU2] coefficientRestitution=E (hertz) kn= gamman=' // nl // &
+        '              (hertz/stiffness)' // nl // &
+        '  mercurydpm  setEffectiveElasticModulusAndRestitutionCoefficient=E,e | setDissipation=g' // nl // &
+        '              | setEffectiveElasticModulus=E | setDensity=RHO; species=' // nl // &
+        '              HertzianViscoelasticSpecies (Beta 2015): setElasticModulus=E' // nl // &
+        '              setDissipation=d | setStiffnessAndRestitutionCoefficient=E,e,mass' // nl // &
+        '  yade        young=E[,E2] poisson=NU[,NU2] en=e | betan=b density=RHO' // nl // &
+        '              (with --wall: shape=Wall|Facet hertzian=True|False)' // nl // &
+        '  mfix        DES_COLL_MODEL=HERTZIAN E_YOUNG=E[,E2] V_POISSON=NU[,NU2] DES_EN_INPUT=e' // nl // &
+        '              (with --wall: EW_YOUNG VW_POISSON DES_EN_WALL_INPUT) D_P0= RO_S0=' // nl // &
+        '              DTSOLID_FACTOR= (keys case-insensitive, KEY(1)= KEY(2)= accepted)' // nl // &
+        '  chrono      SetYoungModulus=E[,E2] SetPoissonRatio=NU[,NU2] SetRestitution=e[,e2]' // nl // &
+        '              | UseMaterialProperties=false SetKn=kn SetGn=gn;' // nl // &
+        '              SetCollisionSystemType=BULLET|MULTICORE; wallMass=M (with --wall)' // nl // &
+        '' // nl // &
+        '  --radius R       particle radius [m] (body 1)' // nl // &
+        '  --radius2 R2     radius of body 2 [m] (default: R)' // nl // &
+        '  --density RHO    particle density [kg m^-3] (body 1)' // nl // &
+        '  --density2 RHO2  density of body 2 (default: RHO)' // nl // &
+        '  --wall           body 2 is a flat wall (LIGGGHTS, Yade, MFiX, Chrono: its' // nl // &
+        '                   modulus is the second value of the modulus keys)' // nl // &
+        '  --velocity U     impact speeds [m/s]: 0.1,1,5 or A0:A1:N or A0:A1:logN' // nl // &
+        '  --e E            the restitution coefficient you want (default: the one in the' // nl // &
+        '                   deck, where the engine takes one)' // nl // &
+        '  --steps N        time steps per contact for the time-step advice (default 10)' // nl // &
+        '  --release R      LAMMPS formulas of 2021 (29 Sep 2021, Debian 12), 2023' // nl // &
+        '                   (28 Mar 2023 - 29 Aug 2024) or current (default)' // nl // &
+        '  --format F       text (default), csv or json' // nl // &
+        '  --table          the table of every engine''s formula and the e it achieves for' // nl // &
+        '                   the targets 0.1 ... 0.9 (markdown; doc/peers.md)' // nl // &
+        '' // nl // &
+        'Columns: velocity, alpha, e, e_error (e/e_target - 1), t_c [s], t_attractive (overlap' // nl // &
+        'end: when the total force turns attractive) [s], dt_max = t_c/N [s], t_hertz (elastic' // nl // &
+        'Hertz time) [s], t_peer (the engine''s own estimate) [s], corrected (the engine''s' // nl // &
+        'parameter for the target e at this speed), status.  nan: does not apply.'
+
 contains
 
     !> Print the help of a command ('' for the program) on stdout and exit 0.
@@ -300,6 +357,7 @@ contains
         case ('timestep'); call write_stdout(timestep // nl)
         case ('bench'); call write_stdout(bench // nl)
         case ('scene'); call write_stdout(scene // nl)
+        case ('check'); call write_stdout(check // nl)
         case ('version'); call write_stdout('hertzdamp ' // hertzdamp_version // nl)
         case default; call write_stdout(top // nl)
         end select

@@ -7,6 +7,7 @@ program main
     use hertzdamp_cmd_invert, only: cmd_invert, cmd_timestep
     use hertzdamp_cmd_scene, only: cmd_scene
     use hertzdamp_cmd_bench, only: cmd_bench
+    use hertzdamp_cmd_check, only: cmd_check
     implicit none
     character(len=:), allocatable :: command
     integer :: l
@@ -25,6 +26,7 @@ program main
     case ('timestep'); call cmd_timestep()
     case ('bench'); call cmd_bench()
     case ('scene'); call cmd_scene()
+    case ('check'); call cmd_check()
     case default
         call fail(EXIT_USAGE, 'unknown command "' // command // '" (see hertzdamp --help)')
     end select

@@ -91,8 +91,7 @@ module hertzdamp_cli_help
         '  constants  alpha_c, tau_c(0), z_max(0), e1 as computed by the library' // nl // &
         '  bench      work-precision report of every method (forward, inverse, throughput)' // nl // &
         '  scene      run a DEM scene file (namelist), the inverse rule at every contact' // nl // &
-        '  check      what a peer engine''s deck (LAMMPS, LIGGGHTS, MercuryDPM, Yade, MFiX, Chrono)' // nl // &
-        '             really does: achieved e, contact time, time step, corrected parameters' // nl // &
+        '  check      what a peer engine''s deck really does: e, contact time, time step, a fix' // nl // &
         '' // nl // &
         'Definitions (SI units; body 1 and body 2 touch):' // nl // &
         '  effective mass m*     m1 m2 / (m1 + m2); against a wall, or a particle held' // nl // &
@@ -342,7 +341,7 @@ module hertzdamp_cli_help
         'Columns: velocity, alpha, e, e_error (e/e_target - 1), t_c [s], t_attractive (overlap' // nl // &
         'end: when the total force turns attractive) [s], dt_max = t_c/N [s], t_hertz (elastic' // nl // &
         'Hertz time) [s], t_peer (the engine''s own estimate) [s], corrected (the engine''s' // nl // &
-        'parameter for the target e at this speed), status.  nan: does not apply.'
+        'parameter for the target e at this speed), status.  Empty (text: -): does not apply.'
 
 contains
 

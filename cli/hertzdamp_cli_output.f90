@@ -98,12 +98,19 @@ contains
         self%col = self%col + 1
     end subroutine next_cell
 
+    !> A number.  NaN ("does not apply") is written as an absent cell, so no output
+    !> ever carries nan; an infinity stays (a no-rebound contact time is infinite:
+    !> `inf` in text and CSV, null in JSON).
     subroutine num(self, x)
         class(out_table), intent(inout) :: self
         real(wp), intent(in) :: x
         call next_cell(self)
-        self%cells(self%col, self%nrow)%kind = CELL_NUM
-        self%cells(self%col, self%nrow)%x = x
+        if (x == x) then
+            self%cells(self%col, self%nrow)%kind = CELL_NUM
+            self%cells(self%col, self%nrow)%x = x
+        else
+            self%cells(self%col, self%nrow)%kind = CELL_NONE
+        end if
     end subroutine num
 
     subroutine str(self, s)

@@ -39,6 +39,10 @@ while i < len(lines):
             i += 1
         n += 1
         open(f"{out}/{n}.cmd", "w").write(cmd)
+        if body and body[-1] == "...":
+            # an excerpt: the lines shown must appear in the output, in this order
+            body.pop()
+            open(f"{out}/{n}.excerpt", "w").write("")
         open(f"{out}/{n}.want", "w").write("".join(l + "\n" for l in body))
     else:
         i += 1
@@ -48,7 +52,15 @@ PY
   bindir=$tmp/bin; mkdir -p "$bindir"; ln -s "$(realpath "$HERTZDAMP_BIN")" "$bindir/hertzdamp"
   for c in "$tmp"/cmds/*.cmd; do
     PATH=$bindir:$PATH bash -c "$(cat "$c")" >"${c%.cmd}.got" 2>/dev/null
-    check "README command prints what the README shows: $(head -c 90 "$c")" cmp -s "${c%.cmd}.got" "${c%.cmd}.want"
+    if [ -e "${c%.cmd}.excerpt" ]; then
+      check "README command prints the lines the README shows: $(head -c 90 "$c")" python3 -c '
+import sys
+got = open(sys.argv[1]).read().splitlines(); it = iter(got)
+sys.exit(0 if all(any(g == w for g in it) for w in open(sys.argv[2]).read().splitlines()) else 1)' \
+        "${c%.cmd}.got" "${c%.cmd}.want"
+    else
+      check "README command prints what the README shows: $(head -c 90 "$c")" cmp -s "${c%.cmd}.got" "${c%.cmd}.want"
+    fi
   done
   # the glass-bead answer of issue 12 is among them: one invert, one forward
   check "README answers the glass-bead question with invert from material data" \

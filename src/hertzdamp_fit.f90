@@ -408,7 +408,7 @@ contains
 
     ! ================================================================ dimensional inverse
 
-    !> The fast path of the dimensional inverse (THEORY.md section 6) for n contacts and
+    !> The fast path of the dimensional inverse (doc/theory.md section 6) for n contacts and
     !> one contact end, vectorised: alpha(e) and tau_c from the fit, then with
     !> r = tau_c / T_c = 1/t*
     !>     k = m r^2 (r/u)^(1/2),   d = alpha m r.

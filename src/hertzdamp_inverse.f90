@@ -1,4 +1,4 @@
-!> The inverse problem of THEORY.md section 6 (adaptive collision time model): from a
+!> The inverse problem of doc/theory.md section 6 (adaptive collision time model): from a
 !> target restitution e and contact time T_c, for a contact with effective mass m and
 !> impact velocity u_in, the Hertz stiffness k and damping d
 !>
@@ -6,7 +6,13 @@
 !>     k = m t*^(-5/2) u^(-1/2),  d = alpha m / t*,
 !>
 !> with the physical bound: if k_phys <= k, then k = k_phys and
-!> d = alpha m^(3/5) k_phys^(2/5) u^(1/5) (the contact is then shorter than T_c).
+!> d = alpha m^(3/5) k_phys^(2/5) u^(1/5) (the contact is then longer than T_c).
+!>
+!> For the damping law q (argument `law`: 0 linear, the default; 1 tsuji, q = 1/4;
+!> 2 kuwabara-kono, q = 1/2; doc/damping-laws.md) alpha = d t* (u t*)^q / m, so
+!>     d = alpha m t*^(-1) (u t*)^(-q),
+!> and with the bound d = alpha m^((3-2q)/5) k_phys^((2+2q)/5) u^((1-4q)/5)
+!> (tsuji: alpha sqrt(m k_phys), independent of u).
 !>
 !> alpha(e) and tau_c(alpha(e)) come from the fitted approximant (default, ~1e-13
 !> relative, no iteration), the compact formula (~1e-5 on e in [0.05, 1]) or a
@@ -16,8 +22,11 @@
 !> rank-1 arrays.  Both run the fit through hertzdamp_fit_invert_n, the vectorised
 !> kernel that also serves the C and legacy entry points, so every way of calling gives
 !> the same bits; the rank-1 form runs it over whole arrays (SIMD) and takes only the
-!> contacts that need more (extreme inputs, the physical bound, errors, other methods)
-!> through the scalar path.
+!> contacts that need more (extreme inputs, the physical bound, errors, other methods,
+!> the other damping laws) through the scalar path.  A fitted map of another law gets
+!> the same fast path by a kernel of its own in hertzdamp_fit (see there and
+!> tools/fit_csv_to_f90.py) and its q in the direct formulas of
+!> hertzdamp_fit_invert_out.inc.
 !>
 !> Supported restitution: e_min <= e <= 1 with e_min = 1e-3 (overlap; e -> 0 has
 !> no finite contact time) and 1e-4 (force), for every method; outside:
@@ -36,9 +45,10 @@ module hertzdamp_inverse
     use hertzdamp_methods, only: HD_METHOD_RK45, HD_METHOD_SERIES, HD_METHOD_PADE, HD_METHOD_COMPACT, &
                                  HD_METHOD_FIT, HD_METHOD_ITERATIVE, HD_METHOD_FIRST_ORDER, hertzdamp_forward_alpha, &
                                  hertzdamp_default_accuracy
-    use hertzdamp_fit, only: hertzdamp_fit_inverse, hertzdamp_fit_invert, hertzdamp_fit_invert_n, &
-                             hertzdamp_fit_e_min_overlap, &
-                             hertzdamp_fit_e_min_force, hertzdamp_fit_alpha_c
+    use hertzdamp_fit, only: hertzdamp_fit_inverse, hertzdamp_fit_invert, hertzdamp_fit_invert_n
+    use hertzdamp_fit_laws, only: hertzdamp_fit_law_inverse, hertzdamp_fit_law_e_min
+    use hertzdamp_laws, only: HD_DAMPING_LINEAR, hertzdamp_law_q, hertzdamp_law_status, hertzdamp_law_alpha_c, &
+                              hertzdamp_law_has_alpha_c
     use hertzdamp_compact, only: hertzdamp_compact_inverse, hertzdamp_compact_e_min_overlap, &
                                  hertzdamp_compact_e_min_force
     use hertzdamp_series, only: hertzdamp_pade_alpha_max
@@ -81,14 +91,14 @@ contains
 
     !> k and d such that the collision has restitution e and contact time tc.
     pure elemental subroutine invert_scalar(e, tc, m, u, iend, k, d, status, alpha, tstar, tau_c, &
-                                            bound_active, k_phys, method, tol, accuracy)
+                                            bound_active, k_phys, method, tol, accuracy, law)
         real(wp), intent(in) :: e                      !! target restitution coefficient, e_min <= e <= 1
         real(wp), intent(in) :: tc                     !! target contact time T_c [s]
         real(wp), intent(in) :: m                      !! effective mass [kg]
         real(wp), intent(in) :: u                      !! impact velocity u_in [m s^-1]
         integer, intent(in) :: iend                    !! HD_END_OVERLAP or HD_END_FORCE
         real(wp), intent(out) :: k                     !! stiffness [N m^-3/2] (0 on error)
-        real(wp), intent(out) :: d                     !! damping coefficient [kg s^-1] (0 on error)
+        real(wp), intent(out) :: d                     !! damping coefficient [kg s^-1 m^-q] (0 on error)
         integer, intent(out) :: status                 !! HD_OK or an error code
         real(wp), intent(out), optional :: alpha       !! damping parameter alpha(e)
         real(wp), intent(out), optional :: tstar       !! time unit of the returned k [s] (contact time = tstar tau_c)
@@ -98,17 +108,20 @@ contains
         integer, intent(in), optional :: method        !! HD_METHOD_FIT (default), _COMPACT, _ITERATIVE or _RK45
         real(wp), intent(in), optional :: tol          !! tolerance of the iterative method (default 1e-10)
         real(wp), intent(in), optional :: accuracy     !! relative accuracy asked of series and Pade (default 1e-10)
+        integer, intent(in), optional :: law           !! HD_DAMPING_* (default linear): damping force d zeta^q zeta'
         real(wp) :: a, tau, ts, kp
         logical :: bound
-        integer :: meth
+        integer :: meth, law_
         meth = HD_METHOD_FIT
         if (present(method)) meth = method
+        law_ = HD_DAMPING_LINEAR
+        if (present(law)) law_ = law
         kp = 0.0_wp
         if (present(k_phys)) kp = k_phys
         ts = 0.0_wp
         bound = .false.
         status = -1
-        if (meth == HD_METHOD_FIT) then
+        if (meth == HD_METHOD_FIT .and. law_ == HD_DAMPING_LINEAR) then
             ! the kernel of every fit entry point (bit-identical to the rank-1 form)
             call hertzdamp_fit_invert(e, tc, m, u, iend, k, d, a, tau, status)
             if (status == HD_OK) then
@@ -117,8 +130,8 @@ contains
             end if
         end if
         if (status /= HD_OK) then
-            call invert_general(e, tc, m, u, iend, present(k_phys), kp, meth, tol, accuracy, k, d, status, a, ts, &
-                                tau, bound)
+            call invert_general(e, tc, m, u, iend, present(k_phys), kp, meth, law_, tol, accuracy, k, d, status, a, &
+                                ts, tau, bound)
         end if
         if (present(alpha)) alpha = a
         if (present(tstar)) tstar = ts
@@ -130,7 +143,7 @@ contains
     !> over whole arrays, the remaining contacts go one by one through the scalar path.
     !> Results are those of the scalar calls, bit for bit.
     pure subroutine invert_array(e, tc, m, u, iend, k, d, status, alpha, tstar, tau_c, bound_active, k_phys, &
-                                 method, tol, accuracy)
+                                 method, tol, accuracy, law)
         real(wp), intent(in), contiguous :: e(:)                 !! target restitution coefficients
         real(wp), intent(in), contiguous :: tc(:)                !! target contact times [s]
         real(wp), intent(in), contiguous :: m(:)                 !! effective masses [kg]
@@ -147,14 +160,17 @@ contains
         integer, intent(in), optional :: method                  !! as for the scalar form
         real(wp), intent(in), optional :: tol                    !! as for the scalar form
         real(wp), intent(in), optional :: accuracy               !! as for the scalar form
+        integer, intent(in), optional :: law                     !! as for the scalar form
         real(wp) :: ab(chunk), tb(chunk), sb_ts(chunk), kp
-        integer :: i0, nc, j, i, meth
+        integer :: i0, nc, j, i, meth, law_
         logical :: bb(chunk)
         meth = HD_METHOD_FIT
         if (present(method)) meth = method
+        law_ = HD_DAMPING_LINEAR
+        if (present(law)) law_ = law
         do i0 = 0, size(e) - 1, chunk
             nc = min(chunk, size(e) - i0)
-            if (meth == HD_METHOD_FIT) then
+            if (meth == HD_METHOD_FIT .and. law_ == HD_DAMPING_LINEAR) then
                 call hertzdamp_fit_invert_n(nc, e(i0 + 1:i0 + nc), tc(i0 + 1:i0 + nc), m(i0 + 1:i0 + nc), &
                                             u(i0 + 1:i0 + nc), iend, k(i0 + 1:i0 + nc), d(i0 + 1:i0 + nc), ab, tb, &
                                             status(i0 + 1:i0 + nc))
@@ -178,8 +194,8 @@ contains
                     if (status(i) /= HD_OK) then
                         kp = 0.0_wp
                         if (present(k_phys)) kp = k_phys(i)
-                        call invert_general(e(i), tc(i), m(i), u(i), iend, present(k_phys), kp, meth, tol, accuracy, &
-                                            k(i), d(i), status(i), ab(j), sb_ts(j), tb(j), bb(j))
+                        call invert_general(e(i), tc(i), m(i), u(i), iend, present(k_phys), kp, meth, law_, tol, &
+                                            accuracy, k(i), d(i), status(i), ab(j), sb_ts(j), tb(j), bb(j))
                     end if
                 end do
             end if
@@ -215,26 +231,28 @@ contains
     end subroutine apply_bound
 
     !> Every contact the fast path does not serve: the argument checks in their order
-    !> (T_c, m, u, k_phys, then e and iend by the method), the dimensionless inverse by
-    !> any method, the direct formulas of hertzdamp_fit_invert_n where T_c, m, u allow
-    !> (so that every method scales alike) and logarithms elsewhere, the bound.
-    pure elemental subroutine invert_general(e, tc, m, u, iend, has_kphys, k_phys, meth, tol, accuracy, k, d, &
+    !> (the law, T_c, m, u, k_phys, then e and iend by the method), the dimensionless
+    !> inverse by any method and law, the direct formulas of hertzdamp_fit_invert_n where
+    !> T_c, m, u allow (so that every method scales alike) and logarithms elsewhere, the
+    !> bound, and d = alpha m t*^(-1) (u t*)^(-q) for the law's q.
+    pure elemental subroutine invert_general(e, tc, m, u, iend, has_kphys, k_phys, meth, law, tol, accuracy, k, d, &
                                              status, a, ts, tau, bound)
         real(wp), intent(in) :: e, tc, m, u, k_phys
-        integer, intent(in) :: iend, meth
+        integer, intent(in) :: iend, meth, law
         logical, intent(in) :: has_kphys
         real(wp), intent(in), optional :: tol, accuracy
         real(wp), intent(out) :: k, d, a, ts, tau
         integer, intent(out) :: status
         logical, intent(out) :: bound
-        real(wp) :: lk, lts
+        real(wp) :: lk, lts, q
         k = 0.0_wp
         d = 0.0_wp
         a = 0.0_wp
         tau = 0.0_wp
         ts = 0.0_wp
         bound = .false.
-        status = HD_OK
+        q = hertzdamp_law_q(law)
+        status = hertzdamp_law_status(law)
         if (.not. (tc > 0.0_wp .and. tc <= huge(tc))) status = HD_BAD_TIME
         if (.not. (m > 0.0_wp .and. m <= huge(m))) status = HD_BAD_MASS
         if (.not. (u > 0.0_wp .and. u <= huge(u))) status = HD_BAD_VELOCITY
@@ -242,10 +260,12 @@ contains
             if (.not. (k_phys > 0.0_wp .and. k_phys <= huge(k_phys))) status = HD_BAD_KPHYS
         end if
         if (status == HD_OK) then
-            if (meth == HD_METHOD_FIT) then
+            if (meth == HD_METHOD_FIT .and. law == HD_DAMPING_LINEAR) then
                 call hertzdamp_fit_inverse(e, iend, a, tau, status)
+            else if (meth == HD_METHOD_FIT) then
+                call hertzdamp_fit_law_inverse(e, iend, law, a, tau, status)
             else
-                call hertzdamp_invert_alpha(e, iend, a, tau, status, meth, tol, accuracy)
+                call hertzdamp_invert_alpha(e, iend, a, tau, status, meth, tol, accuracy, law)
             end if
         end if
         if (status == HD_OK) then
@@ -254,6 +274,8 @@ contains
                 ! direct path: the formulas of the fast path (every intermediate a normal double)
                 call direct_scale(tc, m, u, a, tau, k, d)
                 if (has_kphys) call apply_bound(a, m, u, k_phys, k, d, ts, bound, status)
+                ! d = alpha m t*^-1 (u t*)^-q
+                if (q > 0.0_wp) d = a * m / ts / law_power(u * ts, law)
             else
                 ! logarithmic path (extreme inputs)
                 lts = log(tc) - log(tau)
@@ -267,7 +289,7 @@ contains
                 end if
                 call hertzdamp_safe_exp(lts, ts, status)
                 call hertzdamp_safe_exp(lk, k, status)
-                if (a > 0.0_wp) call hertzdamp_safe_exp_or_zero(log(a) + log(m) - lts, d, status)
+                if (a > 0.0_wp) call hertzdamp_safe_exp_or_zero(log(a) + log(m) - lts - q * (log(u) + lts), d, status)
             end if
             if (status == HD_OK) then
                 if (.not. (abs(d) < huge(d))) status = HD_OUT_OF_RANGE
@@ -296,10 +318,19 @@ contains
         d = a * m * r
     end subroutine direct_scale
 
+    !> (u t*)^q of the law, by square roots (q = 1/4 or 1/2).
+    pure real(wp) function law_power(x, law) result(y)
+        real(wp), intent(in) :: x
+        integer, intent(in) :: law
+        y = sqrt(x)
+        if (hertzdamp_law_q(law) == 0.25_wp) y = sqrt(y)
+    end function law_power
+
     !> The dimensionless inverse e -> (alpha, tau_c) by the chosen method.
-    !> These are the constants of a material pair: they depend on e and the contact end
-    !> only (HERTZDAMP_PAIR, hertzdamp_c_pair).
-    pure elemental subroutine hertzdamp_invert_alpha(e, iend, alpha, tau_c, status, method, tol, accuracy)
+    !> These are the constants of a material pair: they depend on e, the contact end and
+    !> the damping law only (HERTZDAMP_PAIR, hertzdamp_c_pair).  Every law: fit (default),
+    !> iterative / rk45, first-order; compact, series and Pade: linear law only.
+    pure elemental subroutine hertzdamp_invert_alpha(e, iend, alpha, tau_c, status, method, tol, accuracy, law)
         real(wp), intent(in) :: e                !! restitution coefficient, e_min <= e <= 1
         integer, intent(in) :: iend              !! HD_END_OVERLAP or HD_END_FORCE
         real(wp), intent(out) :: alpha           !! damping parameter
@@ -309,30 +340,39 @@ contains
                                                  !! _FIRST_ORDER, _ITERATIVE, _RK45
         real(wp), intent(in), optional :: tol    !! iterative tolerance (default 1e-10, within [1e-15, 1e-2])
         real(wp), intent(in), optional :: accuracy !! relative accuracy asked of series and Pade (default 1e-10)
+        integer, intent(in), optional :: law     !! HD_DAMPING_* (default linear)
         real(wp) :: emin, tol_, acc
-        integer :: meth
+        integer :: meth, law_
         alpha = 0.0_wp
         tau_c = 0.0_wp
         meth = HD_METHOD_FIT
         if (present(method)) meth = method
-        status = HD_OK
+        law_ = HD_DAMPING_LINEAR
+        if (present(law)) law_ = law
+        status = hertzdamp_law_status(law_)
+        if (status /= HD_OK) return
         if (iend /= HD_END_OVERLAP .and. iend /= HD_END_FORCE) then
             status = HD_BAD_END
             return
         end if
-        emin = merge(hertzdamp_fit_e_min_overlap, hertzdamp_fit_e_min_force, iend == HD_END_OVERLAP)
+        emin = hertzdamp_fit_law_e_min(law_, iend)
         if (.not. (e >= emin .and. e <= 1.0_wp)) then
             status = HD_BAD_RESTITUTION
             return
         end if
+        if (law_ /= HD_DAMPING_LINEAR .and. (meth == HD_METHOD_COMPACT .or. meth == HD_METHOD_SERIES .or. &
+                                             meth == HD_METHOD_PADE)) then
+            status = HD_NOT_SUPPORTED
+            return
+        end if
         select case (meth)
         case (HD_METHOD_FIT)
-            call hertzdamp_fit_inverse(e, iend, alpha, tau_c, status)
+            call hertzdamp_fit_law_inverse(e, iend, law_, alpha, tau_c, status)
         case (HD_METHOD_COMPACT)
             call hertzdamp_compact_inverse(e, iend, alpha, tau_c, status)
         case (HD_METHOD_FIRST_ORDER)
             ! e = 1 - e1 alpha + O(alpha^2), tau_c = tau_c(0) + O(alpha) (both ends)
-            alpha = (1.0_wp - e) / hertzdamp_e1()
+            alpha = (1.0_wp - e) / hertzdamp_e1(law_)
             tau_c = hertzdamp_tau_c0()
         case (HD_METHOD_ITERATIVE, HD_METHOD_RK45)
             tol_ = hertzdamp_invert_default_tol
@@ -341,7 +381,7 @@ contains
                 status = HD_BAD_TOL
                 return
             end if
-            call iterate(e, iend, tol_, alpha, tau_c, status)
+            call iterate(e, iend, law_, tol_, alpha, tau_c, status)
         case (HD_METHOD_SERIES, HD_METHOD_PADE)
             if (iend /= HD_END_OVERLAP) then
                 status = HD_NOT_SUPPORTED   ! the force definition has no Taylor series
@@ -418,7 +458,7 @@ contains
         real(wp), intent(out) :: lne, tau_c
         integer, intent(out) :: status
         type(hertzdamp_collision) :: r
-        r = hertzdamp_forward_alpha(a, HD_END_OVERLAP, meth, accuracy=huge(1.0_wp))
+        r = hertzdamp_forward_alpha(a, HD_END_OVERLAP, meth, accuracy=1.0_wp)   ! no guard while iterating
         status = r%status
         tau_c = r%tau_c
         lne = 0.0_wp
@@ -427,28 +467,33 @@ contains
 
     !> Start of the iterative inverse (see hertzdamp_secant): the first trial alpha for
     !> restitution e (0 < e < 1, -ln e >= 1e-10) and the state.  Written as a careful DEM
-    !> developer would: the compact rule where it is defined (e >= 0.05; alpha within
-    !> ~1e-6 for the overlap end, ~1e-3 for the force end), else the first-order law
-    !> alpha = -ln(e)/e1 (at most 1 for the overlap end, whose bracket starts as
-    !> [0, alpha_c]: no trial is wasted on alpha >= alpha_c, where nothing rebounds).
-    pure subroutine hertzdamp_secant_start(e, iend, tol, state, alpha)
+    !> developer would: for the linear law the compact rule where it is defined
+    !> (e >= 0.05; alpha within ~1e-6 for the overlap end, ~1e-3 for the force end), else
+    !> the first-order law alpha = -ln(e)/e1(law); for the overlap end of a law with a
+    !> critical damping the bracket starts as [0, alpha_c] and the start is at most
+    !> 0.9 alpha_c (no trial is wasted on alpha >= alpha_c, where nothing rebounds).
+    pure subroutine hertzdamp_secant_start(e, iend, tol, state, alpha, law)
         real(wp), intent(in) :: e                         !! target restitution coefficient
         integer, intent(in) :: iend                       !! HD_END_OVERLAP or HD_END_FORCE
         real(wp), intent(in) :: tol                       !! relative accuracy asked of alpha
         type(hertzdamp_secant), intent(out) :: state      !! the iteration's state
         real(wp), intent(out) :: alpha                    !! first trial: solve e(alpha) there
+        integer, intent(in), optional :: law              !! HD_DAMPING_* (default linear)
         real(wp) :: a, tau
-        integer :: st
+        integer :: st, law_
+        law_ = HD_DAMPING_LINEAR
+        if (present(law)) law_ = law
         state%lt = -log(e)
         state%tol = tol
-        alpha = state%lt / hertzdamp_e1()
-        if (iend == HD_END_OVERLAP) then
+        alpha = state%lt / hertzdamp_e1(law_)
+        if (iend == HD_END_OVERLAP .and. hertzdamp_law_has_alpha_c(law_)) then
             ! every rebound of the overlap end has alpha < alpha_c: the bracket's top
-            state%hi = hertzdamp_fit_alpha_c
+            state%hi = hertzdamp_law_alpha_c(law_)
             state%have_hi = .true.
-            alpha = min(alpha, 1.0_wp)
+            alpha = min(alpha, 0.9_wp * state%hi)
         end if
-        if (e >= merge(hertzdamp_compact_e_min_overlap, hertzdamp_compact_e_min_force, iend == HD_END_OVERLAP)) then
+        if (law_ == HD_DAMPING_LINEAR .and. &
+            e >= merge(hertzdamp_compact_e_min_overlap, hertzdamp_compact_e_min_force, iend == HD_END_OVERLAP)) then
             call hertzdamp_compact_inverse(e, iend, a, tau, st)
             if (st == HD_OK .and. a > 0.0_wp) alpha = a
         end if
@@ -522,22 +567,23 @@ contains
         alpha = anew
     end subroutine hertzdamp_secant_next
 
-    !> The iterative baseline: hertzdamp_secant over rk45 solves, each at a tolerance
-    !> derived from the accuracy asked of alpha: rk45 tol = tol/10 min(1, |ln e|), since
-    !> the relative error of alpha is about that of ln e, (delta e / e) / |ln e|
-    !> (test/test_inverse.f90 checks alpha within tol).  tau_c is that of the last solve:
-    !> its error is the error of alpha times d ln tau_c / d ln alpha, which grows towards
-    !> alpha_c (7 tol at e = 1e-3, overlap); `hertzdamp bench` reports the errors of
-    !> alpha, k and d it achieves.
-    pure subroutine iterate(e, iend, tol, alpha, tau_c, status)
+    !> The iterative baseline: hertzdamp_secant over rk45 solves of the law, each at a
+    !> tolerance derived from the accuracy asked of alpha: rk45 tol = tol/10 min(1, |ln e|),
+    !> since the relative error of alpha is about that of ln e, (delta e / e) / |ln e|
+    !> (test/test_inverse.f90 checks alpha within tol).  A trial without rebound, or with
+    !> e below what rk45 resolves near alpha_c (HD_INACCURATE), shrinks the bracket from
+    !> above.  tau_c is that of the last solve: its error is the error of alpha times
+    !> d ln tau_c / d ln alpha, which grows towards alpha_c (7 tol at e = 1e-3, overlap);
+    !> `hertzdamp bench` reports the errors of alpha, k and d it achieves.
+    pure subroutine iterate(e, iend, law, tol, alpha, tau_c, status)
         real(wp), intent(in) :: e, tol
-        integer, intent(in) :: iend
+        integer, intent(in) :: iend, law
         real(wp), intent(out) :: alpha, tau_c
         integer, intent(out) :: status
         type(hertzdamp_collision) :: r
         type(hertzdamp_secant) :: state
         real(wp) :: lt, rtol, a
-        logical :: done
+        logical :: done, no_rebound
         alpha = 0.0_wp
         tau_c = hertzdamp_tau_c0()
         status = HD_OK
@@ -547,16 +593,17 @@ contains
         if (lt < 1.0e-10_wp) then
             ! 1 - e below what the reference integrator resolves (~1e-13): the first-order
             ! law ln e = -e1 alpha + O(alpha^2) is exact to O(alpha) ~ 1e-10 relative here
-            alpha = lt / hertzdamp_e1()
-            r = hertzdamp_rk45_collide(alpha, iend, rtol)
+            alpha = lt / hertzdamp_e1(law)
+            r = hertzdamp_rk45_collide(alpha, iend, rtol, law)
             status = r%status
             if (status == HD_OK) tau_c = r%tau_c
             return
         end if
-        call hertzdamp_secant_start(e, iend, tol, state, a)
+        call hertzdamp_secant_start(e, iend, tol, state, a, law)
         do
-            r = hertzdamp_rk45_collide(a, iend, rtol)
-            if (r%status /= HD_OK .and. r%status /= HD_NO_REBOUND) then
+            r = hertzdamp_rk45_collide(a, iend, rtol, law)
+            no_rebound = r%status == HD_NO_REBOUND .or. r%status == HD_INACCURATE
+            if (r%status /= HD_OK .and. .not. no_rebound) then
                 status = r%status
                 return
             end if
@@ -564,7 +611,7 @@ contains
                 alpha = a
                 tau_c = r%tau_c
             end if
-            call hertzdamp_secant_next(state, r%e, r%status == HD_NO_REBOUND, a, done, status)
+            call hertzdamp_secant_next(state, r%e, no_rebound, a, done, status)
             if (done .or. status /= HD_OK) exit
         end do
     end subroutine iterate

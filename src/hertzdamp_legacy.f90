@@ -26,14 +26,16 @@
 !> they are module procedures whose binding labels (`bind(c, name='hertzdamp_invert_')`,
 !> the name gfortran gives an external HERTZDAMP_INVERT) keep the link names and the
 !> calling convention (scalars and explicit-shape arrays by reference) of the externals.
-!> test/legacy_fpenv.sh fails if a legacy or C entry point calls those routines again.
+!> test/fpenv_symbols.sh fails if a legacy or C entry point calls those routines again.
 module hertzdamp_legacy
     use, intrinsic :: iso_c_binding, only: c_double, c_int
-    use hertzdamp_flat, only: flat_invert, flat_invert_bounded, flat_pair, flat_forward, flat_invert_n
+    use hertzdamp_flat, only: flat_invert, flat_invert_bounded, flat_pair, flat_forward, flat_invert_n, flat_invert_law, &
+                              flat_pair_law, flat_forward_law
     implicit none
     private
 
     public :: legacy_invert, legacy_invert_bounded, legacy_pair, legacy_forward, legacy_invert_n
+    public :: legacy_invert_law, legacy_pair_law, legacy_forward_law
 
 contains
 
@@ -54,7 +56,7 @@ contains
 
     !> HERTZDAMP_INVERT_BOUNDED(E, TC, M, U, KPHYS, IEND, K, D, IERR): HERTZDAMP_INVERT with
     !> the physical-stiffness bound kphys = (4/3) E* sqrt(R*): where kphys <= k the contact
-    !> keeps k = kphys and d = alpha m^(3/5) kphys^(2/5) u^(1/5) (it is then shorter than
+    !> keeps k = kphys and d = alpha m^(3/5) kphys^(2/5) u^(1/5) (it is then longer than
     !> tc, and the material's own stiffness is recovered once the time step is small
     !> enough).  On failure k = d = 0, ierr /= 0.
     subroutine legacy_invert_bounded(e, tc, m, u, kphys, iend, k, d, ierr) bind(c, name='hertzdamp_invert_bounded_')
@@ -116,6 +118,52 @@ contains
         if (n <= 0) return
         call flat_invert_n(n, e, tc, m, u, iend, k, d, ierr)
     end subroutine legacy_invert_n
+
+    !> HERTZDAMP_INVERT_LAW(E, TC, M, U, KPHYS, ILAW, IEND, K, D, IERR): HERTZDAMP_INVERT for
+    !> the damping law ilaw (0 linear, 1 tsuji, 2 kuwabara-kono: damping force
+    !> d zeta^q zeta', q = 0, 1/4, 1/2, d in kg s^-1 m^-q), with the physical-stiffness
+    !> bound kphys when kphys > 0 (kphys = 0: no bound).  On failure k = d = 0, ierr /= 0.
+    subroutine legacy_invert_law(e, tc, m, u, kphys, ilaw, iend, k, d, ierr) bind(c, name='hertzdamp_invert_law_')
+        real(c_double), intent(in) :: e     !! target restitution coefficient
+        real(c_double), intent(in) :: tc    !! target contact time [s]
+        real(c_double), intent(in) :: m     !! effective mass [kg]
+        real(c_double), intent(in) :: u     !! impact velocity [m/s]
+        real(c_double), intent(in) :: kphys !! physical stiffness bound [N m^-3/2], 0 for none
+        integer(c_int), intent(in) :: ilaw  !! damping law: 0 linear, 1 tsuji, 2 kuwabara-kono
+        integer(c_int), intent(in) :: iend  !! contact end: 0 overlap, 1 force
+        real(c_double), intent(out) :: k    !! Hertz stiffness [N m^-3/2]
+        real(c_double), intent(out) :: d    !! damping coefficient [kg s^-1 m^-q]
+        integer(c_int), intent(out) :: ierr !! 0 on success, else a status code
+        call flat_invert_law(e, tc, m, u, kphys, ilaw, iend, k, d, ierr)
+    end subroutine legacy_invert_law
+
+    !> HERTZDAMP_PAIR_LAW(E, ILAW, IEND, ALPHA, TAUC, IERR): the material-pair constants of
+    !> the damping law ilaw; per contact
+    !>     tstar = tc/tauc,  k = m tstar**(-2.5) / sqrt(u),  d = alpha m / tstar / (u tstar)**q.
+    subroutine legacy_pair_law(e, ilaw, iend, alpha, tauc, ierr) bind(c, name='hertzdamp_pair_law_')
+        real(c_double), intent(in) :: e      !! target restitution coefficient
+        integer(c_int), intent(in) :: ilaw   !! damping law: 0 linear, 1 tsuji, 2 kuwabara-kono
+        integer(c_int), intent(in) :: iend   !! contact end: 0 overlap, 1 force
+        real(c_double), intent(out) :: alpha !! damping parameter alpha(e)
+        real(c_double), intent(out) :: tauc  !! dimensionless contact duration tau_c(alpha)
+        integer(c_int), intent(out) :: ierr  !! 0 on success, else a status code
+        call flat_pair_law(e, ilaw, iend, alpha, tauc, ierr)
+    end subroutine legacy_pair_law
+
+    !> HERTZDAMP_FORWARD_LAW(K, D, M, U, ILAW, IEND, E, TC, IERR): HERTZDAMP_FORWARD for the
+    !> damping law ilaw (d in kg s^-1 m^-q).
+    subroutine legacy_forward_law(k, d, m, u, ilaw, iend, e, tc, ierr) bind(c, name='hertzdamp_forward_law_')
+        real(c_double), intent(in) :: k     !! Hertz stiffness [N m^-3/2]
+        real(c_double), intent(in) :: d     !! damping coefficient [kg s^-1 m^-q]
+        real(c_double), intent(in) :: m     !! effective mass [kg]
+        real(c_double), intent(in) :: u     !! impact velocity [m/s]
+        integer(c_int), intent(in) :: ilaw  !! damping law: 0 linear, 1 tsuji, 2 kuwabara-kono
+        integer(c_int), intent(in) :: iend  !! contact end: 0 overlap, 1 force
+        real(c_double), intent(out) :: e    !! restitution coefficient
+        real(c_double), intent(out) :: tc   !! contact time [s]
+        integer(c_int), intent(out) :: ierr !! 0 on success, 1 no rebound, else a status code
+        call flat_forward_law(k, d, m, u, ilaw, iend, e, tc, ierr)
+    end subroutine legacy_forward_law
 
 end module hertzdamp_legacy
 

@@ -51,6 +51,9 @@ module hertzdamp_cmd_bench
 
     ! Inverse problem: fixed contact (SI units).
     real(wp), parameter :: inv_m = 1.0e-2_wp, inv_u = 1.0_wp, inv_tc = 1.0e-4_wp
+    !> Tolerance of the iterative inverse that serves as the reference of the inverse rows.
+    real(wp), parameter :: inv_ref_tol = 1.0e-14_wp
+    character(len=*), parameter :: inv_ref_text = 'iterative at tol 1e-14'
 
     !> One forward sweep over a set of alpha.
     type, extends(bench_case) :: fwd_case
@@ -333,11 +336,11 @@ contains
             if (fref%status(i) /= HD_OK) call fail(EXIT_FAILURE, 'forward reference (rk45, tol 1e-15) failed: ' // &
                                                    hertzdamp_message(fref%status(i)))
         end do
-        call inv_init(iref, HD_METHOD_ITERATIVE, 1.0e-14_wp, e_inv, spread(inv_tc, 1, size(e_inv)), &
+        call inv_init(iref, HD_METHOD_ITERATIVE, inv_ref_tol, e_inv, spread(inv_tc, 1, size(e_inv)), &
                       spread(inv_m, 1, size(e_inv)), spread(inv_u, 1, size(e_inv)))
         call iref%run()
         do i = 1, size(e_inv)
-            if (iref%status(i) /= HD_OK) call fail(EXIT_FAILURE, 'inverse reference (iterative, tol 1e-14) failed: ' &
+            if (iref%status(i) /= HD_OK) call fail(EXIT_FAILURE, 'inverse reference (' // inv_ref_text // ') failed: ' &
                                                    // hertzdamp_message(iref%status(i)))
         end do
 
@@ -362,7 +365,7 @@ contains
                         ' alpha in [0, 50] (force); reference rk45 at tol 1e-15; error of e relative to max(e, 1e-3)' &
                         // '; series and pade on the overlap alpha only')
             call t%meta('inverse', itoa(size(e_inv)) // ' e in [1e-3, 0.999] (overlap), m = 1e-2 kg, u_in = 1 m/s, ' // &
-                        'T_c = 1e-4 s; reference iterative at tol 1e-14; iterative = secant over rk45, gsl-secant = ' // &
+                        'T_c = 1e-4 s; reference ' // inv_ref_text // '; iterative = secant over rk45, gsl-secant = ' // &
                         'secant over GSL rk8pd, each solve at tol/10 min(1, |ln e|), setting = accuracy asked of alpha')
             call t%meta('entry', itoa(ent%n) // ' contacts (overlap), e uniform in [0.05, 0.99], m in [1e-9, 1] kg, ' // &
                         'u_in in [1e-3, 10] m/s, T_c in [1e-7, 1e-3] s (log-uniform); every entry point timed side by ' // &
@@ -1058,7 +1061,7 @@ contains
             if (p == 1) then
                 write (u, '(a)') 'set title "forward: alpha -> e, tau_c  (vs rk45 tol 1e-15)" noenhanced'
             else
-                write (u, '(a)') 'set title "inverse: e, T_c, m, u_in -> alpha, k, d  (vs iterative tol 1e-13)" noenhanced'
+                write (u, '(a)') 'set title "inverse: e, T_c, m, u_in -> alpha, k, d  (vs ' // inv_ref_text // ')" noenhanced'
             end if
             plots%n = 0
             do f = 1, n_families

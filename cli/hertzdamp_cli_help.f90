@@ -36,6 +36,7 @@ module hertzdamp_cli_help
         '  invert     stiffness k and damping d (SI) from target e and contact time' // nl // &
         '  bench      work-precision report of every method (forward, inverse, throughput)' // nl // &
         '  scene      run a DEM scene file (namelist) with the inverse rule at every contact' // nl // &
+        '  calibrate  k, d and the damping law fitted to measured e(u) and T_c(u) (CSV)' // nl // &
         '' // nl // &
         'Exit codes: 0 success, 2 bad usage, 3 no solution, 4 computation failed.' // nl // &
         'Errors go to stderr as one line; stdout is then empty.'

@@ -7,6 +7,7 @@ program main
     use hertzdamp_cli_help, only: print_help
     use hertzdamp_cmd_invert, only: cmd_invert
     use hertzdamp_cmd_bench, only: cmd_bench
+    use hertzdamp_cmd_calibrate, only: cmd_calibrate
     implicit none
     character(len=:), allocatable :: command
     integer :: n, l
@@ -35,6 +36,8 @@ program main
         call cmd_bench()
     case ('scene')
         call cmd_scene()
+    case ('calibrate')
+        call cmd_calibrate()
     case default
         call fail(EXIT_USAGE, 'unknown command "' // command // '" (see hertzdamp --help)')
     end select

@@ -120,8 +120,9 @@ contains
         if (args%has('--tol')) then
             if (o%method /= HD_METHOD_RK45) call fail(EXIT_USAGE, '--tol applies to --method rk45 only')
             o%tol = parse_real(args%get('--tol', ''), '--tol')
-            if (.not. (o%tol >= 1.0e-15_wp .and. o%tol <= 1.0e-2_wp)) &
+            if (.not. (o%tol >= 1.0e-15_wp .and. o%tol <= 1.0e-2_wp)) then
                 call fail(EXIT_USAGE, '--tol must lie in [1e-15, 1e-2]')
+            end if
         end if
         fmt = parse_choice(args%get('--format', 'text'), format_choices, 'format (--format)')
         plot = args%get('--plot', '')
@@ -371,15 +372,19 @@ contains
         end select
     end function status_name
 
-    !> A number, or an empty field when `ok` is false.
-    subroutine maybe(t, x, ok)
+    !> A number (6 significant digits in text, 16 in CSV and JSON), or an empty field
+    !> when `ok` is false.
+    subroutine maybe(t, x, ok, fmt)
         type(out_table), intent(inout) :: t
         real(wp), intent(in) :: x
         logical, intent(in) :: ok
-        if (ok) then
-            call t%num(x)
-        else
+        integer, intent(in) :: fmt
+        if (.not. ok) then
             call t%str('')
+        else if (fmt == FORMAT_TEXT) then
+            call t%str(g(x))
+        else
+            call t%num(x)
         end if
     end subroutine maybe
 
@@ -400,17 +405,17 @@ contains
             ok = res(l)%status == CAL_OK
             call t%str(cal_law_name(l))
             call t%str(trim(merge('true ', 'false', l == chosen)))
-            call maybe(t, res(l)%k, ok .and. res(l)%kd_known)
-            call maybe(t, res(l)%d, ok .and. res(l)%kd_known)
-            call maybe(t, res(l)%k_err, ok .and. res(l)%k_fitted)
-            call maybe(t, res(l)%d_err, ok .and. res(l)%kd_known)
-            call maybe(t, res(l)%rms_e, ok)
-            call maybe(t, res(l)%rms_tc, ok .and. res(l)%n_tc > 0)
-            call maybe(t, res(l)%c, ok)
-            call maybe(t, res(l)%c_err, ok)
-            call maybe(t, res(l)%chi2 / max(res(l)%dof, 1), ok .and. wtd)
-            call maybe(t, res(l)%p_value, ok .and. wtd)
-            call maybe(t, res(l)%delta_aic, ok .and. auto)
+            call maybe(t, res(l)%k, ok .and. res(l)%kd_known, fmt)
+            call maybe(t, res(l)%d, ok .and. res(l)%kd_known, fmt)
+            call maybe(t, res(l)%k_err, ok .and. res(l)%k_fitted, fmt)
+            call maybe(t, res(l)%d_err, ok .and. res(l)%kd_known, fmt)
+            call maybe(t, res(l)%rms_e, ok, fmt)
+            call maybe(t, res(l)%rms_tc, ok .and. res(l)%n_tc > 0, fmt)
+            call maybe(t, res(l)%c, ok, fmt)
+            call maybe(t, res(l)%c_err, ok, fmt)
+            call maybe(t, res(l)%chi2 / max(res(l)%dof, 1), ok .and. wtd, fmt)
+            call maybe(t, res(l)%p_value, ok .and. wtd, fmt)
+            call maybe(t, res(l)%delta_aic, ok .and. auto, fmt)
             call t%str(status_name(res(l)))
         end do
         call t%render(fmt, buf)
@@ -488,14 +493,14 @@ contains
             call t%set_columns('velocity,e,e_fit,residual_e')
         end if
         do i = 1, size(dat%u)
-            call t%num(dat%u(i))
-            call t%num(dat%e(i))
-            call t%num(r%e_fit(i))
-            call t%num(dat%e(i) - r%e_fit(i))
+            call t%str(g(dat%u(i)))
+            call t%str(g(dat%e(i)))
+            call t%str(g(r%e_fit(i)))
+            call t%str(g(dat%e(i) - r%e_fit(i)))
             if (.not. any(dat%has_tc)) cycle
-            call maybe(t, dat%tc(i), dat%has_tc(i))
-            call maybe(t, r%tc_fit(i), r%kd_known .and. tcs)
-            call maybe(t, dat%tc(i) - r%tc_fit(i), dat%has_tc(i) .and. tcs)
+            call maybe(t, dat%tc(i), dat%has_tc(i), FORMAT_TEXT)
+            call maybe(t, r%tc_fit(i), r%kd_known .and. tcs, FORMAT_TEXT)
+            call maybe(t, dat%tc(i) - r%tc_fit(i), dat%has_tc(i) .and. tcs, FORMAT_TEXT)
         end do
     end subroutine residual_table
 
@@ -580,12 +585,23 @@ contains
         s = trim(b)
     end function itoa
 
-    !> A number with 6 significant digits.
+    !> A number with 6 significant digits: fixed point from 1e-3 to 1e5, else exponent.
     function g(x) result(s)
         real(wp), intent(in) :: x
         character(len=:), allocatable :: s
-        character(len=32) :: b
-        write (b, '(es12.5)') x
+        character(len=32) :: b, f
+        integer :: nd
+        if (x == 0.0_wp) then
+            b = '0'
+        else if (abs(x) >= 1.0e-3_wp .and. abs(x) < 1.0e5_wp) then
+            nd = max(0, 5 - floor(log10(abs(x))))
+            write (f, '(a,i0,a)') '(f0.', nd, ')'
+            write (b, f) x
+            if (b(1:1) == '.') b = '0' // b
+            if (b(1:2) == '-.') b = '-0' // b(2:)
+        else
+            write (b, '(es12.5)') x
+        end if
         s = trim(adjustl(b))
     end function g
 

@@ -636,8 +636,9 @@ contains
                 res%k = exp(theta(2))
                 res%k_err = res%k * sqrt(cov(2, 2))
                 var_lnd = cov(1, 1) + bk**2 * cov(2, 2) + 2.0_wp * bk * cov(1, 2)
-                if (var_lnd > 0.0_wp .and. cov(2, 2) > 0.0_wp) &
+                if (var_lnd > 0.0_wp .and. cov(2, 2) > 0.0_wp) then
                     res%corr_kd = (cov(1, 2) + bk * cov(2, 2)) / sqrt(var_lnd * cov(2, 2))
+                end if
             else
                 res%k = o%k_known
                 res%k_err = 0.0_wp

@@ -19,12 +19,12 @@ RELEASE_FLAGS := -O3 -march=x86-64-v2 -funroll-loops -fPIC
 TEST_FLAGS := -O2 -g -fPIC -fopenmp -Wall -Wextra -Wno-compare-reals -Werror -Wimplicit-interface -std=f2018 -fcheck=bounds,do,pointer -fbacktrace
 TEST_LINK := -fopenmp
 
-.PHONY: all deps run test build install clean lint series-data series-source fit-data fit-source bench
+.PHONY: all deps run test build install clean lint docs series-data series-source fit-data fit-source bench
 
 all: build
 
 # ---------------------------------------------------------------- set-up
-deps: .deps-apt $(FPM) $(VENV)/bin/fortitude
+deps: .deps-apt $(FPM) $(VENV)/bin/fortitude $(VENV)/bin/ford
 
 # Install only the Debian packages that are missing; a stamp keeps reruns silent.
 .deps-apt: Makefile
@@ -48,6 +48,10 @@ $(FPM):
 
 $(VENV)/bin/fortitude: $(FPM)
 	$(VENV)/bin/pip install -q fortitude-lint==0.10.0
+	@touch $@
+
+$(VENV)/bin/ford: $(FPM)
+	$(VENV)/bin/pip install -q ford==7.0.13
 	@touch $@
 
 # ---------------------------------------------------------------- build and run
@@ -93,8 +97,24 @@ fit-source:
 install: deps
 	@bash tools/install.sh "$(abspath $(PREFIX))"
 
+# API documentation of the core library (FORD, settings in ford.md) -> build/docs/index.html
+docs: deps
+	$(VENV)/bin/ford -q ford.md
+
 lint: deps
 	$(VENV)/bin/fortitude check src cli apps peers test gen example
 
 clean:
 	rm -rf build .deps-apt
+
+# ---------------------------------------------------------------- LAMMPS plugin
+# `make lammps`: Debian's lammps/liblammps-dev/openmpi (if missing), the core
+# installed under build/lammps/core, the plugin and build/lammps/load.lmp
+# (integrations/lammps/Makefile).
+LAMMPS_CORE := $(CURDIR)/build/lammps/core
+.PHONY: lammps
+lammps: deps $(LAMMPS_CORE)/lib/libhertzdamp.so
+	@$(MAKE) --no-print-directory -C integrations/lammps HERTZDAMP_PREFIX=$(LAMMPS_CORE)
+
+$(LAMMPS_CORE)/lib/libhertzdamp.so: $(wildcard src/*.f90) include/hertzdamp.h fpm.toml
+	@$(MAKE) --no-print-directory install PREFIX=$(LAMMPS_CORE) >/dev/null

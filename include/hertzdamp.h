@@ -47,6 +47,10 @@ extern "C" {
 #define HERTZDAMP_BAD_ARGUMENT        18  /* any other invalid argument */
 #define HERTZDAMP_OUTSIDE_VALIDITY    19  /* alpha outside the range where the method is valid */
 #define HERTZDAMP_INACCURATE          20  /* the method's error estimate exceeds the accuracy asked */
+#define HERTZDAMP_BAD_RADIUS          21  /* sphere radius not finite and positive */
+#define HERTZDAMP_BAD_DENSITY         22  /* density not finite and positive */
+#define HERTZDAMP_BAD_MODULUS         23  /* Young's modulus not finite and positive */
+#define HERTZDAMP_BAD_POISSON         24  /* Poisson's ratio outside (-1, 0.5] */
 
 /* Contact-end definitions (argument `end`). */
 #define HERTZDAMP_END_OVERLAP 0  /* contact ends when the overlap returns to zero */

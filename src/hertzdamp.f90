@@ -1,4 +1,4 @@
-!> hertzdamp: the damped Hertzian normal collision, forward and inverse.
+!> The umbrella module of hertzdamp, the damped Hertzian normal collision, forward and inverse.
 !>
 !> `use hertzdamp` gives the whole public API: kinds, status codes and messages,
 !> the dimensionless reduction, the reference integrator, the named constants, the
@@ -14,6 +14,7 @@ module hertzdamp
     use hertzdamp_fit
     use hertzdamp_compact
     use hertzdamp_inverse
+    use hertzdamp_materials
     implicit none
     public
 end module hertzdamp

@@ -28,6 +28,10 @@ module hertzdamp_status
     integer, parameter, public :: HD_BAD_ARGUMENT = 18     !! any other invalid argument
     integer, parameter, public :: HD_OUTSIDE_VALIDITY = 19 !! alpha outside the range where the method is valid
     integer, parameter, public :: HD_INACCURATE = 20       !! the method's error estimate exceeds the accuracy asked
+    integer, parameter, public :: HD_BAD_RADIUS = 21       !! sphere radius not finite and positive
+    integer, parameter, public :: HD_BAD_DENSITY = 22      !! density not finite and positive
+    integer, parameter, public :: HD_BAD_MODULUS = 23      !! Young's modulus not finite and positive
+    integer, parameter, public :: HD_BAD_POISSON = 24      !! Poisson's ratio outside (-1, 0.5]
 
     !> Contact ends when the overlap returns to zero (default).
     integer, parameter, public :: HD_END_OVERLAP = 0
@@ -37,7 +41,7 @@ module hertzdamp_status
     !> Length of the stored messages (each fits, blank-padded).
     integer, parameter, public :: hertzdamp_message_len = 192
     !> Largest status code with a message of its own.
-    integer, parameter, public :: hertzdamp_max_status = 20
+    integer, parameter, public :: hertzdamp_max_status = 24
     !> The message of every status code 0..hertzdamp_max_status, then that of unknown
     !> codes: the one table behind hertzdamp_message and the C hertzdamp_strerror.
     character(len=hertzdamp_message_len), parameter, public :: &
@@ -68,6 +72,10 @@ module hertzdamp_status
             'fit: alpha >= 0, force alpha <= 52.5; compact: force alpha <= 2.9); use rk45', &
         'inaccurate: the method''s own error estimate exceeds the accuracy asked (or alpha lies ' // &
             'beyond its validated range); use fit or rk45', &
+        'invalid radius: must be finite and positive', &
+        'invalid density: must be finite and positive', &
+        'invalid Young''s modulus: must be finite and positive', &
+        'invalid Poisson''s ratio: must lie in (-1, 0.5]', &
         'unknown status code']
 
     public :: hertzdamp_message, hertzdamp_end_name

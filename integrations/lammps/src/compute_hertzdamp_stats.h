@@ -1,0 +1,29 @@
+/* -*- c++ -*-
+ * compute ID all hertzdamp/stats: global vector of per-contact statistics of
+ * pair_style granular/hertzdamp, summed / reduced over all processors:
+ *   1 contacts   2 u_min  3 u_max  4 k_min  5 k_max  6 d_min  7 d_max
+ *   8 contacts with k = k_phys  9 contacts ended  10 e_min  11 e_max
+ *   12 log rows not yet written  13 contacts carried through neighbor-list
+ *   rebuilds (per rebuild and processor; not a count of contacts)
+ * u = relative normal approach speed at onset (before the vmin floor); e = speed
+ * of separation / u, measured when the overlap ends.  Counts since pair_style.
+ */
+#ifndef HERTZDAMP_COMPUTE_HERTZDAMP_STATS_H
+#define HERTZDAMP_COMPUTE_HERTZDAMP_STATS_H
+
+#include "compute.h"
+#include "hertzdamp_lammps.h"
+
+namespace HertzdampLammps {
+
+class ComputeHertzdampStats : public LAMMPS_NS::Compute {
+ public:
+  ComputeHertzdampStats(LAMMPS *lmp, int narg, char **arg);
+  ~ComputeHertzdampStats() override;
+  void init() override {}
+  void compute_vector() override;
+};
+
+}    // namespace HertzdampLammps
+
+#endif

@@ -1,0 +1,51 @@
+/* -*- c++ -*-
+ * fix hertzdamp/wall: flat walls with the same per-contact rule as
+ * pair_style granular/hertzdamp (effective mass = particle mass, R* = R).
+ *
+ * fix ID group hertzdamp/wall (steps N | tc T | fixed K D) e E [end overlap|force]
+ *     [vmin V] [youngs Y poisson NU [wall_youngs YW wall_poisson NUW]] [log FILE]
+ *     (xplane|yplane|zplane) LO HI         (LO or HI may be NULL)
+ */
+#ifndef HERTZDAMP_FIX_HERTZDAMP_WALL_H
+#define HERTZDAMP_FIX_HERTZDAMP_WALL_H
+
+#include "fix.h"
+#include "hertzdamp_lammps.h"
+
+namespace HertzdampLammps {
+
+class FixHertzdampWall : public LAMMPS_NS::Fix {
+ public:
+  FixHertzdampWall(LAMMPS *lmp, int narg, char **arg);
+  ~FixHertzdampWall() override;
+  int setmask() override;
+  void init() override;
+  void setup(int vflag) override { post_force(vflag); }
+  void post_force(int vflag) override;
+  void post_run() override;
+  double compute_vector(int n) override;
+
+  void grow_arrays(int nmax) override;
+  void copy_arrays(int i, int j, int delflag) override;
+  void set_arrays(int i) override;
+  int pack_exchange(int i, double *buf) override;
+  int unpack_exchange(int nlocal, double *buf) override;
+  double memory_usage() override;
+
+  ContactBook book;
+
+ private:
+  enum { SLOT = 1 + NPAYLOAD, NCOL = 2 * SLOT };    // per side: active flag + payload
+  RuleSettings rule;
+  double e = 0.0, estar = 0.0;
+  int axis = -1;
+  int has_lo = 0, has_hi = 0;
+  double lo = 0.0, hi = 0.0;
+  double **wst = nullptr;
+  double cache[ContactBook::NSTATS];
+  LAMMPS_NS::bigint cache_step = -1;
+};
+
+}    // namespace HertzdampLammps
+
+#endif

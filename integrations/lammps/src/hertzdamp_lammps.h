@@ -1,0 +1,150 @@
+/* -*- c++ -*-
+ * hertzdamp LAMMPS plugin: parts shared by pair_style granular/hertzdamp and
+ * fix hertzdamp/wall.
+ *
+ *  - RuleSettings: how k and d are chosen at a contact onset (steps N | tc T |
+ *    fixed K D), the contact end (overlap | force), the speed floor vmin;
+ *  - contact_rule(): one call of the core library's C API per contact onset;
+ *  - ContactBook: per-contact statistics (reduced over all processors) and the
+ *    optional per-contact log file.
+ *
+ * Written against the LAMMPS 29 Sep 2021 headers that Debian 12 installs.
+ */
+#ifndef HERTZDAMP_LAMMPS_H
+#define HERTZDAMP_LAMMPS_H
+
+#include "lammps.h"
+#include "pointers.h"
+
+#include <hertzdamp.h>
+
+#include <string>
+#include <vector>
+
+namespace HertzdampLammps {
+
+using LAMMPS_NS::LAMMPS;
+
+// Messages go through the std::string overloads of Error/utils only (see fmtstub/).
+[[noreturn]] void fail_all(LAMMPS *lmp, const char *file, int line, const std::string &msg);
+[[noreturn]] void fail_one(LAMMPS *lmp, const char *file, int line, const std::string &msg);
+void warn(LAMMPS *lmp, const char *file, int line, const std::string &msg);
+void logmesg(LAMMPS *lmp, const std::string &msg);    // rank 0 only
+std::string fmt_g(double x);                          // "%.17g"
+double parse_double(LAMMPS *lmp, const char *what, const char *str);
+
+enum TcMode { TC_STEPS, TC_TIME, TC_FIXED };
+
+struct RuleSettings {
+  int tcmode = TC_STEPS;
+  double nsteps = 0.0;       // steps N: T_c = N dt
+  double tc = 0.0;           // tc T
+  double kfix = 0.0, dfix = 0.0;    // fixed K D (comparison mode: no rule)
+  int end = HERTZDAMP_END_OVERLAP;
+  double vmin = 0.0;         // floor of the impact speed used by the rule
+  int phase = 1;             // 1: weight the damping force's jumps by the contact phase (see README)
+  std::string logfile;       // per-contact log ("" = none)
+
+  // Parse one keyword at arg[iarg]; return the number of words used (0 = not ours).
+  int parse(LAMMPS *lmp, const char *cmd, int narg, char **arg, int iarg);
+  void check(LAMMPS *lmp, const char *cmd) const;
+  double contact_time(double dt) const { return tcmode == TC_STEPS ? nsteps * dt : tc; }
+  std::string describe() const;
+};
+
+// Result of the rule at one contact onset.
+struct Onset {
+  double k, d;      // stiffness [F/L^1.5], damping [M/T]
+  double u_used;    // impact speed given to the rule (after the vmin floor)
+  int bounded;      // 1 if k = k_phys (physical stiffness bound active)
+};
+
+// k and d for restitution e at impact speed u_raw (relative normal approach speed)
+// with effective mass m.  kphys > 0: bound by the physical Hertz stiffness.
+// Errors (no solution, bad input) stop the run on this processor with a message.
+Onset contact_rule(LAMMPS *lmp, const RuleSettings &rs, double e, double kphys, double m,
+                   double u_raw, double dt);
+
+// Contact phase correction.  The damping force jumps from 0 to d u at the onset
+// and (overlap end) from d zeta' to 0 at the end.  Velocity Verlet applies the
+// force of a step as an impulse centred on that step, so a jump at a fraction phi
+// of a step gives an impulse error d u (1/2 - phi) dt: an O(dt) error that depends
+// on where the contact starts in a step.  The correction adds d zeta' (phi - 1/2)
+// at the step that detects the onset (phi = fraction of the step already in
+// contact) and d zeta' (psi - 1/2) at the step that detects the overlap end
+// (psi = fraction of the last step still in contact).
+inline double phase_weight(double frac)
+{
+  if (!(frac > 0.0)) frac = 0.0;
+  if (frac > 1.0) frac = 1.0;
+  return frac - 0.5;
+}
+
+// E* from two materials: 1/E* = (1-nu1^2)/E1 + (1-nu2^2)/E2.
+inline double effective_modulus(double y1, double nu1, double y2, double nu2)
+{
+  return 1.0 / ((1.0 - nu1 * nu1) / y1 + (1.0 - nu2 * nu2) / y2);
+}
+
+// Per-contact payload kept for the duration of a contact (pair and wall alike).
+enum Payload {
+  P_K,          // stiffness
+  P_D,          // damping
+  P_UIN,        // measured approach speed at onset (before the vmin floor)
+  P_UUSED,      // speed given to the rule
+  P_M,          // effective mass
+  P_TON,        // onset time in steps (step of detection - overlap/(u dt))
+  P_PREV_OV,    // overlap at the last step computed
+  P_PREV_F,     // unclipped total normal force at the last step computed
+  P_TPREV,      // that step
+  P_TEND,       // force end: time in steps when the total force reached 0 (-1: not yet)
+  P_FLAGS,      // bit 0: k_phys bound active
+  NPAYLOAD
+};
+
+// Statistics and log of contacts; one per pair style / wall fix.
+class ContactBook {
+ public:
+  enum { NSTATS = 13 };
+  static const char *stat_name(int i);
+
+  void reset();
+  void onset(const Onset &o, double u_raw)
+  {
+    n_onset += 1;
+    if (o.bounded) n_bounded += 1;
+    lo_hi(umin, umax, u_raw);
+    lo_hi(kmin, kmax, o.k);
+    lo_hi(dmin, dmax, o.d);
+  }
+  // A finished contact: p = payload, tag_a/tag_b identify it, tend_steps = end time.
+  void finish(const double *p, double tag_a, double tag_b, double tend_steps, double u_out,
+              double dt);
+  void vector(LAMMPS *lmp, double *out) const;    // reduced over all processors
+  void open_log(LAMMPS *lmp, const std::string &file, const std::string &header);
+  void flush_log(LAMMPS *lmp);                     // gather to rank 0 and append
+  void summary(LAMMPS *lmp, const char *who);      // one line to screen and log
+
+ private:
+  static void lo_hi(double &lo, double &hi, double x)
+  {
+    if (x < lo) lo = x;
+    if (x > hi) hi = x;
+  }
+  double n_onset = 0, n_bounded = 0, n_end = 0;
+
+ public:
+  double carried = 0;    // contacts carried through per-atom records (neighbor-list builds)
+
+ private:
+  double umin = 1e300, umax = -1e300, kmin = 1e300, kmax = -1e300, dmin = 1e300, dmax = -1e300;
+  double emin = 1e300, emax = -1e300;
+  std::string logfile;
+  std::vector<double> logbuf;
+};
+
+enum { LOG_NCOL = 13 };
+
+}    // namespace HertzdampLammps
+
+#endif

@@ -1,0 +1,90 @@
+"""Helpers for the LAMMPS plugin tests and figure scripts: run lmp (optionally
+under mpirun), read the per-contact log, call the core library's C API (ctypes),
+count assertions."""
+import ctypes
+import os
+import subprocess
+import sys
+
+ROOT = os.path.abspath(os.path.join(os.path.dirname(__file__), "..", "..", ".."))
+BUILD = os.path.join(ROOT, "build", "lammps")
+LOAD = os.path.join(BUILD, "load.lmp")
+EXAMPLES = os.path.join(ROOT, "integrations", "lammps", "examples")
+LOG_COLS = ["t_on", "tag_i", "tag_j", "m", "u_in", "u_used", "k", "d", "bounded", "tc",
+            "u_out", "e", "t_end"]
+
+
+def lmp(infile, variables, cwd, np=1, check=True):
+    """Run Debian's lmp on infile with -var NAME VALUE; return its screen output."""
+    cmd = []
+    if np > 1:
+        cmd = ["mpirun", "-np", str(np), "--oversubscribe"]
+        if os.geteuid() == 0:
+            cmd.append("--allow-run-as-root")
+    cmd += ["lmp", "-in", infile, "-log", "none", "-var", "load", LOAD]
+    for k, v in variables.items():
+        cmd += ["-var", k, str(v)]
+    r = subprocess.run(cmd, cwd=cwd, stdout=subprocess.PIPE, stderr=subprocess.STDOUT,
+                       universal_newlines=True)
+    if check and (r.returncode != 0 or "ERROR" in r.stdout):
+        sys.stderr.write(r.stdout[-3000:])
+        raise RuntimeError("lmp failed: " + " ".join(cmd))
+    return r.stdout
+
+
+def read_log(path):
+    rows = []
+    with open(path) as f:
+        for line in f:
+            if line.startswith("#") or not line.strip():
+                continue
+            vals = [float(x) for x in line.split()]
+            rows.append(dict(zip(LOG_COLS, vals)))
+    return rows
+
+
+class CApi:
+    """The core library's C API through ctypes."""
+
+    def __init__(self):
+        self.lib = ctypes.CDLL(os.path.join(BUILD, "core", "lib", "libhertzdamp.so"))
+        D, P, I = ctypes.c_double, ctypes.POINTER(ctypes.c_double), ctypes.c_int
+        self._inv = self.lib.hertzdamp_c_invert
+        self._inv.argtypes = [D, D, D, D, I, P, P]
+        self._fwd = self.lib.hertzdamp_c_forward
+        self._fwd.argtypes = [D, D, D, D, I, P, P]
+
+    @staticmethod
+    def _end(end):
+        return 1 if end == "force" else 0
+
+    def invert(self, e, tc, m, u, end):
+        k, d = ctypes.c_double(), ctypes.c_double()
+        st = self._inv(e, tc, m, u, self._end(end), ctypes.byref(k), ctypes.byref(d))
+        if st != 0:
+            raise RuntimeError("invert status %d" % st)
+        return k.value, d.value
+
+    def forward(self, k, d, m, u, end):
+        e, tc = ctypes.c_double(), ctypes.c_double()
+        st = self._fwd(k, d, m, u, self._end(end), ctypes.byref(e), ctypes.byref(tc))
+        if st != 0:
+            raise RuntimeError("forward status %d" % st)
+        return e.value, tc.value
+
+
+class Checks:
+    def __init__(self, name):
+        self.name, self.passed, self.failed = name, 0, 0
+
+    def check(self, what, ok, detail=""):
+        if ok:
+            self.passed += 1
+        else:
+            self.failed += 1
+            print("FAIL %s %s" % (what, detail))
+        return ok
+
+    def finish(self):
+        print("%s: %d passed, %d failed" % (self.name, self.passed, self.failed))
+        sys.exit(1 if self.failed else 0)

@@ -1,0 +1,169 @@
+"""Figures of the LAMMPS plugin, measured on the granular gas example
+(examples/in.gas: 2925 steel beads, 20 steps per contact, e = 0.5, overlap end).
+
+  python3 integrations/lammps/tools/figures.py [--steps S] [--repeats R]
+
+writes integrations/lammps/results/:
+  e_vs_u.dat, e_vs_u.png   achieved e per contact against the impact speed, with
+                           per-contact k and d (granular/hertzdamp steps 20) and with
+                           the best single fixed (k, d) (granular/hertzdamp fixed K D)
+  speed.txt                cost per time step of granular/hertzdamp against stock
+                           pair_style granular hertz ... damping velocity with that
+                           fixed (k, d): medians of R runs measured side by side
+  summary.txt              the numbers quoted in README.md
+Run `make lammps` first.
+"""
+import argparse
+import math
+import os
+import re
+import statistics
+import subprocess
+import sys
+import tempfile
+
+sys.dont_write_bytecode = True
+sys.path.insert(0, os.path.join(os.path.dirname(__file__), "..", "tests"))
+import hdlmp  # noqa: E402
+
+RESULTS = os.path.join(hdlmp.ROOT, "integrations", "lammps", "results")
+GAS = os.path.join(hdlmp.EXAMPLES, "in.gas")
+E, NSTEP, DT = 0.5, 20, 1.0e-6
+
+
+def e_of_alpha(api, alpha):
+    # k = m = u = 1: alpha = d
+    return api.forward(1.0, alpha, 1.0, 1.0, "overlap")[0]
+
+
+def best_fixed(api, u, m):
+    """alpha0 at the median speed minimising sum (e(alpha0 (u/u_ref)^-1/5) - E)^2."""
+    u_ref = statistics.median(u)
+    grid = [0.02 * i for i in range(1, 56)]      # alpha in (0, 1.1]
+    table = [(a, e_of_alpha(api, a)) for a in grid]
+
+    def e_at(alpha):
+        for (a0, e0), (a1, e1) in zip(table, table[1:]):
+            if a0 <= alpha <= a1:
+                return e0 + (e1 - e0) * (alpha - a0) / (a1 - a0)
+        return table[0][1] if alpha < table[0][0] else 0.0
+
+    def cost(a0):
+        return sum((e_at(a0 * (x / u_ref) ** -0.2) - E) ** 2 for x in u)
+
+    lo, hi = 0.05, 1.0
+    for _ in range(60):                            # golden section
+        a = hi - 0.618 * (hi - lo)
+        b = lo + 0.618 * (hi - lo)
+        if cost(a) < cost(b):
+            hi = b
+        else:
+            lo = a
+    a0 = 0.5 * (lo + hi)
+    e0 = e_of_alpha(api, a0)
+    k, d = api.invert(e0, NSTEP * DT, m, u_ref, "overlap")
+    return k, d, a0, e0, u_ref
+
+
+def timing(out):
+    loop = float(re.search(r"Loop time of ([0-9.eE+-]+)", out).group(1))
+    pair = float(re.search(r"^Pair\s*\|\s*([0-9.eE+-]+)", out, re.M).group(1))
+    steps = int(re.search(r"for (\d+) steps", out).group(1))
+    return loop / steps, pair / steps
+
+
+def bins(rows, edges):
+    out = []
+    for lo, hi in zip(edges, edges[1:]):
+        es = sorted(r["e"] for r in rows if lo <= r["u_in"] < hi)
+        if len(es) < 5:
+            continue
+        q = lambda f: es[min(len(es) - 1, int(f * len(es)))]
+        out.append((math.sqrt(lo * hi), len(es), statistics.median(es), q(0.1), q(0.9)))
+    return out
+
+
+def main():
+    ap = argparse.ArgumentParser()
+    ap.add_argument("--steps", type=int, default=20000)
+    ap.add_argument("--repeats", type=int, default=7)
+    args = ap.parse_args()
+    api = hdlmp.CApi()
+    tmp = tempfile.mkdtemp(prefix="hd_lmp_fig_")
+    base = {"n": 15, "steps": args.steps, "N": NSTEP, "e": E, "data": "start.data"}
+    hdlmp.lmp(GAS, dict(base, mkdata=1), tmp)
+
+    hdlmp.lmp(GAS, dict(base, usedata=1, log="adaptive.log", stats="a.stats"), tmp)
+    ad = [r for r in hdlmp.read_log(os.path.join(tmp, "adaptive.log"))]
+    m = ad[0]["m"]
+    k, d, a0, e0, u_ref = best_fixed(api, [r["u_in"] for r in ad], m)
+    hdlmp.lmp(GAS, dict(base, usedata=1, rule="fixed", K=repr(k), D=repr(d), log="fixed.log",
+                        stats="f.stats"), tmp)
+    fx = hdlmp.read_log(os.path.join(tmp, "fixed.log"))
+
+    umin = min(r["u_in"] for r in ad + fx)
+    umax = max(r["u_in"] for r in ad + fx)
+    nb = 24
+    edges = [umin * (umax / umin) ** (i / nb) for i in range(nb + 1)]
+    edges[-1] *= 1.0001
+    ba, bf = bins(ad, edges), bins(fx, edges)
+    with open(os.path.join(RESULTS, "e_vs_u.dat"), "w") as f:
+        f.write("# gas: 2925 beads, %d steps, N = %d, target e = %g (overlap end)\n" % (args.steps, NSTEP, E))
+        f.write("# best fixed pair: k %.6e d %.6e (alpha %.4f at the median impact speed %.4f m/s)\n" % (k, d, a0, u_ref))
+        f.write("# rule u_mid count e_median e_p10 e_p90   (rule 1 = per-contact k, d; 2 = fixed k, d)\n")
+        for tag, b in ((1, ba), (2, bf)):
+            for row in b:
+                f.write("%d %.6e %d %.6f %.6f %.6f\n" % ((tag,) + row))
+        f.write("\n\n# model curve: e of the fixed pair in the continuous model (library forward)\n")
+        for i in range(60):
+            u = umin * (umax / umin) ** (i / 59)
+            f.write("3 %.6e 0 %.6f 0 0\n" % (u, api.forward(k, d, m, u, "overlap")[0]))
+
+    def spread(rows):
+        es = sorted(r["e"] for r in rows)
+        rms = math.sqrt(sum((x - E) ** 2 for x in es) / len(es))
+        return statistics.median(es), es[len(es) // 10], es[9 * len(es) // 10], rms, len(es)
+
+    sa, sf = spread(ad), spread(fx)
+    gp = """set terminal pngcairo size 900,600
+set output '%s'
+set logscale x
+set xlabel 'impact speed u_{in} (relative normal approach speed at onset) [m/s]'
+set ylabel 'achieved restitution e per contact'
+set key bottom right
+set title 'granular gas, 2925 beads, 20 steps per contact, target e = 0.5'
+set yrange [0:1]
+plot '%s' index 0 u ($1==1?$2:NaN):4:5:6 with yerrorlines lw 2 title 'per-contact k, d (granular/hertzdamp): median, 10-90%%', \\
+     '' index 0 u ($1==2?$2:NaN):4:5:6 with yerrorlines lw 2 title 'best single fixed (k, d): median, 10-90%%', \\
+     '' index 1 u 2:4 with lines dt 2 lw 1 title 'fixed (k, d), continuous model', \\
+     %g with lines lc rgb 'black' title 'target'
+""" % (os.path.join(RESULTS, "e_vs_u.png"), os.path.join(RESULTS, "e_vs_u.dat"), E)
+    subprocess.run(["gnuplot"], input=gp, universal_newlines=True, check=True)
+
+    # cost per time step, side by side: hertzdamp (adaptive) vs stock granular with (k, d)
+    t_hd, t_st, p_hd, p_st, ratio, pratio = [], [], [], [], [], []
+    for _ in range(args.repeats):
+        a = timing(hdlmp.lmp(GAS, dict(base, usedata=1, log="t.log", stats="t.stats"), tmp))
+        s = timing(hdlmp.lmp(GAS, dict(base, usedata=1, rule="stock", K=repr(k), D=repr(d),
+                                       log="t.log", stats="t.stats"), tmp))
+        t_hd.append(a[0]); t_st.append(s[0]); p_hd.append(a[1]); p_st.append(s[1])
+        ratio.append(a[0] / s[0]); pratio.append(a[1] / s[1])
+    med = statistics.median
+    with open(os.path.join(RESULTS, "speed.txt"), "w") as f:
+        f.write("# cost per time step, gas example (2925 beads, %d steps, 1 process), %d pairs of runs side by side\n" % (args.steps, args.repeats))
+        f.write("# run hertzdamp_loop_s stock_loop_s hertzdamp_pair_s stock_pair_s loop_ratio pair_ratio\n")
+        for i in range(args.repeats):
+            f.write("%d %.4e %.4e %.4e %.4e %.4f %.4f\n" % (i + 1, t_hd[i], t_st[i], p_hd[i], p_st[i], ratio[i], pratio[i]))
+        f.write("median %.4e %.4e %.4e %.4e %.4f %.4f\n" % (med(t_hd), med(t_st), med(p_hd), med(p_st), med(ratio), med(pratio)))
+    with open(os.path.join(RESULTS, "summary.txt"), "w") as f:
+        f.write("command: python3 integrations/lammps/tools/figures.py --steps %d --repeats %d\n" % (args.steps, args.repeats))
+        f.write("best fixed pair: k %.6e N/m^1.5, d %.6e kg/s (alpha %.4f at u = %.4f m/s, e %.4f there)\n" % (k, d, a0, u_ref, e0))
+        f.write("impact speeds: %.4g .. %.4g m/s\n" % (umin, umax))
+        for name, s in (("per-contact k, d", sa), ("fixed k, d", sf)):
+            f.write("%-17s contacts %d, e median %.4f, 10%%..90%% %.4f..%.4f, rms(e - %.1f) %.4f\n" % ((name, s[4], s[0], s[1], s[2], E, s[3])))
+        f.write("cost per step, median of %d: loop %.4f x stock, pair %.4f x stock\n" % (args.repeats, med(ratio), med(pratio)))
+    print(open(os.path.join(RESULTS, "summary.txt")).read())
+
+
+if __name__ == "__main__":
+    main()

@@ -522,7 +522,11 @@ contains
         call buf%add('  "k_given": ' // opt(o%k_known, o%k_known > 0.0_wp) // ',')
         call buf%add('  "end": ' // json_string(hertzdamp_end_name(o%iend)) // ',')
         call buf%add('  "method": ' // json_string(trim(merge('fit ', 'rk45', o%method == HD_METHOD_FIT))) // ',')
-        call buf%add('  "damping": ' // json_string(trim(merge('auto    ', 'one law ', auto))) // ',')
+        if (auto) then
+            call buf%add('  "damping": "auto",')
+        else
+            call buf%add('  "damping": ' // json_string(cal_law_name(chosen)) // ',')
+        end if
         call buf%add('  "weighted": ' // trim(merge('true ', 'false', dat%weighted)) // ',')
         call buf%add('  "criterion": "smallest AIC (chi2 + 2p with sigmas, n ln(RSS/n) + 2p without)",')
         call buf%add('  "chosen": ' // json_string(cal_law_name(chosen)) // ',')
@@ -597,8 +601,8 @@ contains
             nd = max(0, 5 - floor(log10(abs(x))))
             write (f, '(a,i0,a)') '(f0.', nd, ')'
             write (b, f) x
-            if (b(1:1) == '.') b = '0' // b
-            if (b(1:2) == '-.') b = '-0' // b(2:)
+            if (b(1:1) == '.') b = '0' // b(1:len(b) - 1)
+            if (b(1:2) == '-.') b = '-0' // b(2:len(b) - 1)
         else
             write (b, '(es12.5)') x
         end if

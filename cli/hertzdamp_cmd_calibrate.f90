@@ -439,8 +439,13 @@ contains
         s = s // ' at speeds ' // g(minval(dat%u)) // ' to ' // g(maxval(dat%u)) // ' m/s, '
         s = s // trim(merge('weighted by the given sigmas', 'no sigmas given (unweighted)', dat%weighted))
         call buf%add(s)
-        call buf%add('# mass ' // g(o%mass) // ' kg; end ' // hertzdamp_end_name(o%iend) // '; method ' // &
-                     trim(merge('fit ', 'rk45', o%method == HD_METHOD_FIT)))
+        s = '# mass ' // g(o%mass) // ' kg; end ' // hertzdamp_end_name(o%iend) // '; method ' // &
+            trim(merge('fit ', 'rk45', o%method == HD_METHOD_FIT))
+        do i = 1, size(order)
+            if (res(order(i))%status == CAL_OK .and. res(order(i))%method /= o%method) s = s // ' (' // &
+                cal_law_name(order(i)) // ': rk45, the library has no fitted map of it yet)'
+        end do
+        call buf%add(s)
         if (res(l)%k_fitted) then
             call buf%add('# fitted: k and d (e identifies c = d k^(-2(1+q)/5), the contact times k)')
         else if (res(l)%kd_known) then
@@ -536,6 +541,7 @@ contains
             ok = res(l)%status == CAL_OK
             call buf%add('    {')
             call buf%add('      "damping": ' // json_string(cal_law_name(l)) // ', "q": ' // fmt_json(cal_law_q(l)) // &
+                         ', "method": ' // json_string(trim(merge('fit ', 'rk45', res(l)%method == HD_METHOD_FIT))) // &
                          ', "chosen": ' // trim(merge('true ', 'false', l == chosen)) // ', "status": ' // &
                          json_string(status_name(res(l))) // ', "message": ' // json_string(res(l)%message) // &
                          ', "note": ' // json_string(res(l)%note) // ',')

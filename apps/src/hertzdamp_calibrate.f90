@@ -75,7 +75,7 @@ module hertzdamp_calibrate
         real(wp) :: mass = 0.0_wp             !! effective mass m [kg], > 0
         real(wp) :: k_known = 0.0_wp          !! > 0: the stiffness is known and only d is fitted
         integer :: iend = HD_END_OVERLAP      !! contact-end definition
-        integer :: method = HD_METHOD_FIT     !! HD_METHOD_FIT or HD_METHOD_RK45 (checking)
+        integer :: method = HD_METHOD_FIT     !! HD_METHOD_FIT (rk45 for a law without a fit) or HD_METHOD_RK45
         real(wp) :: tol = hertzdamp_rk45_default_tol !! rk45 tolerance
         integer :: max_iter = 100             !! Levenberg-Marquardt iterations
         real(wp) :: xtol = 0.0_wp             !! convergence (GN correction in ln); 0: 1e-10 fit, 1e-9 rk45
@@ -94,6 +94,7 @@ module hertzdamp_calibrate
         integer :: n_par = 0                  !! parameters fitted (1 or 2)
         integer :: dof = 0                    !! n_e + n_tc - n_par
         integer :: iterations = 0             !! Levenberg-Marquardt iterations done
+        integer :: method = HD_METHOD_FIT     !! forward maps used: fit, or rk45 (asked, or no fit for the law)
         logical :: k_fitted = .false.         !! k estimated from the contact times
         logical :: kd_known = .false.         !! k and d both known (k fitted or given)
         real(wp) :: a = 0.0_wp                !! A = alpha at u = 1 m/s [(m/s)^(-s)]
@@ -135,7 +136,7 @@ module hertzdamp_calibrate
         end subroutine dgesvd
     end interface
 
-    public :: cal_make_data, cal_check, cal_fit, cal_auto, cal_model, cal_gamma_q
+    public :: cal_make_data, cal_check, cal_fit, cal_auto, cal_model, cal_method, cal_gamma_q
 
 contains
 
@@ -484,14 +485,16 @@ contains
         res%message = ''
         res%note = ''
         o = opts
-        if (.not. (o%xtol > 0.0_wp)) o%xtol = merge(1.0e-10_wp, 1.0e-9_wp * max(1.0_wp, o%tol / 1.0e-13_wp), &
-                                                     o%method == HD_METHOD_FIT)
         call cal_check(dat, o, st, msg)
         if (st /= CAL_OK) then
             res%status = st
             res%message = msg
             return
         end if
+        o%method = cal_method(law, o%method)
+        res%method = o%method
+        if (.not. (o%xtol > 0.0_wp)) o%xtol = merge(1.0e-10_wp, 1.0e-9_wp * max(1.0_wp, o%tol / 1.0e-13_wp), &
+                                                     o%method == HD_METHOD_FIT)
         st = cal_law_supported(law, o%method)
         if (st /= HD_OK) then
             res%status = merge(CAL_NOT_SUPPORTED, CAL_BAD_DATA, st == HD_NOT_SUPPORTED)
@@ -705,6 +708,16 @@ contains
         end if
     end subroutine cal_auto
 
+    !> The method used for a law: `fit` becomes `rk45` for a law the library has no
+    !> fitted map of yet (the reference integrator: the same answer, slower).
+    pure integer function cal_method(law, method) result(used)
+        integer, intent(in) :: law      !! CAL_LAW_*
+        integer, intent(in) :: method   !! HD_METHOD_FIT or HD_METHOD_RK45
+        used = method
+        if (method == HD_METHOD_FIT .and. cal_law_supported(law, HD_METHOD_FIT) == HD_NOT_SUPPORTED .and. &
+            cal_law_supported(law, HD_METHOD_RK45) == HD_OK) used = HD_METHOD_RK45
+    end function cal_method
+
     !> The fitted model at impact speeds u: e, and T_c when k is known (tc = 0
     !> otherwise).  status HD_OK or the forward map's failure (then e = tc = 0 there).
     pure elemental subroutine cal_model(law, opts, a, k, u, e, tc, status)
@@ -718,8 +731,8 @@ contains
         integer, intent(out) :: status          !! HD_OK or the failure
         real(wp) :: tau, de, dtau
         tc = 0.0_wp
-        call cal_forward(law, opts%iend, opts%method, a * u**cal_law_speed_exponent(law), e, tau, de, dtau, &
-                         status, opts%tol)
+        call cal_forward(law, opts%iend, cal_method(law, opts%method), a * u**cal_law_speed_exponent(law), e, tau, &
+                         de, dtau, status, opts%tol)
         if (status == HD_OK .and. k > 0.0_wp) tc = (opts%mass / (k * sqrt(u)))**0.4_wp * tau
     end subroutine cal_model
 

@@ -131,7 +131,7 @@ contains
     end subroutine test_gamma_q
 
     !> The exact derivative of the fit against central differences of the core's fit
-    !> (inside a piece: h = 1e-6 alpha) and of rk45 (tol 1e-14); rk45 differences (the
+    !> (inside a piece: h = 1e-5 alpha) and of rk45 (tol 1e-14); rk45 differences (the
     !> `rk45` method) against the fit derivative.
     subroutine test_derivatives()
         real(wp) :: a, h, e, tau, de, dtau, ep, tp, em, tm, worst(3), e2, t2, de2, dt2, amax, gap
@@ -146,7 +146,7 @@ contains
                 ! steps small against alpha and, for the overlap, against alpha_c - alpha
                 gap = a
                 if (iend == HD_END_OVERLAP) gap = min(a, hertzdamp_fit_alpha_c - a)
-                h = 1.0e-6_wp * gap
+                h = 1.0e-5_wp * gap
                 call hertzdamp_fit_forward(a + h, iend, ep, tp, sp)
                 call hertzdamp_fit_forward(a - h, iend, em, tm, sm)
                 if (st /= HD_OK .or. sp /= HD_OK .or. sm /= HD_OK) then

@@ -353,37 +353,52 @@ contains
         if (all(ieee_is_finite(r)) .and. all(ieee_is_finite(jac))) status = CAL_OK
     end subroutine evaluate
 
-    !> alpha with e(alpha) = e_target for one law (bisection on the forward map), for the
-    !> starting point; 0 for e = 1, the largest alpha reached when e is below the law's range.
+    !> alpha with e(alpha) = e_target for one law, to 1e-6 relative (a starting point
+    !> only): from the first-order guess (1 - e)/2, a geometric bracket and geometric
+    !> bisection on the forward map; 0 for e = 1, the largest alpha reached when e is
+    !> below the law's range.
     pure real(wp) function alpha_of_e(law, opts, e_target) result(alpha)
         integer, intent(in) :: law
         type(cal_options), intent(in) :: opts
         real(wp), intent(in) :: e_target
-        real(wp) :: lo, hi, mid, e, tau, de, dtau
-        integer :: it, st, method
+        real(wp) :: lo, hi, mid
+        integer :: it, method
         alpha = 0.0_wp
         if (e_target >= 1.0_wp) return
-        method = opts%method
-        if (cal_law_supported(law, HD_METHOD_FIT) == HD_OK) method = HD_METHOD_FIT
+        method = cal_method(law, opts%method)
         lo = 0.0_wp
-        hi = 0.5_wp
-        do it = 1, 40   ! bracket: e(hi) <= e_target, or hi beyond the law's range
-            call cal_forward(law, opts%iend, method, hi, e, tau, de, dtau, st, opts%tol)
-            if (st /= HD_OK .or. e <= e_target) exit
+        hi = max(0.5_wp * (1.0_wp - e_target), 1.0e-12_wp)
+        do it = 1, 200   ! bracket: e(lo) > e_target >= e(hi) (or hi beyond the law's range)
+            if (.not. above(hi)) exit
             lo = hi
             hi = 2.0_wp * hi
         end do
-        do it = 1, 100
-            mid = 0.5_wp * (lo + hi)
-            call cal_forward(law, opts%iend, method, mid, e, tau, de, dtau, st, opts%tol)
-            if (st == HD_OK .and. e > e_target) then
+        if (lo == 0.0_wp) then
+            lo = hi
+            do it = 1, 200
+                lo = 0.5_wp * lo
+                if (above(lo)) exit
+            end do
+        end if
+        do it = 1, 60
+            if (hi <= lo * (1.0_wp + 1.0e-6_wp)) exit
+            mid = sqrt(lo * hi)
+            if (above(mid)) then
                 lo = mid
             else
                 hi = mid
             end if
         end do
         alpha = lo
-        if (.not. (alpha > 0.0_wp)) alpha = hi
+    contains
+        !> The law rebounds at a with e(a) > e_target.
+        pure logical function above(a)
+            real(wp), intent(in) :: a
+            real(wp) :: e, tau, de, dtau
+            integer :: st
+            call cal_forward(law, opts%iend, method, a, e, tau, de, dtau, st, opts%tol)
+            above = st == HD_OK .and. e > e_target
+        end function above
     end function alpha_of_e
 
     !> The starting point: ln A from the mean of ln(alpha_i u_i^-s) over the rows with

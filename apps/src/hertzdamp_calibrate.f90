@@ -19,8 +19,10 @@
 !> dgesvd); the Jacobian is exact (hertzdamp_calibrate_maps).  Converged when the
 !> Gauss-Newton correction J^+ r (the linearised distance to the optimum) is below
 !> xtol in every ln-parameter, i.e. the parameters are known to xtol relative (1e-10
-!> with the fit), or below 1e-6 of each parameter's standard uncertainty (noisy data:
-!> closer than that the sum of squares cannot tell two points apart in double precision).
+!> with the fit), or below 1e-4 of each parameter's standard uncertainty (noisy data:
+!> near the optimum the sum of squares cannot tell two points apart in double precision,
+!> least of all with the reference integrator in the loop); that last correction is
+!> then applied as well.
 !>
 !> Uncertainties: covariance (J^T J)^(-1) of theta at the optimum, times s^2 = chi2/dof
 !> when no sigmas were given; first-order propagation to k, d and c.  Goodness of fit:
@@ -55,8 +57,8 @@ module hertzdamp_calibrate
     !> the parameters are not identified.
     real(wp), parameter :: rank_tol = 1.0e-8_wp
     !> Convergence relative to the statistics: the Gauss-Newton correction below this
-    !> fraction of each parameter's standard uncertainty.
-    real(wp), parameter :: stat_tol = 1.0e-6_wp
+    !> fraction of each parameter's standard uncertainty (then applied once more).
+    real(wp), parameter :: stat_tol = 1.0e-4_wp
 
     !> Measurements: one row per impact.
     type, public :: cal_data
@@ -571,6 +573,24 @@ contains
                 end do
                 if (.not. dat%weighted) sd(1:np) = sd(1:np) * sqrt(cost / (nobs - np))
                 if (res%gn_step <= o%xtol .or. all(abs(gn) <= stat_tol * sd(1:np))) then
+                    ! converged: apply the last Gauss-Newton correction too (the sum of
+                    ! squares may no longer resolve it, the correction itself is exact)
+                    tn_ = theta - gn
+                    call evaluate(dat, law, o, use_tc, tn_, lnk_fixed, we, wt, rn, jn, an, en, tn, st)
+                    if (st == CAL_OK) then
+                        call scaled_svd(jn, colnorm(1:np), u, sv(1:np), vt(1:np, 1:np), info)
+                        if (info == 0) then
+                            theta = tn_
+                            r = rn
+                            jac = jn
+                            alpha = an
+                            efit = en
+                            tcfit = tn
+                            cost = sum(r**2)
+                        else
+                            call scaled_svd(jac, colnorm(1:np), u, sv(1:np), vt(1:np, 1:np), info)
+                        end if
+                    end if
                     res%status = CAL_OK
                     exit
                 end if

@@ -10,7 +10,8 @@ module hertzdamp_cli
                                 HD_MAX_STEPS, HD_STEP_UNDERFLOW, HD_NO_CONVERGENCE
     use, intrinsic :: iso_fortran_env, only: output_unit, error_unit
     use, intrinsic :: iso_c_binding, only: c_int, c_char, c_size_t, c_long
-    use, intrinsic :: ieee_arithmetic, only: ieee_is_finite, ieee_is_nan
+    use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
+    use hertzdamp_cli_text, only: one_line, fmt_csv, fmt_text, fmt_json, json_string, fmt_short, itoa
     implicit none
     private
 
@@ -70,9 +71,10 @@ module hertzdamp_cli
         end subroutine c_exit
     end interface
 
-    public :: parse_args, parse_real, parse_real_list, parse_range, parse_int, parse_choice
-    public :: exit_code_of, write_failed
-    public :: fail, quit, fmt_csv, fmt_text, fmt_json, json_string, csv_join, pad
+    public :: parse_args, parse_real, parse_real_list, parse_range, parse_sweep, required_sweep, parse_int, parse_choice
+    public :: check_combinations
+    public :: exit_code_of, write_failed, write_stdout
+    public :: fail, quit, fmt_csv, fmt_text, fmt_json, fmt_short, json_string, csv_join, pad
 
 contains
 
@@ -103,8 +105,8 @@ contains
     !> Print `hertzdamp: message` on stderr and exit with `code` (stdout untouched).
     subroutine fail(code, message)
         integer, intent(in) :: code            !! exit code
-        character(len=*), intent(in) :: message !! one line
-        write (error_unit, '(a)') 'hertzdamp: ' // message
+        character(len=*), intent(in) :: message !! the message (control characters are escaped)
+        write (error_unit, '(a)') 'hertzdamp: ' // one_line(message)
         flush (error_unit)
         call quit(code)
     end subroutine fail
@@ -318,27 +320,90 @@ contains
         end do
     end function parse_real_list
 
-    !> `A0:A1:N`: N equally spaced values from A0 to A1 (N >= 1; N = 1 gives A0).
+    !> `A0:A1:N`: N equally spaced values from A0 to A1 (N >= 1; N = 1 gives A0), or
+    !> `A0:A1:logN`: N values spaced evenly in log from A0 to A1 (A0, A1 > 0).
     function parse_range(text, what) result(x)
         character(len=*), intent(in) :: text, what
         real(wp), allocatable :: x(:)
         integer :: i1, i2, n, i
         real(wp) :: a0, a1
+        logical :: logscale
+        character(len=:), allocatable :: count
         i1 = index(text, ':')
         i2 = index(text, ':', back=.true.)
         if (i1 == 0 .or. i2 == i1) call fail(EXIT_USAGE, 'range "' // text // '" for ' // what // &
-                                             ' must be A0:A1:N')
+                                             ' must be A0:A1:N or A0:A1:logN')
         a0 = parse_real(text(1:i1 - 1), what)
         a1 = parse_real(text(i1 + 1:i2 - 1), what)
-        n = parse_int(text(i2 + 1:), what // ' (number of points)')
+        count = text(i2 + 1:)
+        logscale = .false.
+        if (len(count) >= 3) then
+            logscale = count(1:3) == 'log'
+            if (logscale) count = count(4:)
+        end if
+        n = parse_int(count, what // ' (number of points in ' // text // ')')
         if (n < 1) call fail(EXIT_USAGE, 'range "' // text // '" for ' // what // ' needs N >= 1')
-        if (n > max_list_length) call fail(EXIT_USAGE, 'range "' // text // '" for ' // what // ' has too many points')
+        if (n > max_list_length) call fail(EXIT_USAGE, 'range "' // text // '" for ' // what // &
+                                           ' has more than ' // itoa(max_list_length) // ' points')
+        if (logscale .and. .not. (a0 > 0.0_wp .and. a1 > 0.0_wp)) then
+            call fail(EXIT_USAGE, 'logarithmic range "' // text // '" for ' // what // ' needs A0 > 0 and A1 > 0')
+        end if
         allocate (x(n))
         x(1) = a0
-        do i = 2, n
-            x(i) = a0 + (a1 - a0) * real(i - 1, wp) / real(n - 1, wp)
+        do i = 2, n - 1
+            if (logscale) then
+                x(i) = exp(log(a0) + (log(a1) - log(a0)) * real(i - 1, wp) / real(n - 1, wp))
+            else
+                x(i) = a0 + (a1 - a0) * (real(i - 1, wp) / real(n - 1, wp))
+            end if
         end do
+        if (n > 1) x(n) = a1
     end function parse_range
+
+    !> A sweep: comma-separated items, each a number, a range A0:A1:N or a logarithmic
+    !> range A0:A1:logN (see parse_range), e.g. `0.01,0.1:1:10,2:5:log4`.  At most
+    !> max_list_length values in all; exit 2 naming `what` otherwise.
+    function parse_sweep(text, what) result(x)
+        character(len=*), intent(in) :: text   !! the option's value
+        character(len=*), intent(in) :: what   !! the option's name, for messages
+        real(wp), allocatable :: x(:)
+        real(wp), allocatable :: part(:)
+        integer :: i, j, n
+        allocate (x(0))
+        j = 1
+        do i = 1, len(text) + 1
+            if (i <= len(text)) then
+                if (text(i:i) /= ',') cycle
+            end if
+            if (index(text(j:i - 1), ':') > 0) then
+                part = parse_range(text(j:i - 1), what)
+            else
+                part = [parse_real(text(j:i - 1), what)]
+            end if
+            n = size(x) + size(part)
+            if (n > max_list_length) call fail(EXIT_USAGE, 'too many values for ' // what // ' (at most ' // &
+                                               itoa(max_list_length) // ')')
+            x = [x, part]
+            j = i + 1
+        end do
+    end function parse_sweep
+
+    !> A required sweep option (exit 2 when it is missing).
+    function required_sweep(args, key) result(x)
+        type(cli_args), intent(in) :: args
+        character(len=*), intent(in) :: key    !! the option, e.g. '--velocity'
+        real(wp), allocatable :: x(:)
+        if (.not. args%has(key)) call fail(EXIT_USAGE, 'missing option ' // key // ' (see --help)')
+        x = parse_sweep(args%get(key, ''), key)
+    end function required_sweep
+
+    !> Exit 2 when the combinations of the swept lists exceed max_list_length rows.
+    subroutine check_combinations(sizes, names)
+        integer, intent(in) :: sizes(:)          !! number of values of each list
+        character(len=*), intent(in) :: names    !! the lists, for the message
+        if (product(real(sizes, wp)) > max_list_length) call fail(EXIT_USAGE, 'too many combinations of ' // &
+            names // ' (at most ' // itoa(max_list_length) // ' rows)')
+    end subroutine check_combinations
 
     !> Index (1-based) of `text` in the space-separated `choices`; exit 2 otherwise.
     integer function parse_choice(text, choices, what) result(k)
@@ -375,74 +440,45 @@ contains
         self%lines(self%n)%s = line
     end subroutine buffer_add
 
+    !> Write every line of the buffer to stdout (checked: exit 4 when it cannot be written).
     subroutine buffer_flush(self)
         class(cli_buffer), intent(in) :: self
-        character(kind=c_char), allocatable :: bytes(:)
-        integer :: i, j, n, pos
-        integer(c_long) :: w
-        flush (output_unit)
+        character(len=:), allocatable :: text
+        integer :: i, n, pos
         n = 0
         do i = 1, self%n
             n = n + len(self%lines(i)%s) + 1
         end do
-        allocate (bytes(max(n, 1)))
+        allocate (character(len=n) :: text)
         pos = 0
         do i = 1, self%n
-            do j = 1, len(self%lines(i)%s)
-                bytes(pos + j) = self%lines(i)%s(j:j)
-            end do
+            text(pos + 1:pos + len(self%lines(i)%s)) = self%lines(i)%s
             pos = pos + len(self%lines(i)%s) + 1
-            bytes(pos) = achar(10)
+            text(pos:pos) = achar(10)
         end do
-        ! all of it through write(2), checking every call (a full disk, a closed pipe)
+        call write_stdout(text)
+    end subroutine buffer_flush
+
+    !> Write `text` to stdout through write(2), checking every call: a full disk, a
+    !> closed pipe or /dev/full give one line on stderr and exit 4.
+    subroutine write_stdout(text)
+        character(len=*), intent(in) :: text   !! bytes to write (include the newlines)
+        character(kind=c_char), allocatable :: bytes(:)
+        integer :: j, n, pos
+        integer(c_long) :: w
+        flush (output_unit)
+        n = len(text)
+        allocate (bytes(max(n, 1)))
+        do j = 1, n
+            bytes(j) = text(j:j)
+        end do
         pos = 0
         do while (pos < n)
             w = c_write(1_c_int, bytes(pos + 1:), int(n - pos, c_size_t))
             if (w <= 0) call write_failed()
             pos = pos + int(w)
         end do
-    end subroutine buffer_flush
-
-    !> A number with 16 significant digits for CSV; 'inf', '-inf' or 'nan' if not finite.
-    function fmt_csv(x) result(s)
-        real(wp), intent(in) :: x
-        character(len=:), allocatable :: s
-        character(len=40) :: buf
-        if (ieee_is_nan(x)) then
-            s = 'nan'
-        else if (.not. ieee_is_finite(x)) then
-            s = merge('inf ', '-inf', x > 0.0_wp)
-            s = trim(s)
-        else
-            write (buf, '(es24.15e3)') x
-            s = trim(adjustl(buf))
-        end if
-    end function fmt_csv
-
-    !> A number for JSON: 16 significant digits, null when not finite.
-    function fmt_json(x) result(s)
-        real(wp), intent(in) :: x
-        character(len=:), allocatable :: s
-        if (.not. ieee_is_finite(x)) then
-            s = 'null'
-        else
-            s = fmt_csv(x)
-        end if
-    end function fmt_json
-
-    !> A number for aligned text: 12 significant digits in a field of width 19.
-    function fmt_text(x) result(s)
-        real(wp), intent(in) :: x
-        character(len=:), allocatable :: s
-        character(len=19) :: buf
-        if (.not. ieee_is_finite(x)) then
-            buf = ''
-            buf(19 - len(fmt_csv(x)) + 1:) = fmt_csv(x)
-        else
-            write (buf, '(es19.11)') x
-        end if
-        s = buf
-    end function fmt_text
+    end subroutine write_stdout
 
     !> Left-justify `s` in a field of `width` characters (right-justify if width < 0).
     function pad(s, width) result(r)
@@ -458,25 +494,6 @@ contains
             r(w - len(s) + 1:) = s
         end if
     end function pad
-
-    !> A JSON string literal (escapes quotes and backslashes).
-    function json_string(s) result(r)
-        character(len=*), intent(in) :: s
-        character(len=:), allocatable :: r
-        integer :: i
-        character(len=6) :: esc
-        r = '"'
-        do i = 1, len(s)
-            if (iachar(s(i:i)) < 32) then
-                write (esc, '(a,z4.4)') '\u', iachar(s(i:i))   ! control characters as \u00XX
-                r = r // esc
-                cycle
-            end if
-            if (s(i:i) == '"' .or. s(i:i) == '\') r = r // '\'
-            r = r // s(i:i)
-        end do
-        r = r // '"'
-    end function json_string
 
     !> Join the fields of a row with commas.
     function csv_join(fields) result(r)

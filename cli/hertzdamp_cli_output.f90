@@ -1,7 +1,16 @@
-!> Tables of results rendered as aligned text, CSV or JSON.
+!> Tables of results rendered as aligned text, CSV or JSON, in time linear in the
+!> number of cells: every cell is formatted once and the column widths of the text
+!> output are computed in one pass.
+!>
+!> A cell is a number, a string, a logical or empty (`none`: a quantity the row does
+!> not have, e.g. a row whose status is not ok, or a method that does not provide
+!> it): empty in CSV, null in JSON, '-' in text.  Strings come out as valid UTF-8
+!> (invalid bytes replaced, or escaped as \xNN in text, where control characters are
+!> escaped too), CSV fields are quoted where needed, JSON strings escaped.
 module hertzdamp_cli_output
     use hertzdamp_kinds, only: hertzdamp_rk
-    use hertzdamp_cli, only: cli_buffer, cli_line, fmt_csv, fmt_text, fmt_json, json_string, pad
+    use hertzdamp_cli, only: cli_buffer, cli_line
+    use hertzdamp_cli_text, only: fmt_csv, fmt_text, fmt_json, json_string, csv_field, one_line
     implicit none
     private
 
@@ -11,10 +20,13 @@ module hertzdamp_cli_output
     !> Names of the formats, in the order of the FORMAT_* constants.
     character(len=*), parameter, public :: format_choices = 'text csv json'
 
-    !> One cell: a number or a string.
+    integer, parameter :: CELL_NUM = 1, CELL_STR = 2, CELL_NONE = 3, CELL_BOOL = 4
+
+    !> One cell.
     type :: cell
-        logical :: is_num = .true.
+        integer :: kind = CELL_NONE
         real(wp) :: x = 0.0_wp
+        logical :: b = .false.
         character(len=:), allocatable :: s
     end type cell
 
@@ -26,7 +38,14 @@ module hertzdamp_cli_output
         integer :: nrow = 0
         integer :: col = 0
     contains
-        procedure :: set_columns, meta, num, str, render
+        procedure :: set_columns   !! comma-separated column names (call first)
+        procedure :: meta          !! a metadata pair: '# key: value' in text, a member in JSON, not in CSV
+        procedure :: num           !! append a number to the current row
+        procedure :: str           !! append a string
+        procedure :: bool          !! append a logical (true/false)
+        procedure :: none          !! append an empty cell
+        procedure :: num_or_none   !! append a number, or an empty cell when `have` is false
+        procedure :: render        !! render into a buffer in a FORMAT_*
     end type out_table
 
 contains
@@ -54,7 +73,7 @@ contains
         end do
     end subroutine set_columns
 
-    !> Add a metadata pair (printed as a comment in text, a field in JSON, omitted in CSV).
+    !> Add a metadata pair (printed as a comment in text, a member in JSON, omitted in CSV).
     subroutine meta(self, key, val)
         class(out_table), intent(inout) :: self
         character(len=*), intent(in) :: key, val
@@ -62,6 +81,8 @@ contains
         self%meta_val = [self%meta_val, cli_line(val)]
     end subroutine meta
 
+    !> Move to the next cell, starting a new row after the last column; the cell array
+    !> doubles when full (amortised constant time).
     subroutine next_cell(self)
         class(out_table), intent(inout) :: self
         type(cell), allocatable :: tmp(:, :)
@@ -77,21 +98,92 @@ contains
         self%col = self%col + 1
     end subroutine next_cell
 
-    !> Append a number to the current row (rows fill left to right).
+    !> A number.  NaN ("does not apply") is written as an absent cell, so no output
+    !> ever carries nan; an infinity stays (a no-rebound contact time is infinite:
+    !> `inf` in text and CSV, null in JSON).
     subroutine num(self, x)
         class(out_table), intent(inout) :: self
         real(wp), intent(in) :: x
         call next_cell(self)
-        self%cells(self%col, self%nrow) = cell(.true., x, '')
+        if (x == x) then
+            self%cells(self%col, self%nrow)%kind = CELL_NUM
+            self%cells(self%col, self%nrow)%x = x
+        else
+            self%cells(self%col, self%nrow)%kind = CELL_NONE
+        end if
     end subroutine num
 
-    !> Append a string to the current row.
     subroutine str(self, s)
         class(out_table), intent(inout) :: self
         character(len=*), intent(in) :: s
         call next_cell(self)
-        self%cells(self%col, self%nrow) = cell(.false., 0.0_wp, s)
+        self%cells(self%col, self%nrow)%kind = CELL_STR
+        self%cells(self%col, self%nrow)%s = s
     end subroutine str
+
+    subroutine bool(self, b)
+        class(out_table), intent(inout) :: self
+        logical, intent(in) :: b
+        call next_cell(self)
+        self%cells(self%col, self%nrow)%kind = CELL_BOOL
+        self%cells(self%col, self%nrow)%b = b
+    end subroutine bool
+
+    subroutine none(self)
+        class(out_table), intent(inout) :: self
+        call next_cell(self)
+        self%cells(self%col, self%nrow)%kind = CELL_NONE
+    end subroutine none
+
+    subroutine num_or_none(self, x, have)
+        class(out_table), intent(inout) :: self
+        real(wp), intent(in) :: x
+        logical, intent(in) :: have   !! false: the row has no such value
+        if (have) then
+            call self%num(x)
+        else
+            call self%none()
+        end if
+    end subroutine num_or_none
+
+    !> The text of a cell in a format.
+    function cell_text(c, fmt) result(s)
+        type(cell), intent(in) :: c
+        integer, intent(in) :: fmt
+        character(len=:), allocatable :: s
+        select case (c%kind)
+        case (CELL_NUM)
+            select case (fmt)
+            case (FORMAT_CSV); s = fmt_csv(c%x)
+            case (FORMAT_JSON); s = fmt_json(c%x)
+            case default; s = trim(adjustl(fmt_text(c%x)))
+            end select
+        case (CELL_STR)
+            select case (fmt)
+            case (FORMAT_CSV); s = csv_field(c%s)
+            case (FORMAT_JSON); s = json_string(c%s)
+            case default; s = one_line(c%s)
+            end select
+        case (CELL_BOOL)
+            s = trim(merge('true ', 'false', c%b))
+        case default
+            select case (fmt)
+            case (FORMAT_CSV); s = ''
+            case (FORMAT_JSON); s = 'null'
+            case default; s = '-'
+            end select
+        end select
+    end function cell_text
+
+    !> Number of characters (code points) of a UTF-8 string, for alignment.
+    pure integer function display_width(s) result(w)
+        character(len=*), intent(in) :: s
+        integer :: i
+        w = 0
+        do i = 1, len(s)
+            if (iachar(s(i:i)) < 128 .or. iachar(s(i:i)) >= 192) w = w + 1
+        end do
+    end function display_width
 
     !> Render into the buffer in the given format.
     subroutine render(self, fmt, buf)
@@ -99,22 +191,21 @@ contains
         integer, intent(in) :: fmt
         type(cli_buffer), intent(inout) :: buf
         character(len=:), allocatable :: line
-        integer :: i, j, w
+        type(cli_line), allocatable :: txt(:, :)
+        integer, allocatable :: width(:)
+        integer :: i, j, nc
+        nc = size(self%head)
         select case (fmt)
         case (FORMAT_CSV)
             line = ''
-            do j = 1, size(self%head)
-                line = line // merge(',', ' ', j > 1) // self%head(j)%s
+            do j = 1, nc
+                line = line // merge(',', ' ', j > 1) // csv_field(self%head(j)%s)
             end do
             call buf%add(line(2:))
             do i = 1, self%nrow
                 line = ''
-                do j = 1, size(self%head)
-                    if (self%cells(j, i)%is_num) then
-                        line = line // ',' // fmt_csv(self%cells(j, i)%x)
-                    else
-                        line = line // ',' // self%cells(j, i)%s
-                    end if
+                do j = 1, nc
+                    line = line // ',' // cell_text(self%cells(j, i), fmt)
                 end do
                 call buf%add(line(2:))
             end do
@@ -126,14 +217,9 @@ contains
             call buf%add('  "rows": [')
             do i = 1, self%nrow
                 line = '    {'
-                do j = 1, size(self%head)
+                do j = 1, nc
                     if (j > 1) line = line // ', '
-                    line = line // json_string(self%head(j)%s) // ': '
-                    if (self%cells(j, i)%is_num) then
-                        line = line // fmt_json(self%cells(j, i)%x)
-                    else
-                        line = line // json_string(self%cells(j, i)%s)
-                    end if
+                    line = line // json_string(self%head(j)%s) // ': ' // cell_text(self%cells(j, i), fmt)
                 end do
                 line = line // merge('},', '} ', i < self%nrow)
                 call buf%add(trim(line))
@@ -142,41 +228,40 @@ contains
             call buf%add('}')
         case default
             do j = 1, size(self%meta_key)
-                call buf%add('# ' // self%meta_key(j)%s // ': ' // self%meta_val(j)%s)
+                call buf%add('# ' // one_line(self%meta_key(j)%s) // ': ' // one_line(self%meta_val(j)%s))
+            end do
+            ! every cell formatted once, the widths in the same pass
+            allocate (txt(nc, self%nrow), width(nc))
+            do j = 1, nc
+                width(j) = display_width(one_line(self%head(j)%s))
+            end do
+            do i = 1, self%nrow
+                do j = 1, nc
+                    txt(j, i)%s = cell_text(self%cells(j, i), fmt)
+                    width(j) = max(width(j), display_width(txt(j, i)%s))
+                end do
             end do
             line = ''
-            do j = 1, size(self%head)
-                w = col_width(self, j)
-                line = line // ' ' // pad(self%head(j)%s, -w)
+            do j = 1, nc
+                line = line // ' ' // right(one_line(self%head(j)%s), width(j))
             end do
             call buf%add(line(2:))
             do i = 1, self%nrow
                 line = ''
-                do j = 1, size(self%head)
-                    w = col_width(self, j)
-                    if (self%cells(j, i)%is_num) then
-                        line = line // ' ' // pad(trim(adjustl(fmt_text(self%cells(j, i)%x))), -w)
-                    else
-                        line = line // ' ' // pad(self%cells(j, i)%s, -w)
-                    end if
+                do j = 1, nc
+                    line = line // ' ' // right(txt(j, i)%s, width(j))
                 end do
                 call buf%add(line(2:))
             end do
         end select
     end subroutine render
 
-    integer function col_width(self, j) result(w)
-        class(out_table), intent(in) :: self
-        integer, intent(in) :: j
-        integer :: i
-        w = len(self%head(j)%s)
-        do i = 1, self%nrow
-            if (self%cells(j, i)%is_num) then
-                w = max(w, len_trim(adjustl(fmt_text(self%cells(j, i)%x))))
-            else
-                w = max(w, len(self%cells(j, i)%s))
-            end if
-        end do
-    end function col_width
+    !> `s` right-justified in `width` display columns.
+    function right(s, width) result(r)
+        character(len=*), intent(in) :: s
+        integer, intent(in) :: width
+        character(len=:), allocatable :: r
+        r = repeat(' ', max(0, width - display_width(s))) // s
+    end function right
 
 end module hertzdamp_cli_output

@@ -1,10 +1,24 @@
-!> Plots for the CLI (`bench --plot`, `scene --plot`): checks done before any work,
-!> gnuplot run on a script, the PNG written under a temporary name and renamed into
-!> place only when gnuplot succeeded.  Errors are one line on stderr (exit 2 for a bad
-!> target, 4 when gnuplot is missing or fails); nothing is left half-written.
+!> Plots for the CLI (`bench --plot`, `scene --plot`), written safely:
+!>
+!> 1. Before any work (plot_check_target): gnuplot is there (else exit 4); an existing
+!>    target must be a regular file, which is tested without opening it (a device, a
+!>    FIFO, a directory or a socket is refused, exit 2, and a FIFO never blocks); the
+!>    target's directory takes a new file and the temporary names are free (else 2).
+!> 2. gnuplot draws into plot_temp_name(target), a file of this process in $TMPDIR
+!>    (default /tmp) whose name needs no quoting, so any target name works (quotes,
+!>    a leading '-', a newline).
+!> 3. plot_run checks gnuplot's own output: its exit status, its error stream (any
+!>    line but a warning is an error) and the PNG itself (signature, and the IEND
+!>    chunk that ends every complete PNG: gnuplot exits 0 on a full disk).
+!> 4. The PNG is copied to `target.hertzdamp-tmp` in the target's directory, every
+!>    write checked, and renamed onto the target (atomic within a directory).
+!>
+!> On any failure: one line on stderr, exit 4, and every temporary file removed, so
+!> nothing is left behind: neither a half-written target nor a stray file.
 module hertzdamp_cli_plot
     use, intrinsic :: iso_c_binding, only: c_char, c_int, c_null_char
     use hertzdamp_cli, only: fail, EXIT_USAGE, EXIT_FAILURE
+    use hertzdamp_cli_text, only: itoa
     implicit none
     private
     public :: plot_check_target, plot_run, plot_temp_name, gp_string, sh_quote, remove_file
@@ -16,26 +30,61 @@ module hertzdamp_cli_plot
             character(kind=c_char), intent(in) :: old(*), new(*)
             integer(c_int) :: rc
         end function c_rename
+        function c_getpid() bind(C, name='getpid') result(pid)
+            import :: c_int
+            implicit none
+            integer(c_int) :: pid
+        end function c_getpid
     end interface
+
+    !> The last 12 bytes of every complete PNG: the empty IEND chunk with its CRC.
+    character(len=*), parameter :: png_end = achar(0) // achar(0) // achar(0) // achar(0) // 'IEND' // &
+                                             char(174) // achar(66) // achar(96) // char(130)
+    character(len=*), parameter :: png_signature = char(137) // 'PNG' // achar(13) // achar(10) // achar(26) // &
+                                                   achar(10)
 
 contains
 
-    !> The temporary name the PNG is drawn under.
+    !> The file gnuplot draws into: $TMPDIR/hertzdamp-plot-PID.png (the same name
+    !> for the whole run of this process; `file` is the target).
     function plot_temp_name(file) result(tmp)
         character(len=*), intent(in) :: file
         character(len=:), allocatable :: tmp
-        tmp = file // '.hertzdamp-tmp'
+        tmp = scratch_dir() // '/hertzdamp-plot-' // itoa(int(c_getpid())) // '.png'
+        if (len(file) < 0) tmp = ''
     end function plot_temp_name
 
-    !> Before any work: gnuplot exists (else exit 4), the target is not a directory, an
-    !> existing target is writable, its directory takes a new file (else exit 2).
-    !> Returns the PNG terminal gnuplot offers (pngcairo or png).
+    !> The temporary name of the copy in the target's directory.
+    function dir_temp_name(file) result(tmp)
+        character(len=*), intent(in) :: file
+        character(len=:), allocatable :: tmp
+        tmp = file // '.hertzdamp-tmp'
+    end function dir_temp_name
+
+    !> $TMPDIR if it is set and plain (no quotes or control characters), else /tmp.
+    function scratch_dir() result(dir)
+        character(len=:), allocatable :: dir
+        character(len=4096) :: env
+        integer :: ln, st, i
+        call get_environment_variable('TMPDIR', env, length=ln, status=st)
+        dir = '/tmp'
+        if (st /= 0 .or. ln == 0 .or. ln > len(env)) return
+        do i = 1, ln
+            if (iachar(env(i:i)) < 32 .or. iachar(env(i:i)) > 126 .or. index('''"\', env(i:i)) > 0) return
+        end do
+        dir = env(1:ln)
+    end function scratch_dir
+
+    !> Before any work: gnuplot exists (else exit 4); the target, if it exists, is a
+    !> regular file (tested, never opened; else exit 2) and writable; its directory
+    !> takes a new file; the temporary names are free (else exit 2).  Returns the PNG
+    !> terminal gnuplot offers (pngcairo or png).
     subroutine plot_check_target(file, terminal)
         character(len=*), intent(in) :: file
         character(len=:), allocatable, intent(out) :: terminal
-        integer :: es, cs, u, ios
-        logical :: exists
+        integer :: es, cs
         if (len_trim(file) == 0) call fail(EXIT_USAGE, 'option --plot needs a file name')
+        call check_kind(file)
         es = 1
         cs = 0
         call execute_command_line('command -v gnuplot >/dev/null 2>&1', exitstat=es, cmdstat=cs)
@@ -45,48 +94,156 @@ contains
         call execute_command_line('gnuplot -e "set terminal pngcairo" >/dev/null 2>&1', exitstat=es, cmdstat=cs)
         terminal = 'png'
         if (cs == 0 .and. es == 0) terminal = 'pngcairo'
-        inquire (file=file // '/.', exist=exists)
-        if (exists) call fail(EXIT_USAGE, 'the plot file "' // file // '" is a directory')
-        inquire (file=file, exist=exists)
-        if (exists) then
-            ! must be a writable regular file (opening for append writes nothing)
-            open (newunit=u, file=file, status='old', action='write', position='append', iostat=ios)
-            if (ios /= 0) call fail(EXIT_USAGE, 'cannot write the plot file "' // file // '"')
-            close (u)
-        end if
-        inquire (file=plot_temp_name(file), exist=exists)
-        if (exists) call fail(EXIT_USAGE, 'the temporary file "' // plot_temp_name(file) // '" is in the way')
-        open (newunit=u, file=plot_temp_name(file), status='new', action='write', iostat=ios)
-        if (ios /= 0) call fail(EXIT_USAGE, 'cannot write the plot file "' // file // '" (directory not writable?)')
-        close (u, status='delete')
+        call check_new(dir_temp_name(file), 'cannot write the plot file "' // file // '" (directory not writable?)')
+        call check_new(plot_temp_name(file), 'cannot write a temporary file in ' // scratch_dir())
     end subroutine plot_check_target
 
-    !> Run gnuplot on `script` (which draws into plot_temp_name(target)), then rename
-    !> the PNG into place.  `scratch` files are removed whatever happens.
+    !> Exit 2 unless `file` is absent or a writable regular file; the test does not
+    !> open the file (a FIFO would block, a device would be touched).
+    subroutine check_kind(file)
+        character(len=*), intent(in) :: file
+        integer :: es, cs
+        es = -1
+        call execute_command_line('f=' // sh_quote(file) // '; if [ -d "$f" ]; then exit 3; ' // &
+                                  'elif [ -f "$f" ]; then [ -w "$f" ] || exit 4; ' // &
+                                  'elif [ -e "$f" ] || [ -L "$f" ]; then exit 5; fi; exit 0', exitstat=es, cmdstat=cs)
+        if (cs /= 0) call fail(EXIT_FAILURE, 'cannot run /bin/sh to check the plot file')
+        select case (es)
+        case (0)
+        case (3); call fail(EXIT_USAGE, 'the plot file "' // file // '" is a directory')
+        case (4); call fail(EXIT_USAGE, 'cannot write the plot file "' // file // '"')
+        case default
+            call fail(EXIT_USAGE, 'the plot file "' // file // '" exists and is not a regular file ' // &
+                      '(a device, FIFO, socket or dangling link); refused')
+        end select
+    end subroutine check_kind
+
+    !> Exit 2 unless `tmp` can be created as a new file (then it is removed again).
+    subroutine check_new(tmp, message)
+        character(len=*), intent(in) :: tmp, message
+        integer :: u, ios
+        logical :: exists
+        inquire (file=tmp, exist=exists)
+        if (exists) call fail(EXIT_USAGE, 'the temporary file "' // tmp // '" is in the way')
+        open (newunit=u, file=tmp, status='new', action='write', iostat=ios)
+        if (ios /= 0) call fail(EXIT_USAGE, message)
+        close (u, status='delete')
+    end subroutine check_new
+
+    !> Run gnuplot on `script` (which draws into png_tmp = plot_temp_name(target)),
+    !> check its output, copy the PNG next to the target and rename it into place.
+    !> `script` and the `scratch` files are removed whatever happens; on failure exit 4
+    !> with nothing left behind.
     subroutine plot_run(script, png_tmp, target, scratch)
         character(len=*), intent(in) :: script, png_tmp, target
         character(len=*), intent(in) :: scratch(:)
         integer :: es, cs, i
-        integer :: sz
-        character(len=12) :: buf
-        call execute_command_line('gnuplot ' // sh_quote(script) // ' >/dev/null 2>&1', exitstat=es, cmdstat=cs)
-        sz = -1
-        inquire (file=png_tmp, size=sz)
+        character(len=:), allocatable :: errfile, why, png
+        errfile = png_tmp // '.err'
+        es = -1
+        call execute_command_line('gnuplot ' // sh_quote(script) // ' >/dev/null 2>' // sh_quote(errfile), &
+                                  exitstat=es, cmdstat=cs)
         call remove_file(script)
         do i = 1, size(scratch)
             call remove_file(trim(scratch(i)))
         end do
-        if (cs /= 0 .or. es /= 0 .or. sz <= 0) then
-            call remove_file(png_tmp)
-            write (buf, '(i0)') es
-            call fail(EXIT_FAILURE, 'gnuplot failed (exit ' // trim(buf) // '): no plot written')
+        why = ''
+        if (cs /= 0 .or. es /= 0) why = 'gnuplot failed (exit ' // itoa(es) // ')'
+        if (len(why) == 0) why = gnuplot_errors(errfile)
+        call remove_file(errfile)
+        if (len(why) == 0) then
+            call read_bytes(png_tmp, png, why)
+            if (len(why) == 0) then
+                if (len(png) < len(png_signature) + len(png_end)) then
+                    why = 'gnuplot wrote an incomplete PNG'
+                else if (png(1:len(png_signature)) /= png_signature .or. png(len(png) - len(png_end) + 1:) /= png_end) then
+                    why = 'gnuplot wrote an incomplete PNG (no IEND chunk: disk full?)'
+                end if
+            end if
         end if
-        if (c_rename(c_str(png_tmp), c_str(target)) /= 0) then
-            call remove_file(png_tmp)
-            call fail(EXIT_FAILURE, 'cannot rename the plot into place: ' // target)
+        call remove_file(png_tmp)
+        if (len(why) == 0) call write_bytes(dir_temp_name(target), png, why)
+        if (len(why) == 0) then
+            if (c_rename(c_str(dir_temp_name(target)), c_str(target)) /= 0) why = 'cannot rename the plot into place'
+        end if
+        if (len(why) > 0) then
+            call remove_file(dir_temp_name(target))
+            call fail(EXIT_FAILURE, why // ': no plot written to "' // target // '"')
         end if
     end subroutine plot_run
 
+    !> The first line of gnuplot's error stream that is not a warning, or ''.
+    function gnuplot_errors(errfile) result(why)
+        character(len=*), intent(in) :: errfile
+        character(len=:), allocatable :: why
+        character(len=1024) :: line
+        integer :: u, ios
+        why = ''
+        open (newunit=u, file=errfile, status='old', action='read', iostat=ios)
+        if (ios /= 0) return
+        do
+            read (u, '(a)', iostat=ios) line
+            if (ios /= 0) exit
+            if (len_trim(line) == 0 .or. index(line, 'arning') > 0) cycle
+            why = 'gnuplot: ' // trim(adjustl(line))
+            exit
+        end do
+        close (u)
+    end function gnuplot_errors
+
+    !> The whole file as bytes; `why` says what went wrong ('' on success).
+    subroutine read_bytes(file, bytes, why)
+        character(len=*), intent(in) :: file
+        character(len=:), allocatable, intent(out) :: bytes
+        character(len=:), allocatable, intent(inout) :: why
+        integer :: u, ios, n
+        open (newunit=u, file=file, status='old', action='read', access='stream', form='unformatted', iostat=ios)
+        if (ios /= 0) then
+            bytes = ''
+            why = 'gnuplot wrote no plot'
+            return
+        end if
+        inquire (unit=u, size=n)
+        allocate (character(len=max(n, 0)) :: bytes)
+        if (n <= 0) then
+            close (u)
+            why = 'gnuplot wrote an empty plot'
+            return
+        end if
+        read (u, iostat=ios) bytes
+        close (u)
+        if (ios /= 0) why = 'cannot read the plot gnuplot wrote'
+    end subroutine read_bytes
+
+    !> Write `bytes` to a new file, checking the write and the close (a full disk).
+    subroutine write_bytes(file, bytes, why)
+        character(len=*), intent(in) :: file, bytes
+        character(len=:), allocatable, intent(inout) :: why
+        integer :: u, ios, n, ios_close
+        open (newunit=u, file=file, status='new', action='write', access='stream', form='unformatted', iostat=ios)
+        if (ios /= 0) then
+            why = 'cannot create the temporary plot file'
+            return
+        end if
+        write (u, iostat=ios) bytes
+        if (ios == 0) flush (u, iostat=ios)
+        if (ios /= 0) then
+            close (u, iostat=ios_close)   ! the write failed already: its status decides
+            why = 'cannot write the plot (disk full?)'
+            if (ios_close /= 0) why = why // ' (and cannot close it)'
+            return
+        end if
+        close (u, iostat=ios)
+        if (ios /= 0) then
+            why = 'cannot write the plot (disk full?)'
+            return
+        end if
+        n = -1
+        inquire (file=file, size=n)
+        if (n /= len(bytes)) why = 'the plot was written incompletely (disk full?)'
+    end subroutine write_bytes
+
+    !> Remove a file if it exists.
     subroutine remove_file(file)
         character(len=*), intent(in) :: file
         integer :: u, ios

@@ -1,16 +1,21 @@
-!> The command `invert`: stiffness and damping from target restitution and contact time.
+!> The commands `invert` (stiffness and damping from target restitution and contact
+!> time) and `timestep` (the time step that resolves the physical contacts).
 module hertzdamp_cmd_invert
-    use hertzdamp, only: hertzdamp_rk, hertzdamp_invert, hertzdamp_message, hertzdamp_end_name, &
-                         HD_OK, HD_BAD_RESTITUTION, HD_OUTSIDE_VALIDITY, HD_END_OVERLAP, HD_METHOD_FIT, HD_METHOD_COMPACT, &
-                         HD_METHOD_SERIES, HD_METHOD_PADE, &
-                         HD_METHOD_ITERATIVE
-    use hertzdamp_cli, only: cli_args, cli_buffer, parse_args, parse_real, parse_real_list, parse_int, &
-                             parse_choice, fail, quit, fmt_csv, EXIT_USAGE, EXIT_OK, exit_code_of
-    use hertzdamp_cli_output, only: out_table, format_choices
+    use hertzdamp, only: hertzdamp_rk, hertzdamp_invert, hertzdamp_invert_alpha, hertzdamp_message, &
+                         hertzdamp_reduce, hertzdamp_hertz_time, &
+                         HD_OK, HD_BAD_RESTITUTION, HD_OUTSIDE_VALIDITY, HD_INACCURATE, HD_BAD_TIME, HD_BAD_VELOCITY, &
+                         HD_OUT_OF_RANGE, HD_METHOD_ITERATIVE
+    use hertzdamp_cli, only: cli_args, parse_args, parse_sweep, required_sweep, check_combinations, fail, EXIT_USAGE
+    use hertzdamp_cli_text, only: fmt_short
+    use hertzdamp_cli_output, only: out_table
     use hertzdamp_cli_help, only: print_help, wants_help
+    use hertzdamp_cli_model, only: model_opts, parse_model, model_options, e_range_message, instead
+    use hertzdamp_cli_rows, only: row_log, row_kind, row_word, row_has_result, ROW_OUTSIDE_VALIDITY
+    use hertzdamp_cli_materials, only: cli_contact, parse_contact, contact_table, contact_options, contact_flags
+    use hertzdamp_cli_progress, only: progress_reporter
     implicit none
     private
-    public :: cmd_invert
+    public :: cmd_invert, cmd_timestep
 
     integer, parameter :: wp = hertzdamp_rk
 
@@ -18,88 +23,224 @@ contains
 
     subroutine cmd_invert()
         type(cli_args) :: args
-        real(wp), allocatable :: e(:), k(:), d(:), alpha(:), tstar(:), tau(:)
-        logical, allocatable :: bound(:)
-        integer, allocatable :: status(:)
-        real(wp) :: tc, dt, m, u, kphys, tol
-        integer :: steps, iend, method, fmt, i
-        character(len=:), allocatable :: mname
+        type(model_opts) :: c
+        type(cli_contact) :: ct
+        real(wp), allocatable :: es(:), tcs(:), us(:)
+        character(len=:), allocatable :: tc_key
+        real(wp) :: e, tc, u, k, d, alpha, tstar, tau
+        logical :: bound, have
+        integer :: status, ie, it, iu, kind, n
         type(out_table) :: t
-        type(cli_buffer) :: buf
-        if (wants_help()) then
-            call print_help('invert')
-            call quit(EXIT_OK)
-        end if
-        call parse_args(2, '--e --tc --dt --steps --mass --velocity --k-phys --end --method --tol --format', '', args)
-        iend = parse_choice(args%get('--end', 'overlap'), 'overlap force', 'contact-end definition (--end)') - 1
-        mname = args%get('--method', 'fit')
-        method = parse_choice(mname, 'fit compact series pade iterative', 'method (--method)')
-        select case (method)
-        case (1); method = HD_METHOD_FIT
-        case (2); method = HD_METHOD_COMPACT
-        case (3); method = HD_METHOD_SERIES
-        case (4); method = HD_METHOD_PADE
-        case default; method = HD_METHOD_ITERATIVE
-        end select
-        fmt = parse_choice(args%get('--format', 'text'), format_choices, 'format (--format)')
-        if (.not. args%has('--e')) call fail(EXIT_USAGE, 'missing option --e (see --help)')
-        e = parse_real_list(args%get('--e', ''), '--e')
+        type(row_log) :: rows
+        type(progress_reporter) :: p
+        allocate (es(0), tcs(0), us(0))   ! (defined descriptors for the reallocating assignments)
+        if (wants_help()) call print_help('invert')
+        call parse_args(2, '--e --tc --dt --steps --velocity ' // contact_options // ' ' // model_options, &
+                        contact_flags // ' --progress', args)
+        call parse_model(args, c, inverse=.true.)
+        call parse_contact(args, ct)
+        es = required_sweep(args, '--e')
+        call contact_times(args, tcs, tc_key)
+        us = required_sweep(args, '--velocity')
+        if (.not. ct%has_mass) call fail(EXIT_USAGE, 'missing option --mass (or --radius with --density) (see --help)')
+        call check_combinations([size(es), size(tcs), size(us)], '--e, the contact times and --velocity')
+        call contact_table(t, c, ct, 'e,tc,velocity,mass,radius_eff,k_phys,alpha,tau_c,t_star,k,d,bound_active,' // &
+                           'tc_actual,status', 'tc, t_star, tc_actual [s], velocity [m/s], mass [kg], radius_eff [m], ' // &
+                           'k, k_phys [N m^-3/2], d [kg/s]')
+        n = 0
+        call p%start(real(size(es) * size(tcs) * size(us), wp), 'invert', force=args%has('--progress'))
+        do ie = 1, size(es)
+            do it = 1, size(tcs)
+                do iu = 1, size(us)
+                    e = es(ie)
+                    tc = tcs(it)
+                    u = us(iu)
+                    if (ct%has_kphys) then
+                        call hertzdamp_invert(e, tc, ct%mass, u, c%iend, k, d, status, alpha, tstar, tau, bound, &
+                                              ct%k_phys, c%method, c%tol, c%accuracy)
+                    else
+                        call hertzdamp_invert(e, tc, ct%mass, u, c%iend, k, d, status, alpha, tstar, tau, bound, &
+                                              method=c%method, tol=c%tol, accuracy=c%accuracy)
+                    end if
+                    kind = row_kind(status)
+                    if (status == HD_BAD_RESTITUTION .and. e >= 0.0_wp .and. e <= 1.0_wp) kind = ROW_OUTSIDE_VALIDITY
+                    have = row_has_result(kind)
+                    call t%num(e)
+                    call t%num(tc)
+                    call t%num(u)
+                    call t%num(ct%mass)
+                    call t%num_or_none(ct%radius, ct%has_radius)
+                    call t%num_or_none(ct%k_phys, ct%has_kphys)
+                    call t%num_or_none(alpha, have)
+                    call t%num_or_none(tau, have)
+                    call t%num_or_none(tstar, have)
+                    call t%num_or_none(k, have)
+                    call t%num_or_none(d, have)
+                    if (have) then
+                        call t%bool(bound)
+                    else
+                        call t%none()
+                    end if
+                    ! the contact time the returned k and d give: T_c, or longer when k = k_phys
+                    call t%num_or_none(tstar * tau, have)
+                    call t%str(row_word(kind))
+                    if (have) then
+                        call rows%add(kind, '')
+                    else
+                        call rows%add(kind, invert_reason(c, status, e, tc, u, tc_key))
+                    end if
+                    n = n + 1
+                    call p%update(real(n, wp))
+                end do
+            end do
+        end do
+        call p%finish()
+        call rows%emit(t, c%fmt)
+    end subroutine cmd_invert
+
+    !> The target contact times: --tc LIST, or every --dt times every --steps.
+    subroutine contact_times(args, tcs, key)
+        type(cli_args), intent(in) :: args
+        real(wp), allocatable, intent(out) :: tcs(:)
+        character(len=:), allocatable, intent(out) :: key   !! the option the times come from
+        real(wp), allocatable :: dts(:), steps(:)
+        integer :: i, j
         if (args%has('--tc')) then
             if (args%has('--dt') .or. args%has('--steps')) then
-              call fail(EXIT_USAGE, 'give either --tc or --dt with --steps, not both')
+                call fail(EXIT_USAGE, 'give either --tc or --dt with --steps, not both')
             end if
-            tc = parse_real(args%get('--tc', ''), '--tc')
-        else
-            if (.not. (args%has('--dt') .and. args%has('--steps'))) then
-              call fail(EXIT_USAGE, 'missing option --tc (or --dt with --steps) (see --help)')
-            end if
-            dt = parse_real(args%get('--dt', ''), '--dt')
-            steps = parse_int(args%get('--steps', ''), '--steps')
-            if (steps < 1) call fail(EXIT_USAGE, '--steps must be >= 1')
-            tc = dt * steps
+            tcs = parse_sweep(args%get('--tc', ''), '--tc')
+            key = '--tc'
+            return
         end if
-        if (.not. args%has('--mass')) call fail(EXIT_USAGE, 'missing option --mass (see --help)')
-        if (.not. args%has('--velocity')) call fail(EXIT_USAGE, 'missing option --velocity (see --help)')
-        m = parse_real(args%get('--mass', ''), '--mass')
-        u = parse_real(args%get('--velocity', ''), '--velocity')
-        tol = 1.0e-10_wp
-        if (args%has('--tol')) then
-            if (method /= HD_METHOD_ITERATIVE) call fail(EXIT_USAGE, '--tol applies to --method iterative only')
-            tol = parse_real(args%get('--tol', ''), '--tol')
+        if (.not. (args%has('--dt') .and. args%has('--steps'))) then
+            call fail(EXIT_USAGE, 'missing option --tc (or --dt with --steps) (see --help)')
         end if
-        allocate (k(size(e)), d(size(e)), alpha(size(e)), tstar(size(e)), tau(size(e)), bound(size(e)), &
-                  status(size(e)))
-        if (args%has('--k-phys')) then
-            kphys = parse_real(args%get('--k-phys', ''), '--k-phys')
-            call hertzdamp_invert(e, tc, m, u, iend, k, d, status, alpha, tstar, tau, bound, kphys, method, tol)
-        else
-            call hertzdamp_invert(e, tc, m, u, iend, k, d, status, alpha, tstar, tau, bound, method=method, tol=tol)
+        dts = parse_sweep(args%get('--dt', ''), '--dt')
+        steps = parse_steps(args)
+        call check_combinations([size(dts), size(steps)], '--dt and --steps')
+        tcs = [((dts(i) * steps(j), j=1, size(steps)), i=1, size(dts))]
+        key = '--dt x --steps'
+    end subroutine contact_times
+
+    !> --steps: whole numbers >= 1 (a list or range of them).
+    function parse_steps(args, default) result(steps)
+        type(cli_args), intent(in) :: args
+        real(wp), intent(in), optional :: default
+        real(wp), allocatable :: steps(:)
+        integer :: i
+        if (.not. args%has('--steps') .and. present(default)) then
+            steps = [default]
+            return
         end if
-        do i = 1, size(e)
-            if (status(i) /= HD_OK) then
-              call fail(exit_code_of(status(i)), 'e = ' // fmt_csv(e(i)) // ': ' // hertzdamp_message(status(i)))
+        steps = parse_sweep(args%get('--steps', ''), '--steps')
+        do i = 1, size(steps)
+            if (.not. (steps(i) >= 1.0_wp .and. steps(i) <= 1.0e9_wp .and. steps(i) == anint(steps(i)))) then
+                call fail(EXIT_USAGE, '--steps ' // fmt_short(steps(i)) // ': time steps per contact must be ' // &
+                          'a whole number from 1 to 1e9')
             end if
         end do
-        call t%set_columns('e,tc,mass,velocity,alpha,tau_c,t_star,k,d,bound_active,status')
-        call t%meta('end', hertzdamp_end_name(iend))
-        call t%meta('method', mname)
-        call t%meta('units', 'tc [s], mass [kg], velocity [m/s], t_star [s], k [N m^-3/2], d [kg/s]')
-        do i = 1, size(e)
-            call t%num(e(i))
-            call t%num(tc)
-            call t%num(m)
-            call t%num(u)
-            call t%num(alpha(i))
-            call t%num(tau(i))
-            call t%num(tstar(i))
-            call t%num(k(i))
-            call t%num(d(i))
-            call t%str(trim(merge('true ', 'false', bound(i))))
-            call t%str('ok')
+    end function parse_steps
+
+    !> Why an `invert` row has no result, naming the option.
+    function invert_reason(c, status, e, tc, u, tc_key) result(s)
+        type(model_opts), intent(in) :: c
+        integer, intent(in) :: status
+        real(wp), intent(in) :: e, tc, u
+        character(len=*), intent(in) :: tc_key
+        character(len=:), allocatable :: s
+        select case (status)
+        case (HD_BAD_RESTITUTION, HD_OUTSIDE_VALIDITY)
+            s = e_range_message(c, e, fmt_short(e))
+        case (HD_INACCURATE)
+            s = '--e ' // fmt_short(e) // ': the error estimate of --method ' // c%method_name // &
+                ' exceeds --accuracy ' // fmt_short(c%accuracy) // ' there (raise --accuracy, or ' // instead(c) // ')'
+        case (HD_BAD_TIME)
+            s = tc_key // ' (contact time ' // fmt_short(tc) // '): ' // hertzdamp_message(status)
+        case (HD_BAD_VELOCITY)
+            s = '--velocity ' // fmt_short(u) // ': ' // hertzdamp_message(status)
+        case (HD_OUT_OF_RANGE)
+            s = 'e = ' // fmt_short(e) // ', tc = ' // fmt_short(tc) // ', velocity = ' // fmt_short(u) // &
+                ': k or d is outside the double-precision range'
+        case default
+            s = 'e = ' // fmt_short(e) // ': ' // hertzdamp_message(status)
+            if (c%method == HD_METHOD_ITERATIVE) s = s // ' (try --method fit)'
+        end select
+    end function invert_reason
+
+    !> `timestep`: for materials and a velocity range, the shortest contact of the
+    !> physical model (k = k_phys, d from e) and the largest time step that resolves
+    !> it with N steps, next to the elastic Hertz estimate.
+    subroutine cmd_timestep()
+        type(cli_args) :: args
+        type(model_opts) :: c
+        type(cli_contact) :: ct
+        real(wp), allocatable :: es(:), us(:), steps(:)
+        real(wp) :: alpha, tau, tstar, a0, tmin, thertz, th, umax
+        integer :: status, ie, is, iu, kind, st
+        logical :: have
+        type(out_table) :: t
+        type(row_log) :: rows
+        allocate (es(0), us(0), steps(0))
+        if (wants_help()) call print_help('timestep')
+        call parse_args(2, '--e --velocity --steps ' // contact_options // ' ' // model_options, contact_flags, args)
+        call parse_model(args, c, inverse=.true.)
+        call parse_contact(args, ct)
+        if (.not. ct%has_mass) call fail(EXIT_USAGE, 'missing option --mass (or --radius with --density) (see --help)')
+        if (.not. ct%has_kphys) call fail(EXIT_USAGE, 'missing option --k-phys (or --radius with --youngs-modulus ' // &
+                                          'and --poisson-ratio) (see --help)')
+        es = required_sweep(args, '--e')
+        us = required_sweep(args, '--velocity')
+        steps = parse_steps(args, 10.0_wp)
+        call check_combinations([size(es), size(steps)], '--e and --steps')
+        ! the time unit t* and the elastic Hertz time at every velocity; both fall as u^(-1/5)
+        tmin = huge(1.0_wp)
+        thertz = huge(1.0_wp)
+        umax = 0.0_wp
+        do iu = 1, size(us)
+            call hertzdamp_reduce(ct%k_phys, 0.0_wp, ct%mass, us(iu), a0, tstar, st)
+            if (st == HD_OK) call hertzdamp_hertz_time(ct%mass, ct%k_phys, us(iu), th, st)
+            if (st == HD_BAD_VELOCITY) call fail(EXIT_USAGE, '--velocity ' // fmt_short(us(iu)) // ': ' // &
+                                                 hertzdamp_message(st))
+            if (st /= HD_OK) call fail(EXIT_USAGE, '--velocity ' // fmt_short(us(iu)) // &
+                                       ': the contact time is outside the double-precision range')
+            if (tstar < tmin) umax = us(iu)
+            tmin = min(tmin, tstar)
+            thertz = min(thertz, th)
         end do
-        call t%render(fmt, buf)
-        call buf%flush_to_stdout()
-        call quit(EXIT_OK)
-    end subroutine cmd_invert
+
+        call contact_table(t, c, ct, 'e,steps,velocity_max,mass,radius_eff,k_phys,alpha,tau_c,tc_damped,tc_elastic,' // &
+                           'elastic_excess,dt_max,dt_elastic,status', 'velocity_max [m/s], mass [kg], radius_eff [m], ' // &
+                           'k_phys [N m^-3/2], tc_damped, tc_elastic, dt_max, dt_elastic [s]; ' // &
+                           'elastic_excess = tc_elastic/tc_damped - 1')
+        do ie = 1, size(es)
+            call hertzdamp_invert_alpha(es(ie), c%iend, alpha, tau, status, c%method, c%tol, c%accuracy)
+            kind = row_kind(status)
+            if (status == HD_BAD_RESTITUTION .and. es(ie) >= 0.0_wp .and. es(ie) <= 1.0_wp) kind = ROW_OUTSIDE_VALIDITY
+            have = row_has_result(kind)
+            do is = 1, size(steps)
+                call t%num(es(ie))
+                call t%num(steps(is))
+                call t%num(umax)
+                call t%num(ct%mass)
+                call t%num_or_none(ct%radius, ct%has_radius)
+                call t%num(ct%k_phys)
+                call t%num_or_none(alpha, have)
+                call t%num_or_none(tau, have)
+                call t%num_or_none(tmin * tau, have)
+                call t%num(thertz)
+                call t%num_or_none(thertz / (tmin * tau) - 1.0_wp, have)
+                call t%num_or_none(tmin * tau / steps(is), have)
+                call t%num(thertz / steps(is))
+                call t%str(row_word(kind))
+                if (have) then
+                    call rows%add(kind, '')
+                else
+                    call rows%add(kind, invert_reason(c, status, es(ie), 0.0_wp, 0.0_wp, ''))
+                end if
+            end do
+        end do
+        call rows%emit(t, c%fmt)
+    end subroutine cmd_timestep
 
 end module hertzdamp_cmd_invert

@@ -1,23 +1,31 @@
 !> The command `scene`: run a DEM scene file with the inverse rule at every contact,
 !> report the achieved restitution and contact time against the targets, the
 !> energy/momentum checks, the cost, and the same scene with the iterative rule.
+!> A scene whose checks fail prints its report and exits with EXIT_CHECKS (5).
 module hertzdamp_cmd_scene
     use hertzdamp, only: hertzdamp_rk, hertzdamp_end_name, HD_OK, HD_METHOD_ITERATIVE, HD_METHOD_SERIES, &
                          HD_METHOD_PADE, HD_METHOD_COMPACT, HD_METHOD_FIT, HD_METHOD_FIRST_ORDER, hertzdamp_method_name
-    use hertzdamp_dem, only: hertzdamp_dem_scene, hertzdamp_dem_result, hertzdamp_dem_check, hertzdamp_dem_run, &
-                             hertzdamp_dem_rule, hertzdamp_dem_select, hertzdamp_dem_cost_order
+    use hertzdamp_dem, only: hertzdamp_dem_scene, hertzdamp_dem_result, hertzdamp_dem_check, hertzdamp_dem_state, &
+                             hertzdamp_dem_start, hertzdamp_dem_advance, hertzdamp_dem_finish, hertzdamp_dem_steps_done, &
+                             hertzdamp_dem_steps_total, hertzdamp_dem_rule, hertzdamp_dem_select, &
+                             hertzdamp_dem_cost_order, hertzdamp_dem_check_row, hertzdamp_dem_checks_of, &
+                             hertzdamp_dem_ratio, hertzdamp_dem_verlet_energy, hertzdamp_dem_min_resolved, &
+                             HD_CHECK_PASS, HD_CHECK_FAIL, HD_CHECK_GRAVITY
     use hertzdamp_scene_io, only: hertzdamp_scene_read
     use hertzdamp_cli, only: cli_args, cli_buffer, parse_args, parse_choice, fail, quit, fmt_csv, &
                              EXIT_USAGE, EXIT_OK, EXIT_FAILURE, EXIT_NO_SOLUTION
     use hertzdamp_cli_output, only: out_table, format_choices, FORMAT_JSON, FORMAT_CSV
     use hertzdamp_cli_help, only: print_help, wants_help
     use hertzdamp_cli_plot, only: plot_check_target, plot_run, plot_temp_name, gp_string
+    use hertzdamp_cli_progress, only: progress_reporter
     use, intrinsic :: iso_fortran_env, only: int64
     implicit none
     private
     public :: cmd_scene
 
     integer, parameter :: wp = hertzdamp_rk
+    !> Exit code of a scene whose report was printed but whose checks failed.
+    integer, parameter :: EXIT_CHECKS = 5
     !> --method choices; 'auto' first.
     character(len=*), parameter :: method_choices = 'auto first-order compact series pade fit iterative'
     !> Most contact rows printed.
@@ -39,22 +47,26 @@ contains
         type(hertzdamp_dem_result) :: res, res_it
         type(run_cost) :: cost, cost_it
         type(cli_buffer) :: buf
-        character(len=:), allocatable :: file, msg, plot, reason, terminal
-        integer :: fmt, mchoice, method, status, chosen, c, nsec
+        logical :: progress
+        type(hertzdamp_dem_check_row), allocatable :: rows(:)
+        character(len=:), allocatable :: file, msg, plot, reason, terminal, failed_names
+        integer :: fmt, mchoice, method, status, chosen, c, nsec, nfailed, nruns
         real(wp) :: err(6), tol_it, t_select
-        logical :: avail(6)
+        logical :: avail(6), compare
         integer(int64) :: c0, c1, rate
+        character(len=16) :: nbuf
 
         if (wants_help()) then
             call print_help('scene')
             call quit(EXIT_OK)
         end if
-        call parse_args(2, '--method --format --plot', '', args, allow_positional=.true.)
+        call parse_args(2, '--method --format --plot', '--progress --no-compare', args, allow_positional=.true.)
         if (.not. allocated(args%positional)) call fail(EXIT_USAGE, 'scene needs a FILE (see hertzdamp scene --help)')
         file = args%positional
         mchoice = parse_choice(args%get('--method', 'auto'), method_choices, 'method (--method)')
         fmt = parse_choice(args%get('--format', 'text'), format_choices, 'format (--format)')
         plot = args%get('--plot', '')
+        compare = .not. args%has('--no-compare')
         if (args%has('--plot')) call plot_check_target(plot, terminal)
 
         call hertzdamp_scene_read(file, sc, status, msg)
@@ -74,37 +86,60 @@ contains
             method = chosen
             c = findloc(hertzdamp_dem_cost_order, method, dim=1)
             reason = 'auto: cheapest rule (cost order first-order < compact < series < pade < fit < iterative) ' // &
-                     'whose measured error ' // trim(fmt_csv(err(c))) // ' <= accuracy ' // trim(fmt_csv(sc%accuracy))
+                     'whose measured error in e and tau_c ' // trim(fmt_csv(err(c))) // ' <= accuracy ' // &
+                     trim(fmt_csv(sc%accuracy))
         else
             method = method_code(mchoice)
             c = findloc(hertzdamp_dem_cost_order, method, dim=1)
             if (.not. avail(c)) call fail(EXIT_USAGE, 'method ' // hertzdamp_method_name(method) // &
                                           ' is not available in this build of the library')
-            reason = 'requested; measured error ' // trim(fmt_csv(err(c)))
+            reason = 'requested; measured error in e and tau_c ' // trim(fmt_csv(err(c)))
         end if
         tol_it = min(1.0e-2_wp, max(1.0e-10_wp, 0.1_wp * sc%accuracy))
+        compare = compare .and. method /= HD_METHOD_ITERATIVE
+        nruns = merge(2, 1, compare)
 
-        call timed_run(sc, method, tol_it, res, cost)
+        progress = args%has('--progress')
+        call timed_run(sc, method, tol_it, res, cost, progress, run_label(1, nruns, method))
         if (res%status /= HD_OK) call fail(EXIT_FAILURE, file // ': ' // res%message)
-        if (method /= HD_METHOD_ITERATIVE) then
-            call timed_run(sc, HD_METHOD_ITERATIVE, tol_it, res_it, cost_it)
+        if (compare) then
+            call timed_run(sc, HD_METHOD_ITERATIVE, tol_it, res_it, cost_it, progress, &
+                           run_label(2, nruns, HD_METHOD_ITERATIVE))
             if (res_it%status /= HD_OK) call fail(EXIT_FAILURE, file // ' (iterative rule): ' // res_it%message)
-        else
-            res_it = res
-            cost_it = cost
         end if
 
+        call hertzdamp_dem_checks_of(sc, res, rows, nfailed)
         nsec = 0
         if (fmt == FORMAT_JSON) call buf%add('{')
         call report_method(sc, file, method, reason, err, avail, t_select, fmt, buf, nsec)
         call report_contacts(sc, res, fmt, buf, nsec)
-        call report_checks(sc, res, fmt, buf, nsec)
-        call report_cost(method, res, cost, res_it, cost_it, fmt, buf, nsec)
+        call report_checks(rows, fmt, buf, nsec)
+        call report_cost(method, res, cost, res_it, cost_it, compare, fmt, buf, nsec)
         if (fmt == FORMAT_JSON) call buf%add('}')
         if (args%has('--plot')) call write_plot(sc, res, plot, terminal)
         call buf%flush_to_stdout()
+        if (nfailed > 0) then
+            failed_names = ''
+            do c = 1, size(rows)
+                if (rows(c)%outcome /= HD_CHECK_FAIL) cycle
+                if (len(failed_names) > 0) failed_names = failed_names // ', '
+                failed_names = failed_names // trim(rows(c)%name)
+            end do
+            write (nbuf, '(i0)') nfailed
+            call fail(EXIT_CHECKS, file // ': ' // trim(nbuf) // ' check' // trim(merge('s ', '  ', nfailed > 1)) // &
+                      ' failed (see the report): ' // failed_names)
+        end if
         call quit(EXIT_OK)
     end subroutine cmd_scene
+
+    !> 'scene run 1 of 2 (compact)'
+    function run_label(k, n, method) result(s)
+        integer, intent(in) :: k, n, method
+        character(len=:), allocatable :: s
+        character(len=32) :: b
+        write (b, '(a,i0,a,i0)') 'scene run ', k, ' of ', n
+        s = trim(b) // ' (' // hertzdamp_method_name(method) // ')'
+    end function run_label
 
     !> HD_* code of a --method choice other than auto.
     integer function method_code(k) result(m)
@@ -119,34 +154,48 @@ contains
         end select
     end function method_code
 
-    !> Run the scene and time it; the rule's share is timed by replaying the rule on
-    !> the recorded contacts (the same e, N dt, m, u_in, k_phys), repeated until at
-    !> least 20 ms have passed.
-    subroutine timed_run(sc, method, tol, res, cost)
+    !> Run the scene and time it, in pieces so that the progress can be reported
+    !> (hertzdamp_cli_progress: on a terminal after 2 s, or with --progress); the
+    !> rule's share is timed by replaying the rule on the recorded contacts (the same
+    !> e, N dt, m, u_in, k_phys), repeated until at least 20 ms have passed.
+    subroutine timed_run(sc, method, tol, res, cost, progress, label)
         type(hertzdamp_dem_scene), intent(in) :: sc
         integer, intent(in) :: method
         real(wp), intent(in) :: tol
         type(hertzdamp_dem_result), intent(out) :: res
         type(run_cost), intent(out) :: cost
+        logical, intent(in) :: progress   !! --progress given
+        character(len=*), intent(in) :: label
+        type(hertzdamp_dem_state) :: st
+        type(progress_reporter) :: p
         integer(int64) :: c0, c1, rate
-        integer :: reps, n
+        integer :: reps, n, chunk, total
         real(wp), allocatable :: k(:), d(:), tce(:)
         logical, allocatable :: bound(:)
-        integer, allocatable :: st(:)
+        integer, allocatable :: stat(:)
         call system_clock(c0, rate)
-        call hertzdamp_dem_run(sc, method, tol, res)
+        call hertzdamp_dem_start(sc, method, tol, st, res)
+        total = hertzdamp_dem_steps_total(st)
+        chunk = max(1, min(20000, total / 200))
+        call p%start(real(total, wp), label, force=progress)
+        do while (hertzdamp_dem_steps_done(st) < total .and. res%status == HD_OK)
+            call hertzdamp_dem_advance(sc, st, res, chunk)
+            call p%update(real(hertzdamp_dem_steps_done(st), wp))
+        end do
+        call p%finish()
+        call hertzdamp_dem_finish(sc, st, res)
         call system_clock(c1)
         cost%total = real(c1 - c0, wp) / real(rate, wp)
         if (res%status /= HD_OK) return
         n = res%ncontacts
         if (n == 0) return
-        allocate (k(n), d(n), tce(n), bound(n), st(n))
+        allocate (k(n), d(n), tce(n), bound(n), stat(n))
         reps = 0
         call system_clock(c0)
         do
             call hertzdamp_dem_rule(res%contacts%e_target, sc%steps_per_contact * sc%dt, res%contacts%m, &
                                     res%contacts%u_rule, res%contacts%k_phys, sc%iend, method, sc%want_duration, &
-                                    tol, k, d, tce, bound, st)
+                                    tol, k, d, tce, bound, stat)
             reps = reps + 1
             call system_clock(c1)
             if (real(c1 - c0, wp) / real(rate, wp) > 0.02_wp .or. reps >= 100000) exit
@@ -256,13 +305,15 @@ contains
         integer, intent(inout) :: nsec
         type(out_table) :: t
         integer :: c, nrow, nbin
-        real(wp) :: e_ach, tc_ach
+        real(wp) :: e_ach, q
+        logical :: ok
         character(len=64) :: b
         call t%set_columns('contact,bodies,u_in,k,d,stiffness,e_target,e,e_rel_err,tc_target,tc,tc_rel_err')
         nbin = count(res%contacts%binary .and. res%contacts%t_end >= 0.0_wp)
         write (b, '(i0,a,i0,a)') res%ncontacts, ' contacts, ', nbin, ' binary and ended'
         call t%meta('contacts', trim(b))
-        call t%meta('units', 'u_in [m/s], k [N m^-3/2], d [kg/s], tc [s]; e = separation/impact normal speed')
+        call t%meta('units', 'u_in [m/s], k [N m^-3/2], d [kg/s], tc [s]; e = separation/impact normal speed ' // &
+                    '(- where u_in <= 0)')
         if (.not. sc%want_duration) call t%meta('tc_target', 'physical contact time t*(k_phys) tau_c(alpha)')
         if (sc%gravity) call t%meta('gravity', 'acts during contacts too: e and tc differ from the ' // &
                                     'targets by O(g tc / u_in)')
@@ -272,8 +323,6 @@ contains
                 if (.not. (ct%binary .and. ct%t_end >= 0.0_wp)) cycle
                 nrow = nrow + 1
                 if (nrow > max_rows) cycle
-                e_ach = ct%u_out / max(ct%u_in, tiny(1.0_wp))
-                tc_ach = ct%t_end - ct%t_start
                 write (b, '(i0)') c
                 call t%str(trim(b))
                 call t%str(bodies(ct%i, ct%j))
@@ -286,11 +335,24 @@ contains
                     call t%str('rule')
                 end if
                 call t%num(ct%e_target)
-                call t%num(e_ach)
-                call t%num(abs(e_ach - ct%e_target) / ct%e_target)
+                ok = ct%u_in > 0.0_wp
+                if (ok) call hertzdamp_dem_ratio(ct%u_out, ct%u_in, e_ach, ok)
+                if (ok) call hertzdamp_dem_ratio(abs(e_ach - ct%e_target), ct%e_target, q, ok)
+                if (ok) then
+                    call t%num(e_ach)
+                    call t%num(q)
+                else
+                    call t%str('-')
+                    call t%str('-')
+                end if
                 call t%num(ct%tc_target)
-                call t%num(tc_ach)
-                call t%num(abs(tc_ach - ct%tc_target) / ct%tc_target)
+                call t%num(ct%t_end - ct%t_start)
+                call hertzdamp_dem_ratio(abs(ct%t_end - ct%t_start - ct%tc_target), ct%tc_target, q, ok)
+                if (ok) then
+                    call t%num(q)
+                else
+                    call t%str('-')
+                end if
             end associate
         end do
         if (nrow > max_rows) then
@@ -300,119 +362,74 @@ contains
         call add_section('contacts', t, fmt, buf, nsec)
     end subroutine report_contacts
 
-    subroutine report_checks(sc, res, fmt, buf, nsec)
-        type(hertzdamp_dem_scene), intent(in) :: sc
-        type(hertzdamp_dem_result), intent(in) :: res
+    !> The checks computed by hertzdamp_dem_checks_of: value, bound, outcome.
+    subroutine report_checks(rows, fmt, buf, nsec)
+        type(hertzdamp_dem_check_row), intent(in) :: rows(:)
         integer, intent(in) :: fmt
         type(cli_buffer), intent(inout) :: buf
         integer, intent(inout) :: nsec
         type(out_table) :: t
-        logical, allocatable :: bin(:)
-        real(wp) :: x, bound, escale
-        allocate (bin(res%ncontacts))
-        bin = res%contacts%binary .and. res%contacts%t_end >= 0.0_wp
+        integer :: i
+        character(len=16) :: b1, b2
         call t%set_columns('check,value,bound,result')
-        call t%meta('bounds', 'binary contacts: e and tc to the method accuracy plus the time-step error, ' // &
-                    'velocity Verlet O(1/N^2) for N steps per contact (bound 2/N^2, N the fewest steps ' // &
-                    'per contact in the run); energy: no rise above 1/N^2 of the energy scale')
-        bound = sc%accuracy + 2.0_wp / real(min_steps(sc, res), wp)**2
-        if (count(bin) > 0) then
-            x = maxval(abs(res%contacts%u_out / max(res%contacts%u_in, tiny(1.0_wp)) - res%contacts%e_target) / &
-                       res%contacts%e_target, mask=bin)
-            call row('max_e_rel_err (binary contacts)', x, bound, x <= bound, sc%gravity)
-            x = maxval(abs(res%contacts%t_end - res%contacts%t_start - res%contacts%tc_target) / &
-                       res%contacts%tc_target, mask=bin)
-            call row('max_tc_rel_err (binary contacts)', x, bound, x <= bound, sc%gravity)
-        end if
-        if (sc%gravity) then
-            ! gravity changes e by about -0.1 e g T_c/u_in (measured, e = 0.8): check the
-            ! contacts where that is below 1e-2, with 0.25 g T_c/u_in <= 2.5e-3 added to the bound
-            bin = bin .and. norm2(sc%g) * res%contacts%tc_target < 1.0e-2_wp * res%contacts%u_in
-            bound = bound + 2.5e-3_wp
-            if (count(bin) > 0) then
-                x = maxval(abs(res%contacts%u_out / max(res%contacts%u_in, tiny(1.0_wp)) - res%contacts%e_target) / &
-                           res%contacts%e_target, mask=bin)
-                call row('max_e_rel_err (binary, g tc/u_in < 0.01)', x, bound, x <= bound)
-                x = maxval(abs(res%contacts%t_end - res%contacts%t_start - res%contacts%tc_target) / &
-                           res%contacts%tc_target, mask=bin)
-                call row('max_tc_rel_err (binary, g tc/u_in < 0.01)', x, bound, x <= bound)
-            end if
-        end if
-        call t%str('min_steps_per_contact')
-        call t%num(real(min_steps(sc, res), wp))
-        call t%str('-')
-        call t%str('info')
-        if (.not. sc%gravity .and. size(sc%wall) == 0) then
-            x = res%momentum_drift / max(res%momentum_scale, tiny(1.0_wp))
-            call row('momentum_drift / sum m|v|', x, 1.0e-12_wp, x <= 1.0e-12_wp)
-        end if
-        escale = max(abs(res%energy0), tiny(1.0_wp))
-        if (sc%gravity) escale = max(escale, abs(res%energy0 - res%energy_final))
-        x = res%energy_rise / escale
-        bound = 1.0_wp / real(min_steps(sc, res), wp)**2
-        call row('energy_rise / energy scale', x, bound, x <= bound)
-        call t%str('energy_final / energy0')
-        call t%num(res%energy_final / merge(res%energy0, 1.0_wp, abs(res%energy0) > 0.0_wp))
-        call t%str('-')
-        call t%str('info')
-        if (sc%has_domain) call row('particles_left_domain', real(res%left_domain, wp), 0.0_wp, res%left_domain == 0)
-        if (sc%gravity) call row('max_final_speed [m/s] (at rest)', res%max_speed_final, sc%rest_speed, res%at_rest)
-        call add_section('checks', t, fmt, buf, nsec)
-
-    contains
-
-        !> One check; with `info_only` the bound does not apply (gravity acts during
-        !> the contacts) and the result says so.
-        subroutine row(name, value, bnd, ok, info_only)
-            character(len=*), intent(in) :: name
-            real(wp), intent(in) :: value, bnd
-            logical, intent(in) :: ok
-            logical, intent(in), optional :: info_only
-            logical :: info
-            info = .false.
-            if (present(info_only)) info = info_only
-            call t%str(name)
-            call t%num(value)
-            call t%num(bnd)
-            if (info) then
-                call t%str('info (gravity)')
+        write (b1, '(f0.3)') hertzdamp_dem_verlet_energy()
+        write (b2, '(i0)') nint(hertzdamp_dem_min_resolved)
+        call t%meta('bounds', 'binary contacts that started at or above rest_speed: e and tc to the method ' // &
+                    'accuracy plus the time-step error, velocity Verlet O(1/N^2) for N steps per contact ' // &
+                    '(bound 2/N^2, N the fewest steps per contact in the run, at least ' // trim(b2) // &
+                    '); energy: no rise above the velocity Verlet swing ' // trim(b1) // '/N^2 of the energy ' // &
+                    'scale plus the gain the e bound allows, max(0, (e_max (1 + bound_e))^2 - 1)')
+        do i = 1, size(rows)
+            call t%str(trim(rows(i)%name))
+            call t%num(rows(i)%value)
+            if (rows(i)%has_bound) then
+                call t%num(rows(i)%bound)
             else
-                call t%str(merge('pass', 'FAIL', ok))
+                call t%str('-')
             end if
-        end subroutine row
-
+            select case (rows(i)%outcome)
+            case (HD_CHECK_PASS); call t%str('pass')
+            case (HD_CHECK_FAIL); call t%str('FAIL')
+            case (HD_CHECK_GRAVITY); call t%str('info (gravity)')
+            case default; call t%str('info')
+            end select
+        end do
+        call add_section('checks', t, fmt, buf, nsec)
     end subroutine report_checks
 
-    !> Fewest time steps per expected contact duration among the contacts (N when none).
-    integer function min_steps(sc, res) result(m)
-        type(hertzdamp_dem_scene), intent(in) :: sc
-        type(hertzdamp_dem_result), intent(in) :: res
-        if (res%ncontacts > 0) then
-            m = max(1, floor(minval(res%contacts%tc_target) / sc%dt))
-        else
-            m = sc%steps_per_contact
-        end if
-    end function min_steps
-
-    subroutine report_cost(method, res, cost, res_it, cost_it, fmt, buf, nsec)
+    subroutine report_cost(method, res, cost, res_it, cost_it, compare, fmt, buf, nsec)
         integer, intent(in) :: method, fmt
         type(hertzdamp_dem_result), intent(in) :: res, res_it
         type(run_cost), intent(in) :: cost, cost_it
+        logical, intent(in) :: compare
         type(cli_buffer), intent(inout) :: buf
         integer, intent(inout) :: nsec
         type(out_table) :: t
-        call t%set_columns('rule,total_time_s,param_time_s,contacts,param_time_per_contact_s,speedup_total,speedup_params')
+        if (compare .or. method == HD_METHOD_ITERATIVE) then
+            call t%set_columns('rule,total_time_s,param_time_s,contacts,param_time_per_contact_s,speedup_total,' // &
+                               'speedup_params')
+        else
+            call t%set_columns('rule,total_time_s,param_time_s,contacts,param_time_per_contact_s')
+            call t%meta('compare', 'iterative re-run skipped (--no-compare): no speed-ups')
+        end if
         call t%meta('timing', 'total: wall time of the run; params: the rule replayed on the run''s contacts')
-        call line(hertzdamp_method_name(method), res, cost)
-        if (method /= HD_METHOD_ITERATIVE) call line('iterative', res_it, cost_it)
+        if (method == HD_METHOD_ITERATIVE) then
+            call line(hertzdamp_method_name(method), res, cost, cost)
+        else if (compare) then
+            call line(hertzdamp_method_name(method), res, cost, cost_it)
+            call line('iterative', res_it, cost_it, cost_it)
+        else
+            call line(hertzdamp_method_name(method), res, cost)
+        end if
         call add_section('cost', t, fmt, buf, nsec)
 
     contains
 
-        subroutine line(name, r, cst)
+        subroutine line(name, r, cst, ref)
             character(len=*), intent(in) :: name
             type(hertzdamp_dem_result), intent(in) :: r
             type(run_cost), intent(in) :: cst
+            type(run_cost), intent(in), optional :: ref   !! the iterative run (speed-ups against it)
             character(len=16) :: b
             call t%str(name)
             call t%num(cst%total)
@@ -420,9 +437,24 @@ contains
             write (b, '(i0)') r%ncontacts
             call t%str(trim(b))
             call t%num(cst%params / max(1, r%ncontacts))
-            call t%num(cost_it%total / max(cst%total, tiny(1.0_wp)))
-            call t%num(cost_it%params / max(cst%params, tiny(1.0_wp)))
+            if (present(ref)) then
+                call speedup(ref%total, cst%total)
+                call speedup(ref%params, cst%params)
+            end if
         end subroutine line
+
+        !> a/b, or '-' when the quotient is not a finite number (a zero time)
+        subroutine speedup(a, b)
+            real(wp), intent(in) :: a, b
+            real(wp) :: q
+            logical :: ok
+            call hertzdamp_dem_ratio(a, b, q, ok)
+            if (ok .and. b > 0.0_wp) then
+                call t%num(q)
+            else
+                call t%str('-')
+            end if
+        end subroutine speedup
 
     end subroutine report_cost
 

@@ -1,5 +1,5 @@
 !> The adaptive collision time model from modern Fortran: stiffness and damping for a
-!> whole array of contacts in one elemental call (THEORY.md section 6), checked by the
+!> whole array of contacts in one elemental call (doc/theory.md section 6), checked by the
 !> forward problem.  Run with `fpm run --example example_invert`.
 program example_invert
     use hertzdamp, only: hertzdamp_rk, hertzdamp_invert, hertzdamp_forward_dim, hertzdamp_message, &

@@ -51,10 +51,17 @@ extern "C" {
 #define HERTZDAMP_BAD_DENSITY         22  /* density not finite and positive */
 #define HERTZDAMP_BAD_MODULUS         23  /* Young's modulus not finite and positive */
 #define HERTZDAMP_BAD_POISSON         24  /* Poisson's ratio outside (-1, 0.5] */
+#define HERTZDAMP_BAD_LAW             25  /* damping law not 0 (linear), 1 (tsuji) or 2 (kuwabara-kono) */
 
 /* Contact-end definitions (argument `end`). */
 #define HERTZDAMP_END_OVERLAP 0  /* contact ends when the overlap returns to zero */
 #define HERTZDAMP_END_FORCE   1  /* contact ends when the total contact force returns to zero */
+
+/* Damping laws (argument `law`; doc/damping-laws.md): damping force d zeta^q zeta',
+   d in kg s^-1 m^-q. */
+#define HERTZDAMP_DAMPING_LINEAR        0  /* q = 0: constant damping (the default of the other calls) */
+#define HERTZDAMP_DAMPING_TSUJI         1  /* q = 1/4: Tsuji; d = gamma sqrt(m k) gives alpha = gamma */
+#define HERTZDAMP_DAMPING_KUWABARA_KONO 2  /* q = 1/2: Kuwabara-Kono (LAMMPS viscoelastic) */
 
 /*
  * Inverse problem (adaptive collision time): the Hertz stiffness *k [N m^-3/2] and
@@ -69,7 +76,7 @@ int hertzdamp_c_invert(double e, double tc, double m, double u, int end,
 /*
  * hertzdamp_c_invert with the physical-stiffness bound k_phys = (4/3) E* sqrt(R*):
  * where k_phys <= k the contact keeps *k = k_phys and
- * *d = alpha m^{3/5} k_phys^{2/5} u^{1/5} (it is then shorter than tc).
+ * *d = alpha m^{3/5} k_phys^{2/5} u^{1/5} (it is then longer than tc).
  */
 int hertzdamp_c_invert_bounded(double e, double tc, double m, double u, double k_phys,
                                int end, double *k, double *d);
@@ -96,6 +103,31 @@ int hertzdamp_c_pair(double e, int end, double *alpha, double *tau_c);
  */
 int hertzdamp_c_forward(double k, double d, double m, double u, int end,
                         double *e, double *tc);
+
+/*
+ * The damping laws (HERTZDAMP_DAMPING_*; doc/damping-laws.md): the same calls for the
+ * damping force d zeta^q zeta', q = 0 (linear), 1/4 (tsuji), 1/2 (kuwabara-kono),
+ * d in kg s^-1 m^-q.  The restitution range of the inverse is [1e-4, 1] for tsuji and
+ * kuwabara-kono (both ends).
+ *
+ * Inverse with the law, and the physical-stiffness bound when k_phys > 0 (k_phys = 0:
+ * no bound): with the bound active *k = k_phys and
+ * *d = alpha m^{(3-2q)/5} k_phys^{(2+2q)/5} u^{(1-4q)/5} (tsuji: alpha sqrt(m k_phys)).
+ */
+int hertzdamp_c_invert_law(double e, double tc, double m, double u, double k_phys,
+                           int law, int end, double *k, double *d);
+
+/*
+ * Material-pair constants of the law: per contact t* = T_c / tau_c,
+ * k = m t*^{-5/2} u^{-1/2},  d = alpha m t*^{-1} (u t*)^{-q}.
+ */
+int hertzdamp_c_pair_law(double e, int law, int end, double *alpha, double *tau_c);
+
+/*
+ * Forward problem of the law (d in kg s^-1 m^-q); no rebound as hertzdamp_c_forward.
+ */
+int hertzdamp_c_forward_law(double k, double d, double m, double u, int law, int end,
+                            double *e, double *tc);
 
 /*
  * A static, NUL-terminated English message for a status code (never NULL; do not

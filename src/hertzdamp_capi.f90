@@ -15,12 +15,13 @@ module hertzdamp_capi
     use, intrinsic :: iso_c_binding, only: c_double, c_int, c_char, c_ptr, c_loc, c_null_char
     use hertzdamp_status, only: HD_OK, HD_BAD_ARGUMENT, hertzdamp_message_table, hertzdamp_max_status, &
                                 hertzdamp_message_len
-    use hertzdamp_flat, only: flat_invert, flat_invert_bounded, flat_pair, flat_forward
+    use hertzdamp_flat, only: flat_invert, flat_invert_bounded, flat_invert_law, flat_pair_law, flat_forward_law
     implicit none
     private
 
     public :: hertzdamp_c_invert, hertzdamp_c_invert_bounded, hertzdamp_c_invert_n, hertzdamp_c_pair, &
               hertzdamp_c_forward, hertzdamp_c_strerror
+    public :: hertzdamp_c_invert_law, hertzdamp_c_pair_law, hertzdamp_c_forward_law
 
     integer, private :: i_   ! implied-do index of the initialisation below (never used at run time)
     !> The NUL-terminated messages of hertzdamp_message_table (the one table behind
@@ -35,7 +36,7 @@ contains
 
     !> `int hertzdamp_c_invert(double e, double tc, double m, double u, int end,
     !> double *k, double *d)`: stiffness and damping for restitution e and contact
-    !> time tc (THEORY.md section 6).  On failure *k = *d = 0; a NULL k or d gives
+    !> time tc (doc/theory.md section 6).  On failure *k = *d = 0; a NULL k or d gives
     !> HD_BAD_ARGUMENT.
     integer(c_int) function hertzdamp_c_invert(e, tc, m, u, iend, k, d) &
             bind(c, name='hertzdamp_c_invert') result(status)
@@ -114,14 +115,7 @@ contains
         integer(c_int), value, intent(in) :: iend       !! contact end: 0 overlap, 1 force
         real(c_double), intent(out), optional :: alpha  !! damping parameter alpha(e)
         real(c_double), intent(out), optional :: tau_c  !! dimensionless contact duration
-        real(c_double) :: a_, t_
-        integer :: st
-        status = HD_BAD_ARGUMENT
-        if (.not. (present(alpha) .and. present(tau_c))) return
-        call flat_pair(e, int(iend), a_, t_, st)
-        alpha = a_
-        tau_c = t_
-        status = int(st, c_int)
+        status = hertzdamp_c_pair_law(e, 0_c_int, iend, alpha, tau_c)
     end function hertzdamp_c_pair
 
     !> `int hertzdamp_c_forward(double k, double d, double m, double u, int end,
@@ -137,15 +131,79 @@ contains
         integer(c_int), value, intent(in) :: iend    !! contact end: 0 overlap, 1 force
         real(c_double), intent(out), optional :: e   !! restitution coefficient
         real(c_double), intent(out), optional :: tc  !! contact time [s]
+        status = hertzdamp_c_forward_law(k, d, m, u, 0_c_int, iend, e, tc)
+    end function hertzdamp_c_forward
+
+    !> `int hertzdamp_c_invert_law(double e, double tc, double m, double u, double k_phys,
+    !> int law, int end, double *k, double *d)`: hertzdamp_c_invert for the damping law
+    !> `law` (HERTZDAMP_DAMPING_*; d in kg s^-1 m^-q), with the physical-stiffness bound
+    !> when k_phys > 0 (k_phys = 0: none).  On failure *k = *d = 0; a NULL k or d gives
+    !> HD_BAD_ARGUMENT.
+    integer(c_int) function hertzdamp_c_invert_law(e, tc, m, u, k_phys, law, iend, k, d) &
+            bind(c, name='hertzdamp_c_invert_law') result(status)
+        real(c_double), value, intent(in) :: e       !! target restitution
+        real(c_double), value, intent(in) :: tc      !! target contact time [s]
+        real(c_double), value, intent(in) :: m       !! effective mass [kg]
+        real(c_double), value, intent(in) :: u       !! impact velocity [m/s]
+        real(c_double), value, intent(in) :: k_phys  !! physical stiffness bound [N m^-3/2], 0 for none
+        integer(c_int), value, intent(in) :: law     !! damping law: 0 linear, 1 tsuji, 2 kuwabara-kono
+        integer(c_int), value, intent(in) :: iend    !! contact end: 0 overlap, 1 force
+        real(c_double), intent(out), optional :: k   !! Hertz stiffness [N m^-3/2]
+        real(c_double), intent(out), optional :: d   !! damping coefficient [kg s^-1 m^-q]
+        real(c_double) :: k_, d_
+        integer :: st
+        status = HD_BAD_ARGUMENT
+        if (.not. (present(k) .and. present(d))) return
+        call flat_invert_law(e, tc, m, u, k_phys, int(law), int(iend), k_, d_, st)
+        k = k_
+        d = d_
+        status = int(st, c_int)
+    end function hertzdamp_c_invert_law
+
+    !> `int hertzdamp_c_pair_law(double e, int law, int end, double *alpha, double *tau_c)`:
+    !> the material-pair constants of the damping law `law`; per contact t* = T_c/tau_c,
+    !> k = m t*^{-5/2} u^{-1/2}, d = alpha m t*^{-1} (u t*)^{-q}.  On failure
+    !> *alpha = *tau_c = 0; a NULL pointer gives HD_BAD_ARGUMENT.
+    integer(c_int) function hertzdamp_c_pair_law(e, law, iend, alpha, tau_c) &
+            bind(c, name='hertzdamp_c_pair_law') result(status)
+        real(c_double), value, intent(in) :: e          !! target restitution
+        integer(c_int), value, intent(in) :: law        !! damping law: 0 linear, 1 tsuji, 2 kuwabara-kono
+        integer(c_int), value, intent(in) :: iend       !! contact end: 0 overlap, 1 force
+        real(c_double), intent(out), optional :: alpha  !! damping parameter alpha(e)
+        real(c_double), intent(out), optional :: tau_c  !! dimensionless contact duration
+        real(c_double) :: a_, t_
+        integer :: st
+        status = HD_BAD_ARGUMENT
+        if (.not. (present(alpha) .and. present(tau_c))) return
+        call flat_pair_law(e, int(law), int(iend), a_, t_, st)
+        alpha = a_
+        tau_c = t_
+        status = int(st, c_int)
+    end function hertzdamp_c_pair_law
+
+    !> `int hertzdamp_c_forward_law(double k, double d, double m, double u, int law,
+    !> int end, double *e, double *tc)`: hertzdamp_c_forward for the damping law `law`
+    !> (d in kg s^-1 m^-q).  Without rebound *e = 0, *tc = DBL_MAX, status
+    !> HD_NO_REBOUND; on other failures *e = *tc = 0; NULL gives HD_BAD_ARGUMENT.
+    integer(c_int) function hertzdamp_c_forward_law(k, d, m, u, law, iend, e, tc) &
+            bind(c, name='hertzdamp_c_forward_law') result(status)
+        real(c_double), value, intent(in) :: k       !! Hertz stiffness [N m^-3/2]
+        real(c_double), value, intent(in) :: d       !! damping coefficient [kg s^-1 m^-q]
+        real(c_double), value, intent(in) :: m       !! effective mass [kg]
+        real(c_double), value, intent(in) :: u       !! impact velocity [m/s]
+        integer(c_int), value, intent(in) :: law     !! damping law: 0 linear, 1 tsuji, 2 kuwabara-kono
+        integer(c_int), value, intent(in) :: iend    !! contact end: 0 overlap, 1 force
+        real(c_double), intent(out), optional :: e   !! restitution coefficient
+        real(c_double), intent(out), optional :: tc  !! contact time [s]
         real(c_double) :: e_, tc_
         integer :: st
         status = HD_BAD_ARGUMENT
         if (.not. (present(e) .and. present(tc))) return
-        call flat_forward(k, d, m, u, int(iend), e_, tc_, st)
+        call flat_forward_law(k, d, m, u, int(law), int(iend), e_, tc_, st)
         e = e_
         tc = tc_
         status = int(st, c_int)
-    end function hertzdamp_c_forward
+    end function hertzdamp_c_forward_law
 
     !> `const char *hertzdamp_c_strerror(int status)`: a static NUL-terminated English
     !> message for a status code (never NULL; unknown codes get "unknown status code").

@@ -5,7 +5,7 @@
 !> Everything here needs only the Fortran runtime (no GSL, no LAPACK).
 module hertzdamp_flat
     use hertzdamp_kinds, only: hertzdamp_rk
-    use hertzdamp_status, only: HD_OK, HD_NO_REBOUND
+    use hertzdamp_status, only: HD_OK, HD_NO_REBOUND, HD_BAD_KPHYS
     use hertzdamp_methods, only: hertzdamp_forward_dim, HD_METHOD_FIT
     use hertzdamp_inverse, only: mod_invert => hertzdamp_invert, hertzdamp_invert_alpha
     implicit none
@@ -18,10 +18,11 @@ module hertzdamp_flat
     integer, parameter, public :: legacy_method = HD_METHOD_FIT
 
     public :: flat_invert, flat_invert_bounded, flat_pair, flat_forward
+    public :: flat_invert_law, flat_pair_law, flat_forward_law
 
 contains
 
-    !> k and d for target restitution e and contact time tc (THEORY.md section 6).
+    !> k and d for target restitution e and contact time tc (doc/theory.md section 6).
     !> On failure k = d = 0 and status names the bad argument.
     pure elemental subroutine flat_invert(e, tc, m, u, iend, k, d, status)
         real(wp), intent(in) :: e        !! target restitution coefficient: 1e-3 <= e <= 1 (overlap), 1e-4 <= e <= 1 (force)
@@ -41,7 +42,7 @@ contains
 
     !> flat_invert with the physical-stiffness bound k_phys: where k_phys <= k the
     !> contact keeps k = k_phys and d = alpha m^(3/5) k_phys^(2/5) u^(1/5) (it is then
-    !> shorter than tc).  On failure k = d = 0 and status names the bad argument.
+    !> longer than tc: k_phys is softer).  On failure k = d = 0 and status names the bad argument.
     pure elemental subroutine flat_invert_bounded(e, tc, m, u, k_phys, iend, k, d, status)
         real(wp), intent(in) :: e        !! target restitution coefficient
         real(wp), intent(in) :: tc       !! target contact time [s]
@@ -68,11 +69,7 @@ contains
         real(wp), intent(out) :: alpha   !! damping parameter alpha(e)
         real(wp), intent(out) :: tau_c   !! dimensionless contact duration tau_c(alpha)
         integer, intent(out) :: status   !! HD_OK or an error code
-        call hertzdamp_invert_alpha(e, iend, alpha, tau_c, status, method=legacy_method)
-        if (status /= HD_OK) then
-            alpha = 0.0_wp
-            tau_c = 0.0_wp
-        end if
+        call flat_pair_law(e, 0, iend, alpha, tau_c, status)
     end subroutine flat_pair
 
     !> Restitution and contact time of a contact (k, d, m, u).  Without rebound
@@ -87,9 +84,67 @@ contains
         real(wp), intent(out) :: e       !! restitution coefficient
         real(wp), intent(out) :: tc      !! contact time [s]
         integer, intent(out) :: status   !! HD_OK, HD_NO_REBOUND or an error code
+        call flat_forward_law(k, d, m, u, 0, iend, e, tc, status)
+    end subroutine flat_forward
+
+    !> flat_invert for the damping law `law` (0 linear, 1 tsuji, 2 kuwabara-kono;
+    !> damping force d zeta^q zeta', d in kg s^-1 m^-q), with the physical-stiffness
+    !> bound k_phys when k_phys > 0 (k_phys = 0: no bound; negative or not finite:
+    !> HD_BAD_KPHYS).  On failure k = d = 0 and status names the bad argument.
+    pure elemental subroutine flat_invert_law(e, tc, m, u, k_phys, law, iend, k, d, status)
+        real(wp), intent(in) :: e        !! target restitution coefficient: [1e-3 or 1e-4, 1] (see hertzdamp_fit_law_e_min)
+        real(wp), intent(in) :: tc       !! target contact time [s]
+        real(wp), intent(in) :: m        !! effective mass [kg]
+        real(wp), intent(in) :: u        !! impact velocity [m s^-1]
+        real(wp), intent(in) :: k_phys   !! physical stiffness bound [N m^-3/2], or 0 for none
+        integer, intent(in) :: law       !! 0 linear, 1 tsuji, 2 kuwabara-kono
+        integer, intent(in) :: iend      !! 0 overlap, 1 force
+        real(wp), intent(out) :: k       !! Hertz stiffness [N m^-3/2]
+        real(wp), intent(out) :: d       !! damping coefficient [kg s^-1 m^-q]
+        integer, intent(out) :: status   !! HD_OK or an error code
+        if (.not. (k_phys >= 0.0_wp .and. k_phys <= huge(k_phys))) then
+            status = HD_BAD_KPHYS
+        else if (k_phys > 0.0_wp) then
+            call mod_invert(e, tc, m, u, iend, k, d, status, k_phys=k_phys, method=legacy_method, law=law)
+        else
+            call mod_invert(e, tc, m, u, iend, k, d, status, method=legacy_method, law=law)
+        end if
+        if (status /= HD_OK) then
+            k = 0.0_wp
+            d = 0.0_wp
+        end if
+    end subroutine flat_invert_law
+
+    !> flat_pair for the damping law `law`.  Per contact (mass m, speed u, contact time
+    !> T_c): t* = T_c / tau_c, k = m t*^(-5/2) u^(-1/2), d = alpha m t*^(-1) (u t*)^(-q).
+    pure elemental subroutine flat_pair_law(e, law, iend, alpha, tau_c, status)
+        real(wp), intent(in) :: e        !! target restitution coefficient
+        integer, intent(in) :: law       !! 0 linear, 1 tsuji, 2 kuwabara-kono
+        integer, intent(in) :: iend      !! 0 overlap, 1 force
+        real(wp), intent(out) :: alpha   !! damping parameter alpha(e)
+        real(wp), intent(out) :: tau_c   !! dimensionless contact duration tau_c(alpha)
+        integer, intent(out) :: status   !! HD_OK or an error code
+        call hertzdamp_invert_alpha(e, iend, alpha, tau_c, status, method=legacy_method, law=law)
+        if (status /= HD_OK) then
+            alpha = 0.0_wp
+            tau_c = 0.0_wp
+        end if
+    end subroutine flat_pair_law
+
+    !> flat_forward for the damping law `law` (d in kg s^-1 m^-q).
+    pure elemental subroutine flat_forward_law(k, d, m, u, law, iend, e, tc, status)
+        real(wp), intent(in) :: k        !! Hertz stiffness [N m^-3/2]
+        real(wp), intent(in) :: d        !! damping coefficient [kg s^-1 m^-q]
+        real(wp), intent(in) :: m        !! effective mass [kg]
+        real(wp), intent(in) :: u        !! impact velocity [m s^-1]
+        integer, intent(in) :: law       !! 0 linear, 1 tsuji, 2 kuwabara-kono
+        integer, intent(in) :: iend      !! 0 overlap, 1 force
+        real(wp), intent(out) :: e       !! restitution coefficient
+        real(wp), intent(out) :: tc      !! contact time [s]
+        integer, intent(out) :: status   !! HD_OK, HD_NO_REBOUND or an error code
         real(wp) :: alpha, tstar, zeta_max
         call hertzdamp_forward_dim(k, d, m, u, iend, legacy_method, alpha, tstar, e, tc, zeta_max, &
-                                   status)
+                                   status, law=law)
         select case (status)
         case (HD_OK)
         case (HD_NO_REBOUND)
@@ -99,6 +154,6 @@ contains
             e = 0.0_wp
             tc = 0.0_wp
         end select
-    end subroutine flat_forward
+    end subroutine flat_forward_law
 
 end module hertzdamp_flat

@@ -1,4 +1,4 @@
-!> The inverse problem of THEORY.md section 6 (adaptive collision time model): from a
+!> The inverse problem of doc/theory.md section 6 (adaptive collision time model): from a
 !> target restitution e and contact time T_c, for a contact with effective mass m and
 !> impact velocity u_in, the Hertz stiffness k and damping d
 !>
@@ -6,7 +6,13 @@
 !>     k = m t*^(-5/2) u^(-1/2),  d = alpha m / t*,
 !>
 !> with the physical bound: if k_phys <= k, then k = k_phys and
-!> d = alpha m^(3/5) k_phys^(2/5) u^(1/5) (the contact is then shorter than T_c).
+!> d = alpha m^(3/5) k_phys^(2/5) u^(1/5) (the contact is then longer than T_c).
+!>
+!> For the damping law q (argument `law`: 0 linear, the default; 1 tsuji, q = 1/4;
+!> 2 kuwabara-kono, q = 1/2; doc/damping-laws.md) alpha = d t* (u t*)^q / m, so
+!>     d = alpha m t*^(-1) (u t*)^(-q),
+!> and with the bound d = alpha m^((3-2q)/5) k_phys^((2+2q)/5) u^((1-4q)/5)
+!> (tsuji: alpha sqrt(m k_phys), independent of u).
 !>
 !> alpha(e) and tau_c(alpha(e)) come from the fitted approximant (default, ~1e-13
 !> relative, no iteration), the compact formula (~1e-5 on e in [0.05, 1]) or a
@@ -29,7 +35,9 @@ module hertzdamp_inverse
     use hertzdamp_methods, only: HD_METHOD_RK45, HD_METHOD_SERIES, HD_METHOD_PADE, HD_METHOD_COMPACT, &
                                  HD_METHOD_FIT, HD_METHOD_ITERATIVE, HD_METHOD_FIRST_ORDER, hertzdamp_forward_alpha, &
                                  hertzdamp_default_accuracy
-    use hertzdamp_fit, only: hertzdamp_fit_inverse, hertzdamp_fit_e_min_overlap, hertzdamp_fit_e_min_force
+    use hertzdamp_fit, only: hertzdamp_fit_inverse
+    use hertzdamp_fit_laws, only: hertzdamp_fit_law_inverse, hertzdamp_fit_law_e_min
+    use hertzdamp_laws, only: HD_DAMPING_LINEAR, hertzdamp_law_q, hertzdamp_law_status
     use hertzdamp_compact, only: hertzdamp_compact_inverse
     use hertzdamp_series, only: hertzdamp_pade_alpha_max
     use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
@@ -49,14 +57,14 @@ contains
 
     !> k and d such that the collision has restitution e and contact time tc.
     pure elemental subroutine hertzdamp_invert(e, tc, m, u, iend, k, d, status, alpha, tstar, tau_c, &
-                                               bound_active, k_phys, method, tol, accuracy)
+                                               bound_active, k_phys, method, tol, accuracy, law)
         real(wp), intent(in) :: e                      !! target restitution coefficient, e_min <= e <= 1
         real(wp), intent(in) :: tc                     !! target contact time T_c [s]
         real(wp), intent(in) :: m                      !! effective mass [kg]
         real(wp), intent(in) :: u                      !! impact velocity u_in [m s^-1]
         integer, intent(in) :: iend                    !! HD_END_OVERLAP or HD_END_FORCE
         real(wp), intent(out) :: k                     !! stiffness [N m^-3/2] (0 on error)
-        real(wp), intent(out) :: d                     !! damping coefficient [kg s^-1] (0 on error)
+        real(wp), intent(out) :: d                     !! damping coefficient [kg s^-1 m^-q] (0 on error)
         integer, intent(out) :: status                 !! HD_OK or an error code
         real(wp), intent(out), optional :: alpha       !! damping parameter alpha(e)
         real(wp), intent(out), optional :: tstar       !! time unit of the returned k [s] (contact time = tstar tau_c)
@@ -66,9 +74,10 @@ contains
         integer, intent(in), optional :: method        !! HD_METHOD_FIT (default), _COMPACT, _ITERATIVE or _RK45
         real(wp), intent(in), optional :: tol          !! tolerance of the iterative method (default 1e-10)
         real(wp), intent(in), optional :: accuracy     !! relative accuracy asked of series and Pade (default 1e-10)
-        real(wp) :: a, tau, ts, lk, lts
+        integer, intent(in), optional :: law           !! HD_DAMPING_* (default linear): damping force d zeta^q zeta'
+        real(wp) :: a, tau, ts, lk, lts, q
         logical :: bound
-        integer :: meth
+        integer :: meth, law_
         k = 0.0_wp
         d = 0.0_wp
         a = 0.0_wp
@@ -77,7 +86,10 @@ contains
         bound = .false.
         meth = HD_METHOD_FIT
         if (present(method)) meth = method
-        status = HD_OK
+        law_ = HD_DAMPING_LINEAR
+        if (present(law)) law_ = law
+        q = hertzdamp_law_q(law_)
+        status = hertzdamp_law_status(law_)
         if (.not. (tc > 0.0_wp .and. tc <= huge(tc))) status = HD_BAD_TIME
         if (.not. (m > 0.0_wp .and. m <= huge(m))) status = HD_BAD_MASS
         if (.not. (u > 0.0_wp .and. u <= huge(u))) status = HD_BAD_VELOCITY
@@ -85,11 +97,13 @@ contains
             if (.not. (k_phys > 0.0_wp .and. k_phys <= huge(k_phys))) status = HD_BAD_KPHYS
         end if
         if (status == HD_OK) then
-            if (meth == HD_METHOD_FIT) then
+            if (meth == HD_METHOD_FIT .and. law_ == HD_DAMPING_LINEAR) then
                 ! the hot path of DEM codes: straight to the approximant (it checks e and iend)
                 call hertzdamp_fit_inverse(e, iend, a, tau, status)
+            else if (meth == HD_METHOD_FIT) then
+                call hertzdamp_fit_law_inverse(e, iend, law_, a, tau, status)
             else
-                call hertzdamp_invert_alpha(e, iend, a, tau, status, meth, tol, accuracy)
+                call hertzdamp_invert_alpha(e, iend, a, tau, status, meth, tol, accuracy, law_)
             end if
         end if
         if (status == HD_OK) then
@@ -97,16 +111,17 @@ contains
             if (min(m, u, tc) >= safe_lo .and. max(m, u, tc) <= safe_hi) then
                 ! direct path: every intermediate is a normal double here
                 k = m / (ts * ts * sqrt(ts * u))
-                d = a * m / ts
                 if (present(k_phys)) then
                     if (k_phys <= k) then
                         bound = .true.
                         lts = 0.4_wp * (log(m) - log(k_phys)) - 0.2_wp * log(u)
                         call hertzdamp_safe_exp(lts, ts, status)
                         k = k_phys
-                        d = a * m / ts
                     end if
                 end if
+                ! d = alpha m t*^-1 (u t*)^-q
+                d = a * m / ts
+                if (q > 0.0_wp) d = d / law_power(u * ts, law_)
             else
                 ! logarithmic path (extreme inputs)
                 lts = log(tc) - log(tau)
@@ -120,7 +135,7 @@ contains
                 end if
                 call hertzdamp_safe_exp(lts, ts, status)
                 call hertzdamp_safe_exp(lk, k, status)
-                if (a > 0.0_wp) call hertzdamp_safe_exp_or_zero(log(a) + log(m) - lts, d, status)
+                if (a > 0.0_wp) call hertzdamp_safe_exp_or_zero(log(a) + log(m) - lts - q * (log(u) + lts), d, status)
             end if
             if (status == HD_OK) then
                 if (.not. (ieee_is_finite(d) .and. d < huge(d))) status = HD_OUT_OF_RANGE
@@ -140,10 +155,19 @@ contains
         if (present(bound_active)) bound_active = bound
     end subroutine hertzdamp_invert
 
+    !> (u t*)^q of the law, by square roots (q = 1/4 or 1/2).
+    pure real(wp) function law_power(x, law) result(y)
+        real(wp), intent(in) :: x
+        integer, intent(in) :: law
+        y = sqrt(x)
+        if (hertzdamp_law_q(law) == 0.25_wp) y = sqrt(y)
+    end function law_power
+
     !> The dimensionless inverse e -> (alpha, tau_c) by the chosen method.
-    !> These are the constants of a material pair: they depend on e and the contact end
-    !> only (HERTZDAMP_PAIR, hertzdamp_c_pair).
-    pure elemental subroutine hertzdamp_invert_alpha(e, iend, alpha, tau_c, status, method, tol, accuracy)
+    !> These are the constants of a material pair: they depend on e, the contact end and
+    !> the damping law only (HERTZDAMP_PAIR, hertzdamp_c_pair).  Every law: fit (default),
+    !> iterative / rk45, first-order; compact, series and Pade: linear law only.
+    pure elemental subroutine hertzdamp_invert_alpha(e, iend, alpha, tau_c, status, method, tol, accuracy, law)
         real(wp), intent(in) :: e                !! restitution coefficient, e_min <= e <= 1
         integer, intent(in) :: iend              !! HD_END_OVERLAP or HD_END_FORCE
         real(wp), intent(out) :: alpha           !! damping parameter
@@ -153,30 +177,39 @@ contains
                                                  !! _FIRST_ORDER, _ITERATIVE, _RK45
         real(wp), intent(in), optional :: tol    !! iterative tolerance (default 1e-10, within [1e-15, 1e-2])
         real(wp), intent(in), optional :: accuracy !! relative accuracy asked of series and Pade (default 1e-10)
+        integer, intent(in), optional :: law     !! HD_DAMPING_* (default linear)
         real(wp) :: emin, tol_, acc
-        integer :: meth
+        integer :: meth, law_
         alpha = 0.0_wp
         tau_c = 0.0_wp
         meth = HD_METHOD_FIT
         if (present(method)) meth = method
-        status = HD_OK
+        law_ = HD_DAMPING_LINEAR
+        if (present(law)) law_ = law
+        status = hertzdamp_law_status(law_)
+        if (status /= HD_OK) return
         if (iend /= HD_END_OVERLAP .and. iend /= HD_END_FORCE) then
             status = HD_BAD_END
             return
         end if
-        emin = merge(hertzdamp_fit_e_min_overlap, hertzdamp_fit_e_min_force, iend == HD_END_OVERLAP)
+        emin = hertzdamp_fit_law_e_min(law_, iend)
         if (.not. (e >= emin .and. e <= 1.0_wp)) then
             status = HD_BAD_RESTITUTION
             return
         end if
+        if (law_ /= HD_DAMPING_LINEAR .and. (meth == HD_METHOD_COMPACT .or. meth == HD_METHOD_SERIES .or. &
+                                             meth == HD_METHOD_PADE)) then
+            status = HD_NOT_SUPPORTED
+            return
+        end if
         select case (meth)
         case (HD_METHOD_FIT)
-            call hertzdamp_fit_inverse(e, iend, alpha, tau_c, status)
+            call hertzdamp_fit_law_inverse(e, iend, law_, alpha, tau_c, status)
         case (HD_METHOD_COMPACT)
             call hertzdamp_compact_inverse(e, iend, alpha, tau_c, status)
         case (HD_METHOD_FIRST_ORDER)
             ! e = 1 - e1 alpha + O(alpha^2), tau_c = tau_c(0) + O(alpha) (both ends)
-            alpha = (1.0_wp - e) / hertzdamp_e1()
+            alpha = (1.0_wp - e) / hertzdamp_e1(law_)
             tau_c = hertzdamp_tau_c0()
         case (HD_METHOD_ITERATIVE, HD_METHOD_RK45)
             tol_ = hertzdamp_invert_default_tol
@@ -185,7 +218,7 @@ contains
                 status = HD_BAD_TOL
                 return
             end if
-            call iterate(e, iend, tol_, alpha, tau_c, status)
+            call iterate(e, iend, law_, tol_, alpha, tau_c, status)
         case (HD_METHOD_SERIES, HD_METHOD_PADE)
             if (iend /= HD_END_OVERLAP) then
                 status = HD_NOT_SUPPORTED   ! the force definition has no Taylor series
@@ -262,7 +295,7 @@ contains
         real(wp), intent(out) :: lne, tau_c
         integer, intent(out) :: status
         type(hertzdamp_collision) :: r
-        r = hertzdamp_forward_alpha(a, HD_END_OVERLAP, meth, accuracy=huge(1.0_wp))
+        r = hertzdamp_forward_alpha(a, HD_END_OVERLAP, meth, accuracy=1.0_wp)   ! no guard while iterating
         status = r%status
         tau_c = r%tau_c
         lne = 0.0_wp
@@ -270,10 +303,11 @@ contains
     end subroutine series_ln_e
 
     !> Safeguarded secant (bracketing, bisection fallback) on g(alpha) = ln e(alpha) - ln e
-    !> with one reference solve per trial.
-    pure subroutine iterate(e, iend, tol, alpha, tau_c, status)
+    !> with one reference solve per trial.  No rebound, and e below what rk45 resolves near
+    !> alpha_c (HD_INACCURATE), bracket from above.
+    pure subroutine iterate(e, iend, law, tol, alpha, tau_c, status)
         real(wp), intent(in) :: e, tol
-        integer, intent(in) :: iend
+        integer, intent(in) :: iend, law
         real(wp), intent(out) :: alpha, tau_c
         integer, intent(out) :: status
         type(hertzdamp_collision) :: r
@@ -289,8 +323,8 @@ contains
         if (lt < 1.0e-10_wp) then
             ! 1 - e below what the reference integrator resolves (~1e-13): the first-order
             ! law ln e = -e1 alpha + O(alpha^2) is exact to O(alpha) ~ 1e-10 relative here
-            alpha = lt / hertzdamp_e1()
-            r = hertzdamp_rk45_collide(alpha, iend, rtol)
+            alpha = lt / hertzdamp_e1(law)
+            r = hertzdamp_rk45_collide(alpha, iend, rtol, law)
             status = r%status
             if (status == HD_OK) tau_c = r%tau_c
             return
@@ -300,11 +334,11 @@ contains
         hi = huge(1.0_wp)
         a0 = 0.0_wp
         g0 = lt
-        a1 = lt / hertzdamp_e1()          ! first-order guess
-        if (iend == HD_END_OVERLAP) a1 = min(a1, 1.0_wp)
+        a1 = lt / hertzdamp_e1(law)          ! first-order guess
+        if (iend == HD_END_OVERLAP .and. law == HD_DAMPING_LINEAR) a1 = min(a1, 1.0_wp)
         do it = 1, 200
-            r = hertzdamp_rk45_collide(a1, iend, rtol)
-            if (r%status == HD_NO_REBOUND) then
+            r = hertzdamp_rk45_collide(a1, iend, rtol, law)
+            if (r%status == HD_NO_REBOUND .or. r%status == HD_INACCURATE) then
                 hi = a1
                 have_hi = .true.
                 a1 = 0.5_wp * (lo + hi)
@@ -341,7 +375,7 @@ contains
                 a0 = a1
                 g0 = g1
                 a1 = anew
-                r = hertzdamp_rk45_collide(a1, iend, rtol)
+                r = hertzdamp_rk45_collide(a1, iend, rtol, law)
                 if (r%status == HD_OK) then
                     alpha = a1
                     tau_c = r%tau_c

@@ -34,7 +34,7 @@ end subroutine hertzdamp_invert
 
 !> hertzdamp_invert with the physical-stiffness bound kphys = (4/3) E* sqrt(R*): where
 !> kphys <= k the contact keeps k = kphys and d = alpha m^(3/5) kphys^(2/5) u^(1/5)
-!> (it is then shorter than tc, and the material's own stiffness is recovered once
+!> (it is then longer than tc, and the material's own stiffness is recovered once
 !> the time step is small enough).  On failure k = d = 0, ierr /= 0.
 subroutine hertzdamp_invert_bounded(e, tc, m, u, kphys, iend, k, d, ierr)
     use hertzdamp_flat, only: flat_invert_bounded
@@ -99,6 +99,56 @@ subroutine hertzdamp_invert_n(n, e, tc, m, u, iend, k, d, ierr)
     integer, intent(out) :: ierr(n)           !! status of each contact (n)
     call flat_invert(e, tc, m, u, iend, k, d, ierr)
 end subroutine hertzdamp_invert_n
+
+!> hertzdamp_invert for the damping law ilaw (0 linear, 1 tsuji, 2 kuwabara-kono:
+!> damping force d zeta^q zeta', q = 0, 1/4, 1/2, d in kg s^-1 m^-q), with the
+!> physical-stiffness bound kphys when kphys > 0 (kphys = 0: no bound).  On failure
+!> k = d = 0, ierr /= 0.
+subroutine hertzdamp_invert_law(e, tc, m, u, kphys, ilaw, iend, k, d, ierr)
+    use hertzdamp_flat, only: flat_invert_law
+    implicit none
+    double precision, intent(in) :: e     !! target restitution coefficient
+    double precision, intent(in) :: tc    !! target contact time [s]
+    double precision, intent(in) :: m     !! effective mass [kg]
+    double precision, intent(in) :: u     !! impact velocity [m/s]
+    double precision, intent(in) :: kphys !! physical stiffness bound [N m^-3/2], 0 for none
+    integer, intent(in) :: ilaw           !! damping law: 0 linear, 1 tsuji, 2 kuwabara-kono
+    integer, intent(in) :: iend           !! contact end: 0 overlap, 1 force
+    double precision, intent(out) :: k    !! Hertz stiffness [N m^-3/2]
+    double precision, intent(out) :: d    !! damping coefficient [kg s^-1 m^-q]
+    integer, intent(out) :: ierr          !! 0 on success, else a status code
+    call flat_invert_law(e, tc, m, u, kphys, ilaw, iend, k, d, ierr)
+end subroutine hertzdamp_invert_law
+
+!> The material-pair constants of the damping law ilaw; per contact
+!>     tstar = tc/tauc,  k = m tstar**(-2.5) / sqrt(u),  d = alpha m / tstar / (u tstar)**q.
+subroutine hertzdamp_pair_law(e, ilaw, iend, alpha, tauc, ierr)
+    use hertzdamp_flat, only: flat_pair_law
+    implicit none
+    double precision, intent(in) :: e      !! target restitution coefficient
+    integer, intent(in) :: ilaw            !! damping law: 0 linear, 1 tsuji, 2 kuwabara-kono
+    integer, intent(in) :: iend            !! contact end: 0 overlap, 1 force
+    double precision, intent(out) :: alpha !! damping parameter alpha(e)
+    double precision, intent(out) :: tauc  !! dimensionless contact duration tau_c(alpha)
+    integer, intent(out) :: ierr           !! 0 on success, else a status code
+    call flat_pair_law(e, ilaw, iend, alpha, tauc, ierr)
+end subroutine hertzdamp_pair_law
+
+!> hertzdamp_forward for the damping law ilaw (d in kg s^-1 m^-q).
+subroutine hertzdamp_forward_law(k, d, m, u, ilaw, iend, e, tc, ierr)
+    use hertzdamp_flat, only: flat_forward_law
+    implicit none
+    double precision, intent(in) :: k     !! Hertz stiffness [N m^-3/2]
+    double precision, intent(in) :: d     !! damping coefficient [kg s^-1 m^-q]
+    double precision, intent(in) :: m     !! effective mass [kg]
+    double precision, intent(in) :: u     !! impact velocity [m/s]
+    integer, intent(in) :: ilaw           !! damping law: 0 linear, 1 tsuji, 2 kuwabara-kono
+    integer, intent(in) :: iend           !! contact end: 0 overlap, 1 force
+    double precision, intent(out) :: e    !! restitution coefficient
+    double precision, intent(out) :: tc   !! contact time [s]
+    integer, intent(out) :: ierr          !! 0 on success, 1 no rebound, else a status code
+    call flat_forward_law(k, d, m, u, ilaw, iend, e, tc, ierr)
+end subroutine hertzdamp_forward_law
 
 !> The message of a status code, copied into text (truncated or blank-padded).
 subroutine hertzdamp_message(ierr, text)

@@ -62,10 +62,7 @@ contains
         real(wp), intent(in) :: m1, m2    !! masses of the two bodies [kg]
         real(wp), intent(out) :: mass     !! effective mass [kg] (0 on failure)
         integer, intent(out) :: status    !! HD_OK, HD_BAD_MASS or HD_OUT_OF_RANGE
-        mass = 0.0_wp
-        status = hertzdamp_check_positive(m1, HD_BAD_MASS)
-        if (status == HD_OK) status = hertzdamp_check_positive(m2, HD_BAD_MASS)
-        if (status == HD_OK) call harmonic(m1, m2, mass, status)
+        call combine(m1, m2, HD_BAD_MASS, mass, status)
     end subroutine hertzdamp_effective_mass
 
     !> Effective radius of two spheres, R1 R2 / (R1 + R2) [m].  Against a flat wall the
@@ -74,10 +71,7 @@ contains
         real(wp), intent(in) :: r1, r2    !! radii of the two spheres [m]
         real(wp), intent(out) :: radius   !! effective radius [m] (0 on failure)
         integer, intent(out) :: status    !! HD_OK, HD_BAD_RADIUS or HD_OUT_OF_RANGE
-        radius = 0.0_wp
-        status = hertzdamp_check_positive(r1, HD_BAD_RADIUS)
-        if (status == HD_OK) status = hertzdamp_check_positive(r2, HD_BAD_RADIUS)
-        if (status == HD_OK) call harmonic(r1, r2, radius, status)
+        call combine(r1, r2, HD_BAD_RADIUS, radius, status)
     end subroutine hertzdamp_effective_radius
 
     !> Plane-strain modulus of one body, E / (1 - nu^2) [Pa].
@@ -230,6 +224,18 @@ contains
         status = hertzdamp_check_positive(youngs, HD_BAD_MODULUS)
         if (status == HD_OK .and. .not. (poisson > -1.0_wp .and. poisson <= 0.5_wp)) status = HD_BAD_POISSON
     end function check_elastic
+
+    !> a b / (a + b) after checking that a and b are finite and positive (else `bad`).
+    pure elemental subroutine combine(a, b, bad, c, status)
+        real(wp), intent(in) :: a, b
+        integer, intent(in) :: bad
+        real(wp), intent(out) :: c
+        integer, intent(out) :: status
+        c = 0.0_wp
+        status = hertzdamp_check_positive(a, bad)
+        if (status == HD_OK) status = hertzdamp_check_positive(b, bad)
+        if (status == HD_OK) call harmonic(a, b, c, status)
+    end subroutine combine
 
     !> a b / (a + b) for finite positive a, b without overflow: min / (1 + min/max).
     !> HD_OUT_OF_RANGE when the result is below the normal range.

@@ -6,10 +6,12 @@ module hertzdamp_methods
     use hertzdamp_status, only: HD_OK, HD_NO_REBOUND, HD_NOT_SUPPORTED, HD_BAD_ARGUMENT, HD_OUT_OF_RANGE, &
                                 HD_END_OVERLAP, HD_END_FORCE, HD_OUTSIDE_VALIDITY, HD_BAD_ORDER, HD_BAD_END, &
                                 HD_INACCURATE
+    use hertzdamp_laws, only: HD_DAMPING_LINEAR, hertzdamp_law_status
     use hertzdamp_series, only: hertzdamp_series_eval, hertzdamp_pade_eval
     use hertzdamp_scaling, only: hertzdamp_reduce
     use hertzdamp_rk45, only: hertzdamp_collision, hertzdamp_rk45_collide, hertzdamp_rk45_default_tol
-    use hertzdamp_fit, only: hertzdamp_fit_forward, hertzdamp_approx_alpha_status
+    use hertzdamp_fit, only: hertzdamp_approx_alpha_status
+    use hertzdamp_fit_laws, only: hertzdamp_fit_law_forward
     use hertzdamp_constants, only: hertzdamp_e1, hertzdamp_tau_c0
     use hertzdamp_compact, only: hertzdamp_compact_forward
     use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
@@ -62,32 +64,53 @@ contains
         end do
     end function hertzdamp_method_code
 
-    !> e, tau_c, z_max, tau_max for one alpha by the chosen method.
+    !> e, tau_c, z_max, tau_max for one alpha by the chosen method, for the damping law
+    !> `law` (default linear).  Every law: rk45, fit and first-order (e1 of the law); the
+    !> other methods exist for the linear law only (HD_NOT_SUPPORTED for the others).
     !> Series and Pade check their own error estimate against `accuracy` (relative,
-    !> default hertzdamp_default_accuracy): beyond it the status is HD_INACCURATE.
+    !> default hertzdamp_default_accuracy): beyond it the status is HD_INACCURATE;
+    !> an accuracy of 1 or more asks for no such check.
     !> On any status but HD_OK and HD_NO_REBOUND the results are 0.
-    pure elemental function hertzdamp_forward_alpha(alpha, iend, method, tol, order, accuracy) result(res)
+    pure elemental function hertzdamp_forward_alpha(alpha, iend, method, tol, order, accuracy, law) result(res)
         real(wp), intent(in) :: alpha              !! damping parameter
         integer, intent(in) :: iend                !! HD_END_OVERLAP or HD_END_FORCE
         integer, intent(in) :: method              !! HD_METHOD_*
         real(wp), intent(in), optional :: tol      !! rk45 tolerance
         integer, intent(in), optional :: order     !! series truncation order
         real(wp), intent(in), optional :: accuracy !! relative accuracy asked of series and Pade
+        integer, intent(in), optional :: law       !! HD_DAMPING_* (default linear)
         type(hertzdamp_collision) :: res
         real(wp) :: tol_, acc, err_e, err_tau
-        integer :: st
+        integer :: st, law_
         tol_ = hertzdamp_rk45_default_tol
         if (present(tol)) tol_ = tol
         acc = hertzdamp_default_accuracy
         if (present(accuracy)) acc = accuracy
+        law_ = HD_DAMPING_LINEAR
+        if (present(law)) law_ = law
+        res%law = law_
+        if (hertzdamp_law_status(law_) /= HD_OK) then
+            res%alpha = alpha
+            res%iend = iend
+            res%status = hertzdamp_law_status(law_)
+            return
+        end if
+        if (law_ /= HD_DAMPING_LINEAR .and. method /= HD_METHOD_RK45 .and. method /= HD_METHOD_FIRST_ORDER .and. &
+            method /= HD_METHOD_FIT) then
+            res%alpha = alpha
+            res%iend = iend
+            res%status = HD_NOT_SUPPORTED
+            if (method < HD_METHOD_RK45 .or. method > HD_METHOD_FIRST_ORDER) res%status = HD_BAD_ARGUMENT
+            return
+        end if
         select case (method)
         case (HD_METHOD_RK45)
-            res = hertzdamp_rk45_collide(alpha, iend, tol_)
+            res = hertzdamp_rk45_collide(alpha, iend, tol_, law_)
         case (HD_METHOD_FIT)
             ! z_max and tau_max are fitted too (0 beyond alpha = 1.3 for the overlap)
             res%alpha = alpha
             res%iend = iend
-            call hertzdamp_fit_forward(alpha, iend, res%e, res%tau_c, res%status, res%z_max, res%tau_max)
+            call hertzdamp_fit_law_forward(alpha, iend, law_, res%e, res%tau_c, res%status, res%z_max, res%tau_max)
         case (HD_METHOD_COMPACT)
             ! the compact formulas give e and tau_c only (z_max = tau_max = 0)
             res%alpha = alpha
@@ -99,7 +122,7 @@ contains
             res%iend = iend
             res%status = hertzdamp_approx_alpha_status(alpha, iend)
             if (res%status == HD_OK) then
-                res%e = 1.0_wp - hertzdamp_e1() * alpha
+                res%e = 1.0_wp - hertzdamp_e1(law_) * alpha
                 res%tau_c = hertzdamp_tau_c0()
                 if (.not. (res%e > 0.0_wp)) then
                     res%status = HD_OUTSIDE_VALIDITY
@@ -125,7 +148,10 @@ contains
             select case (st)
             case (HD_OK, HD_INACCURATE)
                 res%status = HD_OK
-                if (.not. (err_e <= acc * res%e .and. err_tau <= acc * res%tau_c)) res%status = HD_INACCURATE
+                ! accuracy >= 1 asks for no guard (and never multiplies a huge value)
+                if (acc < 1.0_wp) then
+                    if (.not. (err_e <= acc * res%e .and. err_tau <= acc * res%tau_c)) res%status = HD_INACCURATE
+                end if
                 ! a truncated series far from alpha = 0 can give a meaningless value
                 if (.not. (res%e > 0.0_wp .and. res%tau_c > 0.0_wp)) res%status = HD_OUTSIDE_VALIDITY
             case (HD_BAD_ORDER)
@@ -146,12 +172,13 @@ contains
         end select
     end function hertzdamp_forward_alpha
 
-    !> The dimensional forward problem.  On no rebound e = 0 and T_c = +inf with
+    !> The dimensional forward problem (damping force d zeta^q zeta' of the law, default
+    !> linear q = 0: d in kg s^-1 m^-q).  On no rebound e = 0 and T_c = +inf with
     !> status HD_NO_REBOUND; on any other failure all outputs are 0.
     pure elemental subroutine hertzdamp_forward_dim(k, d, m, u, iend, method, alpha, tstar, e, tc, &
-                                                   zeta_max, status, tol, order, accuracy)
+                                                   zeta_max, status, tol, order, accuracy, law)
         real(wp), intent(in) :: k                !! Hertz stiffness [N m^-3/2]
-        real(wp), intent(in) :: d                !! damping coefficient [kg s^-1]
+        real(wp), intent(in) :: d                !! damping coefficient [kg s^-1 m^-q] of the law
         real(wp), intent(in) :: m                !! effective mass [kg]
         real(wp), intent(in) :: u                !! impact velocity [m s^-1]
         integer, intent(in) :: iend              !! HD_END_OVERLAP or HD_END_FORCE
@@ -165,13 +192,14 @@ contains
         real(wp), intent(in), optional :: tol    !! rk45 tolerance
         integer, intent(in), optional :: order   !! series order
         real(wp), intent(in), optional :: accuracy !! relative accuracy asked of series and Pade
+        integer, intent(in), optional :: law     !! HD_DAMPING_* (default linear)
         type(hertzdamp_collision) :: r
         e = 0.0_wp
         tc = 0.0_wp
         zeta_max = 0.0_wp
-        call hertzdamp_reduce(k, d, m, u, alpha, tstar, status)
+        call hertzdamp_reduce(k, d, m, u, alpha, tstar, status, law)
         if (status /= HD_OK) return
-        r = hertzdamp_forward_alpha(alpha, iend, method, tol, order, accuracy)
+        r = hertzdamp_forward_alpha(alpha, iend, method, tol, order, accuracy, law)
         status = r%status
         if (status /= HD_OK .and. status /= HD_NO_REBOUND) then
             alpha = 0.0_wp

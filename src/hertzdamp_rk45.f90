@@ -1,12 +1,14 @@
 !> The reference integrator: adaptive Dormand-Prince 5(4) for one damped Hertz collision.
 !>
-!> Solves  z'' + alpha z' + z^(3/2) = 0,  z(0) = 0, z'(0) = 1  (THEORY.md section 2)
+!> Solves  z'' + alpha z^q z' + z^(3/2) = 0,  z(0) = 0, z'(0) = 1  for the damping law
+!> q = 0 (linear, the default), 1/4 (tsuji) or 1/2 (kuwabara-kono) (doc/damping-laws.md)
 !> and returns e, tau_c, z_max, tau_max for either contact-end definition.
 !>
-!> How the non-smooth points are handled (THEORY.md section 5):
-!> - Start: z^(3/2) is not smooth at z = 0, so the integration starts at
-!>   tau0 = 0.1 min(1, 1/|alpha|) from the local series z = tau sum_k p_k tau^(k/2)
-!>   (`local_series`), accurate to round-off there.
+!> How the non-smooth points are handled (doc/theory.md section 5):
+!> - Start: z^(3/2) and z^q are not smooth at z = 0, so the integration starts at
+!>   tau0 = rho0^N / kappa^N from the local series z = tau sum_k p_k (kappa tau^(1/N))^k
+!>   (hertzdamp_local_series; N = 2, or 4 for tsuji; kappa = max(1, |alpha|^(1/(N(1+q))));
+!>   rho0^2 = 0.1), accurate to round-off there.  For the linear law tau0 = 0.1 min(1, 1/|alpha|).
 !> - Steps: Dormand-Prince 5(4) with local extrapolation, Hairer's PI step-size
 !>   controller, the 4th-order continuous extension as dense output.
 !> - Events are found on the dense output of the accepted step by a bracketing
@@ -16,17 +18,31 @@
 !>   remaining time z/|z'| falls below sigma_sw, the state is matched to the local
 !>   series of the time-reversed collision (damping -alpha, impact speed e) and the
 !>   contact end follows from that match: no step ever crosses z = 0.
-!> - End (force): the total force -alpha z' - z^(3/2) returning to zero happens at
+!> - End (force): the total force -alpha z^q z' - z^(3/2) returning to zero happens at
 !>   z > 0; it is located on the dense output, or inside the matched end series
 !>   when it happens after the switch.
-!> - No rebound (overlap, alpha >= alpha_c): once 0 < z <= alpha^4/36 and
-!>   -(2/alpha) z^(3/2) <= z' <= 0, the region is invariant and z' >= -(2/alpha) z^(3/2)
-!>   keeps z > 0 for all time: status HD_NO_REBOUND in bounded work.
+!> - No rebound (overlap end), certified by a forward-invariant region on which z stays
+!>   positive for all time (doc/damping-laws.md):
+!>   linear:  0 < z <= alpha^4/36 and -(2/alpha) z^(3/2) <= z' <= 0;
+!>   tsuji (alpha >= sqrt 5):  z > 0 and -(2 alpha/5) z^(5/4) <= z' <= 0;
+!>   kuwabara-kono: none (the overlap returns for every alpha).
+!> - Near alpha_c (linear, tsuji) the rebound decision and e are decided as documented
+!>   at hertzdamp_rk45_solve: a fixed band below alpha_c reports HD_INACCURATE, so that
+!>   the status is monotone in alpha.
 module hertzdamp_rk45
     use hertzdamp_kinds, only: hertzdamp_rk
     use hertzdamp_status, only: HD_OK, HD_NO_REBOUND, HD_MAX_STEPS, HD_STEP_UNDERFLOW, &
                                 HD_BAD_ALPHA, HD_BAD_END, HD_BAD_TOL, HD_NO_CONVERGENCE, &
-                                HD_END_OVERLAP, HD_END_FORCE
+                                HD_END_OVERLAP, HD_END_FORCE, HD_INACCURATE, HD_NOT_SUPPORTED, HD_BAD_LAW
+    use hertzdamp_laws, only: HD_DAMPING_LINEAR, HD_DAMPING_TSUJI, HD_DAMPING_KUWABARA_KONO, hertzdamp_law_status, &
+                              hertzdamp_law_has_alpha_c, hertzdamp_law_alpha_c, hertzdamp_law_q, &
+                              hertzdamp_alpha_c_tsuji, hertzdamp_tsuji_alpha
+    use hertzdamp_rk45_kernel, only: hertzdamp_rk45_stats, hertzdamp_local_series_t, HD_MODEL_HERTZ, &
+                                     HD_MODEL_FORCE, HD_EVENT_TURN, HD_EVENT_FORCE, HD_EVENT_SWITCH, &
+                                     hertzdamp_rhs, hertzdamp_zq, hertzdamp_dp_step, hertzdamp_local_series, &
+                                     hertzdamp_series_state, hertzdamp_series_root, hertzdamp_series_kappa, &
+                                     hertzdamp_event_value, hertzdamp_locate, hertzdamp_sub_step, &
+                                     hertzdamp_polish, hertzdamp_kmax_series
     use, intrinsic :: ieee_arithmetic, only: ieee_is_finite, ieee_value, ieee_positive_inf
     implicit none
     private
@@ -37,23 +53,16 @@ module hertzdamp_rk45
     real(wp), parameter, public :: hertzdamp_rk45_default_tol = 1.0e-13_wp
     !> Smallest alpha accepted for the overlap definition (energy-injecting contacts).
     real(wp), parameter, public :: hertzdamp_alpha_min = -10.0_wp
-    !> Largest alpha accepted (beyond it z_max ~ 1/alpha leaves the exponent range).
+    !> Largest alpha accepted (beyond it z_max ~ alpha^(-1/(1+q)) leaves the exponent range).
     real(wp), parameter, public :: hertzdamp_alpha_max = 1.0e100_wp
+    !> Restitution below which the tsuji overlap end is reported as HD_INACCURATE instead
+    !> of resolved: e = exp(-pi alpha / sqrt(5 - alpha^2)) vanishes like
+    !> exp(-pi / sqrt(2 (1 - alpha/sqrt 5))), and the integrator follows it (relative
+    !> error 1e-10 at e = 3e-31) down to about e = 1e-31 only (measured: doc/damping-laws.md).
+    !> e = 1e-30 is alpha = sqrt(5) (1 - 1.03e-3).
+    real(wp), parameter, public :: hertzdamp_rk45_e_floor_tsuji = 1.0e-30_wp
 
-    !> Right-hand sides the stepper knows (no callbacks: the hot loop stays inlinable).
-    integer, parameter, public :: HD_MODEL_HERTZ = 0   !! z'' + alpha z' + sign(z)|z|^(3/2) = 0
-    integer, parameter, public :: HD_MODEL_LINEAR = 1  !! z'' + alpha z' + z = 0 (test problem, exact solution known)
-    !> The Hertz model in the state (z, F), F = -alpha z' - z^(3/2) the total force, alpha > 0.
-    !> Used after the turning point for the force definition with alpha >= 1: the force
-    !> is integrated rather than formed by cancellation, so its zero is well conditioned.
-    integer, parameter, public :: HD_MODEL_FORCE = 2
-
-    !> Work counters of one integration.
-    type, public :: hertzdamp_rk45_stats
-        integer :: steps = 0       !! accepted steps
-        integer :: rejected = 0    !! rejected steps
-        integer :: rhs_evals = 0   !! right-hand-side evaluations (including event polishing)
-    end type hertzdamp_rk45_stats
+    public :: hertzdamp_rk45_stats
 
     !> Integrator settings.
     type, public :: hertzdamp_rk45_options
@@ -62,17 +71,11 @@ module hertzdamp_rk45
         integer :: max_steps = 100000                          !! step guard (accepted + rejected)
     end type hertzdamp_rk45_options
 
-    !> Local series at a zero of the overlap (see hertzdamp_local_series).
-    type, public :: hertzdamp_local_series_t
-        integer :: kmax                       !! highest power kept
-        real(wp) :: kappa                     !! scale of sqrt(s) in the powers
-        real(wp) :: p(0:40)                   !! coefficients (only 0..kmax are set)
-    end type hertzdamp_local_series_t
-
     !> Result of one collision in similarity variables.
     type, public :: hertzdamp_collision
         real(wp) :: alpha = 0.0_wp     !! damping parameter
         integer :: iend = HD_END_OVERLAP !! contact-end definition used
+        integer :: law = HD_DAMPING_LINEAR !! damping law used (HD_DAMPING_*)
         real(wp) :: e = 0.0_wp         !! restitution coefficient -z'(tau_c)
         real(wp) :: tau_c = 0.0_wp     !! contact duration
         real(wp) :: z_max = 0.0_wp     !! deepest overlap
@@ -81,186 +84,40 @@ module hertzdamp_rk45
         type(hertzdamp_rk45_stats) :: stats  !! work done
     end type hertzdamp_collision
 
-    public :: hertzdamp_rk45_collide, hertzdamp_rk45_solve, hertzdamp_alpha_c
+    public :: hertzdamp_rk45_collide, hertzdamp_rk45_solve, hertzdamp_alpha_c, hertzdamp_rk45_band
     public :: hertzdamp_rk45_tolerances
-    public :: hertzdamp_local_series, hertzdamp_series_state
-    public :: hertzdamp_dp_step, hertzdamp_dp_dense
 
-    ! Dormand-Prince 5(4) coefficients (Dormand & Prince 1980; Hairer, Norsett & Wanner, Table II.5.2).
-    real(wp), parameter :: c2 = 1.0_wp/5, c3 = 3.0_wp/10, c4 = 4.0_wp/5, c5 = 8.0_wp/9
-    real(wp), parameter :: a21 = 1.0_wp/5
-    real(wp), parameter :: a31 = 3.0_wp/40, a32 = 9.0_wp/40
-    real(wp), parameter :: a41 = 44.0_wp/45, a42 = -56.0_wp/15, a43 = 32.0_wp/9
-    real(wp), parameter :: a51 = 19372.0_wp/6561, a52 = -25360.0_wp/2187, a53 = 64448.0_wp/6561, &
-                           a54 = -212.0_wp/729
-    real(wp), parameter :: a61 = 9017.0_wp/3168, a62 = -355.0_wp/33, a63 = 46732.0_wp/5247, &
-                           a64 = 49.0_wp/176, a65 = -5103.0_wp/18656
-    real(wp), parameter :: a71 = 35.0_wp/384, a73 = 500.0_wp/1113, a74 = 125.0_wp/192, &
-                           a75 = -2187.0_wp/6784, a76 = 11.0_wp/84
-    ! error coefficients b - bhat
-    real(wp), parameter :: e1 = 71.0_wp/57600, e3 = -71.0_wp/16695, e4 = 71.0_wp/1920, &
-                           e5 = -17253.0_wp/339200, e6 = 22.0_wp/525, e7 = -1.0_wp/40
-    ! dense output (Hairer's dopri5 contd5)
-    real(wp), parameter :: d1 = -12715105075.0_wp/11282082432.0_wp, d3 = 87487479700.0_wp/32700410799.0_wp, &
-                           d4 = -10690763975.0_wp/1880347072.0_wp, d5 = 701980252875.0_wp/199316789632.0_wp, &
-                           d6 = -1453857185.0_wp/822651844.0_wp, d7 = 69997945.0_wp/29380423.0_wp
-
-    integer, parameter :: kmax_series = 40  !! highest power of sqrt(tau) kept in the local series
-    real(wp), parameter :: sigma_fraction = 0.1_wp  !! start / switch time, in units of min(1, 1/|alpha|)
+    real(wp), parameter :: sigma_fraction = 0.1_wp  !! start / switch time, in units of min(1, 1/|alpha|) (N = 2)
 
 contains
 
-    ! ------------------------------------------------------------------ right-hand side
-
-    pure function rhs(model, alpha, y) result(f)
-        integer, intent(in) :: model
-        real(wp), intent(in) :: alpha, y(2)
-        real(wp) :: f(2)
-        real(wp) :: r
-        select case (model)
-        case (HD_MODEL_HERTZ)
-            f(1) = y(2)
-            f(2) = -alpha * y(2) - y(1) * sqrt(abs(y(1)))
-        case (HD_MODEL_FORCE)
-            ! state (z, F) with F = -alpha z' - z^(3/2) the total contact force
-            r = sqrt(abs(y(1)))
-            f(1) = -(y(2) + y(1) * r) / alpha
-            f(2) = -alpha * y(2) - 1.5_wp * r * f(1)
-        case default
-            f(1) = y(2)
-            f(2) = -alpha * y(2) - y(1)
-        end select
-    end function rhs
-
-    ! ------------------------------------------------------------------ one step
-
-    !> One Dormand-Prince step of size h from (t, y) with k1 = f(y).  Returns the
-    !> 5th-order solution, f at it (FSAL), the error estimate and the dense-output
-    !> coefficients of the step.  Six right-hand-side evaluations.
-    pure subroutine hertzdamp_dp_step(model, alpha, y, k1, h, ynew, k7, err, cont)
-        integer, intent(in) :: model      !! HD_MODEL_HERTZ or HD_MODEL_LINEAR
-        real(wp), intent(in) :: alpha     !! damping parameter
-        real(wp), intent(in) :: y(2)      !! state (z, z') at the start of the step
-        real(wp), intent(in) :: k1(2)     !! right-hand side at y
-        real(wp), intent(in) :: h         !! step size
-        real(wp), intent(out) :: ynew(2)  !! 5th-order solution at t + h
-        real(wp), intent(out) :: k7(2)    !! right-hand side at ynew
-        real(wp), intent(out) :: err(2)   !! local error estimate (5th minus 4th order)
-        real(wp), intent(out) :: cont(2, 5) !! dense-output coefficients (see hertzdamp_dp_dense)
-        real(wp), dimension(2) :: k2, k3, k4, k5, k6, ydiff, bspl
-        k2 = rhs(model, alpha, y + h * a21 * k1)
-        k3 = rhs(model, alpha, y + h * (a31 * k1 + a32 * k2))
-        k4 = rhs(model, alpha, y + h * (a41 * k1 + a42 * k2 + a43 * k3))
-        k5 = rhs(model, alpha, y + h * (a51 * k1 + a52 * k2 + a53 * k3 + a54 * k4))
-        k6 = rhs(model, alpha, y + h * (a61 * k1 + a62 * k2 + a63 * k3 + a64 * k4 + a65 * k5))
-        ynew = y + h * (a71 * k1 + a73 * k3 + a74 * k4 + a75 * k5 + a76 * k6)
-        k7 = rhs(model, alpha, ynew)
-        err = h * (e1 * k1 + e3 * k3 + e4 * k4 + e5 * k5 + e6 * k6 + e7 * k7)
-        ydiff = ynew - y
-        bspl = h * k1 - ydiff
-        cont(:, 1) = y
-        cont(:, 2) = ydiff
-        cont(:, 3) = bspl
-        cont(:, 4) = ydiff - h * k7 - bspl
-        cont(:, 5) = h * (d1 * k1 + d3 * k3 + d4 * k4 + d5 * k5 + d6 * k6 + d7 * k7)
-    end subroutine hertzdamp_dp_step
-
-    !> Dense output of an accepted step at fraction theta in [0, 1] of the step.
-    pure function hertzdamp_dp_dense(cont, theta) result(y)
-        real(wp), intent(in) :: cont(2, 5)  !! coefficients from hertzdamp_dp_step
-        real(wp), intent(in) :: theta       !! (t - t_n) / h
-        real(wp) :: y(2)
-        real(wp) :: th1
-        th1 = 1.0_wp - theta
-        y = cont(:, 1) + theta * (cont(:, 2) + th1 * (cont(:, 3) + theta * (cont(:, 4) + th1 * cont(:, 5))))
-    end function hertzdamp_dp_dense
-
-    ! ------------------------------------------------------------------ local series
-
-    !> Coefficients of the local series at a zero of u:  u'' + a u' + u^(3/2) = 0,
-    !> u(0) = 0, u'(0) = c > 0 has  u(s) = s sum_{k>=0} p_k (kappa sqrt(s))^k  with the
-    !> scale kappa = max(1, sqrt|a|) (keeps the p_k of order one for strong damping).
-    !> p_0 = c, p_1 = 0 and, with q = p^(3/2) (power-series power rule),
-    !> p_{m+2} = -((a/kappa^2) p_m (1 + m/2) + q_{m-3} / kappa^5) / (((m+4)/2) ((m+2)/2)).
-    pure subroutine hertzdamp_local_series(a, c, kmax, ser, dser)
-        real(wp), intent(in) :: a          !! damping coefficient of the ODE
-        real(wp), intent(in) :: c          !! velocity at the zero, > 0
-        integer, intent(in) :: kmax        !! highest index computed (<= 40)
-        type(hertzdamp_local_series_t), intent(out) :: ser !! the coefficients and the scale
-        !> if present: the derivatives of the coefficients with respect to c (same scale),
-        !> so that hertzdamp_series_state(dser, s) is d(u, u')/dc
-        type(hertzdamp_local_series_t), intent(out), optional :: dser
-        real(wp) :: q(0:kmax_series), dq(0:kmax_series), acc, dacc, ak, k5, wj
-        integer :: k, j, m, kk
-        logical :: deriv
-        deriv = present(dser)
-        kk = min(kmax, kmax_series)
-        ser%kmax = kk
-        ser%kappa = max(1.0_wp, sqrt(abs(a)))
-        ak = a / ser%kappa**2
-        k5 = 1.0_wp / ser%kappa**5
-        ser%p(0:kk) = 0.0_wp
-        q(0:kk) = 0.0_wp
-        dq(0:kk) = 0.0_wp
-        ser%p(0) = c
-        q(0) = c * sqrt(c)
-        if (deriv) then
-            dser%kmax = kk
-            dser%kappa = ser%kappa
-            dser%p(0:kk) = 0.0_wp
-            dser%p(0) = 1.0_wp
-            dq(0) = 1.5_wp * sqrt(c)
-        end if
-        do k = 1, kk
-            m = k - 2
-            if (k >= 2) then
-                acc = ak * ser%p(m) * (1.0_wp + 0.5_wp * m)
-                if (k >= 5) acc = acc + q(max(k - 5, 0)) * k5
-                ser%p(k) = -acc / (0.25_wp * (k + 2) * k)
-                if (deriv) then
-                    dacc = ak * dser%p(m) * (1.0_wp + 0.5_wp * m)
-                    if (k >= 5) dacc = dacc + dq(max(k - 5, 0)) * k5
-                    dser%p(k) = -dacc / (0.25_wp * (k + 2) * k)
-                end if
-            end if
-            acc = 0.0_wp
-            dacc = 0.0_wp
-            do j = 1, k
-                wj = 1.5_wp * j - (k - j)
-                acc = acc + wj * ser%p(j) * q(k - j)
-                if (deriv) dacc = dacc + wj * (dser%p(j) * q(k - j) + ser%p(j) * dq(k - j))
-            end do
-            q(k) = acc / (k * ser%p(0))
-            if (deriv) dq(k) = (dacc - k * q(k)) / (k * ser%p(0))
-        end do
-    end subroutine hertzdamp_local_series
-
-    !> Value and first derivative of the local series at s >= 0: (u(s), u'(s)).
-    pure function hertzdamp_series_state(ser, s) result(y)
-        type(hertzdamp_local_series_t), intent(in) :: ser !! from hertzdamp_local_series
-        real(wp), intent(in) :: s          !! time from the zero of u
-        real(wp) :: y(2)
-        real(wp) :: r, su, sd
-        integer :: k
-        r = ser%kappa * sqrt(s)
-        su = ser%p(ser%kmax)
-        sd = ser%p(ser%kmax) * (1.0_wp + 0.5_wp * ser%kmax)
-        do k = ser%kmax - 1, 0, -1
-            su = su * r + ser%p(k)
-            sd = sd * r + ser%p(k) * (1.0_wp + 0.5_wp * k)
-        end do
-        y(1) = s * su
-        y(2) = sd
-    end function hertzdamp_series_state
-
     !> Number of series terms for a tolerance.  At the start and switch times used here
-    !> (kappa sqrt(s) <= 0.32) the terms p_k (kappa sqrt s)^k fall by at least a factor
-    !> 0.15 per power for 0 < e <= 50 (measured over alpha in [-3, 20]); keep terms
-    !> down to 1e-3 tol.
-    pure integer function series_terms(tol) result(kmax)
+    !> (kappa s^(1/N) <= 0.32) the terms p_k (kappa s^(1/N))^k of the N = 2 series fall by
+    !> at least a factor 0.15 per power for 0 < e <= 50 (measured over alpha in [-3, 20]);
+    !> keep terms down to 1e-3 tol.  The N = 4 series (tsuji) has every fifth term only,
+    !> falling by at least 1e-3 per non-zero term: the same count of non-zero terms needs
+    !> twice the index.
+    pure integer function series_terms(tol, nroot) result(kmax)
         real(wp), intent(in) :: tol
-        kmax = min(kmax_series, max(12, ceiling(log(1.0e-3_wp * tol) / log(0.15_wp))))
+        integer, intent(in) :: nroot
+        kmax = min(40, max(12, ceiling(log(1.0e-3_wp * tol) / log(0.15_wp))))
+        if (nroot == 4) kmax = min(hertzdamp_kmax_series, 2 * kmax)
     end function series_terms
+
+    !> Start time of the integration (and base switch time to the end series).
+    pure real(wp) function start_time(law, alpha) result(tscale)
+        integer, intent(in) :: law
+        real(wp), intent(in) :: alpha
+        integer :: n
+        real(wp) :: kappa
+        if (law == HD_DAMPING_LINEAR) then
+            tscale = sigma_fraction * min(1.0_wp, 1.0_wp / max(abs(alpha), tiny(1.0_wp)))
+        else
+            n = hertzdamp_series_root(law)
+            kappa = hertzdamp_series_kappa(law, alpha)
+            tscale = (sqrt(sigma_fraction) / kappa)**n
+        end if
+    end function start_time
 
     ! ------------------------------------------------------------------ driver
 
@@ -273,10 +130,11 @@ contains
     end subroutine hertzdamp_rk45_tolerances
 
     !> One collision with the reference integrator (flat call).
-    pure elemental function hertzdamp_rk45_collide(alpha, iend, tol) result(res)
+    pure elemental function hertzdamp_rk45_collide(alpha, iend, tol, law) result(res)
         real(wp), intent(in) :: alpha             !! damping parameter
         integer, intent(in), optional :: iend     !! HD_END_OVERLAP (default) or HD_END_FORCE
         real(wp), intent(in), optional :: tol     !! tolerance (default hertzdamp_rk45_default_tol)
+        integer, intent(in), optional :: law      !! HD_DAMPING_LINEAR (default), _TSUJI or _KUWABARA_KONO
         type(hertzdamp_collision) :: res
         type(hertzdamp_rk45_options) :: opts
         integer :: iend_
@@ -286,30 +144,98 @@ contains
             if (.not. (tol >= 1.0e-15_wp .and. tol <= 1.0e-2_wp)) then
                 res%alpha = alpha
                 res%iend = iend_
+                if (present(law)) res%law = law
                 res%status = HD_BAD_TOL
                 return
             end if
             call hertzdamp_rk45_tolerances(tol, opts)
         end if
-        call hertzdamp_rk45_solve(alpha, iend_, opts, res)
+        call hertzdamp_rk45_solve(alpha, iend_, opts, res, law)
     end function hertzdamp_rk45_collide
 
+    !> Width of the band [alpha_c - w, alpha_c) below the critical damping of the overlap
+    !> end in which hertzdamp_rk45_solve reports HD_INACCURATE, for relative tolerance
+    !> rtol (0 for a law without alpha_c).  linear: e ~ 0.207 (alpha_c - alpha) near
+    !> alpha_c, and the integrator's own rebound threshold (its numerical alpha_c) lies
+    !> within 0.52 rtol of alpha_c (measured for rtol = 1e-2 ... 1e-12; below alpha_c at
+    !> loose tolerances) and within 26 ulp for rtol <= 1e-13 (round-off): w = 4 rtol +
+    !> 256 ulp(alpha_c) keeps a margin of 7.8 or more (doc/damping-laws.md).  tsuji: the
+    !> band where the exact e is below hertzdamp_rk45_e_floor_tsuji.
+    pure elemental real(wp) function hertzdamp_rk45_band(rtol, law) result(w)
+        real(wp), intent(in) :: rtol              !! relative tolerance of the integrator
+        integer, intent(in), optional :: law      !! HD_DAMPING_* (default linear)
+        integer :: law_
+        law_ = HD_DAMPING_LINEAR
+        if (present(law)) law_ = law
+        select case (law_)
+        case (HD_DAMPING_LINEAR)
+            w = 4.0_wp * rtol + 256.0_wp * spacing(hertzdamp_law_alpha_c(law_))
+        case (HD_DAMPING_TSUJI)
+            w = hertzdamp_alpha_c_tsuji - hertzdamp_tsuji_alpha(hertzdamp_rk45_e_floor_tsuji)
+        case default
+            w = 0.0_wp
+        end select
+    end function hertzdamp_rk45_band
+
     !> One collision with the reference integrator and explicit options.
-    pure subroutine hertzdamp_rk45_solve(alpha, iend, opts, res)
+    !>
+    !> Overlap end of a law with a critical damping alpha_c (linear, tsuji): the rebound
+    !> decision is made by alpha, so that it is monotone:
+    !> - alpha >= alpha_c: HD_NO_REBOUND, e = 0, tau_c = +inf (z_max, tau_max computed);
+    !> - alpha_c - w <= alpha < alpha_c, w = hertzdamp_rk45_band(rtol, law): HD_INACCURATE,
+    !>   e = tau_c = 0: the collision rebounds, but with e below what the integrator
+    !>   resolves (linear: e < 0.21 w, 9.5e-14 at the default tolerance; tsuji: e < 1e-30);
+    !> - alpha < alpha_c - w: the integration decides (and rebounds); e and tau_c as computed.
+    !> (linear: alpha_c is the generated constant hertzdamp_law_alpha_c; tsuji: sqrt 5.)
+    pure subroutine hertzdamp_rk45_solve(alpha, iend, opts, res, law)
         real(wp), intent(in) :: alpha                    !! damping parameter
         integer, intent(in) :: iend                      !! HD_END_OVERLAP or HD_END_FORCE
         type(hertzdamp_rk45_options), intent(in) :: opts !! tolerances and step guard
         type(hertzdamp_collision), intent(out) :: res    !! e, tau_c, z_max, tau_max, status, stats
+        integer, intent(in), optional :: law             !! HD_DAMPING_* (default linear)
+        integer :: law_
+        real(wp) :: ac
+        law_ = HD_DAMPING_LINEAR
+        if (present(law)) law_ = law
+        call solve_raw(alpha, iend, opts, law_, res)
+        if (res%status == HD_BAD_LAW .or. res%status == HD_BAD_END .or. res%status == HD_BAD_ALPHA .or. &
+            res%status == HD_BAD_TOL) return
+        if (iend /= HD_END_OVERLAP .or. .not. hertzdamp_law_has_alpha_c(law_) .or. alpha <= 0.0_wp) return
+        ac = hertzdamp_law_alpha_c(law_)
+        if (alpha >= ac) then
+            res%status = HD_NO_REBOUND
+            res%e = 0.0_wp
+            res%tau_c = ieee_value(1.0_wp, ieee_positive_inf)
+        else if (alpha >= ac - hertzdamp_rk45_band(opts%rtol, law_)) then
+            res%status = HD_INACCURATE
+            res%e = 0.0_wp
+            res%tau_c = 0.0_wp
+        end if
+    end subroutine hertzdamp_rk45_solve
+
+    !> The integration itself: the rebound decided by the trajectory (certificate or
+    !> crossing), without the alpha_c rule of hertzdamp_rk45_solve.
+    pure subroutine solve_raw(alpha, iend, opts, law, res)
+        real(wp), intent(in) :: alpha
+        integer, intent(in) :: iend
+        type(hertzdamp_rk45_options), intent(in) :: opts
+        integer, intent(in) :: law
+        type(hertzdamp_collision), intent(out) :: res
 
         type(hertzdamp_local_series_t) :: ser
         real(wp) :: t, h, hnew, hmax, y(2), k1(2), ynew(2), k7(2), errv(2), cont(2, 5)
         real(wp) :: sc(2), err, lerr, lfacold, fac11, fac, tscale, sigma_sw, theta_tp, th_g, th_f
-        real(wp) :: tp(3), yc(2)
+        real(wp) :: tp(3), yc(2), q
         integer :: kmax, phase, ntry, status, model
         logical :: force
 
         res%alpha = alpha
         res%iend = iend
+        res%law = law
+        if (hertzdamp_law_status(law) /= HD_OK) then
+            res%status = HD_BAD_LAW
+            return
+        end if
         if (iend /= HD_END_OVERLAP .and. iend /= HD_END_FORCE) then
             res%status = HD_BAD_END
             return
@@ -323,26 +249,41 @@ contains
             res%status = HD_BAD_ALPHA
             return
         end if
+        ! tsuji, alpha <= -sqrt(5): the energy-injecting contact never ends (the anti-damped
+        ! oscillator of doc/damping-laws.md does not return; time reversal of alpha_c)
+        if (law == HD_DAMPING_TSUJI .and. alpha <= -hertzdamp_alpha_c_tsuji) then
+            res%status = HD_BAD_ALPHA
+            return
+        end if
         if (.not. (opts%rtol > 0.0_wp .and. opts%atol > 0.0_wp)) then
             res%status = HD_BAD_TOL
             return
         end if
         force = iend == HD_END_FORCE .and. alpha > 0.0_wp
+        q = hertzdamp_law_q(law)
 
         ! start from the local series
-        kmax = series_terms(opts%rtol)
-        tscale = sigma_fraction * min(1.0_wp, 1.0_wp / max(abs(alpha), tiny(1.0_wp)))
-        call hertzdamp_local_series(alpha, 1.0_wp, kmax, ser)
+        kmax = series_terms(opts%rtol, hertzdamp_series_root(law))
+        tscale = start_time(law, alpha)
+        call hertzdamp_local_series(law, alpha, 1.0_wp, kmax, ser)
         t = tscale
         y = hertzdamp_series_state(ser, t)
-        k1 = rhs(HD_MODEL_HERTZ, alpha, y)
+        k1 = hertzdamp_rhs(HD_MODEL_HERTZ, law, alpha, y)
         res%stats%rhs_evals = 1
         h = tscale
-        ! Strong damping makes the problem stiff: keep alpha h inside the real stability
-        ! interval of Dormand-Prince (about [-3.3, 0]) so that the fast mode decays
-        ! instead of being carried at the stability limit at loose tolerances.
+        ! Strong damping makes the problem stiff: keep h |lambda| inside the real stability
+        ! interval of Dormand-Prince (about [-3.3, 0]), lambda = -alpha z^q the fast mode,
+        ! so that it decays instead of being carried at the stability limit at loose
+        ! tolerances.  z <= ((1+q)/alpha)^(1/(1+q)) bounds the overlap (the elastic force
+        ! only shortens the compression), so alpha z^q <= alpha^(1/(1+q)) (1+q)^(q/(1+q)).
         hmax = huge(1.0_wp)
-        if (alpha > 1.0_wp) hmax = 2.0_wp / alpha
+        if (alpha > 1.0_wp) then
+            if (law == HD_DAMPING_LINEAR) then
+                hmax = 2.0_wp / alpha
+            else
+                hmax = 2.0_wp / (alpha**(1.0_wp / (1.0_wp + q)) * (1.0_wp + q)**(q / (1.0_wp + q)))
+            end if
+        end if
         lfacold = log(1.0e-4_wp)
         phase = 1
         model = HD_MODEL_HERTZ
@@ -359,7 +300,7 @@ contains
                 res%status = HD_STEP_UNDERFLOW
                 return
             end if
-            call hertzdamp_dp_step(model, alpha, y, k1, h, ynew, k7, errv, cont)
+            call hertzdamp_dp_step(model, law, alpha, y, k1, h, ynew, k7, errv, cont)
             res%stats%rhs_evals = res%stats%rhs_evals + 6
             sc = opts%atol + opts%rtol * max(abs(y), abs(ynew))
             err = sqrt(0.5_wp * sum((errv / sc)**2))
@@ -382,11 +323,24 @@ contains
             hnew = h / fac
             lfacold = max(lerr, log(1.0e-4_wp))
 
+            ! kuwabara-kono, alpha < 0: once z >= 16/alpha^4 and z' >= 2 z/|alpha| the overlap
+            ! grows without bound (forward-invariant region, doc/damping-laws.md): the contact
+            ! never ends (alpha below -1.3884, the time reversal of alpha -> infinity)
+            if (phase == 1 .and. alpha < 0.0_wp .and. law == HD_DAMPING_KUWABARA_KONO) then
+                if (ynew(1) >= 16.0_wp / alpha**4 .and. ynew(2) >= -2.0_wp * ynew(1) / alpha) then
+                    res%status = HD_BAD_ALPHA
+                    return
+                end if
+            end if
+
             theta_tp = 0.0_wp
             if (phase == 1 .and. ynew(2) <= 0.0_wp) then
                 ! turning point inside this step
-                theta_tp = locate(1, model, cont, alpha, 0.0_wp, 0.0_wp, 1.0_wp)
-                call polish(1, model, t, y, k1, h, theta_tp, alpha, tp, res%stats, status)
+                call hertzdamp_locate(HD_EVENT_TURN, model, law, cont, alpha, 0.0_wp, 0.0_wp, 1.0_wp, theta_tp, status)
+                if (status == HD_OK) then
+                    call hertzdamp_polish(HD_EVENT_TURN, model, law, t, y, k1, h, theta_tp, alpha, tp, res%stats, &
+                                          status)
+                end if
                 if (status /= HD_OK) then
                     res%status = status
                     return
@@ -401,35 +355,50 @@ contains
                 th_f = 2.0_wp
                 th_g = 2.0_wp
                 if (force) then
-                    if (event_value(2, model, ynew, alpha, 0.0_wp) >= 0.0_wp) then
-                      th_f = locate(2, model, cont, alpha, 0.0_wp, theta_tp, 1.0_wp)
+                    if (hertzdamp_event_value(HD_EVENT_FORCE, model, law, ynew, alpha, 0.0_wp) >= 0.0_wp) then
+                        call hertzdamp_locate(HD_EVENT_FORCE, model, law, cont, alpha, 0.0_wp, theta_tp, 1.0_wp, &
+                                              th_f, status)
+                        if (status /= HD_OK) then
+                            res%status = status
+                            return
+                        end if
                     end if
                 end if
                 ! (z, F) state: for alpha >= 1 the force vanishes long before the switch
-                ! (z <= sigma_sw |z'| with alpha |z'| < z^(3/2) needs z >= 100 alpha^4)
+                ! (at z = sigma_sw |z'| the force is alpha z^(q+1)/sigma_sw - z^(3/2) > 0)
                 if (model == HD_MODEL_HERTZ) then
-                    if (event_value(3, model, ynew, alpha, sigma_sw) <= 0.0_wp) then
-                      th_g = locate(3, model, cont, alpha, sigma_sw, theta_tp, 1.0_wp)
+                    if (hertzdamp_event_value(HD_EVENT_SWITCH, model, law, ynew, alpha, sigma_sw) <= 0.0_wp) then
+                        call hertzdamp_locate(HD_EVENT_SWITCH, model, law, cont, alpha, sigma_sw, theta_tp, 1.0_wp, &
+                                              th_g, status)
+                        if (status /= HD_OK) then
+                            res%status = status
+                            return
+                        end if
                     end if
                 end if
                 if (th_f <= th_g .and. th_f <= 1.0_wp) then
-                    call end_at_force(model, t, y, k1, h, th_f, alpha, res)
+                    call end_at_force(model, law, t, y, k1, h, th_f, alpha, res)
                     return
                 else if (th_g <= 1.0_wp) then
                     ! switch to the time-reversed local series for the end of contact
-                    call sub_step(model, y, k1, th_g * h, alpha, yc, res%stats)
-                    call finish_from_series(t + th_g * h, yc, alpha, force, kmax, res)
+                    call hertzdamp_sub_step(model, law, y, k1, th_g * h, alpha, yc, res%stats)
+                    call finish_from_series(t + th_g * h, yc, alpha, force, kmax, law, res)
                     ! force event already passed in the matched region: locate it in the step
                     if (res%status == HD_NO_CONVERGENCE .and. force) then
                         ! only where the force really changes sign inside the step
-                        if (event_value(2, model, ynew, alpha, 0.0_wp) >= 0.0_wp) then
-                          call end_at_force(model, t, y, k1, h, locate(2, model, cont, alpha, 0.0_wp, theta_tp, 1.0_wp), &
-                                              alpha, res)
+                        if (hertzdamp_event_value(HD_EVENT_FORCE, model, law, ynew, alpha, 0.0_wp) >= 0.0_wp) then
+                            call hertzdamp_locate(HD_EVENT_FORCE, model, law, cont, alpha, 0.0_wp, theta_tp, 1.0_wp, &
+                                                  th_f, status)
+                            if (status == HD_OK) then
+                                call end_at_force(model, law, t, y, k1, h, th_f, alpha, res)
+                            else
+                                res%status = status
+                            end if
                         end if
                     end if
                     return
                 else if (iend == HD_END_OVERLAP .and. alpha > 0.0_wp) then
-                    if (no_rebound_certified(ynew, alpha)) then
+                    if (no_rebound_certified(ynew, alpha, law)) then
                         res%status = HD_NO_REBOUND
                         res%e = 0.0_wp
                         res%tau_c = ieee_value(1.0_wp, ieee_positive_inf)
@@ -440,189 +409,89 @@ contains
 
             if (phase == 2 .and. force .and. alpha >= 1.0_wp .and. model == HD_MODEL_HERTZ) then
                 model = HD_MODEL_FORCE
-                ynew(2) = -alpha * ynew(2) - ynew(1) * sqrt(ynew(1))
-                k7 = rhs(model, alpha, ynew)
+                ynew(2) = -alpha * hertzdamp_zq(law, ynew(1)) * ynew(2) - ynew(1) * sqrt(ynew(1))
+                k7 = hertzdamp_rhs(model, law, alpha, ynew)
                 res%stats%rhs_evals = res%stats%rhs_evals + 1
             end if
             t = t + h
             y = ynew
             k1 = k7
+            ! after the turning point z only decreases (alpha > 0): the stiff rate alpha z^q
+            ! at the step start bounds it for the whole step
+            if (phase == 2 .and. alpha > 1.0_wp .and. law /= HD_DAMPING_LINEAR .and. model == HD_MODEL_HERTZ) then
+                hmax = 2.0_wp / (alpha * hertzdamp_zq(law, y(1)))
+            end if
             h = min(hnew, hmax)
         end do
-    end subroutine hertzdamp_rk45_solve
+    end subroutine solve_raw
 
     !> Contact end at the zero of the total force, located at theta of the step.
-    pure subroutine end_at_force(model, t, y, k1, h, theta, alpha, res)
-        integer, intent(in) :: model
+    pure subroutine end_at_force(model, law, t, y, k1, h, theta, alpha, res)
+        integer, intent(in) :: model, law
         real(wp), intent(in) :: t, y(2), k1(2), h, theta, alpha
         type(hertzdamp_collision), intent(inout) :: res
         real(wp) :: ev(3)
-        call polish(2, model, t, y, k1, h, theta, alpha, ev, res%stats, res%status)
+        call hertzdamp_polish(HD_EVENT_FORCE, model, law, t, y, k1, h, theta, alpha, ev, res%stats, res%status)
         if (res%status == HD_OK) then
             res%tau_c = ev(1)
             res%e = -ev(3)
         end if
     end subroutine end_at_force
 
-    !> True once the state is in the invariant no-rebound region (see module header).
-    pure logical function no_rebound_certified(y, alpha)
+    !> True once the state is in the forward-invariant no-rebound region of the law (see
+    !> the module header; derivation in doc/damping-laws.md).
+    pure logical function no_rebound_certified(y, alpha, law)
         real(wp), intent(in) :: y(2), alpha
-        no_rebound_certified = y(1) > 0.0_wp .and. y(1) <= alpha**4 / 36.0_wp .and. &
-            y(2) <= 0.0_wp .and. y(2) >= -(2.0_wp / alpha) * y(1) * sqrt(y(1))
+        integer, intent(in) :: law
+        select case (law)
+        case (HD_DAMPING_LINEAR)
+            no_rebound_certified = y(1) > 0.0_wp .and. y(1) <= alpha**4 / 36.0_wp .and. &
+                y(2) <= 0.0_wp .and. y(2) >= -(2.0_wp / alpha) * y(1) * sqrt(y(1))
+        case (HD_DAMPING_TSUJI)
+            ! wedge -lambda z^(5/4)/alpha <= z' <= 0 with lambda = 2 alpha^2/5, invariant for alpha >= sqrt 5
+            no_rebound_certified = alpha >= hertzdamp_alpha_c_tsuji .and. y(1) > 0.0_wp .and. &
+                y(2) <= 0.0_wp .and. y(2) >= -0.4_wp * alpha * y(1) * sqrt(sqrt(y(1)))
+        case default
+            no_rebound_certified = .false.
+        end select
     end function no_rebound_certified
 
-    !> Event functions: 1 turning point z'; 2 total force -alpha z' - z^(3/2);
-    !> 3 switch to the end series z - sigma_sw |z'|.
-    pure real(wp) function event_value(kind, model, y, alpha, sigma_sw) result(g)
-        integer, intent(in) :: kind, model
-        real(wp), intent(in) :: y(2), alpha, sigma_sw
-        select case (kind)
-        case (1)
-            g = y(2)
-        case (2)
-            if (model == HD_MODEL_FORCE) then
-                g = y(2)
-            else
-                g = -alpha * y(2) - y(1) * sqrt(abs(y(1)))
-            end if
-        case default
-            g = y(1) - sigma_sw * abs(y(2))
-        end select
-    end function event_value
-
-    !> Illinois (modified regula falsi) root of an event function on the dense output,
-    !> bracketed in [lo, hi] (the event function changes sign there).
-    pure real(wp) function locate(kind, model, cont, alpha, sigma_sw, lo, hi) result(theta)
-        integer, intent(in) :: kind, model
-        real(wp), intent(in) :: cont(2, 5), alpha, sigma_sw, lo, hi
-        real(wp) :: a, b, fa, fb, fc, c
-        integer :: it, side
-        a = lo
-        b = hi
-        fa = event_value(kind, model, hertzdamp_dp_dense(cont, a), alpha, sigma_sw)
-        fb = event_value(kind, model, hertzdamp_dp_dense(cont, b), alpha, sigma_sw)
-        theta = b
-        if (fa == 0.0_wp) then
-            theta = a
-            return
-        end if
-        if (sign(1.0_wp, fa) == sign(1.0_wp, fb)) return
-        side = 0
-        do it = 1, 100
-            c = (a * fb - b * fa) / (fb - fa)
-            if (.not. (c > min(a, b) .and. c < max(a, b))) c = 0.5_wp * (a + b)
-            fc = event_value(kind, model, hertzdamp_dp_dense(cont, c), alpha, sigma_sw)
-            if (fc == 0.0_wp .or. abs(b - a) < 4.0_wp * epsilon(1.0_wp)) then
-                theta = c
-                return
-            end if
-            if (sign(1.0_wp, fc) == sign(1.0_wp, fb)) then
-                b = c
-                fb = fc
-                if (side == -1) fa = 0.5_wp * fa
-                side = -1
-            else
-                a = c
-                fa = fc
-                if (side == 1) fb = 0.5_wp * fb
-                side = 1
-            end if
-            theta = c
-            if (abs(b - a) < 1.0e-15_wp) return
-        end do
-    end function locate
-
-    !> A Dormand-Prince step of size hs from (t, y): full accuracy at a located event.
-    pure subroutine sub_step(model, y, k1, hs, alpha, ys, stats)
-        integer, intent(in) :: model
-        real(wp), intent(in) :: y(2), k1(2), hs, alpha
-        real(wp), intent(out) :: ys(2)
-        type(hertzdamp_rk45_stats), intent(inout) :: stats
-        real(wp) :: k7(2), errv(2), cont(2, 5)
-        if (hs <= 0.0_wp) then
-            ys = y
-            return
-        end if
-        call hertzdamp_dp_step(model, alpha, y, k1, hs, ys, k7, errv, cont)
-        stats%rhs_evals = stats%rhs_evals + 6
-    end subroutine sub_step
-
-    !> Polish an event located at theta of the step (t, h): sub-steps plus Newton
-    !> corrections until the correction is far below the step.  Returns
-    !> out = (time, z, z') at the event.  kind 1: z' = 0; kind 2: total force = 0.
-    pure subroutine polish(kind, model, t, y, k1, h, theta, alpha, out, stats, status)
-        integer, intent(in) :: kind, model
-        real(wp), intent(in) :: t, y(2), k1(2), h, theta, alpha
-        real(wp), intent(out) :: out(3)
-        type(hertzdamp_rk45_stats), intent(inout) :: stats
-        integer, intent(out) :: status
-        real(wp) :: th, ys(2), f(2), g, dg, delta
-        integer :: it
-        th = theta
-        status = HD_NO_CONVERGENCE
-        out = 0.0_wp
-        do it = 1, 6
-            call sub_step(model, y, k1, th * h, alpha, ys, stats)
-            f = rhs(model, alpha, ys)
-            stats%rhs_evals = stats%rhs_evals + 1
-            if (model == HD_MODEL_FORCE) then
-                g = ys(2)
-                dg = f(2)
-            else if (kind == 1) then
-                g = ys(2)
-                dg = f(2)
-            else
-                g = -alpha * ys(2) - ys(1) * sqrt(abs(ys(1)))
-                dg = -alpha * f(2) - 1.5_wp * sqrt(abs(ys(1))) * ys(2)
-            end if
-            if (dg == 0.0_wp) then
-                delta = 0.0_wp
-            else
-                delta = -g / dg
-            end if
-            if (abs(delta) <= 1.0e-6_wp * h .or. it == 6) then
-                ! second-order Taylor correction to the exact event
-                out(1) = t + th * h + delta
-                out(2) = ys(1) + ys(2) * delta + 0.5_wp * f(2) * delta**2
-                out(3) = ys(2) + f(2) * delta
-                if (kind == 1) out(3) = 0.0_wp
-                if (model == HD_MODEL_FORCE) then
-                    out(2) = ys(1) + f(1) * delta
-                    out(3) = -out(2) * sqrt(out(2)) / alpha
-                end if
-                status = HD_OK
-                return
-            end if
-            th = th + delta / h
-        end do
-    end subroutine polish
-
     !> Match (z, z') at time t near the end to the local series of the time-reversed
-    !> collision, w'' - alpha w' + w^(3/2) = 0, w(0) = 0, w'(0) = e, i.e.
+    !> collision, w'' - alpha w^q w' + w^(3/2) = 0, w(0) = 0, w'(0) = e, i.e.
     !> w(sigma) = z, w'(sigma) = -z', and read off the contact end.
-    pure subroutine finish_from_series(t, y, alpha, force, kmax, res)
+    pure subroutine finish_from_series(t, y, alpha, force, kmax, law, res)
         real(wp), intent(in) :: t, y(2), alpha
         logical, intent(in) :: force
-        integer, intent(in) :: kmax
+        integer, intent(in) :: kmax, law
         type(hertzdamp_collision), intent(inout) :: res
         type(hertzdamp_local_series_t) :: ser, dser
         real(wp) :: c, sigma, w(2), wc(2), r1, r2, dd, j11, j12, j21, j22, dc, ds, w1
-        real(wp) :: x, lo, hi, phi, dphi, wx(2)
+        real(wp) :: x, lo, hi, phi, dphi, wx(2), q, zq
         integer :: it
         w1 = -y(2)
+        q = hertzdamp_law_q(law)
         res%status = HD_NO_CONVERGENCE
         if (y(1) <= 0.0_wp .or. w1 <= 0.0_wp) return
-        c = max(w1 - alpha * y(1), 0.5_wp * w1)
+        ! first guess: w' = c + alpha w^(1+q)/(1+q) + O(w^(5/2))
+        if (law == HD_DAMPING_LINEAR) then
+            c = max(w1 - alpha * y(1), 0.5_wp * w1)
+        else
+            c = max(w1 - alpha * y(1) * hertzdamp_zq(law, y(1)) / (1.0_wp + q), 0.5_wp * w1)
+        end if
         sigma = y(1) / c
         do it = 1, 40
-            call hertzdamp_local_series(-alpha, c, kmax, ser, dser)
+            call hertzdamp_local_series(law, -alpha, c, kmax, ser, dser)
             w = hertzdamp_series_state(ser, sigma)
             wc = hertzdamp_series_state(dser, sigma)
             r1 = w(1) - y(1)
             r2 = w(2) - w1
             ! Newton with the exact Jacobian: d/dsigma from the ODE, d/dc from dser
             j11 = w(2)
-            j21 = alpha * w(2) - w(1) * sqrt(w(1))
+            if (law == HD_DAMPING_LINEAR) then
+                j21 = alpha * w(2) - w(1) * sqrt(w(1))
+            else
+                j21 = alpha * hertzdamp_zq(law, w(1)) * w(2) - w(1) * sqrt(w(1))
+            end if
             j12 = wc(1)
             j22 = wc(2)
             dd = j11 * j22 - j12 * j21
@@ -635,7 +504,7 @@ contains
             if (abs(ds) <= 8.0_wp * epsilon(1.0_wp) * sigma .and. abs(dc) <= 8.0_wp * epsilon(1.0_wp) * c) exit
             ! quadratic convergence: once the corrections are tiny, one more step reaches round-off
             if (it > 1 .and. abs(ds) <= 1.0e-9_wp * sigma .and. abs(dc) <= 1.0e-9_wp * c) then
-                call hertzdamp_local_series(-alpha, c, kmax, ser)
+                call hertzdamp_local_series(law, -alpha, c, kmax, ser)
                 w = hertzdamp_series_state(ser, sigma)
                 sigma = sigma - ((w(1) - y(1)) * j22 - (w(2) - w1) * j12) / dd
                 c = c - (j11 * (w(2) - w1) - j21 * (w(1) - y(1))) / dd
@@ -643,28 +512,36 @@ contains
             end if
         end do
         if (it > 40) return
-        call hertzdamp_local_series(-alpha, c, kmax, ser)
+        call hertzdamp_local_series(law, -alpha, c, kmax, ser)
         if (.not. force) then
             res%tau_c = t + sigma
             res%e = c
             res%status = HD_OK
             return
         end if
-        ! force definition: alpha w'(x) = w(x)^(3/2) for x in (0, sigma), safeguarded Newton
+        ! force definition: alpha w^q w'(x) = w(x)^(3/2) for x in (0, sigma), safeguarded Newton
         lo = 0.0_wp
         hi = sigma
         wx = hertzdamp_series_state(ser, hi)
-        if (alpha * wx(2) - wx(1) * sqrt(wx(1)) > 0.0_wp) return  ! event before the switch point
-        x = min(sigma, (alpha * c)**(2.0_wp / 3.0_wp) / c)
+        if (alpha * hertzdamp_zq(law, wx(1)) * wx(2) - wx(1) * sqrt(wx(1)) > 0.0_wp) return  ! event before the switch
+        ! first guess from w = c x: alpha c^(1+q) x^q = c^(3/2) x^(3/2)
+        if (law == HD_DAMPING_LINEAR) then
+            x = min(sigma, (alpha * c)**(2.0_wp / 3.0_wp) / c)
+        else
+            x = min(sigma, (alpha * c**(q - 0.5_wp))**(1.0_wp / (1.5_wp - q)))
+        end if
         do it = 1, 100
             wx = hertzdamp_series_state(ser, x)
-            phi = alpha * wx(2) - wx(1) * sqrt(wx(1))
+            zq = hertzdamp_zq(law, wx(1))
+            phi = alpha * zq * wx(2) - wx(1) * sqrt(wx(1))
             if (phi > 0.0_wp) then
                 lo = x
             else
                 hi = x
             end if
-            dphi = alpha * (alpha * wx(2) - wx(1) * sqrt(wx(1))) - 1.5_wp * sqrt(wx(1)) * wx(2)
+            ! d/dx of alpha w^q w' - w^(3/2), with w'' = phi
+            dphi = alpha * zq * phi - 1.5_wp * sqrt(wx(1)) * wx(2)
+            if (law /= HD_DAMPING_LINEAR .and. wx(1) > 0.0_wp) dphi = dphi + alpha * q * (zq / wx(1)) * wx(2)**2
             if (dphi /= 0.0_wp) then
                 dd = x - phi / dphi
             else
@@ -684,28 +561,44 @@ contains
     end subroutine finish_from_series
 
     !> The critical damping alpha_c of the overlap definition: the smallest alpha
-    !> without rebound, by bisection on the no-rebound test of the reference integrator.
-    pure subroutine hertzdamp_alpha_c(alpha_c, status, tol)
+    !> without rebound.  linear: by bisection on the trajectory's own rebound decision
+    !> (reference integrator at tolerance 1e-13: its decision threshold lies within a few
+    !> ulp of alpha_c there, while tighter tolerances accumulate more round-off, 26 ulp
+    !> at 1e-15; doc/damping-laws.md); tsuji: sqrt(5), exact
+    !> (doc/damping-laws.md); kuwabara-kono: none, status HD_NOT_SUPPORTED, alpha_c = 0.
+    pure subroutine hertzdamp_alpha_c(alpha_c, status, tol, law)
         real(wp), intent(out) :: alpha_c          !! critical damping parameter
-        integer, intent(out) :: status            !! HD_OK, or the integrator's failure
-        real(wp), intent(in), optional :: tol     !! bisection width (default 1e-11)
+        integer, intent(out) :: status            !! HD_OK, HD_NOT_SUPPORTED, HD_BAD_LAW or the integrator's failure
+        real(wp), intent(in), optional :: tol     !! bisection width (default 1e-11), in [1e-15, 0.1]
+        integer, intent(in), optional :: law      !! HD_DAMPING_* (default linear)
         real(wp) :: lo, hi, mid, w
+        integer :: law_
         type(hertzdamp_collision) :: r
         type(hertzdamp_rk45_options) :: opts
         w = 1.0e-11_wp
         if (present(tol)) w = tol
+        law_ = HD_DAMPING_LINEAR
+        if (present(law)) law_ = law
         alpha_c = 0.0_wp
-        if (.not. (w >= 1.0e-14_wp .and. w <= 0.1_wp)) then
+        if (.not. (w >= 1.0e-15_wp .and. w <= 0.1_wp)) then
             status = HD_BAD_TOL     ! (a width below round-off would never end the bisection)
+            return
+        end if
+        status = hertzdamp_law_status(law_)
+        if (status /= HD_OK) return
+        if (law_ == HD_DAMPING_TSUJI) then
+            alpha_c = hertzdamp_alpha_c_tsuji
+            return
+        else if (law_ /= HD_DAMPING_LINEAR) then
+            status = HD_NOT_SUPPORTED
             return
         end if
         call hertzdamp_rk45_tolerances(1.0e-13_wp, opts)
         lo = 1.0_wp
         hi = 1.25_wp
-        status = HD_OK
         do while (hi - lo > w)
             mid = 0.5_wp * (lo + hi)
-            call hertzdamp_rk45_solve(mid, HD_END_OVERLAP, opts, r)
+            call solve_raw(mid, HD_END_OVERLAP, opts, law_, r)
             select case (r%status)
             case (HD_OK)
                 lo = mid

@@ -32,16 +32,23 @@ module hertzdamp_status
     integer, parameter, public :: HD_BAD_DENSITY = 22      !! density not finite and positive
     integer, parameter, public :: HD_BAD_MODULUS = 23      !! Young's modulus not finite and positive
     integer, parameter, public :: HD_BAD_POISSON = 24      !! Poisson's ratio outside (-1, 0.5]
+    integer, parameter, public :: HD_BAD_LAW = 25          !! damping law not 0 (linear), 1 (tsuji) or 2 (kuwabara-kono)
 
     !> Contact ends when the overlap returns to zero (default).
     integer, parameter, public :: HD_END_OVERLAP = 0
     !> Contact ends when the total contact force returns to zero.
     integer, parameter, public :: HD_END_FORCE = 1
 
+    !> Damping laws (hertzdamp_laws, doc/damping-laws.md): force d zeta^q zeta' with
+    !> q = 0 (linear, the default), 1/4 (tsuji), 1/2 (kuwabara-kono).
+    integer, parameter, public :: HD_DAMPING_LINEAR = 0
+    integer, parameter, public :: HD_DAMPING_TSUJI = 1
+    integer, parameter, public :: HD_DAMPING_KUWABARA_KONO = 2
+
     !> Length of the stored messages (each fits, blank-padded).
     integer, parameter, public :: hertzdamp_message_len = 192
     !> Largest status code with a message of its own.
-    integer, parameter, public :: hertzdamp_max_status = 24
+    integer, parameter, public :: hertzdamp_max_status = 25
     !> The message of every status code 0..hertzdamp_max_status, then that of unknown
     !> codes: the one table behind hertzdamp_message and the C hertzdamp_strerror.
     character(len=hertzdamp_message_len), parameter, public :: &
@@ -51,8 +58,8 @@ module hertzdamp_status
             '0, contact time infinite)', &
         'integrator reached its maximum number of steps', &
         'integrator step size collapsed below round-off', &
-        'invalid damping parameter alpha: must be finite, at most 1e100, >= 0 ' // &
-            'for the force definition and >= -10 for the overlap definition', &
+        'invalid damping parameter alpha: must be finite, at most 1e100, >= 0 for the force ' // &
+            'definition and >= -10 for the overlap definition (tsuji > -sqrt5, kuwabara-kono > -1.3884)', &
         'invalid contact-end definition: use 0 (overlap) or 1 (force)', &
         'invalid tolerance: must lie in [1e-15, 1e-2]', &
         'invalid mass: must be finite and positive', &
@@ -71,11 +78,12 @@ module hertzdamp_status
         'alpha outside the validity range of the method (series: |alpha| < 1; pade: 0 <= alpha <= 0.8; ' // &
             'fit: alpha >= 0, force alpha <= 52.5; compact: force alpha <= 2.9); use rk45', &
         'inaccurate: the method''s own error estimate exceeds the accuracy asked (or alpha lies ' // &
-            'beyond its validated range); use fit or rk45', &
+            'beyond its validated range, or within the band below alpha_c where rk45 cannot resolve e)', &
         'invalid radius: must be finite and positive', &
         'invalid density: must be finite and positive', &
         'invalid Young''s modulus: must be finite and positive', &
         'invalid Poisson''s ratio: must lie in (-1, 0.5]', &
+        'invalid damping law: use 0 (linear), 1 (tsuji) or 2 (kuwabara-kono)', &
         'unknown status code']
 
     public :: hertzdamp_message, hertzdamp_end_name

@@ -1,66 +1,186 @@
 #!/usr/bin/env bash
-# CLI checks of `hertzdamp invert` (and table/forward with --method fit|compact).
-bin=${HERTZDAMP_BIN:?set HERTZDAMP_BIN}
-p=0; f=0
-ok() { p=$((p + 1)); }
-ko() { echo "FAIL cli_invert: $1"; f=$((f + 1)); }
-out=$(mktemp); err=$(mktemp); trap 'rm -f "$out" "$err"' EXIT
-run() { "$bin" "$@" >"$out" 2>"$err"; echo $?; }
+# CLI checks of `hertzdamp invert` and `hertzdamp timestep`: columns, lists, material
+# input (the glass beads of issue 12), the physical bound and tc_actual, per-row
+# statuses, messages that name the option, exit codes.
+SUITE=cli_invert
+source "$(dirname "$0")/cli_common.bash"
+HEAD="e,tc,velocity,mass,radius_eff,k_phys,alpha,tau_c,t_star,k,d,bound_active,tc_actual,status"
+GLASS="--radius 1e-3 --density 2500 --youngs-modulus 63e9 --poisson-ratio 0.24"
 
-rc=$(run invert --e 0.5,0.9 --tc 1e-4 --mass 1e-3 --velocity 1 --format csv)
-[ "$rc" = 0 ] && ok || ko "csv exit $rc"
-[ "$(head -n 1 "$out")" = "e,tc,mass,velocity,alpha,tau_c,t_star,k,d,bound_active,status" ] && ok || ko "csv header"
-[ "$(wc -l <"$out")" = 3 ] && ok || ko "csv rows"
-# 16 significant digits
-grep -q '^5.000000000000000E-001,1.000000000000000E-004' "$out" && ok || ko "csv digits"
-[ "$(sed -n 2p "$out" | cut -d, -f10,11)" = "false,ok" ] && ok || ko "bound/status columns"
+run invert --e 0.5,0.9 --tc 1e-4 --mass 1e-3 --velocity 1 --format csv
+check "csv exit $RC" test "$RC" -eq 0
+check "csv header" test "$(head -n 1 "$OUT")" = "$HEAD"
+check "csv rows" test "$(wc -l <"$OUT")" -eq 3
+check "csv 16 digits" grep -q '^5.000000000000000E-001,1.000000000000000E-004,1.000000000000000E+000,1.000000000000000E-003,,,' "$OUT"
+check "bound/tc_actual/status columns" test "$(sed -n 2p "$OUT" | cut -d, -f12,13,14)" = "false,1.000000000000000E-004,ok"
 # --dt --steps equals --tc
-a=$("$bin" invert --e 0.5 --tc 1e-4 --mass 1e-3 --velocity 1 --format csv | tail -n 1)
-b=$("$bin" invert --e 0.5 --dt 1e-5 --steps 10 --mass 1e-3 --velocity 1 --format csv | tail -n 1)
-[ -n "$a" ] && [ "$a" = "$b" ] && ok || ko "--dt --steps vs --tc"
+a=$("$BIN" invert --e 0.5 --tc 1e-4 --mass 1e-3 --velocity 1 --format csv | tail -n 1)
+b=$("$BIN" invert --e 0.5 --dt 1e-5 --steps 10 --mass 1e-3 --velocity 1 --format csv | tail -n 1)
+check "--dt --steps vs --tc" test -n "$a" -a "$a" = "$b"
 # methods agree (fit vs iterative to ~1e-10, compact to ~1e-5)
-kf=$(echo "$a" | cut -d, -f8)
-ki=$("$bin" invert --e 0.5 --tc 1e-4 --mass 1e-3 --velocity 1 --method iterative --format csv | tail -n 1 | cut -d, -f8)
-kc=$("$bin" invert --e 0.5 --tc 1e-4 --mass 1e-3 --velocity 1 --method compact --format csv | tail -n 1 | cut -d, -f8)
-python3 -c "import sys; a,b,c=map(float,sys.argv[1:]); sys.exit(0 if abs(a/b-1)<1e-9 and abs(a/c-1)<3e-5 else 1)" "$kf" "$ki" "$kc" && ok || ko "methods agree ($kf $ki $kc)"
-# k-phys bound
-rc=$(run invert --e 0.5 --tc 1e-4 --mass 1e-3 --velocity 1 --k-phys 1e6 --format csv)
-[ "$rc" = 0 ] && [ "$(tail -n 1 "$out" | cut -d, -f8,10)" = "1.000000000000000E+006,true" ] && ok || ko "k-phys bound"
-# json and text
-rc=$(run invert --e 0.5 --tc 1e-4 --mass 1e-3 --velocity 1 --format json)
-[ "$rc" = 0 ] && grep -q '"bound_active": "false"' "$out" && ok || ko "json"
-rc=$(run invert --e 0.5 --tc 1e-4 --mass 1e-3 --velocity 1 --end force)
-[ "$rc" = 0 ] && grep -q '^# end: force' "$out" && ok || ko "text, force"
-# errors: one line on stderr, nothing on stdout
-check_err() {  # expected-exit args...
-  local want=$1; shift
-  local rc; rc=$(run "$@")
-  if [ "$rc" = "$want" ] && [ ! -s "$out" ] && [ "$(wc -l <"$err")" = 1 ]; then ok; else ko "exit $rc (want $want) for: $*"; fi
-}
-check_err 3 invert --e 5e-4 --tc 1e-4 --mass 1e-3 --velocity 1
-check_err 3 invert --e 0 --tc 1e-4 --mass 1e-3 --velocity 1
-check_err 3 invert --e 1.5 --tc 1e-4 --mass 1e-3 --velocity 1
-check_err 3 invert --e 0.5,5e-5 --tc 1e-4 --mass 1e-3 --velocity 1 --end force
-check_err 2 invert --e 0.5 --tc -1 --mass 1e-3 --velocity 1
-check_err 2 invert --e 0.5 --tc 1e-4 --mass 0 --velocity 1
-check_err 2 invert --e 0.5 --tc 1e-4 --mass 1e-3 --velocity -1
-check_err 2 invert --e 0.5 --tc 1e-4 --mass 1e-3 --velocity 1 --k-phys 0
-check_err 2 invert --e 0.5 --tc 1e-4 --mass 1e-3
-check_err 2 invert --e 0.5 --mass 1e-3 --velocity 1
-check_err 2 invert --e 0.5 --tc 1e-4 --dt 1e-5 --steps 10 --mass 1e-3 --velocity 1
-check_err 2 invert --e 0.5 --tc 1e-4 --mass 1e-3 --velocity 1 --method series --end force
-check_err 3 invert --e 0.05 --tc 1e-4 --mass 1e-3 --velocity 1 --method pade
-check_err 2 invert --e abc --tc 1e-4 --mass 1e-3 --velocity 1
-check_err 2 invert --e 0.5 --tc 1e-4 --mass 1e-3 --velocity 1 --tol 1e-12
-rc=$(run invert --help); [ "$rc" = 0 ] && grep -q 'N m^-3/2' "$out" && ok || ko "help"
-# table/forward through the fit and compact methods
-rc=$(run table --method fit --alpha 0,0.5,1.2 --format csv)
-[ "$rc" = 0 ] && [ "$(tail -n 1 "$out" | cut -d, -f6)" = "no-rebound" ] && ok || ko "table --method fit"
-e_fit=$("$bin" table --method fit --alpha 0.5 --format csv | tail -n 1 | cut -d, -f2)
-e_rk=$("$bin" table --alpha 0.5 --format csv | tail -n 1 | cut -d, -f2)
-e_cp=$("$bin" table --method compact --alpha 0.5 --format csv | tail -n 1 | cut -d, -f2)
-python3 -c "import sys; a,b,c=map(float,sys.argv[1:]); sys.exit(0 if abs(a/b-1)<1e-11 and abs(c/b-1)<3e-5 else 1)" "$e_fit" "$e_rk" "$e_cp" && ok || ko "table fit/compact vs rk45"
-rc=$(run forward --method fit --k 1e8 --d 10 --mass 1e-3 --velocity 1 --end force --format csv)
-[ "$rc" = 0 ] && ok || ko "forward --method fit"
-echo "cli_invert: $p passed, $f failed"
-[ "$f" -eq 0 ]
+kf=$(echo "$a" | cut -d, -f10)
+ki=$("$BIN" invert --e 0.5 --tc 1e-4 --mass 1e-3 --velocity 1 --method iterative --format csv | tail -n 1 | cut -d, -f10)
+kc=$("$BIN" invert --e 0.5 --tc 1e-4 --mass 1e-3 --velocity 1 --method compact --format csv | tail -n 1 | cut -d, -f10)
+check "methods agree ($kf $ki $kc)" python3 -c "import sys; a,b,c=map(float,sys.argv[1:]); sys.exit(0 if abs(a/b-1)<1e-9 and abs(a/c-1)<3e-5 else 1)" "$kf" "$ki" "$kc"
+# k-phys bound: k = k_phys, and tc_actual is the contact those k, d really give (rk45 forward)
+run invert --e 0.5 --tc 1e-4 --mass 1e-3 --velocity 1 --k-phys 1e6 --format csv
+check "k-phys bound" test "$RC" -eq 0 -a "$(tail -n 1 "$OUT" | cut -d, -f10,12)" = "1.000000000000000E+006,true"
+row=$(tail -n 1 "$OUT")
+k=$(cut -d, -f10 <<<"$row"); d=$(cut -d, -f11 <<<"$row"); tca=$(cut -d, -f13 <<<"$row")
+fwd=$("$BIN" forward --k "$k" --d "$d" --mass 1e-3 --velocity 1 --format csv | tail -n 1)
+check "tc_actual = rk45 contact time of the returned k, d ($tca)" python3 -c '
+import sys
+tca, fwd = float(sys.argv[1]), sys.argv[2].split(",")
+assert abs(float(fwd[9]) / tca - 1) < 1e-11 and tca > 1.0001e-4 and abs(float(fwd[8]) - 0.5) < 1e-11' "$tca" "$fwd"
+# json: numbers, booleans, null
+run invert --e 0.5,5e-4 --tc 1e-4 --mass 1e-3 --velocity 1 --format json
+check "json: exit 3 with the good row" test "$RC" -eq 3
+check "json: booleans and nulls" python3 -c '
+import json, sys
+r = json.load(open(sys.argv[1]))["rows"]
+assert r[0]["bound_active"] is False and r[0]["status"] == "ok" and r[0]["radius_eff"] is None
+assert r[1]["k"] is None and r[1]["bound_active"] is None and r[1]["status"] == "outside-validity"' "$OUT"
+run invert --e 0.5 --tc 1e-4 --mass 1e-3 --velocity 1 --end force
+check "text, force" test "$RC" -eq 0 -a -n "$(grep '^# end: force' "$OUT")"
+
+# ------------------------------------------------------------ materials (issue 12)
+# two equal 2 mm glass beads: m = rho 4/3 pi R^3 = 1.0472e-5 kg, m* = m/2 = 5.236e-6 kg,
+# R* = R/2, E* = E/(2(1 - nu^2)), k_phys = (4/3) E* sqrt(R*) = 9.965e8 N m^-3/2
+run invert $GLASS --e 0.9 --dt 1e-6 --steps 10 --velocity 0.01,1 --format csv
+check "glass pair: exit 0" test "$RC" -eq 0
+check "glass pair: m* = 5.236e-6 kg, R* = 5e-4 m, k_phys = 9.965e8" python3 -c '
+import sys
+r = open(sys.argv[1]).read().splitlines()[1].split(",")
+assert abs(float(r[3]) - 5.236e-6) < 0.0005e-6 and float(r[4]) == 5e-4
+assert abs(float(r[5]) - 9.965e8) < 0.0005e8' "$OUT"
+check "glass pair: the bound is active at 0.01 m/s (tc_actual 1.59e-5 s), not at 1 m/s" python3 -c '
+import sys
+r1, r2 = [l.split(",") for l in open(sys.argv[1]).read().splitlines()[1:]]
+assert r1[11] == "true" and float(r1[9]) == float(r1[5]) and abs(float(r1[12]) - 1.59e-5) < 0.005e-5
+assert r2[11] == "false" and abs(float(r2[12]) / 1e-5 - 1) < 1e-14' "$OUT"
+run invert $GLASS --wall --e 0.9 --tc 1e-5 --velocity 1 --format csv
+check "glass on a wall of glass: m* = m = 1.0472e-5, R* = R, E* = E/(2(1-nu^2))" python3 -c '
+import sys, math
+r = open(sys.argv[1]).read().splitlines()[1].split(",")
+m = 2500 * 4 / 3 * math.pi * 1e-9
+es = 63e9 / (2 * (1 - 0.24**2))
+assert abs(float(r[3]) / m - 1) < 1e-15 and float(r[4]) == 1e-3
+assert abs(float(r[5]) / (4 / 3 * es * math.sqrt(1e-3)) - 1) < 1e-15' "$OUT"
+run invert $GLASS --wall --youngs-modulus2 2.1e11 --poisson-ratio2 0.3 --e 0.9 --tc 1e-5 --velocity 1 --format csv
+check "glass on a steel wall: E* from both" python3 -c '
+import sys, math
+r = open(sys.argv[1]).read().splitlines()[1].split(",")
+es = 1 / ((1 - 0.24**2) / 63e9 + (1 - 0.3**2) / 2.1e11)
+assert abs(float(r[5]) / (4 / 3 * es * math.sqrt(1e-3)) - 1) < 1e-15' "$OUT"
+run invert $GLASS --radius2 2e-3 --density2 7800 --e 0.9 --tc 1e-5 --velocity 1 --format csv
+check "glass and a steel-density sphere: m* = m1 m2/(m1+m2), R* = R1 R2/(R1+R2)" python3 -c '
+import sys, math
+r = open(sys.argv[1]).read().splitlines()[1].split(",")
+m1 = 2500 * 4 / 3 * math.pi * 1e-9; m2 = 7800 * 4 / 3 * math.pi * 8e-9
+assert abs(float(r[3]) / (m1 * m2 / (m1 + m2)) - 1) < 1e-15 and abs(float(r[4]) / (2e-3 / 3) - 1) < 1e-15' "$OUT"
+expect_fail 2 "radius 1e200: refused, not Inf" invert --radius 1e200 --density 2500 --e 0.5 --tc 1 --velocity 1
+check "radius 1e200: names --radius" grep -q -- '--radius 1e200 with --density 2500' "$ERR"
+expect_fail 2 "radius 2.2e-308: refused" invert --radius 2.2e-308 --density 2500 --e 0.5 --tc 1 --velocity 1
+expect_fail 2 "--mass with --density" invert --mass 1 $GLASS --e 0.5 --tc 1 --velocity 1
+expect_fail 2 "--k-phys with --youngs-modulus" invert --k-phys 1e9 $GLASS --e 0.5 --tc 1 --velocity 1
+expect_fail 2 "--youngs-modulus without --poisson-ratio" invert --radius 1e-3 --density 1 --youngs-modulus 1e9 --e 0.5 --tc 1 --velocity 1
+expect_fail 2 "--youngs-modulus without --radius" invert --mass 1 --youngs-modulus 1e9 --poisson-ratio 0.3 --e 0.5 --tc 1 --velocity 1
+expect_fail 2 "--wall with --radius2" invert $GLASS --wall --radius2 1 --e 0.5 --tc 1 --velocity 1
+expect_fail 2 "bad Poisson ratio of body 2" invert $GLASS --poisson-ratio2 0.7 --e 0.5 --tc 1 --velocity 1
+check "bad Poisson ratio: names --poisson-ratio2" grep -q -- "--poisson-ratio2 0.7: invalid Poisson's ratio" "$ERR"
+expect_fail 2 "negative density" invert --radius 1e-3 --density -2500 --e 0.5 --tc 1 --velocity 1
+check "negative density: names --density" grep -q -- '--density -2500: invalid density' "$ERR"
+# --mass with --radius and the elastic constants: the given mass, R* and k_phys from the radius
+run invert --mass 1e-5 --radius 1e-3 --youngs-modulus 63e9 --poisson-ratio 0.24 --e 0.9 --tc 1e-5 --velocity 1 --format csv
+check "--mass with --radius: mass as given, k_phys from the materials" python3 -c '
+import sys
+r = open(sys.argv[1]).read().splitlines()[1].split(",")
+assert float(r[3]) == 1e-5 and abs(float(r[5]) - 9.965e8) < 0.0005e8' "$OUT"
+
+# ------------------------------------------------------------ lists and statuses
+run invert --e 0.5:0.9:3 --dt 1e-6,2e-6 --steps 10,20 --velocity 0.01:5:log20 --mass 1e-3 --format csv
+check "lists: 3 x 4 x 20 = 240 rows (exit $RC)" test "$RC" -eq 0 -a "$(wc -l <"$OUT")" -eq 241
+check "lists: tc = dt x steps in order 1e-5, 2e-5, 2e-5, 4e-5" python3 -c '
+import sys
+rows = [l.split(",") for l in open(sys.argv[1]).read().splitlines()[1:]]
+tcs = [float(r[1]) for r in rows[0:80:20]]
+assert all(abs(a / b - 1) < 1e-15 for a, b in zip(tcs, [1e-5, 2e-5, 2e-5, 4e-5])), tcs
+v = [float(r[2]) for r in rows[:20]]
+assert abs(v[0] - 0.01) < 1e-17 and v[-1] == 5 and all(b > a for a, b in zip(v, v[1:]))' "$OUT"
+run invert --e 0.9,0.0005,1.5 --tc 1e-5 --mass 1e-3 --velocity 1 --format csv
+check "bad rows do not suppress the good one: exit 3 (got $RC)" test "$RC" -eq 3
+check "statuses ok, outside-validity, bad-input" test "$(cut -d, -f14 "$OUT" | tail -n 3 | tr '\n' ' ')" = "ok outside-validity bad-input "
+check "one stderr line: how many and why" grep -q '^hertzdamp: 2 of 3 rows have no result (1 bad-input, 1 outside-validity); first: --e 0.0005: --method fit accepts 0.001 <= e <= 1' "$ERR"
+check "exactly one stderr line" test "$(wc -l <"$ERR")" -eq 1
+# messages name the argument and say what the method accepts
+expect_fail 2 "negative velocity" invert --e 0.9 --tc 1e-5 --mass 1e-3 --velocity -1
+check "negative velocity names --velocity (not e)" grep -q -- '--velocity -1: invalid impact velocity' "$ERR"
+expect_fail 3 "compact below its range" invert --e 0.03 --tc 1e-4 --mass 1e-3 --velocity 1 --method compact
+check "compact: quotes its own range 0.05" grep -q -- '--e 0.03: --method compact accepts 0.05 <= e <= 1' "$ERR"
+expect_fail 3 "pade outside its range" invert --e 0.05 --tc 1e-4 --mass 1e-3 --velocity 1 --method pade
+check "pade: suggests what invert accepts, not rk45" grep -q 'use --method fit (or iterative)' "$ERR"
+check "pade: no rk45 in the advice" test -z "$(grep rk45 "$ERR")"
+run invert --e 0.3 --tc 1e-4 --mass 1e-3 --velocity 1 --method series --format csv
+check "series inverse at e = 0.3: inaccurate (exit $RC)" test "$RC" -eq 3 -a -n "$(grep -- '--accuracy 1e-10' "$ERR")"
+run invert --e 0.3 --tc 1e-4 --mass 1e-3 --velocity 1 --method series --accuracy 1e-3 --format csv
+check "series inverse at e = 0.3 with --accuracy 1e-3: ok" grep -q ',ok$' "$OUT"
+run invert --e 0.5 --tc 1e-4,1e-300 --mass 1e10 --velocity 1 --format csv
+check "k beyond double precision: out-of-range row (exit $RC)" test "$RC" -eq 3 -a "$(tail -n 1 "$OUT" | cut -d, -f14)" = "out-of-range"
+check "out-of-range: the message says so" grep -q 'k or d is outside the double-precision range' "$ERR"
+expect_fail 3 "e = 0 (no finite contact time)" invert --e 0 --tc 1e-4 --mass 1e-3 --velocity 1
+expect_fail 2 "e = 1.5 (bad input)" invert --e 1.5 --tc 1e-4 --mass 1e-3 --velocity 1
+expect_fail 3 "force end below 1e-4" invert --e 5e-5 --tc 1e-4 --mass 1e-3 --velocity 1 --end force
+check "force end below 1e-4: its range" grep -q -- '--method fit accepts 0.0001 <= e <= 1 for --end force' "$ERR"
+expect_fail 2 "negative tc" invert --e 0.5 --tc -1 --mass 1e-3 --velocity 1
+check "negative tc names --tc" grep -q -- '--tc (contact time -1)' "$ERR"
+expect_fail 2 "mass 0" invert --e 0.5 --tc 1e-4 --mass 0 --velocity 1
+expect_fail 2 "k-phys 0" invert --e 0.5 --tc 1e-4 --mass 1e-3 --velocity 1 --k-phys 0
+expect_fail 2 "missing --tc" invert --e 0.5 --tc 1e-4 --mass 1e-3
+expect_fail 2 "missing --velocity" invert --e 0.5 --mass 1e-3 --velocity 1
+expect_fail 2 "--tc with --dt" invert --e 0.5 --tc 1e-4 --dt 1e-5 --steps 10 --mass 1e-3 --velocity 1
+expect_fail 2 "series with force" invert --e 0.5 --tc 1e-4 --mass 1e-3 --velocity 1 --method series --end force
+expect_fail 2 "--steps not whole" invert --e 0.5 --dt 1e-5 --steps 2.5 --mass 1e-3 --velocity 1
+expect_fail 2 "malformed e" invert --e abc --tc 1e-4 --mass 1e-3 --velocity 1
+expect_fail 2 "--tol without iterative" invert --e 0.5 --tc 1e-4 --mass 1e-3 --velocity 1 --tol 1e-12
+expect_fail 2 "too many combinations" invert --e 0.1:1:200 --tc 1e-4 --mass 1e-3 --velocity 1:2:100
+run invert --help; check "help names the units" grep -q 'N m^-3/2' "$OUT"
+check "help defines nothing twice: effective mass is in the top help" grep -q 'effective mass m\*' <("$BIN" --help)
+
+# ------------------------------------------------------------ timestep
+run timestep $GLASS --e 0.9 --velocity 0.01:5:log10 --steps 10 --format csv
+check "timestep: exit 0 (got $RC)" test "$RC" -eq 0
+check "timestep: shortest contact at 5 m/s, dt = tc/10, elastic estimate" python3 -c '
+import sys, math
+h, r = [l.split(",") for l in open(sys.argv[1]).read().splitlines()]
+d = dict(zip(h, r))
+m = 2500 * 4 / 3 * math.pi * 1e-9 / 2; rs = 5e-4; es = 63e9 / (2 * (1 - 0.24**2))
+# the textbook elastic estimate 2.868 (m^2 / (R* E*^2 u))^(1/5) (4 digits)
+th = 2.868 * (m**2 / (rs * es**2 * 5))**0.2
+assert float(d["velocity_max"]) == 5 and abs(float(d["tc_elastic"]) / th - 1) < 2e-4
+assert abs(float(d["dt_max"]) * 10 / float(d["tc_damped"]) - 1) < 1e-15
+assert abs(float(d["elastic_excess"]) - (float(d["tc_elastic"]) / float(d["tc_damped"]) - 1)) < 1e-15
+assert d["status"] == "ok"' "$OUT"
+# the damped contact time of the physical model equals the rk45 contact time of k_phys and
+# d = alpha m^(3/5) k_phys^(2/5) u^(1/5) at the fastest impact
+row=$(tail -n 1 "$OUT")
+inv=$("$BIN" invert $GLASS --e 0.9 --tc 1e-9 --velocity 5 --format csv | tail -n 1)
+k=$(cut -d, -f10 <<<"$inv"); d=$(cut -d, -f11 <<<"$inv")
+fwd=$("$BIN" forward --k "$k" --d "$d" --mass "$(cut -d, -f4 <<<"$inv")" --velocity 5 --format csv | tail -n 1)
+check "timestep tc_damped = rk45 contact time of the physical contact" python3 -c '
+import sys
+row, fwd = sys.argv[1].split(","), sys.argv[2].split(",")
+assert abs(float(fwd[9]) / float(row[8]) - 1) < 1e-11 and abs(float(fwd[8]) - 0.9) < 1e-11' "$row" "$fwd"
+run timestep $GLASS --e 0.9,0.5,0.1 --velocity 1 --end force --format csv
+check "timestep force end: the elastic estimate is too long, by more for smaller e" python3 -c '
+import sys
+rows = [l.split(",") for l in open(sys.argv[1]).read().splitlines()[1:]]
+x = [float(r[10]) for r in rows]
+assert 0 < x[0] < x[1] < x[2], x' "$OUT"
+run timestep $GLASS --e 0.9 --velocity 1 --format csv
+check "timestep overlap end: the damped contact is longer than the elastic estimate" \
+  python3 -c 'import sys; r = open(sys.argv[1]).read().splitlines()[1].split(","); assert float(r[10]) < 0' "$OUT"
+run timestep $GLASS --e 0.9,0.0001 --velocity 1 --format csv
+check "timestep: a bad e is its own row (exit $RC)" test "$RC" -eq 3 -a "$(tail -n 1 "$OUT" | cut -d, -f14)" = "outside-validity"
+expect_fail 2 "timestep without a stiffness" timestep --mass 1 --e 0.9 --velocity 1
+expect_fail 2 "timestep bad velocity" timestep $GLASS --e 0.9 --velocity 0
+finish

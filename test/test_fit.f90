@@ -66,7 +66,7 @@ program test_fit
     call hertzdamp_fit_forward(100.0_wp, HD_END_FORCE, e, tc, st)
     call s%check(st == HD_OUTSIDE_VALIDITY, 'force alpha beyond the fitted range')
 
-    ! time reversal (THEORY 4): beta = alpha e^(-1/10) odd in ln e, tau_c e^(1/10) even.
+    ! time reversal (doc/theory.md section 4): beta = alpha e^(-1/10) odd in ln e, tau_c e^(1/10) even.
     ! The fitted alpha(e) and the reference at -alpha e^(-1/5) must give e' = 1/e, same tau_c e^(1/10).
     emax = 0.0_wp
     do i = 1, 20

@@ -1,4 +1,4 @@
-!> Checks of the GSL odeiv2 peer solver against exact facts (THEORY.md section 4):
+!> Checks of the GSL odeiv2 peer solver against exact facts (doc/theory.md section 4):
 !> the elastic closed forms, the first-order slope e1, the time-reversal identities,
 !> agreement of the two GSL steppers, the no-rebound certificate and the force
 !> definition.  Prints only the summary line on success.
@@ -6,7 +6,7 @@ program test_gsl_peer
     use hertzdamp_kinds, only: hertzdamp_rk
     use hertzdamp_testing, only: test_suite, new_suite
     use hertzdamp_gsl, only: hertzdamp_gsl_collide, gsl_sf_beta, HERTZDAMP_GSL_RKF45, HERTZDAMP_GSL_RK8PD
-    use hertzdamp_status, only: HD_OK, HD_NO_REBOUND, HD_BAD_ARGUMENT, HD_END_OVERLAP, HD_END_FORCE
+    use hertzdamp_status, only: HD_OK, HD_NO_REBOUND, HD_BAD_ARGUMENT, HD_END_OVERLAP, HD_END_FORCE, HD_BAD_LAW
     use, intrinsic :: ieee_arithmetic, only: ieee_is_finite, ieee_is_nan
     implicit none
 
@@ -25,6 +25,7 @@ program test_gsl_peer
     call test_force()
     call test_monotone()
     call test_bad_input()
+    call test_laws()
     call s%finish()
 
 contains
@@ -208,5 +209,46 @@ contains
         call s%check(st == HD_BAD_ARGUMENT .and. .not. any(ieee_is_nan(r)), &
             'unknown contact end rejected, no NaN')
     end subroutine test_bad_input
+
+    !> The damping laws q = 1/4 (1) and 1/2 (2): tsuji against its closed forms (overlap:
+    !> alpha = sqrt5 beta(e); force: e = exp(-2 z atan(sqrt(1-z^2)/z)/sqrt(1-z^2)),
+    !> z = alpha/sqrt5), time reversal e(a) e(-a e^p) = 1 with p = (4q-1)/5, the
+    !> no-rebound certificate of tsuji above sqrt5, and a bad law code.
+    subroutine test_laws()
+        real(wp) :: r(4), rb(4), z, e, a, p
+        integer :: st, stb, nev, nst, law, i
+        character(len=32) :: lab
+        do i = 1, 5
+            e = 10.0_wp**(-0.5_wp * i)
+            a = -sqrt(5.0_wp) * log(e) / sqrt(acos(-1.0_wp)**2 + log(e)**2)
+            call hertzdamp_gsl_collide(a, ov, 1e-14_wp, rk8pd, r(1), r(2), r(3), r(4), st, nev, nst, &
+                                       atol=1e-30_wp, law=1)
+            call s%check(st == HD_OK, 'tsuji overlap status')
+            call s%check_close(r(1), e, 1e-11_wp, 'gsl tsuji overlap: e(sqrt5 beta(e)) = e')
+            a = 0.4_wp * i
+            z = a / sqrt(5.0_wp)
+            call hertzdamp_gsl_collide(a, fo, 1e-14_wp, rk8pd, r(1), r(2), r(3), r(4), st, nev, nst, &
+                                       atol=1e-30_wp, law=1)
+            call s%check_close(r(1), exp(-2.0_wp * z * atan(sqrt(1.0_wp - z * z) / z) / sqrt(1.0_wp - z * z)), 1e-11_wp, &
+                               'gsl tsuji force: closed form')
+        end do
+        do law = 1, 2
+            p = (law - 1.0_wp) / 5.0_wp
+            do i = 1, 3
+                a = 0.5_wp * i
+                write (lab, '(a,i2,a,f4.1)') ' law', law, ' alpha', a
+                call hertzdamp_gsl_collide(a, ov, 1e-13_wp, rk8pd, r(1), r(2), r(3), r(4), st, nev, nst, law=law)
+                call hertzdamp_gsl_collide(-a * r(1)**p, ov, 1e-13_wp, rk8pd, rb(1), rb(2), rb(3), rb(4), stb, nev, nst, &
+                                           law=law)
+                call s%check(st == HD_OK .and. stb == HD_OK, 'time reversal status' // trim(lab))
+                call s%check_close(r(1) * rb(1), 1.0_wp, 1e-10_wp, 'e(a) e(-a e^p) = 1' // trim(lab))
+                call s%check_close(r(4) + r(1)**(-0.2_wp) * rb(4), r(2), 1e-10_wp, 'tau_c time reversal' // trim(lab))
+            end do
+        end do
+        call hertzdamp_gsl_collide(2.3_wp, ov, 1e-10_wp, rk8pd, r(1), r(2), r(3), r(4), st, nev, nst, law=1)
+        call s%check(st == HD_NO_REBOUND .and. nev < 20000, 'gsl tsuji above sqrt5: no rebound, certified')
+        call hertzdamp_gsl_collide(0.5_wp, ov, 1e-10_wp, rk8pd, r(1), r(2), r(3), r(4), st, nev, nst, law=3)
+        call s%check(st == HD_BAD_LAW .and. .not. any(ieee_is_nan(r)), 'bad law rejected')
+    end subroutine test_laws
 
 end program test_gsl_peer

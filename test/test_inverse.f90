@@ -1,4 +1,4 @@
-!> Tests of the inverse rule hertzdamp_invert (THEORY.md section 6).
+!> Tests of the inverse rule hertzdamp_invert (doc/theory.md section 6).
 program test_inverse
     use hertzdamp
     use hertzdamp_testing, only: test_suite, new_suite, rel_err

@@ -10,7 +10,7 @@ program test_legacy
     use hertzdamp, only: hertzdamp_rk, mod_invert => hertzdamp_invert, hertzdamp_forward_dim, hertzdamp_invert_alpha, &
                          mod_message => hertzdamp_message, HD_OK, HD_NO_REBOUND, HD_BAD_RESTITUTION, &
                          HD_BAD_MASS, HD_BAD_END, HD_BAD_TIME, HD_BAD_VELOCITY, HD_BAD_STIFFNESS, &
-                         HD_BAD_DAMPING, HD_BAD_KPHYS, HD_END_OVERLAP, HD_END_FORCE
+                         HD_BAD_DAMPING, HD_BAD_KPHYS, HD_END_OVERLAP, HD_END_FORCE, HD_BAD_LAW, hertzdamp_law_q
     use hertzdamp_flat, only: legacy_method
     use hertzdamp_testing, only: test_suite, new_suite
     use, intrinsic :: ieee_arithmetic, only: ieee_value, ieee_quiet_nan
@@ -53,6 +53,27 @@ program test_legacy
             double precision, intent(out) :: k(n), d(n)
             integer, intent(out) :: ierr(n)
         end subroutine hertzdamp_invert_n
+        subroutine hertzdamp_invert_law(e, tc, m, u, kphys, ilaw, iend, k, d, ierr)
+            implicit none
+            double precision, intent(in) :: e, tc, m, u, kphys
+            integer, intent(in) :: ilaw, iend
+            double precision, intent(out) :: k, d
+            integer, intent(out) :: ierr
+        end subroutine hertzdamp_invert_law
+        subroutine hertzdamp_pair_law(e, ilaw, iend, alpha, tauc, ierr)
+            implicit none
+            double precision, intent(in) :: e
+            integer, intent(in) :: ilaw, iend
+            double precision, intent(out) :: alpha, tauc
+            integer, intent(out) :: ierr
+        end subroutine hertzdamp_pair_law
+        subroutine hertzdamp_forward_law(k, d, m, u, ilaw, iend, e, tc, ierr)
+            implicit none
+            double precision, intent(in) :: k, d, m, u
+            integer, intent(in) :: ilaw, iend
+            double precision, intent(out) :: e, tc
+            integer, intent(out) :: ierr
+        end subroutine hertzdamp_forward_law
         subroutine hertzdamp_message(ierr, text)
             implicit none
             integer, intent(in) :: ierr
@@ -189,9 +210,51 @@ program test_legacy
     call hertzdamp_message(HD_OK, short)
     call suite%check(short == 'success', 'message of 0 is "success"')
 
+    call damping_laws()
     call suite%finish()
 
 contains
+
+    !> HERTZDAMP_INVERT_LAW / _PAIR_LAW / _FORWARD_LAW against the module API with the
+    !> law, bit for bit; the per-contact formulas of the pair; the bound of every law.
+    subroutine damping_laws()
+        integer :: law, j
+        real(wp) :: q
+        character(len=24) :: lab
+        do law = 0, 2
+            q = hertzdamp_law_q(law)
+            do iend = HD_END_OVERLAP, HD_END_FORCE
+                write (lab, '(a,i0,a,i0)') ' law ', law, ' end ', iend
+                do j = 2, nc
+                    call hertzdamp_invert_law(es(j), tcs(j), ms(j), us(j), 0.0_wp, law, iend, k, d, ierr)
+                    call mod_invert(es(j), tcs(j), ms(j), us(j), iend, km, dm, st, method=legacy_method, law=law)
+                    call suite%check(ierr == HD_OK .and. st == HD_OK .and. .not. (k /= km .or. d /= dm), &
+                                     'invert_law bit-identical to the module API' // trim(lab))
+                    call hertzdamp_forward_law(k, d, ms(j), us(j), law, iend, e, tc, ierr)
+                    call suite%check_close(e, es(j), 1.0e-12_wp, 'round trip e' // trim(lab))
+                    call suite%check_close(tc, tcs(j), 1.0e-12_wp, 'round trip tc' // trim(lab))
+                    call hertzdamp_pair_law(es(j), law, iend, alpha, tauc, ierr)
+                    tstar = tcs(j) / tauc
+                    call suite%check_close(ms(j) * tstar**(-2.5_wp) / sqrt(us(j)), k, 1.0e-14_wp, &
+                                           'pair_law: k formula' // trim(lab))
+                    call suite%check_close(alpha * ms(j) / tstar / (us(j) * tstar)**q, d, 1.0e-14_wp, &
+                                           'pair_law: d formula' // trim(lab))
+                    kp = 0.25_wp * k
+                    call hertzdamp_invert_law(es(j), tcs(j), ms(j), us(j), kp, law, iend, kb, db, ierr)
+                    call suite%check(ierr == HD_OK .and. .not. (kb /= kp), 'invert_law bound: k = k_phys' // trim(lab))
+                    call suite%check_close(db, alpha * ms(j)**((3.0_wp - 2.0_wp * q) / 5.0_wp) * &
+                                           kp**((2.0_wp + 2.0_wp * q) / 5.0_wp) * us(j)**((1.0_wp - 4.0_wp * q) / 5.0_wp), &
+                                           1.0e-13_wp, 'invert_law bound: d formula' // trim(lab))
+                end do
+            end do
+        end do
+        call hertzdamp_invert_law(0.5_wp, 1.0e-4_wp, 1.0_wp, 1.0_wp, 0.0_wp, 3, 0, k, d, ierr)
+        call suite%check(ierr == HD_BAD_LAW .and. .not. (k /= 0.0_wp .or. d /= 0.0_wp), 'invert_law: bad law')
+        call hertzdamp_invert_law(0.5_wp, 1.0e-4_wp, 1.0_wp, 1.0_wp, nan, 1, 0, k, d, ierr)
+        call suite%check(ierr == HD_BAD_KPHYS, 'invert_law: NaN k_phys')
+        call hertzdamp_pair_law(0.5_wp, -1, 0, alpha, tauc, ierr)
+        call suite%check(ierr == HD_BAD_LAW, 'pair_law: bad law')
+    end subroutine damping_laws
 
     !> Check that hertzdamp_invert fails with `want`, k = d = 0 and a message.
     subroutine expect_invert_error(e_, tc_, m_, u_, iend_, want, label)

@@ -1,7 +1,9 @@
-!> The reference integrator against exact facts (THEORY.md section 4), its own
+!> The reference integrator against exact facts (doc/theory.md section 4), its own
 !> convergence order, and its statuses.
 program test_rk45
     use hertzdamp
+    use hertzdamp_rk45_kernel, only: hertzdamp_dp_step, hertzdamp_dp_dense, HD_MODEL_LINEAR, hertzdamp_locate, &
+                                     hertzdamp_polish, hertzdamp_rk45_stats, HD_EVENT_TURN
     use hertzdamp_testing, only: test_suite, new_suite, rel_err
     implicit none
     integer, parameter :: wp = hertzdamp_rk
@@ -19,6 +21,7 @@ program test_rk45
     call force_definition()
     call statuses()
     call scaling_round_trip()
+    call event_failures()
     call s%finish()
 
 contains
@@ -102,7 +105,7 @@ contains
         type(hertzdamp_collision) :: r
         call hertzdamp_alpha_c(ac, st)
         call s%check(st == HD_OK, 'alpha_c bisection status')
-        call s%check(abs(ac - 1.12799_wp) < 1.0e-5_wp, 'alpha_c = 1.12799 (THEORY.md)')
+        call s%check(abs(ac - 1.12799_wp) < 1.0e-5_wp, 'alpha_c = 1.12799 (doc/theory.md)')
         r = hertzdamp_rk45_collide(ac - 1.0e-6_wp)
         call s%check(r%status == HD_OK .and. r%e > 0.0_wp .and. r%e < 1.0e-4_wp, 'just below alpha_c: small rebound')
         call s%check(r%tau_c > 10.0_wp, 'just below alpha_c: long contact')
@@ -135,7 +138,7 @@ contains
         y = [0.0_wp, 1.0_wp]
         k1 = [y(2), -a * y(2) - y(1)]
         do i = 1, n
-            call hertzdamp_dp_step(HD_MODEL_LINEAR, a, y, k1, h, ynew, k7, ev, cont)
+            call hertzdamp_dp_step(HD_MODEL_LINEAR, HD_DAMPING_LINEAR, a, y, k1, h, ynew, k7, ev, cont)
             y = ynew
             k1 = k7
         end do
@@ -174,7 +177,7 @@ contains
         real(wp) :: y(2), k1(2), ynew(2), k7(2), ev(2), cont(2, 5)
         y = linear_exact(a, t0)
         k1 = [y(2), -a * y(2) - y(1)]
-        call hertzdamp_dp_step(HD_MODEL_LINEAR, a, y, k1, h, ynew, k7, ev, cont)
+        call hertzdamp_dp_step(HD_MODEL_LINEAR, HD_DAMPING_LINEAR, a, y, k1, h, ynew, k7, ev, cont)
         es = maxval(abs(ynew - linear_exact(a, t0 + h)))
         ed = maxval(abs(hertzdamp_dp_dense(cont, 0.4_wp) - linear_exact(a, t0 + 0.4_wp * h)))
     end subroutine one_step
@@ -267,5 +270,50 @@ contains
         call hertzdamp_expand(1.0_wp, 1.0e-300_wp, 1.0e300_wp, 1.0e-300_wp, k, d, st)
         call s%check(st == HD_OUT_OF_RANGE .and. k == 0.0_wp, 'overflowing k -> HD_OUT_OF_RANGE')
     end subroutine scaling_round_trip
+
+    !> The event routines report failure instead of a silent answer (issue 13):
+    !> hertzdamp_locate without a sign change, hertzdamp_polish when Newton leaves the
+    !> step; and a polished event before the step start comes with its own state.
+    !> Test problem z'' + a z' + z = 0 (exact solution), turning point at
+    !> t_tp = atan(w / (a/2)) / w, w = sqrt(1 - a^2/4).
+    subroutine event_failures()
+        real(wp), parameter :: a = 0.3_wp
+        real(wp) :: y(2), k1(2), ynew(2), k7(2), ev(2), cont(2, 5), theta, out(3), w, ttp, t0, h, ytp(2)
+        integer :: st
+        type(hertzdamp_rk45_stats) :: stats
+        w = sqrt(1.0_wp - 0.25_wp * a * a)
+        ttp = atan(w / (0.5_wp * a)) / w
+        ! a step that does not contain the turning point: no sign change of z'
+        y = linear_exact(a, 0.2_wp)
+        k1 = [y(2), -a * y(2) - y(1)]
+        call hertzdamp_dp_step(HD_MODEL_LINEAR, HD_DAMPING_LINEAR, a, y, k1, 0.1_wp, ynew, k7, ev, cont)
+        call hertzdamp_locate(HD_EVENT_TURN, HD_MODEL_LINEAR, HD_DAMPING_LINEAR, cont, a, 0.0_wp, 0.0_wp, 1.0_wp, theta, st)
+        call s%check(st == HD_NO_CONVERGENCE, 'locate: no sign change is a failure, not the step end')
+        call hertzdamp_polish(HD_EVENT_TURN, HD_MODEL_LINEAR, HD_DAMPING_LINEAR, 0.2_wp, y, k1, 0.1_wp, 0.5_wp, a, out, &
+                              stats, st)
+        call s%check(st == HD_NO_CONVERGENCE .and. all(out == 0.0_wp), 'polish: Newton leaving the step is a failure')
+        ! a step that contains it: located and polished to the exact time
+        t0 = ttp - 0.04_wp
+        h = 0.1_wp
+        y = linear_exact(a, t0)
+        k1 = [y(2), -a * y(2) - y(1)]
+        call hertzdamp_dp_step(HD_MODEL_LINEAR, HD_DAMPING_LINEAR, a, y, k1, h, ynew, k7, ev, cont)
+        call hertzdamp_locate(HD_EVENT_TURN, HD_MODEL_LINEAR, HD_DAMPING_LINEAR, cont, a, 0.0_wp, 0.0_wp, 1.0_wp, theta, st)
+        call s%check(st == HD_OK .and. abs(t0 + theta * h - ttp) < 1.0e-8_wp, 'locate: turning point on the dense output')
+        call hertzdamp_polish(HD_EVENT_TURN, HD_MODEL_LINEAR, HD_DAMPING_LINEAR, t0, y, k1, h, theta, a, out, stats, st)
+        call s%check(st == HD_OK, 'polish converges')
+        call s%check_close(out(1), ttp, 1.0e-11_wp, 'polish: exact turning time')
+        ytp = linear_exact(a, ttp)
+        call s%check_close(out(2), ytp(1), 1.0e-11_wp, 'polish: the state at that time')
+        ! started from a trial point inside the step after the event: the polished time
+        ! is before the step start, and the state is that of the polished time
+        t0 = ttp + 0.01_wp
+        y = linear_exact(a, t0)
+        k1 = [y(2), -a * y(2) - y(1)]
+        call hertzdamp_polish(HD_EVENT_TURN, HD_MODEL_LINEAR, HD_DAMPING_LINEAR, t0, y, k1, h, 0.05_wp, a, out, stats, st)
+        call s%check(st == HD_OK .and. out(1) < t0, 'polish: event before the step start found')
+        call s%check_close(out(1), ttp, 1.0e-11_wp, 'polish before the step start: exact time')
+        call s%check_close(out(2), ytp(1), 1.0e-11_wp, 'polish before the step start: state matches the time')
+    end subroutine event_failures
 
 end program test_rk45

@@ -13,14 +13,19 @@ program test_rk45_vs_gsl
     s = new_suite('test_rk45_vs_gsl')
     call closed_forms()
     worst = 0.0_wp
-    ! 12 digits (README): default tolerance against rk8pd at 1e-14
+    ! 12 digits (README): default tolerance against rk8pd at 1e-14, every damping law
+    ! (doc/damping-laws.md) and contact end, over alpha down to e ~ 1e-4
     call compare(HD_END_OVERLAP, 0.0_wp, 1.12_wp, 57, 2.0e-12_wp)
     call compare(HD_END_FORCE, 0.0_wp, 50.0_wp, 51, 2.0e-12_wp)
+    call compare(HD_END_OVERLAP, 0.0_wp, 2.1_wp, 43, 2.0e-12_wp, HD_DAMPING_TSUJI)
+    call compare(HD_END_FORCE, 0.0_wp, 100.0_wp, 51, 2.0e-12_wp, HD_DAMPING_TSUJI)
+    call compare(HD_END_OVERLAP, 0.0_wp, 12.0_wp, 49, 2.0e-12_wp, HD_DAMPING_KUWABARA_KONO)
+    call compare(HD_END_FORCE, 0.0_wp, 100.0_wp, 51, 2.0e-12_wp, HD_DAMPING_KUWABARA_KONO)
     call s%finish()
 
 contains
 
-    !> THEORY.md section 4 with GSL's beta function, independent of the Fortran gamma.
+    !> doc/theory.md section 4 with GSL's beta function, independent of the Fortran gamma.
     subroutine closed_forms()
         type(hertzdamp_collision) :: r
         real(wp) :: tc0, z0, e1
@@ -29,8 +34,8 @@ contains
         e1 = 0.8_wp * z0 * gsl_sf_beta(0.4_wp, 1.5_wp)
         call s%check_close(hertzdamp_tau_c0(), tc0, 4.0e-15_wp, 'library tau_c0 = GSL beta closed form')
         call s%check_close(hertzdamp_e1(), e1, 4.0e-15_wp, 'library e1 = GSL beta closed form')
-        call s%check_close(tc0, 3.2180654597190431_wp, 4.0e-15_wp, 'tau_c0 = THEORY.md value (GSL beta: a few ulp)')
-        call s%check_close(e1, 1.7878141442883573_wp, 4.0e-15_wp, 'e1 = THEORY.md value (GSL beta: a few ulp)')
+        call s%check_close(tc0, 3.2180654597190431_wp, 4.0e-15_wp, 'tau_c0 = doc/theory.md value (GSL beta: a few ulp)')
+        call s%check_close(e1, 1.7878141442883573_wp, 4.0e-15_wp, 'e1 = doc/theory.md value (GSL beta: a few ulp)')
         r = hertzdamp_rk45_collide(0.0_wp)
         call s%check_close(r%tau_c, tc0, 1.0e-12_wp, 'rk45 tau_c(0) vs GSL closed form')
         call s%check_close(r%tau_max, 0.5_wp * tc0, 1.0e-12_wp, 'rk45 tau_max(0) vs GSL closed form')
@@ -39,27 +44,31 @@ contains
 
     !> Default-tolerance rk45 against rk8pd at 1e-14 on a grid of alpha; errors of e
     !> relative to max(e, 1e-3) as the issue states.
-    subroutine compare(iend, a0, a1, n, tol)
+    subroutine compare(iend, a0, a1, n, tol, law)
         integer, intent(in) :: iend, n
         real(wp), intent(in) :: a0, a1, tol
+        integer, intent(in), optional :: law
         type(hertzdamp_collision) :: r
         real(wp) :: alpha, e, tau_c, z_max, tau_max, err(4)
-        integer :: i, st, nrhs, nsteps
-        character(len=64) :: lab
+        integer :: i, st, nrhs, nsteps, law_
+        character(len=80) :: lab
         err = 0.0_wp
+        law_ = HD_DAMPING_LINEAR
+        if (present(law)) law_ = law
         do i = 0, n - 1
             alpha = a0 + (a1 - a0) * i / (n - 1)
-            r = hertzdamp_rk45_collide(alpha, iend)
+            r = hertzdamp_rk45_collide(alpha, iend, law=law_)
             call hertzdamp_gsl_collide(alpha, iend, 1.0e-14_wp, HERTZDAMP_GSL_RK8PD, e, tau_c, z_max, tau_max, &
-                                       st, nrhs, nsteps, atol=1.0e-30_wp)
-            write (lab, '(a,a,a,es10.3)') ' end=', hertzdamp_end_name(iend), ' alpha=', alpha
+                                       st, nrhs, nsteps, atol=1.0e-30_wp, law=law_)
+            write (lab, '(a,a,a,a,a,es10.3)') ' ', hertzdamp_law_name(law_), ' end=', hertzdamp_end_name(iend), &
+                ' alpha=', alpha
             call s%check(r%status == HD_OK .and. st == 0, 'both solvers succeed' // trim(lab))
             err(1) = max(err(1), rel_err(r%e, e, 1.0e-3_wp))
             err(2) = max(err(2), rel_err(r%tau_c, tau_c))
             err(3) = max(err(3), rel_err(r%z_max, z_max))
             err(4) = max(err(4), rel_err(r%tau_max, tau_max))
         end do
-        write (lab, '(a,a)') ' end=', hertzdamp_end_name(iend)
+        write (lab, '(a,a,a,a)') ' ', hertzdamp_law_name(law_), ' end=', hertzdamp_end_name(iend)
         print '(a,4es10.2)', '  ' // trim(lab) // ' max rel err e, tau_c, z_max, tau_max vs rk8pd:', err
         call s%check(err(1) <= tol, 'e agrees with GSL rk8pd' // trim(lab))
         call s%check(err(2) <= tol, 'tau_c agrees with GSL rk8pd' // trim(lab))

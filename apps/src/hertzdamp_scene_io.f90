@@ -25,8 +25,12 @@ module hertzdamp_scene_io
     private
 
     integer, parameter :: wp = hertzdamp_rk
-    !> Marks a real key that the file did not set.
-    real(wp), parameter :: unset = -huge(1.0_wp)
+    !> A key the file did not set keeps its marker.  Each group is read twice, with
+    !> the markers of set A and of set B: a key is missing when it holds its marker in
+    !> both reads, so that no value a file can give (-huge, +huge, -Inf, ...) is taken
+    !> for a missing key.
+    real(wp), parameter :: unset_a = -huge(1.0_wp), unset_b = huge(1.0_wp)
+    integer, parameter :: iunset_a = -huge(1), iunset_b = huge(1)
     !> Longest line of a scene file [characters]; longer lines are refused.
     integer, parameter :: line_len = 1024
     !> Most lines of a scene file.
@@ -36,11 +40,17 @@ module hertzdamp_scene_io
 
 contains
 
-    !> True when x still holds the `unset` marker.
-    pure elemental logical function is_unset(x)
-        real(wp), intent(in) :: x
-        is_unset = x <= 0.5_wp * unset .and. x >= unset   ! not -Inf: a given value (rejected as non-finite)
-    end function is_unset
+    !> True when a real key holds its marker in both reads (a from set A, b from B).
+    pure elemental logical function missing(a, b)
+        real(wp), intent(in) :: a, b
+        missing = a == unset_a .and. b == unset_b
+    end function missing
+
+    !> True when an integer key holds its marker in both reads.
+    pure elemental logical function missing_int(a, b)
+        integer, intent(in) :: a, b
+        missing_int = a == iunset_a .and. b == iunset_b
+    end function missing_int
 
     !> Read and validate the syntax of a scene file (physical validity is checked by
     !> hertzdamp_dem_check).  status HD_OK, or HD_BAD_ARGUMENT with a message.
@@ -341,31 +351,23 @@ contains
         character(len=:), allocatable, intent(inout) :: msg
         character(len=256) :: title, contact_end, report, iom
         real(wp) :: dt, end_time, g(3), accuracy, domain_lo(3), domain_hi(3), rest_speed
-        integer :: steps_per_contact, samples, ios
+        real(wp) :: dt_b, end_time_b, domain_lo_b(3), domain_hi_b(3)
+        integer :: steps_per_contact, samples, ios, steps_b
         logical :: gravity
         namelist /scene/ title, dt, steps_per_contact, end_time, gravity, g, contact_end, report, accuracy, &
             domain_lo, domain_hi, rest_speed, samples
-        title = ''
-        dt = unset
-        end_time = unset
-        steps_per_contact = -huge(1)
-        gravity = .false.
-        g = [0.0_wp, 0.0_wp, -9.81_wp]
-        contact_end = 'overlap'
-        report = 'restitution duration'
-        accuracy = 1.0e-3_wp
-        domain_lo = unset
-        domain_hi = unset
-        rest_speed = 1.0e-3_wp
-        samples = 1000
-        read (lines, nml=scene, iostat=ios, iomsg=iom)
-        if (ios /= 0) then
-            msg = nml_error(lines, first, 'scene', iom)
-            return
-        end if
-        if (is_unset(dt)) then
+        call load(unset_b, iunset_b)
+        if (len(msg) > 0) return
+        dt_b = dt
+        end_time_b = end_time
+        steps_b = steps_per_contact
+        domain_lo_b = domain_lo
+        domain_hi_b = domain_hi
+        call load(unset_a, iunset_a)
+        if (len(msg) > 0) return
+        if (missing(dt, dt_b)) then
             msg = at(first) // '&scene: dt missing (time step [s])'
-        else if (is_unset(end_time)) then
+        else if (missing(end_time, end_time_b)) then
             msg = at(first) // '&scene: end_time missing [s]'
         end if
         if (len(msg) > 0) return
@@ -391,7 +393,7 @@ contains
             msg = at(first) // '&scene: report must be ''restitution'' or ''restitution duration'''
             return
         end select
-        if (steps_per_contact == -huge(1)) then
+        if (missing_int(steps_per_contact, steps_b)) then
             if (sc%want_duration) then
                 msg = at(first) // '&scene: steps_per_contact missing (N, contact time N dt)'
                 return
@@ -399,15 +401,47 @@ contains
             steps_per_contact = 10
         end if
         sc%steps_per_contact = steps_per_contact
-        if (any(is_unset(domain_lo)) .neqv. any(is_unset(domain_hi))) then
+        if (any(missing(domain_lo, domain_lo_b)) .neqv. any(missing(domain_hi, domain_hi_b))) then
             msg = at(first) // '&scene: give both domain_lo and domain_hi, or neither'
             return
         end if
-        sc%has_domain = .not. any(is_unset(domain_lo))
+        if (all(missing(domain_lo, domain_lo_b)) .neqv. any(missing(domain_lo, domain_lo_b))) then
+            msg = at(first) // '&scene: domain_lo needs 3 coordinates [m]'
+            return
+        end if
+        if (all(missing(domain_hi, domain_hi_b)) .neqv. any(missing(domain_hi, domain_hi_b))) then
+            msg = at(first) // '&scene: domain_hi needs 3 coordinates [m]'
+            return
+        end if
+        sc%has_domain = .not. any(missing(domain_lo, domain_lo_b))
         if (sc%has_domain) then
             sc%domain_lo = domain_lo
             sc%domain_hi = domain_hi
         end if
+
+    contains
+
+        !> Defaults, the markers of one set for the keys without default, and the read.
+        subroutine load(marker, imarker)
+            real(wp), intent(in) :: marker
+            integer, intent(in) :: imarker
+            title = ''
+            dt = marker
+            end_time = marker
+            steps_per_contact = imarker
+            gravity = .false.
+            g = [0.0_wp, 0.0_wp, -9.81_wp]
+            contact_end = 'overlap'
+            report = 'restitution duration'
+            accuracy = 1.0e-3_wp
+            domain_lo = marker
+            domain_hi = marker
+            rest_speed = 1.0e-3_wp
+            samples = 1000
+            read (lines, nml=scene, iostat=ios, iomsg=iom)
+            if (ios /= 0) msg = nml_error(lines, first, 'scene', iom)
+        end subroutine load
+
     end subroutine read_scene
 
     subroutine read_material(lines, first, sc, msg)
@@ -419,28 +453,27 @@ contains
         real(wp) :: density, youngs_modulus, poisson_ratio, restitution
         integer :: ios, k
         type(hertzdamp_dem_material) :: mt
+        real(wp) :: density_b, youngs_modulus_b, poisson_ratio_b, restitution_b
         namelist /material/ name, density, youngs_modulus, poisson_ratio, restitution
-        name = ''
-        density = unset
-        youngs_modulus = unset
-        poisson_ratio = unset
-        restitution = unset
-        read (lines, nml=material, iostat=ios, iomsg=iom)
-        if (ios /= 0) then
-            msg = nml_error(lines, first, 'material', iom)
-            return
-        end if
+        call load(unset_b)
+        if (len(msg) > 0) return
+        density_b = density
+        youngs_modulus_b = youngs_modulus
+        poisson_ratio_b = poisson_ratio
+        restitution_b = restitution
+        call load(unset_a)
+        if (len(msg) > 0) return
         if (len_trim(name) == 0) then
             msg = at(first) // '&material: name missing'
         else if (len_trim(name) > len(mt%name)) then
             msg = at(first) // '&material: name longer than 32 characters'
-        else if (is_unset(density)) then
+        else if (missing(density, density_b)) then
             msg = at(first) // '&material: density missing [kg m^-3]'
-        else if (is_unset(youngs_modulus)) then
+        else if (missing(youngs_modulus, youngs_modulus_b)) then
             msg = at(first) // '&material: youngs_modulus missing [Pa]'
-        else if (is_unset(poisson_ratio)) then
+        else if (missing(poisson_ratio, poisson_ratio_b)) then
             msg = at(first) // '&material: poisson_ratio missing'
-        else if (is_unset(restitution)) then
+        else if (missing(restitution, restitution_b)) then
             msg = at(first) // '&material: restitution missing (target e)'
         end if
         if (len(msg) > 0) return
@@ -462,6 +495,20 @@ contains
         if (len(msg) > 0) return
         mt = hertzdamp_dem_material(name, density, youngs_modulus, poisson_ratio, restitution)
         sc%mat = [sc%mat, mt]
+
+    contains
+
+        subroutine load(marker)
+            real(wp), intent(in) :: marker
+            name = ''
+            density = marker
+            youngs_modulus = marker
+            poisson_ratio = marker
+            restitution = marker
+            read (lines, nml=material, iostat=ios, iomsg=iom)
+            if (ios /= 0) msg = nml_error(lines, first, 'material', iom)
+        end subroutine load
+
     end subroutine read_material
 
     !> Index of a material by name, 0 if unknown.
@@ -484,29 +531,25 @@ contains
         real(wp) :: radius, position(3), velocity(3), spacing(3)
         integer :: count, ios, k, im, n0
         real(wp), allocatable :: xs(:, :), vs(:, :)
+        real(wp) :: radius_b, position_b(3)
         namelist /particle/ material, radius, position, velocity, count, spacing
-        material = ''
-        radius = unset
-        position = unset
-        velocity = 0.0_wp
-        count = 1
-        spacing = 0.0_wp
-        read (lines, nml=particle, iostat=ios, iomsg=iom)
-        if (ios /= 0) then
-            msg = nml_error(lines, first, 'particle', iom)
-            return
-        end if
+        call load(unset_b)
+        if (len(msg) > 0) return
+        radius_b = radius
+        position_b = position
+        call load(unset_a)
+        if (len(msg) > 0) return
         im = find_material(sc, material)
         if (len_trim(material) == 0) then
             msg = at(first) // '&particle: material missing'
         else if (im == 0) then
             msg = at(first) // '&particle: unknown material ''' // trim(material) // &
                   ''' (define it in a &material group before the particles)'
-        else if (is_unset(radius)) then
+        else if (missing(radius, radius_b)) then
             msg = at(first) // '&particle: radius missing [m]'
         else if (.not. (radius > 0.0_wp)) then
             msg = at(first) // '&particle: radius must be positive'
-        else if (any(is_unset(position))) then
+        else if (any(missing(position, position_b))) then
             msg = at(first) // '&particle: position missing (3 coordinates) [m]'
         else if (count < 1) then
             msg = at(first) // '&particle: count must be at least 1'
@@ -527,6 +570,21 @@ contains
         sc%radius = [sc%radius, spread(radius, 1, count)]
         sc%pmat = [sc%pmat, spread(im, 1, count)]
         sc%pline = [sc%pline, spread(first, 1, count)]
+
+    contains
+
+        subroutine load(marker)
+            real(wp), intent(in) :: marker
+            material = ''
+            radius = marker
+            position = marker
+            velocity = 0.0_wp
+            count = 1
+            spacing = 0.0_wp
+            read (lines, nml=particle, iostat=ios, iomsg=iom)
+            if (ios /= 0) msg = nml_error(lines, first, 'particle', iom)
+        end subroutine load
+
     end subroutine read_particle
 
     subroutine read_wall(lines, first, sc, msg)
@@ -538,23 +596,22 @@ contains
         real(wp) :: point(3), normal(3)
         integer :: ios, im
         type(hertzdamp_dem_wall) :: w
+        real(wp) :: point_b(3), normal_b(3)
         namelist /wall/ material, point, normal
-        material = ''
-        point = unset
-        normal = unset
-        read (lines, nml=wall, iostat=ios, iomsg=iom)
-        if (ios /= 0) then
-            msg = nml_error(lines, first, 'wall', iom)
-            return
-        end if
+        call load(unset_b)
+        if (len(msg) > 0) return
+        point_b = point
+        normal_b = normal
+        call load(unset_a)
+        if (len(msg) > 0) return
         im = find_material(sc, material)
         if (len_trim(material) == 0) then
             msg = at(first) // '&wall: material missing'
         else if (im == 0) then
             msg = at(first) // '&wall: unknown material ''' // trim(material) // ''''
-        else if (any(is_unset(point))) then
+        else if (any(missing(point, point_b))) then
             msg = at(first) // '&wall: point missing (3 coordinates) [m]'
-        else if (any(is_unset(normal))) then
+        else if (any(missing(normal, normal_b))) then
             msg = at(first) // '&wall: normal missing (3 components)'
         else if (.not. all(abs(normal) <= huge(1.0_wp))) then
             msg = at(first) // '&wall: normal must be finite'
@@ -564,9 +621,22 @@ contains
         if (len(msg) > 0) return
         w%material = im
         w%point = point
-        w%normal = normal / norm2(normal)
+        w%normal = normal / maxval(abs(normal))   ! scaled first: no overflow or underflow in norm2
+        w%normal = w%normal / norm2(w%normal)
         w%line = first
         sc%wall = [sc%wall, w]
+
+    contains
+
+        subroutine load(marker)
+            real(wp), intent(in) :: marker
+            material = ''
+            point = marker
+            normal = marker
+            read (lines, nml=wall, iostat=ios, iomsg=iom)
+            if (ios /= 0) msg = nml_error(lines, first, 'wall', iom)
+        end subroutine load
+
     end subroutine read_wall
 
 end module hertzdamp_scene_io

@@ -1,9 +1,24 @@
 !> hertzdamp-gen-fit: generator of the approximants of `hertzdamp_fit` and the
-!> constants of `hertzdamp_compact`.
+!> constants of `hertzdamp_compact`, for every damping law (doc/damping-laws.md).
 !>
-!> Writes data/fit_coefficients.csv (or the path given as first argument).
-!> Every number in it comes from the reference integrator `hertzdamp_rk45_collide`
-!> at tolerance 1e-15 and from LAPACK least squares (dgels); nothing is typed in.
+!> Usage: hertzdamp-gen-fit [CSV]
+!> Writes data/fit_coefficients.csv (or CSV): the blocks of the linear law and the
+!> compact constants, then the blocks of the tsuji and kuwabara-kono laws (the linear
+!> rows are the same whether or not the laws follow).  Every number in it comes from
+!> the reference integrator
+!> `hertzdamp_rk45_collide` at tolerance 1e-15 and from LAPACK least squares (dgels);
+!> nothing is typed in.
+!>
+!> Variables of the new laws (the force end is not analytic at alpha = 0: its
+!> quantities are series in alpha^(1/n) with n = 3 (linear), 5 (tsuji), 2
+!> (kuwabara-kono), from the exponent 5/(3 - 2q) of the first non-analytic term;
+!> doc/damping-laws.md):
+!> - tsuji: e(alpha) is exact (both ends) and so is alpha(e) for the overlap end, so
+!>   only tau_c(L) (overlap: of L; force: of L^(1/5)), alpha(e)/L of L (force: e(alpha)
+!>   is analytic) and z_max, tau_max of alpha^(1/5) are fitted; the forward tau_c is
+!>   tau_c(L(alpha)) with the exact L.
+!> - kuwabara-kono: overlap of L and alpha (analytic), force of L^(1/2) and alpha^(1/2);
+!>   z_max, tau_max of alpha^(1/2) for both ends.
 !>
 !> Approximants ("blocks").  Each block approximates one quantity y as a piecewise
 !> polynomial of one variable x on [x0, x1], cut into np pieces of equal width; on
@@ -20,7 +35,9 @@
 !> reweighted least squares towards minimax.
 program gen_fit
     use hertzdamp, only: hertzdamp_rk, hertzdamp_rk45_collide, hertzdamp_collision, hertzdamp_alpha_c, &
-                         hertzdamp_e1, hertzdamp_tau_c0, HD_OK, HD_NO_REBOUND, HD_END_OVERLAP, HD_END_FORCE
+                         hertzdamp_e1, hertzdamp_tau_c0, HD_OK, HD_NO_REBOUND, HD_END_OVERLAP, HD_END_FORCE, &
+                         HD_DAMPING_LINEAR, HD_DAMPING_TSUJI, HD_DAMPING_KUWABARA_KONO, hertzdamp_tsuji_alpha, &
+                         hertzdamp_tsuji_e, hertzdamp_law_name
     use, intrinsic :: iso_fortran_env, only: output_unit, error_unit
     implicit none
 
@@ -31,10 +48,12 @@ program gen_fit
     !> Validation ignores points where the reference noise exceeds this (relative).
     real(wp), parameter :: nu_max = 1.0e-14_wp
 
-    ! variables x
-    integer, parameter :: VAR_L = 1, VAR_CBRT_L = 2, VAR_ALPHA = 3, VAR_W = 4, VAR_CBRT_ALPHA = 5
-    character(len=*), parameter :: var_names(6) = [character(len=40) :: &
-        'L = -ln e', 'L**(1/3)', 'alpha', 'w = -ln(1 - alpha/alpha_c)', 'alpha**(1/3)', 'ln alpha']
+    ! variables x (ROOT: the nroot-th root of L or alpha)
+    integer, parameter :: VAR_L = 1, VAR_ROOT_L = 2, VAR_ALPHA = 3, VAR_W = 4, VAR_ROOT_ALPHA = 5, &
+                          VAR_LOG_ROOT_ALPHA = 7
+    character(len=*), parameter :: var_names(7) = [character(len=40) :: &
+        'L = -ln e', 'L**(1/n)', 'alpha', 'w = -ln(1 - alpha/alpha_c)', 'alpha**(1/n)', 'ln alpha', &
+        'ln(1 + alpha**(1/n))']
     ! quantities y
     integer, parameter :: Q_ALPHA_OVER_L = 1, Q_TAU_C = 2, Q_L_OVER_ALPHA = 3, Q_L = 4, Q_Z_MAX = 5, Q_TAU_MAX = 6
     character(len=*), parameter :: q_names(6) = [character(len=24) :: 'alpha/L', 'tau_c', 'L/alpha', 'L', &
@@ -45,15 +64,17 @@ program gen_fit
         integer :: iend, var, q
         real(wp) :: x0, x1
         integer :: np, deg
+        integer :: law = HD_DAMPING_LINEAR   !! damping law of the block
+        integer :: nroot = 3                 !! n of the ROOT variables
     end type block_spec
 
-    ! the inversion table alpha <-> L of each definition
+    ! the inversion table alpha <-> L of each definition and law
     integer, parameter :: ntab = 3000
-    real(wp) :: tab_a(ntab, 0:1), tab_l(ntab, 0:1), tab_t(ntab, 0:1)
+    real(wp) :: tab_a(ntab, 0:1, 0:2), tab_l(ntab, 0:1, 0:2), tab_t(ntab, 0:1, 0:2)
 
     real(wp) :: alpha_c, e1, tc0, lmax_ov, lmax_fo, amax_ov, amax_fo, wmax_ov
     real(wp) :: e_min_ov, e_min_fo
-    integer :: status, u, nb, ib, i, j, ilw, itw
+    integer :: status, u, nb, ib, j, ilw, itw
     real(wp) :: end_val(40, 0:1), h1
     integer :: im
     real(wp) :: cc(4, 8), cerr(8)
@@ -64,7 +85,7 @@ program gen_fit
     type(block_spec), allocatable :: blocks(:)
     real(wp), allocatable :: coef(:, :)
     real(wp) :: maxerr
-    character(len=:), allocatable :: body, summary
+    character(len=:), allocatable :: body, summary, law_body, law_summary, law_params
 
     interface
         !> LAPACK: least-squares solution of an overdetermined system by QR.
@@ -86,39 +107,48 @@ program gen_fit
     tc0 = hertzdamp_tau_c0()
     call hertzdamp_alpha_c(alpha_c, status, 1.0e-15_wp)
     if (status /= HD_OK) call die('alpha_c failed')
+    call law_fits()
+    call linear_fits()
+
+contains
+
+    !> The linear law (blocks and compact constants), and the CSV with the rows of
+    !> every law.
+    subroutine linear_fits()
 
     e_min_ov = 1.0e-3_wp
     e_min_fo = 1.0e-4_wp
     lmax_ov = -log(e_min_ov)
     lmax_fo = -log(e_min_fo)
 
-    call make_table(HD_END_OVERLAP)
-    call make_table(HD_END_FORCE)
-    amax_ov = alpha_of_l(HD_END_OVERLAP, lmax_ov)
-    amax_fo = alpha_of_l(HD_END_FORCE, lmax_fo)
+    call make_table(HD_DAMPING_LINEAR, HD_END_OVERLAP)
+    call make_table(HD_DAMPING_LINEAR, HD_END_FORCE)
+    amax_ov = alpha_of_l(HD_DAMPING_LINEAR, HD_END_OVERLAP, lmax_ov)
+    amax_fo = alpha_of_l(HD_DAMPING_LINEAR, HD_END_FORCE, lmax_fo)
     ! forward ranges reach a little beyond alpha(e_min): alpha(e_min/2)
-    amax_ov = alpha_of_l(HD_END_OVERLAP, log(1.0e5_wp))   ! overlap forward: down to e = 1e-5
-    amax_fo = alpha_of_l(HD_END_FORCE, lmax_fo + log(2.0_wp))
+    amax_ov = alpha_of_l(HD_DAMPING_LINEAR, HD_END_OVERLAP, log(1.0e5_wp))   ! overlap forward: down to e = 1e-5
+    amax_fo = alpha_of_l(HD_DAMPING_LINEAR, HD_END_FORCE, lmax_fo + log(2.0_wp))
     wmax_ov = -log(1.0_wp - amax_ov / alpha_c)
 
+    if (allocated(blocks)) deallocate (blocks)
     allocate (blocks(16))   ! explicit: allocation on assignment trips -Wuninitialized
     blocks(:) = [ &
         block_spec('ov_inv_a', HD_END_OVERLAP, VAR_L, Q_ALPHA_OVER_L, 0.0_wp, lmax_ov, 8, 9), &
         block_spec('ov_inv_t', HD_END_OVERLAP, VAR_L, Q_TAU_C, 0.0_wp, lmax_ov, 8, 9), &
-        block_spec('fo_inv_a', HD_END_FORCE, VAR_CBRT_L, Q_ALPHA_OVER_L, 0.0_wp, lmax_fo**(1.0_wp/3), 16, 9), &
-        block_spec('fo_inv_t', HD_END_FORCE, VAR_CBRT_L, Q_TAU_C, 0.0_wp, lmax_fo**(1.0_wp/3), 16, 9), &
+        block_spec('fo_inv_a', HD_END_FORCE, VAR_ROOT_L, Q_ALPHA_OVER_L, 0.0_wp, lmax_fo**(1.0_wp/3), 16, 9), &
+        block_spec('fo_inv_t', HD_END_FORCE, VAR_ROOT_L, Q_TAU_C, 0.0_wp, lmax_fo**(1.0_wp/3), 16, 9), &
         block_spec('ov_fwd_la', HD_END_OVERLAP, VAR_ALPHA, Q_L_OVER_ALPHA, 0.0_wp, 0.6_wp, 4, 11), &
         block_spec('ov_fwd_ta', HD_END_OVERLAP, VAR_ALPHA, Q_TAU_C, 0.0_wp, 0.6_wp, 4, 11), &
         block_spec('ov_fwd_lw', HD_END_OVERLAP, VAR_W, Q_L, -log(1.0_wp - 0.6_wp / alpha_c), wmax_ov, 16, 11), &
         block_spec('ov_fwd_tw', HD_END_OVERLAP, VAR_W, Q_TAU_C, -log(1.0_wp - 0.6_wp / alpha_c), wmax_ov, 16, 11), &
-        block_spec('fo_fwd_la', HD_END_FORCE, VAR_CBRT_ALPHA, Q_L_OVER_ALPHA, 0.0_wp, amax_fo**(1.0_wp/3), 16, 11), &
-        block_spec('fo_fwd_ta', HD_END_FORCE, VAR_CBRT_ALPHA, Q_TAU_C, 0.0_wp, amax_fo**(1.0_wp/3), 16, 11), &
+        block_spec('fo_fwd_la', HD_END_FORCE, VAR_ROOT_ALPHA, Q_L_OVER_ALPHA, 0.0_wp, amax_fo**(1.0_wp/3), 16, 11), &
+        block_spec('fo_fwd_ta', HD_END_FORCE, VAR_ROOT_ALPHA, Q_TAU_C, 0.0_wp, amax_fo**(1.0_wp/3), 16, 11), &
         block_spec('ov_fwd_za', HD_END_OVERLAP, VAR_ALPHA, Q_Z_MAX, 0.0_wp, 0.6_wp, 4, 11), &
         block_spec('ov_fwd_ma', HD_END_OVERLAP, VAR_ALPHA, Q_TAU_MAX, 0.0_wp, 0.6_wp, 4, 11), &
         block_spec('ov_fwd_zb', HD_END_OVERLAP, VAR_ALPHA, Q_Z_MAX, 0.6_wp, 1.3_wp, 8, 11), &
         block_spec('ov_fwd_mb', HD_END_OVERLAP, VAR_ALPHA, Q_TAU_MAX, 0.6_wp, 1.3_wp, 8, 11), &
-        block_spec('fo_fwd_za', HD_END_FORCE, VAR_CBRT_ALPHA, Q_Z_MAX, 0.0_wp, amax_fo**(1.0_wp/3), 16, 11), &
-        block_spec('fo_fwd_ma', HD_END_FORCE, VAR_CBRT_ALPHA, Q_TAU_MAX, 0.0_wp, amax_fo**(1.0_wp/3), 16, 11) ]
+        block_spec('fo_fwd_za', HD_END_FORCE, VAR_ROOT_ALPHA, Q_Z_MAX, 0.0_wp, amax_fo**(1.0_wp/3), 16, 11), &
+        block_spec('fo_fwd_ma', HD_END_FORCE, VAR_ROOT_ALPHA, Q_TAU_MAX, 0.0_wp, amax_fo**(1.0_wp/3), 16, 11) ]
 
     nb = size(blocks)
     ilw = 0
@@ -126,25 +156,9 @@ program gen_fit
     body = ''
     summary = ''
     do ib = 1, nb
-        call fit_block(blocks(ib), coef, maxerr)
-        ! value and slope d/dx at x1 of the last piece (for the linear extrapolation in w)
-        h1 = (blocks(ib)%x1 - blocks(ib)%x0) / blocks(ib)%np
-        end_val(ib, 0) = sum(coef(:, blocks(ib)%np))
-        end_val(ib, 1) = sum([(j * coef(j, blocks(ib)%np), j=1, blocks(ib)%deg)]) * 2.0_wp / h1
+        call fit_and_record(blocks(ib))
         if (blocks(ib)%name == 'ov_fwd_lw') ilw = ib
         if (blocks(ib)%name == 'ov_fwd_tw') itw = ib
-        summary = summary // '# block ' // trim(blocks(ib)%name) // ': ' // trim(q_names(blocks(ib)%q)) // &
-            ' of ' // trim(var_names(blocks(ib)%var)) // ', x in [' // g(blocks(ib)%x0) // ', ' // &
-            g(blocks(ib)%x1) // '], ' // i2s(blocks(ib)%np) // ' pieces of degree ' // i2s(blocks(ib)%deg) // &
-            new_line('a') // '#     measured max relative error of the result ' // g(maxerr) // new_line('a')
-        write (error_unit, '(a,a12,a,es10.2)') 'block ', trim(blocks(ib)%name), '  max rel err ', maxerr
-        body = body // 'block,' // trim(blocks(ib)%name) // ',' // i2s(blocks(ib)%var) // ',' // &
-            r2s(blocks(ib)%x0) // ',' // r2s(blocks(ib)%x1) // ',' // i2s(blocks(ib)%np) // ',' // &
-            i2s(blocks(ib)%deg) // new_line('a')
-        do i = 1, blocks(ib)%np
-            body = body // 'coef,' // trim(blocks(ib)%name) // ',' // i2s(i - 1) // ',' // &
-                join(coef(:, i)) // new_line('a')
-        end do
     end do
 
     ! compact formulas (doc/compact.md): 4 constants each, overlap and force, e in [0.05, 1]
@@ -165,6 +179,7 @@ program gen_fit
     write (u, '(a)') '# Ranges: overlap e in [' // g(e_min_ov) // ', 1], force e in [' // g(e_min_fo) // &
         ', 1]; forward alpha up to alpha(e_min/2) (force), alpha(1e-5) (overlap).'
     write (u, '(a)', advance='no') summary
+    write (u, '(a)', advance='no') law_summary
     write (u, '(a)') '# rows: param,name,value | block,name,variable,x0,x1,np,deg | coef,name,piece,c_0,...,c_deg'
     write (u, '(a)') 'param,alpha_c,' // r2s(alpha_c)
     write (u, '(a)') 'param,e_min_overlap,' // r2s(e_min_ov)
@@ -181,11 +196,104 @@ program gen_fit
         end do
     end do
     write (u, '(a)') 'param,e_min_compact,' // r2s(e_compact)
+    write (u, '(a)', advance='no') law_params
     write (u, '(a)', advance='no') body
+    write (u, '(a)', advance='no') law_body
     close (u)
     write (output_unit, '(a)') 'wrote ' // trim(path)
+    end subroutine linear_fits
 
-contains
+    !> Fit one block and append its summary lines and CSV rows; value and slope d/dx
+    !> at x1 of the last piece go to end_val (for the linear extrapolation in w).
+    subroutine fit_and_record(b)
+        type(block_spec), intent(in) :: b
+        integer :: k
+        character(len=:), allocatable :: vname
+        call fit_block(b, coef, maxerr)
+        h1 = (b%x1 - b%x0) / b%np
+        end_val(ib, 0) = sum(coef(:, b%np))
+        end_val(ib, 1) = sum([(k * coef(k, b%np), k=1, b%deg)]) * 2.0_wp / h1
+        vname = trim(var_names(b%var))
+        if (b%var == VAR_ROOT_L .or. b%var == VAR_ROOT_ALPHA) vname = vname(1:len(vname) - 2) // i2s(b%nroot) // ')'
+        if (b%var == VAR_LOG_ROOT_ALPHA) vname = vname(1:len(vname) - 3) // i2s(b%nroot) // '))'
+        summary = summary // '# block ' // trim(b%name) // ': ' // trim(q_names(b%q)) // &
+            ' of ' // vname // ', x in [' // g(b%x0) // ', ' // &
+            g(b%x1) // '], ' // i2s(b%np) // ' pieces of degree ' // i2s(b%deg) // &
+            new_line('a') // '#     measured max relative error of the result ' // g(maxerr) // new_line('a')
+        write (error_unit, '(a,a12,a,es10.2)') 'block ', trim(b%name), '  max rel err ', maxerr
+        body = body // 'block,' // trim(b%name) // ',' // i2s(b%var) // ',' // &
+            r2s(b%x0) // ',' // r2s(b%x1) // ',' // i2s(b%np) // ',' // &
+            i2s(b%deg) // new_line('a')
+        do k = 1, b%np
+            body = body // 'coef,' // trim(b%name) // ',' // i2s(k - 1) // ',' // &
+                join(coef(:, k)) // new_line('a')
+        end do
+    end subroutine fit_and_record
+
+    !> The tsuji and kuwabara-kono laws: their summary lines, params and rows (written
+    !> with the linear ones).  Inverse ranges e in [1e-4, 1], forward ranges down to
+    !> e = 1e-5 (both ends).
+    subroutine law_fits()
+        real(wp), parameter :: e_min_law = 1.0e-4_wp, e_fwd_law = 1.0e-5_wp
+        real(wp) :: lmin, lfwd, a_t_fo, a_k_ov, a_k_fo, a_t_ov
+        lmin = -log(e_min_law)
+        lfwd = -log(e_fwd_law)
+        call make_table(HD_DAMPING_TSUJI, HD_END_FORCE)
+        call make_table(HD_DAMPING_KUWABARA_KONO, HD_END_OVERLAP)
+        call make_table(HD_DAMPING_KUWABARA_KONO, HD_END_FORCE)
+        a_t_ov = hertzdamp_tsuji_alpha(e_fwd_law)
+        a_t_fo = alpha_of_l(HD_DAMPING_TSUJI, HD_END_FORCE, lfwd)
+        a_k_ov = alpha_of_l(HD_DAMPING_KUWABARA_KONO, HD_END_OVERLAP, lfwd)
+        a_k_fo = alpha_of_l(HD_DAMPING_KUWABARA_KONO, HD_END_FORCE, lfwd)
+        if (allocated(blocks)) deallocate (blocks)
+        allocate (blocks(15))
+        blocks(:) = [ &
+            block_spec('ts_ov_inv_t', HD_END_OVERLAP, VAR_L, Q_TAU_C, 0.0_wp, lfwd, 16, 11, HD_DAMPING_TSUJI), &
+            ! alpha(e) of the force end is analytic in L (its e(alpha) is): in L^(1/5) it would
+            ! be exp(x^5/2)-steep at large L (6.5e-12 measured), so it keeps its own grid
+            block_spec('ts_fo_inv_a', HD_END_FORCE, VAR_L, Q_ALPHA_OVER_L, 0.0_wp, lfwd, 16, 11, HD_DAMPING_TSUJI), &
+            block_spec('ts_fo_inv_t', HD_END_FORCE, VAR_ROOT_L, Q_TAU_C, 0.0_wp, lfwd**0.2_wp, 16, 11, &
+                       HD_DAMPING_TSUJI, 5), &
+            block_spec('ts_fwd_z', HD_END_FORCE, VAR_ROOT_ALPHA, Q_Z_MAX, 0.0_wp, a_t_fo**0.2_wp, 16, 11, &
+                       HD_DAMPING_TSUJI, 5), &
+            block_spec('ts_fwd_m', HD_END_FORCE, VAR_ROOT_ALPHA, Q_TAU_MAX, 0.0_wp, a_t_fo**0.2_wp, 16, 11, &
+                       HD_DAMPING_TSUJI, 5), &
+            block_spec('kk_ov_inv_a', HD_END_OVERLAP, VAR_L, Q_ALPHA_OVER_L, 0.0_wp, lmin, 16, 11, &
+                       HD_DAMPING_KUWABARA_KONO), &
+            block_spec('kk_ov_inv_t', HD_END_OVERLAP, VAR_L, Q_TAU_C, 0.0_wp, lmin, 16, 11, HD_DAMPING_KUWABARA_KONO), &
+            block_spec('kk_fo_inv_a', HD_END_FORCE, VAR_ROOT_L, Q_ALPHA_OVER_L, 0.0_wp, sqrt(lmin), 16, 11, &
+                       HD_DAMPING_KUWABARA_KONO, 2), &
+            block_spec('kk_fo_inv_t', HD_END_FORCE, VAR_ROOT_L, Q_TAU_C, 0.0_wp, sqrt(lmin), 16, 11, &
+                       HD_DAMPING_KUWABARA_KONO, 2), &
+            block_spec('kk_ov_fwd_la', HD_END_OVERLAP, VAR_ALPHA, Q_L_OVER_ALPHA, 0.0_wp, a_k_ov, 32, 11, &
+                       HD_DAMPING_KUWABARA_KONO), &
+            block_spec('kk_ov_fwd_ta', HD_END_OVERLAP, VAR_ALPHA, Q_TAU_C, 0.0_wp, a_k_ov, 32, 11, &
+                       HD_DAMPING_KUWABARA_KONO), &
+            block_spec('kk_fo_fwd_la', HD_END_FORCE, VAR_LOG_ROOT_ALPHA, Q_L_OVER_ALPHA, 0.0_wp, &
+                       log(1.0_wp + sqrt(a_k_fo)), 16, 11, HD_DAMPING_KUWABARA_KONO, 2), &
+            block_spec('kk_fo_fwd_ta', HD_END_FORCE, VAR_LOG_ROOT_ALPHA, Q_TAU_C, 0.0_wp, log(1.0_wp + sqrt(a_k_fo)), &
+                       16, 11, HD_DAMPING_KUWABARA_KONO, 2), &
+            block_spec('kk_fwd_z', HD_END_FORCE, VAR_LOG_ROOT_ALPHA, Q_Z_MAX, 0.0_wp, log(1.0_wp + sqrt(a_k_fo)), &
+                       16, 11, HD_DAMPING_KUWABARA_KONO, 2), &
+            block_spec('kk_fwd_m', HD_END_FORCE, VAR_LOG_ROOT_ALPHA, Q_TAU_MAX, 0.0_wp, log(1.0_wp + sqrt(a_k_fo)), &
+                       16, 11, HD_DAMPING_KUWABARA_KONO, 2) ]
+        body = ''
+        summary = ''
+        do ib = 1, size(blocks)
+            call fit_and_record(blocks(ib))
+        end do
+        law_summary = '# Damping laws tsuji and kuwabara-kono (doc/damping-laws.md): inverse e in [' // g(e_min_law) // &
+            ', 1],' // new_line('a') // '# forward down to e = ' // g(e_fwd_law) // &
+            ' (both ends); tsuji e(alpha) of both ends and alpha(e) of the overlap end are exact (no block).' // &
+            new_line('a') // summary
+        law_body = body
+        law_params = 'param,law_e_min,' // r2s(e_min_law) // new_line('a') // &
+            'param,law_e_min_forward,' // r2s(e_fwd_law) // new_line('a') // &
+            'param,ts_alpha_max_overlap,' // r2s(a_t_ov) // new_line('a') // &
+            'param,ts_alpha_max_force,' // r2s(a_t_fo) // new_line('a') // &
+            'param,kk_alpha_max_overlap,' // r2s(a_k_ov) // new_line('a') // &
+            'param,kk_alpha_max_force,' // r2s(a_k_fo) // new_line('a')
+    end subroutine law_fits
 
     subroutine die(msg)
         character(len=*), intent(in) :: msg
@@ -194,17 +302,17 @@ contains
     end subroutine die
 
     !> Reference e, tau_c, L = -ln e at alpha.
-    subroutine ref(alpha, iend, e, tc, l, zm, tm)
+    subroutine ref(alpha, law, iend, e, tc, l, zm, tm)
         real(wp), intent(in) :: alpha
-        integer, intent(in) :: iend
+        integer, intent(in) :: law, iend
         real(wp), intent(out) :: e, tc, l
         real(wp), intent(out), optional :: zm, tm
         type(hertzdamp_collision) :: r
-        r = hertzdamp_rk45_collide(alpha, iend, ref_tol)
+        r = hertzdamp_rk45_collide(alpha, iend, ref_tol, law)
         if (present(zm)) zm = r%z_max
         if (present(tm)) tm = r%tau_max
         if (r%status /= HD_OK .and. .not. (r%status == HD_NO_REBOUND .and. present(zm))) then
-          call die('reference failed at alpha = ' // g(alpha))
+          call die('reference failed at alpha = ' // g(alpha) // ' law ' // hertzdamp_law_name(law))
         end if
         e = r%e
         tc = r%tau_c
@@ -213,27 +321,38 @@ contains
     end subroutine ref
 
     !> Dense table alpha -> L used only to place the sample points of the inverse fits.
-    subroutine make_table(iend)
-        integer, intent(in) :: iend
+    subroutine make_table(law, iend)
+        integer, intent(in) :: law, iend
         integer :: i
-        real(wp) :: s, e, wtop
+        real(wp) :: s, e, wtop, a
         do i = 1, ntab
             s = real(i - 1, wp) / real(ntab - 1, wp)
-            if (iend == HD_END_OVERLAP) then
+            if (law == HD_DAMPING_LINEAR .and. iend == HD_END_OVERLAP) then
                 ! uniform in w = -ln(1 - alpha/alpha_c) up to e ~ 1e-5
                 wtop = 12.0_wp
-                tab_a(i, iend) = alpha_c * (1.0_wp - exp(-wtop * s))
-            else
+                a = alpha_c * (1.0_wp - exp(-wtop * s))
+            else if (law == HD_DAMPING_LINEAR) then
                 ! uniform in alpha^(1/3) up to alpha = 300 (e ~ 1e-6)
-                tab_a(i, iend) = (s * 300.0_wp**(1.0_wp / 3))**3
+                a = (s * 300.0_wp**(1.0_wp / 3))**3
+            else if (law == HD_DAMPING_TSUJI) then
+                ! force end, uniform in alpha^(1/5) up to alpha = 2000 (e ~ 3e-7)
+                a = (s * 2000.0_wp**0.2_wp)**5
+            else if (iend == HD_END_OVERLAP) then
+                ! kuwabara-kono overlap, uniform in alpha up to 20 (e ~ 2e-6)
+                a = 20.0_wp * s
+            else
+                ! kuwabara-kono force, uniform in alpha^(1/2) up to alpha = 3000 (e ~ 2e-6)
+                a = (s * sqrt(3000.0_wp))**2
             end if
-            call ref(tab_a(i, iend), iend, e, tab_t(i, iend), tab_l(i, iend))
+            tab_a(i, iend, law) = a
+            call ref(a, law, iend, e, tab_t(i, iend, law), tab_l(i, iend, law))
         end do
     end subroutine make_table
 
-    !> alpha with L(alpha) ~ l, by linear interpolation in the table (approximate).
-    real(wp) function alpha_of_l(iend, l) result(a)
-        integer, intent(in) :: iend
+    !> alpha with L(alpha) ~ l, by linear interpolation in the table (approximate);
+    !> exact for the tsuji overlap end (closed form).
+    real(wp) function alpha_of_l(law, iend, l) result(a)
+        integer, intent(in) :: law, iend
         real(wp), intent(in) :: l
         integer :: lo, hi, mid
         lo = 1
@@ -242,17 +361,21 @@ contains
             a = 0.0_wp
             return
         end if
-        if (l >= tab_l(ntab, iend)) call die('L beyond the table')
+        if (law == HD_DAMPING_TSUJI .and. iend == HD_END_OVERLAP) then
+            a = hertzdamp_tsuji_alpha(exp(-l))
+            return
+        end if
+        if (l >= tab_l(ntab, iend, law)) call die('L beyond the table')
         do while (hi - lo > 1)
             mid = (lo + hi) / 2
-            if (tab_l(mid, iend) <= l) then
+            if (tab_l(mid, iend, law) <= l) then
                 lo = mid
             else
                 hi = mid
             end if
         end do
-        a = tab_a(lo, iend) + (tab_a(hi, iend) - tab_a(lo, iend)) * (l - tab_l(lo, iend)) / &
-            (tab_l(hi, iend) - tab_l(lo, iend))
+        a = tab_a(lo, iend, law) + (tab_a(hi, iend, law) - tab_a(lo, iend, law)) * (l - tab_l(lo, iend, law)) / &
+            (tab_l(hi, iend, law) - tab_l(lo, iend, law))
     end function alpha_of_l
 
     !> One exact sample of block b near the variable value x: returns the exact
@@ -263,31 +386,40 @@ contains
         real(wp), intent(out) :: xs, y, w
         real(wp), intent(out) :: nu   !! relative noise of the reference in the final result
         real(wp) :: a, l, e, tc, zm, tm
+        integer :: st
         select case (b%var)
         case (VAR_L)
-            a = alpha_of_l(b%iend, x)
-        case (VAR_CBRT_L)
-            a = alpha_of_l(b%iend, x**3)
+            a = alpha_of_l(b%law, b%iend, x)
+        case (VAR_ROOT_L)
+            a = alpha_of_l(b%law, b%iend, x**b%nroot)
         case (VAR_ALPHA)
             a = x
         case (VAR_W)
             a = alpha_c * (1.0_wp - exp(-x))
-        case (VAR_CBRT_ALPHA)
-            a = x**3
+        case (VAR_ROOT_ALPHA)
+            a = x**b%nroot
+        case (VAR_LOG_ROOT_ALPHA)
+            a = (exp(x) - 1.0_wp)**b%nroot
         case default
             a = exp(x)
         end select
         if (b%q == Q_Z_MAX .or. b%q == Q_TAU_MAX) then
-            call ref(a, b%iend, e, tc, l, zm, tm)
+            call ref(a, b%law, b%iend, e, tc, l, zm, tm)
         else
-            call ref(a, b%iend, e, tc, l)
+            call ref(a, b%law, b%iend, e, tc, l)
+        end if
+        if (b%law == HD_DAMPING_TSUJI .and. a > 0.0_wp) then
+            ! the exact L (closed form) is the variable the library evaluates with
+            call hertzdamp_tsuji_e(a, b%iend, e, st)
+            l = -log(e)
         end if
         select case (b%var)
         case (VAR_L); xs = l
-        case (VAR_CBRT_L); xs = l**(1.0_wp / 3)
+        case (VAR_ROOT_L); xs = l**(1.0_wp / b%nroot)
         case (VAR_ALPHA); xs = a
         case (VAR_W); xs = -log(1.0_wp - a / alpha_c)
-        case (VAR_CBRT_ALPHA); xs = a**(1.0_wp / 3)
+        case (VAR_ROOT_ALPHA); xs = a**(1.0_wp / b%nroot)
+        case (VAR_LOG_ROOT_ALPHA); xs = log(1.0_wp + a**(1.0_wp / b%nroot))
         case default; xs = log(a)
         end select
         nu = 0.0_wp
@@ -299,7 +431,7 @@ contains
         case (Q_TAU_C)
             y = tc
             w = 1.0_wp / y
-            if (b%var == VAR_CBRT_L) nu = sigma_l / l * abs(tc - tc0) / tc
+            if (b%var == VAR_ROOT_L) nu = sigma_l / l * abs(tc - tc0) / tc
         case (Q_Z_MAX)
             y = zm
             w = 1.0_wp / y
@@ -349,7 +481,7 @@ contains
             end do
             if (ip == 1 .and. b%x0 == 0.0_wp) then
                 ! the exact limit at x = 0 (alpha = 0, e = 1) as a heavily weighted row
-                y = limit_at_zero(b%q)
+                y = limit_at_zero(b%q, b%law)
                 w = 10.0_wp / y
                 if (b%q == Q_L_OVER_ALPHA) w = 0.0_wp
                 call cheb_row(-1.0_wp, b%deg, a(m + 1, :))
@@ -377,7 +509,7 @@ contains
                 perr = max(perr, abs(yf - y) * w)
             end do
             if (ip == 1 .and. b%x0 == 0.0_wp .and. b%q /= Q_L_OVER_ALPHA) then
-                y = limit_at_zero(b%q)
+                y = limit_at_zero(b%q, b%law)
                 perr = max(perr, abs(horner(mono, -1.0_wp) - y) / y)
             end if
             write (error_unit, '(a,i3,es10.2)') '   piece', ip, perr
@@ -430,11 +562,11 @@ contains
         real(wp), allocatable :: a(:), l(:), y(:), sc(:), wt(:), r(:), jac(:, :), rhs(:, :), rn(:)
         real(wp) :: work(4096), lam, f0, f1, ct(4), hstep, best(4), bestmax, rm
         iend = merge(HD_END_OVERLAP, HD_END_FORCE, im <= 4)
-        n = count(tab_l(:, iend) <= -log(e_compact) .and. tab_a(:, iend) >= 1.0e-3_wp)
+        n = count(tab_l(:, iend, 0) <= -log(e_compact) .and. tab_a(:, iend, 0) >= 1.0e-3_wp)
         allocate (a(n), l(n), y(n), sc(n), wt(n), r(n), rn(n), jac(n + 4, 4), rhs(n + 4, 1))
-        a = pack(tab_a(:, iend), tab_l(:, iend) <= -log(e_compact) .and. tab_a(:, iend) >= 1.0e-3_wp)
-        l = pack(tab_l(:, iend), tab_l(:, iend) <= -log(e_compact) .and. tab_a(:, iend) >= 1.0e-3_wp)
-        y = pack(tab_t(:, iend), tab_l(:, iend) <= -log(e_compact) .and. tab_a(:, iend) >= 1.0e-3_wp)
+        a = pack(tab_a(:, iend, 0), tab_l(:, iend, 0) <= -log(e_compact) .and. tab_a(:, iend, 0) >= 1.0e-3_wp)
+        l = pack(tab_l(:, iend, 0), tab_l(:, iend, 0) <= -log(e_compact) .and. tab_a(:, iend, 0) >= 1.0e-3_wp)
+        y = pack(tab_t(:, iend, 0), tab_l(:, iend, 0) <= -log(e_compact) .and. tab_a(:, iend, 0) >= 1.0e-3_wp)
         select case (im)
         case (1, 5)
             y = a / l
@@ -523,14 +655,14 @@ contains
     end function horner
 
     !> Exact value of a quantity at alpha = 0.
-    real(wp) function limit_at_zero(q) result(y)
-        integer, intent(in) :: q
+    real(wp) function limit_at_zero(q, law) result(y)
+        integer, intent(in) :: q, law
         select case (q)
-        case (Q_ALPHA_OVER_L); y = 1.0_wp / e1
+        case (Q_ALPHA_OVER_L); y = 1.0_wp / hertzdamp_e1(law)
         case (Q_TAU_C); y = tc0
         case (Q_Z_MAX); y = 1.25_wp**0.4_wp
         case (Q_TAU_MAX); y = 0.5_wp * tc0
-        case (Q_L_OVER_ALPHA); y = e1
+        case (Q_L_OVER_ALPHA); y = hertzdamp_e1(law)
         case default; y = 0.0_wp
         end select
     end function limit_at_zero

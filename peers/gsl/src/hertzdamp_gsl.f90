@@ -2,12 +2,13 @@
 !> explicit Runge-Kutta steppers (rkf45 and rk8pd), called through hand-written
 !> `bind(C)` interfaces.
 !>
-!> It solves the similarity form (THEORY.md section 2)
+!> It solves the similarity form (doc/theory.md section 2; doc/damping-laws.md)
 !>
-!>     z'' + alpha z' + z^{3/2} = 0,   z(0) = 0,  z'(0) = 1,
+!>     z'' + alpha z^q z' + z^{3/2} = 0,   z(0) = 0,  z'(0) = 1,
 !>
-!> starting at a small tau0 > 0 from the local series in s = sqrt(tau) (the right-hand
-!> side is not smooth at z = 0), stepping with `gsl_odeiv2_evolve_apply`, and locating
+!> for the damping laws q = 0 (linear), 1/4 (tsuji), 1/2 (kuwabara-kono), starting at a
+!> small tau0 > 0 from the local series in r = tau^{1/N} (N = 2, or 4 for q = 1/4; the
+!> right-hand side is not smooth at z = 0), stepping with `gsl_odeiv2_evolve_apply`, and locating
 !> every event inside an accepted step by Illinois regula falsi, where each trial value
 !> re-integrates from the step start with the same stepper and tolerance (GSL has no
 !> dense output for these steppers).
@@ -18,8 +19,9 @@
 !> through the `params` pointer of the GSL system.  (It switches GSL's global error
 !> handler off on every call, which is idempotent.)
 !>
-!> Limits (measured): within about 1e-9 of alpha_c = 1.1279881355 (overlap) the march
-!> hits the step limit (status 2) instead of deciding.  For the force definition at
+!> Limits (measured): within about 1e-9 of alpha_c = 1.1279881355 (overlap, linear) the
+!> march hits the step limit (status 2) instead of deciding; the same happens for tsuji
+!> close to sqrt(5), and for kuwabara-kono (overlap) at large alpha (a stiff slow phase).  For the force definition at
 !> large alpha, tau_c is ill-conditioned (the force z'' crosses zero with slope
 !> 1.5 z^{1/2} z' ~ e ~ alpha^{-5/2}): e, z_max, tau_max stay accurate, but tau_c
 !> converges only slowly with tol for alpha >~ 200.
@@ -30,7 +32,7 @@ module hertzdamp_gsl
         ieee_is_nan
     use hertzdamp_kinds, only: hertzdamp_rk
     use hertzdamp_status, only: HD_OK, HD_NO_REBOUND, HD_MAX_STEPS, HD_BAD_ARGUMENT, HD_NO_CONVERGENCE, &
-                                HD_END_OVERLAP, HD_END_FORCE
+                                HD_END_OVERLAP, HD_END_FORCE, HD_BAD_LAW
     implicit none
     private
 
@@ -56,8 +58,8 @@ module hertzdamp_gsl
     integer, parameter :: max_sub_steps = 10000
     !> Largest number of root-finder iterations for one event.
     integer, parameter :: max_root_iter = 200
-    !> Number of terms of the start series in s = sqrt(tau).
-    integer, parameter :: n_series = 60
+    !> Number of terms of the start series in r = tau^{1/N}.
+    integer, parameter :: n_series = 120
 
     !> Event kinds (each normalised so that g > 0 before and g <= 0 after the event).
     integer, parameter :: ev_turn = 1, ev_overlap = 2, ev_force = 3
@@ -76,6 +78,7 @@ module hertzdamp_gsl
     !> What the right-hand side receives through `params`.
     type, bind(C) :: rhs_params
         real(c_double) :: alpha = 0.0_c_double    !! damping parameter
+        real(c_double) :: q = 0.0_c_double        !! exponent of the damping law
         integer(c_long) :: nevals = 0_c_long      !! right-hand-side evaluations so far
     end type rhs_params
 
@@ -87,6 +90,7 @@ module hertzdamp_gsl
         type(c_ptr) :: control = c_null_ptr
         type(c_ptr) :: evolve = c_null_ptr
         real(wp) :: alpha = 0.0_wp
+        real(wp) :: q = 0.0_wp
     end type solver_ctx
 
     ! Step types: global `const gsl_odeiv2_step_type *` variables of libgsl.  They must
@@ -202,7 +206,7 @@ contains
     !> tau_c = 0, and z_max, tau_max are set only if the turning point was reached (else 0).
     !> No output is ever NaN.  Never prints, never stops.
     subroutine hertzdamp_gsl_collide(alpha, iend, tol, method, e, tau_c, z_max, tau_max, &
-            status, rhs_evals, steps, atol)
+            status, rhs_evals, steps, atol, law)
         real(wp), intent(in) :: alpha      !! damping parameter (any sign for overlap, >= 0 for force)
         integer, intent(in) :: iend        !! contact end: 0 = overlap, 1 = force
         real(wp), intent(in) :: tol        !! absolute and relative local tolerance, in (0, 1)
@@ -215,6 +219,7 @@ contains
         integer, intent(out) :: rhs_evals  !! right-hand-side evaluations, root finding included
         integer, intent(out) :: steps      !! accepted steps of the main march (root finding excluded)
         real(wp), intent(in), optional :: atol !! absolute tolerance if not tol (tiny: relative control)
+        integer, intent(in), optional :: law   !! damping law: 0 linear (default), 1 tsuji, 2 kuwabara-kono
 
         type(solver_ctx), target :: ctx
         real(wp) :: atol_
@@ -222,8 +227,8 @@ contains
         type(c_ptr) :: steptype
         real(c_double) :: t, h, y(2), ta, ya(2), tr, yr(2)
         real(c_double), parameter :: t_far = 1.0e30_c_double
-        real(wp) :: tau0
-        integer :: phase, kind_end
+        real(wp) :: tau0, q
+        integer :: phase, kind_end, law_
         integer(c_int) :: rc
         logical :: ok
 
@@ -241,6 +246,13 @@ contains
         if (iend == HD_END_FORCE .and. alpha < 0.0_wp) return
         if (method /= HERTZDAMP_GSL_RKF45 .and. method /= HERTZDAMP_GSL_RK8PD) return
         if (abs(alpha) > 1.0e8_wp) return
+        law_ = 0
+        if (present(law)) law_ = law
+        if (law_ < 0 .or. law_ > 2) then
+            status = HD_BAD_LAW
+            return
+        end if
+        q = 0.25_wp * law_
 
         old_handler = gsl_set_error_handler_off()
         if (method == HERTZDAMP_GSL_RKF45) then
@@ -252,7 +264,9 @@ contains
         status = HD_NO_CONVERGENCE
         if (.not. c_associated(steptype)) return
         ctx%alpha = alpha
+        ctx%q = q
         ctx%par%alpha = real(alpha, c_double)
+        ctx%par%q = real(q, c_double)
         ctx%par%nevals = 0_c_long
         ctx%sys%function = c_funloc(hertz_rhs)
         ctx%sys%jacobian = c_null_funptr
@@ -275,9 +289,9 @@ contains
             kind_end = ev_force
         end if
 
-        ! Start from the local series at tau0.
-        tau0 = 0.05_wp / max(1.0_wp, abs(alpha))
-        call series_start(alpha, tau0, y(1), y(2))
+        ! Start from the local series at tau0 (alpha tau0^{1+q} <= 0.05).
+        tau0 = 0.05_wp / max(1.0_wp, abs(alpha))**(1.0_wp / (1.0_wp + q))
+        call series_start(alpha, law_, tau0, y(1), y(2))
         t = tau0
         h = 0.1_wp * tau0
         phase = 1
@@ -298,7 +312,7 @@ contains
             steps = steps + 1
 
             if (phase == 1) then
-                if (event_g(ev_turn, alpha, y) <= 0.0_wp) then
+                if (event_g(ev_turn, alpha, q, y) <= 0.0_wp) then
                     call locate(ctx, ev_turn, ta, ya, t, y, tr, yr, ok)
                     if (.not. ok) then
                         status = HD_NO_CONVERGENCE
@@ -311,7 +325,7 @@ contains
                     y = yr
                     rc = gsl_odeiv2_evolve_reset(ctx%evolve)
                     phase = 2
-                    if (no_rebound(iend, alpha, y)) then
+                    if (no_rebound(iend, alpha, q, y)) then
                         status = HD_NO_REBOUND
                         exit march
                     end if
@@ -319,7 +333,7 @@ contains
                 cycle march
             end if
 
-            if (event_g(kind_end, alpha, y) <= 0.0_wp) then
+            if (event_g(kind_end, alpha, q, y) <= 0.0_wp) then
                 call locate(ctx, kind_end, ta, ya, t, y, tr, yr, ok)
                 if (.not. ok) then
                     status = HD_NO_CONVERGENCE
@@ -330,7 +344,7 @@ contains
                 status = HD_OK
                 exit march
             end if
-            if (no_rebound(iend, alpha, y)) then
+            if (no_rebound(iend, alpha, q, y)) then
                 status = HD_NO_REBOUND
                 exit march
             end if
@@ -353,7 +367,7 @@ contains
 
     ! ---------------------------------------------------------------- internals
 
-    !> Right-hand side y = (z, z'): (z', -alpha z' - sign(z)|z|^{3/2}) (odd extension,
+    !> Right-hand side y = (z, z'): (z', -alpha |z|^q z' - sign(z)|z|^{3/2}) (odd extension,
     !> so that a step may cross z = 0).  Counts its calls in params%nevals.
     function hertz_rhs(t, y, dydt, params) bind(C) result(rc)
         real(c_double), value :: t
@@ -366,95 +380,133 @@ contains
         p%nevals = p%nevals + 1_c_long
         dydt(1) = y(2)
         dydt(2) = -p%alpha * y(2) - sign(abs(y(1)) * sqrt(abs(y(1))), y(1))
+        if (p%q > 0.0_c_double) dydt(2) = -p%alpha * abs(y(1))**p%q * y(2) - sign(abs(y(1))**1.5_c_double, y(1))
         rc = gsl_success
         if (ieee_is_nan(t) .or. .not. all(ieee_is_finite(dydt))) rc = gsl_ebadfunc
     end function hertz_rhs
 
+    !> |z|^q (1 for q = 0).
+    pure real(wp) function zpow(z, q)
+        real(wp), intent(in) :: z, q
+        zpow = 1.0_wp
+        if (q > 0.0_wp) zpow = abs(z)**q
+    end function zpow
+
     !> Event function, normalised to g > 0 before and g <= 0 after the event.
-    pure real(wp) function event_g(kind, alpha, y) result(g)
+    pure real(wp) function event_g(kind, alpha, q, y) result(g)
         integer, intent(in) :: kind
-        real(wp), intent(in) :: alpha, y(2)
+        real(wp), intent(in) :: alpha, q, y(2)
         select case (kind)
         case (ev_turn)
             g = y(2)                                   ! z'
         case (ev_overlap)
             g = y(1)                                   ! z
         case default
-            ! z^{3/2} - alpha |z'| (z' < 0 after the turning point), odd in z
-            g = sign(abs(y(1)) * sqrt(abs(y(1))), y(1)) + alpha * y(2)
+            ! z^{3/2} - alpha z^q |z'| (z' < 0 after the turning point), odd in z
+            g = sign(abs(y(1)) * sqrt(abs(y(1))), y(1)) + alpha * zpow(y(1), q) * y(2)
         end select
     end function event_g
 
     !> Time derivative of `event_g` along the solution, exact from the state.
-    pure real(wp) function event_dg(kind, alpha, y) result(dg)
+    pure real(wp) function event_dg(kind, alpha, q, y) result(dg)
         integer, intent(in) :: kind
-        real(wp), intent(in) :: alpha, y(2)
+        real(wp), intent(in) :: alpha, q, y(2)
         real(wp) :: zpp
-        zpp = -alpha * y(2) - sign(abs(y(1)) * sqrt(abs(y(1))), y(1))
+        zpp = -alpha * zpow(y(1), q) * y(2) - sign(abs(y(1)) * sqrt(abs(y(1))), y(1))
         select case (kind)
         case (ev_turn)
             dg = zpp
         case (ev_overlap)
             dg = y(2)
         case default
-            dg = 1.5_wp * sqrt(abs(y(1))) * y(2) + alpha * zpp
+            dg = 1.5_wp * sqrt(abs(y(1))) * y(2) + alpha * zpow(y(1), q) * zpp
+            if (q > 0.0_wp .and. y(1) > 0.0_wp) dg = dg + alpha * q * y(1)**(q - 1.0_wp) * y(2)**2
         end select
     end function event_dg
 
-    !> Certificate of no rebound (overlap definition, alpha > 0): the set
-    !> 0 < z <= alpha^4/36, -(2/alpha) z^{3/2} <= z' <= 0 is forward invariant and
-    !> z stays positive in it (z^{-1/2} grows at most like tau/alpha).
-    pure logical function no_rebound(iend, alpha, y)
+    !> Certificate of no rebound (overlap definition, alpha > 0): a forward-invariant set
+    !> in which z stays positive for all time.  q = 0: 0 < z <= alpha^4/36,
+    !> -(2/alpha) z^{3/2} <= z' <= 0 (z^{-1/2} grows at most like tau/alpha).  q = 1/4,
+    !> alpha >= sqrt(5): z > 0, -lambda z^{5/4}/alpha <= z' <= 0 with lambda = 2 alpha^2/5
+    !> (on the lower edge d(z' + lambda z^{5/4}/alpha)/dtau = z^{3/2} (lambda/2 - 1) >= 0).
+    !> q = 1/2: none (the overlap always returns).
+    pure logical function no_rebound(iend, alpha, q, y)
         integer, intent(in) :: iend
-        real(wp), intent(in) :: alpha, y(2)
+        real(wp), intent(in) :: alpha, q, y(2)
         no_rebound = .false.
         if (iend /= HD_END_OVERLAP .or. alpha <= 0.0_wp) return
-        if (.not. (y(1) > 0.0_wp .and. y(1) <= alpha**4 / 36.0_wp)) return
-        no_rebound = y(2) <= 0.0_wp .and. &
-            y(2) >= -(2.0_wp / alpha) * y(1) * sqrt(y(1))
+        if (q == 0.0_wp) then
+            if (.not. (y(1) > 0.0_wp .and. y(1) <= alpha**4 / 36.0_wp)) return
+            no_rebound = y(2) <= 0.0_wp .and. &
+                y(2) >= -(2.0_wp / alpha) * y(1) * sqrt(y(1))
+        else if (q == 0.25_wp) then
+            if (.not. (alpha**2 >= 5.0_wp .and. y(1) > 0.0_wp)) return
+            no_rebound = y(2) <= 0.0_wp .and. y(2) >= -(2.0_wp * alpha / 5.0_wp) * y(1)**1.25_wp
+        end if
     end function no_rebound
 
-    !> z(tau0), z'(tau0) from the local series in s = sqrt(tau):
-    !> z = tau sum_k p_k s^k, p_0 = 1, p_1 = 0,
-    !> p_{m+2} = -[alpha p_m (1+m/2) + q_{m-3}] / [((m+4)/2)((m+2)/2)],
-    !> q = (sum p_k s^k)^{3/2} by the power recurrence
-    !> k p_0 q_k = sum_{j=1..k} (1.5 j - (k-j)) p_j q_{k-j}.
-    !> Scaled coefficients a_k = p_k s0^k, b_k = q_k s0^k (the power recurrence is
-    !> invariant under this scaling) avoid overflow for large alpha.
-    pure subroutine series_start(alpha, tau0, z, zp)
+    !> z(tau0), z'(tau0) from the local series in r = tau^{1/N}:
+    !> z = tau sum_k p_k r^k, p_0 = 1, N = 2 (q = 0, 1/2) or 4 (q = 1/4), and
+    !> p_j (1 + j/N)(j/N) = -alpha S_{j - s1} - Y_{j - s2},  s1 = N(1+q), s2 = 5N/2,
+    !> with Y = P^{3/2}, S = P^q * D, D_k = (1 + k/N) p_k (z^q z' = tau^q S), P = sum p_k r^k;
+    !> the powers X = P^g by the recurrence k p_0 X_k = sum_{j=1..k} (g j - (k-j)) p_j X_{k-j}.
+    !> Scaled coefficients a_k = p_k r0^k (the power recurrence is invariant under this
+    !> scaling; r0^{s1} = tau0^{1+q}, r0^{s2} = tau0^{5/2}) avoid overflow for large alpha.
+    pure subroutine series_start(alpha, law, tau0, z, zp)
         real(wp), intent(in) :: alpha, tau0
+        integer, intent(in) :: law
         real(wp), intent(out) :: z, zp
-        real(wp) :: a(0:n_series), b(0:n_series), qm3, acc
-        integer :: m, k, j
+        real(wp) :: a(0:n_series), b(0:n_series), g(0:n_series), sd(0:n_series), q, fn, acc
+        integer :: j, k, n, s1, s2
+        select case (law)
+        case (1)
+            n = 4; s1 = 5; s2 = 10; q = 0.25_wp
+        case (2)
+            n = 2; s1 = 3; s2 = 5; q = 0.5_wp
+        case default
+            n = 2; s1 = 2; s2 = 5; q = 0.0_wp
+        end select
+        fn = real(n, wp)
         a = 0.0_wp
         b = 0.0_wp
+        g = 0.0_wp
+        sd = 0.0_wp
         a(0) = 1.0_wp
         b(0) = 1.0_wp
-        do m = 0, n_series - 2
-            qm3 = 0.0_wp
-            k = m - 3
-            if (k >= 1) then
-                acc = 0.0_wp
-                do j = 1, k
-                    acc = acc + (1.5_wp * j - (k - j)) * a(j) * b(k - j)
-                end do
-                b(k) = acc / (k * a(0))
-            end if
-            if (k >= 0) qm3 = b(k)
-            a(m + 2) = -(alpha * tau0 * a(m) * (1.0_wp + 0.5_wp * m) &
-                + tau0**2 * sqrt(tau0) * qm3) &
-                / (0.25_wp * real((m + 4) * (m + 2), wp))
-            ! stop once five consecutive terms are negligible (for alpha = 0 only every
-            ! fifth coefficient is nonzero); this also avoids underflow
-            if (m >= 3) then
-                if (maxval(abs(a(m - 2:m + 2))) < 1.0e-3_wp * epsilon(1.0_wp)) exit
+        g(0) = 1.0_wp
+        sd(0) = 1.0_wp
+        do j = 1, n_series
+            acc = 0.0_wp
+            if (j >= s1) acc = acc + alpha * tau0**(1.0_wp + q) * sd(j - s1)
+            if (j >= s2) acc = acc + tau0**2.5_wp * b(j - s2)
+            a(j) = -acc / ((1.0_wp + j / fn) * (j / fn))
+            ! the powers and the product at index j, from a(0..j)
+            acc = 0.0_wp
+            do k = 1, j
+                acc = acc + (1.5_wp * k - (j - k)) * a(k) * b(j - k)
+            end do
+            b(j) = acc / (j * a(0))
+            acc = 0.0_wp
+            do k = 1, j
+                acc = acc + (q * k - (j - k)) * a(k) * g(j - k)
+            end do
+            g(j) = acc / (j * a(0))
+            acc = 0.0_wp
+            do k = 0, j
+                acc = acc + g(j - k) * (1.0_wp + k / fn) * a(k)
+            end do
+            sd(j) = acc
+            ! stop once a full period of the recurrence (s2 indices) is negligible (for
+            ! alpha = 0 only every s2-th coefficient is nonzero); this also avoids underflow
+            if (j >= 2 * s2) then
+                if (maxval(abs(a(j - s2 + 1:j))) < 1.0e-3_wp * epsilon(1.0_wp)) exit
             end if
         end do
         z = 0.0_wp
         zp = 0.0_wp
         do k = n_series, 0, -1
             z = z + a(k)
-            zp = zp + 0.5_wp * (k + 2) * a(k)
+            zp = zp + (1.0_wp + k / fn) * a(k)
         end do
         z = tau0 * z
     end subroutine series_start
@@ -505,8 +557,8 @@ contains
         b = tb
         yla = ya
         ylb = yb
-        ga = event_g(kind, ctx%alpha, ya)     ! true values, for Newton
-        gb = event_g(kind, ctx%alpha, yb)
+        ga = event_g(kind, ctx%alpha, ctx%q, ya)     ! true values, for Newton
+        gb = event_g(kind, ctx%alpha, ctx%q, yb)
         fa = ga                               ! Illinois-scaled values, for the fallback
         fb = gb
         side = 0
@@ -525,7 +577,7 @@ contains
                 f0 = gb
                 y0 = ylb
             end if
-            d = event_dg(kind, ctx%alpha, y0)
+            d = event_dg(kind, ctx%alpha, ctx%q, y0)
             c = a - 1.0_wp
             if (abs(d) > 0.0_wp) c = t0 - f0 / d
             if (abs(c - t0) <= 2.0_wp * epsilon(1.0_wp) * abs(t0)) then
@@ -540,7 +592,7 @@ contains
             end if
             call integrate_to(ctx, ta, ya, c, yc, ok)
             if (.not. ok) return
-            fc = event_g(kind, ctx%alpha, yc)
+            fc = event_g(kind, ctx%alpha, ctx%q, yc)
             if (fc <= 0.0_wp) then
                 b = c
                 gb = fc

@@ -1,0 +1,153 @@
+!> The contact rule of the DEM engine (k and d of one contact from the inverse) and
+!> the choice of the rule for a scene (`--method auto`).
+module hertzdamp_dem_rules
+    use hertzdamp_kinds, only: hertzdamp_rk
+    use hertzdamp_status, only: HD_OK, HD_NO_REBOUND
+    use hertzdamp_scaling, only: hertzdamp_expand, hertzdamp_reduce
+    use hertzdamp_rk45, only: hertzdamp_collision, hertzdamp_rk45_collide
+    use hertzdamp_methods, only: HD_METHOD_SERIES, HD_METHOD_PADE, HD_METHOD_COMPACT, HD_METHOD_FIT, &
+                                 HD_METHOD_ITERATIVE, HD_METHOD_FIRST_ORDER
+    use hertzdamp_inverse, only: hertzdamp_invert, hertzdamp_invert_alpha
+    use hertzdamp_dem_types, only: hertzdamp_dem_scene, hertzdamp_dem_pairs_met, hertzdamp_dem_pair_e
+    implicit none
+    private
+
+    integer, parameter :: wp = hertzdamp_rk
+
+    !> Candidate rules of `--method auto`, cheapest first (the documented cost order);
+    !> the first-order rule alpha = (1 - e)/e1, tau_c = tau_c(0) is valid for nearly
+    !> elastic contacts only.
+    integer, parameter, public :: hertzdamp_dem_cost_order(6) = [HD_METHOD_FIRST_ORDER, HD_METHOD_COMPACT, &
+        HD_METHOD_SERIES, HD_METHOD_PADE, HD_METHOD_FIT, HD_METHOD_ITERATIVE]
+
+    public :: hertzdamp_dem_rule, hertzdamp_dem_select, hertzdamp_dem_targets
+
+contains
+
+    !> The contact rule: k and d for one contact from the target restitution e,
+    !> the contact time tc = N dt (used when want_duration), effective mass m,
+    !> impact velocity u and the physical stiffness kp (the bound).
+    pure elemental subroutine hertzdamp_dem_rule(e, tc, m, u, kp, iend, method, want_duration, tol, &
+                                                 k, d, tc_expected, bound, status)
+        real(wp), intent(in) :: e               !! target restitution
+        real(wp), intent(in) :: tc              !! wanted contact time [s]
+        real(wp), intent(in) :: m               !! effective mass [kg]
+        real(wp), intent(in) :: u               !! impact velocity [m s^-1]
+        real(wp), intent(in) :: kp              !! physical stiffness [N m^-3/2]
+        integer, intent(in) :: iend             !! contact-end definition
+        integer, intent(in) :: method           !! HD_METHOD_*
+        logical, intent(in) :: want_duration    !! impose tc (else k = kp)
+        real(wp), intent(in) :: tol             !! tolerance of the iterative rule
+        real(wp), intent(out) :: k              !! stiffness [N m^-3/2]
+        real(wp), intent(out) :: d              !! damping [kg s^-1]
+        real(wp), intent(out) :: tc_expected    !! contact time the parameters give [s]
+        logical, intent(out) :: bound           !! k = kp
+        integer, intent(out) :: status          !! HD_OK or the rule's failure
+        real(wp) :: alpha, tau, ts, kk, dd
+        k = 0.0_wp
+        d = 0.0_wp
+        tc_expected = 0.0_wp
+        bound = .false.
+        status = HD_OK
+        if (want_duration) then
+            ! (tol matters to the iterative rule only)
+            call hertzdamp_invert(e, tc, m, u, iend, k, d, status, alpha=alpha, tau_c=tau, &
+                                  bound_active=bound, k_phys=kp, method=method, tol=tol)
+            if (status /= HD_OK) return
+            tc_expected = tc
+        else
+            ! restitution only: the pair constants, then k = kp
+            call hertzdamp_invert_alpha(e, iend, alpha, tau, status, method=method, tol=tol)
+            if (status /= HD_OK) return
+            bound = .true.
+        end if
+        if (bound) then
+            ! physical stiffness: t* of kp (the reduction), then d = alpha m / t*
+            ! (= alpha m^(3/5) kp^(2/5) u^(1/5)) from the same expansion the inverse uses
+            call hertzdamp_reduce(kp, 0.0_wp, m, u, dd, ts, status)
+            if (status == HD_OK) call hertzdamp_expand(alpha, ts, m, u, kk, d, status)
+            k = kp
+            tc_expected = ts * tau
+            if (status /= HD_OK) then
+                k = 0.0_wp
+                d = 0.0_wp
+                tc_expected = 0.0_wp
+            end if
+        end if
+    end subroutine hertzdamp_dem_rule
+
+    !> The distinct target restitutions of the material pairs that can meet.
+    pure subroutine hertzdamp_dem_targets(sc, targets)
+        type(hertzdamp_dem_scene), intent(in) :: sc  !! the scene
+        real(wp), allocatable, intent(out) :: targets(:) !! distinct sqrt(e_a e_b)
+        logical, allocatable :: met(:, :)
+        real(wp) :: e
+        integer :: a, b
+        call hertzdamp_dem_pairs_met(sc, met)
+        allocate (targets(0))
+        do a = 1, size(sc%mat)
+            do b = a, size(sc%mat)
+                if (.not. met(a, b)) cycle
+                e = hertzdamp_dem_pair_e(sc%mat(a), sc%mat(b))
+                if (.not. any(abs(targets - e) <= 4.0_wp * epsilon(e))) targets = [targets, e]
+            end do
+        end do
+    end subroutine hertzdamp_dem_targets
+
+    !> `--method auto`: the cheapest rule (in hertzdamp_dem_cost_order) whose error
+    !> at the scene's targets meets the scene's accuracy in every check the report
+    !> makes.  For each candidate and each target e of the material pairs that meet,
+    !> the candidate gives alpha_c and its tau_c; one reference solve at alpha_c gives
+    !> the achieved e and tau_c:
+    !>     err = max(|e_ref(alpha_c) - e| / e, |tau_ref(alpha_c) - tau_c| / tau_ref)
+    !> The duration term counts in every scene: the report checks the achieved
+    !> contact time against the rule's expected time (N dt, or t*(k_phys) tau_c when
+    !> the physical stiffness applies, as in restitution-only scenes, where tau_c is
+    !> the rule's own).
+    !> avail(c) is false when the library does not provide candidate c (any non-OK
+    !> status of the inverse, typically HD_NOT_SUPPORTED).
+    pure subroutine hertzdamp_dem_select(sc, chosen, err, avail, status)
+        type(hertzdamp_dem_scene), intent(in) :: sc  !! the scene
+        integer, intent(out) :: chosen               !! a method code, or -1 if none meets the accuracy
+        real(wp), intent(out) :: err(6)              !! error of each candidate (cost order)
+        logical, intent(out) :: avail(6)             !! candidate provided by the library
+        integer, intent(out) :: status               !! HD_OK or a reference-solver failure
+        real(wp), allocatable :: targets(:)
+        real(wp) :: e, alpha, tau, ec, tc
+        integer :: c, it, st, meth
+        type(hertzdamp_collision) :: r
+        status = HD_OK
+        chosen = -1
+        err = huge(1.0_wp)
+        avail = .false.
+        call hertzdamp_dem_targets(sc, targets)
+        do c = 1, 6
+            meth = hertzdamp_dem_cost_order(c)
+            avail(c) = .true.
+            err(c) = 0.0_wp
+            do it = 1, size(targets)
+                e = targets(it)
+                call hertzdamp_invert_alpha(e, sc%iend, alpha, tau, st, method=meth)
+                if (st /= HD_OK) then
+                    avail(c) = .false.
+                    err(c) = huge(1.0_wp)
+                    exit
+                end if
+                r = hertzdamp_rk45_collide(alpha, sc%iend)
+                if (r%status /= HD_OK) then
+                    if (r%status /= HD_NO_REBOUND) then
+                        status = r%status
+                        return
+                    end if
+                    err(c) = max(err(c), 1.0_wp)   ! no rebound: e error 1
+                    cycle
+                end if
+                ec = r%e
+                tc = r%tau_c
+                err(c) = max(err(c), abs(ec - e) / e, abs(tc - tau) / tc)
+            end do
+            if (avail(c) .and. chosen < 0 .and. err(c) <= sc%accuracy) chosen = meth
+        end do
+    end subroutine hertzdamp_dem_select
+
+end module hertzdamp_dem_rules

@@ -1,0 +1,692 @@
+!> What a peer DEM engine's Hertz contact does with the parameters it is given.
+!>
+!> Six engines (LAMMPS, LIGGGHTS, MercuryDPM, Yade, MFiX, Chrono) build a damped Hertz
+!> contact  m zeta'' = -k zeta^(3/2) - d zeta^q zeta'  from their own input keywords
+!> (doc/peers.md; one row per engine, version, option and contact end in
+!> data/peers/peers_spec.csv, embedded as hertzdamp_peers_data).  This module holds,
+!> for each row, the engine's formula for its damping parameter (`peer_damping`, one
+!> COEF_* case per formula, each citing its source), its inverse (`peer_parameter`),
+!> and the evaluation of a resolved deck (`peer_deck`, filled by hertzdamp_peers_deck)
+!> at an impact speed: alpha, e, T_c, the time at which the total force turns
+!> attractive, the elastic Hertz time, the engine's own contact-time estimate, and the
+!> value of the engine's parameter that gives a target e (`peer_evaluate`).
+!>
+!> The law q and the contact end of a row are read from the specification, never
+!> restated here; the test test/test_peers.f90 checks every COEF_* formula against the
+!> row's `alpha_expr`, evaluated by an independent expression evaluator.
+!>
+!> The numbers come from the library: the reference integrator for e(alpha), tau_c(alpha)
+!> and the fitted inverse for alpha(e) (`peer_law_forward`, `peer_law_inverse`).
+module hertzdamp_peers
+    use hertzdamp, only: hertzdamp_rk, hertzdamp_collision, hertzdamp_rk45_collide, hertzdamp_invert_alpha, &
+                         hertzdamp_tau_c0, hertzdamp_law_q, hertzdamp_tsuji_alpha, hertzdamp_tsuji_e, &
+                         hertzdamp_fit_e_min_overlap, hertzdamp_fit_e_min_force, &
+                         HD_DAMPING_LINEAR, HD_DAMPING_TSUJI, HD_DAMPING_KUWABARA_KONO, &
+                         HD_OK, HD_NO_REBOUND, HD_BAD_ARGUMENT, &
+                         HD_BAD_RESTITUTION, HD_OUT_OF_RANGE, HD_OUTSIDE_VALIDITY, HD_END_OVERLAP, HD_END_FORCE
+    use hertzdamp_peers_data, only: peer_spec_field, peer_spec_row, peer_spec_count
+    use, intrinsic :: ieee_arithmetic, only: ieee_value, ieee_quiet_nan, ieee_is_finite
+    use, intrinsic :: iso_fortran_env, only: real32
+    implicit none
+    private
+
+    integer, parameter :: wp = hertzdamp_rk
+    real(wp), parameter :: pi = acos(-1.0_wp)
+
+    !> The engines, in the order of `peer_names`.
+    integer, parameter, public :: PEER_LAMMPS = 1, PEER_LIGGGHTS = 2, PEER_MERCURYDPM = 3, PEER_YADE = 4, &
+                                  PEER_MFIX = 5, PEER_CHRONO = 6
+    character(len=*), parameter, public :: peer_names = 'lammps liggghts mercurydpm yade mfix chrono'
+    !> Their names as the engines write them, in the same order.
+    character(len=*), parameter :: peer_titles = 'LAMMPS LIGGGHTS MercuryDPM Yade MFiX Chrono'
+
+    !> How the deck's damping parameter p gives the damping of the model.  For the
+    !> q = 1/4 kinds the result is gamma (d = gamma sqrt(m k), so alpha = gamma); for the
+    !> others it is d [kg s^-1, or the units that make d zeta^q zeta' a force].
+    integer, parameter, public :: COEF_D = 1               !! d = p
+    integer, parameter, public :: COEF_D_MASS = 2          !! d = p m
+    integer, parameter, public :: COEF_D_MASS_SQRT_R = 3   !! d = p m sqrt(R)
+    integer, parameter, public :: COEF_D_MASS_R = 4        !! d = p m R
+    integer, parameter, public :: COEF_D_BETA_MASSARG = 5  !! d = beta(p) sqrt(2 mass_arg E)
+    integer, parameter, public :: COEF_GAMMA = 6           !! gamma = p
+    integer, parameter, public :: COEF_GAMMA_P6 = 7        !! gamma = P6(p)
+    integer, parameter, public :: COEF_GAMMA_SQRT2_P6 = 8  !! gamma = sqrt(2) P6(p)
+    integer, parameter, public :: COEF_GAMMA_SQRT5_BETA = 9 !! gamma = sqrt(5) beta(p)
+    integer, parameter, public :: COEF_GAMMA_2BETA = 10    !! gamma = 2 beta(p)
+    integer, parameter, public :: COEF_GAMMA_SQRT6 = 11    !! gamma = sqrt(6) p
+    integer, parameter, public :: COEF_GAMMA_SQRT5_BETA_EPS = 12 !! gamma = sqrt(5) beta(max(p, eps_d))
+
+    !> The engines' own contact-time estimates (doc/peers.md).
+    integer, parameter, public :: TSTEP_NONE = 0
+    integer, parameter, public :: TSTEP_LIGGGHTS = 1  !! fix check/timestep/gran: 2.87 (m_p^2/(r/2 Y*^2 v))^(1/5)
+    integer, parameter, public :: TSTEP_MERCURY = 2   !! getCollisionTime: 2.214 (rho^2/(E^2 v))^(1/5) D
+    integer, parameter, public :: TSTEP_MFIX = 3      !! TCOLL = pi / sqrt(k/m - (eta/m)^2/4)
+
+    !> A line of text.
+    type, public :: peer_text
+        character(len=:), allocatable :: s
+    end type peer_text
+
+    !> A peer's contact resolved to the model: filled by hertzdamp_peers_deck.
+    type, public :: peer_deck
+        integer :: peer = 0                 !! PEER_*
+        integer :: row = 0                  !! row of the specification (hertzdamp_peers_data)
+        integer :: law = HD_DAMPING_LINEAR    !! PEER_LAW_*, from the row's q
+        integer :: iend = HD_END_OVERLAP    !! from the row's end
+        integer :: coef = 0                 !! COEF_*
+        real(wp) :: p = 0.0_wp              !! the deck's damping parameter, as the engine stores it
+        character(len=:), allocatable :: p_name  !! its name in the engine's terms
+        character(len=:), allocatable :: p_template !! the deck's damping input with {} for the value
+        real(wp) :: mass_arg = 0.0_wp       !! COEF_D_BETA_MASSARG: the mass argument
+        real(wp) :: modulus_arg = 0.0_wp    !! COEF_D_BETA_MASSARG: the modulus passed as a stiffness
+        real(wp) :: e_deck = -1.0_wp        !! restitution coefficient written in the deck (< 0: none)
+        real(wp) :: m = 0.0_wp              !! effective mass of the dynamics [kg]
+        real(wp) :: m_damp = 0.0_wp         !! effective mass the damping formula uses [kg] (Chrono wall)
+        real(wp) :: radius = 0.0_wp         !! effective radius the stiffness uses [m]
+        real(wp) :: k = 0.0_wp              !! Hertz stiffness, F = k zeta^(3/2) [N m^-3/2]
+        real(wp) :: e_star = 0.0_wp         !! effective modulus of the engine, when it uses one [Pa]
+        real(wp) :: mass1 = 0.0_wp          !! mass of body 1 [kg]
+        real(wp) :: radius1 = 0.0_wp        !! radius of body 1 [m]
+        real(wp) :: density1 = 0.0_wp       !! density of body 1 [kg m^-3]
+        logical :: wall = .false.           !! body 2 is a wall
+        integer :: tstep = TSTEP_NONE       !! the engine's contact-time estimate, TSTEP_*
+        real(wp) :: dt_factor = 0.0_wp      !! MFiX DTSOLID_FACTOR
+        character(len=:), allocatable :: version  !! release label (LAMMPS) or ''
+        character(len=:), allocatable :: deck_text !! the deck as understood, one line
+        character(len=:), allocatable :: k_text   !! how the engine builds k
+        type(peer_text), allocatable :: notes(:)  !! remarks on the deck (version, geometry, ...)
+    end type peer_deck
+
+    !> The deck at one impact speed.  Quantities that do not apply are NaN.
+    type, public :: peer_point
+        real(wp) :: u = 0.0_wp          !! impact speed [m s^-1]
+        real(wp) :: alpha = 0.0_wp      !! damping parameter of the model
+        real(wp) :: tstar = 0.0_wp      !! time unit t* [s]
+        real(wp) :: e = 0.0_wp          !! achieved restitution coefficient
+        real(wp) :: tc = 0.0_wp         !! contact time [s] (+inf: no rebound)
+        real(wp) :: t_force = 0.0_wp    !! overlap end: time at which the total force turns attractive [s]
+        real(wp) :: t_hertz = 0.0_wp    !! elastic Hertz contact time tau_c(0) t* [s]
+        real(wp) :: t_peer = 0.0_wp     !! the engine's own contact-time estimate [s]
+        real(wp) :: alpha_target = 0.0_wp !! alpha that gives the target e
+        real(wp) :: p_corrected = 0.0_wp !! the engine's parameter that gives the target e
+        integer :: status = HD_OK       !! HD_OK, HD_NO_REBOUND or an error of the forward map
+        integer :: status_corrected = HD_OK !! HD_OK, or why there is no corrected parameter
+    end type peer_point
+
+    public :: peer_law_forward, peer_law_inverse
+    public :: peer_beta, peer_beta_inverse, peer_p6, peer_p6_inverse
+    public :: peer_damping, peer_parameter, peer_alpha, peer_evaluate, peer_time_estimate
+    public :: peer_row_law, peer_row_end, peer_row_coef, peer_nan, peer_float, peer_fmt, peer_itoa, peer_name
+    public :: peer_spec_field, peer_spec_row, peer_spec_count
+
+contains
+
+    ! ------------------------------------------------------------------ laws
+
+    !> The law of a specification row, from its q column; -1 if the row is unknown.
+    pure integer function peer_row_law(row) result(law)
+        integer, intent(in) :: row   !! row of the specification
+        select case (peer_spec_field(row, 'q'))
+        case ('0'); law = HD_DAMPING_LINEAR
+        case ('1/4'); law = HD_DAMPING_TSUJI
+        case ('1/2'); law = HD_DAMPING_KUWABARA_KONO
+        case default; law = -1
+        end select
+    end function peer_row_law
+
+    !> The contact end of a specification row, from its end column; -1 if unknown.
+    pure integer function peer_row_end(row) result(iend)
+        integer, intent(in) :: row   !! row of the specification
+        select case (peer_spec_field(row, 'end'))
+        case ('overlap'); iend = HD_END_OVERLAP
+        case ('force'); iend = HD_END_FORCE
+        case default; iend = -1
+        end select
+    end function peer_row_end
+
+    !> The formula (COEF_*) of a specification row: how the engine's damping parameter
+    !> gives gamma or d.  This table and peer_damping implement the rows' alpha_expr;
+    !> test/test_peers.f90 checks them against it.  0 for an unknown row.
+    pure integer function peer_row_coef(row) result(coef)
+        integer, intent(in) :: row   !! row of the specification
+        select case (peer_spec_field(row, 'id'))
+        case ('lammps-2021-velocity-overlap', 'lammps-2021-velocity-force', 'lammps-2023-velocity-overlap', &
+              'lammps-2023-velocity-force', 'mercurydpm2015-dissipation-overlap')
+            coef = COEF_D
+        case ('lammps-2021-mass_velocity-overlap', 'lammps-2021-mass_velocity-force', &
+              'lammps-2023-mass_velocity-overlap', 'lammps-2023-mass_velocity-force')
+            coef = COEF_D_MASS
+        case ('lammps-2021-viscoelastic-overlap', 'lammps-2021-viscoelastic-force', 'lammps-2023-viscoelastic-overlap', &
+              'lammps-2023-viscoelastic-force', 'liggghts-hertz_stiffness-overlap', 'liggghts-hertz_stiffness-force')
+            coef = COEF_D_MASS_SQRT_R
+        case ('chrono-kn_gn-force')
+            coef = COEF_D_MASS_R
+        case ('mercurydpm2015-stiffness_restitution-overlap')
+            coef = COEF_D_BETA_MASSARG
+        case ('mercurydpm-dissipation-overlap')
+            coef = COEF_GAMMA
+        case ('lammps-2021-tsuji-overlap', 'lammps-2021-tsuji-force', 'lammps-2023-tsuji-overlap', &
+              'lammps-2023-tsuji-force')
+            coef = COEF_GAMMA_P6
+        case ('lammps-current-tsuji-overlap', 'lammps-current-tsuji-force')
+            coef = COEF_GAMMA_SQRT2_P6
+        case ('lammps-2024-coeff_restitution-overlap', 'lammps-2024-coeff_restitution-force', &
+              'liggghts-hertz-overlap', 'liggghts-hertz-force', 'mercurydpm-restitution-overlap', 'yade-en-force')
+            coef = COEF_GAMMA_SQRT5_BETA
+        case ('mfix-hertzian-overlap')
+            coef = COEF_GAMMA_2BETA
+        case ('yade-betan-force')
+            coef = COEF_GAMMA_SQRT6
+        case ('chrono-material-force')
+            coef = COEF_GAMMA_SQRT5_BETA_EPS
+        case default
+            coef = 0
+        end select
+    end function peer_row_coef
+
+    !> e(alpha) and tau_c(alpha) of a law and contact end, by the library's reference
+    !> integrator (hertzdamp_rk45_collide with the law).
+    pure subroutine peer_law_forward(law, alpha, iend, e, tau_c, status)
+        integer, intent(in) :: law       !! HD_DAMPING_*
+        real(wp), intent(in) :: alpha    !! damping parameter
+        integer, intent(in) :: iend      !! HD_END_OVERLAP or HD_END_FORCE
+        real(wp), intent(out) :: e       !! restitution coefficient (0: no rebound)
+        real(wp), intent(out) :: tau_c   !! contact duration in units of t* (+inf: no rebound)
+        integer, intent(out) :: status   !! HD_OK, HD_NO_REBOUND or an error
+        type(hertzdamp_collision) :: r
+        r = hertzdamp_rk45_collide(alpha, iend, law=law)
+        status = r%status
+        e = r%e
+        tau_c = r%tau_c
+    end subroutine peer_law_forward
+
+    !> alpha(e) of a law and contact end: the library's fitted inverse (linear), the
+    !> closed form of the tsuji overlap end (alpha = sqrt(5) beta(e), hertzdamp_tsuji_alpha);
+    !> otherwise, until the library has fitted inverses for them, a bracketing root
+    !> search on the library's forward map (tsuji force: the closed form
+    !> hertzdamp_tsuji_e; kuwabara-kono: the reference integrator), which is monotone in
+    !> alpha.  Targets outside the linear fit's range give HD_BAD_RESTITUTION for every law.
+    pure subroutine peer_law_inverse(law, e, iend, alpha, status)
+        integer, intent(in) :: law       !! HD_DAMPING_*
+        real(wp), intent(in) :: e        !! target restitution coefficient
+        integer, intent(in) :: iend      !! HD_END_OVERLAP or HD_END_FORCE
+        real(wp), intent(out) :: alpha   !! damping parameter
+        integer, intent(out) :: status   !! HD_OK or an error (HD_BAD_RESTITUTION: e outside the range)
+        real(wp) :: tau, emin
+        alpha = 0.0_wp
+        if (law == HD_DAMPING_LINEAR) then
+            call hertzdamp_invert_alpha(e, iend, alpha, tau, status)
+            return
+        end if
+        emin = merge(hertzdamp_fit_e_min_overlap, hertzdamp_fit_e_min_force, iend == HD_END_OVERLAP)
+        status = HD_OK
+        if (.not. (e >= emin .and. e <= 1.0_wp)) then
+            status = HD_BAD_RESTITUTION
+        else if (e == 1.0_wp) then
+            alpha = 0.0_wp
+        else if (law == HD_DAMPING_TSUJI .and. iend == HD_END_OVERLAP) then
+            alpha = hertzdamp_tsuji_alpha(e)
+        else
+            call root_on_forward(law, e, iend, alpha, status)
+        end if
+    end subroutine peer_law_inverse
+
+    !> The alpha with e(alpha) = e on the library's forward map: bracket by doubling,
+    !> then Illinois steps on ln e(alpha) - ln e, safeguarded by bisection, to a relative
+    !> width of 4 ulp.
+    pure subroutine root_on_forward(law, e, iend, alpha, status)
+        integer, intent(in) :: law, iend
+        real(wp), intent(in) :: e
+        real(wp), intent(out) :: alpha
+        integer, intent(out) :: status
+        real(wp) :: lo, hi, flo, fhi, fm, x, target
+        integer :: it, side
+        target = log(e)
+        alpha = 0.0_wp
+        lo = 0.0_wp
+        flo = -target              ! ln e(0) - ln e = -ln e > 0
+        hi = 1.0_wp
+        call eval(hi, fhi, status)
+        do it = 1, 60
+            if (status /= HD_OK) return
+            if (fhi <= 0.0_wp) exit
+            lo = hi
+            flo = fhi
+            hi = 2.0_wp * hi
+            call eval(hi, fhi, status)
+        end do
+        if (.not. fhi <= 0.0_wp) then
+            status = HD_OUTSIDE_VALIDITY
+            return
+        end if
+        side = 0
+        do it = 1, 200
+            if (hi - lo <= 4.0_wp * spacing(hi)) exit
+            x = hi - fhi * (hi - lo) / (fhi - flo)
+            if (.not. (x > lo .and. x < hi) .or. mod(it, 4) == 0) x = 0.5_wp * (lo + hi)
+            call eval(x, fm, status)
+            if (status /= HD_OK) return
+            if (fm > 0.0_wp) then
+                lo = x
+                flo = fm
+                if (side == -1) fhi = 0.5_wp * fhi
+                side = -1
+            else
+                hi = x
+                fhi = fm
+                if (side == 1) flo = 0.5_wp * flo
+                side = 1
+            end if
+            if (fm == 0.0_wp) exit
+        end do
+        alpha = 0.5_wp * (lo + hi)
+        if (fm == 0.0_wp) alpha = x
+    contains
+        !> ln e(a) - ln e; no rebound counts as e = 0 (-huge)
+        pure subroutine eval(a, gv, st)
+            real(wp), intent(in) :: a
+            real(wp), intent(out) :: gv
+            integer, intent(out) :: st
+            real(wp) :: ea, ta
+            if (law == HD_DAMPING_TSUJI .and. iend == HD_END_FORCE) then
+                call hertzdamp_tsuji_e(a, iend, ea, st)
+            else
+                call peer_law_forward(law, a, iend, ea, ta, st)
+            end if
+            if (st == HD_NO_REBOUND .or. (st == HD_OK .and. ea <= 0.0_wp)) then
+                st = HD_OK
+                gv = -huge(1.0_wp)
+            else
+                gv = log(ea) - target
+            end if
+        end subroutine eval
+    end subroutine root_on_forward
+
+    !> Name of an engine: as the command line takes it ('lammps', ...) or, with
+    !> `title`, as the engine writes it ('LAMMPS', 'MercuryDPM', ...); '?' if unknown.
+    pure function peer_name(peer, title) result(name)
+        integer, intent(in) :: peer            !! PEER_*
+        logical, intent(in), optional :: title !! the engine's own spelling
+        character(len=:), allocatable :: name
+        character(len=:), allocatable :: list
+        integer :: i, j, start
+        list = peer_names
+        if (present(title)) then
+            if (title) list = peer_titles
+        end if
+        name = '?'
+        start = 1
+        j = 0
+        do i = 1, len(list) + 1
+            if (i <= len(list)) then
+                if (list(i:i) /= ' ') cycle
+            end if
+            j = j + 1
+            if (j == peer) name = list(start:i - 1)
+            start = i + 1
+        end do
+    end function peer_name
+
+    ! ------------------------------------------------------------------ formulas of the engines
+
+    !> beta(e) = -ln e / sqrt(pi^2 + ln^2 e) for 0 < e <= 1; beta(0) = 1 (the limit).
+    pure elemental real(wp) function peer_beta(e) result(b)
+        real(wp), intent(in) :: e   !! restitution coefficient, 0 <= e <= 1
+        real(wp) :: l
+        if (e <= 0.0_wp) then
+            b = 1.0_wp
+        else
+            l = -log(e)
+            b = l / sqrt(pi**2 + l**2)
+        end if
+    end function peer_beta
+
+    !> The e with beta(e) = b, 0 <= b <= 1: e = exp(-pi b / sqrt(1 - b^2)) (b = 1: e = 0).
+    pure elemental real(wp) function peer_beta_inverse(b) result(e)
+        real(wp), intent(in) :: b   !! beta value, 0 <= b <= 1
+        if (b >= 1.0_wp) then
+            e = 0.0_wp
+        else
+            e = exp(-pi * b / sqrt((1.0_wp - b) * (1.0_wp + b)))
+        end if
+    end function peer_beta_inverse
+
+    !> LAMMPS's `tsuji` polynomial (Marshall 2009, eq. 53, as coded in
+    !> src/GRANULAR/pair_granular.cpp:986-992 of LAMMPS 29 Sep 2021).
+    pure elemental real(wp) function peer_p6(e) result(p)
+        real(wp), intent(in) :: e   !! restitution coefficient
+        p = 1.2728_wp - 4.2783_wp * e + 11.087_wp * e**2 - 22.348_wp * e**3 + 27.467_wp * e**4 &
+            - 18.022_wp * e**5 + 4.8218_wp * e**6
+    end function peer_p6
+
+    !> The e in [0, 1] with P6(e) = g (P6 falls strictly on [0, 1], from 1.2728 to 3e-4);
+    !> status HD_OUTSIDE_VALIDITY when g lies outside [P6(1), P6(0)].
+    pure subroutine peer_p6_inverse(g, e, status)
+        real(wp), intent(in) :: g       !! value of the polynomial
+        real(wp), intent(out) :: e      !! its root in [0, 1]
+        integer, intent(out) :: status  !! HD_OK or HD_OUTSIDE_VALIDITY
+        real(wp) :: lo, hi, mid
+        integer :: i
+        e = 0.0_wp
+        status = HD_OK
+        if (.not. (g <= peer_p6(0.0_wp) .and. g >= peer_p6(1.0_wp))) then
+            status = HD_OUTSIDE_VALIDITY
+            return
+        end if
+        lo = 0.0_wp
+        hi = 1.0_wp
+        do i = 1, 200
+            mid = 0.5_wp * (lo + hi)
+            if (mid <= lo .or. mid >= hi) exit
+            if (peer_p6(mid) > g) then
+                lo = mid
+            else
+                hi = mid
+            end if
+        end do
+        e = 0.5_wp * (lo + hi)
+    end subroutine peer_p6_inverse
+
+    !> A value as an engine that stores it in single precision (C++ float) sees it.
+    pure elemental real(wp) function peer_float(x) result(y)
+        real(wp), intent(in) :: x   !! the value given
+        y = real(real(x, real32), wp)
+    end function peer_float
+
+    !> A quiet NaN (for quantities that do not apply; printed as nan / null).
+    pure real(wp) function peer_nan()
+        peer_nan = ieee_value(0.0_wp, ieee_quiet_nan)
+    end function peer_nan
+
+    !> The damping the engine builds from its parameter p: gamma for the q = 1/4 kinds,
+    !> d for the others (see COEF_*).  Formulas and sources: doc/peers.md and the
+    !> alpha_expr of each row of data/peers/peers_spec.csv.
+    pure real(wp) function peer_damping(deck, p) result(c)
+        type(peer_deck), intent(in) :: deck   !! the resolved deck (m_damp, radius, mass_arg, ...)
+        real(wp), intent(in) :: p             !! the engine's damping parameter
+        select case (deck%coef)
+        case (COEF_D)
+            ! LAMMPS `velocity`: F = -eta_n0 v_n (pair_granular.cpp:363-364, 2021);
+            ! MercuryDPM 2015 setDissipation(d): F = ... - d v_n (HertzianViscoelasticInteraction.cc:86-88)
+            c = p
+        case (COEF_D_MASS)
+            ! LAMMPS `mass_velocity`: F = -eta_n0 m v_n (pair_granular.cpp:365-366, 2021)
+            c = p * deck%m_damp
+        case (COEF_D_MASS_SQRT_R)
+            ! LAMMPS `viscoelastic`: F = -eta_n0 m sqrt(R delta) v_n (pair_granular.cpp:351,367-368);
+            ! LIGGGHTS hertz/stiffness: F = -sqrt(R delta) m gamma_n v_n (normal_model_hertz_stiffness.h:137-144)
+            c = p * deck%m_damp * sqrt(deck%radius)
+        case (COEF_D_MASS_R)
+            ! Chrono UseMaterialProperties(false): gn_eff = R sqrt(delta) m gn (ChContactSMC.cpp:105-111)
+            c = p * deck%m_damp * deck%radius
+        case (COEF_D_BETA_MASSARG)
+            ! MercuryDPM 2015 setStiffnessAndRestitutionCoefficient(k_, e, mass):
+            ! dissipation_ = -sqrt(2 mass k_/(pi^2 + ln^2 e)) ln e (HertzianViscoelasticSpecies.cc:168-173)
+            c = peer_beta(p) * sqrt(2.0_wp * deck%mass_arg * deck%modulus_arg)
+        case (COEF_GAMMA)
+            ! MercuryDPM setDissipation(g): F = ... - g sqrt(m k sqrt(delta)) v_n (HertzianViscoelasticInteraction.cc:125)
+            c = p * sqrt(deck%m_damp / deck%m)
+        case (COEF_GAMMA_P6)
+            ! LAMMPS `tsuji` (2021 .. 2024-09): damp = P6(e), F = -damp sqrt(m kn a) v_n (pair_granular.cpp:986-992, 369-370)
+            c = peer_p6(p) * sqrt(deck%m_damp / deck%m)
+        case (COEF_GAMMA_SQRT2_P6)
+            ! LAMMPS current `tsuji`: damp = sqrt(2) P6(e) (gran_sub_mod_damping.cpp @07b704ca:141-148)
+            c = sqrt(2.0_wp) * peer_p6(p) * sqrt(deck%m_damp / deck%m)
+        case (COEF_GAMMA_SQRT5_BETA)
+            ! LAMMPS `coeff_restitution` sqrt(3/2) 2 sqrt(5/6) beta (gran_sub_mod_damping.cpp:162-172, 2024-09);
+            ! LIGGGHTS 2 sqrt(5/6) beta sqrt(S_n m), S_n = (3/2) k delta^(1/2) (normal_model_hertz.h:231-237);
+            ! MercuryDPM sqrt(5 ln^2 e/(ln^2 e + pi^2)) (HertzianViscoelasticNormalSpecies.cc:109-138);
+            ! Yade en: 2 sqrt(5/6) beta sqrt(2 E sqrt(R)) sqrt(m) delta^(1/4) (HertzMindlin.cpp:76-80, 341-350)
+            c = sqrt(5.0_wp) * peer_beta(p) * sqrt(deck%m_damp / deck%m)
+        case (COEF_GAMMA_2BETA)
+            ! MFiX DES_ETAN = 2 sqrt(k m) |ln e|/sqrt(pi^2 + ln^2 e), e = 0: 2 sqrt(k m)
+            ! (check_solids_dem.f:904-911), applied as DES_ETAN delta^(1/4) (calc_force_dem.f:224-242)
+            c = 2.0_wp * peer_beta(p) * sqrt(deck%m_damp / deck%m)
+        case (COEF_GAMMA_SQRT6)
+            ! Yade betan: cn = 2 betan sqrt(m (3/2) Kno delta^(1/2)) (HertzMindlin.cpp:309, 323-336)
+            c = sqrt(6.0_wp) * p * sqrt(deck%m_damp / deck%m)
+        case (COEF_GAMMA_SQRT5_BETA_EPS)
+            ! Chrono: e < DBL_EPSILON -> ln(DBL_EPSILON); gn = -2 sqrt(5/6) beta sqrt(Sn m) (ChContactSMC.cpp:94-104)
+            c = sqrt(5.0_wp) * peer_beta(max(p, epsilon(1.0_wp))) * sqrt(deck%m_damp / deck%m)
+        case default
+            c = 0.0_wp
+        end select
+    end function peer_damping
+
+    !> The engine's parameter p that gives the damping c (gamma or d, see peer_damping):
+    !> the inverse of peer_damping.  status HD_OUTSIDE_VALIDITY when no value of p does.
+    pure subroutine peer_parameter(deck, c, p, status)
+        type(peer_deck), intent(in) :: deck   !! the resolved deck
+        real(wp), intent(in) :: c             !! gamma (q = 1/4 kinds) or d
+        real(wp), intent(out) :: p            !! the engine's parameter
+        integer, intent(out) :: status        !! HD_OK or HD_OUTSIDE_VALIDITY
+        real(wp) :: g, f
+        p = 0.0_wp
+        status = HD_OK
+        f = sqrt(deck%m_damp / deck%m)
+        g = c / f     ! the gamma the engine's formula must produce
+        select case (deck%coef)
+        case (COEF_D)
+            p = c
+        case (COEF_D_MASS)
+            p = c / deck%m_damp
+        case (COEF_D_MASS_SQRT_R)
+            p = c / (deck%m_damp * sqrt(deck%radius))
+        case (COEF_D_MASS_R)
+            p = c / (deck%m_damp * deck%radius)
+        case (COEF_D_BETA_MASSARG)
+            call beta_root(c / sqrt(2.0_wp * deck%mass_arg * deck%modulus_arg), p, status)
+        case (COEF_GAMMA)
+            p = g
+        case (COEF_GAMMA_P6)
+            call peer_p6_inverse(g, p, status)
+        case (COEF_GAMMA_SQRT2_P6)
+            call peer_p6_inverse(g / sqrt(2.0_wp), p, status)
+        case (COEF_GAMMA_SQRT5_BETA, COEF_GAMMA_SQRT5_BETA_EPS)
+            call beta_root(g / sqrt(5.0_wp), p, status)
+        case (COEF_GAMMA_2BETA)
+            call beta_root(g / 2.0_wp, p, status)
+        case (COEF_GAMMA_SQRT6)
+            p = g / sqrt(6.0_wp)
+        case default
+            status = HD_BAD_ARGUMENT
+        end select
+    contains
+        pure subroutine beta_root(b, e, st)
+            real(wp), intent(in) :: b
+            real(wp), intent(out) :: e
+            integer, intent(out) :: st
+            e = 0.0_wp
+            st = HD_OK
+            if (.not. (b >= 0.0_wp .and. b <= 1.0_wp)) then
+                st = HD_OUTSIDE_VALIDITY
+            else
+                e = peer_beta_inverse(b)
+            end if
+        end subroutine beta_root
+    end subroutine peer_parameter
+
+    !> alpha of the deck at impact speed u, and the time unit t* = (m/(k u^(1/2)))^(2/5).
+    !> q = 1/4: alpha = gamma (independent of u); otherwise alpha = d t* (u t*)^q / m.
+    pure subroutine peer_alpha(deck, u, alpha, tstar, status)
+        type(peer_deck), intent(in) :: deck  !! the resolved deck
+        real(wp), intent(in) :: u            !! impact speed [m s^-1]
+        real(wp), intent(out) :: alpha       !! damping parameter
+        real(wp), intent(out) :: tstar       !! time unit [s]
+        integer, intent(out) :: status       !! HD_OK or HD_OUT_OF_RANGE
+        alpha = 0.0_wp
+        status = HD_OK
+        tstar = exp(0.4_wp * (log(deck%m) - log(deck%k)) - 0.2_wp * log(u))
+        if (deck%law == HD_DAMPING_TSUJI) then
+            alpha = peer_damping(deck, deck%p)
+        else
+            alpha = peer_damping(deck, deck%p) * tstar * (u * tstar)**hertzdamp_law_q(deck%law) / deck%m
+        end if
+        if (.not. (ieee_is_finite(alpha) .and. ieee_is_finite(tstar) .and. tstar > 0.0_wp)) status = HD_OUT_OF_RANGE
+    end subroutine peer_alpha
+
+    !> The engine's own estimate of the contact time at impact speed u (NaN when the
+    !> engine has none).  LIGGGHTS fix check/timestep/gran (fix_check_timestep_gran.cpp:
+    !> 318-348): 2.87 (m_p^2/(r/2 Y*^2 v))^(1/5) with the particle's whole mass m_p and
+    !> radius r, v = max(2 v_max, v_max + v_mesh): u for two particles meeting at u, 2u
+    !> for a particle hitting a resting wall at u.  MercuryDPM getCollisionTime(D, rho, v)
+    !> (HertzianViscoelasticNormalSpecies.cc:290-300): 2.214 (rho^2/(E^2 v))^(1/5) D.
+    !> MFiX TCOLL = pi/sqrt(k/m - (eta/m)^2/4) with its Hertz k and eta (check_solids_dem.f:
+    !> 924-926, 990-991; independent of u; NaN where the root is imaginary).
+    pure real(wp) function peer_time_estimate(deck, u) result(t)
+        type(peer_deck), intent(in) :: deck  !! the resolved deck
+        real(wp), intent(in) :: u            !! impact speed [m s^-1]
+        real(wp) :: v, eta, w2
+        t = peer_nan()
+        select case (deck%tstep)
+        case (TSTEP_LIGGGHTS)
+            v = merge(2.0_wp * u, u, deck%wall)
+            t = 2.87_wp * (deck%mass1**2 / (0.5_wp * deck%radius1 * deck%e_star**2 * v))**0.2_wp
+        case (TSTEP_MERCURY)
+            t = 2.214_wp * (deck%density1**2 / (deck%e_star**2 * u))**0.2_wp * 2.0_wp * deck%radius1
+        case (TSTEP_MFIX)
+            eta = peer_damping(deck, deck%p) * sqrt(deck%m * deck%k)
+            w2 = deck%k / deck%m - 0.25_wp * (eta / deck%m)**2
+            if (w2 > 0.0_wp) t = pi / sqrt(w2)
+        case default
+        end select
+    end function peer_time_estimate
+
+    !> The deck at impact speed u: what the engine achieves, and the value of its
+    !> parameter that would give e_target (NaN with status_corrected /= HD_OK when
+    !> none does, or e_target <= 0).
+    pure function peer_evaluate(deck, u, e_target) result(pt)
+        type(peer_deck), intent(in) :: deck  !! the resolved deck
+        real(wp), intent(in) :: u            !! impact speed [m s^-1], > 0
+        real(wp), intent(in) :: e_target     !! the restitution coefficient the user wants
+        type(peer_point) :: pt
+        real(wp) :: tau, ef, tauf, c
+        integer :: st
+        pt%u = u
+        pt%t_force = peer_nan()
+        pt%alpha_target = peer_nan()
+        pt%p_corrected = peer_nan()
+        pt%t_peer = peer_time_estimate(deck, u)
+        call peer_alpha(deck, u, pt%alpha, pt%tstar, pt%status)
+        pt%t_hertz = hertzdamp_tau_c0() * pt%tstar
+        if (pt%status /= HD_OK) then
+            pt%e = peer_nan()
+            pt%tc = peer_nan()
+            pt%status_corrected = pt%status
+            return
+        end if
+        call peer_law_forward(deck%law, pt%alpha, deck%iend, pt%e, tau, pt%status)
+        if (pt%status == HD_OK .or. pt%status == HD_NO_REBOUND) then
+            pt%tc = pt%tstar * tau
+        else
+            pt%e = peer_nan()
+            pt%tc = peer_nan()
+        end if
+        if (deck%iend == HD_END_OVERLAP .and. pt%alpha > 0.0_wp) then
+            ! the total force -d zeta^q zeta' - k zeta^(3/2) turns attractive where the
+            ! force-end contact ends (the same trajectory up to that instant)
+            call peer_law_forward(deck%law, pt%alpha, HD_END_FORCE, ef, tauf, st)
+            if (st == HD_OK) pt%t_force = pt%tstar * tauf
+        end if
+        ! the corrected parameter
+        call peer_law_inverse(deck%law, e_target, deck%iend, pt%alpha_target, pt%status_corrected)
+        if (pt%status_corrected /= HD_OK) then
+            pt%alpha_target = peer_nan()
+            return
+        end if
+        if (deck%law == HD_DAMPING_TSUJI) then
+            c = pt%alpha_target
+        else
+            c = pt%alpha_target * deck%m / (pt%tstar * (u * pt%tstar)**hertzdamp_law_q(deck%law))
+        end if
+        call peer_parameter(deck, c, pt%p_corrected, pt%status_corrected)
+        if (pt%status_corrected /= HD_OK) pt%p_corrected = peer_nan()
+    end function peer_evaluate
+
+    pure function peer_itoa(i) result(s)
+        integer, intent(in) :: i
+        character(len=:), allocatable :: s
+        character(len=12) :: buf
+        write (buf, '(i0)') i
+        s = trim(buf)
+    end function peer_itoa
+
+    !> A number in its shortest decimal form that reads back exactly, or with at most
+    !> `digits` significant digits; plain notation from 1e-4 to 1e6 (0.5, 2e11, 1.5e-7).
+    pure function peer_fmt(x, digits) result(s)
+        real(wp), intent(in) :: x            !! the number (finite)
+        integer, intent(in), optional :: digits  !! at most this many significant digits (default 17)
+        character(len=:), allocatable :: s
+        character(len=40) :: buf
+        integer :: d, dmax
+        real(wp) :: y
+        integer :: ios
+        dmax = 17
+        if (present(digits)) dmax = max(1, min(17, digits))
+        if (.not. ieee_is_finite(x)) then
+            s = 'nan'
+            if (x > 0.0_wp) s = 'inf'
+            if (x < 0.0_wp) s = '-inf'
+            return
+        end if
+        do d = 1, dmax
+            write (buf, '(es40.' // peer_itoa(d - 1) // 'e3)') x
+            read (buf, *, iostat=ios) y
+            if (ios == 0 .and. y == x) exit
+        end do
+        s = trim(adjustl(buf))
+        call tidy(s)
+    end function peer_fmt
+
+    !> 1.500e+000 -> 1.5, 2.000e+011 -> 2e11, 5.000e-001 -> 0.5.
+    pure subroutine tidy(s)
+        character(len=:), allocatable, intent(inout) :: s
+        integer :: ie, ex, ios, j
+        character(len=:), allocatable :: mant
+        ie = scan(s, 'eE')
+        if (ie == 0) return
+        read (s(ie + 1:), *, iostat=ios) ex
+        if (ios /= 0) return
+        mant = s(1:ie - 1)
+        if (index(mant, '.') > 0) then
+            j = len(mant)
+            do while (mant(j:j) == '0')
+                j = j - 1
+            end do
+            if (mant(j:j) == '.') j = j - 1
+            mant = mant(1:j)
+        end if
+        if (ex >= -4 .and. ex <= 5) then
+            s = shift(mant, ex)
+        else
+            s = mant // 'e' // peer_itoa(ex)
+        end if
+    end subroutine tidy
+
+    !> Plain decimal form of mantissa * 10^ex (mantissa d.ddd, possibly signed).
+    pure function shift(mant, ex) result(s)
+        character(len=*), intent(in) :: mant
+        integer, intent(in) :: ex
+        character(len=:), allocatable :: s
+        character(len=:), allocatable :: sign, dig
+        integer :: p
+        sign = ''
+        dig = mant
+        if (dig(1:1) == '-') then
+            sign = '-'
+            dig = dig(2:)
+        end if
+        p = index(dig, '.')
+        if (p > 0) dig = dig(1:p - 1) // dig(p + 1:)
+        ! dig holds the digits, the point after the first one
+        p = 1 + ex
+        if (p <= 0) then
+            s = sign // '0.' // repeat('0', -p) // dig
+        else if (p >= len(dig)) then
+            s = sign // dig // repeat('0', p - len(dig))
+        else
+            s = sign // dig(1:p) // '.' // dig(p + 1:)
+        end if
+    end function shift
+
+end module hertzdamp_peers

@@ -1,0 +1,259 @@
+!> Text for the output contract of the `hertzdamp` program: valid UTF-8 everywhere
+!> (invalid bytes replaced), one-line messages (control characters escaped), and the
+!> number formats of the text, CSV and JSON outputs.
+module hertzdamp_cli_text
+    use hertzdamp_kinds, only: hertzdamp_rk
+    use, intrinsic :: ieee_arithmetic, only: ieee_is_finite, ieee_is_nan
+    implicit none
+    private
+
+    integer, parameter :: wp = hertzdamp_rk
+    !> U+FFFD REPLACEMENT CHARACTER, in UTF-8.
+    character(len=*), parameter :: replacement = char(239) // char(191) // char(189)
+
+    public :: utf8_clean, one_line, json_string, csv_field, fmt_csv, fmt_json, fmt_text, fmt_short, itoa
+
+contains
+
+    !> Length of the valid UTF-8 sequence starting at s(i:i), 0 if it is not valid.
+    pure integer function utf8_length(s, i) result(n)
+        character(len=*), intent(in) :: s
+        integer, intent(in) :: i
+        integer :: c, lo, hi, k
+        c = iachar(s(i:i))
+        lo = 128
+        hi = 191
+        if (c < 128) then
+            n = 1
+            return
+        else if (c >= 194 .and. c <= 223) then
+            n = 2
+        else if (c >= 224 .and. c <= 239) then
+            n = 3
+            if (c == 224) lo = 160      ! no overlong forms
+            if (c == 237) hi = 159      ! no surrogates
+        else if (c >= 240 .and. c <= 244) then
+            n = 4
+            if (c == 240) lo = 144
+            if (c == 244) hi = 143      ! nothing above U+10FFFF
+        else
+            n = 0
+            return
+        end if
+        if (i + n - 1 > len(s)) then
+            n = 0
+            return
+        end if
+        c = iachar(s(i + 1:i + 1))
+        if (c < lo .or. c > hi) n = 0
+        do k = i + 2, i + n - 1
+            if (n == 0) exit
+            c = iachar(s(k:k))
+            if (c < 128 .or. c > 191) n = 0
+        end do
+    end function utf8_length
+
+    !> `s` with every byte that is not part of a valid UTF-8 sequence replaced by U+FFFD.
+    pure function utf8_clean(s) result(r)
+        character(len=*), intent(in) :: s
+        character(len=:), allocatable :: r
+        character(len=3 * len(s)) :: buf
+        integer :: i, j, n
+        i = 1
+        j = 0
+        do while (i <= len(s))
+            n = utf8_length(s, i)
+            if (n == 0) then
+                buf(j + 1:j + 3) = replacement
+                j = j + 3
+                i = i + 1
+            else
+                buf(j + 1:j + n) = s(i:i + n - 1)
+                j = j + n
+                i = i + n
+            end if
+        end do
+        r = buf(1:j)
+    end function utf8_clean
+
+    !> `s` on one line: control characters written as \n, \r, \t or \xNN, a backslash
+    !> as itself, invalid UTF-8 bytes as \xNN.  For messages on stderr.
+    pure function one_line(s) result(r)
+        character(len=*), intent(in) :: s
+        character(len=:), allocatable :: r
+        character(len=4 * len(s)) :: buf
+        integer :: i, j, n, c
+        i = 1
+        j = 0
+        do while (i <= len(s))
+            c = iachar(s(i:i))
+            n = utf8_length(s, i)
+            if (c == 10 .or. c == 13 .or. c == 9) then
+                buf(j + 1:j + 2) = '\' // merge('n', merge('r', 't', c == 13), c == 10)
+                j = j + 2
+                i = i + 1
+            else if (c < 32 .or. c == 127 .or. n == 0) then
+                buf(j + 1:j + 4) = '\x' // hex2(c)
+                j = j + 4
+                i = i + 1
+            else
+                buf(j + 1:j + n) = s(i:i + n - 1)
+                j = j + n
+                i = i + n
+            end if
+        end do
+        r = buf(1:j)
+    end function one_line
+
+    !> Two lower-case hexadecimal digits of a byte.
+    pure function hex2(c) result(h)
+        integer, intent(in) :: c
+        character(len=2) :: h
+        character(len=*), parameter :: hex = '0123456789abcdef'
+        h = hex(c / 16 + 1:c / 16 + 1) // hex(mod(c, 16) + 1:mod(c, 16) + 1)
+    end function hex2
+
+    !> A JSON string literal: valid UTF-8, quotes, backslashes and control characters escaped.
+    pure function json_string(s) result(r)
+        character(len=*), intent(in) :: s
+        character(len=:), allocatable :: r
+        character(len=:), allocatable :: u
+        character(len=:), allocatable :: buf
+        integer :: i, j, c
+        u = utf8_clean(s)
+        allocate (character(len=6 * len(u) + 2) :: buf)
+        buf(1:1) = '"'
+        j = 1
+        do i = 1, len(u)
+            c = iachar(u(i:i))
+            if (c < 32 .or. c == 127) then
+                buf(j + 1:j + 6) = '\u00' // hex2(c)
+                j = j + 6
+            else if (u(i:i) == '"' .or. u(i:i) == '\') then
+                buf(j + 1:j + 2) = '\' // u(i:i)
+                j = j + 2
+            else
+                buf(j + 1:j + 1) = u(i:i)
+                j = j + 1
+            end if
+        end do
+        r = buf(1:j) // '"'
+    end function json_string
+
+    !> A CSV field (RFC 4180): valid UTF-8, quoted when it holds a comma, a quote or a
+    !> line break (quotes doubled).
+    pure function csv_field(s) result(r)
+        character(len=*), intent(in) :: s
+        character(len=:), allocatable :: r
+        integer :: i
+        r = utf8_clean(s)
+        if (scan(r, ',"' // achar(10) // achar(13)) == 0) return
+        r = '"'
+        do i = 1, len(s)
+            if (s(i:i) == '"') r = r // '"'
+            r = r // s(i:i)
+        end do
+        r = utf8_clean(r // '"')
+    end function csv_field
+
+    !> A number with 16 significant digits for CSV; 'inf', '-inf' or 'nan' if not finite.
+    function fmt_csv(x) result(s)
+        real(wp), intent(in) :: x
+        character(len=:), allocatable :: s
+        character(len=40) :: buf
+        if (ieee_is_nan(x)) then
+            s = 'nan'
+        else if (.not. ieee_is_finite(x)) then
+            s = merge('inf ', '-inf', x > 0.0_wp)
+            s = trim(s)
+        else
+            write (buf, '(es24.15e3)') x
+            s = trim(adjustl(buf))
+        end if
+    end function fmt_csv
+
+    !> A number for JSON: 16 significant digits, null when not finite.
+    function fmt_json(x) result(s)
+        real(wp), intent(in) :: x
+        character(len=:), allocatable :: s
+        if (.not. ieee_is_finite(x)) then
+            s = 'null'
+        else
+            s = fmt_csv(x)
+        end if
+    end function fmt_json
+
+    !> A number for aligned text (people): 7 significant digits, e.g. 5.235988E-006;
+    !> 'inf', '-inf' or 'nan' if not finite.  CSV and JSON carry 16.
+    function fmt_text(x) result(s)
+        real(wp), intent(in) :: x
+        character(len=:), allocatable :: s
+        character(len=24) :: buf
+        if (.not. ieee_is_finite(x)) then
+            s = fmt_csv(x)
+        else
+            write (buf, '(es16.6e3)') x
+            s = trim(adjustl(buf))
+        end if
+    end function fmt_text
+
+    !> A number in a message: at most 6 significant digits, trailing zeros dropped,
+    !> positional from 1e-4 to 1e6 (0.0005, 2.5, 10000), otherwise 1.5e-07, 1e+200.
+    function fmt_short(x) result(s)
+        real(wp), intent(in) :: x
+        character(len=:), allocatable :: s
+        character(len=32) :: buf
+        character(len=:), allocatable :: digits, sgn
+        integer :: ex, ios, k
+        if (.not. ieee_is_finite(x)) then
+            s = fmt_csv(x)
+            return
+        end if
+        if (x == 0.0_wp) then
+            s = '0'
+            return
+        end if
+        write (buf, '(es14.5e3)') abs(x)            ! d.ddddde+xxx
+        buf = adjustl(buf)
+        read (buf(9:12), *, iostat=ios) ex
+        if (ios /= 0) then
+            s = fmt_csv(x)
+            return
+        end if
+        digits = buf(1:1) // buf(3:7)
+        k = len(digits)
+        do while (k > 1)
+            if (digits(k:k) /= '0') exit
+            k = k - 1
+        end do
+        digits = digits(1:k)
+        sgn = merge('-', ' ', x < 0.0_wp)
+        sgn = trim(sgn)
+        if (ex >= -4 .and. ex < 6) then
+            if (ex >= 0) then
+                if (len(digits) <= ex + 1) then
+                    s = digits // repeat('0', ex + 1 - len(digits))
+                else
+                    s = digits(1:ex + 1) // '.' // digits(ex + 2:)
+                end if
+            else
+                s = '0.' // repeat('0', -ex - 1) // digits
+            end if
+        else
+            s = digits(1:1)
+            if (len(digits) > 1) s = s // '.' // digits(2:)
+            s = s // 'e' // merge('-', '+', ex < 0) // itoa(abs(ex))
+        end if
+        s = sgn // s
+    end function fmt_short
+
+    !> An integer as text.
+    pure function itoa(i) result(s)
+        integer, intent(in) :: i
+        character(len=:), allocatable :: s
+        character(len=12) :: buf
+        write (buf, '(i0)') i
+        s = trim(buf)
+    end function itoa
+
+end module hertzdamp_cli_text

@@ -1,0 +1,194 @@
+!> The damping laws of the model family (doc/damping-laws.md):
+!>
+!>     m zeta'' = - k zeta^(3/2) - d zeta^q zeta',   q = 0, 1/4, 1/2,
+!>
+!> named `linear` (q = 0, constant damping), `tsuji` (q = 1/4) and `kuwabara-kono`
+!> (q = 1/2).  In similarity variables (the same t* = (m / (k u^(1/2)))^(2/5) for every
+!> law) this is  z'' + alpha z^q z' + z^(3/2) = 0  with  alpha = d t* (u t*)^q / m,
+!> so alpha ~ u^((4q - 1)/5): u^(-1/5) (linear), independent of u (tsuji), u^(1/5)
+!> (kuwabara-kono).
+!>
+!> This module holds the law codes, their names and exponents, and the exact facts
+!> of each law that need no integration (critical damping where it is known in
+!> closed form, the tsuji closed forms).  Everything is pure, no module state.
+module hertzdamp_laws
+    use hertzdamp_kinds, only: hertzdamp_rk
+    use hertzdamp_status, only: HD_OK, HD_BAD_LAW, HD_NOT_SUPPORTED, HD_DAMPING_LINEAR, HD_DAMPING_TSUJI, &
+                                HD_DAMPING_KUWABARA_KONO
+    use hertzdamp_fit_data, only: fit_alpha_c
+    implicit none
+    private
+
+    integer, parameter :: wp = hertzdamp_rk
+
+    ! the law codes live in hertzdamp_status (with the contact-end codes, mirrored in
+    ! hertzdamp.h): linear 0 (q = 0), tsuji 1 (q = 1/4, Tsuji et al. 1992), kuwabara-kono 2
+    ! (q = 1/2, Kuwabara & Kono 1987)
+    public :: HD_DAMPING_LINEAR, HD_DAMPING_TSUJI, HD_DAMPING_KUWABARA_KONO
+    !> Largest law code.
+    integer, parameter, public :: hertzdamp_max_law = 2
+
+    !> Law names in the order of the codes (the one table of them).
+    character(len=13), parameter :: law_table(0:hertzdamp_max_law) = [character(len=13) :: &
+        'linear', 'tsuji', 'kuwabara-kono']
+    !> Exponent q of zeta in the damping force of each law.
+    real(wp), parameter :: q_table(0:hertzdamp_max_law) = [0.0_wp, 0.25_wp, 0.5_wp]
+
+    !> Critical damping of the tsuji law with the overlap end: alpha_c = sqrt(5) exactly
+    !> (the law maps onto a linear oscillator of damping ratio alpha/sqrt(5)).
+    real(wp), parameter, public :: hertzdamp_alpha_c_tsuji = sqrt(5.0_wp)
+
+    public :: hertzdamp_law_name, hertzdamp_law_code, hertzdamp_law_q, hertzdamp_law_status
+    public :: hertzdamp_law_speed_exponent, hertzdamp_law_reversal_exponent, hertzdamp_law_has_alpha_c
+    public :: hertzdamp_tsuji_e, hertzdamp_tsuji_alpha, hertzdamp_law_alpha_c
+
+contains
+
+    !> HD_OK for a valid law code, else HD_BAD_LAW.
+    pure elemental integer function hertzdamp_law_status(law) result(status)
+        integer, intent(in) :: law   !! HD_DAMPING_*
+        status = HD_OK
+        if (law < 0 .or. law > hertzdamp_max_law) status = HD_BAD_LAW
+    end function hertzdamp_law_status
+
+    !> Name of a law code ('linear', 'tsuji', 'kuwabara-kono'; 'unknown' for others).
+    pure function hertzdamp_law_name(law) result(name)
+        integer, intent(in) :: law   !! HD_DAMPING_*
+        character(len=:), allocatable :: name
+        if (law >= 0 .and. law <= hertzdamp_max_law) then
+            name = trim(law_table(law))
+        else
+            name = 'unknown'
+        end if
+    end function hertzdamp_law_name
+
+    !> Code of a law name (HD_DAMPING_*), -1 when the name is not a law.
+    pure integer function hertzdamp_law_code(name) result(law)
+        character(len=*), intent(in) :: name   !! 'linear', 'tsuji' or 'kuwabara-kono'
+        integer :: k
+        law = -1
+        do k = 0, hertzdamp_max_law
+            if (trim(law_table(k)) == name) then
+                law = k
+                return
+            end if
+        end do
+    end function hertzdamp_law_code
+
+    !> Exponent q of the law (0, 1/4, 1/2); 0 for an invalid code.
+    pure elemental real(wp) function hertzdamp_law_q(law) result(q)
+        integer, intent(in) :: law   !! HD_DAMPING_*
+        q = 0.0_wp
+        if (law >= 0 .and. law <= hertzdamp_max_law) q = q_table(law)
+    end function hertzdamp_law_q
+
+    !> Exponent of the impact speed in alpha at fixed k, d, m: alpha ~ u^((4q - 1)/5)
+    !> (-1/5 linear, 0 tsuji, 1/5 kuwabara-kono).
+    pure elemental real(wp) function hertzdamp_law_speed_exponent(law) result(p)
+        integer, intent(in) :: law   !! HD_DAMPING_*
+        p = (4.0_wp * hertzdamp_law_q(law) - 1.0_wp) / 5.0_wp
+    end function hertzdamp_law_speed_exponent
+
+    !> Exponent of the time-reversal map: the reversed collision of (alpha, e) has
+    !> damping -alpha e^p with p = (4q - 1)/5, so e(alpha) e(-alpha e(alpha)^p) = 1
+    !> (overlap end).  It equals the speed exponent: reversal is an impact at speed e.
+    pure elemental real(wp) function hertzdamp_law_reversal_exponent(law) result(p)
+        integer, intent(in) :: law   !! HD_DAMPING_*
+        p = hertzdamp_law_speed_exponent(law)
+    end function hertzdamp_law_reversal_exponent
+
+    !> True when the overlap end of the law has a critical damping alpha_c beyond which
+    !> the overlap never returns (linear: alpha_c = 1.12799..., tsuji: sqrt(5));
+    !> kuwabara-kono has none: its overlap returns for every alpha (doc/damping-laws.md).
+    pure elemental logical function hertzdamp_law_has_alpha_c(law) result(has)
+        integer, intent(in) :: law   !! HD_DAMPING_*
+        has = law == HD_DAMPING_LINEAR .or. law == HD_DAMPING_TSUJI
+    end function hertzdamp_law_has_alpha_c
+
+    !> Critical damping alpha_c of the overlap end: the smallest alpha without rebound.
+    !> linear: 1.12798813552..., generated by gen/fit/gen_fit.f90 (bisection on the
+    !> reference integrator at tolerance 1e-15, data/fit_coefficients.csv); tsuji:
+    !> sqrt(5) exactly; kuwabara-kono: none (the overlap always returns), huge(1.0).
+    pure elemental real(wp) function hertzdamp_law_alpha_c(law) result(alpha_c)
+        integer, intent(in) :: law   !! HD_DAMPING_*
+        select case (law)
+        case (HD_DAMPING_LINEAR)
+            alpha_c = fit_alpha_c
+        case (HD_DAMPING_TSUJI)
+            alpha_c = hertzdamp_alpha_c_tsuji
+        case default
+            alpha_c = huge(1.0_wp)
+        end select
+    end function hertzdamp_law_alpha_c
+
+    !> Exact restitution of the tsuji law (q = 1/4) for either contact end.
+    !>
+    !> With x = z^(5/4) the phase-plane orbit v(x) of  z'' + alpha z^(1/4) z' + z^(3/2) = 0
+    !> is that of the linear oscillator X'' + 2 a X' + w^2 X = 0 with w^2 = 4/5,
+    !> a = 2 alpha / 5 (damping ratio zeta = alpha / sqrt(5)), and both contact ends are
+    !> curves of that oscillator: the overlap end X = 0, the force end X'' = 0.  With
+    !> W^2 = w^2 - a^2:
+    !>   overlap: e = exp(-pi a / W) for alpha < sqrt(5) (no rebound beyond),
+    !>   force:   e = exp(-2 a atan(W / a) / W)  (atanh and |W| for alpha > sqrt(5),
+    !>            exp(-2) at alpha = sqrt(5)); e ~ 5 / (4 alpha^2) for alpha -> infinity.
+    !> Status HD_OK; HD_NOT_SUPPORTED with e = 0 for the overlap end at alpha >= sqrt(5)
+    !> (no rebound) and for alpha < 0 with the force end.
+    pure elemental subroutine hertzdamp_tsuji_e(alpha, iend, e, status)
+        real(wp), intent(in) :: alpha    !! damping parameter (overlap: any sign below sqrt(5))
+        integer, intent(in) :: iend      !! 0 overlap, 1 force
+        real(wp), intent(out) :: e       !! restitution coefficient
+        integer, intent(out) :: status   !! HD_OK, or HD_NOT_SUPPORTED where there is no value
+        real(wp) :: a, w2, w, r
+        e = 0.0_wp
+        status = HD_OK
+        a = 0.4_wp * alpha
+        ! W^2 = 4/5 - 4 alpha^2/25 = (4/25) (sqrt5 - alpha)(sqrt5 + alpha): formed from the
+        ! factor (sqrt5 - alpha) so that it keeps its relative accuracy near alpha_c
+        w2 = 0.16_wp * (hertzdamp_alpha_c_tsuji - alpha) * (hertzdamp_alpha_c_tsuji + alpha)
+        if (iend == 0) then
+            if (.not. (w2 > 0.0_wp)) then
+                status = HD_NOT_SUPPORTED
+                return
+            end if
+            e = exp(-acos(-1.0_wp) * a / sqrt(w2))
+        else
+            if (alpha < 0.0_wp) then
+                status = HD_NOT_SUPPORTED
+                return
+            end if
+            if (a == 0.0_wp) then
+                e = 1.0_wp
+            else if (w2 > 0.0_wp) then
+                w = sqrt(w2)
+                e = exp(-2.0_wp * a * atan2(w, a) / w)
+            else if (w2 < 0.0_wp) then
+                ! overdamped: atanh(r), r = |W|/a < 1; for r > 1/2 in the cancellation-free
+                ! form atanh(r) = ln((a + |W|)/w) (a^2 - |W|^2 = w^2 = 4/5)
+                w = sqrt(-w2)
+                r = w / a
+                if (r <= 0.5_wp) then
+                    e = exp(-2.0_wp * a * atanh(r) / w)
+                else
+                    e = exp(-2.0_wp * a * log((a + w) / sqrt(0.8_wp)) / w)
+                end if
+            else
+                e = exp(-2.0_wp)
+            end if
+        end if
+    end subroutine hertzdamp_tsuji_e
+
+    !> Exact inverse of the tsuji overlap end: alpha = sqrt(5) beta(e),
+    !> beta = -ln e / sqrt(pi^2 + ln^2 e) (Antypov & Elliott 2011), for 0 < e.
+    !> e >= 1 gives alpha <= 0 (energy injection, e > 1); e <= 0 gives sqrt(5) (the limit).
+    pure elemental real(wp) function hertzdamp_tsuji_alpha(e) result(alpha)
+        real(wp), intent(in) :: e   !! restitution coefficient of the overlap end
+        real(wp) :: l
+        if (.not. (e > 0.0_wp)) then
+            alpha = hertzdamp_alpha_c_tsuji
+            return
+        end if
+        l = log(e)
+        alpha = -hertzdamp_alpha_c_tsuji * l / sqrt(acos(-1.0_wp)**2 + l * l)
+    end function hertzdamp_tsuji_alpha
+
+end module hertzdamp_laws

@@ -5,7 +5,7 @@
 module hertzdamp_cmd_calibrate
     use hertzdamp, only: hertzdamp_rk, hertzdamp_end_name, HD_METHOD_FIT, HD_METHOD_RK45, HD_OK
     use hertzdamp_calibrate, only: cal_data, cal_options, cal_result, cal_check, cal_fit, cal_auto, cal_model, &
-                                   CAL_OK, CAL_BAD_DATA, CAL_NOT_IDENTIFIED, CAL_NO_CONVERGENCE, CAL_NOT_SUPPORTED
+                                   CAL_OK, CAL_BAD_DATA, CAL_NOT_IDENTIFIED, CAL_NO_CONVERGENCE
     use hertzdamp_calibrate_maps, only: cal_law_name, cal_law_q, cal_max_law, CAL_LAW_LINEAR, CAL_LAW_TSUJI
     use hertzdamp_cli, only: cli_args, cli_buffer, cli_line, parse_args, parse_real, parse_choice, fail, quit, &
                              fmt_csv, fmt_json, json_string, EXIT_USAGE, EXIT_OK, EXIT_NO_SOLUTION, EXIT_FAILURE
@@ -82,7 +82,7 @@ contains
         case (CAL_OK); code = EXIT_OK
         case (CAL_NOT_IDENTIFIED); code = EXIT_NO_SOLUTION
         case (CAL_NO_CONVERGENCE); code = EXIT_FAILURE
-        case (CAL_BAD_DATA, CAL_NOT_SUPPORTED); code = EXIT_USAGE
+        case (CAL_BAD_DATA); code = EXIT_USAGE
         case default; code = EXIT_FAILURE
         end select
     end function exit_of
@@ -134,13 +134,8 @@ contains
 
         if (law < 0) then
             call cal_auto(dat, o, res, chosen)
-            if (chosen < 0) then
-                ! no law could be fitted: the first failure that is not "not supported"
-                do i = 0, cal_max_law
-                    if (res(i)%status /= CAL_NOT_SUPPORTED) call fail(exit_of(res(i)%status), res(i)%message)
-                end do
-                call fail(exit_of(res(0)%status), res(0)%message)
-            end if
+            ! no law could be fitted: say why the first one failed
+            if (chosen < 0) call fail(exit_of(res(0)%status), res(0)%message)
             order = [chosen, pack([(i, i=0, cal_max_law)], [(i /= chosen, i=0, cal_max_law)])]
         else
             call cal_fit(dat, law, o, res(law))
@@ -365,7 +360,6 @@ contains
         character(len=:), allocatable :: s
         select case (res%status)
         case (CAL_OK); s = 'ok'
-        case (CAL_NOT_SUPPORTED); s = 'not-supported'
         case (CAL_NO_CONVERGENCE); s = 'no-convergence'
         case (CAL_NOT_IDENTIFIED); s = 'not-identified'
         case default; s = 'failed'
@@ -441,10 +435,6 @@ contains
         call buf%add(s)
         s = '# mass ' // g(o%mass) // ' kg; end ' // hertzdamp_end_name(o%iend) // '; method ' // &
             trim(merge('fit ', 'rk45', o%method == HD_METHOD_FIT))
-        do i = 1, size(order)
-            if (res(order(i))%status == CAL_OK .and. res(order(i))%method /= o%method) s = s // ' (' // &
-                cal_law_name(order(i)) // ': rk45, the library has no fitted map of it yet)'
-        end do
         call buf%add(s)
         if (res(l)%k_fitted) then
             call buf%add('# fitted: k and d (e identifies c = d k^(-2(1+q)/5), the contact times k)')
@@ -541,7 +531,6 @@ contains
             ok = res(l)%status == CAL_OK
             call buf%add('    {')
             call buf%add('      "damping": ' // json_string(cal_law_name(l)) // ', "q": ' // fmt_json(cal_law_q(l)) // &
-                         ', "method": ' // json_string(trim(merge('fit ', 'rk45', res(l)%method == HD_METHOD_FIT))) // &
                          ', "chosen": ' // trim(merge('true ', 'false', l == chosen)) // ', "status": ' // &
                          json_string(status_name(res(l))) // ', "message": ' // json_string(res(l)%message) // &
                          ', "note": ' // json_string(res(l)%note) // ',')

@@ -33,12 +33,8 @@ program test_calibrate
 
     s = new_suite('test_calibrate')
     call test_gamma_q()
-    call test_derivatives()
     do law = 0, cal_max_law
-        if (cal_law_supported(law, HD_METHOD_RK45) /= HD_OK) then
-            print '(a)', 'law ' // cal_law_name(law) // ': not in the library yet, not tested'
-            cycle
-        end if
+        call test_derivatives(law)
         call test_noise_free(law, HD_END_OVERLAP)
         call test_noise_free(law, HD_END_FORCE)
         call test_coverage(law)
@@ -76,25 +72,16 @@ contains
         x = sqrt(-2.0_wp * log(u1)) * cos(2.0_wp * pi * u2)
     end function normal
 
-    !> e and T_c of law `law` for k, d, m at speeds u by the reference integrator.
-    !> alpha from its definition d t* (u t*)^q / m, t* = (m/(k u^(1/2)))^(2/5)
-    !> (for the linear law through the core's dimensional forward map).
+    !> e and T_c of law `law` for k, d, m at speeds u by the reference integrator
+    !> (the core's dimensional forward map: alpha = d t* (u t*)^q / m computed there).
     subroutine rk45_data(law, iend, k, d, m, u, e, tc)
         integer, intent(in) :: law, iend
         real(wp), intent(in) :: k, d, m, u(:)
         real(wp), intent(out) :: e(:), tc(:)
-        real(wp) :: alpha, tstar, zm, tau, de, dtau, q
+        real(wp) :: alpha, tstar, zm
         integer :: i, st
-        q = cal_law_q(law)
         do i = 1, size(u)
-            if (law == CAL_LAW_LINEAR) then
-                call hertzdamp_forward_dim(k, d, m, u(i), iend, HD_METHOD_RK45, alpha, tstar, e(i), tc(i), zm, st)
-            else
-                tstar = (m / (k * sqrt(u(i))))**0.4_wp
-                alpha = d * tstar * (u(i) * tstar)**q / m
-                call cal_forward(law, iend, HD_METHOD_RK45, alpha, e(i), tau, de, dtau, st)
-                tc(i) = tstar * tau
-            end if
+            call hertzdamp_forward_dim(k, d, m, u(i), iend, HD_METHOD_RK45, alpha, tstar, e(i), tc(i), zm, st, law=law)
             if (st /= HD_OK) error stop 'rk45_data: the reference integrator failed'
         end do
     end subroutine rk45_data
@@ -131,46 +118,54 @@ contains
     end subroutine test_gamma_q
 
     !> The exact derivative of the fit against central differences of the core's fit
-    !> (inside a piece: h = 1e-5 alpha) and of rk45 (tol 1e-14); rk45 differences (the
-    !> `rk45` method) against the fit derivative.
-    subroutine test_derivatives()
-        real(wp) :: a, h, e, tau, de, dtau, ep, tp, em, tm, worst(3), e2, t2, de2, dt2, amax, gap
+    !> (h = 1e-5 of alpha, and of alpha_c - alpha for an overlap end with alpha_c) and
+    !> of rk45 (tol 1e-14, h = 1e-4 of the same); the rk45 method's differences against
+    !> the fit derivative.  alpha over the fitted range of each law and end (e >= 1e-5).
+    subroutine test_derivatives(law)
+        integer, intent(in) :: law
+        real(wp) :: a, h, e, tau, de, dtau, ep, tp, em, tm, worst(3), e2, t2, de2, dt2, amax(0:1), gap, ac
         integer :: iend, i, st, sp, sm, st2
         type(hertzdamp_collision) :: rp, rm
+        character(len=:), allocatable :: tag
+        ! largest alpha of the fitted forward maps: overlap, force
+        select case (law)
+        case (CAL_LAW_LINEAR); amax = [1.12_wp, 52.0_wp]
+        case (CAL_LAW_TSUJI); amax = [2.15_wp, 350.0_wp]
+        case default; amax = [13.8_wp, 1170.0_wp]
+        end select
         do iend = HD_END_OVERLAP, HD_END_FORCE
+            tag = ' (' // cal_law_name(law) // ', ' // hertzdamp_end_name(iend) // ')'
             worst = 0.0_wp
-            amax = merge(1.12_wp, 50.0_wp, iend == HD_END_OVERLAP)
+            ac = huge(1.0_wp)
+            if (iend == HD_END_OVERLAP) ac = hertzdamp_law_alpha_c(law)
             do i = 1, 97
-                a = amax * (real(i, wp) / 97.0_wp)**2
-                call cal_forward(CAL_LAW_LINEAR, iend, HD_METHOD_FIT, a, e, tau, de, dtau, st)
-                ! steps small against alpha and, for the overlap, against alpha_c - alpha
-                gap = a
-                if (iend == HD_END_OVERLAP) gap = min(a, hertzdamp_fit_alpha_c - a)
+                a = amax(iend) * (real(i, wp) / 97.0_wp)**2
+                call cal_forward(law, iend, HD_METHOD_FIT, a, e, tau, de, dtau, st)
+                gap = min(a, ac - a)
                 h = 1.0e-5_wp * gap
-                call hertzdamp_fit_forward(a + h, iend, ep, tp, sp)
-                call hertzdamp_fit_forward(a - h, iend, em, tm, sm)
+                call hertzdamp_fit_law_forward(a + h, iend, law, ep, tp, sp)
+                call hertzdamp_fit_law_forward(a - h, iend, law, em, tm, sm)
                 if (st /= HD_OK .or. sp /= HD_OK .or. sm /= HD_OK) then
                     worst = huge(1.0_wp)
                     exit
                 end if
                 worst(1) = max(worst(1), abs(de - (ep - em) / (2 * h)) / abs(de), &
                                abs(dtau - (tp - tm) / (2 * h)) / abs(dtau))
-                ! the reference integrator, tol 1e-14
                 h = 1.0e-4_wp * gap
-                rp = hertzdamp_rk45_collide(a + h, iend, 1.0e-14_wp)
-                rm = hertzdamp_rk45_collide(a - h, iend, 1.0e-14_wp)
+                rp = hertzdamp_rk45_collide(a + h, iend, 1.0e-14_wp, law)
+                rm = hertzdamp_rk45_collide(a - h, iend, 1.0e-14_wp, law)
                 worst(2) = max(worst(2), abs(de - (rp%e - rm%e) / (2 * h)) / abs(de), &
                                abs(dtau - (rp%tau_c - rm%tau_c) / (2 * h)) / abs(dtau))
-                call cal_forward(CAL_LAW_LINEAR, iend, HD_METHOD_RK45, a, e2, t2, de2, dt2, st2)
+                call cal_forward(law, iend, HD_METHOD_RK45, a, e2, t2, de2, dt2, st2)
                 worst(3) = max(worst(3), rel_err(e2, e), rel_err(t2, tau), rel_err(de2, de), rel_err(dt2, dtau))
                 if (st2 /= HD_OK) worst(3) = huge(1.0_wp)
             end do
-            print '(a,a8,3es10.2)', 'derivatives (linear): fit vs differences of fit, of rk45; rk45 method: ', &
-                hertzdamp_end_name(iend), worst
-            call s%check(worst(1) < 1.0e-6_wp, 'fit derivative = differences of the fit (' // hertzdamp_end_name(iend) // ')')
-            call s%check(worst(2) < 1.0e-6_wp, 'fit derivative = differences of rk45 (' // hertzdamp_end_name(iend) // ')')
-            call s%check(worst(3) < 1.0e-6_wp, 'rk45 method: values and differences (' // hertzdamp_end_name(iend) // ')')
+            print '(a,3es10.2)', 'derivatives: fit vs differences of fit, of rk45; rk45 method' // tag // ': ', worst
+            call s%check(worst(1) < 1.0e-6_wp, 'fit derivative = differences of the fit' // tag)
+            call s%check(worst(2) < 1.0e-6_wp, 'fit derivative = differences of rk45' // tag)
+            call s%check(worst(3) < 1.0e-6_wp, 'rk45 method: values and differences' // tag)
         end do
+        if (law /= CAL_LAW_LINEAR) return
         call cal_forward(CAL_LAW_LINEAR, HD_END_OVERLAP, HD_METHOD_FIT, 1.2_wp, e, tau, de, dtau, st)
         call s%check(st == HD_NO_REBOUND .and. e == 0.0_wp .and. tau == 0.0_wp, 'alpha > alpha_c: no rebound, zeros')
         call cal_forward(CAL_LAW_LINEAR, HD_END_FORCE, HD_METHOD_FIT, 60.0_wp, e, tau, de, dtau, st)

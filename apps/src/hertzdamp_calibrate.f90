@@ -33,7 +33,7 @@
 !> Nothing is printed and nothing stops: a status (CAL_*) and a one-line message.
 module hertzdamp_calibrate
     use hertzdamp_kinds, only: hertzdamp_rk
-    use hertzdamp_status, only: HD_OK, HD_NOT_SUPPORTED, HD_END_OVERLAP, HD_END_FORCE, hertzdamp_message
+    use hertzdamp_status, only: HD_OK, HD_END_OVERLAP, HD_END_FORCE
     use hertzdamp_methods, only: HD_METHOD_FIT, HD_METHOD_RK45
     use hertzdamp_rk45, only: hertzdamp_rk45_default_tol
     use hertzdamp_calibrate_maps, only: cal_forward, cal_law_name, cal_law_q, cal_law_speed_exponent, &
@@ -48,8 +48,7 @@ module hertzdamp_calibrate
     integer, parameter, public :: CAL_BAD_DATA = 1        !! invalid values (NaN, u <= 0, e outside (0, 1], ...)
     integer, parameter, public :: CAL_NOT_IDENTIFIED = 2  !! the data cannot determine the parameters
     integer, parameter, public :: CAL_NO_CONVERGENCE = 3  !! the least-squares iteration did not converge
-    integer, parameter, public :: CAL_NOT_SUPPORTED = 4   !! law or method not available in the library
-    integer, parameter, public :: CAL_FAILED = 5          !! the forward map or LAPACK failed
+    integer, parameter, public :: CAL_FAILED = 4          !! the forward map or LAPACK failed
 
     !> Largest |ln| of a parameter or of alpha the fit accepts (beyond: no physical meaning).
     real(wp), parameter :: ln_limit = 200.0_wp
@@ -77,7 +76,7 @@ module hertzdamp_calibrate
         real(wp) :: mass = 0.0_wp             !! effective mass m [kg], > 0
         real(wp) :: k_known = 0.0_wp          !! > 0: the stiffness is known and only d is fitted
         integer :: iend = HD_END_OVERLAP      !! contact-end definition
-        integer :: method = HD_METHOD_FIT     !! HD_METHOD_FIT (rk45 for a law without a fit) or HD_METHOD_RK45
+        integer :: method = HD_METHOD_FIT     !! HD_METHOD_FIT or HD_METHOD_RK45 (checking)
         real(wp) :: tol = hertzdamp_rk45_default_tol !! rk45 tolerance
         integer :: max_iter = 100             !! Levenberg-Marquardt iterations
         real(wp) :: xtol = 0.0_wp             !! convergence (GN correction in ln); 0: 1e-10 fit, 1e-9 rk45
@@ -88,7 +87,7 @@ module hertzdamp_calibrate
     !> Result of the fit of one law.
     type, public :: cal_result
         integer :: law = 0                    !! CAL_LAW_*
-        integer :: status = CAL_NOT_SUPPORTED !! CAL_OK or the failure
+        integer :: status = CAL_FAILED        !! CAL_OK or the failure
         character(len=:), allocatable :: message !! failure, '' on success
         character(len=:), allocatable :: note    !! warnings on success ('' if none)
         integer :: n_e = 0                    !! restitution values used
@@ -96,7 +95,6 @@ module hertzdamp_calibrate
         integer :: n_par = 0                  !! parameters fitted (1 or 2)
         integer :: dof = 0                    !! n_e + n_tc - n_par
         integer :: iterations = 0             !! Levenberg-Marquardt iterations done
-        integer :: method = HD_METHOD_FIT     !! forward maps used: fit, or rk45 (asked, or no fit for the law)
         logical :: k_fitted = .false.         !! k estimated from the contact times
         logical :: kd_known = .false.         !! k and d both known (k fitted or given)
         real(wp) :: a = 0.0_wp                !! A = alpha at u = 1 m/s [(m/s)^(-s)]
@@ -138,7 +136,7 @@ module hertzdamp_calibrate
         end subroutine dgesvd
     end interface
 
-    public :: cal_make_data, cal_check, cal_fit, cal_auto, cal_model, cal_method, cal_gamma_q
+    public :: cal_make_data, cal_check, cal_fit, cal_auto, cal_model, cal_gamma_q
 
 contains
 
@@ -367,7 +365,7 @@ contains
         integer :: it, method
         alpha = 0.0_wp
         if (e_target >= 1.0_wp) return
-        method = cal_method(law, opts%method)
+        method = opts%method
         lo = 0.0_wp
         hi = max(0.5_wp * (1.0_wp - e_target), 1.0e-12_wp)
         do it = 1, 200   ! bracket: e(lo) > e_target >= e(hi) (or hi beyond the law's range)
@@ -508,16 +506,11 @@ contains
             res%message = msg
             return
         end if
-        o%method = cal_method(law, o%method)
-        res%method = o%method
         if (.not. (o%xtol > 0.0_wp)) o%xtol = merge(1.0e-10_wp, 1.0e-9_wp * max(1.0_wp, o%tol / 1.0e-13_wp), &
                                                      o%method == HD_METHOD_FIT)
-        st = cal_law_supported(law, o%method)
-        if (st /= HD_OK) then
-            res%status = merge(CAL_NOT_SUPPORTED, CAL_BAD_DATA, st == HD_NOT_SUPPORTED)
-            res%message = 'the ' // cal_law_name(law) // ' law: ' // hertzdamp_message(st)
-            if (st == HD_NOT_SUPPORTED) res%message = 'the ' // cal_law_name(law) // &
-                ' damping law is not in the library yet'
+        if (cal_law_supported(law, o%method) /= HD_OK) then
+            res%status = CAL_BAD_DATA
+            res%message = 'unknown damping law or method'
             return
         end if
         n = size(dat%u)
@@ -695,8 +688,8 @@ contains
     end subroutine cal_fit
 
     !> Fit every law and choose the one with the smallest AIC.  res(law) holds each
-    !> fit (laws the library lacks have status CAL_NOT_SUPPORTED); chosen = the law, or
-    !> -1 when no law could be fitted (each res(law)%message tells why).
+    !> fit; chosen = the law, or -1 when no law could be fitted (each res(law)%message
+    !> tells why).
     subroutine cal_auto(dat, opts, res, chosen)
         type(cal_data), intent(in) :: dat                 !! measurements
         type(cal_options), intent(in) :: opts             !! settings
@@ -743,16 +736,6 @@ contains
         end if
     end subroutine cal_auto
 
-    !> The method used for a law: `fit` becomes `rk45` for a law the library has no
-    !> fitted map of yet (the reference integrator: the same answer, slower).
-    pure integer function cal_method(law, method) result(used)
-        integer, intent(in) :: law      !! CAL_LAW_*
-        integer, intent(in) :: method   !! HD_METHOD_FIT or HD_METHOD_RK45
-        used = method
-        if (method == HD_METHOD_FIT .and. cal_law_supported(law, HD_METHOD_FIT) == HD_NOT_SUPPORTED .and. &
-            cal_law_supported(law, HD_METHOD_RK45) == HD_OK) used = HD_METHOD_RK45
-    end function cal_method
-
     !> The fitted model at impact speeds u: e, and T_c when k is known (tc = 0
     !> otherwise).  status HD_OK or the forward map's failure (then e = tc = 0 there).
     pure elemental subroutine cal_model(law, opts, a, k, u, e, tc, status)
@@ -766,8 +749,8 @@ contains
         integer, intent(out) :: status          !! HD_OK or the failure
         real(wp) :: tau, de, dtau
         tc = 0.0_wp
-        call cal_forward(law, opts%iend, cal_method(law, opts%method), a * u**cal_law_speed_exponent(law), e, tau, &
-                         de, dtau, status, opts%tol)
+        call cal_forward(law, opts%iend, opts%method, a * u**cal_law_speed_exponent(law), e, tau, de, dtau, status, &
+                         opts%tol)
         if (status == HD_OK .and. k > 0.0_wp) tc = (opts%mass / (k * sqrt(u)))**0.4_wp * tau
     end subroutine cal_model
 

@@ -12,6 +12,7 @@ module hertzdamp_cmd_calibrate
     use hertzdamp_cli_output, only: out_table, format_choices, FORMAT_TEXT, FORMAT_CSV, FORMAT_JSON
     use hertzdamp_cli_plot, only: plot_check_target, plot_run, plot_temp_name, gp_string
     use hertzdamp_cli_help, only: wants_help
+    use hertzdamp_cli_materials, only: cli_contact, parse_contact, contact_options, contact_flags
     use, intrinsic :: iso_fortran_env, only: output_unit, int64
     implicit none
     private
@@ -28,7 +29,9 @@ module hertzdamp_cmd_calibrate
 
     character(len=*), parameter :: nl = new_line('a')
     character(len=*), parameter :: help_text = &
-        'Usage: hertzdamp calibrate FILE --mass M [--k K] [--damping D] [options]' // nl // &
+        'Usage: hertzdamp calibrate FILE (--mass M | --radius R --density RHO [--wall])' // nl // &
+        '                 [--k-phys K | --youngs-modulus E --poisson-ratio NU] [--damping D]' // nl // &
+        '                 [options]' // nl // &
         '' // nl // &
         'Fits the damped-Hertz model m zeta'''' = -k zeta^(3/2) - d zeta^q zeta'' to measured' // nl // &
         'restitution coefficients e(u), and contact times T_c(u), at several impact speeds u' // nl // &
@@ -43,10 +46,14 @@ module hertzdamp_cmd_calibrate
         '  sigma_tc   standard uncertainty of tc [s] (with sigma_e when tc is given)' // nl // &
         'At least two different speeds.  With e only the data identify the combination' // nl // &
         'c = d k^(-2(1+q)/5) (alpha = c m^((2q-3)/5) u^((4q-1)/5)), not k and d apart:' // nl // &
-        'give --k, or contact times, for both.' // nl // &
+        'give contact times, or the stiffness (--k-phys or elastic constants), for both.' // nl // &
         '' // nl // &
-        '  --mass M        effective mass m [kg]' // nl // &
-        '  --k K           known Hertz stiffness [N m^-3/2]: only d is fitted' // nl // &
+        '  --mass M        effective mass m* [kg], or from the materials as in invert:' // nl // &
+        '  --radius R --density RHO [--radius2 R2 --density2 RHO2 | --wall]' // nl // &
+        '  --k-phys K      the physical stiffness [N m^-3/2], or from the elastic constants' // nl // &
+        '  --youngs-modulus E --poisson-ratio NU [--youngs-modulus2 E2 --poisson-ratio2 NU2]' // nl // &
+        '                  (with --radius): without contact times the fit takes k = k_phys' // nl // &
+        '                  and gives d; with contact times k is fitted, k_phys shown beside' // nl // &
         '  --damping D     linear (q = 0), tsuji (q = 1/4), kuwabara-kono (q = 1/2) or' // nl // &
         '                  auto (default): every law, the one with the smallest AIC chosen' // nl // &
         '                  (AIC = chi2 + 2p with sigmas, n ln(RSS/n) + 2p without; all laws' // nl // &
@@ -91,6 +98,7 @@ contains
         type(cli_args) :: args
         type(cal_data) :: dat
         type(cal_options) :: o
+        type(cli_contact) :: ct
         type(cal_result) :: res(0:cal_max_law)
         character(len=:), allocatable :: file, plot, terminal, dname, msg
         integer :: law, chosen, fmt, st, i
@@ -100,17 +108,13 @@ contains
             write (output_unit, '(a)') help_text
             call quit(EXIT_OK)
         end if
-        call parse_args(2, '--mass --k --damping --end --method --tol --format --plot', '', args, &
+        call parse_args(2, '--damping --end --method --tol --format --plot ' // contact_options, contact_flags, args, &
                         allow_positional=.true.)
         if (.not. allocated(args%positional)) call fail(EXIT_USAGE, 'missing data file (see --help)')
         file = args%positional
-        if (.not. args%has('--mass')) call fail(EXIT_USAGE, 'missing option --mass (see --help)')
-        o%mass = parse_real(args%get('--mass', ''), '--mass')
-        if (.not. (o%mass > 0.0_wp)) call fail(EXIT_USAGE, '--mass must be positive')
-        if (args%has('--k')) then
-            o%k_known = parse_real(args%get('--k', ''), '--k')
-            if (.not. (o%k_known > 0.0_wp)) call fail(EXIT_USAGE, '--k must be positive')
-        end if
+        call parse_contact(args, ct)
+        if (.not. ct%has_mass) call fail(EXIT_USAGE, 'missing option --mass (or --radius with --density) (see --help)')
+        o%mass = ct%mass
         dname = args%get('--damping', 'auto')
         law = parse_choice(dname, 'linear tsuji kuwabara-kono auto', 'damping law (--damping)') - 1
         if (law > cal_max_law) law = -1   ! auto
@@ -129,6 +133,8 @@ contains
         if (args%has('--plot')) call plot_check_target(plot, terminal)
 
         call read_data(file, dat)
+        ! the physical stiffness is the known k when the data have no contact times
+        if (ct%has_kphys .and. .not. any(dat%has_tc)) o%k_known = ct%k_phys
         call cal_check(dat, o, st, msg)
         if (st /= CAL_OK) call fail(exit_of(st), file // ': ' // msg)
 
@@ -148,9 +154,9 @@ contains
         case (FORMAT_CSV)
             call summary_table(res, order, chosen, law < 0, dat%weighted, fmt, buf)
         case (FORMAT_JSON)
-            call write_json(file, dat, o, res, order, chosen, law < 0, buf)
+            call write_json(file, dat, o, ct, res, order, chosen, law < 0, buf)
         case default
-            call write_text(file, dat, o, res, order, chosen, law < 0, buf)
+            call write_text(file, dat, o, ct, res, order, chosen, law < 0, buf)
         end select
         if (args%has('--plot')) call write_plot(dat, o, res, order, plot, terminal)
         call buf%flush_to_stdout()
@@ -415,10 +421,11 @@ contains
         call t%render(fmt, buf)
     end subroutine summary_table
 
-    subroutine write_text(file, dat, o, res, order, chosen, auto, buf)
+    subroutine write_text(file, dat, o, ct, res, order, chosen, auto, buf)
         character(len=*), intent(in) :: file
         type(cal_data), intent(in) :: dat
         type(cal_options), intent(in) :: o
+        type(cli_contact), intent(in) :: ct
         type(cal_result), intent(in) :: res(0:)
         integer, intent(in) :: order(:), chosen
         logical, intent(in) :: auto
@@ -433,13 +440,14 @@ contains
         s = s // ' at speeds ' // g(minval(dat%u)) // ' to ' // g(maxval(dat%u)) // ' m/s, '
         s = s // trim(merge('weighted by the given sigmas', 'no sigmas given (unweighted)', dat%weighted))
         call buf%add(s)
-        s = '# mass ' // g(o%mass) // ' kg; end ' // hertzdamp_end_name(o%iend) // '; method ' // &
+        s = '# mass ' // g(o%mass) // ' kg (' // ct%description // '); end ' // hertzdamp_end_name(o%iend) // &
+            '; method ' // &
             trim(merge('fit ', 'rk45', o%method == HD_METHOD_FIT))
         call buf%add(s)
         if (res(l)%k_fitted) then
             call buf%add('# fitted: k and d (e identifies c = d k^(-2(1+q)/5), the contact times k)')
         else if (res(l)%kd_known) then
-            call buf%add('# fitted: d, with k = ' // g(o%k_known) // ' given')
+            call buf%add('# fitted: d, with k = k_phys = ' // g(o%k_known) // ' (no contact times to fit k)')
         else
             call buf%add('# fitted: c = d k^(-2(1+q)/5) only: without contact times or --k, e cannot tell k')
         end if
@@ -469,6 +477,9 @@ contains
                          ' (the uncertainties are scaled by it)')
         end if
         if (res(l)%k_fitted) call buf%add('# ' // cal_law_name(l) // ': correlation of k and d ' // g(res(l)%corr_kd))
+        if (res(l)%k_fitted .and. ct%has_kphys) call buf%add('# ' // cal_law_name(l) // ': fitted k / k_phys = ' // &
+                                                              g(res(l)%k / ct%k_phys) // ' (k_phys = ' // &
+                                                              g(ct%k_phys) // ')')
         call buf%add('# residuals of the ' // cal_law_name(l) // ' law:')
         call residual_table(dat, res(l), t)
         call t%render(FORMAT_TEXT, buf)
@@ -499,10 +510,11 @@ contains
         end do
     end subroutine residual_table
 
-    subroutine write_json(file, dat, o, res, order, chosen, auto, buf)
+    subroutine write_json(file, dat, o, ct, res, order, chosen, auto, buf)
         character(len=*), intent(in) :: file
         type(cal_data), intent(in) :: dat
         type(cal_options), intent(in) :: o
+        type(cli_contact), intent(in) :: ct
         type(cal_result), intent(in) :: res(0:)
         integer, intent(in) :: order(:), chosen
         logical, intent(in) :: auto
@@ -514,7 +526,9 @@ contains
         call buf%add('  "command": "calibrate",')
         call buf%add('  "file": ' // json_string(file) // ',')
         call buf%add('  "mass": ' // fmt_json(o%mass) // ',')
-        call buf%add('  "k_given": ' // opt(o%k_known, o%k_known > 0.0_wp) // ',')
+        call buf%add('  "contact": ' // json_string(ct%description) // ',')
+        call buf%add('  "k_phys": ' // opt(ct%k_phys, ct%has_kphys) // ',')
+        call buf%add('  "k_fixed": ' // trim(merge('true ', 'false', o%k_known > 0.0_wp)) // ',')
         call buf%add('  "end": ' // json_string(hertzdamp_end_name(o%iend)) // ',')
         call buf%add('  "method": ' // json_string(trim(merge('fit ', 'rk45', o%method == HD_METHOD_FIT))) // ',')
         if (auto) then

@@ -15,7 +15,8 @@ K=3.0e9 D=2.5 M=2.0e-3
   echo "velocity,e,tc"
   for u in 0.2 0.5 1 2 4 8; do
     "$BIN" forward --k $K --d $D --mass $M --velocity $u --method rk45 --format csv |
-      awk -F, -v u=$u 'NR == 2 { print u "," $3 "," $4 }'
+      awk -F, -v u=$u 'NR == 1 { for (i = 1; i <= NF; i++) c[$i] = i }
+                       NR == 2 { print u "," $c["e"] "," $c["t_c"] }'
   done
 } >"$T/etc.csv"
 cut -d, -f1,2 "$T/etc.csv" >"$T/e.csv"
@@ -52,9 +53,15 @@ check "e only: rms_residual_tc empty" test -z "$(col rms_residual_tc 2)"
 check "e only: c = d k^(-2/5) to 1e-8" close_to "$(col c 2)" "$C" 1e-8
 check "e only: no sigmas, so no chi2/dof and p-value" test -z "$(col chi2_dof 2)$(col p_value 2)"
 
-run calibrate "$T/e.csv" --mass $M --k $K --damping linear --format csv
-check "e + known k: d to 1e-8" close_to "$(col d 2)" $D 1e-8
-check "e + known k: k as given, k_err empty" test -z "$(col k_err 2)"
+run calibrate "$T/e.csv" --mass $M --k-phys $K --damping linear --format csv
+check "e + k_phys: d to 1e-8" close_to "$(col d 2)" $D 1e-8
+check "e + k_phys: k = k_phys, k_err empty" test -z "$(col k_err 2)" -a "$(col k 2)" != ""
+run calibrate "$T/etc.csv" --mass $M --k-phys 1e12 --damping linear --format csv
+check "e+tc + k_phys: k still fitted from the contact times" close_to "$(col k 2)" $K 1e-8
+# the mass from the materials: a sphere of radius 1 mm against a wall, rho = M/((4/3) pi R^3)
+RHO=$(awk -v m=$M 'BEGIN { printf "%.17g", m / (4.0 / 3.0 * 3.14159265358979324 * 1e-9) }')
+run calibrate "$T/etc.csv" --radius 1e-3 --density "$RHO" --wall --damping linear --format csv
+check "--radius --density --wall: the same k as --mass (1e-8)" close_to "$(col k 2)" $K 1e-8
 
 run calibrate "$T/etc.csv" --mass $M --damping linear --method rk45 --format csv
 check "--method rk45: k to 1e-9" close_to "$(col k 2)" $K 1e-9
@@ -131,6 +138,7 @@ expect_fail 2 "/dev/zero" calibrate /dev/zero --mass $M
 expect_fail 2 "missing file" calibrate "$T/nonexistent.csv" --mass $M
 expect_fail 2 "missing --mass" calibrate "$T/etc.csv"
 expect_fail 2 "--mass 0" calibrate "$T/etc.csv" --mass 0
+expect_fail 2 "--mass with --density" calibrate "$T/etc.csv" --mass $M --radius 1e-3 --density 7800
 expect_fail 2 "--mass nan" calibrate "$T/etc.csv" --mass nan
 expect_fail 2 "unknown damping law" calibrate "$T/etc.csv" --mass $M --damping hertz
 expect_fail 2 "--tol without rk45" calibrate "$T/etc.csv" --mass $M --tol 1e-10
@@ -151,7 +159,7 @@ fi
 
 # the shipped example (README "Calibrating from measured restitution")
 if [ -f data/calibrate/example.csv ]; then
-  run calibrate data/calibrate/example.csv --mass "$(sed -n 's/^# mass = //p' data/calibrate/example.csv)" --format csv
+  run calibrate data/calibrate/example.csv --radius 1e-3 --density 7800 --wall --format csv
   check "example: exit 0" test "$RC" -eq 0
   check "example: the stored report reproduces (1e-9)" python3 - "$OUT" data/calibrate/example_report.csv <<'EOF'
 import csv, sys

@@ -12,6 +12,7 @@ module hertzdamp_cmd_calibrate
     use hertzdamp_cli_output, only: out_table, format_choices, FORMAT_TEXT, FORMAT_CSV, FORMAT_JSON
     use hertzdamp_cli_plot, only: plot_check_target, plot_run, plot_temp_name, gp_string
     use hertzdamp_cli_help, only: wants_help
+    use hertzdamp_cli_text, only: g => fmt_short, itoa
     use hertzdamp_cli_materials, only: cli_contact, parse_contact, contact_options, contact_flags
     use, intrinsic :: iso_fortran_env, only: output_unit, int64
     implicit none
@@ -589,34 +590,6 @@ contains
             s = 'null'
         end if
     end function opt
-
-    function itoa(i) result(s)
-        integer, intent(in) :: i
-        character(len=:), allocatable :: s
-        character(len=16) :: b
-        write (b, '(i0)') i
-        s = trim(b)
-    end function itoa
-
-    !> A number with 6 significant digits: fixed point from 1e-3 to 1e5, else exponent.
-    function g(x) result(s)
-        real(wp), intent(in) :: x
-        character(len=:), allocatable :: s
-        character(len=32) :: b, f
-        integer :: nd
-        if (x == 0.0_wp) then
-            b = '0'
-        else if (abs(x) >= 1.0e-3_wp .and. abs(x) < 1.0e5_wp) then
-            nd = max(0, 5 - floor(log10(abs(x))))
-            write (f, '(a,i0,a)') '(f0.', nd, ')'
-            write (b, f) x
-            if (b(1:1) == '.') b = '0' // b(1:len(b) - 1)
-            if (b(1:2) == '-.') b = '-0' // b(2:len(b) - 1)
-        else
-            write (b, '(es12.5)') x
-        end if
-        s = trim(adjustl(b))
-    end function g
 
     ! ------------------------------------------------------------------ plot
 

@@ -204,6 +204,20 @@ contains
         positive = ieee_is_finite(x) .and. x > 0.0_wp
     end function positive
 
+    !> "line N: NAME must be finite and positive (got X)" when `applies` and x is not
+    !> finite and positive, else ''.
+    pure function not_positive(dat, i, name, x, applies) result(message)
+        type(cal_data), intent(in) :: dat
+        integer, intent(in) :: i
+        character(len=*), intent(in) :: name
+        real(wp), intent(in) :: x
+        logical, intent(in) :: applies
+        character(len=:), allocatable :: message
+        message = ''
+        if (applies .and. .not. positive(x)) message = at_row(dat, i) // ': ' // name // &
+            ' must be finite and positive (got ' // num(x) // ')'
+    end function not_positive
+
     !> Whether the data and options can be fitted at all, independently of the law:
     !> CAL_BAD_DATA for invalid values (non-finite, u <= 0, e outside (0, 1], tc or a
     !> sigma <= 0, mass <= 0, arrays of different sizes), CAL_NOT_IDENTIFIED when
@@ -251,33 +265,20 @@ contains
             return
         end if
         do i = 1, n
-            if (.not. positive(dat%u(i))) then
-                message = at_row(dat, i) // ': the impact speed must be finite and positive (got ' // num(dat%u(i)) // ')'
-                return
-            end if
+            message = not_positive(dat, i, 'the impact speed', dat%u(i), .true.)
+            if (len(message) > 0) return
             if (.not. positive(dat%e(i)) .or. dat%e(i) > 1.0_wp) then
                 message = at_row(dat, i) // ': e = ' // num(dat%e(i)) // ' is outside (0, 1]'
                 if (dat%e(i) > 1.0_wp .and. ieee_is_finite(dat%e(i))) message = message // &
                     ': a damped contact never returns more energy than it received'
                 return
             end if
-            if (dat%has_tc(i) .and. .not. positive(dat%tc(i))) then
-                message = at_row(dat, i) // ': the contact time must be finite and positive (got ' // &
-                          num(dat%tc(i)) // ')'
-                return
-            end if
-            if (dat%weighted) then
-                if (.not. positive(dat%sigma_e(i))) then
-                    message = at_row(dat, i) // ': sigma_e must be finite and positive (got ' // &
-                              num(dat%sigma_e(i)) // ')'
-                    return
-                end if
-                if (dat%has_tc(i) .and. .not. positive(dat%sigma_tc(i))) then
-                    message = at_row(dat, i) // ': sigma_tc must be finite and positive (got ' // &
-                              num(dat%sigma_tc(i)) // ')'
-                    return
-                end if
-            end if
+            message = not_positive(dat, i, 'the contact time', dat%tc(i), dat%has_tc(i))
+            if (len(message) > 0) return
+            message = not_positive(dat, i, 'sigma_e', dat%sigma_e(i), dat%weighted)
+            if (len(message) > 0) return
+            message = not_positive(dat, i, 'sigma_tc', dat%sigma_tc(i), dat%weighted .and. dat%has_tc(i))
+            if (len(message) > 0) return
         end do
         status = CAL_NOT_IDENTIFIED
         if (.not. (maxval(dat%u) > minval(dat%u))) then

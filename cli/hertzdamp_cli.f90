@@ -71,7 +71,7 @@ module hertzdamp_cli
         end subroutine c_exit
     end interface
 
-    public :: parse_args, parse_real, parse_real_list, parse_range, parse_sweep, required_sweep, parse_int, parse_choice
+    public :: get_arg, parse_args, parse_real, parse_real_list, parse_range, parse_sweep, required_sweep, parse_int, parse_choice
     public :: check_combinations
     public :: exit_code_of, write_failed, write_stdout
     public :: fail, quit, fmt_csv, fmt_text, fmt_json, fmt_short, json_string, csv_join, pad

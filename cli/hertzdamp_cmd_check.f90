@@ -21,7 +21,7 @@ module hertzdamp_cmd_check
     use hertzdamp_peers_deck, only: peer_materials, peer_read_deck, peer_code, peer_parameter_problem, &
                                     LAMMPS_2021, LAMMPS_2023, LAMMPS_CURRENT, lammps_releases
     use hertzdamp_cli, only: cli_buffer, parse_real, parse_int, parse_choice, fail, quit, EXIT_USAGE, EXIT_OK, &
-                             exit_code_of, max_list_length
+                             exit_code_of, get_arg, parse_sweep
     use hertzdamp_cli_output, only: out_table, format_choices, FORMAT_TEXT
     use hertzdamp_cli_help, only: print_help, wants_help
     use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
@@ -63,7 +63,7 @@ contains
         n = command_argument_count()
         i = 2
         do while (i <= n)
-            a = arg(i)
+            a = get_arg(i)
             i = i + 1
             if (len(a) >= 2) then
                 if (a(1:2) == '--') then
@@ -90,7 +90,7 @@ contains
                           '--release', '--format')
                         if (.not. have_val) then
                             if (i > n) call fail(EXIT_USAGE, 'option ' // key // ' needs a value')
-                            val = arg(i)
+                            val = get_arg(i)
                             i = i + 1
                         end if
                     case default
@@ -872,16 +872,6 @@ contains
 
     ! ------------------------------------------------------------------ parsing helpers
 
-    !> Argument i of the command line, whole.
-    function arg(i) result(a)
-        integer, intent(in) :: i
-        character(len=:), allocatable :: a
-        integer :: l
-        call get_command_argument(i, length=l)
-        allocate (character(len=l) :: a)
-        if (l > 0) call get_command_argument(i, a)
-    end function arg
-
     !> Append the blank-separated words of s (a quoted deck line is one argument).
     subroutine split_words(s, words)
         character(len=*), intent(in) :: s
@@ -909,65 +899,16 @@ contains
         if (.not. x > 0.0_wp) call fail(EXIT_USAGE, what // ' ' // text // ': must be positive')
     end function positive
 
-    !> Impact speeds: comma-separated numbers and ranges A0:A1:N (linear) or A0:A1:logN.
+    !> Impact speeds: a sweep (numbers, A0:A1:N, A0:A1:logN), each positive.
     function parse_speeds(text) result(u)
         character(len=*), intent(in) :: text
         real(wp), allocatable :: u(:)
-        integer :: i, j
-        allocate (u(0))
-        j = 1
-        do i = 1, len(text) + 1
-            if (i <= len(text)) then
-                if (text(i:i) /= ',') cycle
-            end if
-            if (index(text(j:i - 1), ':') > 0) then
-                u = [u, speed_range(text(j:i - 1))]
-            else
-                u = [u, parse_real(text(j:i - 1), '--velocity')]
-            end if
-            if (size(u) > max_list_length) call fail(EXIT_USAGE, 'too many values for --velocity')
-            j = i + 1
-        end do
+        integer :: i
+        u = parse_sweep(text, '--velocity')
         do i = 1, size(u)
             if (.not. u(i) > 0.0_wp) call fail(EXIT_USAGE, '--velocity ' // peer_fmt(u(i)) // &
                                                ': impact speeds must be positive')
         end do
     end function parse_speeds
-
-    function speed_range(text) result(x)
-        character(len=*), intent(in) :: text
-        real(wp), allocatable :: x(:)
-        integer :: i1, i2, n, i
-        real(wp) :: a0, a1
-        logical :: logscale
-        character(len=:), allocatable :: count
-        i1 = index(text, ':')
-        i2 = index(text, ':', back=.true.)
-        if (i2 == i1) call fail(EXIT_USAGE, 'range "' // text // '" for --velocity must be A0:A1:N or A0:A1:logN')
-        a0 = parse_real(text(1:i1 - 1), '--velocity')
-        a1 = parse_real(text(i1 + 1:i2 - 1), '--velocity')
-        count = text(i2 + 1:)
-        logscale = .false.
-        if (len(count) >= 3) then
-            logscale = count(1:3) == 'log'
-            if (logscale) count = count(4:)
-        end if
-        n = parse_int(count, '--velocity (number of points in ' // text // ')')
-        if (n < 1 .or. n > max_list_length) call fail(EXIT_USAGE, 'range "' // text // '" for --velocity: ' // &
-                                                      'N must be in 1..10000')
-        if (logscale .and. .not. (a0 > 0.0_wp .and. a1 > 0.0_wp)) then
-            call fail(EXIT_USAGE, 'logarithmic range "' // text // '" for --velocity needs A0 > 0 and A1 > 0')
-        end if
-        allocate (x(n))
-        x(1) = a0
-        do i = 2, n - 1
-            if (logscale) then
-                x(i) = exp(log(a0) + (log(a1) - log(a0)) * real(i - 1, wp) / real(n - 1, wp))
-            else
-                x(i) = a0 + (a1 - a0) * (real(i - 1, wp) / real(n - 1, wp))
-            end if
-        end do
-        if (n > 1) x(n) = a1
-    end function speed_range
 
 end module hertzdamp_cmd_check

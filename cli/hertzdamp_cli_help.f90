@@ -46,6 +46,10 @@ module hertzdamp_cli_help
         'nothing on stdout, one line on stderr, exit 2 (bad input), 3 or 4 (failed).'
 
     character(len=*), parameter :: method_help = &
+        '  --damping LAW         damping force d zeta^q zeta'': linear (q = 0, default; d in' // nl // &
+        '                        kg/s), tsuji (q = 1/4, e the same at every speed) or' // nl // &
+        '                        kuwabara-kono (q = 1/2); other laws: methods fit and rk45' // nl // &
+        '                        (inverse: fit, iterative).  doc/damping-laws.md' // nl // &
         '  --end overlap|force   contact end: the overlap returns to zero (default), or' // nl // &
         '                        the total contact force does' // nl // &
         '  --accuracy A          relative accuracy asked of series and pade (default' // nl // &
@@ -92,6 +96,7 @@ module hertzdamp_cli_help
         '  bench      work-precision report of every method (forward, inverse, throughput)' // nl // &
         '  scene      run a DEM scene file (namelist), the inverse rule at every contact' // nl // &
         '  check      what a peer engine''s deck really does: e, contact time, time step, a fix' // nl // &
+        '  calibrate  k, d and the damping law fitted to measured e(u) and T_c(u) (CSV)' // nl // &
         '' // nl // &
         'Definitions (SI units; body 1 and body 2 touch):' // nl // &
         '  effective mass m*     m1 m2 / (m1 + m2); against a wall, or a particle held' // nl // &
@@ -146,14 +151,16 @@ module hertzdamp_cli_help
         '' // nl // list_syntax // nl // nl // status_help
 
     character(len=*), parameter :: constants = &
-        'Usage: hertzdamp constants [--format text|csv|json]' // nl // &
+        'Usage: hertzdamp constants [--damping LAW] [--format text|csv|json]' // nl // &
         '' // nl // &
         '  alpha_c  critical damping of the overlap definition (no rebound for' // nl // &
         '           alpha >= alpha_c), by bisection on the integrator''s no-rebound test' // nl // &
+        '           (linear; tsuji: sqrt(5); kuwabara-kono: none, empty)' // nl // &
         '  tau_c0   elastic contact duration (4/5)(5/4)^(2/5) B(2/5,1/2), units of t*' // nl // &
         '  z_max0   elastic deepest overlap (5/4)^(2/5), units of u_in t*' // nl // &
-        '  e1       restitution slope: e = 1 - e1 alpha + O(alpha^2)' // nl // &
+        '  e1       restitution slope: e = 1 - e1 alpha + O(alpha^2) (of the law)' // nl // &
         '' // nl // &
+        '  --damping LAW  linear (default), tsuji or kuwabara-kono' // nl // &
         '  --format F   text (aligned, default), csv or json' // nl // &
         '  --help       this text' // nl // &
         'CSV columns: name,value.'

@@ -154,6 +154,7 @@ contains
         character(len=*), intent(in) :: columns   !! comma-separated column names
         character(len=*), intent(in) :: units     !! the units of the columns, one line
         call t%set_columns(columns)
+        call t%meta('damping', c%law_name)
         call t%meta('end', hertzdamp_end_name(c%iend))
         call t%meta('method', c%method_name)
         call t%meta('contact', ct%description)

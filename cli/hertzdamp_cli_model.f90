@@ -1,12 +1,10 @@
 !> The options that choose the model and the method, shared by the commands:
-!> `--end`, `--method`, `--tol`, `--order`, `--accuracy`, `--format`.
+!> `--damping`, `--end`, `--method`, `--tol`, `--order`, `--accuracy`, `--format`.
 !>
 !> A command lists `model_options` among its valued options, calls
-!> `parse_model(args, c, inverse)` and passes `c%iend`, `c%method`, `c%tol`,
+!> `parse_model(args, c, inverse)` and passes `c%law`, `c%iend`, `c%method`, `c%tol`,
 !> `c%order`, `c%accuracy` to the library.  A new model option is one name in
-!> `model_options`, one field in `model_opts` and one line in `parse_model`; e.g. a
-!> damping law: `' --damping'` here and
-!> `c%damping = parse_choice(args%get('--damping', 'linear'), 'linear tsuji kuwabara-kono', '--damping')`.
+!> `model_options`, one field in `model_opts` and one line in `parse_model`.
 !>
 !> The messages of this module say what a method accepts and which method to use
 !> instead: for the forward commands fit or rk45, for the inverse fit or iterative.
@@ -16,8 +14,8 @@ module hertzdamp_cli_model
                          hertzdamp_fit_e_min_overlap, hertzdamp_fit_e_min_force, hertzdamp_compact_e_min_overlap, &
                          hertzdamp_compact_e_min_force, hertzdamp_pade_alpha_max, hertzdamp_fit_alpha_max_force, &
                          hertzdamp_compact_alpha_max_force, hertzdamp_forward_alpha, hertzdamp_collision, &
-                         hertzdamp_method_code, &
-                         HD_END_OVERLAP, HD_METHOD_RK45, HD_METHOD_SERIES, HD_METHOD_PADE, &
+                         hertzdamp_method_code, hertzdamp_law_code, hertzdamp_fit_law_e_min, &
+                         HD_DAMPING_LINEAR, HD_END_OVERLAP, HD_METHOD_RK45, HD_METHOD_SERIES, HD_METHOD_PADE, &
                          HD_METHOD_COMPACT, HD_METHOD_FIT, HD_METHOD_ITERATIVE, HD_OK
     use hertzdamp_cli, only: cli_args, parse_real, parse_int, parse_choice, fail, EXIT_USAGE
     use hertzdamp_cli_text, only: fmt_short, itoa
@@ -28,13 +26,17 @@ module hertzdamp_cli_model
     integer, parameter :: wp = hertzdamp_rk
 
     !> The valued options parse_model reads (list them in parse_args).
-    character(len=*), parameter, public :: model_options = '--end --method --tol --order --accuracy --format'
+    character(len=*), parameter, public :: model_options = '--damping --end --method --tol --order --accuracy --format'
+    !> The damping laws (hertzdamp_laws): damping force d zeta^q zeta', q = 0, 1/4, 1/2.
+    character(len=*), parameter, public :: law_choices = 'linear tsuji kuwabara-kono'
     !> Methods of the forward commands (table, forward) and of the inverse (invert, timestep).
     character(len=*), parameter, public :: forward_methods = 'rk45 series pade compact fit'
     character(len=*), parameter, public :: inverse_methods = 'fit compact series pade iterative'
 
     !> The parsed model options.
     type, public :: model_opts
+        integer :: law = HD_DAMPING_LINEAR                        !! HD_DAMPING_*
+        character(len=:), allocatable :: law_name                 !! as given
         integer :: iend = HD_END_OVERLAP                          !! HD_END_*
         integer :: method = HD_METHOD_RK45                        !! HD_METHOD_*
         character(len=:), allocatable :: method_name              !! as given
@@ -46,12 +48,12 @@ module hertzdamp_cli_model
         character(len=:), allocatable :: tol_text, accuracy_text  !! as given (for the metadata)
     end type model_opts
 
-    public :: parse_model, method_accepts, instead, e_range_message
+    public :: parse_model, method_accepts, instead, e_range_message, damping_unit
 
 contains
 
-    !> Read --end, --method, --tol, --order, --accuracy, --format; exit 2 naming the
-    !> option on a bad value or one that does not apply to the method.
+    !> Read --damping, --end, --method, --tol, --order, --accuracy, --format; exit 2
+    !> naming the option on a bad value or one that does not apply to the method.
     subroutine parse_model(args, c, inverse)
         type(cli_args), intent(in) :: args
         type(model_opts), intent(out) :: c
@@ -59,6 +61,9 @@ contains
         character(len=:), allocatable :: tol_for
         integer :: k
         c%inverse = inverse
+        c%law_name = args%get('--damping', 'linear')
+        k = parse_choice(c%law_name, law_choices, 'damping law (--damping)')
+        c%law = hertzdamp_law_code(c%law_name)
         c%iend = parse_choice(args%get('--end', 'overlap'), 'overlap force', 'contact-end definition (--end)') - 1
         c%fmt = parse_choice(args%get('--format', 'text'), format_choices, 'format (--format)')
         if (inverse) then
@@ -102,11 +107,27 @@ contains
                           '(the other methods have a fixed accuracy, see --help)')
             end if
         end if
+        if (c%law /= HD_DAMPING_LINEAR .and. (c%method == HD_METHOD_SERIES .or. c%method == HD_METHOD_PADE .or. &
+                                              c%method == HD_METHOD_COMPACT)) then
+            call fail(EXIT_USAGE, '--method ' // c%method_name // ' exists for --damping linear only; ' // &
+                      'use --method fit (or ' // trim(merge('iterative', 'rk45     ', inverse)) // ') with --damping ' // &
+                      c%law_name)
+        end if
         if ((c%method == HD_METHOD_SERIES .or. c%method == HD_METHOD_PADE) .and. c%iend /= HD_END_OVERLAP) then
             call fail(EXIT_USAGE, '--method ' // c%method_name // ' supports --end overlap only: ' // &
                       'the force definition is not analytic at alpha = 0 (see doc/series.md); use --method fit')
         end if
     end subroutine parse_model
+
+    !> Unit of the damping coefficient d of the law (damping force d zeta^q zeta').
+    function damping_unit(c) result(s)
+        type(model_opts), intent(in) :: c
+        character(len=:), allocatable :: s
+        select case (c%law)
+        case (HD_DAMPING_LINEAR); s = 'kg/s'
+        case default; s = 'kg s^-1 m^-' // merge('1/4', '1/2', hertzdamp_law_code('tsuji') == c%law)
+        end select
+    end function damping_unit
 
     !> The alpha range a forward method accepts, as text.
     function method_accepts(c) result(s)
@@ -116,7 +137,11 @@ contains
         case (HD_METHOD_RK45)
             s = '-10 <= alpha <= 1e100 (overlap), 0 <= alpha <= 1e100 (force)'
         case (HD_METHOD_FIT)
-            s = 'alpha >= 0 (overlap), 0 <= alpha <= ' // fmt_short(hertzdamp_fit_alpha_max_force) // ' (force)'
+            if (c%law == HD_DAMPING_LINEAR) then
+                s = 'alpha >= 0 (overlap), 0 <= alpha <= ' // fmt_short(hertzdamp_fit_alpha_max_force) // ' (force)'
+            else
+                s = 'the alpha of e >= 1e-5 with --damping ' // c%law_name // ' (its fitted range)'
+            end if
         case (HD_METHOD_COMPACT)
             s = 'alpha >= 0 (overlap), 0 <= alpha <= ' // fmt_short(hertzdamp_compact_alpha_max_force) // ' (force)'
         case (HD_METHOD_SERIES)
@@ -172,7 +197,7 @@ contains
                 fmt_short(c%accuracy) // ' (it converges for alpha < 1); ' // instead(c)
             return
         case default
-            emin = merge(hertzdamp_fit_e_min_overlap, hertzdamp_fit_e_min_force, c%iend == HD_END_OVERLAP)
+            emin = hertzdamp_fit_law_e_min(c%law, c%iend)
         end select
         s = '--e ' // e_text // ': --method ' // c%method_name // ' accepts ' // fmt_short(emin) // ' <= e <= 1 for ' // &
             '--end ' // merge('overlap', 'force  ', c%iend == HD_END_OVERLAP)

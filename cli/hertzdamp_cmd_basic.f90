@@ -2,7 +2,8 @@
 module hertzdamp_cmd_basic
     use hertzdamp, only: hertzdamp_rk, hertzdamp_collision, hertzdamp_forward_alpha, hertzdamp_forward_dim, &
                          hertzdamp_message, hertzdamp_alpha_c, hertzdamp_tau_c0, hertzdamp_z_max0, hertzdamp_e1, &
-                         hertzdamp_end_name, hertzdamp_fit_alpha_c, hertzdamp_safe_exp, hertzdamp_alpha_max, &
+                         hertzdamp_end_name, hertzdamp_safe_exp, hertzdamp_alpha_max, hertzdamp_law_q, &
+                         hertzdamp_law_has_alpha_c, hertzdamp_law_alpha_c, hertzdamp_law_code, &
                          HD_OK, HD_NO_REBOUND, HD_END_OVERLAP, HD_METHOD_RK45, HD_METHOD_SERIES, HD_METHOD_PADE, &
                          HD_BAD_ALPHA, HD_BAD_STIFFNESS, HD_BAD_DAMPING, HD_BAD_VELOCITY, HD_BAD_MASS, &
                          HD_OUT_OF_RANGE, HD_OUTSIDE_VALIDITY, HD_INACCURATE
@@ -11,7 +12,7 @@ module hertzdamp_cmd_basic
     use hertzdamp_cli_text, only: fmt_short, itoa
     use hertzdamp_cli_output, only: out_table, format_choices
     use hertzdamp_cli_help, only: print_help, wants_help
-    use hertzdamp_cli_model, only: model_opts, parse_model, model_options, method_accepts, instead
+    use hertzdamp_cli_model, only: model_opts, parse_model, model_options, method_accepts, instead, law_choices, damping_unit
     use hertzdamp_cli_rows, only: row_log, row_kind, row_word, row_has_result
     use hertzdamp_cli_materials, only: cli_contact, parse_contact, contact_table, contact_options, contact_flags
     use hertzdamp_cli_progress, only: progress_reporter
@@ -72,11 +73,12 @@ contains
         allocate (r(size(alpha)))
         call p%start(real(size(alpha), wp), 'table', force=args%has('--progress'))
         do i = 1, size(alpha)
-            r(i) = hertzdamp_forward_alpha(alpha(i), c%iend, c%method, c%tol, c%order, c%accuracy)
+            r(i) = hertzdamp_forward_alpha(alpha(i), c%iend, c%method, c%tol, c%order, c%accuracy, c%law)
             call p%update(real(i, wp))
         end do
         call p%finish()
         call t%set_columns('alpha,e,tau_c,z_max,tau_max,status')
+        call t%meta('damping', c%law_name)
         call t%meta('end', hertzdamp_end_name(c%iend))
         call t%meta('method', c%method_name)
         if (c%method == HD_METHOD_RK45) call t%meta('tol', c%tol_text)
@@ -130,7 +132,8 @@ contains
         us = required_sweep(args, '--velocity')
         call check_combinations([size(ks), size(ds), size(us)], '--k, --d and --velocity')
         call contact_table(t, c, ct, 'k,d,velocity,mass,radius_eff,k_phys,alpha,t_star,e,t_c,zeta_max,status', &
-                           'k, k_phys [N m^-3/2], d [kg/s], velocity [m/s], mass [kg], radius_eff [m], ' // &
+                           'k, k_phys [N m^-3/2], d [' // damping_unit(c) // '], velocity [m/s], mass [kg], ' // &
+                           'radius_eff [m], ' // &
                            't_star [s], t_c [s], zeta_max [m]')
         n = 0
         call p%start(real(size(ks) * size(ds) * size(us), wp), 'forward', force=args%has('--progress'))
@@ -141,7 +144,7 @@ contains
                     d = ds(id)
                     u = us(iu)
                     call hertzdamp_forward_dim(k, d, ct%mass, u, c%iend, c%method, alpha, tstar, e, tc, zmax, status, &
-                                               c%tol, c%order, c%accuracy)
+                                               c%tol, c%order, c%accuracy, c%law)
                     have_alpha = .true.
                     have_tstar = .true.
                     if (status == HD_OUT_OF_RANGE .or. status == HD_BAD_ALPHA) then
@@ -182,9 +185,9 @@ contains
         call rows%emit(t, c%fmt)
     end subroutine cmd_forward
 
-    !> When alpha = d m^(-3/5) k^(-2/5) u^(-1/5) is too large for the method or for double
-    !> precision: no rebound with the overlap end (alpha >= alpha_c), outside the
-    !> method's range with the force end; alpha and t* reported where representable.
+    !> When alpha = d t* (u t*)^q / m is too large for the method or for double precision:
+    !> no rebound with the overlap end of a law with alpha_c (alpha >= alpha_c), outside
+    !> the method's range otherwise; alpha and t* reported where representable.
     subroutine overdamped(c, k, d, m, u, alpha, tstar, status, have_alpha, have_tstar)
         type(model_opts), intent(in) :: c
         real(wp), intent(in) :: k, d, m, u
@@ -199,13 +202,15 @@ contains
         have_tstar = .false.
         if (.not. (k > 0.0_wp .and. d > 0.0_wp .and. m > 0.0_wp .and. u > 0.0_wp)) return
         lt = 0.4_wp * (log(m) - log(k)) - 0.2_wp * log(u)
-        la = log(d) + lt - log(m)
-        if (.not. (la > log(hertzdamp_fit_alpha_c) + 1.0e-6_wp)) return
+        la = log(d) + lt - log(m) + hertzdamp_law_q(c%law) * (log(u) + lt)
+        ! a law without alpha_c (kuwabara-kono) always rebounds: the library's status stands
+        if (.not. hertzdamp_law_has_alpha_c(c%law)) return
+        if (.not. (la > log(hertzdamp_law_alpha_c(c%law)) + 1.0e-6_wp)) return
         st = HD_OK
         call hertzdamp_safe_exp(lt, tstar, st)
         have_tstar = st == HD_OK
         alpha = huge(1.0_wp)
-        if (have_tstar .and. la < log(huge(1.0_wp)) - 1.0_wp) alpha = (d / m) * tstar
+        if (have_tstar .and. la < log(huge(1.0_wp)) - 1.0_wp) alpha = exp(la)
         have_alpha = alpha < huge(1.0_wp)
         if (c%iend == HD_END_OVERLAP) then
             status = HD_NO_REBOUND
@@ -237,24 +242,31 @@ contains
 
     subroutine cmd_constants()
         type(cli_args) :: args
-        integer :: fmt, status
+        integer :: fmt, status, law
         real(wp) :: ac
         type(out_table) :: t
         type(cli_buffer) :: buf
         if (wants_help()) call print_help('constants')
-        call parse_args(2, '--format', '', args)
+        call parse_args(2, '--format --damping', '', args)
         fmt = parse_choice(args%get('--format', 'text'), format_choices, 'format (--format)')
-        call hertzdamp_alpha_c(ac, status)
-        if (status /= HD_OK) call fail(EXIT_FAILURE, 'alpha_c: ' // hertzdamp_message(status))
+        law = parse_choice(args%get('--damping', 'linear'), law_choices, 'damping law (--damping)')
+        law = hertzdamp_law_code(args%get('--damping', 'linear'))
         call t%set_columns('name,value')
+        call t%meta('damping', args%get('--damping', 'linear'))
         call t%str('alpha_c')
-        call t%num(ac)
+        if (hertzdamp_law_has_alpha_c(law)) then
+            call hertzdamp_alpha_c(ac, status, law=law)
+            if (status /= HD_OK) call fail(EXIT_FAILURE, 'alpha_c: ' // hertzdamp_message(status))
+            call t%num(ac)
+        else
+            call t%none()   ! the overlap always returns: no critical damping
+        end if
         call t%str('tau_c0')
         call t%num(hertzdamp_tau_c0())
         call t%str('z_max0')
         call t%num(hertzdamp_z_max0())
         call t%str('e1')
-        call t%num(hertzdamp_e1())
+        call t%num(hertzdamp_e1(law))
         call t%render(fmt, buf)
         call buf%flush_to_stdout()
         call quit(EXIT_OK)

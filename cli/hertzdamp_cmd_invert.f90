@@ -9,7 +9,7 @@ module hertzdamp_cmd_invert
     use hertzdamp_cli_text, only: fmt_short
     use hertzdamp_cli_output, only: out_table
     use hertzdamp_cli_help, only: print_help, wants_help
-    use hertzdamp_cli_model, only: model_opts, parse_model, model_options, e_range_message, instead
+    use hertzdamp_cli_model, only: model_opts, parse_model, model_options, e_range_message, instead, damping_unit
     use hertzdamp_cli_rows, only: row_log, row_kind, row_word, row_has_result, ROW_OUTSIDE_VALIDITY
     use hertzdamp_cli_materials, only: cli_contact, parse_contact, contact_table, contact_options, contact_flags
     use hertzdamp_cli_progress, only: progress_reporter
@@ -46,7 +46,7 @@ contains
         call check_combinations([size(es), size(tcs), size(us)], '--e, the contact times and --velocity')
         call contact_table(t, c, ct, 'e,tc,velocity,mass,radius_eff,k_phys,alpha,tau_c,t_star,k,d,bound_active,' // &
                            'tc_actual,status', 'tc, t_star, tc_actual [s], velocity [m/s], mass [kg], radius_eff [m], ' // &
-                           'k, k_phys [N m^-3/2], d [kg/s]')
+                           'k, k_phys [N m^-3/2], d [' // damping_unit(c) // ']')
         n = 0
         call p%start(real(size(es) * size(tcs) * size(us), wp), 'invert', force=args%has('--progress'))
         do ie = 1, size(es)
@@ -57,10 +57,10 @@ contains
                     u = us(iu)
                     if (ct%has_kphys) then
                         call hertzdamp_invert(e, tc, ct%mass, u, c%iend, k, d, status, alpha, tstar, tau, bound, &
-                                              ct%k_phys, c%method, c%tol, c%accuracy)
+                                              ct%k_phys, c%method, c%tol, c%accuracy, c%law)
                     else
                         call hertzdamp_invert(e, tc, ct%mass, u, c%iend, k, d, status, alpha, tstar, tau, bound, &
-                                              method=c%method, tol=c%tol, accuracy=c%accuracy)
+                                              method=c%method, tol=c%tol, accuracy=c%accuracy, law=c%law)
                     end if
                     kind = row_kind(status)
                     if (status == HD_BAD_RESTITUTION .and. e >= 0.0_wp .and. e <= 1.0_wp) kind = ROW_OUTSIDE_VALIDITY
@@ -214,7 +214,7 @@ contains
                            'k_phys [N m^-3/2], tc_damped, tc_elastic, dt_max, dt_elastic [s]; ' // &
                            'elastic_excess = tc_elastic/tc_damped - 1')
         do ie = 1, size(es)
-            call hertzdamp_invert_alpha(es(ie), c%iend, alpha, tau, status, c%method, c%tol, c%accuracy)
+            call hertzdamp_invert_alpha(es(ie), c%iend, alpha, tau, status, c%method, c%tol, c%accuracy, c%law)
             kind = row_kind(status)
             if (status == HD_BAD_RESTITUTION .and. es(ie) >= 0.0_wp .and. es(ie) <= 1.0_wp) kind = ROW_OUTSIDE_VALIDITY
             have = row_has_result(kind)

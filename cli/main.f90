@@ -8,6 +8,7 @@ program main
     use hertzdamp_cmd_scene, only: cmd_scene
     use hertzdamp_cmd_bench, only: cmd_bench
     use hertzdamp_cmd_check, only: cmd_check
+    use hertzdamp_cmd_calibrate, only: cmd_calibrate
     implicit none
     character(len=:), allocatable :: command
     integer :: l
@@ -27,6 +28,7 @@ program main
     case ('bench'); call cmd_bench()
     case ('scene'); call cmd_scene()
     case ('check'); call cmd_check()
+    case ('calibrate'); call cmd_calibrate()
     case default
         call fail(EXIT_USAGE, 'unknown command "' // command // '" (see hertzdamp --help)')
     end select

@@ -275,7 +275,7 @@ contains
         end select
     end function call_function
 
-    function lookup(p, name, v) result(x)
+    recursive function lookup(p, name, v) result(x)
         type(parser), intent(inout) :: p
         character(len=*), intent(in) :: name
         type(expr_vars), intent(in) :: v

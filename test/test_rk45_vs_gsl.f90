@@ -21,6 +21,7 @@ program test_rk45_vs_gsl
     call compare(HD_END_FORCE, 0.0_wp, 100.0_wp, 51, 2.0e-12_wp, HD_DAMPING_TSUJI)
     call compare(HD_END_OVERLAP, 0.0_wp, 12.0_wp, 49, 2.0e-12_wp, HD_DAMPING_KUWABARA_KONO)
     call compare(HD_END_FORCE, 0.0_wp, 100.0_wp, 51, 2.0e-12_wp, HD_DAMPING_KUWABARA_KONO)
+    call critical_damping()
     call s%finish()
 
 contains
@@ -41,6 +42,38 @@ contains
         call s%check_close(r%tau_max, 0.5_wp * tc0, 1.0e-12_wp, 'rk45 tau_max(0) vs GSL closed form')
         call s%check_close(r%z_max, z0, 1.0e-12_wp, 'rk45 z_max(0) closed form')
     end subroutine closed_forms
+
+    !> alpha_c of the linear law (overlap end) by bisection on the GSL peer's own
+    !> no-rebound decision (rk8pd, tolerance 1e-14) against the library's
+    !> hertzdamp_alpha_c (bisection on rk45, width 1e-11): the 10 digits the README
+    !> states (1.1279881355).  The GSL bracket is narrowed to 1e-10.
+    subroutine critical_damping()
+        real(wp) :: lo, hi, mid, ac, e, tau_c, z_max, tau_max
+        integer :: st, nrhs, nsteps, it
+        call hertzdamp_alpha_c(ac, st)
+        call s%check(st == HD_OK, 'alpha_c: library bisection status')
+        lo = 1.12_wp
+        hi = 1.14_wp
+        do it = 1, 60
+            mid = 0.5_wp * (lo + hi)
+            call hertzdamp_gsl_collide(mid, HD_END_OVERLAP, 1.0e-14_wp, HERTZDAMP_GSL_RK8PD, e, tau_c, z_max, &
+                                       tau_max, st, nrhs, nsteps, atol=1.0e-30_wp)
+            if (st == HD_NO_REBOUND) then
+                hi = mid
+            else if (st == HD_OK) then
+                lo = mid
+            else
+                exit
+            end if
+            if (hi - lo <= 1.0e-10_wp) exit
+        end do
+        call s%check(st == HD_OK .or. st == HD_NO_REBOUND, 'alpha_c: GSL bisection ran')
+        call s%check(hi - lo <= 1.0e-10_wp, 'alpha_c: GSL bracket narrowed to 1e-10')
+        call s%check(abs(ac - 0.5_wp * (lo + hi)) <= 2.0e-10_wp, 'alpha_c = GSL rk8pd bisection to 2e-10 (10 digits)')
+        if (abs(ac - 0.5_wp * (lo + hi)) > 2.0e-10_wp) print '(a,es24.16,a,2es24.16)', '     library ', ac, &
+            ' GSL bracket ', lo, hi
+        call s%check(abs(ac - 1.1279881355_wp) <= 1.0e-10_wp, 'alpha_c = 1.1279881355 as the README states')
+    end subroutine critical_damping
 
     !> Default-tolerance rk45 against rk8pd at 1e-14 on a grid of alpha; errors of e
     !> relative to max(e, 1e-3) as the issue states.

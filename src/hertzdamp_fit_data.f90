@@ -1625,6 +1625,11 @@ module hertzdamp_fit_data
     !> coefficients: (power, component, piece)
     real(wp), parameter, public :: fit_inv_c(0:9, 2, 0:23) = reshape([ &
         fit_inv_part1], [10, 2, 24])
+    !> the blocks of the maps one by one: NAME_c(0:DEG, 0:NP-1), sections of fit_inv_c
+    real(wp), parameter, public :: ov_inv_a_c(0:9, 0:7) = fit_inv_c(0:9, 1, 0:7)
+    real(wp), parameter, public :: ov_inv_t_c(0:9, 0:7) = fit_inv_c(0:9, 2, 0:7)
+    real(wp), parameter, public :: fo_inv_a_c(0:9, 0:15) = fit_inv_c(0:9, 1, 8:23)
+    real(wp), parameter, public :: fo_inv_t_c(0:9, 0:15) = fit_inv_c(0:9, 2, 8:23)
 
     ! ---- family fwd
     !      map ov_fwd_a: blocks ov_fwd_la, ov_fwd_ta
@@ -1937,6 +1942,13 @@ module hertzdamp_fit_data
     !> coefficients: (power, component, piece)
     real(wp), parameter, public :: fit_fwd_c(0:11, 2, 0:35) = reshape([ &
         fit_fwd_part1, fit_fwd_part2], [12, 2, 36])
+    !> the blocks of the maps one by one: NAME_c(0:DEG, 0:NP-1), sections of fit_fwd_c
+    real(wp), parameter, public :: ov_fwd_la_c(0:11, 0:3) = fit_fwd_c(0:11, 1, 0:3)
+    real(wp), parameter, public :: ov_fwd_ta_c(0:11, 0:3) = fit_fwd_c(0:11, 2, 0:3)
+    real(wp), parameter, public :: ov_fwd_lw_c(0:11, 0:15) = fit_fwd_c(0:11, 1, 4:19)
+    real(wp), parameter, public :: ov_fwd_tw_c(0:11, 0:15) = fit_fwd_c(0:11, 2, 4:19)
+    real(wp), parameter, public :: fo_fwd_la_c(0:11, 0:15) = fit_fwd_c(0:11, 1, 20:35)
+    real(wp), parameter, public :: fo_fwd_ta_c(0:11, 0:15) = fit_fwd_c(0:11, 2, 20:35)
 
     ! ---- family turn
     !      map ov_turn_a: blocks ov_fwd_za, ov_fwd_ma
@@ -2185,5 +2197,12 @@ module hertzdamp_fit_data
     !> coefficients: (power, component, piece)
     real(wp), parameter, public :: fit_turn_c(0:11, 2, 0:27) = reshape([ &
         fit_turn_part1, fit_turn_part2], [12, 2, 28])
+    !> the blocks of the maps one by one: NAME_c(0:DEG, 0:NP-1), sections of fit_turn_c
+    real(wp), parameter, public :: ov_fwd_za_c(0:11, 0:3) = fit_turn_c(0:11, 1, 0:3)
+    real(wp), parameter, public :: ov_fwd_ma_c(0:11, 0:3) = fit_turn_c(0:11, 2, 0:3)
+    real(wp), parameter, public :: ov_fwd_zb_c(0:11, 0:7) = fit_turn_c(0:11, 1, 4:11)
+    real(wp), parameter, public :: ov_fwd_mb_c(0:11, 0:7) = fit_turn_c(0:11, 2, 4:11)
+    real(wp), parameter, public :: fo_fwd_za_c(0:11, 0:15) = fit_turn_c(0:11, 1, 12:27)
+    real(wp), parameter, public :: fo_fwd_ma_c(0:11, 0:15) = fit_turn_c(0:11, 2, 12:27)
 
 end module hertzdamp_fit_data

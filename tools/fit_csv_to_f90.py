@@ -29,7 +29,9 @@ Layout of the module (what the SIMD kernels of src/hertzdamp_fit.f90 read):
   (variable code, first global piece, pieces, grid; one entry per map).  A family
   has one degree: blocks of lower degree are padded with zero coefficients, which
   changes no result (Horner or Estrin with leading zeros is exact).
-- blocks in no map keep their own array NAME_c(0:DEG, 0:NP-1).
+- every block has NAME_c(0:DEG, 0:NP-1), the coefficients of its pieces (for code that
+  evaluates one block at a time, such as the derivatives of hertzdamp_calibrate_maps):
+  its own array for a block in no map, a section of fit_F_c for a block of a map.
 
 To add a fitted map (for instance for another damping law): let the generator write
 its blocks to the CSV, add a line (family, map name, blocks) to MAPS, run
@@ -211,6 +213,14 @@ def main(argv):
         out.append('    real(wp), parameter, public :: fit_%s_c(0:%d, %d, 0:%d) = reshape([ &' % (
             fam, deg, ncomp, npieces - 1))
         out.append('        %s], [%d, %d, %d])' % (', '.join(names), deg + 1, ncomp, npieces))
+        # every block of a map also under its own name, as a section of the family array
+        # (the layout of a block outside a map: for code that evaluates one block)
+        out.append('    !> the blocks of the maps one by one: NAME_c(0:DEG, 0:NP-1), sections of fit_%s_c' % fam)
+        for (m, comps), f in zip(maps, first):
+            for j, c in enumerate(comps):
+                b = blocks[c]
+                out.append('    real(wp), parameter, public :: %s_c(0:%d, 0:%d) = fit_%s_c(0:%d, %d, %d:%d)' % (
+                    c, b['deg'], b['np'] - 1, fam, b['deg'], j + 1, f, f + b['np'] - 1))
     out.append('')
     out.append('end module hertzdamp_fit_data')
     text = '\n'.join(out) + '\n'

@@ -126,7 +126,7 @@ contains
             call hertzdamp_fit_invert(e, tc, m, u, iend, k, d, a, tau, status, law_)
             if (status == HD_OK) then
                 if (present(tstar)) ts = tc / tau
-                if (present(k_phys)) call apply_bound(a, m, u, kp, law_, k, d, ts, bound, status)
+                if (present(k_phys)) call apply_bound(a, m, u, kp, law_, present(tstar), k, d, ts, bound, status)
             end if
         end if
         if (status /= HD_OK) then
@@ -189,7 +189,8 @@ contains
                 do j = 1, nc
                     i = i0 + j
                     if (status(i) == HD_OK .and. present(k_phys)) then
-                        call apply_bound(ab(j), m(i), u(i), k_phys(i), law_, k(i), d(i), sb_ts(j), bb(j), status(i))
+                        call apply_bound(ab(j), m(i), u(i), k_phys(i), law_, present(tstar), k(i), d(i), sb_ts(j), &
+                                         bb(j), status(i))
                     end if
                     if (status(i) /= HD_OK) then
                         kp = 0.0_wp
@@ -208,10 +209,12 @@ contains
 
     !> The physical bound on a contact of the fast path (k from the direct formulas): a
     !> valid k_phys <= k replaces k, with t* = (m/k_phys)^(2/5) u^(-1/5) and
-    !> d = alpha m t*^(-1) (u t*)^(-q); an invalid k_phys gives HD_BAD_KPHYS and zero outputs.
-    pure elemental subroutine apply_bound(a, m, u, k_phys, law, k, d, ts, bound, status)
+    !> d = alpha m t*^(-1) (u t*)^(-q) (tsuji: alpha sqrt(m k_phys), which needs no t*:
+    !> t* only when want_ts); an invalid k_phys gives HD_BAD_KPHYS and zero outputs.
+    pure elemental subroutine apply_bound(a, m, u, k_phys, law, want_ts, k, d, ts, bound, status)
         real(wp), intent(in) :: a, m, u, k_phys
         integer, intent(in) :: law
+        logical, intent(in) :: want_ts
         real(wp), intent(inout) :: k, d, ts
         logical, intent(out) :: bound
         integer, intent(inout) :: status
@@ -224,11 +227,18 @@ contains
             ts = 0.0_wp
         else if (k_phys <= k) then
             bound = .true.
+            k = k_phys
+            if (law == HD_DAMPING_TSUJI) then
+                d = a * (sqrt(m) * sqrt(k_phys))
+                if (.not. want_ts) return
+            end if
             lts = 0.4_wp * (log(m) - log(k_phys)) - 0.2_wp * log(u)
             call hertzdamp_safe_exp(lts, ts, status)
-            k = k_phys
-            d = a * m / ts
-            if (hertzdamp_law_q(law) > 0.0_wp) d = d / law_power(u * ts, law)
+            if (law == HD_DAMPING_LINEAR) then
+                d = a * m / ts
+            else if (law /= HD_DAMPING_TSUJI) then
+                d = a * m / ts / law_power(u * ts, law)
+            end if
         end if
     end subroutine apply_bound
 
@@ -275,7 +285,7 @@ contains
             if (min(m, u, tc) >= safe_lo .and. max(m, u, tc) <= safe_hi) then
                 ! direct path: the formulas of the fast path (every intermediate a normal double)
                 call direct_scale(tc, m, u, a, tau, law, k, d)
-                if (has_kphys) call apply_bound(a, m, u, k_phys, law, k, d, ts, bound, status)
+                if (has_kphys) call apply_bound(a, m, u, k_phys, law, .true., k, d, ts, bound, status)
             else
                 ! logarithmic path (extreme inputs)
                 lts = log(tc) - log(tau)

@@ -111,7 +111,7 @@ contains
                 sc%accuracy = 1.0e-10_wp
                 method = HD_METHOD_FIT
             end if
-            call phases(sc, nn(k), method, trim(lab), ee(k), et(k))
+            call phases(sc, nn(k), method, trim(lab), .true., ee(k), et(k))
         end do
         pe = log(ee(1) / ee(3)) / log(4.0_wp)
         pt = log(et(1) / et(3)) / log(4.0_wp)
@@ -125,15 +125,33 @@ contains
         call s%check(abs(pt - 2.0_wp) <= 0.25_wp, trim(lab) // ': order of the T_c error from N = 40 to 320 is 2 +- 0.25')
         write (output_unit, '(2a,2(a,4f7.3),a,2f6.2)') trim(lab), ', N = 40 ... 320', &
             ': err N^2 in e', ee(4:7) * nn(4:7)**2, ', in T_c', et(4:7) * nn(4:7)**2, '; order', pe, pt
+        ! stronger damping, every pair at e = 0.5 (within the bound) and e = 0.3 (the
+        ! overlap end reaches 3.2/N^2 at N = 10 and 20 for every law: the bound fails
+        ! there, as the README says; asserted from N = 40 on)
+        call load('data/scenes/binary.nml', sc)
+        sc%iend = iend
+        sc%law = law
+        do k = 1, 2
+            sc%mat(:)%restitution = merge(0.5_wp, 0.3_wp, k == 1)
+            method = auto_method(sc)
+            write (lab, '(a,f3.1,4a)') 'binary e = ', sc%mat(1)%restitution, ', ', hertzdamp_law_name(law), ', ', &
+                hertzdamp_end_name(iend)
+            call phases(sc, 10, method, trim(lab), k == 1, ee(1), et(1))
+            call phases(sc, 20, method, trim(lab), k == 1, ee(2), et(2))
+            call phases(sc, 40, method, trim(lab), .true., ee(3), et(3))
+            write (output_unit, '(2a,2(a,3f7.3))') trim(lab), ', N = 10, 20, 40', &
+                ': err N^2 in e', ee(1:3) * nn(1:3)**2, ', in T_c', et(1:3) * nn(1:3)**2
+        end do
     end subroutine binary_convergence
 
     !> The scene at N steps per contact, run with the touches at four phases of a step;
-    !> each run's checks of e and T_c (the report's rows) must pass.  ee, et: the
-    !> largest relative errors over the runs.
-    subroutine phases(sc0, n, method, lab, ee, et)
+    !> with `within`, each run's checks of e and T_c (the report's rows) must pass.
+    !> ee, et: the largest relative errors over the runs.
+    subroutine phases(sc0, n, method, lab, within, ee, et)
         type(hertzdamp_dem_scene), intent(in) :: sc0
         integer, intent(in) :: n, method
         character(len=*), intent(in) :: lab
+        logical, intent(in) :: within
         real(wp), intent(out) :: ee, et
         type(hertzdamp_dem_scene) :: sc
         type(hertzdamp_dem_result) :: res
@@ -162,10 +180,13 @@ contains
             it = findloc(rows%name, 'max_tc_rel_err (binary contacts)', dim=1)
             call s%check(ie > 0 .and. it > 0, trim(l2) // ': the report checks e and T_c')
             if (ie == 0 .or. it == 0) return
-            call s%check(rows(ie)%outcome == HD_CHECK_PASS .and. rows(it)%outcome == HD_CHECK_PASS .and. &
-                         abs(rows(ie)%bound - (sc%accuracy + 2.0_wp / n**2)) <= 1.0e-15_wp, &
-                         trim(l2) // ': e and T_c within the report''s bound accuracy + 2/N^2')
-            call s%check(nfail == 0, trim(l2) // ': every check of the report passes')
+            call s%check(abs(rows(ie)%bound - (sc%accuracy + 2.0_wp / n**2)) <= 1.0e-15_wp, &
+                         trim(l2) // ': the report''s bound is accuracy + 2/N^2')
+            if (within) then
+                call s%check(rows(ie)%outcome == HD_CHECK_PASS .and. rows(it)%outcome == HD_CHECK_PASS, &
+                             trim(l2) // ': e and T_c within the report''s bound accuracy + 2/N^2')
+                call s%check(nfail == 0, trim(l2) // ': every check of the report passes')
+            end if
             ee = max(ee, rows(ie)%value)
             et = max(et, rows(it)%value)
         end do

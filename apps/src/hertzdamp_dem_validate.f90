@@ -9,8 +9,10 @@
 !> energy scales at most big, counting what gravity can add in the run; the longest
 !> physical contact (at rest_speed) fewer than 2^31 - 1 steps, and with k = k_phys at
 !> every contact (restitution only) the shortest (the fastest impact) at least one
-!> step; the contact rule gives
-!> finite k and d at the extreme masses and speeds of each meeting pair; the trace
+!> step; each meeting pair's e within the range of the damping law's rule (the
+!> law's smallest e for the contact end); the contact rule of the scene's damping law
+!> gives finite k and d at the extreme masses and speeds of each meeting pair (tsuji:
+!> alpha and d = alpha sqrt(m k) at the pair's extreme masses); the trace
 !> within hertzdamp_dem_max_samples and hertzdamp_dem_max_trace_values.  The engine
 !> forms products of two such quantities at most, which stay far inside double
 !> precision.  Magnitudes are compared through their logarithms, so the checks
@@ -44,7 +46,8 @@ module hertzdamp_dem_validate
 contains
 
     !> Validate a scene: status HD_OK, or HD_BAD_ARGUMENT with a message naming the
-    !> offending key and, for particles and walls, their source line.
+    !> offending key (damping, restitution, ...) and, for particles and walls, their
+    !> source line.
     pure subroutine hertzdamp_dem_check(sc, status, message)
         type(hertzdamp_dem_scene), intent(in) :: sc       !! the scene
         integer, intent(out) :: status                     !! HD_OK or HD_BAD_ARGUMENT
@@ -327,9 +330,10 @@ contains
         end do
     end function magnitudes
 
-    !> For every material pair that can meet: k_phys within the window, the longest
-    !> physical contact (at rest_speed) fewer than 2^31 - 1 steps, and the contact
-    !> rule finite at the extreme masses and speeds of the pair.
+    !> For every material pair that can meet: k_phys within the window, its e within
+    !> the damping law's range, the longest physical contact (at rest_speed) fewer than
+    !> 2^31 - 1 steps, and the contact rule of the law finite at the extreme masses and
+    !> speeds of the pair.
     pure function pair_limits(sc) result(message)
         type(hertzdamp_dem_scene), intent(in) :: sc
         character(len=:), allocatable :: message

@@ -1,9 +1,12 @@
 !> Timing support of `hertzdamp bench`: a wall clock, a median, and the measurement
 !> loop for anything that extends `bench_case`.
 !>
-!> A measurement first calibrates: it runs the case 1, 2, 4, ... times until one batch
+!> A measurement first calibrates: it runs the case 1, 8, 64, ... times until one batch
 !> takes at least `min_time` seconds (this also warms caches and branch predictors),
 !> then times `repeats` batches of that size and returns the median time per run.
+!> `bench_measure_all` does this for several cases side by side: the rounds take one
+!> batch of every case in turn, so that a change of the machine's load (the machines
+!> are shared) hits all of them alike and their ratios stay meaningful.
 module hertzdamp_bench_timer
     use hertzdamp_kinds, only: hertzdamp_rk
     use, intrinsic :: iso_fortran_env, only: int64
@@ -27,7 +30,12 @@ module hertzdamp_bench_timer
         end subroutine run_iface
     end interface
 
-    public :: wall_seconds, median, bench_measure
+    !> One case of a list measured side by side (bench_measure_all).
+    type, public :: bench_slot
+        class(bench_case), allocatable :: c
+    end type bench_slot
+
+    public :: wall_seconds, median, bench_measure, bench_measure_all
 
 contains
 
@@ -74,15 +82,49 @@ contains
         integer, intent(in) :: repeats
         integer, intent(out), optional :: batch
         real(wp) :: t_run
-        real(wp) :: t(max(repeats, 1)), t0, el
-        integer :: n, i, r
+        real(wp) :: t(max(repeats, 1))
+        integer :: n, r
+        n = calibrate(c, min_time)
+        do r = 1, size(t)
+            t(r) = time_batch(c, n)
+        end do
+        t_run = median(t)
+        if (present(batch)) batch = n
+    end function bench_measure
+
+    !> Median wall time of one `run` of each case [s], measured side by side: every
+    !> case's batch size is calibrated first, then `repeats` rounds time one batch of
+    !> each case in turn.
+    function bench_measure_all(slots, min_time, repeats) result(t_run)
+        type(bench_slot), intent(inout) :: slots(:)
+        real(wp), intent(in) :: min_time
+        integer, intent(in) :: repeats
+        real(wp) :: t_run(size(slots))
+        real(wp) :: t(max(repeats, 1), size(slots))
+        integer :: n(size(slots)), r, j
+        do j = 1, size(slots)
+            n(j) = calibrate(slots(j)%c, min_time)
+        end do
+        do r = 1, size(t, 1)
+            do j = 1, size(slots)
+                t(r, j) = time_batch(slots(j)%c, n(j))
+            end do
+        end do
+        do j = 1, size(slots)
+            t_run(j) = median(t(:, j))
+        end do
+    end function bench_measure_all
+
+    !> Runs per batch: the first count 1, 8, 64, ... (refined near the end) whose batch
+    !> takes at least min_time (capped at 2^28 runs).
+    function calibrate(c, min_time) result(n)
+        class(bench_case), intent(inout) :: c
+        real(wp), intent(in) :: min_time
+        integer :: n
+        real(wp) :: el
         n = 1
         do
-            t0 = wall_seconds()
-            do i = 1, n
-                call c%run()
-            end do
-            el = wall_seconds() - t0
+            el = n * time_batch(c, n)
             if (el >= min_time .or. n >= 2**28) exit
             if (el > 0.05_wp * min_time) then
                 n = max(n + 1, min(8 * n, ceiling(1.1_wp * n * min_time / el)))
@@ -90,15 +132,19 @@ contains
                 n = 8 * n
             end if
         end do
-        do r = 1, size(t)
-            t0 = wall_seconds()
-            do i = 1, n
-                call c%run()
-            end do
-            t(r) = (wall_seconds() - t0) / n
+    end function calibrate
+
+    !> Wall time per run of a batch of n runs [s].
+    function time_batch(c, n) result(t)
+        class(bench_case), intent(inout) :: c
+        integer, intent(in) :: n
+        real(wp) :: t, t0
+        integer :: i
+        t0 = wall_seconds()
+        do i = 1, n
+            call c%run()
         end do
-        t_run = median(t)
-        if (present(batch)) batch = n
-    end function bench_measure
+        t = (wall_seconds() - t0) / n
+    end function time_batch
 
 end module hertzdamp_bench_timer

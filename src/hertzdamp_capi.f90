@@ -9,13 +9,16 @@
 !> as `#define`s in the header).  No callbacks cross the boundary and there is no
 !> mutable state: the functions are safe to call from any number of threads.  They
 !> use the same method as the legacy Fortran entry points (`legacy_method` in
-!> `hertzdamp_flat`) and need only the Fortran runtime:
+!> `hertzdamp_flat`), give the same numbers as the module API, bit for bit, and need
+!> only the Fortran runtime.  Like every procedure of a module, they pay no save and
+!> restore of the floating-point environment (see hertzdamp_legacy.f90):
 !> `cc ... -lhertzdamp -lgfortran -lm`.
 module hertzdamp_capi
     use, intrinsic :: iso_c_binding, only: c_double, c_int, c_char, c_ptr, c_loc, c_null_char
     use hertzdamp_status, only: HD_OK, HD_BAD_ARGUMENT, hertzdamp_message_table, hertzdamp_max_status, &
                                 hertzdamp_message_len
-    use hertzdamp_flat, only: flat_invert, flat_invert_bounded, flat_invert_law, flat_pair_law, flat_forward_law
+    use hertzdamp_flat, only: flat_invert, flat_invert_n, flat_invert_bounded, flat_invert_law, flat_pair_law, &
+                              flat_forward_law
     implicit none
     private
 
@@ -96,12 +99,16 @@ contains
         real(c_double), intent(out) :: k(n)          !! Hertz stiffnesses [N m^-3/2] (n)
         real(c_double), intent(out) :: d(n)          !! damping coefficients [kg/s] (n)
         integer(c_int), intent(out) :: st(n)         !! status of each contact (n)
-        integer :: i, s
+        integer :: i
         status = HD_OK
+        if (n <= 0) return
+        ! vectorised over the arrays; the results of n calls of hertzdamp_c_invert
+        call flat_invert_n(int(n), e, tc, m, u, int(iend), k, d, st)
         do i = 1, n
-            call flat_invert(e(i), tc(i), m(i), u(i), int(iend), k(i), d(i), s)
-            st(i) = int(s, c_int)
-            if (status == HD_OK) status = st(i)
+            if (st(i) /= HD_OK) then
+                status = st(i)
+                return
+            end if
         end do
     end function hertzdamp_c_invert_n
 

@@ -1,6 +1,9 @@
 !> The flat entry points behind the legacy Fortran (`hertzdamp_legacy.f90`) and C
 !> (`hertzdamp_capi`) interfaces: one place that fixes the method they use and how a
-!> failure is reported, so that both interfaces give bit-identical numbers.
+!> failure is reported, so that both interfaces give bit-identical numbers (and the
+!> same as the module API: hertzdamp_invert with method = HD_METHOD_FIT).
+!> Callers must `use` this module at module level, never inside a procedure: see
+!> hertzdamp_legacy.f90 on the floating-point environment.
 !>
 !> Everything here needs only the Fortran runtime (no GSL, no LAPACK).
 module hertzdamp_flat
@@ -8,6 +11,7 @@ module hertzdamp_flat
     use hertzdamp_status, only: HD_OK, HD_NO_REBOUND, HD_BAD_KPHYS
     use hertzdamp_methods, only: hertzdamp_forward_dim, HD_METHOD_FIT
     use hertzdamp_inverse, only: mod_invert => hertzdamp_invert, hertzdamp_invert_alpha
+    use hertzdamp_fit, only: hertzdamp_fit_invert
     implicit none
     private
 
@@ -17,7 +21,7 @@ module hertzdamp_flat
     !> which needs nothing but the Fortran runtime.
     integer, parameter, public :: legacy_method = HD_METHOD_FIT
 
-    public :: flat_invert, flat_invert_bounded, flat_pair, flat_forward
+    public :: flat_invert, flat_invert_n, flat_invert_bounded, flat_pair, flat_forward
     public :: flat_invert_law, flat_pair_law, flat_forward_law
 
 contains
@@ -33,12 +37,32 @@ contains
         real(wp), intent(out) :: k       !! Hertz stiffness [N m^-3/2]
         real(wp), intent(out) :: d       !! damping coefficient [kg s^-1]
         integer, intent(out) :: status   !! HD_OK or an error code
-        call mod_invert(e, tc, m, u, iend, k, d, status, method=legacy_method)
+        real(wp) :: a, tau
+        ! what hertzdamp_invert does for the fit without optional arguments, without the
+        ! layer of its optional arguments: the fit's kernel, then the general path for the
+        ! contacts the kernel does not serve
+        call hertzdamp_fit_invert(e, tc, m, u, iend, k, d, a, tau, status)
+        if (status /= HD_OK) call mod_invert(e, tc, m, u, iend, k, d, status, method=legacy_method)
         if (status /= HD_OK) then
             k = 0.0_wp
             d = 0.0_wp
         end if
     end subroutine flat_invert
+
+    !> flat_invert for n contacts: the rank-1 form of hertzdamp_invert (the fit runs
+    !> vectorised over the arrays); the results of n calls of flat_invert, bit for bit.
+    pure subroutine flat_invert_n(n, e, tc, m, u, iend, k, d, status)
+        integer, intent(in) :: n          !! number of contacts (>= 0)
+        real(wp), intent(in) :: e(n)      !! target restitution coefficients
+        real(wp), intent(in) :: tc(n)     !! target contact times [s]
+        real(wp), intent(in) :: m(n)      !! effective masses [kg]
+        real(wp), intent(in) :: u(n)      !! impact velocities [m s^-1]
+        integer, intent(in) :: iend       !! 0 overlap, 1 force
+        real(wp), intent(out) :: k(n)     !! Hertz stiffnesses [N m^-3/2] (0 on failure)
+        real(wp), intent(out) :: d(n)     !! damping coefficients [kg s^-1] (0 on failure)
+        integer, intent(out) :: status(n) !! HD_OK or an error code, per contact
+        call mod_invert(e, tc, m, u, iend, k, d, status, method=legacy_method)
+    end subroutine flat_invert_n
 
     !> flat_invert with the physical-stiffness bound k_phys: where k_phys <= k the
     !> contact keeps k = k_phys and d = alpha m^(3/5) k_phys^(2/5) u^(1/5) (it is then

@@ -1,7 +1,10 @@
 #!/usr/bin/env bash
 # Checks of `hertzdamp bench`: the quick CSV run (header, finite non-negative numbers,
-# accuracy of rk45 at tol 1e-10 and of the fit methods when present) and bad usage
-# (exit code, empty stdout, no file left behind).  $HERTZDAMP_BIN is the program.
+# accuracy of rk45 at tol 1e-10, of the fit methods and of the iterative baselines at
+# the accuracy they are asked for, every entry point present), the figures (every
+# entry point bit-identical to the module scalar call; speed is reported, never
+# asserted) and bad usage (exit code, empty stdout, no file left behind).
+# $HERTZDAMP_BIN is the program.
 set -u
 bin=${HERTZDAMP_BIN:?HERTZDAMP_BIN must name the hertzdamp program}
 passed=0; failed=0
@@ -27,7 +30,7 @@ check "CSV has rows" $([ "$(wc -l <"$tmp/out.csv")" -gt 1 ]; echo $?)
 # every row: 10 fields, known problem, numbers finite and >= 0 (or empty), ns_per_call present
 bad=$(awk -F, 'NR > 1 {
     if (NF != 10) { print "line " NR ": " NF " fields"; next }
-    if ($1 != "forward" && $1 != "inverse" && $1 != "throughput") print "line " NR ": problem " $1
+    if ($1 != "forward" && $1 != "inverse" && $1 != "entry") print "line " NR ": problem " $1
     if ($2 == "") print "line " NR ": empty method"
     if ($9 == "") print "line " NR ": empty ns_per_call"
     for (i = 4; i <= 10; i++) {
@@ -55,7 +58,17 @@ for tol in 1e-4 1e-6 1e-8 1e-10 1e-12; do
   check "forward rk45 $tol row present" $([ -n "$(row forward rk45 $tol)" ]; echo $?)
 done
 check "forward gsl-rk8pd rows present" $([ -n "$(row forward gsl-rk8pd 1e-8)" ]; echo $?)
-check "inverse iterative 1e-10 row present" $([ -n "$(row inverse iterative 1e-10)" ]; echo $?)
+# the iterative baselines meet the accuracy asked of alpha (against the reference at 1e-14)
+for m in iterative gsl-secant; do
+  for tol in 1e-6 1e-8 1e-10 1e-12; do
+    r=$(row inverse $m $tol)
+    check "inverse $m $tol row present" $([ -n "$r" ]; echo $?)
+    if [ -n "$r" ]; then
+      IFS=, read -r _ _ _ _ _ ea _ _ _ _ <<<"$r"
+      below "$ea" "$tol"; check "inverse $m $tol: err alpha $ea < $tol" $?
+    fi
+  done
+done
 
 # every method of the project and both GSL peers appear
 for n in 1 2 3 5 10 20; do
@@ -68,7 +81,9 @@ for m in fit compact series pade; do
   check "inverse $m row present" $([ -n "$(row inverse $m '')" ]; echo $?)
 done
 check "forward gsl-rkf45 rows present" $([ -n "$(row forward gsl-rkf45 1e-8)" ]; echo $?)
-check "throughput row present" $([ -n "$(awk -F, '$1 == "throughput"' "$tmp/out.csv")" ]; echo $?)
+for w in module-scalar module-array c c-array legacy legacy-n; do
+  check "entry point $w row present" $([ -n "$(awk -F, -v w=$w '$1 == "entry" && $2 == w && $9 != ""' "$tmp/out.csv")" ]; echo $?)
+done
 
 r=$(row forward fit '')
 if [ -n "$r" ]; then
@@ -94,6 +109,9 @@ if command -v gnuplot >/dev/null 2>&1; then
   check "--format json is one JSON object with rows" \
     $(python3 -c 'import json,sys; d=json.load(open(sys.argv[1])); assert len(d["rows"]) > 0' "$tmp/out.json" \
       2>/dev/null; echo $?)
+  # the run compared every entry point with the module scalar call, bit for bit
+  check "figure: every entry point bit-identical to the module scalar call" \
+    $(python3 -c 'import json,sys; d=json.load(open(sys.argv[1])); assert any(v.startswith("entry points: k, d and status bit-identical") for k, v in d.items() if k.startswith("figure"))' "$tmp/out.json" 2>/dev/null; echo $?)
 fi
 
 # ------------------------------------------------------------ bad usage

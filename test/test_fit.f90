@@ -125,9 +125,48 @@ program test_fit
         call hertzdamp_compact_inverse(0.049_wp, iend, a2, tc2, st)
         call s%check(st == HD_BAD_RESTITUTION, 'compact refuses e below 0.05')
     end do
+    call kernels()
     call s%finish()
 
 contains
+
+    !> The arithmetic kernels of the fits (-ln x, x^(1/3), exp(-x), used instead of libm so
+    !> that vectorised and scalar code agree bit for bit) against quadruple precision.
+    subroutine kernels()
+        integer, parameter :: qp = selected_real_kind(30)
+        integer :: j
+        real(wp) :: x, ulp_log, ulp_cbrt, ulp_exp
+        real(qp) :: q
+        ulp_log = 0.0_wp
+        ulp_cbrt = 0.0_wp
+        ulp_exp = 0.0_wp
+        do j = 0, 100000
+            ! -ln x on [1e-5, 1] (the inverse needs [1e-4, 1], the forward w needs (0, 1])
+            x = 10.0_wp**(-5.0_wp * real(j, wp) / 100000.0_wp)
+            q = -log(real(x, qp))
+            ulp_log = max(ulp_log, real(abs(hertzdamp_fit_neg_log(x) - q) / spacing(max(real(q, wp), tiny(x))), wp))
+            ! x^(1/3) on [1e-17, 60] (L^(1/3) of the force inverse, alpha^(1/3) of the force forward)
+            x = 10.0_wp**(-17.0_wp + 18.8_wp * real(j, wp) / 100000.0_wp)
+            q = real(x, qp)**(1.0_qp / 3.0_qp)
+            ulp_cbrt = max(ulp_cbrt, real(abs(hertzdamp_fit_cbrt(x) - q) / spacing(real(q, wp)), wp))
+            ! exp(-x) on [0, 40] (e of the forward map)
+            x = 40.0_wp * real(j, wp) / 100000.0_wp
+            q = exp(-real(x, qp))
+            ulp_exp = max(ulp_exp, real(abs(hertzdamp_fit_exp_neg(x) - q) / spacing(real(q, wp)), wp))
+        end do
+        print '(a, 3f7.3)', 'kernels: max error in ulp of -ln x, x^(1/3), exp(-x): ', ulp_log, ulp_cbrt, ulp_exp
+        call s%check(ulp_log <= 1.5_wp, '-ln x within 1.5 ulp on [1e-5, 1]')
+        call s%check(ulp_cbrt <= 1.0_wp, 'x^(1/3) within 1 ulp on [1e-17, 60]')
+        call s%check(ulp_exp <= 1.0_wp, 'exp(-x) within 1 ulp on [0, 40]')
+        call s%check(same(hertzdamp_fit_neg_log(1.0_wp), 0.0_wp) .and. .not. (sign(1.0_wp, hertzdamp_fit_neg_log(1.0_wp)) &
+                     < 0.0_wp), '-ln 1 = +0')
+        call s%check(same(hertzdamp_fit_neg_log(0.5_wp), log(2.0_wp)) .and. same(hertzdamp_fit_neg_log(0.25_wp), &
+                     2.0_wp * log(2.0_wp)), '-ln 2^-k = k ln 2, correctly rounded')
+        call s%check(same(hertzdamp_fit_cbrt(0.0_wp), 0.0_wp) .and. same(hertzdamp_fit_cbrt(-0.0_wp), 0.0_wp) .and. &
+                     same(hertzdamp_fit_cbrt(8.0_wp), 2.0_wp) .and. same(hertzdamp_fit_cbrt(0.125_wp), 0.5_wp) .and. &
+                     same(hertzdamp_fit_cbrt(27.0_wp), 3.0_wp), 'cbrt exact for 0, -0 and cubes')
+        call s%check(same(hertzdamp_fit_exp_neg(0.0_wp), 1.0_wp), 'exp(-0) = 1')
+    end subroutine kernels
 
     !> Exact equality without -Wcompare-reals.
     pure logical function same(x, y)

@@ -1,10 +1,13 @@
 #!/usr/bin/env bash
 # `make bench`: the full work-precision run of `hertzdamp bench` with the release
 # flags.  Writes
-#   data/bench/bench.csv  '#' header (machine, compiler, flags, date, commit), then the
-#                         CSV of `hertzdamp bench --format csv`
-#   data/bench/bench.png  the work-precision diagram of that same run (--plot)
-#   data/bench/bench.txt  a second full run in text form, with the 'figure:' lines
+#   data/bench/bench.csv         '#' header (machine, compiler, flags, date, commit), then
+#                                the CSV of `hertzdamp bench --format csv`
+#   data/bench/bench.png         the work-precision diagram of that same run (--plot)
+#   data/bench/bench.txt         a second full run in text form, with the 'figure:' lines
+#   data/bench/bench_native.txt  a third run, text, of a build with -march=native instead
+#                                of the release -march (what a user gains compiling for
+#                                the machine at hand)
 # Files are written to a temporary directory and moved into place at the end.
 set -euo pipefail
 fpm=$1; flags=$2
@@ -20,6 +23,13 @@ t_csv=$((SECONDS - start))
 start=$SECONDS
 "$bin" bench --format text >"$tmp/bench.txt"
 t_txt=$((SECONDS - start))
+native_flags=$(sed -E 's/-march=[^ ]*/-march=native/' <<<"$flags")
+grep -q -- '-march=native' <<<"$native_flags" || native_flags="$native_flags -march=native"
+"$fpm" build --flag "$native_flags" >/dev/null 2>&1
+bin_native=$("$fpm" run hertzdamp --flag "$native_flags" --runner echo 2>/dev/null | tail -n 1)
+start=$SECONDS
+"$bin_native" bench --format text >"$tmp/bench_native.txt"
+t_nat=$((SECONDS - start))
 
 fc=$(command -v gfortran || true)
 commit=$(git rev-parse --short HEAD 2>/dev/null || echo unknown)
@@ -31,9 +41,9 @@ git diff --quiet HEAD -- src cli apps peers 2>/dev/null || commit="$commit (with
   echo "# compiler: $( [ -n "$fc" ] && "$fc" --version | head -n 1 || echo unknown)"
   echo "# flags: $flags"
   echo "# commit: $commit"
-  echo "# timing: wall clock per call, median of 5 batches of >= 0.1 s each; run time ${t_csv} s"
+  echo "# timing: wall clock per call, median of 5 batches of >= 0.1 s each (entry points: 5 rounds, one batch of each in turn); run time ${t_csv} s"
   echo "# integrators (rk45, GSL rkf45/rk8pd) use relative error control (absolute tolerance 1e-30 tol)"
-  echo "# forward errors against rk45 at tol 1e-15 (e relative to max(e, 1e-3)); inverse errors against iterative at tol 1e-13"
+  echo "# forward errors against rk45 at tol 1e-15 (e relative to max(e, 1e-3)); inverse errors against iterative at tol 1e-14"
   if grep -q 'TEMPORARY stand-in' src/hertzdamp_inverse.f90 2>/dev/null; then
     echo "# WARNING: built with the TEMPORARY stand-in src/hertzdamp_inverse.f90 (rk45 secant for every method):"
     echo "#          the inverse and throughput rows do not measure the real fit/compact/series/pade inverses"
@@ -46,7 +56,14 @@ git diff --quiet HEAD -- src cli apps peers 2>/dev/null || commit="$commit (with
   grep -E '^# (machine|compiler|flags|WARNING|         )' "$tmp/bench.csv" || true
   cat "$tmp/bench.txt"
 } >"$tmp/bench_full.txt"
+{
+  echo "# hertzdamp bench --format text, built with -march=native (make bench, $(date -u +%Y-%m-%dT%H:%M:%SZ), commit $commit, run time ${t_nat} s)"
+  grep -E '^# (machine|compiler)' "$tmp/bench.csv" || true
+  echo "# flags: $native_flags (cpu flags: $(grep -m1 '^flags' /proc/cpuinfo | tr ' ' '\n' | grep -E '^(avx2|fma|avx512f)$' | tr '\n' ' '))"
+  cat "$tmp/bench_native.txt"
+} >"$tmp/bench_native_full.txt"
 mv "$tmp/bench.csv" "$out/bench.csv"
 mv "$tmp/bench_full.txt" "$out/bench.txt"
+mv "$tmp/bench_native_full.txt" "$out/bench_native.txt"
 mv "$tmp/bench.png" "$out/bench.png"
-echo "wrote $out/bench.csv, $out/bench.png, $out/bench.txt (runs of ${t_csv} s and ${t_txt} s)"
+echo "wrote $out/bench.csv, $out/bench.png, $out/bench.txt, $out/bench_native.txt (runs of ${t_csv} s, ${t_txt} s and ${t_nat} s)"

@@ -1,0 +1,302 @@
+!> Every way of calling the fit inverse gives the same bits (issue 11): the module's
+!> scalar call, its elemental call on a rank-2 array, its rank-1 (vectorised) call, the
+!> flat layer, the C functions (hertzdamp_c_invert, hertzdamp_c_invert_n,
+!> hertzdamp_c_invert_bounded) through their bind(C) names, and the legacy externals
+!> (HERTZDAMP_INVERT, HERTZDAMP_INVERT_N, HERTZDAMP_INVERT_BOUNDED), on a grid that takes
+!> each argument through its edge cases (e = 1, e_min and one ulp beyond, 0, -0, NaN,
+!> Inf; T_c, m, u at the ends of the direct range [1e-30, 1e30] and beyond, 0,
+!> negative, NaN, Inf; k_phys soft, stiff, invalid; bad contact ends).  Also the
+!> dimensionless kernels (scalar against n at once) and the forward map.
+program test_entry_points
+    use hertzdamp, only: hertzdamp_rk, hertzdamp_invert, hertzdamp_fit_inverse, hertzdamp_fit_inverse_n, &
+                         hertzdamp_fit_invert, hertzdamp_fit_invert_n, hertzdamp_fit_forward, hertzdamp_fit_forward_n, &
+                         hertzdamp_fit_alpha_c, HD_OK, HD_END_OVERLAP, HD_END_FORCE, HD_METHOD_FIT
+    use hertzdamp_flat, only: flat_invert, flat_invert_n, flat_invert_bounded
+    use hertzdamp_capi, only: hertzdamp_c_invert, hertzdamp_c_invert_n, hertzdamp_c_invert_bounded
+    use hertzdamp_testing, only: test_suite, new_suite
+    use, intrinsic :: iso_c_binding, only: c_int, c_double
+    use, intrinsic :: iso_fortran_env, only: int64
+    use, intrinsic :: ieee_arithmetic, only: ieee_value, ieee_quiet_nan, ieee_positive_inf
+    implicit none
+
+    interface
+        subroutine hertzdamp_invert_legacy(e, tc, m, u, iend, k, d, ierr) bind(c, name='hertzdamp_invert_')
+            import :: c_double, c_int
+            implicit none
+            real(c_double), intent(in) :: e, tc, m, u
+            integer(c_int), intent(in) :: iend
+            real(c_double), intent(out) :: k, d
+            integer(c_int), intent(out) :: ierr
+        end subroutine hertzdamp_invert_legacy
+        subroutine hertzdamp_invert_n_legacy(n, e, tc, m, u, iend, k, d, ierr) bind(c, name='hertzdamp_invert_n_')
+            import :: c_double, c_int
+            implicit none
+            integer(c_int), intent(in) :: n
+            real(c_double), intent(in) :: e(n), tc(n), m(n), u(n)
+            integer(c_int), intent(in) :: iend
+            real(c_double), intent(out) :: k(n), d(n)
+            integer(c_int), intent(out) :: ierr(n)
+        end subroutine hertzdamp_invert_n_legacy
+        subroutine hertzdamp_invert_bounded_legacy(e, tc, m, u, kphys, iend, k, d, ierr) &
+                bind(c, name='hertzdamp_invert_bounded_')
+            import :: c_double, c_int
+            implicit none
+            real(c_double), intent(in) :: e, tc, m, u, kphys
+            integer(c_int), intent(in) :: iend
+            real(c_double), intent(out) :: k, d
+            integer(c_int), intent(out) :: ierr
+        end subroutine hertzdamp_invert_bounded_legacy
+    end interface
+
+    integer, parameter :: wp = hertzdamp_rk
+    type(test_suite) :: s
+    real(wp), allocatable :: es(:), xs(:), e(:), tc(:), m(:), u(:), kp(:)
+    real(wp) :: nan, inf
+    integer :: iend
+
+    s = new_suite('test_entry_points')
+    nan = ieee_value(1.0_wp, ieee_quiet_nan)
+    inf = ieee_value(1.0_wp, ieee_positive_inf)
+    ! edge cases of e (both ends' e_min) and of the dimensional arguments
+    es = [1.0_wp, nearest(1.0_wp, -1.0_wp), 0.999_wp, 0.9_wp, 0.5_wp, 0.05_wp, 1.0e-2_wp, 1.0e-3_wp, &
+          nearest(1.0e-3_wp, -1.0_wp), 5.0e-4_wp, 1.0e-4_wp, nearest(1.0e-4_wp, -1.0_wp), 0.0_wp, -0.0_wp, -0.5_wp, &
+          nearest(1.0_wp, 2.0_wp), 2.0_wp, nan, inf, -inf]
+    xs = [1.0_wp, 1.0e-3_wp, 1.0e-30_wp, nearest(1.0e-30_wp, -1.0_wp), 1.0e30_wp, nearest(1.0e30_wp, 2.0_wp), &
+          1.0e-35_wp, 1.0e35_wp, tiny(1.0_wp), huge(1.0_wp), 0.0_wp, -1.0_wp, nan, inf]
+    call make_grid(es, xs, e, tc, m, u)
+    call soft_and_stiff(e, tc, m, u, kp)
+
+    do iend = -1, 2
+        call compare_inverse(iend)
+        call compare_bounded(iend)
+    end do
+    call compare_kernels()
+    call s%finish()
+
+contains
+
+    !> All combinations of es with one of tc, m, u taken from xs (the others 1e-4 s,
+    !> 1e-3 kg, 1 m/s), then random contacts over 1e-20 .. 1e20.
+    subroutine make_grid(es, xs, e, tc, m, u)
+        real(wp), intent(in) :: es(:), xs(:)
+        real(wp), allocatable, intent(out) :: e(:), tc(:), m(:), u(:)
+        real(wp) :: r(4)
+        integer :: i, j, which
+        allocate (e(0), tc(0), m(0), u(0))
+        do i = 1, size(es)
+            do which = 0, 3
+                do j = 1, size(xs)
+                    e = [e, es(i)]
+                    tc = [tc, merge(xs(j), 1.0e-4_wp, which == 1)]
+                    m = [m, merge(xs(j), 1.0e-3_wp, which == 2)]
+                    u = [u, merge(xs(j), 1.0_wp, which == 3)]
+                end do
+            end do
+        end do
+        do i = 1, 2000
+            call random_number(r)
+            e = [e, 10.0_wp**(-4.2_wp * r(1))]
+            tc = [tc, 10.0_wp**(-20.0_wp + 40.0_wp * r(2))]
+            m = [m, 10.0_wp**(-20.0_wp + 40.0_wp * r(3))]
+            u = [u, 10.0_wp**(-20.0_wp + 40.0_wp * r(4))]
+        end do
+    end subroutine make_grid
+
+    !> k_phys for the bounded calls: alternately soft (bound active), stiff, and the
+    !> invalid values 0, -1, NaN, Inf.
+    subroutine soft_and_stiff(e, tc, m, u, kp)
+        real(wp), intent(in) :: e(:), tc(:), m(:), u(:)
+        real(wp), allocatable, intent(out) :: kp(:)
+        real(wp) :: k, d
+        integer :: i, st
+        allocate (kp(size(e)))
+        do i = 1, size(e)
+            call hertzdamp_invert(e(i), tc(i), m(i), u(i), HD_END_OVERLAP, k, d, st)
+            if (st /= HD_OK) k = 1.0e6_wp
+            select case (mod(i, 8))
+            case (0, 1, 2)
+                kp(i) = 0.5_wp * k
+            case (3, 4)
+                kp(i) = 2.0_wp * k
+            case (5)
+                kp(i) = 0.0_wp
+            case (6)
+                kp(i) = -1.0_wp
+            case default
+                kp(i) = merge(nan, inf, mod(i, 16) == 7)
+            end select
+        end do
+    end subroutine soft_and_stiff
+
+    !> Bit patterns (NaN-safe, -0 distinct from +0).
+    elemental integer(int64) function bits(x)
+        real(wp), intent(in) :: x
+        bits = transfer(x, 0_int64)
+    end function bits
+
+    subroutine compare_inverse(iend)
+        integer, intent(in) :: iend
+        real(wp), dimension(size(e)) :: k0, d0, a0, t0, s0, k, d, a, t, ts
+        real(wp), allocatable :: e2(:, :), tc2(:, :), m2(:, :), u2(:, :), k2(:, :), d2(:, :)
+        integer, dimension(size(e)) :: st0, st
+        integer(c_int), dimension(size(e)) :: stc
+        integer(c_int) :: sc
+        integer, allocatable :: st2(:, :)
+        integer :: i, n, nbad(8)
+        character(len=3) :: cend
+        write (cend, '(i0)') iend
+        n = size(e)
+        ! reference: the module's scalar call, one contact at a time
+        do i = 1, n
+            call hertzdamp_invert(e(i), tc(i), m(i), u(i), iend, k0(i), d0(i), st0(i), alpha=a0(i), tau_c=t0(i), &
+                                  tstar=s0(i))
+        end do
+        nbad = 0
+        ! rank-1 (vectorised) call with every optional output
+        call hertzdamp_invert(e, tc, m, u, iend, k, d, st, alpha=a, tau_c=t, tstar=ts)
+        nbad(1) = count(bits(k) /= bits(k0) .or. bits(d) /= bits(d0) .or. st /= st0 .or. bits(a) /= bits(a0) &
+                        .or. bits(t) /= bits(t0) .or. bits(ts) /= bits(s0))
+        ! elemental call on rank-2 arrays
+        e2 = reshape(e(1:2 * (n / 2)), [2, n / 2])
+        tc2 = reshape(tc(1:2 * (n / 2)), [2, n / 2])
+        m2 = reshape(m(1:2 * (n / 2)), [2, n / 2])
+        u2 = reshape(u(1:2 * (n / 2)), [2, n / 2])
+        allocate (k2(2, n / 2), d2(2, n / 2), st2(2, n / 2))
+        call hertzdamp_invert(e2, tc2, m2, u2, iend, k2, d2, st2)
+        nbad(2) = count(bits(reshape(k2, [2 * (n / 2)])) /= bits(k0(1:2 * (n / 2))) .or. &
+                        bits(reshape(d2, [2 * (n / 2)])) /= bits(d0(1:2 * (n / 2))) .or. &
+                        reshape(st2, [2 * (n / 2)]) /= st0(1:2 * (n / 2)))
+        ! the flat layer, scalar and n at once
+        do i = 1, n
+            call flat_invert(e(i), tc(i), m(i), u(i), iend, k(i), d(i), st(i))
+        end do
+        nbad(3) = count(bits(k) /= bits(k0) .or. bits(d) /= bits(d0) .or. st /= st0)
+        call flat_invert_n(n, e, tc, m, u, iend, k, d, st)
+        nbad(4) = count(bits(k) /= bits(k0) .or. bits(d) /= bits(d0) .or. st /= st0)
+        ! C: one contact per call, and n at once
+        do i = 1, n
+            stc(i) = hertzdamp_c_invert(e(i), tc(i), m(i), u(i), int(iend, c_int), k(i), d(i))
+        end do
+        nbad(5) = count(bits(k) /= bits(k0) .or. bits(d) /= bits(d0) .or. stc /= st0)
+        sc = hertzdamp_c_invert_n(int(n, c_int), e, tc, m, u, int(iend, c_int), k, d, stc)
+        nbad(6) = count(bits(k) /= bits(k0) .or. bits(d) /= bits(d0) .or. stc /= st0)
+        call s%check(sc == first_failure(st0), 'C invert_n returns the first non-zero status, end ' // cend)
+        ! legacy externals
+        do i = 1, n
+            call hertzdamp_invert_legacy(e(i), tc(i), m(i), u(i), int(iend, c_int), k(i), d(i), stc(i))
+        end do
+        nbad(7) = count(bits(k) /= bits(k0) .or. bits(d) /= bits(d0) .or. stc /= st0)
+        call hertzdamp_invert_n_legacy(int(n, c_int), e, tc, m, u, int(iend, c_int), k, d, stc)
+        nbad(8) = count(bits(k) /= bits(k0) .or. bits(d) /= bits(d0) .or. stc /= st0)
+        call s%check(nbad(1) == 0, 'rank-1 call (with alpha, tau_c, tstar) = scalar calls, bit for bit, end ' // cend)
+        call s%check(nbad(2) == 0, 'elemental rank-2 call = scalar calls, end ' // cend)
+        call s%check(nbad(3) == 0, 'flat_invert = module, end ' // cend)
+        call s%check(nbad(4) == 0, 'flat_invert_n = module, end ' // cend)
+        call s%check(nbad(5) == 0, 'hertzdamp_c_invert = module, end ' // cend)
+        call s%check(nbad(6) == 0, 'hertzdamp_c_invert_n = module, end ' // cend)
+        call s%check(nbad(7) == 0, 'HERTZDAMP_INVERT = module, end ' // cend)
+        call s%check(nbad(8) == 0, 'HERTZDAMP_INVERT_N = module, end ' // cend)
+        if (any(nbad /= 0)) print '(a, 8i6)', 'mismatches per entry point: ', nbad
+        ! the grid reaches the fast path and the general one
+        if (iend == HD_END_OVERLAP .or. iend == HD_END_FORCE) then
+            call s%check(count(st0 == HD_OK) > n / 2 .and. count(st0 /= HD_OK) > 100, &
+                         'grid covers successes and failures, end ' // cend)
+        end if
+    end subroutine compare_inverse
+
+    integer function first_failure(st)
+        integer, intent(in) :: st(:)
+        integer :: i
+        first_failure = HD_OK
+        do i = 1, size(st)
+            if (st(i) /= HD_OK) then
+                first_failure = st(i)
+                return
+            end if
+        end do
+    end function first_failure
+
+    subroutine compare_bounded(iend)
+        integer, intent(in) :: iend
+        real(wp), dimension(size(e)) :: k0, d0, k, d
+        integer, dimension(size(e)) :: st0, st
+        integer(c_int), dimension(size(e)) :: stc
+        logical, dimension(size(e)) :: b0, b
+        integer :: i, n, nbad(4)
+        character(len=3) :: cend
+        write (cend, '(i0)') iend
+        n = size(e)
+        do i = 1, n
+            call hertzdamp_invert(e(i), tc(i), m(i), u(i), iend, k0(i), d0(i), st0(i), bound_active=b0(i), &
+                                  k_phys=kp(i), method=HD_METHOD_FIT)
+        end do
+        call hertzdamp_invert(e, tc, m, u, iend, k, d, st, bound_active=b, k_phys=kp)
+        nbad(1) = count(bits(k) /= bits(k0) .or. bits(d) /= bits(d0) .or. st /= st0 .or. (b .neqv. b0))
+        do i = 1, n
+            call flat_invert_bounded(e(i), tc(i), m(i), u(i), kp(i), iend, k(i), d(i), st(i))
+        end do
+        nbad(2) = count(bits(k) /= bits(k0) .or. bits(d) /= bits(d0) .or. st /= st0)
+        do i = 1, n
+            stc(i) = hertzdamp_c_invert_bounded(e(i), tc(i), m(i), u(i), kp(i), int(iend, c_int), k(i), d(i))
+        end do
+        nbad(3) = count(bits(k) /= bits(k0) .or. bits(d) /= bits(d0) .or. stc /= st0)
+        do i = 1, n
+            call hertzdamp_invert_bounded_legacy(e(i), tc(i), m(i), u(i), kp(i), int(iend, c_int), k(i), d(i), stc(i))
+        end do
+        nbad(4) = count(bits(k) /= bits(k0) .or. bits(d) /= bits(d0) .or. stc /= st0)
+        call s%check(nbad(1) == 0, 'bounded: rank-1 call = scalar calls, end ' // cend)
+        call s%check(nbad(2) == 0, 'bounded: flat = module, end ' // cend)
+        call s%check(nbad(3) == 0, 'bounded: hertzdamp_c_invert_bounded = module, end ' // cend)
+        call s%check(nbad(4) == 0, 'bounded: HERTZDAMP_INVERT_BOUNDED = module, end ' // cend)
+        if (iend == HD_END_OVERLAP) call s%check(count(b0) > 300 .and. count(.not. b0 .and. st0 == HD_OK) > 300, &
+                                                 'bounded: the bound is active on part of the grid, not all')
+    end subroutine compare_bounded
+
+    !> The dimensionless kernels and the forward map: one value per call against n at once.
+    subroutine compare_kernels()
+        real(wp), allocatable :: al(:), a(:), t(:), a1(:), t1(:), k(:), d(:), k1(:), d1(:), z(:), zm(:), z1(:), zm1(:)
+        integer, allocatable :: st(:), st1(:)
+        integer :: i, iend, n
+        character(len=3) :: cend
+        ! alpha: the regimes and their ends (0.6, alpha_c, 1.3, 52.5) and invalid values
+        n = 19 + 4000
+        allocate (al(n))
+        al(1:19) = [0.0_wp, -0.0_wp, tiny(1.0_wp), 1.0e-10_wp, 0.3_wp, 0.6_wp, nearest(0.6_wp, 2.0_wp), 1.0_wp, &
+                    1.12_wp, nearest(hertzdamp_fit_alpha_c, -1.0_wp), hertzdamp_fit_alpha_c, 1.3_wp, &
+                    nearest(1.3_wp, 2.0_wp), 2.0_wp, 52.5_wp, 53.0_wp, -1.0_wp, nan, inf]
+        do i = 20, n
+            al(i) = 0.011_wp * (i - 19)
+        end do
+        allocate (a(n), t(n), a1(n), t1(n), k(n), d(n), k1(n), d1(n), z(n), zm(n), z1(n), zm1(n), st(n), st1(n))
+        do iend = -1, 2
+            write (cend, '(i0)') iend
+            call hertzdamp_fit_forward_n(n, al, iend, a, t, st, z, zm)
+            do i = 1, n
+                call hertzdamp_fit_forward(al(i), iend, a1(i), t1(i), st1(i), z1(i), zm1(i))
+            end do
+            call s%check(all(bits(a) == bits(a1) .and. bits(t) == bits(t1) .and. st == st1 .and. bits(z) == bits(z1) &
+                             .and. bits(zm) == bits(zm1)), 'forward: n at once = one at a time, end ' // cend)
+            call hertzdamp_fit_inverse_n(size(e), e, iend, a(1:size(e)), t(1:size(e)), st(1:size(e)))
+            do i = 1, size(e)
+                call hertzdamp_fit_inverse(e(i), iend, a1(i), t1(i), st1(i))
+            end do
+            call s%check(all(bits(a(1:size(e))) == bits(a1(1:size(e))) .and. bits(t(1:size(e))) == &
+                             bits(t1(1:size(e))) .and. st(1:size(e)) == st1(1:size(e))), &
+                         'fit inverse: n at once = one at a time, end ' // cend)
+        end do
+        deallocate (a, t, a1, t1, k, d, k1, d1, st, st1)
+        n = size(e)
+        allocate (a(n), t(n), a1(n), t1(n), k(n), d(n), k1(n), d1(n), st(n), st1(n))
+        do iend = -1, 2
+            write (cend, '(i0)') iend
+            call hertzdamp_fit_invert_n(n, e, tc, m, u, iend, k, d, a, t, st)
+            do i = 1, n
+                call hertzdamp_fit_invert(e(i), tc(i), m(i), u(i), iend, k1(i), d1(i), a1(i), t1(i), st1(i))
+            end do
+            call s%check(all(bits(k) == bits(k1) .and. bits(d) == bits(d1) .and. bits(a) == bits(a1) .and. &
+                             bits(t) == bits(t1) .and. st == st1), 'fit invert kernel: n at once = one at a time, end ' &
+                         // cend)
+        end do
+    end subroutine compare_kernels
+
+end program test_entry_points

@@ -1093,6 +1093,7 @@ contains
                                                              '#8c564b', '#e377c2', '#d62728', '#7f7f7f', '#17becf']
         character(len=*), parameter :: problems(2) = ['forward', 'inverse']
         real(wp) :: y
+        cmd = ''
         tmpdir = env_or('TMPDIR', '/tmp')
         call system_clock(cnt)
         base = tmpdir // '/hertzdamp_bench_' // itoa8(cnt)

@@ -42,9 +42,11 @@ To add a fitted map (for instance for another damping law): let the generator wr
 its blocks to the CSV, add a line (family, map name, blocks) to MAPS (a new map
 goes after the maps already in its family, so that their indices and pieces stay),
 run `make fit-source`, and give the new map index to a kernel in hertzdamp_fit:
-the inverse kernels are chosen by `inverse_kernel` (contact end and law) and
-written once in hertzdamp_fit_inverse.inc (the variable of e and the map per
-kernel) with the law's q in hertzdamp_fit_invert_out.inc.
+the inverse kernels are chosen by `inverse_kernel` (contact end and law), get a
+case in hertzdamp_fit_invert_dispatch.inc and are written once in
+hertzdamp_fit_inverse.inc (the variable of e and the map per kernel), with the law's
+q in hertzdamp_fit_invert_out.inc; forward maps of the laws are evaluated (with
+their derivatives) in hertzdamp_fit_laws.
 """
 import sys
 

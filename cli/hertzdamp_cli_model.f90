@@ -13,7 +13,8 @@ module hertzdamp_cli_model
                          hertzdamp_series_default_order, hertzdamp_series_max_order, hertzdamp_invert_default_tol, &
                          hertzdamp_fit_e_min_overlap, hertzdamp_fit_e_min_force, hertzdamp_compact_e_min_overlap, &
                          hertzdamp_compact_e_min_force, hertzdamp_pade_alpha_max, hertzdamp_fit_alpha_max_force, &
-                         hertzdamp_compact_alpha_max_force, hertzdamp_forward_alpha, hertzdamp_collision, &
+                         hertzdamp_compact_alpha_max_force, hertzdamp_compact_alpha_max_overlap, &
+                         hertzdamp_forward_alpha, hertzdamp_collision, &
                          hertzdamp_method_code, hertzdamp_law_code, hertzdamp_fit_law_e_min, &
                          HD_DAMPING_LINEAR, HD_END_OVERLAP, HD_METHOD_RK45, HD_METHOD_SERIES, HD_METHOD_PADE, &
                          HD_METHOD_COMPACT, HD_METHOD_FIT, HD_METHOD_ITERATIVE, HD_OK
@@ -143,7 +144,9 @@ contains
                 s = 'the alpha of e >= 1e-5 with --damping ' // c%law_name // ' (its fitted range)'
             end if
         case (HD_METHOD_COMPACT)
-            s = 'alpha >= 0 (overlap), 0 <= alpha <= ' // fmt_short(hertzdamp_compact_alpha_max_force) // ' (force)'
+            s = '0 <= alpha <= ' // fmt_short(hertzdamp_compact_alpha_max_overlap) // ' (overlap; no rebound from ' // &
+                'alpha_c on), 0 <= alpha <= ' // fmt_short(hertzdamp_compact_alpha_max_force) // ' (force): e >= ' // &
+                fmt_short(hertzdamp_compact_e_min_overlap)
         case (HD_METHOD_SERIES)
             s = '|alpha| < 1, overlap only, where its error estimate meets --accuracy ' // fmt_short(c%accuracy)
         case (HD_METHOD_PADE)

@@ -87,20 +87,24 @@ contains
     !> `int hertzdamp_c_invert_n(int n, const double *e, const double *tc, const double *m,
     !> const double *u, int end, double *k, double *d, int *status)`: hertzdamp_c_invert
     !> for n contacts; status[i] is each contact's status.  Returns HD_OK when every
-    !> contact succeeded, else the first non-zero status; n <= 0 does nothing.
+    !> contact succeeded, else the first non-zero status (HD_BAD_ARGUMENT, touching
+    !> nothing, when an array is NULL); n <= 0 does nothing.
     integer(c_int) function hertzdamp_c_invert_n(n, e, tc, m, u, iend, k, d, st) &
             bind(c, name='hertzdamp_c_invert_n') result(status)
         integer(c_int), value, intent(in) :: n       !! number of contacts
-        real(c_double), intent(in) :: e(n)           !! target restitution coefficients (n)
-        real(c_double), intent(in) :: tc(n)          !! target contact times [s] (n)
-        real(c_double), intent(in) :: m(n)           !! effective masses [kg] (n)
-        real(c_double), intent(in) :: u(n)           !! impact velocities [m/s] (n)
+        real(c_double), intent(in), optional :: e(n) !! target restitution coefficients (n)
+        real(c_double), intent(in), optional :: tc(n) !! target contact times [s] (n)
+        real(c_double), intent(in), optional :: m(n) !! effective masses [kg] (n)
+        real(c_double), intent(in), optional :: u(n) !! impact velocities [m/s] (n)
         integer(c_int), value, intent(in) :: iend    !! contact end: 0 overlap, 1 force
-        real(c_double), intent(out) :: k(n)          !! Hertz stiffnesses [N m^-3/2] (n)
-        real(c_double), intent(out) :: d(n)          !! damping coefficients [kg/s] (n)
-        integer(c_int), intent(out) :: st(n)         !! status of each contact (n)
+        real(c_double), intent(out), optional :: k(n) !! Hertz stiffnesses [N m^-3/2] (n)
+        real(c_double), intent(out), optional :: d(n) !! damping coefficients [kg/s] (n)
+        integer(c_int), intent(out), optional :: st(n) !! status of each contact (n)
         status = HD_OK
         if (n <= 0) return
+        status = HD_BAD_ARGUMENT   ! a NULL array
+        if (.not. (present(e) .and. present(tc) .and. present(m) .and. present(u) .and. present(k) .and. &
+                   present(d) .and. present(st))) return
         ! vectorised over the arrays; the results of n calls of hertzdamp_c_invert
         call flat_invert_n(int(n), e, tc, m, u, int(iend), k, d, st)
         status = first_failure(st)
@@ -178,21 +182,25 @@ contains
     !> const double *u, int law, int end, double *k, double *d, int *status)`:
     !> hertzdamp_c_invert_law without the bound (k_phys = 0) for n contacts; status[i] is
     !> each contact's status.  Returns HD_OK when every contact succeeded, else the first
-    !> non-zero status; n <= 0 does nothing.
+    !> non-zero status (HD_BAD_ARGUMENT, touching nothing, when an array is NULL); n <= 0
+    !> does nothing.
     integer(c_int) function hertzdamp_c_invert_law_n(n, e, tc, m, u, law, iend, k, d, st) &
             bind(c, name='hertzdamp_c_invert_law_n') result(status)
         integer(c_int), value, intent(in) :: n       !! number of contacts
-        real(c_double), intent(in) :: e(n)           !! target restitution coefficients (n)
-        real(c_double), intent(in) :: tc(n)          !! target contact times [s] (n)
-        real(c_double), intent(in) :: m(n)           !! effective masses [kg] (n)
-        real(c_double), intent(in) :: u(n)           !! impact velocities [m/s] (n)
+        real(c_double), intent(in), optional :: e(n) !! target restitution coefficients (n)
+        real(c_double), intent(in), optional :: tc(n) !! target contact times [s] (n)
+        real(c_double), intent(in), optional :: m(n) !! effective masses [kg] (n)
+        real(c_double), intent(in), optional :: u(n) !! impact velocities [m/s] (n)
         integer(c_int), value, intent(in) :: law     !! damping law: 0 linear, 1 tsuji, 2 kuwabara-kono
         integer(c_int), value, intent(in) :: iend    !! contact end: 0 overlap, 1 force
-        real(c_double), intent(out) :: k(n)          !! Hertz stiffnesses [N m^-3/2] (n)
-        real(c_double), intent(out) :: d(n)          !! damping coefficients [kg s^-1 m^-q] (n)
-        integer(c_int), intent(out) :: st(n)         !! status of each contact (n)
+        real(c_double), intent(out), optional :: k(n) !! Hertz stiffnesses [N m^-3/2] (n)
+        real(c_double), intent(out), optional :: d(n) !! damping coefficients [kg s^-1 m^-q] (n)
+        integer(c_int), intent(out), optional :: st(n) !! status of each contact (n)
         status = HD_OK
         if (n <= 0) return
+        status = HD_BAD_ARGUMENT   ! a NULL array
+        if (.not. (present(e) .and. present(tc) .and. present(m) .and. present(u) .and. present(k) .and. &
+                   present(d) .and. present(st))) return
         ! vectorised over the arrays; the results of n calls of hertzdamp_c_invert_law
         call flat_invert_law_n(int(n), e, tc, m, u, int(law), int(iend), k, d, st)
         status = first_failure(st)

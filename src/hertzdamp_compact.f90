@@ -14,9 +14,11 @@
 !>     L/alpha = e1 (1 + p1 sigma^2 + p2 sigma^3)/(1 + p3 sigma^2 + p4 sigma^3), tau_c likewise.
 !> e1 and tau_c0 come from hertzdamp_constants; the constants from the generator
 !> (data/fit_coefficients.csv, `compact` rows).  Accuracy (measured on e in [0.05, 1]):
-!> see doc/compact.md.  Range accepted: inverse e >= 0.05 for both definitions (below,
-!> the overlap rational has a pole near e = 0.018); forward overlap alpha < alpha_c (HD_NO_REBOUND above),
-!> force alpha <= 2.9; outside: HD_BAD_RESTITUTION / HD_OUTSIDE_VALIDITY.
+!> see doc/compact.md.  Range accepted, the range on which the constants were fitted
+!> and the accuracy is stated (generated: fit_e_min_compact and the alpha of that e):
+!> inverse e >= 0.05 for both definitions (below, the overlap rational has a pole near
+!> e = 0.018); forward alpha <= alpha(0.05) = 0.979 (overlap; HD_NO_REBOUND from
+!> alpha_c on) and 2.85 (force); outside: HD_BAD_RESTITUTION / HD_OUTSIDE_VALIDITY.
 module hertzdamp_compact
     use hertzdamp_kinds, only: hertzdamp_rk
     use hertzdamp_status, only: HD_OK, HD_NO_REBOUND, HD_BAD_END, HD_BAD_ALPHA, HD_BAD_RESTITUTION, &
@@ -30,14 +32,18 @@ module hertzdamp_compact
 
     integer, parameter :: wp = hertzdamp_rk
 
-    !> Lower end of the restitution range on which the compact accuracy is stated.
-    real(wp), parameter, public :: hertzdamp_compact_e_low = fit_e_min_compact
-    !> Smallest e accepted by the compact inverse, overlap (error ~1e-2 there).
-    real(wp), parameter, public :: hertzdamp_compact_e_min_overlap = 0.05_wp
-    !> Smallest e accepted by the compact inverse, force (the rationals in L^(1/3) fail below).
-    real(wp), parameter, public :: hertzdamp_compact_e_min_force = 0.05_wp
-    !> Largest alpha accepted by the compact forward map, force (alpha(0.05) = 2.85).
-    real(wp), parameter, public :: hertzdamp_compact_alpha_max_force = 2.9_wp
+    !> Smallest e accepted by the compact inverse, overlap: the lower end of the fitted
+    !> range (generated), where the stated accuracy holds (doc/compact.md).
+    real(wp), parameter, public :: hertzdamp_compact_e_min_overlap = fit_e_min_compact
+    !> Smallest e accepted by the compact inverse, force (the same fitted range).
+    real(wp), parameter, public :: hertzdamp_compact_e_min_force = fit_e_min_compact
+    !> Largest alpha accepted by the compact forward map, overlap: alpha(e_min) (generated).
+    real(wp), parameter, public :: hertzdamp_compact_alpha_max_overlap = fit_compact_alpha_max_overlap
+    !> Largest alpha accepted by the compact forward map, force: alpha(e_min) (generated).
+    real(wp), parameter, public :: hertzdamp_compact_alpha_max_force = fit_compact_alpha_max_force
+
+    !> Relative accuracy of the generated range ends alpha(e_min) (reference integrator).
+    real(wp), parameter :: range_tol = 1.0e-12_wp
 
     public :: hertzdamp_compact_inverse, hertzdamp_compact_forward
 
@@ -103,6 +109,12 @@ contains
                 tau_c = ieee_value(1.0_wp, ieee_positive_inf)
                 return
             end if
+            ! e < e_min: beyond the fitted range (36 % off near alpha_c); the end itself is
+            ! known to the reference integrator's 1e-12
+            if (alpha > hertzdamp_compact_alpha_max_overlap * (1.0_wp + range_tol)) then
+                status = HD_OUTSIDE_VALIDITY
+                return
+            end if
             s = alpha / fit_alpha_c
             lg = log(1.0_wp - s) + s
             l = hertzdamp_e1() * alpha * (1.0_wp + fit_cov_fwd_l_1 * alpha) &
@@ -111,7 +123,7 @@ contains
             tau_c = hertzdamp_tau_c0() * (1.0_wp + fit_cov_fwd_t_1 * alpha + fit_cov_fwd_t_2 * alpha * alpha) &
                     / (1.0_wp + fit_cov_fwd_t_3 * alpha) - fit_cov_fwd_t_4 * lg
         else
-            if (alpha > hertzdamp_compact_alpha_max_force) then
+            if (alpha > hertzdamp_compact_alpha_max_force * (1.0_wp + range_tol)) then
                 status = HD_OUTSIDE_VALIDITY
                 return
             end if

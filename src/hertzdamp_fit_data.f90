@@ -174,6 +174,10 @@ module hertzdamp_fit_data
     real(wp), parameter, public :: fit_cfo_fwd_t_4 = 1.22502518655223339e-01_wp
     !> generated constant e_min_compact
     real(wp), parameter, public :: fit_e_min_compact = 5.00000000000000028e-02_wp
+    !> generated constant compact_alpha_max_overlap
+    real(wp), parameter, public :: fit_compact_alpha_max_overlap = 9.78574711550063592e-01_wp
+    !> generated constant compact_alpha_max_force
+    real(wp), parameter, public :: fit_compact_alpha_max_force = 2.84867978826344936e+00_wp
     !> generated constant law_e_min
     real(wp), parameter, public :: fit_law_e_min = 1.00000000000000005e-04_wp
     !> generated constant law_e_min_forward

@@ -298,7 +298,11 @@ contains
                     end if
                 end if
                 call hertzdamp_safe_exp(lts, ts, status)
-                call hertzdamp_safe_exp(lk, k, status)
+                if (bound) then
+                    k = k_phys            ! exactly the bound, as on the direct path (not exp(log(k_phys)))
+                else
+                    call hertzdamp_safe_exp(lk, k, status)
+                end if
                 if (a > 0.0_wp) call hertzdamp_safe_exp_or_zero(log(a) + log(m) - lts - q * (log(u) + lts), d, status)
             end if
             if (status == HD_OK) then

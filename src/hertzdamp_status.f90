@@ -76,7 +76,7 @@ module hertzdamp_status
         'invalid physical stiffness bound k_phys: must be finite and positive', &
         'invalid argument', &
         'alpha outside the validity range of the method (series: |alpha| < 1; pade: 0 <= alpha <= 0.8; ' // &
-            'fit: alpha >= 0, force alpha <= 52.5; compact: force alpha <= 2.9); use rk45', &
+            'fit: alpha >= 0, force alpha <= 52.5; compact: e(alpha) >= 0.05); use rk45', &
         'inaccurate: the method''s own error estimate exceeds the accuracy asked (or alpha lies ' // &
             'beyond its validated range, or within the band below alpha_c where rk45 cannot resolve e)', &
         'invalid radius: must be finite and positive', &

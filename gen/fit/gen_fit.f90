@@ -196,6 +196,9 @@ contains
         end do
     end do
     write (u, '(a)') 'param,e_min_compact,' // r2s(e_compact)
+    ! the forward maps of the compact formulas are stated on the same range: alpha up to alpha(e_compact)
+    write (u, '(a)') 'param,compact_alpha_max_overlap,' // r2s(alpha_at_l(0, HD_END_OVERLAP, -log(e_compact)))
+    write (u, '(a)') 'param,compact_alpha_max_force,' // r2s(alpha_at_l(0, HD_END_FORCE, -log(e_compact)))
     write (u, '(a)', advance='no') law_params
     write (u, '(a)', advance='no') body
     write (u, '(a)', advance='no') law_body
@@ -300,6 +303,27 @@ contains
         write (error_unit, '(a)') 'hertzdamp-gen-fit: ' // msg
         error stop 1
     end subroutine die
+
+    !> alpha with L(alpha) = l on the reference integrator: secant steps from the
+    !> table's interpolation to a relative step of 1e-14 (the range ends of a method).
+    real(wp) function alpha_at_l(law, iend, l) result(a)
+        integer, intent(in) :: law, iend
+        real(wp), intent(in) :: l
+        real(wp) :: a0, l0, l1, e, tc, an
+        integer :: it
+        a0 = alpha_of_l(law, iend, l)
+        a = a0 * (1.0_wp + 1.0e-6_wp)
+        call ref(a0, law, iend, e, tc, l0)
+        do it = 1, 50
+            call ref(a, law, iend, e, tc, l1)
+            if (l1 == l0) exit
+            an = a - (l1 - l) * (a - a0) / (l1 - l0)
+            a0 = a
+            l0 = l1
+            a = an
+            if (abs(a - a0) <= 1.0e-14_wp * a) exit
+        end do
+    end function alpha_at_l
 
     !> Reference e, tau_c, L = -ln e at alpha.
     subroutine ref(alpha, law, iend, e, tc, l, zm, tm)

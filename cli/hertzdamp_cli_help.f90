@@ -249,8 +249,8 @@ module hertzdamp_cli_help
         'problem is forward, inverse or throughput; setting is the tolerance (1e-10),' // nl // &
         'the series order (N=10), the array size (n=1000000) or empty.'
     character(len=*), parameter :: scene = &
-        'Usage: hertzdamp scene FILE [--method M] [--format text|csv|json] [--plot FILE.png]' // nl // &
-        '                            [--progress] [--no-compare]' // nl // &
+        'Usage: hertzdamp scene FILE [--method M] [--damping LAW] [--format text|csv|json]' // nl // &
+        '                            [--plot FILE.png] [--progress] [--no-compare]' // nl // &
         '' // nl // &
         'Runs the DEM scene in FILE (Fortran namelist, see data/scenes/*.nml): spheres and' // nl // &
         'plane walls, normal forces only (tangential forces, friction and rotation are out' // nl // &
@@ -259,11 +259,14 @@ module hertzdamp_cli_help
         'that it lasts T_c = N dt with the material pair''s restitution e = sqrt(e_a e_b);' // nl // &
         'the physical Hertz stiffness k_phys = (4/3) E* sqrt(R*) is the bound (k <= k_phys).' // nl // &
         'With report = ''restitution'' every contact keeps k = k_phys and only alpha(e) and d' // nl // &
-        'are computed.' // nl // &
+        'are computed.  Contact force k zeta^(3/2) + d zeta^q zeta'', q of the damping law:' // nl // &
+        'linear (q = 0, default), tsuji (q = 1/4: alpha = d/sqrt(m k), e independent of the' // nl // &
+        'impact speed), kuwabara-kono (q = 1/2).' // nl // &
         '' // nl // &
         'Groups and keys (all SI units):' // nl // &
         '  &scene    title, dt, steps_per_contact (N), end_time, gravity (.true./.false.),' // nl // &
         '            g (3, default 0,0,-9.81), contact_end (''overlap''|''force''),' // nl // &
+        '            damping (''linear''|''tsuji''|''kuwabara-kono'', default linear),' // nl // &
         '            report (''restitution''|''restitution duration''), accuracy (default 1e-3),' // nl // &
         '            domain_lo, domain_hi (3 each, optional box), rest_speed (default 1e-3),' // nl // &
         '            samples (trace points, default 1000)                       once' // nl // &
@@ -278,6 +281,10 @@ module hertzdamp_cli_help
         '               in the contact duration tau_c (the report checks both).  Cost' // nl // &
         '               order: first-order < compact < series < pade < fit < iterative.' // nl // &
         '               Or one of first-order compact series pade fit iterative.' // nl // &
+        '               compact, series and pade exist for the linear law only (skipped' // nl // &
+        '               by auto, refused when asked for with another law).' // nl // &
+        '  --damping LAW  linear, tsuji or kuwabara-kono: overrides the file''s damping' // nl // &
+        '               key (the report states the law)' // nl // &
         '  --format F   text (default), csv (sections, each after a "# name" line), json' // nl // &
         '  --plot P     positions and velocities against time (gnuplot, PNG)' // nl // &
         '  --progress   percentage and time left of each run on stderr (on a terminal' // nl // &

@@ -1,21 +1,24 @@
 !> The command `scene`: run a DEM scene file with the inverse rule at every contact,
 !> report the achieved restitution and contact time against the targets, the
 !> energy/momentum checks, the cost, and the same scene with the iterative rule.
+!> The damping law is the scene's `damping` key, or --damping (which overrides it).
 !> A scene whose checks fail prints its report and exits with EXIT_CHECKS (5).
 module hertzdamp_cmd_scene
     use hertzdamp, only: hertzdamp_rk, hertzdamp_end_name, HD_OK, HD_METHOD_ITERATIVE, HD_METHOD_SERIES, &
-                         HD_METHOD_PADE, HD_METHOD_COMPACT, HD_METHOD_FIT, HD_METHOD_FIRST_ORDER, hertzdamp_method_name
+                         HD_METHOD_PADE, HD_METHOD_COMPACT, HD_METHOD_FIT, HD_METHOD_FIRST_ORDER, hertzdamp_method_name, &
+                         hertzdamp_law_code, hertzdamp_law_name, HD_DAMPING_LINEAR
     use hertzdamp_dem, only: hertzdamp_dem_scene, hertzdamp_dem_result, hertzdamp_dem_check, hertzdamp_dem_state, &
                              hertzdamp_dem_start, hertzdamp_dem_advance, hertzdamp_dem_finish, hertzdamp_dem_steps_done, &
                              hertzdamp_dem_steps_total, hertzdamp_dem_rule, hertzdamp_dem_select, &
                              hertzdamp_dem_cost_order, hertzdamp_dem_check_row, hertzdamp_dem_checks_of, &
                              hertzdamp_dem_ratio, hertzdamp_dem_verlet_energy, hertzdamp_dem_min_resolved, &
-                             HD_CHECK_PASS, HD_CHECK_FAIL, HD_CHECK_GRAVITY
+                             hertzdamp_dem_supports, HD_CHECK_PASS, HD_CHECK_FAIL, HD_CHECK_GRAVITY
     use hertzdamp_scene_io, only: hertzdamp_scene_read
     use hertzdamp_cli, only: cli_args, cli_buffer, parse_args, parse_choice, fail, quit, fmt_csv, &
                              EXIT_USAGE, EXIT_OK, EXIT_FAILURE, EXIT_NO_SOLUTION
     use hertzdamp_cli_output, only: out_table, format_choices, FORMAT_JSON, FORMAT_CSV
     use hertzdamp_cli_help, only: print_help, wants_help
+    use hertzdamp_cli_model, only: law_choices, model_opts, damping_unit
     use hertzdamp_cli_plot, only: plot_check_target, plot_run, plot_temp_name, gp_string
     use hertzdamp_cli_progress, only: progress_reporter
     use, intrinsic :: iso_fortran_env, only: int64
@@ -50,7 +53,7 @@ contains
         logical :: progress
         type(hertzdamp_dem_check_row), allocatable :: rows(:)
         character(len=:), allocatable :: file, msg, plot, reason, terminal, failed_names
-        integer :: fmt, mchoice, method, status, chosen, c, nsec, nfailed, nruns
+        integer :: fmt, mchoice, method, status, chosen, c, nsec, nfailed, nruns, law
         real(wp) :: err(6), tol_it, t_select
         logical :: avail(6), compare
         integer(int64) :: c0, c1, rate
@@ -60,17 +63,30 @@ contains
             call print_help('scene')
             call quit(EXIT_OK)
         end if
-        call parse_args(2, '--method --format --plot', '--progress --no-compare', args, allow_positional=.true.)
+        call parse_args(2, '--method --format --plot --damping', '--progress --no-compare', args, allow_positional=.true.)
         if (.not. allocated(args%positional)) call fail(EXIT_USAGE, 'scene needs a FILE (see hertzdamp scene --help)')
         file = args%positional
         mchoice = parse_choice(args%get('--method', 'auto'), method_choices, 'method (--method)')
         fmt = parse_choice(args%get('--format', 'text'), format_choices, 'format (--format)')
         plot = args%get('--plot', '')
+        law = -1
+        if (args%has('--damping')) then
+            c = parse_choice(args%get('--damping', ''), law_choices, 'damping law (--damping)')
+            law = hertzdamp_law_code(args%get('--damping', ''))
+        end if
         compare = .not. args%has('--no-compare')
         if (args%has('--plot')) call plot_check_target(plot, terminal)
 
         call hertzdamp_scene_read(file, sc, status, msg)
         if (status /= HD_OK) call fail(EXIT_USAGE, file // ': ' // msg)
+        if (law >= 0) sc%law = law   ! --damping overrides the file's damping key
+        if (mchoice /= 1) then
+            if (.not. hertzdamp_dem_supports(method_code(mchoice), sc%law)) then
+                call fail(EXIT_USAGE, 'method ' // hertzdamp_method_name(method_code(mchoice)) // ' exists for the ' // &
+                          'linear damping law only; with damping ' // hertzdamp_law_name(sc%law) // &
+                          ' use --method auto, fit, iterative or first-order')
+            end if
+        end if
         call hertzdamp_dem_check(sc, status, msg)
         if (status /= HD_OK) call fail(EXIT_USAGE, file // ': ' // msg)
 
@@ -194,8 +210,8 @@ contains
         call system_clock(c0)
         do
             call hertzdamp_dem_rule(res%contacts%e_target, sc%steps_per_contact * sc%dt, res%contacts%m, &
-                                    res%contacts%u_rule, res%contacts%k_phys, sc%iend, method, sc%want_duration, &
-                                    tol, k, d, tce, bound, stat)
+                                    res%contacts%u_rule, res%contacts%k_phys, sc%iend, sc%law, method, &
+                                    sc%want_duration, tol, k, d, tce, bound, stat)
             reps = reps + 1
             call system_clock(c1)
             if (real(c1 - c0, wp) / real(rate, wp) > 0.02_wp .or. reps >= 100000) exit
@@ -255,6 +271,7 @@ contains
         write (b, '(i0)') size(sc%wall)
         call t%meta('walls', trim(b))
         call t%meta('contact_end', hertzdamp_end_name(sc%iend))
+        call t%meta('damping', law_text(sc%law))
         if (sc%want_duration) then
             write (b, '(i0)') sc%steps_per_contact
             call t%meta('wanted', 'restitution and contact duration T_c = N dt, N = ' // trim(b) // ', T_c = ' // &
@@ -271,7 +288,13 @@ contains
             write (b, '(i0)') c
             call t%str(trim(b))
             call t%str(hertzdamp_method_name(hertzdamp_dem_cost_order(c)))
-            call t%str(trim(merge('yes', 'no ', avail(c))))
+            if (avail(c)) then
+                call t%str('yes')
+            else if (.not. hertzdamp_dem_supports(hertzdamp_dem_cost_order(c), sc%law)) then
+                call t%str('no: linear law only')
+            else
+                call t%str('no')
+            end if
             if (avail(c)) then
                 call t%num(err(c))
                 call t%str(trim(merge('yes', 'no ', err(c) <= sc%accuracy)))
@@ -283,6 +306,30 @@ contains
         end do
         call add_section('method', t, fmt, buf, nsec)
     end subroutine report_method
+
+    !> The damping law as the report states it: name, force, and its alpha.
+    function law_text(law) result(s)
+        integer, intent(in) :: law
+        character(len=:), allocatable :: s
+        if (law == HD_DAMPING_LINEAR) then
+            s = 'linear: force k zeta^(3/2) + d zeta''; alpha = d t*/m (~ u^(-1/5) at fixed k, d)'
+        else if (law == hertzdamp_law_code('tsuji')) then
+            s = 'tsuji: force k zeta^(3/2) + d zeta^(1/4) zeta''; alpha = d t* (u t*)^(1/4)/m = d/sqrt(m k) ' // &
+                '(independent of u: e the same at every impact speed)'
+        else
+            s = hertzdamp_law_name(law) // ': force k zeta^(3/2) + d zeta^(1/2) zeta''; alpha = d t* (u t*)^(1/2)/m ' // &
+                '(~ u^(1/5) at fixed k, d)'
+        end if
+    end function law_text
+
+    !> Unit of the damping coefficient d of the law (damping force d zeta^q zeta').
+    function d_unit(law) result(s)
+        integer, intent(in) :: law
+        character(len=:), allocatable :: s
+        type(model_opts) :: mo
+        mo%law = law
+        s = damping_unit(mo)
+    end function d_unit
 
     !> Name of the bodies of a contact: 'p3-p4' or 'p1-wall1'.
     function bodies(i, j) result(s)
@@ -312,8 +359,8 @@ contains
         nbin = count(res%contacts%binary .and. res%contacts%t_end >= 0.0_wp)
         write (b, '(i0,a,i0,a)') res%ncontacts, ' contacts, ', nbin, ' binary and ended'
         call t%meta('contacts', trim(b))
-        call t%meta('units', 'u_in [m/s], k [N m^-3/2], d [kg/s], tc [s]; e = separation/impact normal speed ' // &
-                    '(- where u_in <= 0)')
+        call t%meta('units', 'u_in [m/s], k [N m^-3/2], d [' // d_unit(sc%law) // '], tc [s]; e = separation/' // &
+                    'impact normal speed (- where u_in <= 0)')
         if (.not. sc%want_duration) call t%meta('tc_target', 'physical contact time t*(k_phys) tau_c(alpha)')
         if (sc%gravity) call t%meta('gravity', 'acts during contacts too: e and tc differ from the ' // &
                                     'targets by O(g tc / u_in)')

@@ -8,7 +8,7 @@ trap 'rm -f "$OUT" "$ERR"; rm -rf "$TMPD"' EXIT
 S=data/scenes
 
 # every shipped scene runs, and all its checks pass (JSON, parsed)
-for scene in binary drop chain bed; do
+for scene in binary drop chain bed binary_tsuji; do
   run scene $S/$scene.nml --format json
   check "$scene: exit 0" test "$RC" -eq 0
   check "$scene: stderr empty" test ! -s "$ERR"
@@ -81,6 +81,81 @@ checks = {r["check"]: r for r in d["checks"]["rows"]}
 assert checks["particles_left_domain"]["value"] == 0 and checks["particles_left_domain"]["result"] == "pass"
 assert checks["max_final_speed [m/s] (at rest)"]["result"] == "pass"
 ' "$TMPD/bed.json"
+
+# damping laws.  The report states the law (the file's key, default linear)
+check "damping: the report states the law (linear by default, tsuji from the file)" python3 -c '
+import json, sys
+b, t = (json.load(open(f)) for f in sys.argv[1:3])
+assert b["method"]["damping"].startswith("linear:"), b["method"]["damping"]
+assert t["method"]["damping"].startswith("tsuji:"), t["method"]["damping"]
+assert "kg s^-1 m^-1/4" in t["contacts"]["units"] and "d [kg/s]" in b["contacts"]["units"]
+' "$TMPD/binary.json" "$TMPD/binary_tsuji.json"
+# binary_tsuji: k = k_phys and one d per material pair at every impact speed (1e-3 to
+# 10 m/s; to 1e-12: d = alpha m t*^-1 (u t*)^-1/4 is formed through logarithms), every
+# e within the report's bound, compact/series/pade not offered
+check "binary_tsuji: one d per pair over four decades of speed, e within the bound" python3 -c '
+import json, sys
+d = json.load(open(sys.argv[1]))
+rows = d["contacts"]["rows"]
+assert len(rows) == 15 and all(r["stiffness"] == "physical" for r in rows)
+assert max(r["u_in"] for r in rows) / min(r["u_in"] for r in rows) > 9e3
+by_target = {}
+for r in rows:
+    by_target.setdefault(r["e_target"], []).append(r["d"])
+assert len(by_target) == 3 and all(max(v) / min(v) - 1 < 1e-12 for v in by_target.values()), by_target
+bound = [c for c in d["checks"]["rows"] if c["check"] == "max_e_rel_err (binary contacts)"][0]["bound"]
+assert max(r["e_rel_err"] for r in rows) <= bound
+m = {r["method"]: r for r in d["method"]["rows"]}
+assert all(m[x]["available"] == "no: linear law only" for x in ("compact", "series", "pade")), m
+assert d["method"]["method"] in ("first-order", "fit", "iterative")
+' "$TMPD/binary_tsuji.json"
+# every law and contact end on the shipped scenes: every check of the report passes
+# (e and T_c of the binary contacts within accuracy + 2/N^2, energy, momentum, rest)
+for law in linear tsuji kuwabara-kono; do
+  for end in overlap force; do
+    for scene in binary drop chain; do
+      sed "s/contact_end = 'overlap'/contact_end = '$end'/" $S/$scene.nml >"$TMPD/law.nml"
+      run scene "$TMPD/law.nml" --damping $law --no-compare --format json
+      check "$scene, --damping $law, $end: exit 0, every check passes (got $RC)" python3 -c '
+import json, sys
+d = json.load(open(sys.argv[1]))
+assert d["method"]["damping"].startswith(sys.argv[2] + ":") and d["method"]["contact_end"] == sys.argv[3]
+assert all(r["result"] != "FAIL" for r in d["checks"]["rows"]), d["checks"]["rows"]
+assert int(sys.argv[4]) == 0
+' "$OUT" $law $end $RC
+    done
+  done
+done
+for law in tsuji kuwabara-kono; do
+  run scene $S/bed.nml --damping $law --no-compare --format json
+  check "bed, --damping $law: exit 0 (got $RC), at rest, no FAIL" python3 -c '
+import json, sys
+d = json.load(open(sys.argv[1]))
+checks = {r["check"]: r for r in d["checks"]["rows"]}
+assert checks["max_final_speed [m/s] (at rest)"]["result"] == "pass"
+assert all(r["result"] != "FAIL" for r in d["checks"]["rows"])
+' "$OUT"
+done
+# --damping overrides the file's key, both ways
+run scene $S/binary_tsuji.nml --damping linear --no-compare --format json
+check "--damping linear overrides damping = 'tsuji' (exit $RC)" python3 -c '
+import json, sys
+d, t = (json.load(open(f)) for f in sys.argv[1:3])
+assert d["method"]["damping"].startswith("linear:") and "d [kg/s]" in d["contacts"]["units"]
+assert {r["d"] for r in d["contacts"]["rows"]} != {r["d"] for r in t["contacts"]["rows"]}
+assert len({r["d"] for r in d["contacts"]["rows"]}) == 15   # linear: d ~ u^(1/5) with k = k_phys
+' "$OUT" "$TMPD/binary_tsuji.json"
+run scene $S/binary.nml --damping kuwabara-kono --no-compare --format csv
+check "--damping kuwabara-kono on binary.nml: exit 0" test "$RC" -eq 0
+run scene $S/binary.nml --damping kuwabara-kono --no-compare
+check "--damping kuwabara-kono: the text report states the law" grep -q '^# damping: kuwabara-kono: ' "$OUT"
+expect_fail 2 "--damping viscous" scene $S/binary.nml --damping viscous
+check "--damping viscous: message names the option and the laws" grep -q 'damping law (--damping) "viscous": choose one of linear tsuji kuwabara-kono' "$ERR"
+expect_fail 2 "--method compact --damping tsuji" scene $S/binary.nml --method compact --damping tsuji
+check "--method compact --damping tsuji: says linear only" grep -q 'method compact exists for the linear damping law only' "$ERR"
+expect_fail 2 "--method pade with damping = 'tsuji' in the file" scene $S/binary_tsuji.nml --method pade
+run scene $S/binary_tsuji.nml --method first-order --no-compare --format json
+check "first-order with tsuji: offered (exit 0 or 5, got $RC)" test "$RC" -eq 0 -o "$RC" -eq 5
 
 # text and csv
 run scene $S/chain.nml
@@ -231,6 +306,10 @@ bad "overlap inside a count group" 'of this &particle group overlap' "$HEAD
 bad "unknown material" "unknown material 't'" "$HEAD
 &particle material = 't', radius = 1e-3, position = 0,0,0 /"
 bad "bad contact_end" 'contact_end' "&scene dt = 1e-6, steps_per_contact = 10, end_time = 1e-4, contact_end = 'sometimes' /"
+bad "bad damping" "line 1: &scene: damping must be 'linear', 'tsuji' or 'kuwabara-kono' (got 'viscous')" "&scene dt = 1e-6, steps_per_contact = 10, end_time = 1e-4, damping = 'viscous' /"
+bad "restitution outside the tsuji range" "restitution: the pair's e = sqrt(e_a e_b) = 5.0e-5 is below 1.0e-4, the smallest e of the damping law 'tsuji'" "&scene dt = 1e-6, steps_per_contact = 10, end_time = 1e-4, damping = 'tsuji' /
+&material name = 's', density = 7800, youngs_modulus = 2e11, poisson_ratio = 0.3, restitution = 5e-5 /
+&particle material = 's', radius = 1e-3, position = 0,0,0, count = 2, spacing = 3e-3,0,0 /"
 bad "malformed value" 'line 3: &particle: malformed value of radius' "$HEAD
 &particle material = 's', radius = 1e-3x, position = 0,0,0 /"
 bad "malformed value dt = abc" 'line 1: &scene: malformed value of dt' "&scene dt = abc, steps_per_contact = 10, end_time = 1e-4 /"

@@ -2,7 +2,7 @@
 !> the choice of the rule for a scene (`--method auto`).
 module hertzdamp_dem_rules
     use hertzdamp_kinds, only: hertzdamp_rk
-    use hertzdamp_status, only: HD_OK, HD_NO_REBOUND
+    use hertzdamp_status, only: HD_OK, HD_NO_REBOUND, HD_DAMPING_LINEAR
     use hertzdamp_scaling, only: hertzdamp_expand, hertzdamp_reduce
     use hertzdamp_rk45, only: hertzdamp_collision, hertzdamp_rk45_collide
     use hertzdamp_methods, only: HD_METHOD_SERIES, HD_METHOD_PADE, HD_METHOD_COMPACT, HD_METHOD_FIT, &
@@ -20,14 +20,14 @@ module hertzdamp_dem_rules
     integer, parameter, public :: hertzdamp_dem_cost_order(6) = [HD_METHOD_FIRST_ORDER, HD_METHOD_COMPACT, &
         HD_METHOD_SERIES, HD_METHOD_PADE, HD_METHOD_FIT, HD_METHOD_ITERATIVE]
 
-    public :: hertzdamp_dem_rule, hertzdamp_dem_select, hertzdamp_dem_targets
+    public :: hertzdamp_dem_rule, hertzdamp_dem_select, hertzdamp_dem_targets, hertzdamp_dem_supports
 
 contains
 
     !> The contact rule: k and d for one contact from the target restitution e,
     !> the contact time tc = N dt (used when want_duration), effective mass m,
     !> impact velocity u and the physical stiffness kp (the bound).
-    pure elemental subroutine hertzdamp_dem_rule(e, tc, m, u, kp, iend, method, want_duration, tol, &
+    pure elemental subroutine hertzdamp_dem_rule(e, tc, m, u, kp, iend, law, method, want_duration, tol, &
                                                  k, d, tc_expected, bound, status)
         real(wp), intent(in) :: e               !! target restitution
         real(wp), intent(in) :: tc              !! wanted contact time [s]
@@ -35,11 +35,12 @@ contains
         real(wp), intent(in) :: u               !! impact velocity [m s^-1]
         real(wp), intent(in) :: kp              !! physical stiffness [N m^-3/2]
         integer, intent(in) :: iend             !! contact-end definition
+        integer, intent(in) :: law              !! damping law HD_DAMPING_* (damping force d zeta^q zeta')
         integer, intent(in) :: method           !! HD_METHOD_*
         logical, intent(in) :: want_duration    !! impose tc (else k = kp)
         real(wp), intent(in) :: tol             !! tolerance of the iterative rule
         real(wp), intent(out) :: k              !! stiffness [N m^-3/2]
-        real(wp), intent(out) :: d              !! damping [kg s^-1]
+        real(wp), intent(out) :: d              !! damping [kg s^-1 m^-q]
         real(wp), intent(out) :: tc_expected    !! contact time the parameters give [s]
         logical, intent(out) :: bound           !! k = kp
         integer, intent(out) :: status          !! HD_OK or the rule's failure
@@ -52,20 +53,21 @@ contains
         if (want_duration) then
             ! (tol matters to the iterative rule only)
             call hertzdamp_invert(e, tc, m, u, iend, k, d, status, alpha=alpha, tau_c=tau, &
-                                  bound_active=bound, k_phys=kp, method=method, tol=tol)
+                                  bound_active=bound, k_phys=kp, method=method, tol=tol, law=law)
             if (status /= HD_OK) return
             tc_expected = tc
         else
             ! restitution only: the pair constants, then k = kp
-            call hertzdamp_invert_alpha(e, iend, alpha, tau, status, method=method, tol=tol)
+            call hertzdamp_invert_alpha(e, iend, alpha, tau, status, method=method, tol=tol, law=law)
             if (status /= HD_OK) return
             bound = .true.
         end if
         if (bound) then
-            ! physical stiffness: t* of kp (the reduction), then d = alpha m / t*
-            ! (= alpha m^(3/5) kp^(2/5) u^(1/5)) from the same expansion the inverse uses
+            ! physical stiffness: t* of kp (the reduction), then d = alpha m t*^-1 (u t*)^-q
+            ! (= alpha m^((3-2q)/5) kp^((2+2q)/5) u^((1-4q)/5): linear alpha m^(3/5) kp^(2/5) u^(1/5),
+            ! tsuji alpha sqrt(m kp)) from the same expansion the inverse uses
             call hertzdamp_reduce(kp, 0.0_wp, m, u, dd, ts, status)
-            if (status == HD_OK) call hertzdamp_expand(alpha, ts, m, u, kk, d, status)
+            if (status == HD_OK) call hertzdamp_expand(alpha, ts, m, u, kk, d, status, law=law)
             k = kp
             tc_expected = ts * tau
             if (status /= HD_OK) then
@@ -75,6 +77,15 @@ contains
             end if
         end if
     end subroutine hertzdamp_dem_rule
+
+    !> True when the library provides the contact rule `method` for the damping law:
+    !> fit, iterative and first-order (with the law's e1) for every law; compact,
+    !> series and Pade for the linear law only (doc/damping-laws.md section 9).
+    pure elemental logical function hertzdamp_dem_supports(method, law) result(ok)
+        integer, intent(in) :: method   !! HD_METHOD_*
+        integer, intent(in) :: law      !! HD_DAMPING_*
+        ok = law == HD_DAMPING_LINEAR .or. .not. any(method == [HD_METHOD_COMPACT, HD_METHOD_SERIES, HD_METHOD_PADE])
+    end function hertzdamp_dem_supports
 
     !> The distinct target restitutions of the material pairs that can meet.
     pure subroutine hertzdamp_dem_targets(sc, targets)
@@ -104,8 +115,11 @@ contains
     !> contact time against the rule's expected time (N dt, or t*(k_phys) tau_c when
     !> the physical stiffness applies, as in restitution-only scenes, where tau_c is
     !> the rule's own).
-    !> avail(c) is false when the library does not provide candidate c (any non-OK
-    !> status of the inverse, typically HD_NOT_SUPPORTED).
+    !> Every damping law (sc%law): the candidates, the inverse and the reference solve
+    !> are those of the law; compact, series and Pade exist for the linear law only
+    !> (hertzdamp_dem_supports) and are skipped for the others.
+    !> avail(c) is false when the library does not provide candidate c for the scene
+    !> (the law's rules, then any non-OK status of the inverse, typically HD_NOT_SUPPORTED).
     pure subroutine hertzdamp_dem_select(sc, chosen, err, avail, status)
         type(hertzdamp_dem_scene), intent(in) :: sc  !! the scene
         integer, intent(out) :: chosen               !! a method code, or -1 if none meets the accuracy
@@ -123,17 +137,18 @@ contains
         call hertzdamp_dem_targets(sc, targets)
         do c = 1, 6
             meth = hertzdamp_dem_cost_order(c)
+            if (.not. hertzdamp_dem_supports(meth, sc%law)) cycle
             avail(c) = .true.
             err(c) = 0.0_wp
             do it = 1, size(targets)
                 e = targets(it)
-                call hertzdamp_invert_alpha(e, sc%iend, alpha, tau, st, method=meth)
+                call hertzdamp_invert_alpha(e, sc%iend, alpha, tau, st, method=meth, law=sc%law)
                 if (st /= HD_OK) then
                     avail(c) = .false.
                     err(c) = huge(1.0_wp)
                     exit
                 end if
-                r = hertzdamp_rk45_collide(alpha, sc%iend)
+                r = hertzdamp_rk45_collide(alpha, sc%iend, law=sc%law)
                 if (r%status /= HD_OK) then
                     if (r%status /= HD_NO_REBOUND) then
                         status = r%status

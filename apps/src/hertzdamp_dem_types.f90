@@ -5,7 +5,7 @@
 !> (hertzdamp_materials).  No procedure here changes anything but its own result.
 module hertzdamp_dem_types
     use hertzdamp_kinds, only: hertzdamp_rk
-    use hertzdamp_status, only: HD_OK, HD_END_OVERLAP
+    use hertzdamp_status, only: HD_OK, HD_END_OVERLAP, HD_DAMPING_LINEAR
     use hertzdamp_methods, only: HD_METHOD_FIT
     implicit none
     private
@@ -58,6 +58,7 @@ module hertzdamp_dem_types
         logical :: gravity = .false.            !! gravity on/off
         real(wp) :: g(3) = [0.0_wp, 0.0_wp, -9.81_wp] !! gravity vector [m s^-2]
         integer :: iend = HD_END_OVERLAP        !! contact-end definition
+        integer :: law = HD_DAMPING_LINEAR      !! damping law HD_DAMPING_*: damping force d zeta^q zeta'
         logical :: want_duration = .true.       !! report and impose the contact duration
         real(wp) :: accuracy = 1.0e-3_wp        !! relative accuracy wanted of e (and T_c)
         logical :: has_domain = .false.         !! a bounding box is given
@@ -86,7 +87,7 @@ module hertzdamp_dem_types
         real(wp) :: u_in = 0.0_wp               !! impact normal velocity [m s^-1]
         real(wp) :: u_rule = 0.0_wp             !! velocity given to the rule, max(u_in, rest_speed)
         real(wp) :: k = 0.0_wp                  !! stiffness used [N m^-3/2]
-        real(wp) :: d = 0.0_wp                  !! damping used [kg s^-1]
+        real(wp) :: d = 0.0_wp                  !! damping used [kg s^-1 m^-q] (q of the scene's law)
         real(wp) :: k_phys = 0.0_wp             !! physical stiffness bound
         real(wp) :: e_target = 0.0_wp           !! target restitution of the material pair
         real(wp) :: tc_target = 0.0_wp          !! expected contact time [s] (N dt, or physical)
@@ -97,6 +98,7 @@ module hertzdamp_dem_types
         logical :: binary = .true.              !! no other contact on either body meanwhile
         integer :: state = HD_CONTACT_ACTIVE    !! HD_CONTACT_*
         real(wp) :: zeta_last = 0.0_wp          !! overlap at the last step
+        real(wp) :: zdot_last = 0.0_wp          !! overlap rate at the last step (as used in its force)
         real(wp) :: f_last = 0.0_wp             !! normal force at the last step
         real(wp) :: n_last(3) = 0.0_wp          !! normal at the last step
     end type hertzdamp_dem_contact

@@ -9,18 +9,22 @@
 !> energy scales at most big, counting what gravity can add in the run; the longest
 !> physical contact (at rest_speed) fewer than 2^31 - 1 steps, and with k = k_phys at
 !> every contact (restitution only) the shortest (the fastest impact) at least one
-!> step; the contact rule gives
-!> finite k and d at the extreme masses and speeds of each meeting pair; the trace
+!> step; each meeting pair's e within the range of the damping law's rule (the
+!> law's smallest e for the contact end); the contact rule of the scene's damping law
+!> gives finite k and d at the extreme masses and speeds of each meeting pair (tsuji:
+!> alpha and d = alpha sqrt(m k) at the pair's extreme masses); the trace
 !> within hertzdamp_dem_max_samples and hertzdamp_dem_max_trace_values.  The engine
 !> forms products of two such quantities at most, which stay far inside double
 !> precision.  Magnitudes are compared through their logarithms, so the checks
 !> themselves never overflow.
 module hertzdamp_dem_validate
     use hertzdamp_kinds, only: hertzdamp_rk
-    use hertzdamp_status, only: HD_OK, HD_BAD_ARGUMENT, hertzdamp_message
+    use hertzdamp_status, only: HD_OK, HD_BAD_ARGUMENT, hertzdamp_message, hertzdamp_end_name
     use hertzdamp_methods, only: HD_METHOD_FIT
     use hertzdamp_constants, only: hertzdamp_tau_c0
     use hertzdamp_inverse, only: hertzdamp_invert_alpha
+    use hertzdamp_laws, only: hertzdamp_law_status, hertzdamp_law_name
+    use hertzdamp_fit_laws, only: hertzdamp_fit_law_e_min
     use hertzdamp_materials, only: hertzdamp_sphere_mass, hertzdamp_effective_mass, hertzdamp_effective_radius, &
                                    hertzdamp_effective_modulus
     use hertzdamp_dem_types, only: hertzdamp_dem_scene, hertzdamp_dem_max_particles, hertzdamp_dem_max_steps, &
@@ -42,7 +46,8 @@ module hertzdamp_dem_validate
 contains
 
     !> Validate a scene: status HD_OK, or HD_BAD_ARGUMENT with a message naming the
-    !> offending key and, for particles and walls, their source line.
+    !> offending key (damping, restitution, ...) and, for particles and walls, their
+    !> source line.
     pure subroutine hertzdamp_dem_check(sc, status, message)
         type(hertzdamp_dem_scene), intent(in) :: sc       !! the scene
         integer, intent(out) :: status                     !! HD_OK or HD_BAD_ARGUMENT
@@ -167,7 +172,9 @@ contains
         integer :: n, every, nsamples, ntraced
         message = ''
         n = size(sc%radius)
-        if (.not. (sc%dt > 0.0_wp)) then
+        if (hertzdamp_law_status(sc%law) /= HD_OK) then
+            message = '&scene: damping must be ''linear'', ''tsuji'' or ''kuwabara-kono'''
+        else if (.not. (sc%dt > 0.0_wp)) then
             message = '&scene: dt must be positive'
         else if (.not. (sc%end_time > 0.0_wp)) then
             message = '&scene: end_time must be positive'
@@ -323,9 +330,10 @@ contains
         end do
     end function magnitudes
 
-    !> For every material pair that can meet: k_phys within the window, the longest
-    !> physical contact (at rest_speed) fewer than 2^31 - 1 steps, and the contact
-    !> rule finite at the extreme masses and speeds of the pair.
+    !> For every material pair that can meet: k_phys within the window, its e within
+    !> the damping law's range, the longest physical contact (at rest_speed) fewer than
+    !> 2^31 - 1 steps, and the contact rule of the law finite at the extreme masses and
+    !> speeds of the pair.
     pure function pair_limits(sc) result(message)
         type(hertzdamp_dem_scene), intent(in) :: sc
         character(len=:), allocatable :: message
@@ -368,10 +376,18 @@ contains
                               ', lies outside [1e-150, 1e150] N/m^1.5'
                     return
                 end if
+                ! the pair's restitution within the range of the damping law's rule
+                e = hertzdamp_dem_pair_e(sc%mat(a), sc%mat(b))
+                if (e < hertzdamp_fit_law_e_min(sc%law, sc%iend)) then
+                    message = pair // 'restitution: the pair''s e = sqrt(e_a e_b) = ' // pow10_text(lg(e)) // &
+                              ' is below ' // pow10_text(lg(hertzdamp_fit_law_e_min(sc%law, sc%iend))) // &
+                              ', the smallest e of the damping law ''' // hertzdamp_law_name(sc%law) // &
+                              ''' with contact_end ''' // hertzdamp_end_name(sc%iend) // ''''
+                    return
+                end if
                 ! longest physical contact: t* = (m^2 / (k_phys^2 u))^(1/5) at the
                 ! largest mass, smallest stiffness and slowest speed, times tau_c
-                e = hertzdamp_dem_pair_e(sc%mat(a), sc%mat(b))
-                call hertzdamp_invert_alpha(e, sc%iend, alpha, tau, st, method=HD_METHOD_FIT)
+                call hertzdamp_invert_alpha(e, sc%iend, alpha, tau, st, method=HD_METHOD_FIT, law=sc%law)
                 if (st /= HD_OK) tau = hertzdamp_tau_c0()
                 lts = (2.0_wp * lm(2) - 2.0_wp * lkp(1) - lg(lu(1))) / 5.0_wp + lg(tau)
                 lsteps = lts - lg(sc%dt)
@@ -392,12 +408,14 @@ contains
                               pow10_text(lg(sc%dt)) // ' s (dt too large, or youngs_modulus or density out of scale)'
                     return
                 end if
-                ! the rule at the corners (mass, stiffness) x (slowest, fastest speed)
+                ! the rule of the scene's damping law at the corners (mass, stiffness) x
+                ! (slowest, fastest speed): k and d finite (tsuji: d = alpha sqrt(m k),
+                ! kuwabara-kono: d ~ u^(-1/5) with the physical stiffness)
                 do im = 1, 2
                     do iu = 1, 2
                         call hertzdamp_dem_rule(e, sc%steps_per_contact * sc%dt, mm(im), lu(iu), 10.0_wp**lkp(im), &
-                                                sc%iend, HD_METHOD_FIT, sc%want_duration, 1.0e-8_wp, kk, dd, tce, &
-                                                bound, st)
+                                                sc%iend, sc%law, HD_METHOD_FIT, sc%want_duration, 1.0e-8_wp, kk, dd, &
+                                                tce, bound, st)
                         if (st /= HD_OK) then
                             message = pair // 'the contact rule fails at mass ' // pow10_text(lg(mm(im))) // &
                                       ' kg and speed ' // pow10_text(lg(lu(iu))) // ' m/s: ' // hertzdamp_message(st) // &

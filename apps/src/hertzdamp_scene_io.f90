@@ -4,13 +4,16 @@
 !> blank lines and lines starting with `!` or `#` may separate them:
 !>
 !>     &scene    title, dt, steps_per_contact, end_time, gravity, g, contact_end,
-!>               report, accuracy, domain_lo, domain_hi, rest_speed, samples /   (once)
+!>               damping, report, accuracy, domain_lo, domain_hi, rest_speed,
+!>               samples /                                                       (once)
 !>     &material name, density, youngs_modulus, poisson_ratio, restitution /     (repeated)
 !>     &particle material, radius, position, velocity, count, spacing /          (repeated)
 !>     &wall     material, point, normal /                                       (repeated)
 !>
 !> `count` > 1 repeats a particle at position + (i-1) spacing, i = 1..count.
-!> `report` is 'restitution' or 'restitution duration'.  Each group is read with
+!> `report` is 'restitution' or 'restitution duration'; `damping` is the damping law
+!> of every contact, 'linear' (default), 'tsuji' or 'kuwabara-kono' (damping force
+!> d zeta^q zeta', q = 0, 1/4, 1/2; doc/damping-laws.md).  Each group is read with
 !> the Fortran namelist READ from its own lines, so the compiler's own message
 !> names an unknown key; this module adds the line number.  Lines longer than 1024
 !> characters and files of more than 1,000,000 lines are refused (an endless input
@@ -19,6 +22,7 @@
 module hertzdamp_scene_io
     use hertzdamp_kinds, only: hertzdamp_rk
     use hertzdamp_status, only: HD_OK, HD_BAD_ARGUMENT, HD_END_OVERLAP, HD_END_FORCE
+    use hertzdamp_laws, only: hertzdamp_law_code
     use hertzdamp_dem, only: hertzdamp_dem_scene, hertzdamp_dem_material, hertzdamp_dem_wall, &
                              hertzdamp_dem_max_particles
     implicit none
@@ -349,12 +353,12 @@ contains
         integer, intent(in) :: first
         type(hertzdamp_dem_scene), intent(inout) :: sc
         character(len=:), allocatable, intent(inout) :: msg
-        character(len=256) :: title, contact_end, report, iom
+        character(len=256) :: title, contact_end, damping, report, iom
         real(wp) :: dt, end_time, g(3), accuracy, domain_lo(3), domain_hi(3), rest_speed
         real(wp) :: dt_b, end_time_b, domain_lo_b(3), domain_hi_b(3)
         integer :: steps_per_contact, samples, ios, steps_b
         logical :: gravity
-        namelist /scene/ title, dt, steps_per_contact, end_time, gravity, g, contact_end, report, accuracy, &
+        namelist /scene/ title, dt, steps_per_contact, end_time, gravity, g, contact_end, damping, report, accuracy, &
             domain_lo, domain_hi, rest_speed, samples
         call load(unset_b, iunset_b)
         if (len(msg) > 0) return
@@ -386,6 +390,12 @@ contains
             msg = at(first) // '&scene: contact_end must be ''overlap'' or ''force'''
             return
         end select
+        sc%law = hertzdamp_law_code(trim(adjustl(lower(damping))))
+        if (sc%law < 0) then
+            msg = at(first) // '&scene: damping must be ''linear'', ''tsuji'' or ''kuwabara-kono'' (got ''' // &
+                  trim(adjustl(damping)) // ''')'
+            return
+        end if
         select case (trim(lower(report)))
         case ('restitution'); sc%want_duration = .false.
         case ('restitution duration', 'restitution,duration', 'restitution, duration'); sc%want_duration = .true.
@@ -432,6 +442,7 @@ contains
             gravity = .false.
             g = [0.0_wp, 0.0_wp, -9.81_wp]
             contact_end = 'overlap'
+            damping = 'linear'
             report = 'restitution duration'
             accuracy = 1.0e-3_wp
             domain_lo = marker

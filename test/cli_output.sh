@@ -144,13 +144,51 @@ check "no progress when stderr is not a terminal" test ! -s "$ERR"
 run table --alpha 0.1:1:20 --progress --format csv
 check "--progress: exit 0, stdout untouched" test "$RC" -eq 0 -a "$(wc -l <"$OUT")" -eq 21
 check "--progress: percentage and time left on stderr" grep -Eq '^hertzdamp: table: +[0-9.]+ % done, about [0-9]+ s left$' "$ERR"
+# --progress into a file, and the command fails: the progress lines asked for stay, the
+# error is the one other line and the last (a failing row: exit 3 with the table; no
+# row with a result: exit 2, stdout empty)
+prog_then_error() {  # the last line of stderr is an error, every other one a progress line
+  python3 -c '
+import re, sys
+lines = open(sys.argv[1]).read().splitlines()
+prog = re.compile(r"hertzdamp: [a-z0-9 ()-]+: ( *[0-9.]+ % done, about .* left|starting)$")
+sys.exit(0 if lines and not prog.match(lines[-1]) and all(prog.match(l) for l in lines[:-1]) else 1)' "$ERR"
+}
+run invert --e 0.5,2 --tc 1e-5 --mass 1 --velocity 1 --progress --format csv
+check "--progress, a failing row: exit 3 with the table" test "$RC" -eq 3 -a "$(wc -l <"$OUT")" -eq 3
+check "--progress, a failing row: progress lines, then the error as the last line" prog_then_error
+check "--progress, a failing row: the error names the row" grep -q '^hertzdamp: 1 of 2 rows have no result.*--e 2' "$ERR"
+run invert --e 2 --tc 1e-5 --mass 1 --velocity 1 --progress
+check "--progress, no result: exit 2, stdout empty" test "$RC" -eq 2 -a ! -s "$OUT"
+check "--progress, no result: progress lines, then the error as the last line" prog_then_error
 if command -v script >/dev/null 2>&1; then
   # on a terminal (script(1) gives one), progress appears without --progress once the
-  # work takes longer than 2 s, on one line rewritten in place and erased at the end
-  script -qec "$BIN invert --method iterative --tol 1e-15 --e 0.01:1:5000 --tc 1e-5 --mass 1 --velocity 1 --format csv >$T/tty.csv" \
+  # work takes longer than 2 s, on one line rewritten in place and erased at the end;
+  # the run has one bad row (exit 3): what the terminal shows on stderr is then the
+  # error line alone (carriage returns and erase-line applied as a terminal does)
+  script -qec "$BIN invert --method iterative --tol 1e-15 --e 0.01:1:5000,1.5 --tc 1e-5 --mass 1 --velocity 1 --format csv >$T/tty.csv" \
     "$T/tty.log" >/dev/null 2>&1
-  if [ "$(wc -l <"$T/tty.csv")" -eq 5001 ] && grep -q '% done' "$T/tty.log"; then
+  if [ "$(wc -l <"$T/tty.csv")" -eq 5002 ] && grep -q '% done' "$T/tty.log"; then
     check "terminal: progress line rewritten with carriage returns" grep -q $'\r' "$T/tty.log"
+    check "terminal, a failing row: the screen shows one line on stderr, the error" python3 -c '
+import re, sys
+text = open(sys.argv[1], encoding="utf-8", errors="replace", newline="").read()
+text = "\n".join(l for l in text.split("\n") if not l.startswith("Script "))
+screen = []
+for raw in text.replace("\r\n", "\n").split("\n"):
+    line = []
+    col = 0
+    for tok in re.findall(r"\x1b\[K|\r|[^\r\x1b]", raw):
+        if tok == "\r":
+            col = 0
+        elif tok == "\x1b[K":
+            del line[col:]
+        else:
+            line[col:col + 1] = [tok]
+            col += 1
+    screen.append("".join(line))
+shown = [l for l in screen if l.strip()]
+sys.exit(0 if len(shown) == 1 and shown[0].startswith("hertzdamp: 1 of 5001 rows have no result") else 1)' "$T/tty.log"
   else
     echo "SKIPPED $SUITE: the iterative run took under 2 s here, no terminal progress to see"
   fi

@@ -176,6 +176,22 @@ printf 'velocity,e\n"1,5",0.5\n2,0.6\n' >"$T/comma.csv"
 expect_fail 2 "a quoted field with a comma is one (malformed) number" calibrate "$T/comma.csv" --mass $M
 check "a quoted field with a comma: names the field" grep -q '"1,5"' "$ERR"
 
+# a file name with a Latin-1 byte and a newline: text output one comment line of valid
+# UTF-8 (escaped as in messages), JSON valid with the name's newline escaped, an error
+# naming the file one line
+F="$T/$(printf 'caf\xe9\nx.csv')"
+cp "$T/etc.csv" "$F"
+run calibrate "$F" --mass $M
+check "odd file name, text: exit 0, first line one comment with the name escaped" \
+  bash -c "[ $RC -eq 0 ] && [ \"\$(head -n 1 '$OUT')\" = '# hertzdamp calibrate $T/caf\\xe9\\nx.csv' ]"
+run calibrate "$F" --mass $M --format json
+check "odd file name, json: valid UTF-8 JSON, the name with U+FFFD and its newline" python3 -c '
+import json, sys
+j = json.loads(open(sys.argv[1], "rb").read().decode("utf-8"))
+assert j["file"].endswith("caf\ufffd\nx.csv"), j["file"]' "$OUT"
+printf 'velocity,e\n1,0.5\n1,0.6\n' >"$F"
+expect_fail 3 "odd file name, one speed only" calibrate "$F" --mass $M
+
 # help: the limits of the data file are stated; a failed write of the help is exit 4
 run calibrate --help
 check "help: exit 0, usage" test "$RC" -eq 0 -a "$(head -c 26 "$OUT")" = "Usage: hertzdamp calibrate"

@@ -9,7 +9,7 @@ module hertzdamp_cli
     use hertzdamp_status, only: HD_OK, HD_NO_REBOUND, HD_BAD_RESTITUTION, HD_OUTSIDE_VALIDITY, HD_OUT_OF_RANGE, &
                                 HD_MAX_STEPS, HD_STEP_UNDERFLOW, HD_NO_CONVERGENCE
     use, intrinsic :: iso_fortran_env, only: output_unit, error_unit
-    use, intrinsic :: iso_c_binding, only: c_int, c_char, c_size_t, c_long
+    use, intrinsic :: iso_c_binding, only: c_int, c_char, c_size_t, c_long, c_funptr, c_intptr_t
     use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
     use hertzdamp_cli_text, only: one_line, fmt_csv, fmt_text, fmt_json, json_string, fmt_short, itoa
     implicit none
@@ -69,11 +69,27 @@ module hertzdamp_cli
             implicit none
             integer(c_int), value :: status
         end subroutine c_exit
+        function c_isatty(fd) bind(C, name='isatty') result(r)
+            import :: c_int
+            implicit none
+            integer(c_int), value :: fd
+            integer(c_int) :: r
+        end function c_isatty
+        function c_signal(sig, handler) bind(C, name='signal') result(previous)
+            import :: c_int, c_funptr
+            implicit none
+            integer(c_int), value :: sig
+            type(c_funptr), value :: handler
+            type(c_funptr) :: previous
+        end function c_signal
     end interface
+
+    !> SIGXFSZ (file size limit exceeded) on Linux.
+    integer(c_int), parameter :: sigxfsz = 25
 
     public :: get_arg, parse_args, parse_real, parse_real_list, parse_range, parse_sweep, required_sweep, parse_int, parse_choice
     public :: check_combinations
-    public :: exit_code_of, write_failed, write_stdout
+    public :: exit_code_of, write_failed, write_stdout, error_line, stderr_is_terminal, cli_start
     public :: fail, quit, fmt_csv, fmt_text, fmt_json, fmt_short, json_string, csv_join, pad
 
 contains
@@ -95,10 +111,34 @@ contains
         end select
     end function exit_code_of
 
+    !> Set up the process before any command: ignore SIGXFSZ, so that a write beyond
+    !> `ulimit -f` fails (EFBIG) and is reported like a full disk (exit 4, nothing
+    !> left behind) instead of killing the program with its output half-written.
+    !> gnuplot, started for --plot, inherits this.
+    subroutine cli_start()
+        type(c_funptr) :: previous
+        previous = c_signal(sigxfsz, transfer(1_c_intptr_t, previous))   ! 1 = SIG_IGN
+    end subroutine cli_start
+
+    !> True when stderr is a terminal.
+    logical function stderr_is_terminal()
+        stderr_is_terminal = c_isatty(2_c_int) == 1_c_int
+    end function stderr_is_terminal
+
+    !> Write `hertzdamp: message` on stderr as one line (control characters escaped).
+    !> On a terminal it first returns to the start of the line and erases it, so that
+    !> it replaces a progress line being shown (hertzdamp_cli_progress) instead of
+    !> being appended to it: a failing command shows exactly one line.
+    subroutine error_line(message)
+        character(len=*), intent(in) :: message
+        if (stderr_is_terminal()) write (error_unit, '(a)', advance='no') achar(13) // achar(27) // '[K'
+        write (error_unit, '(a)') 'hertzdamp: ' // one_line(message)
+        flush (error_unit)
+    end subroutine error_line
+
     !> Stdout could not be written (a full disk, a closed pipe): one line on stderr, exit 4.
     subroutine write_failed()
-        write (error_unit, '(a)') 'hertzdamp: cannot write the output (stdout)'
-        flush (error_unit)
+        call error_line('cannot write the output (stdout)')
         call c_exit(int(EXIT_FAILURE, c_int))
     end subroutine write_failed
 
@@ -106,8 +146,7 @@ contains
     subroutine fail(code, message)
         integer, intent(in) :: code            !! exit code
         character(len=*), intent(in) :: message !! the message (control characters are escaped)
-        write (error_unit, '(a)') 'hertzdamp: ' // one_line(message)
-        flush (error_unit)
+        call error_line(message)
         call quit(code)
     end subroutine fail
 
@@ -354,11 +393,29 @@ contains
             if (logscale) then
                 x(i) = exp(log(a0) + (log(a1) - log(a0)) * real(i - 1, wp) / real(n - 1, wp))
             else
-                x(i) = a0 + (a1 - a0) * (real(i - 1, wp) / real(n - 1, wp))
+                x(i) = range_point(a0, a1, i - 1, n - 1)
             end if
         end do
         if (n > 1) x(n) = a1
     end function parse_range
+
+    !> Point k of m equal steps from a0 to a1: a0 + (k (a1 - a0)) / m, the product
+    !> first, so that a grid of whole numbers (1:23:23, 0:1000:11) is exact: k (a1 - a0)
+    !> is then an exact integer and so is its quotient by m when the step is whole.
+    !> When a1 - a0 or the product overflows (-1e308:1e308:5), the weighted mean
+    !> a0 (1 - t) + a1 t, t = k/m, which cannot.
+    pure real(wp) function range_point(a0, a1, k, m) result(x)
+        real(wp), intent(in) :: a0, a1
+        integer, intent(in) :: k, m      !! 0 <= k <= m, m >= 1
+        real(wp) :: p, t
+        p = real(k, wp) * (a1 - a0)
+        if (ieee_is_finite(p)) then
+            x = a0 + p / real(m, wp)
+        else
+            t = real(k, wp) / real(m, wp)
+            x = a0 * (1.0_wp - t) + a1 * t
+        end if
+    end function range_point
 
     !> A sweep: comma-separated items, each a number, a range A0:A1:N or a logarithmic
     !> range A0:A1:logN (see parse_range), e.g. `0.01,0.1:1:10,2:5:log4`.  At most

@@ -16,8 +16,10 @@ module hertzdamp_cli_help
 
     character(len=*), parameter :: list_syntax = &
         'LIST: comma-separated values and ranges, e.g. 0.9 or 0.5,0.9 or 0.01:5:20' // nl // &
-        '(20 values from 0.01 to 5, evenly spaced) or 0.01:5:log20 (evenly spaced in' // nl // &
-        'log); one row per combination of the lists, at most 10000 rows.'
+        '(20 values from 0.01 to 5, evenly spaced; whole numbers exactly where the' // nl // &
+        'points are whole, 1:23:23) or 0.01:5:log20 (evenly spaced in log); one row per' // nl // &
+        'combination of the lists, at most 10000 rows.  CSV and JSON numbers read back' // nl // &
+        'as the same double (16 significant digits, 17 where needed).'
 
     character(len=*), parameter :: contact_help = &
         'Contact (definitions: hertzdamp --help):' // nl // &
@@ -55,7 +57,9 @@ module hertzdamp_cli_help
         '  --accuracy A          relative accuracy asked of series and pade (default' // nl // &
         '                        1e-10): beyond it the row is inaccurate' // nl // &
         '  --format F            text (aligned, default), csv or json' // nl // &
-        '  --progress            progress on stderr (default: on a terminal, after 2 s)' // nl // &
+        '  --progress            progress on stderr (default: on a terminal, after 2 s,' // nl // &
+        '                        one line that an error replaces; into a file or pipe,' // nl // &
+        '                        lines that precede an error, which comes last)' // nl // &
         '  --help                this text'
 
     character(len=*), parameter :: forward_methods_help = &
@@ -112,8 +116,9 @@ module hertzdamp_cli_help
         '  e                     restitution: normal separation speed / approach speed.' // nl // &
         '' // nl // &
         'Exit codes: 0 success, 2 bad usage, 3 no solution, 4 computation failed.' // nl // &
-        'Errors go to stderr as one line; stdout is then empty, except for commands that' // nl // &
-        'print one row per value, where rows with a result still print (see their --help).' // nl // &
+        'Errors go to stderr as one line (the last, after the lines --progress writes' // nl // &
+        'into a file or pipe); stdout is then empty, except for commands that print one' // nl // &
+        'row per value, where rows with a result still print (see their --help).' // nl // &
         'Documentation: man hertzdamp, README.md, doc/theory.md.'
 
     character(len=*), parameter :: table = &
@@ -183,7 +188,8 @@ module hertzdamp_cli_help
         '  --e LIST              restitution coefficients [-]' // nl // &
         '  --tc LIST             contact times T_c [s]' // nl // &
         '  --dt LIST             time step of the DEM code [s], with' // nl // &
-        '  --steps LIST          time steps per contact N (whole numbers): T_c = N dt' // nl // &
+        '  --steps LIST          time steps per contact N (whole numbers): T_c = N dt;' // nl // &
+        '                        N dt beyond double precision: out-of-range' // nl // &
         '  --velocity LIST       relative normal impact velocity u_in [m s^-1]' // nl // &
         contact_help // nl // &
         'Method:' // nl // inverse_methods_help // nl // method_help // nl // &
@@ -210,7 +216,7 @@ module hertzdamp_cli_help
         '' // nl // &
         '  --e LIST              restitution coefficients of the material pair [-]' // nl // &
         '  --velocity LIST       relative normal impact velocities u_in [m s^-1]' // nl // &
-        '  --steps LIST          time steps per contact N (default 10)' // nl // &
+        '  --steps LIST          time steps per contact N, whole numbers (default 10)' // nl // &
         contact_help // nl // &
         'Method:' // nl // inverse_methods_help // nl // method_help // nl // &
         '' // nl // &
@@ -294,7 +300,8 @@ module hertzdamp_cli_help
         '  --damping LAW  linear, tsuji or kuwabara-kono: overrides the file''s damping' // nl // &
         '               key (the report states the law)' // nl // &
         '  --format F   text (default), csv (sections, each after a "# name" line), json' // nl // &
-        '  --plot P     positions and velocities against time (gnuplot, PNG)' // nl // &
+        '  --plot P     positions and velocities against time (gnuplot, PNG; never the' // nl // &
+        '               scene file itself: exit 2)' // nl // &
         '  --progress   percentage and time left of each run on stderr (on a terminal' // nl // &
         '               without the option, once a run has taken 2 s)' // nl // &
         '  --no-compare skip the re-run with the iterative rule (no speed-up figures)' // nl // &
@@ -309,6 +316,63 @@ module hertzdamp_cli_help
         'no output.' // nl // &
         'A check that fails: the report on stdout, one line naming the failed checks on' // nl // &
         'stderr, exit 5.'
+
+    character(len=*), parameter :: calibrate = &
+        'Usage: hertzdamp calibrate FILE (--mass M | --radius R --density RHO [--wall])' // nl // &
+        '                 [--k-phys K | --youngs-modulus E --poisson-ratio NU] [--damping D]' // nl // &
+        '                 [options]' // nl // &
+        '' // nl // &
+        'Fits the damped-Hertz model m zeta'''' = -k zeta^(3/2) - d zeta^q zeta'' to measured' // nl // &
+        'restitution coefficients e(u), and contact times T_c(u), at several impact speeds u' // nl // &
+        '(nonlinear least squares, Levenberg-Marquardt with LAPACK, exact derivatives).' // nl // &
+        '' // nl // &
+        'FILE is CSV (RFC 4180: a field may be quoted; UTF-8, a byte-order mark at the' // nl // &
+        'start is skipped; LF or CRLF line ends) with a header line naming the columns' // nl // &
+        '(any order; lines starting with # and blank lines are skipped).  At most 100000' // nl // &
+        'data rows and 4096 characters per line (longer: exit 2).  Columns:' // nl // &
+        '  velocity   impact speed u [m s^-1] > 0                        (required)' // nl // &
+        '  e          restitution coefficient, 0 < e <= 1                (required)' // nl // &
+        '  tc         contact time [s] > 0 (an empty field: not measured)' // nl // &
+        '  sigma_e    standard uncertainty of e' // nl // &
+        '  sigma_tc   standard uncertainty of tc [s] (with sigma_e when tc is given)' // nl // &
+        'At least two different speeds.  With e only the data identify the combination' // nl // &
+        'c = d k^(-2(1+q)/5) (alpha = c m^((2q-3)/5) u^((4q-1)/5)), not k and d apart:' // nl // &
+        'give contact times, or the stiffness (--k-phys or elastic constants), for both.' // nl // &
+        '' // nl // &
+        '  --mass M        effective mass m* [kg], or from the materials as in invert:' // nl // &
+        '  --radius R --density RHO [--radius2 R2 --density2 RHO2 | --wall]' // nl // &
+        '  --k-phys K      the physical stiffness [N m^-3/2], or from the elastic constants' // nl // &
+        '  --youngs-modulus E --poisson-ratio NU [--youngs-modulus2 E2 --poisson-ratio2 NU2]' // nl // &
+        '                  (with --radius): without contact times the fit takes k = k_phys' // nl // &
+        '                  and gives d; with contact times k is fitted, k_phys shown beside' // nl // &
+        '  --damping D     linear (q = 0), tsuji (q = 1/4), kuwabara-kono (q = 1/2) or' // nl // &
+        '                  auto (default): every law, the one with the smallest AIC chosen' // nl // &
+        '                  (AIC = chi2 + 2p with sigmas, n ln(RSS/n) + 2p without; all laws' // nl // &
+        '                  have the same p, so this is the smallest chi2 or RSS)' // nl // &
+        '  --end overlap|force   contact-end definition (default overlap)' // nl // &
+        '  --method M      fit (default: machine-precision maps and their exact derivatives)' // nl // &
+        '                  or rk45 (reference integrator in the loop, for checking; slow)' // nl // &
+        '  --tol T         rk45 tolerance, 1e-15 <= T <= 1e-2 (default 1e-13)' // nl // &
+        '  --format F      text (default: summary and residuals), csv (summary) or json' // nl // &
+        '                  (the settings, every law under "laws", the data with each' // nl // &
+        '                  fitted law''s values under "residuals")' // nl // &
+        '  --plot FILE     the data with error bars and the fitted e(u), T_c(u) of each law' // nl // &
+        '                  (PNG, gnuplot; checked before any work: no gnuplot -> exit 4,' // nl // &
+        '                  not a regular file, not writable, or the data file -> exit 2)' // nl // &
+        '  --help          this text' // nl // &
+        '' // nl // &
+        'Weights: 1/sigma when the sigma columns are given (then chi2/dof and its p-value);' // nl // &
+        'otherwise e residuals absolute and T_c residuals relative, weighted equally, and' // nl // &
+        'the uncertainties scaled by the RMS of the weighted residuals.' // nl // &
+        'Uncertainties: standard (1 sigma), from the Jacobian at the optimum.' // nl // &
+        '' // nl // &
+        'CSV columns: damping,chosen,k,d,k_err,d_err,rms_residual_e,rms_residual_tc,c,c_err,' // nl // &
+        'chi2_dof,p_value,delta_aic,status (one row per law, the chosen first; empty fields' // nl // &
+        'for what the data do not identify).  Units: k [N m^-3/2], d [kg s^-1 m^-q],' // nl // &
+        'rms_residual_tc [s], c [SI].' // nl // &
+        'Exit codes: 2 invalid file or values (NaN, u <= 0, e outside (0, 1], ...), 3 the' // nl // &
+        'data cannot determine the parameters (one speed only, e = 1 everywhere), 4 the fit' // nl // &
+        'did not converge.'
 
     character(len=*), parameter :: check = &
         'Usage: hertzdamp check ENGINE DECK... --radius R --density RHO --velocity U [options]' // nl // &
@@ -379,6 +443,7 @@ contains
         case ('bench'); call write_stdout(bench // nl)
         case ('scene'); call write_stdout(scene // nl)
         case ('check'); call write_stdout(check // nl)
+        case ('calibrate'); call write_stdout(calibrate // nl)
         case ('version'); call write_stdout('hertzdamp ' // hertzdamp_version // nl)
         case default; call write_stdout(top // nl)
         end select

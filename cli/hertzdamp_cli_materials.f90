@@ -62,6 +62,7 @@ contains
         type(cli_contact), intent(out) :: ct
         real(wp) :: r1, r2, rho1, rho2, ym1, ym2, nu1, nu2, m1, m2, a
         integer :: st
+        character(len=:), allocatable :: sfx
         ct%wall = args%has('--wall')
         ct%description = merge('sphere and wall', 'two spheres    ', ct%wall)
         ct%description = trim(ct%description)
@@ -135,10 +136,14 @@ contains
             if (st /= HD_OUT_OF_RANGE) call check(args, st, '--youngs-modulus', '--poisson-ratio', '')
             call hertzdamp_plane_strain_modulus(ym2, nu2, a, st)
             if (st /= HD_OUT_OF_RANGE) call check(args, st, '--youngs-modulus2', '--poisson-ratio2', '')
+            ! E* is set by the more compliant body: a value out of range is its doing
+            sfx = ''
+            if (more_compliant(ym2, nu2, ym1, nu1) .and. (args%has('--youngs-modulus2') .or. &
+                                                        args%has('--poisson-ratio2'))) sfx = '2'
             call hertzdamp_effective_modulus(ym1, nu1, ym2, nu2, ct%e_star, st)
-            call check(args, st, '--youngs-modulus', '--poisson-ratio', ' effective modulus E*')
+            call check(args, st, '--youngs-modulus' // sfx, '--poisson-ratio' // sfx, ' effective modulus E*')
             call hertzdamp_hertz_stiffness(ct%e_star, ct%radius, ct%k_phys, st)
-            call check(args, st, '--youngs-modulus', '--radius', ' stiffness k_phys = (4/3) E* sqrt(R*)')
+            call check(args, st, '--youngs-modulus' // sfx, '--radius', ' stiffness k_phys = (4/3) E* sqrt(R*)')
             ct%has_kphys = .true.
             ct%from_materials = .true.
         end if
@@ -160,6 +165,14 @@ contains
         call t%meta('contact', ct%description)
         call t%meta('units', units)
     end subroutine contact_table
+
+    !> True when body a's compliance (1 - nu^2)/E exceeds body b's (compared in logs:
+    !> either may be beyond double precision; the moduli and ratios are valid).
+    pure logical function more_compliant(ya, nua, yb, nub)
+        real(wp), intent(in) :: ya, nua, yb, nub
+        more_compliant = log((1.0_wp - nua) * (1.0_wp + nua)) - log(ya) > &
+                         log((1.0_wp - nub) * (1.0_wp + nub)) - log(yb)
+    end function more_compliant
 
     !> Exit 2 when `opt` is given without `other`.
     subroutine needs(args, opt, other)

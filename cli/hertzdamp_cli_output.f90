@@ -7,10 +7,15 @@
 !> it): empty in CSV, null in JSON, '-' in text.  Strings come out as valid UTF-8
 !> (invalid bytes replaced, or escaped as \xNN in text, where control characters are
 !> escaped too), CSV fields are quoted where needed, JSON strings escaped.
+!>
+!> Metadata pairs are strings (`meta`), numbers (`meta_num`) or logicals (`meta_bool`):
+!> `# key: value` lines in text, members of the JSON object, not in CSV.  A JSON
+!> document may carry further tables (render's `more`): each as an array of row
+!> objects under its own name (`rows_key`, default "rows").
 module hertzdamp_cli_output
     use hertzdamp_kinds, only: hertzdamp_rk
     use hertzdamp_cli, only: cli_buffer, cli_line
-    use hertzdamp_cli_text, only: fmt_csv, fmt_text, fmt_json, json_string, csv_field, one_line
+    use hertzdamp_cli_text, only: fmt_csv, fmt_text, fmt_json, json_string, csv_field, one_line, itoa
     implicit none
     private
 
@@ -20,29 +25,35 @@ module hertzdamp_cli_output
     !> Names of the formats, in the order of the FORMAT_* constants.
     character(len=*), parameter, public :: format_choices = 'text csv json'
 
-    integer, parameter :: CELL_NUM = 1, CELL_STR = 2, CELL_NONE = 3, CELL_BOOL = 4
+    integer, parameter :: CELL_NUM = 1, CELL_STR = 2, CELL_NONE = 3, CELL_BOOL = 4, CELL_INT = 5
 
     !> One cell.
     type :: cell
         integer :: kind = CELL_NONE
         real(wp) :: x = 0.0_wp
         logical :: b = .false.
+        integer :: i = 0
         character(len=:), allocatable :: s
     end type cell
 
     !> A table with named columns and metadata (key = value pairs).
     type, public :: out_table
         type(cli_line), allocatable :: head(:)
-        type(cli_line), allocatable :: meta_key(:), meta_val(:)
+        type(cli_line), allocatable :: meta_key(:)
+        type(cell), allocatable :: meta_val(:)
         type(cell), allocatable :: cells(:, :)
         integer :: nrow = 0
         integer :: col = 0
+        character(len=:), allocatable :: rows_key   !! JSON name of the rows array ('rows' when unset)
     contains
         procedure :: set_columns   !! comma-separated column names (call first)
         procedure :: meta          !! a metadata pair: '# key: value' in text, a member in JSON, not in CSV
+        procedure :: meta_num      !! a metadata number (JSON: a number, null when not finite)
+        procedure :: meta_bool     !! a metadata logical (JSON: true/false)
         procedure :: num           !! append a number to the current row
         procedure :: str           !! append a string
         procedure :: bool          !! append a logical (true/false)
+        procedure :: int => int_cell  !! append an integer
         procedure :: none          !! append an empty cell
         procedure :: num_or_none   !! append a number, or an empty cell when `have` is false
         procedure :: render        !! render into a buffer in a FORMAT_*
@@ -77,9 +88,40 @@ contains
     subroutine meta(self, key, val)
         class(out_table), intent(inout) :: self
         character(len=*), intent(in) :: key, val
-        self%meta_key = [self%meta_key, cli_line(key)]
-        self%meta_val = [self%meta_val, cli_line(val)]
+        call add_meta(self, key, cell(kind=CELL_STR, s=val))
     end subroutine meta
+
+    !> A metadata number; `have` false: no value (null in JSON, - in text).
+    subroutine meta_num(self, key, x, have)
+        class(out_table), intent(inout) :: self
+        character(len=*), intent(in) :: key
+        real(wp), intent(in) :: x
+        logical, intent(in), optional :: have
+        logical :: h
+        h = .true.
+        if (present(have)) h = have
+        if (h .and. x == x) then
+            call add_meta(self, key, cell(kind=CELL_NUM, x=x))
+        else
+            call add_meta(self, key, cell(kind=CELL_NONE))
+        end if
+    end subroutine meta_num
+
+    !> A metadata logical.
+    subroutine meta_bool(self, key, b)
+        class(out_table), intent(inout) :: self
+        character(len=*), intent(in) :: key
+        logical, intent(in) :: b
+        call add_meta(self, key, cell(kind=CELL_BOOL, b=b))
+    end subroutine meta_bool
+
+    subroutine add_meta(self, key, val)
+        class(out_table), intent(inout) :: self
+        character(len=*), intent(in) :: key
+        type(cell), intent(in) :: val
+        self%meta_key = [self%meta_key, cli_line(key)]
+        self%meta_val = [self%meta_val, val]
+    end subroutine add_meta
 
     !> Move to the next cell, starting a new row after the last column; the cell array
     !> doubles when full (amortised constant time).
@@ -129,6 +171,14 @@ contains
         self%cells(self%col, self%nrow)%b = b
     end subroutine bool
 
+    subroutine int_cell(self, i)
+        class(out_table), intent(inout) :: self
+        integer, intent(in) :: i
+        call next_cell(self)
+        self%cells(self%col, self%nrow)%kind = CELL_INT
+        self%cells(self%col, self%nrow)%i = i
+    end subroutine int_cell
+
     subroutine none(self)
         class(out_table), intent(inout) :: self
         call next_cell(self)
@@ -166,6 +216,8 @@ contains
             end select
         case (CELL_BOOL)
             s = trim(merge('true ', 'false', c%b))
+        case (CELL_INT)
+            s = itoa(c%i)
         case default
             select case (fmt)
             case (FORMAT_CSV); s = ''
@@ -185,15 +237,18 @@ contains
         end do
     end function display_width
 
-    !> Render into the buffer in the given format.
-    subroutine render(self, fmt, buf)
+    !> Render into the buffer in the given format.  `more`: further tables, in JSON
+    !> only (each as an array under its rows_key, after this table's rows; their
+    !> metadata is not used).
+    subroutine render(self, fmt, buf, more)
         class(out_table), intent(in) :: self
         integer, intent(in) :: fmt
         type(cli_buffer), intent(inout) :: buf
+        type(out_table), intent(in), optional :: more(:)
         character(len=:), allocatable :: line
         type(cli_line), allocatable :: txt(:, :)
         integer, allocatable :: width(:)
-        integer :: i, j, nc
+        integer :: i, j, nc, nmore
         nc = size(self%head)
         select case (fmt)
         case (FORMAT_CSV)
@@ -210,25 +265,20 @@ contains
                 call buf%add(line(2:))
             end do
         case (FORMAT_JSON)
+            nmore = 0
+            if (present(more)) nmore = size(more)
             call buf%add('{')
             do j = 1, size(self%meta_key)
-                call buf%add('  ' // json_string(self%meta_key(j)%s) // ': ' // json_string(self%meta_val(j)%s) // ',')
+                call buf%add('  ' // json_string(self%meta_key(j)%s) // ': ' // cell_text(self%meta_val(j), fmt) // ',')
             end do
-            call buf%add('  "rows": [')
-            do i = 1, self%nrow
-                line = '    {'
-                do j = 1, nc
-                    if (j > 1) line = line // ', '
-                    line = line // json_string(self%head(j)%s) // ': ' // cell_text(self%cells(j, i), fmt)
-                end do
-                line = line // merge('},', '} ', i < self%nrow)
-                call buf%add(trim(line))
+            call json_rows(self, buf, nmore > 0)
+            do j = 1, nmore
+                call json_rows(more(j), buf, j < nmore)
             end do
-            call buf%add('  ]')
             call buf%add('}')
         case default
             do j = 1, size(self%meta_key)
-                call buf%add('# ' // one_line(self%meta_key(j)%s) // ': ' // one_line(self%meta_val(j)%s))
+                call buf%add('# ' // one_line(self%meta_key(j)%s) // ': ' // cell_text(self%meta_val(j), fmt))
             end do
             ! every cell formatted once, the widths in the same pass
             allocate (txt(nc, self%nrow), width(nc))
@@ -255,6 +305,31 @@ contains
             end do
         end select
     end subroutine render
+
+    !> The rows of a table as a JSON member: "rows_key": [ {...}, ... ] (a comma after
+    !> it when `comma`).
+    subroutine json_rows(t, buf, comma)
+        type(out_table), intent(in) :: t
+        type(cli_buffer), intent(inout) :: buf
+        logical, intent(in) :: comma
+        character(len=:), allocatable :: line
+        integer :: i, j
+        if (allocated(t%rows_key)) then
+            call buf%add('  ' // json_string(t%rows_key) // ': [')
+        else
+            call buf%add('  "rows": [')
+        end if
+        do i = 1, t%nrow
+            line = '    {'
+            do j = 1, size(t%head)
+                if (j > 1) line = line // ', '
+                line = line // json_string(t%head(j)%s) // ': ' // cell_text(t%cells(j, i), FORMAT_JSON)
+            end do
+            line = line // merge('},', '} ', i < t%nrow)
+            call buf%add(trim(line))
+        end do
+        call buf%add(trim(merge('  ],', '  ] ', comma)))
+    end subroutine json_rows
 
     !> `s` right-justified in `width` display columns.
     function right(s, width) result(r)

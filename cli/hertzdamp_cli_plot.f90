@@ -1,27 +1,58 @@
-!> Plots for the CLI (`bench --plot`, `scene --plot`), written safely:
+!> Plots for the CLI (`bench --plot`, `scene --plot`, `calibrate --plot`), written safely:
 !>
 !> 1. Before any work (plot_check_target): gnuplot is there (else exit 4); an existing
 !>    target must be a regular file, which is tested without opening it (a device, a
-!>    FIFO, a directory or a socket is refused, exit 2, and a FIFO never blocks); the
-!>    target's directory takes a new file and the temporary names are free (else 2).
-!> 2. gnuplot draws into plot_temp_name(target), a file of this process in $TMPDIR
-!>    (default /tmp) whose name needs no quoting, so any target name works (quotes,
-!>    a leading '-', a newline).
-!> 3. plot_run checks gnuplot's own output: its exit status, its error stream (any
+!>    FIFO, a directory or a socket is refused, exit 2, and a FIFO never blocks), and
+!>    none of the command's input files (else 2: `calibrate --plot DATA.csv` would
+!>    overwrite its data); the target's directory takes a new file and the temporary
+!>    names are free (else 2).
+!> 2. The data and the gnuplot script go to scratch files (type plot_scratch): new
+!>    files of this process in scratch_dir() ($TMPDIR if it is plain, else /tmp), every
+!>    write, flush and close checked and the size compared with what was written (a
+!>    full disk, `ulimit -f`: the program ignores SIGXFSZ, see main.f90, so that such a
+!>    write fails instead of killing the process).
+!> 3. gnuplot draws into plot_temp_name(target), a file of this process in
+!>    scratch_dir() whose name needs no quoting, so any target name works (quotes, a
+!>    leading '-', a newline).
+!> 4. plot_run checks gnuplot's own output: its exit status, its error stream (any
 !>    line but a warning is an error) and the PNG itself (signature, and the IEND
 !>    chunk that ends every complete PNG: gnuplot exits 0 on a full disk).
-!> 4. The PNG is copied to `target.hertzdamp-tmp` in the target's directory, every
+!> 5. The PNG is copied to `target.hertzdamp-tmp` in the target's directory, every
 !>    write checked, and renamed onto the target (atomic within a directory).
 !>
 !> On any failure: one line on stderr, exit 4, and every temporary file removed, so
 !> nothing is left behind: neither a half-written target nor a stray file.
 module hertzdamp_cli_plot
     use, intrinsic :: iso_c_binding, only: c_char, c_int, c_null_char
-    use hertzdamp_cli, only: fail, EXIT_USAGE, EXIT_FAILURE
+    use hertzdamp_cli, only: fail, cli_line, EXIT_USAGE, EXIT_FAILURE
     use hertzdamp_cli_text, only: itoa
+    use, intrinsic :: iso_fortran_env, only: int64
     implicit none
     private
-    public :: plot_check_target, plot_run, plot_temp_name, gp_string, sh_quote, remove_file
+    public :: plot_check_target, plot_run, plot_temp_name, gp_string, sh_quote, remove_file, scratch_dir
+
+    !> The scratch files of one plot (data, curves, gnuplot script): each created new in
+    !> scratch_dir(), written line by line with every write checked.  Any failure removes
+    !> them all and exits 4 (one line on stderr); `draw` runs gnuplot on the script
+    !> and removes them too.
+    !>
+    !>     type(plot_scratch) :: s
+    !>     call s%open('calibrate', 'dat', u, name)   ! a new file, its unit and name
+    !>     call s%write(u, line)                      ! checked
+    !>     call s%close(u)                            ! flush, close, size checked
+    !>     ...                                        ! more files
+    !>     call s%draw(script_name, target)           ! gnuplot, checked, renamed into place
+    type, public :: plot_scratch
+        type(cli_line), allocatable :: names(:)     !! the files created so far
+        integer, allocatable :: units(:)            !! their units (-1 once closed)
+        integer(int64), allocatable :: bytes(:)     !! bytes written to each
+    contains
+        procedure :: open => scratch_open
+        procedure :: write => scratch_write
+        procedure :: close => scratch_close
+        procedure :: discard => scratch_discard
+        procedure :: draw => scratch_draw
+    end type plot_scratch
 
     interface
         function c_rename(old, new) bind(C, name='rename') result(rc)
@@ -40,6 +71,8 @@ module hertzdamp_cli_plot
     !> The last 12 bytes of every complete PNG: the empty IEND chunk with its CRC.
     character(len=*), parameter :: png_end = achar(0) // achar(0) // achar(0) // achar(0) // 'IEND' // &
                                              char(174) // achar(66) // achar(96) // char(130)
+    !> What a write that fails after its file was created most likely met.
+    character(len=*), parameter :: full_hint = ' (disk full or file size limit?)'
     character(len=*), parameter :: png_signature = char(137) // 'PNG' // achar(13) // achar(10) // achar(26) // &
                                                    achar(10)
 
@@ -61,7 +94,9 @@ contains
         tmp = file // '.hertzdamp-tmp'
     end function dir_temp_name
 
-    !> $TMPDIR if it is set and plain (no quotes or control characters), else /tmp.
+    !> The directory of scratch files: $TMPDIR if it is set and plain (printable ASCII,
+    !> no quotes or backslashes, so that it needs no quoting in a gnuplot script), else
+    !> /tmp.
     function scratch_dir() result(dir)
         character(len=:), allocatable :: dir
         character(len=4096) :: env
@@ -76,15 +111,23 @@ contains
     end function scratch_dir
 
     !> Before any work: gnuplot exists (else exit 4); the target, if it exists, is a
-    !> regular file (tested, never opened; else exit 2) and writable; its directory
-    !> takes a new file; the temporary names are free (else exit 2).  Returns the PNG
-    !> terminal gnuplot offers (pngcairo or png).
-    subroutine plot_check_target(file, terminal)
+    !> regular file (tested, never opened; else exit 2), writable and none of `inputs`
+    !> (the same file under any name; else exit 2); its directory takes a new file;
+    !> the temporary names are free (else exit 2).  Returns the PNG terminal gnuplot
+    !> offers (pngcairo or png).
+    subroutine plot_check_target(file, terminal, inputs)
         character(len=*), intent(in) :: file
         character(len=:), allocatable, intent(out) :: terminal
-        integer :: es, cs
+        character(len=*), intent(in), optional :: inputs(:)   !! files the command reads
+        integer :: es, cs, i
         if (len_trim(file) == 0) call fail(EXIT_USAGE, 'option --plot needs a file name')
         call check_kind(file)
+        if (present(inputs)) then
+            do i = 1, size(inputs)
+                if (same_file(file, trim(inputs(i)))) call fail(EXIT_USAGE, 'the plot file "' // file // &
+                    '" is the input file "' // trim(inputs(i)) // '"; refused (it would be overwritten)')
+            end do
+        end if
         es = 1
         cs = 0
         call execute_command_line('command -v gnuplot >/dev/null 2>&1', exitstat=es, cmdstat=cs)
@@ -117,6 +160,16 @@ contains
                       '(a device, FIFO, socket or dangling link); refused')
         end select
     end subroutine check_kind
+
+    !> True when both names exist and are the same file (device and inode, test -ef).
+    logical function same_file(a, b)
+        character(len=*), intent(in) :: a, b
+        integer :: es, cs
+        es = 1
+        call execute_command_line('[ ' // sh_quote(a) // ' -ef ' // sh_quote(b) // ' ]', exitstat=es, cmdstat=cs)
+        if (cs /= 0) call fail(EXIT_FAILURE, 'cannot run /bin/sh to check the plot file')
+        same_file = es == 0
+    end function same_file
 
     !> Exit 2 unless `tmp` can be created as a new file (then it is removed again).
     subroutine check_new(tmp, message)
@@ -157,7 +210,7 @@ contains
                 if (len(png) < len(png_signature) + len(png_end)) then
                     why = 'gnuplot wrote an incomplete PNG'
                 else if (png(1:len(png_signature)) /= png_signature .or. png(len(png) - len(png_end) + 1:) /= png_end) then
-                    why = 'gnuplot wrote an incomplete PNG (no IEND chunk: disk full?)'
+                    why = 'gnuplot wrote an incomplete PNG, no IEND chunk' // full_hint
                 end if
             end if
         end if
@@ -229,18 +282,18 @@ contains
         if (ios == 0) flush (u, iostat=ios)
         if (ios /= 0) then
             close (u, iostat=ios_close)   ! the write failed already: its status decides
-            why = 'cannot write the plot (disk full?)'
+            why = 'cannot write the plot' // full_hint
             if (ios_close /= 0) why = why // ' (and cannot close it)'
             return
         end if
         close (u, iostat=ios)
         if (ios /= 0) then
-            why = 'cannot write the plot (disk full?)'
+            why = 'cannot write the plot' // full_hint
             return
         end if
         n = -1
         inquire (file=file, size=n)
-        if (n /= len(bytes)) why = 'the plot was written incompletely (disk full?)'
+        if (n /= len(bytes)) why = 'the plot was written incompletely' // full_hint
     end subroutine write_bytes
 
     !> Remove a file if it exists.
@@ -253,6 +306,107 @@ contains
         open (newunit=u, file=file, status='old', iostat=ios)
         if (ios == 0) close (u, status='delete')
     end subroutine remove_file
+
+    !> Create a new scratch file scratch_dir()/hertzdamp_TAG_PID_N.EXT (N the first
+    !> free number: status='new' never opens someone else's file); exit 4 when none
+    !> can be created.
+    subroutine scratch_open(self, tag, ext, unit, name)
+        class(plot_scratch), intent(inout) :: self
+        character(len=*), intent(in) :: tag, ext          !! e.g. 'calibrate', 'dat'
+        integer, intent(out) :: unit
+        character(len=:), allocatable, intent(out) :: name
+        integer :: try, ios
+        if (.not. allocated(self%names)) allocate (self%names(0), self%units(0), self%bytes(0))
+        ios = 1
+        do try = 1, 100
+            name = scratch_dir() // '/hertzdamp_' // tag // '_' // itoa(int(c_getpid())) // '_' // itoa(try) // &
+                   '.' // ext
+            open (newunit=unit, file=name, status='new', action='write', iostat=ios)
+            if (ios == 0) exit
+        end do
+        if (ios /= 0) call self%discard('cannot create a temporary file in ' // scratch_dir())
+        self%names = [self%names, cli_line(name)]
+        self%units = [self%units, unit]
+        self%bytes = [self%bytes, 0_int64]
+    end subroutine scratch_open
+
+    !> Write one line to a scratch file; exit 4 (removing every scratch file) on failure.
+    subroutine scratch_write(self, unit, line)
+        class(plot_scratch), intent(inout) :: self
+        integer, intent(in) :: unit
+        character(len=*), intent(in) :: line
+        integer :: ios, i
+        i = findloc(self%units, unit, dim=1)
+        write (unit, '(a)', iostat=ios) line
+        if (ios /= 0) call self%discard('cannot write a temporary file in ' // scratch_dir() // full_hint)
+        self%bytes(i) = self%bytes(i) + len(line) + 1
+    end subroutine scratch_write
+
+    !> Flush and close a scratch file and compare its size with the bytes written (a
+    !> full disk can show only here); exit 4 (removing every scratch file) on failure.
+    subroutine scratch_close(self, unit)
+        class(plot_scratch), intent(inout) :: self
+        integer, intent(in) :: unit
+        integer :: ios, ios_close, i
+        integer(int64) :: n
+        i = findloc(self%units, unit, dim=1)
+        flush (unit, iostat=ios)
+        close (unit, iostat=ios_close)
+        self%units(i) = -1
+        n = -1
+        if (ios == 0 .and. ios_close == 0) inquire (file=self%names(i)%s, size=n)
+        if (n /= self%bytes(i)) call self%discard('cannot write a temporary file in ' // scratch_dir() // full_hint)
+    end subroutine scratch_close
+
+    !> Remove every scratch file (closing those still open) and, with a message, exit 4.
+    subroutine scratch_discard(self, message)
+        class(plot_scratch), intent(inout) :: self
+        character(len=*), intent(in), optional :: message
+        integer :: i, ios
+        if (allocated(self%names)) then
+            do i = 1, size(self%names)
+                ios = 1
+                if (self%units(i) >= 0) close (self%units(i), status='delete', iostat=ios)
+                ! closed before, or the close could not delete it: by name
+                if (ios /= 0) call remove_file(self%names(i)%s)
+                self%units(i) = -1
+            end do
+        end if
+        if (present(message)) call fail(EXIT_FAILURE, message)
+    end subroutine scratch_discard
+
+    !> Run gnuplot on the scratch file `script` (which draws into plot_temp_name(target))
+    !> and put the PNG in place (plot_run); every scratch file is removed.
+    subroutine scratch_draw(self, script, target)
+        class(plot_scratch), intent(inout) :: self
+        character(len=*), intent(in) :: script, target
+        integer :: i, n, m
+        if (.not. allocated(self%names)) call self%discard('no temporary files for the plot')
+        n = 1
+        m = 0
+        do i = 1, size(self%names)
+            if (self%units(i) >= 0) call self%discard('a temporary file of the plot was not closed')
+            n = max(n, len(self%names(i)%s))
+            if (self%names(i)%s /= script) m = m + 1
+        end do
+        call draw_with(self, script, target, n, m)
+    end subroutine scratch_draw
+
+    !> plot_run with the scratch files other than the script: m names of length <= n.
+    subroutine draw_with(self, script, target, n, m)
+        class(plot_scratch), intent(in) :: self
+        character(len=*), intent(in) :: script, target
+        integer, intent(in) :: n, m
+        character(len=n) :: others(m)
+        integer :: i, k
+        k = 0
+        do i = 1, size(self%names)
+            if (self%names(i)%s == script) cycle
+            k = k + 1
+            others(k) = self%names(i)%s
+        end do
+        call plot_run(script, plot_temp_name(target), target, others)
+    end subroutine draw_with
 
     function c_str(s) result(c)
         character(len=*), intent(in) :: s

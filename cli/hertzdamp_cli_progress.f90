@@ -1,10 +1,16 @@
 !> Progress of long work on stderr: a percentage and an estimate of the time left.
 !>
 !> Shown only when stderr is a terminal, or when the user asked for it (`--progress`);
-!> stdout is never touched.  On a terminal nothing is printed for work that ends
-!> within `delay` seconds (default 2); on request the first line comes at once.  On a terminal one line is rewritten in place
-!> (carriage return) at most 4 times a second and erased by `finish`; otherwise (with
-!> --progress into a file or pipe) a full line is written at most every 5 seconds.
+!> stdout is never touched.
+!>
+!> - On a terminal: nothing for work that ends within `delay` seconds (default 2);
+!>   then one line, rewritten in place (carriage return) at most 4 times a second and
+!>   erased by `finish`.  An error message (hertzdamp_cli error_line) erases it too
+!>   and takes its place, so a failing command still shows exactly one line.
+!> - With --progress into a file or pipe: a full line `hertzdamp: LABEL: ... % done,
+!>   about ... left` (or `: starting`) at once and then at most every 5 seconds.  These
+!>   lines were asked for and stay: on failure they precede the one error line, which
+!>   is always the last line of stderr.
 !>
 !> Interface (a command with a `--progress` flag):
 !>
@@ -22,7 +28,7 @@
 module hertzdamp_cli_progress
     use hertzdamp_kinds, only: hertzdamp_rk
     use, intrinsic :: iso_fortran_env, only: error_unit, int64
-    use, intrinsic :: iso_c_binding, only: c_int
+    use hertzdamp_cli, only: stderr_is_terminal
     implicit none
     private
 
@@ -43,23 +49,7 @@ module hertzdamp_cli_progress
         procedure :: finish => progress_finish  !! erase the line (terminal) or end it
     end type progress_reporter
 
-    interface
-        function c_isatty(fd) bind(C, name='isatty') result(r)
-            import :: c_int
-            implicit none
-            integer(c_int), value :: fd
-            integer(c_int) :: r
-        end function c_isatty
-    end interface
-
-    public :: stderr_is_terminal
-
 contains
-
-    !> True when stderr is a terminal.
-    logical function stderr_is_terminal()
-        stderr_is_terminal = c_isatty(2_c_int) == 1_c_int
-    end function stderr_is_terminal
 
     !> Begin a piece of work of size `total`, called `label` in the progress line.
     subroutine progress_start(self, total, label, force, delay)

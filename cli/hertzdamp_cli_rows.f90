@@ -27,10 +27,9 @@ module hertzdamp_cli_rows
     use hertzdamp_status, only: HD_OK, HD_NO_REBOUND, HD_OUTSIDE_VALIDITY, HD_NOT_SUPPORTED, HD_INACCURATE, &
                                 HD_OUT_OF_RANGE, &
                                 HD_MAX_STEPS, HD_STEP_UNDERFLOW, HD_NO_CONVERGENCE
-    use hertzdamp_cli, only: cli_buffer, fail, quit, EXIT_OK, EXIT_USAGE, EXIT_NO_SOLUTION, EXIT_FAILURE
-    use hertzdamp_cli_text, only: itoa, one_line
+    use hertzdamp_cli, only: cli_buffer, fail, quit, error_line, EXIT_OK, EXIT_USAGE, EXIT_NO_SOLUTION, EXIT_FAILURE
+    use hertzdamp_cli_text, only: itoa
     use hertzdamp_cli_output, only: out_table
-    use, intrinsic :: iso_fortran_env, only: error_unit
     implicit none
     private
 
@@ -120,8 +119,8 @@ contains
         call t%render(fmt, buf)
         call buf%flush_to_stdout()
         if (nfail > 0) then
-            write (error_unit, '(a)') 'hertzdamp: ' // one_line(itoa(nfail) // ' of ' // itoa(self%nrows) // &
-                                      ' rows have no result (' // why // '); first: ' // self%first)
+            call error_line(itoa(nfail) // ' of ' // itoa(self%nrows) // ' rows have no result (' // why // &
+                            '); first: ' // self%first)
             call quit(max(EXIT_NO_SOLUTION, worst))
         end if
         call quit(EXIT_OK)

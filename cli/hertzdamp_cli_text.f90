@@ -156,11 +156,19 @@ contains
         r = utf8_clean(r // '"')
     end function csv_field
 
-    !> A number with 16 significant digits for CSV; 'inf', '-inf' or 'nan' if not finite.
+    !> A number for CSV that reads back as the same double, in the fewest significant
+    !> digits that do so among 15, 16 and 17, shown with at least 16 (trailing zeros):
+    !> a value typed with up to 15 digits shows as typed (0.78719 is
+    !> 7.871900000000000E-001, not the 7.871899999999999E-001 of 16 digits), most
+    !> others take 16, and 17 where 16 would not read back (huge(1.0) is
+    !> 1.7976931348623157E+308; 16 digits would round up to infinity).  'inf', '-inf'
+    !> or 'nan' if not finite.
     function fmt_csv(x) result(s)
         real(wp), intent(in) :: x
         character(len=:), allocatable :: s
-        character(len=40) :: buf
+        character(len=40) :: buf, b15
+        real(wp) :: y
+        integer :: ios, k
         if (ieee_is_nan(x)) then
             s = 'nan'
         else if (.not. ieee_is_finite(x)) then
@@ -168,11 +176,30 @@ contains
             s = trim(s)
         else
             write (buf, '(es24.15e3)') x
+            read (buf, *, iostat=ios) y
+            if (ios /= 0 .or. .not. (y == x)) then
+                write (buf, '(es25.16e3)') x
+            else
+                ! 15 digits can read back only when the 16th is 9, 0 or 1 (the 15-digit
+                ! decimal is within 1.2 units of the 16th digit of x); 0 shows it already
+                buf = adjustl(buf)
+                k = index(buf, 'E') - 1
+                if (buf(k:k) == '9' .or. buf(k:k) == '1') then
+                    write (b15, '(es23.14e3)') x
+                    read (b15, *, iostat=ios) y
+                    if (ios == 0 .and. y == x) then
+                        b15 = adjustl(b15)
+                        k = index(b15, 'E') - 1
+                        buf = b15(1:k) // '0' // b15(k + 1:)
+                    end if
+                end if
+            end if
             s = trim(adjustl(buf))
         end if
     end function fmt_csv
 
-    !> A number for JSON: 16 significant digits, null when not finite.
+    !> A number for JSON: as fmt_csv (it reads back as the same double), null when
+    !> not finite.
     function fmt_json(x) result(s)
         real(wp), intent(in) :: x
         character(len=:), allocatable :: s
@@ -184,7 +211,7 @@ contains
     end function fmt_json
 
     !> A number for aligned text (people): 7 significant digits, e.g. 5.235988E-006;
-    !> 'inf', '-inf' or 'nan' if not finite.  CSV and JSON carry 16.
+    !> 'inf', '-inf' or 'nan' if not finite.  CSV and JSON carry 16 or 17 (round trip).
     function fmt_text(x) result(s)
         real(wp), intent(in) :: x
         character(len=:), allocatable :: s

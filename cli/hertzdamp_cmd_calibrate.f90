@@ -8,13 +8,12 @@ module hertzdamp_cmd_calibrate
                                    CAL_OK, CAL_BAD_DATA, CAL_NOT_IDENTIFIED, CAL_NO_CONVERGENCE
     use hertzdamp_calibrate_maps, only: cal_law_name, cal_law_q, cal_max_law, CAL_LAW_LINEAR, CAL_LAW_TSUJI
     use hertzdamp_cli, only: cli_args, cli_buffer, cli_line, parse_args, parse_real, parse_choice, fail, quit, &
-                             fmt_csv, fmt_json, json_string, EXIT_USAGE, EXIT_OK, EXIT_NO_SOLUTION, EXIT_FAILURE
+                             EXIT_USAGE, EXIT_OK, EXIT_NO_SOLUTION, EXIT_FAILURE
     use hertzdamp_cli_output, only: out_table, format_choices, FORMAT_TEXT, FORMAT_CSV, FORMAT_JSON
-    use hertzdamp_cli_plot, only: plot_check_target, plot_run, plot_temp_name, gp_string
-    use hertzdamp_cli_help, only: wants_help
-    use hertzdamp_cli_text, only: g => fmt_short, itoa
+    use hertzdamp_cli_plot, only: plot_check_target, plot_scratch, plot_temp_name, gp_string
+    use hertzdamp_cli_help, only: print_help, wants_help
+    use hertzdamp_cli_text, only: g => fmt_short, itoa, one_line
     use hertzdamp_cli_materials, only: cli_contact, parse_contact, contact_options, contact_flags
-    use, intrinsic :: iso_fortran_env, only: output_unit, int64
     implicit none
     private
     public :: cmd_calibrate
@@ -25,61 +24,10 @@ module hertzdamp_cmd_calibrate
     integer, parameter :: max_line = 4096, max_rows = 100000
     !> The columns a data file may have (velocity and e are required).
     character(len=*), parameter :: known_columns = 'velocity e tc sigma_e sigma_tc'
+    !> The UTF-8 byte-order mark.
+    character(len=*), parameter :: bom = char(239) // char(187) // char(191)
     !> Speeds at which the fitted curves are drawn.
     integer, parameter :: n_curve = 200
-
-    character(len=*), parameter :: nl = new_line('a')
-    character(len=*), parameter :: help_text = &
-        'Usage: hertzdamp calibrate FILE (--mass M | --radius R --density RHO [--wall])' // nl // &
-        '                 [--k-phys K | --youngs-modulus E --poisson-ratio NU] [--damping D]' // nl // &
-        '                 [options]' // nl // &
-        '' // nl // &
-        'Fits the damped-Hertz model m zeta'''' = -k zeta^(3/2) - d zeta^q zeta'' to measured' // nl // &
-        'restitution coefficients e(u), and contact times T_c(u), at several impact speeds u' // nl // &
-        '(nonlinear least squares, Levenberg-Marquardt with LAPACK, exact derivatives).' // nl // &
-        '' // nl // &
-        'FILE is CSV with a header line naming the columns (any order; lines starting with' // nl // &
-        '# and blank lines are skipped):' // nl // &
-        '  velocity   impact speed u [m s^-1] > 0                        (required)' // nl // &
-        '  e          restitution coefficient, 0 < e <= 1                (required)' // nl // &
-        '  tc         contact time [s] > 0 (an empty field: not measured)' // nl // &
-        '  sigma_e    standard uncertainty of e' // nl // &
-        '  sigma_tc   standard uncertainty of tc [s] (with sigma_e when tc is given)' // nl // &
-        'At least two different speeds.  With e only the data identify the combination' // nl // &
-        'c = d k^(-2(1+q)/5) (alpha = c m^((2q-3)/5) u^((4q-1)/5)), not k and d apart:' // nl // &
-        'give contact times, or the stiffness (--k-phys or elastic constants), for both.' // nl // &
-        '' // nl // &
-        '  --mass M        effective mass m* [kg], or from the materials as in invert:' // nl // &
-        '  --radius R --density RHO [--radius2 R2 --density2 RHO2 | --wall]' // nl // &
-        '  --k-phys K      the physical stiffness [N m^-3/2], or from the elastic constants' // nl // &
-        '  --youngs-modulus E --poisson-ratio NU [--youngs-modulus2 E2 --poisson-ratio2 NU2]' // nl // &
-        '                  (with --radius): without contact times the fit takes k = k_phys' // nl // &
-        '                  and gives d; with contact times k is fitted, k_phys shown beside' // nl // &
-        '  --damping D     linear (q = 0), tsuji (q = 1/4), kuwabara-kono (q = 1/2) or' // nl // &
-        '                  auto (default): every law, the one with the smallest AIC chosen' // nl // &
-        '                  (AIC = chi2 + 2p with sigmas, n ln(RSS/n) + 2p without; all laws' // nl // &
-        '                  have the same p, so this is the smallest chi2 or RSS)' // nl // &
-        '  --end overlap|force   contact-end definition (default overlap)' // nl // &
-        '  --method M      fit (default: machine-precision maps and their exact derivatives)' // nl // &
-        '                  or rk45 (reference integrator in the loop, for checking; slow)' // nl // &
-        '  --tol T         rk45 tolerance, 1e-15 <= T <= 1e-2 (default 1e-13)' // nl // &
-        '  --format F      text (default: summary and residuals), csv (summary) or json (all)' // nl // &
-        '  --plot FILE     the data with error bars and the fitted e(u), T_c(u) of each law' // nl // &
-        '                  (PNG, gnuplot)' // nl // &
-        '  --help          this text' // nl // &
-        '' // nl // &
-        'Weights: 1/sigma when the sigma columns are given (then chi2/dof and its p-value);' // nl // &
-        'otherwise e residuals absolute and T_c residuals relative, weighted equally, and' // nl // &
-        'the uncertainties scaled by the RMS of the weighted residuals.' // nl // &
-        'Uncertainties: standard (1 sigma), from the Jacobian at the optimum.' // nl // &
-        '' // nl // &
-        'CSV columns: damping,chosen,k,d,k_err,d_err,rms_residual_e,rms_residual_tc,c,c_err,' // nl // &
-        'chi2_dof,p_value,delta_aic,status (one row per law, the chosen first; empty fields' // nl // &
-        'for what the data do not identify).  Units: k [N m^-3/2], d [kg s^-1 m^-q],' // nl // &
-        'rms_residual_tc [s], c [SI].' // nl // &
-        'Exit codes: 2 invalid file or values (NaN, u <= 0, e outside (0, 1], ...), 3 the' // nl // &
-        'data cannot determine the parameters (one speed only, e = 1 everywhere), 4 the fit' // nl // &
-        'did not converge.'
 
 contains
 
@@ -105,10 +53,7 @@ contains
         integer :: law, chosen, fmt, st, i
         integer, allocatable :: order(:)
         type(cli_buffer) :: buf
-        if (wants_help()) then
-            write (output_unit, '(a)') help_text
-            call quit(EXIT_OK)
-        end if
+        if (wants_help()) call print_help('calibrate')
         call parse_args(2, '--damping --end --method --tol --format --plot ' // contact_options, contact_flags, args, &
                         allow_positional=.true.)
         if (.not. allocated(args%positional)) call fail(EXIT_USAGE, 'missing data file (see --help)')
@@ -131,7 +76,7 @@ contains
         end if
         fmt = parse_choice(args%get('--format', 'text'), format_choices, 'format (--format)')
         plot = args%get('--plot', '')
-        if (args%has('--plot')) call plot_check_target(plot, terminal)
+        if (args%has('--plot')) call plot_check_target(plot, terminal, [file])
 
         call read_data(file, dat)
         ! the physical stiffness is the known k when the data have no contact times
@@ -182,18 +127,23 @@ contains
         open (newunit=u, file=file, status='old', action='read', iostat=ios, iomsg=iom)
         if (ios /= 0) call fail(EXIT_USAGE, 'cannot open the data file "' // file // '": ' // trim(iom))
         allocate (u_(64), e(64), tc(64), se(64), st(64), has(64), lines(64))
+        where = file
         n = 0
         lineno = 0
         col = 0
         do
             call read_line(u, file, lineno, line, eof)
             if (eof) exit
+            ! a UTF-8 byte-order mark (spreadsheet exports) at the start of the file
+            if (lineno == 1 .and. len(line) >= 3) then
+                if (line(1:3) == bom) line = line(4:)
+            end if
             line = trim(adjustl(line))
             if (len(line) == 0) cycle
             if (line(1:1) == '#') cycle
             write (b, '(i0)') lineno
             where = file // ' line ' // trim(b)
-            call split(line, fields)
+            call split(line, where, fields)
             if (.not. allocated(head)) then
                 head = fields
                 do j = 1, size(head)
@@ -332,20 +282,61 @@ contains
         end if
     end subroutine read_line
 
-    !> Comma-separated fields, each trimmed of blanks.
-    subroutine split(line, fields)
-        character(len=*), intent(in) :: line
+    !> Comma-separated fields (RFC 4180), each trimmed of blanks; a field in double
+    !> quotes may hold commas and doubled quotes ("" for "), and only blanks may follow
+    !> its closing quote (else exit 2 naming `where`).
+    subroutine split(line, where, fields)
+        character(len=*), intent(in) :: line, where
         type(cli_line), allocatable, intent(out) :: fields(:)
-        integer :: i, j
+        character(len=:), allocatable :: f
+        integer :: i, n
+        logical :: quoted
         allocate (fields(0))
-        j = 1
-        do i = 1, len(line) + 1
-            if (i > len(line)) then
-                fields = [fields, cli_line(trim(adjustl(line(j:))))]
-            else if (line(i:i) == ',') then
-                fields = [fields, cli_line(trim(adjustl(line(j:i - 1))))]
-                j = i + 1
+        n = len(line)
+        i = 1
+        do
+            do while (i <= n)               ! blanks before the field
+                if (line(i:i) /= ' ') exit
+                i = i + 1
+            end do
+            f = ''
+            quoted = .false.
+            if (i <= n) quoted = line(i:i) == '"'
+            if (quoted) then
+                i = i + 1
+                do
+                    if (i > n) call fail(EXIT_USAGE, where // ': a quoted field has no closing quote')
+                    if (line(i:i) == '"') then
+                        if (i < n) then
+                            if (line(i + 1:i + 1) == '"') then
+                                f = f // '"'
+                                i = i + 2
+                                cycle
+                            end if
+                        end if
+                        i = i + 1
+                        exit
+                    end if
+                    f = f // line(i:i)
+                    i = i + 1
+                end do
+                do while (i <= n)           ! blanks after the closing quote, then the comma
+                    if (line(i:i) == ',') exit
+                    if (line(i:i) /= ' ') call fail(EXIT_USAGE, where // ': characters after a quoted field')
+                    i = i + 1
+                end do
+                f = trim(adjustl(f))
+            else
+                do while (i <= n)
+                    if (line(i:i) == ',') exit
+                    f = f // line(i:i)
+                    i = i + 1
+                end do
+                f = trim(f)
             end if
+            fields = [fields, cli_line(f)]
+            if (i > n) exit
+            i = i + 1                       ! past the comma: a field follows (maybe empty)
         end do
     end subroutine split
 
@@ -435,7 +426,7 @@ contains
         integer :: i, l
         character(len=:), allocatable :: s
         l = chosen
-        call buf%add('# hertzdamp calibrate ' // file)
+        call buf%add('# hertzdamp calibrate ' // one_line(file))
         s = '# ' // itoa(size(dat%u)) // ' restitution coefficients'
         if (count(dat%has_tc) > 0) s = s // ' and ' // itoa(count(dat%has_tc)) // ' contact times'
         s = s // ' at speeds ' // g(minval(dat%u)) // ' to ' // g(maxval(dat%u)) // ' m/s, '
@@ -511,6 +502,9 @@ contains
         end do
     end subroutine residual_table
 
+    !> JSON: the run as metadata, one row per law under "laws" (the chosen first) and
+    !> the data with every fitted law's values under "residuals" (one row per law and
+    !> measurement, for the laws that were fitted).
     subroutine write_json(file, dat, o, ct, res, order, chosen, auto, buf)
         character(len=*), intent(in) :: file
         type(cal_data), intent(in) :: dat
@@ -520,119 +514,105 @@ contains
         integer, intent(in) :: order(:), chosen
         logical, intent(in) :: auto
         type(cli_buffer), intent(inout) :: buf
+        type(out_table) :: t, r(1)
         integer :: i, l, j
         logical :: ok
-        character(len=:), allocatable :: s
-        call buf%add('{')
-        call buf%add('  "command": "calibrate",')
-        call buf%add('  "file": ' // json_string(file) // ',')
-        call buf%add('  "mass": ' // fmt_json(o%mass) // ',')
-        call buf%add('  "contact": ' // json_string(ct%description) // ',')
-        call buf%add('  "k_phys": ' // opt(ct%k_phys, ct%has_kphys) // ',')
-        call buf%add('  "k_fixed": ' // trim(merge('true ', 'false', o%k_known > 0.0_wp)) // ',')
-        call buf%add('  "end": ' // json_string(hertzdamp_end_name(o%iend)) // ',')
-        call buf%add('  "method": ' // json_string(trim(merge('fit ', 'rk45', o%method == HD_METHOD_FIT))) // ',')
+        call t%set_columns('damping,q,chosen,status,message,note,k,k_err,d,d_err,corr_kd,c_definition,c,c_err,' // &
+                           'alpha_1ms,alpha_1ms_err,chi2,dof,p_value,aic,delta_aic,akaike_weight,rms_residual_e,' // &
+                           'rms_residual_tc,iterations')
+        t%rows_key = 'laws'
+        call t%meta('command', 'calibrate')
+        call t%meta('file', file)
+        call t%meta_num('mass', o%mass)
+        call t%meta('contact', ct%description)
+        call t%meta_num('k_phys', ct%k_phys, ct%has_kphys)
+        call t%meta_bool('k_fixed', o%k_known > 0.0_wp)
+        call t%meta('end', hertzdamp_end_name(o%iend))
+        call t%meta('method', trim(merge('fit ', 'rk45', o%method == HD_METHOD_FIT)))
         if (auto) then
-            call buf%add('  "damping": "auto",')
+            call t%meta('damping', 'auto')
         else
-            call buf%add('  "damping": ' // json_string(cal_law_name(chosen)) // ',')
+            call t%meta('damping', cal_law_name(chosen))
         end if
-        call buf%add('  "weighted": ' // trim(merge('true ', 'false', dat%weighted)) // ',')
-        call buf%add('  "criterion": "smallest AIC (chi2 + 2p with sigmas, n ln(RSS/n) + 2p without)",')
-        call buf%add('  "chosen": ' // json_string(cal_law_name(chosen)) // ',')
-        call buf%add('  "laws": [')
+        call t%meta_bool('weighted', dat%weighted)
+        call t%meta('criterion', 'smallest AIC (chi2 + 2p with sigmas, n ln(RSS/n) + 2p without)')
+        call t%meta('chosen', cal_law_name(chosen))
+        call r(1)%set_columns('damping,velocity,e,e_fit,tc,tc_fit')
+        r(1)%rows_key = 'residuals'
         do i = 1, size(order)
             l = order(i)
             ok = res(l)%status == CAL_OK
-            call buf%add('    {')
-            call buf%add('      "damping": ' // json_string(cal_law_name(l)) // ', "q": ' // fmt_json(cal_law_q(l)) // &
-                         ', "chosen": ' // trim(merge('true ', 'false', l == chosen)) // ', "status": ' // &
-                         json_string(status_name(res(l))) // ', "message": ' // json_string(res(l)%message) // &
-                         ', "note": ' // json_string(res(l)%note) // ',')
-            call buf%add('      "k": ' // opt(res(l)%k, ok .and. res(l)%kd_known) // ', "k_err": ' // &
-                         opt(res(l)%k_err, ok .and. res(l)%k_fitted) // ', "d": ' // &
-                         opt(res(l)%d, ok .and. res(l)%kd_known) // ', "d_err": ' // &
-                         opt(res(l)%d_err, ok .and. res(l)%kd_known) // ', "corr_kd": ' // &
-                         opt(res(l)%corr_kd, ok .and. res(l)%k_fitted) // ',')
-            call buf%add('      "c_definition": ' // json_string(c_definition(l)) // ', "c": ' // opt(res(l)%c, ok) // &
-                         ', "c_err": ' // opt(res(l)%c_err, ok) // ', "alpha_1ms": ' // opt(res(l)%a, ok) // &
-                         ', "alpha_1ms_err": ' // opt(res(l)%a_err, ok) // ',')
-            call buf%add('      "chi2": ' // opt(res(l)%chi2, ok) // ', "dof": ' // itoa(res(l)%dof) // &
-                         ', "p_value": ' // opt(res(l)%p_value, ok .and. dat%weighted) // ', "aic": ' // &
-                         opt(res(l)%aic, ok) // ', "delta_aic": ' // opt(res(l)%delta_aic, ok .and. auto) // &
-                         ', "akaike_weight": ' // opt(res(l)%weight, ok .and. auto) // ',')
-            call buf%add('      "rms_residual_e": ' // opt(res(l)%rms_e, ok) // ', "rms_residual_tc": ' // &
-                         opt(res(l)%rms_tc, ok .and. res(l)%n_tc > 0) // ', "iterations": ' // &
-                         itoa(res(l)%iterations) // ',')
-            call buf%add('      "residuals": [')
-            if (ok) then
-                do j = 1, size(dat%u)
-                    s = '        {"velocity": ' // fmt_json(dat%u(j)) // ', "e": ' // fmt_json(dat%e(j))
-                    s = s // ', "e_fit": ' // fmt_json(res(l)%e_fit(j)) // ', "tc": ' // opt(dat%tc(j), dat%has_tc(j))
-                    s = s // ', "tc_fit": ' // opt(res(l)%tc_fit(j), res(l)%kd_known .and. res(l)%n_tc > 0)
-                    call buf%add(s // trim(merge('}, ', '}  ', j < size(dat%u))))
-                end do
-            end if
-            call buf%add('      ]')
-            call buf%add('    }' // trim(merge(', ', '  ', i < size(order))))
+            call t%str(cal_law_name(l))
+            call t%num(cal_law_q(l))
+            call t%bool(l == chosen)
+            call t%str(status_name(res(l)))
+            call t%str(res(l)%message)
+            call t%str(res(l)%note)
+            call t%num_or_none(res(l)%k, ok .and. res(l)%kd_known)
+            call t%num_or_none(res(l)%k_err, ok .and. res(l)%k_fitted)
+            call t%num_or_none(res(l)%d, ok .and. res(l)%kd_known)
+            call t%num_or_none(res(l)%d_err, ok .and. res(l)%kd_known)
+            call t%num_or_none(res(l)%corr_kd, ok .and. res(l)%k_fitted)
+            call t%str(c_definition(l))
+            call t%num_or_none(res(l)%c, ok)
+            call t%num_or_none(res(l)%c_err, ok)
+            call t%num_or_none(res(l)%a, ok)
+            call t%num_or_none(res(l)%a_err, ok)
+            call t%num_or_none(res(l)%chi2, ok)
+            call t%int(res(l)%dof)
+            call t%num_or_none(res(l)%p_value, ok .and. dat%weighted)
+            call t%num_or_none(res(l)%aic, ok)
+            call t%num_or_none(res(l)%delta_aic, ok .and. auto)
+            call t%num_or_none(res(l)%weight, ok .and. auto)
+            call t%num_or_none(res(l)%rms_e, ok)
+            call t%num_or_none(res(l)%rms_tc, ok .and. res(l)%n_tc > 0)
+            call t%int(res(l)%iterations)
+            if (.not. ok) cycle
+            do j = 1, size(dat%u)
+                call r(1)%str(cal_law_name(l))
+                call r(1)%num(dat%u(j))
+                call r(1)%num(dat%e(j))
+                call r(1)%num(res(l)%e_fit(j))
+                call r(1)%num_or_none(dat%tc(j), dat%has_tc(j))
+                call r(1)%num_or_none(res(l)%tc_fit(j), res(l)%kd_known .and. res(l)%n_tc > 0)
+            end do
         end do
-        call buf%add('  ]')
-        call buf%add('}')
+        call t%render(FORMAT_JSON, buf, r)
     end subroutine write_json
-
-    function opt(x, ok) result(s)
-        real(wp), intent(in) :: x
-        logical, intent(in) :: ok
-        character(len=:), allocatable :: s
-        if (ok) then
-            s = fmt_json(x)
-        else
-            s = 'null'
-        end if
-    end function opt
 
     ! ------------------------------------------------------------------ plot
 
     !> The data (with error bars when the sigmas are given) and the fitted e(u) and
     !> T_c(u) of every law that was fitted; T_c panel when the file has contact times.
+    !> Data, curves and script are scratch files of hertzdamp_cli_plot (every write
+    !> checked; all removed, whatever happens).
     subroutine write_plot(dat, o, res, order, plot, terminal)
         type(cal_data), intent(in) :: dat
         type(cal_options), intent(in) :: o
         type(cal_result), intent(in) :: res(0:)
         integer, intent(in) :: order(:)
         character(len=*), intent(in) :: plot, terminal
-        character(len=:), allocatable :: dat_file, cur_file, gp, tmpdir, pe, pt
-        integer :: u, ios, i, j, l, st, ln, try
-        integer(int64) :: cnt
+        type(plot_scratch) :: s
+        character(len=:), allocatable :: dat_file, cur_file, gp, pe, pt, line, col
+        integer :: u, i, j, l, st
         real(wp) :: umin, umax, x, e, tc
-        character(len=4096) :: env
-        character(len=32) :: b
+        character(len=25 * 5) :: b5
+        character(len=50) :: b2
         logical :: tcs
-        call get_environment_variable('TMPDIR', env, length=ln, status=ios)
-        tmpdir = '/tmp'
-        if (ios == 0 .and. ln > 0) tmpdir = trim(env)
-        call system_clock(cnt)
-        do try = 1, 100   ! status='new': never someone else's file
-            write (b, '(i0)') cnt + try
-            dat_file = tmpdir // '/hertzdamp_calibrate_' // trim(b) // '.dat'
-            open (newunit=u, file=dat_file, status='new', action='write', iostat=ios)
-            if (ios == 0) exit
-        end do
-        if (ios /= 0) call fail(EXIT_FAILURE, 'cannot write a temporary file in ' // tmpdir)
-        cur_file = tmpdir // '/hertzdamp_calibrate_' // trim(b) // '.cur'
-        gp = tmpdir // '/hertzdamp_calibrate_' // trim(b) // '.gp'
+        call s%open('calibrate', 'dat', u, dat_file)
         do i = 1, size(dat%u)
-            write (u, '(5(es24.15e3,1x))') dat%u(i), dat%e(i), merge(dat%sigma_e(i), 0.0_wp, dat%weighted), &
+            write (b5, '(5(es24.15e3,1x))') dat%u(i), dat%e(i), merge(dat%sigma_e(i), 0.0_wp, dat%weighted), &
                 merge(dat%tc(i), -1.0_wp, dat%has_tc(i)), merge(dat%sigma_tc(i), 0.0_wp, dat%weighted .and. dat%has_tc(i))
+            call s%write(u, trim(b5))
         end do
-        close (u)
-        open (newunit=u, file=cur_file, status='new', action='write', iostat=ios)
-        if (ios /= 0) call scratch_fail([character(len=len(dat_file)) :: dat_file])
+        call s%close(u)
+        call s%open('calibrate', 'cur', u, cur_file)
         umin = minval(dat%u) / 1.2_wp
         umax = maxval(dat%u) * 1.2_wp
         do i = 0, n_curve
             x = umin * (umax / umin)**(real(i, wp) / n_curve)
-            write (u, '(es24.15e3)', advance='no') x
+            write (b2, '(es24.15e3)') x
+            line = trim(b2)
             do j = 1, size(order)
                 l = order(j)
                 e = -1.0_wp
@@ -642,22 +622,22 @@ contains
                     if (st /= HD_OK) e = -1.0_wp
                     if (st /= HD_OK .or. .not. res(l)%kd_known) tc = -1.0_wp
                 end if
-                write (u, '(2(1x,es24.15e3))', advance='no') e, tc
+                write (b2, '(2(1x,es24.15e3))') e, tc
+                line = line // trim(b2)
             end do
-            write (u, '(a)') ''
+            call s%write(u, line)
         end do
-        close (u)
-        open (newunit=u, file=gp, status='new', action='write', iostat=ios)
-        if (ios /= 0) call scratch_fail([character(len=len(dat_file)) :: dat_file, cur_file])
+        call s%close(u)
+        call s%open('calibrate', 'gp', u, gp)
         tcs = any(dat%has_tc)
-        write (u, '(a)') 'set terminal ' // terminal // ' size 900,' // trim(merge('900', '500', tcs)) // ' noenhanced'
-        write (u, '(a)') 'set output ' // gp_string(plot_temp_name(plot))
-        if (tcs) write (u, '(a)') 'set multiplot layout 2,1'
-        write (u, '(a)') 'set logscale x'
-        write (u, '(a)') 'set grid'
-        write (u, '(a)') 'set key bottom right'
-        write (u, '(a)') 'set xlabel "impact speed u [m/s]"'
-        write (u, '(a)') 'set ylabel "restitution e"'
+        call s%write(u, 'set terminal ' // terminal // ' size 900,' // trim(merge('900', '500', tcs)) // ' noenhanced')
+        call s%write(u, 'set output ' // gp_string(plot_temp_name(plot)))
+        if (tcs) call s%write(u, 'set multiplot layout 2,1')
+        call s%write(u, 'set logscale x')
+        call s%write(u, 'set grid')
+        call s%write(u, 'set key bottom right')
+        call s%write(u, 'set xlabel "impact speed u [m/s]"')
+        call s%write(u, 'set ylabel "restitution e"')
         pe = 'plot ' // gp_string(dat_file) // ' using 1:2' // trim(merge(':3 with yerrorbars', '   with points    ', &
              dat%weighted)) // ' pt 7 title "measured"'
         pt = 'plot ' // gp_string(dat_file) // ' using 1:($4 < 0 ? NaN : $4)' // &
@@ -665,37 +645,26 @@ contains
         do j = 1, size(order)
             l = order(j)
             if (res(l)%status /= CAL_OK) cycle
-            write (b, '(i0)') 2 * j
-            pe = pe // ', ' // gp_string(cur_file) // ' using 1:($' // trim(b) // ' < 0 ? NaN : $' // trim(b) // &
+            col = itoa(2 * j)
+            pe = pe // ', ' // gp_string(cur_file) // ' using 1:($' // col // ' < 0 ? NaN : $' // col // &
                  ') with lines lw 2 title ' // gp_string(cal_law_name(l))
             if (res(l)%kd_known) then
-                write (b, '(i0)') 2 * j + 1
-                pt = pt // ', ' // gp_string(cur_file) // ' using 1:($' // trim(b) // ' < 0 ? NaN : $' // trim(b) // &
+                col = itoa(2 * j + 1)
+                pt = pt // ', ' // gp_string(cur_file) // ' using 1:($' // col // ' < 0 ? NaN : $' // col // &
                      ') with lines lw 2 title ' // gp_string(cal_law_name(l))
             end if
         end do
-        write (u, '(a)') pe
+        call s%write(u, pe)
         if (tcs) then
-            write (u, '(a)') 'set ylabel "contact time T_c [s]"'
-            write (u, '(a)') 'set format y "%.2e"'
-            write (u, '(a)') 'set key top right'
-            write (u, '(a)') pt
-            write (u, '(a)') 'unset multiplot'
+            call s%write(u, 'set ylabel "contact time T_c [s]"')
+            call s%write(u, 'set format y "%.2e"')
+            call s%write(u, 'set key top right')
+            call s%write(u, pt)
+            call s%write(u, 'unset multiplot')
         end if
-        write (u, '(a)') 'set output'
-        close (u)
-        call plot_run(gp, plot_temp_name(plot), plot, [character(len=len(dat_file)) :: dat_file, cur_file])
+        call s%write(u, 'set output')
+        call s%close(u)
+        call s%draw(gp, plot)
     end subroutine write_plot
-
-    !> A scratch file could not be written: remove the others, exit 4.
-    subroutine scratch_fail(files)
-        character(len=*), intent(in) :: files(:)
-        integer :: i, u, ios
-        do i = 1, size(files)
-            open (newunit=u, file=trim(files(i)), status='old', iostat=ios)
-            if (ios == 0) close (u, status='delete')
-        end do
-        call fail(EXIT_FAILURE, 'cannot write a temporary file')
-    end subroutine scratch_fail
 
 end module hertzdamp_cmd_calibrate

@@ -10,9 +10,10 @@ module hertzdamp_cmd_invert
     use hertzdamp_cli_output, only: out_table
     use hertzdamp_cli_help, only: print_help, wants_help
     use hertzdamp_cli_model, only: model_opts, parse_model, model_options, e_range_message, instead, damping_unit
-    use hertzdamp_cli_rows, only: row_log, row_kind, row_word, row_has_result, ROW_OUTSIDE_VALIDITY
+    use hertzdamp_cli_rows, only: row_log, row_kind, row_word, row_has_result, ROW_OUTSIDE_VALIDITY, ROW_OUT_OF_RANGE
     use hertzdamp_cli_materials, only: cli_contact, parse_contact, contact_table, contact_options, contact_flags
     use hertzdamp_cli_progress, only: progress_reporter
+    use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
     implicit none
     private
     public :: cmd_invert, cmd_timestep
@@ -25,22 +26,22 @@ contains
         type(cli_args) :: args
         type(model_opts) :: c
         type(cli_contact) :: ct
-        real(wp), allocatable :: es(:), tcs(:), us(:)
+        real(wp), allocatable :: es(:), tcs(:), us(:), tc_dt(:), tc_steps(:)
         character(len=:), allocatable :: tc_key
         real(wp) :: e, tc, u, k, d, alpha, tstar, tau
-        logical :: bound, have
+        logical :: bound, have, tc_ok
         integer :: status, ie, it, iu, kind, n
         type(out_table) :: t
         type(row_log) :: rows
         type(progress_reporter) :: p
-        allocate (es(0), tcs(0), us(0))   ! (defined descriptors for the reallocating assignments)
+        allocate (es(0), tcs(0), us(0), tc_dt(0), tc_steps(0))   ! (defined descriptors for the reallocating assignments)
         if (wants_help()) call print_help('invert')
         call parse_args(2, '--e --tc --dt --steps --velocity ' // contact_options // ' ' // model_options, &
                         contact_flags // ' --progress', args)
         call parse_model(args, c, inverse=.true.)
         call parse_contact(args, ct)
         es = required_sweep(args, '--e')
-        call contact_times(args, tcs, tc_key)
+        call contact_times(args, tcs, tc_key, tc_dt, tc_steps)
         us = required_sweep(args, '--velocity')
         if (.not. ct%has_mass) call fail(EXIT_USAGE, 'missing option --mass (or --radius with --density) (see --help)')
         call check_combinations([size(es), size(tcs), size(us)], '--e, the contact times and --velocity')
@@ -55,18 +56,24 @@ contains
                     e = es(ie)
                     tc = tcs(it)
                     u = us(iu)
-                    if (ct%has_kphys) then
+                    ! dt x steps beyond double precision: valid input without a solution
+                    tc_ok = ieee_is_finite(tc)
+                    if (.not. tc_ok) then
+                        status = HD_OUT_OF_RANGE
+                    else if (ct%has_kphys) then
                         call hertzdamp_invert(e, tc, ct%mass, u, c%iend, k, d, status, alpha, tstar, tau, bound, &
                                               ct%k_phys, c%method, c%tol, c%accuracy, c%law)
                     else
                         call hertzdamp_invert(e, tc, ct%mass, u, c%iend, k, d, status, alpha, tstar, tau, bound, &
                                               method=c%method, tol=c%tol, accuracy=c%accuracy, law=c%law)
                     end if
+                    ! the contact time the returned k and d give (T_c, or longer when k = k_phys)
+                    if (status == HD_OK .and. .not. ieee_is_finite(tstar * tau)) status = HD_OUT_OF_RANGE
                     kind = row_kind(status)
                     if (status == HD_BAD_RESTITUTION .and. e >= 0.0_wp .and. e <= 1.0_wp) kind = ROW_OUTSIDE_VALIDITY
                     have = row_has_result(kind)
                     call t%num(e)
-                    call t%num(tc)
+                    call t%num_or_none(tc, tc_ok)
                     call t%num(u)
                     call t%num(ct%mass)
                     call t%num_or_none(ct%radius, ct%has_radius)
@@ -81,11 +88,14 @@ contains
                     else
                         call t%none()
                     end if
-                    ! the contact time the returned k and d give: T_c, or longer when k = k_phys
                     call t%num_or_none(tstar * tau, have)
                     call t%str(row_word(kind))
                     if (have) then
                         call rows%add(kind, '')
+                    else if (.not. tc_ok) then
+                        call rows%add(kind, '--dt ' // fmt_short(tc_dt(it)) // ' x --steps ' // &
+                                      fmt_short(tc_steps(it)) // ': the contact time is outside the ' // &
+                                      'double-precision range')
                     else
                         call rows%add(kind, invert_reason(c, status, e, tc, u, tc_key))
                     end if
@@ -98,11 +108,13 @@ contains
         call rows%emit(t, c%fmt)
     end subroutine cmd_invert
 
-    !> The target contact times: --tc LIST, or every --dt times every --steps.
-    subroutine contact_times(args, tcs, key)
+    !> The target contact times: --tc LIST, or every --dt times every --steps (a
+    !> product beyond double precision is inf: that row is out-of-range).
+    subroutine contact_times(args, tcs, key, tc_dt, tc_steps)
         type(cli_args), intent(in) :: args
         real(wp), allocatable, intent(out) :: tcs(:)
         character(len=:), allocatable, intent(out) :: key   !! the option the times come from
+        real(wp), allocatable, intent(out) :: tc_dt(:), tc_steps(:)   !! the factors of each time (0 with --tc)
         real(wp), allocatable :: dts(:), steps(:)
         integer :: i, j
         if (args%has('--tc')) then
@@ -111,6 +123,8 @@ contains
             end if
             tcs = parse_sweep(args%get('--tc', ''), '--tc')
             key = '--tc'
+            tc_dt = 0.0_wp * tcs
+            tc_steps = tc_dt
             return
         end if
         if (.not. (args%has('--dt') .and. args%has('--steps'))) then
@@ -119,15 +133,20 @@ contains
         dts = parse_sweep(args%get('--dt', ''), '--dt')
         steps = parse_steps(args)
         call check_combinations([size(dts), size(steps)], '--dt and --steps')
-        tcs = [((dts(i) * steps(j), j=1, size(steps)), i=1, size(dts))]
+        tc_dt = [((dts(i), j=1, size(steps)), i=1, size(dts))]
+        tc_steps = [((steps(j), j=1, size(steps)), i=1, size(dts))]
+        tcs = tc_dt * tc_steps
         key = '--dt x --steps'
     end subroutine contact_times
 
-    !> --steps: whole numbers >= 1 (a list or range of them).
+    !> --steps: whole numbers >= 1 (a list or range of them).  A linear range of whole
+    !> numbers gives them exactly (parse_range); a value within 4 ulp of a whole number,
+    !> as a logarithmic range gives (1:1000:log4 has 9.999999999999998), is taken as it.
     function parse_steps(args, default) result(steps)
         type(cli_args), intent(in) :: args
         real(wp), intent(in), optional :: default
         real(wp), allocatable :: steps(:)
+        real(wp) :: r
         integer :: i
         if (.not. args%has('--steps') .and. present(default)) then
             steps = [default]
@@ -135,6 +154,8 @@ contains
         end if
         steps = parse_sweep(args%get('--steps', ''), '--steps')
         do i = 1, size(steps)
+            r = anint(steps(i))
+            if (abs(steps(i) - r) <= 4.0_wp * spacing(r)) steps(i) = r
             if (.not. (steps(i) >= 1.0_wp .and. steps(i) <= 1.0e9_wp .and. steps(i) == anint(steps(i)))) then
                 call fail(EXIT_USAGE, '--steps ' // fmt_short(steps(i)) // ': time steps per contact must be ' // &
                           'a whole number from 1 to 1e9')
@@ -176,9 +197,9 @@ contains
         type(model_opts) :: c
         type(cli_contact) :: ct
         real(wp), allocatable :: es(:), us(:), steps(:)
-        real(wp) :: alpha, tau, tstar, a0, tmin, thertz, th, umax
-        integer :: status, ie, is, iu, kind, st
-        logical :: have
+        real(wp) :: alpha, tau, tstar, a0, tmin, thertz, th, umax, tcd, excess, dtmax, dt_el
+        integer :: status, ie, is, iu, kind, rkind, st
+        logical :: have, rhave
         type(out_table) :: t
         type(row_log) :: rows
         allocate (es(0), us(0), steps(0))
@@ -219,6 +240,22 @@ contains
             if (status == HD_BAD_RESTITUTION .and. es(ie) >= 0.0_wp .and. es(ie) <= 1.0_wp) kind = ROW_OUTSIDE_VALIDITY
             have = row_has_result(kind)
             do is = 1, size(steps)
+                ! the damped contact, its time steps and the elastic ones: every number
+                ! the row prints must be finite and the time steps positive
+                tcd = tmin * tau
+                dt_el = thertz / steps(is)
+                rkind = kind
+                excess = 0.0_wp
+                dtmax = 0.0_wp
+                if (have) then
+                    excess = thertz / tcd - 1.0_wp
+                    dtmax = tcd / steps(is)
+                    if (.not. (ieee_is_finite(tcd) .and. ieee_is_finite(excess) .and. dtmax > 0.0_wp)) then
+                        rkind = ROW_OUT_OF_RANGE
+                    end if
+                end if
+                if (.not. dt_el > 0.0_wp) rkind = ROW_OUT_OF_RANGE
+                rhave = row_has_result(rkind)
                 call t%num(es(ie))
                 call t%num(steps(is))
                 call t%num(umax)
@@ -227,16 +264,20 @@ contains
                 call t%num(ct%k_phys)
                 call t%num_or_none(alpha, have)
                 call t%num_or_none(tau, have)
-                call t%num_or_none(tmin * tau, have)
+                call t%num_or_none(tcd, rhave)
                 call t%num(thertz)
-                call t%num_or_none(thertz / (tmin * tau) - 1.0_wp, have)
-                call t%num_or_none(tmin * tau / steps(is), have)
-                call t%num(thertz / steps(is))
-                call t%str(row_word(kind))
-                if (have) then
-                    call rows%add(kind, '')
+                call t%num_or_none(excess, rhave)
+                call t%num_or_none(dtmax, rhave)
+                call t%num_or_none(dt_el, dt_el > 0.0_wp)
+                call t%str(row_word(rkind))
+                if (rhave) then
+                    call rows%add(rkind, '')
+                else if (have .or. .not. dt_el > 0.0_wp) then
+                    call rows%add(rkind, '--e ' // fmt_short(es(ie)) // ' with --steps ' // fmt_short(steps(is)) // &
+                                  ': the damped contact time t* tau_c (t* = ' // fmt_short(tmin) // ' s, tau_c = ' // &
+                                  fmt_short(tau) // ') or its time step is outside the double-precision range')
                 else
-                    call rows%add(kind, invert_reason(c, status, es(ie), 0.0_wp, 0.0_wp, ''))
+                    call rows%add(rkind, invert_reason(c, status, es(ie), 0.0_wp, 0.0_wp, ''))
                 end if
             end do
         end do

@@ -19,7 +19,8 @@ module hertzdamp_cmd_scene
     use hertzdamp_cli_output, only: out_table, format_choices, FORMAT_JSON, FORMAT_CSV
     use hertzdamp_cli_help, only: print_help, wants_help
     use hertzdamp_cli_model, only: law_choices, model_opts, damping_unit
-    use hertzdamp_cli_plot, only: plot_check_target, plot_run, plot_temp_name, gp_string
+    use hertzdamp_cli_plot, only: plot_check_target, plot_scratch, plot_temp_name, gp_string
+    use hertzdamp_cli_text, only: itoa
     use hertzdamp_cli_progress, only: progress_reporter
     use, intrinsic :: iso_fortran_env, only: int64
     implicit none
@@ -75,7 +76,7 @@ contains
             law = hertzdamp_law_code(args%get('--damping', ''))
         end if
         compare = .not. args%has('--no-compare')
-        if (args%has('--plot')) call plot_check_target(plot, terminal)
+        if (args%has('--plot')) call plot_check_target(plot, terminal, [file])
 
         call hertzdamp_scene_read(file, sc, status, msg)
         if (status /= HD_OK) call fail(EXIT_USAGE, file // ': ' // msg)
@@ -506,62 +507,45 @@ contains
     end subroutine report_cost
 
     !> Positions and velocities along the trace axis against time, for up to
-    !> max_plot_lines particles: data and script in $TMPDIR (default /tmp), drawn by
-    !> gnuplot into plot_temp_name(plot) and renamed into place by plot_run.
+    !> max_plot_lines particles: data and script as scratch files (hertzdamp_cli_plot),
+    !> drawn by gnuplot and renamed into place.
     subroutine write_plot(sc, res, plot, terminal)
         type(hertzdamp_dem_scene), intent(in) :: sc
         type(hertzdamp_dem_result), intent(in) :: res
         character(len=*), intent(in) :: plot      !! target PNG (checked by plot_check_target)
         character(len=*), intent(in) :: terminal  !! pngcairo or png
-        character(len=:), allocatable :: dat, gp, ax, tmpdir
-        integer :: u, ios, i, k, np, stride, try, ln
-        integer(int64) :: cnt
+        type(plot_scratch) :: s
+        character(len=:), allocatable :: dat, gp, ax, n
+        character(len=:), allocatable :: line
+        integer :: u, i, k, np, stride
         integer, allocatable :: pick(:)
-        character(len=32) :: b
-        character(len=4096) :: env
-        call get_environment_variable('TMPDIR', env, length=ln, status=ios)
-        tmpdir = '/tmp'
-        if (ios == 0 .and. ln > 0) tmpdir = trim(env)
-        call system_clock(cnt)
-        ! a data file of our own: status='new' never opens someone else's file
-        do try = 1, 100
-            write (b, '(i0)') cnt + try
-            dat = tmpdir // '/hertzdamp_scene_' // trim(b) // '.dat'
-            open (newunit=u, file=dat, status='new', action='write', iostat=ios)
-            if (ios == 0) exit
-        end do
-        if (ios /= 0) call fail(EXIT_FAILURE, 'cannot write a temporary file in ' // tmpdir)
-        gp = tmpdir // '/hertzdamp_scene_' // trim(b) // '.gp'
         ax = 'xyz'(res%axis:res%axis)
         np = size(res%x_trace, 2)
         stride = max(1, (np + max_plot_lines - 1) / max_plot_lines)
         pick = [(i, i=1, np, stride)]
+        call s%open('scene', 'dat', u, dat)
+        allocate (character(len=16 * (2 * size(pick) + 1)) :: line)
         do k = 1, size(res%t_trace)
-            write (u, '(*(es16.8))') res%t_trace(k), res%x_trace(k, pick), res%v_trace(k, pick)
+            write (line, '(*(es16.8))') res%t_trace(k), res%x_trace(k, pick), res%v_trace(k, pick)
+            call s%write(u, line)
         end do
-        close (u)
-        open (newunit=u, file=gp, status='new', action='write', iostat=ios)
-        if (ios /= 0) then
-            open (newunit=u, file=dat, status='old', iostat=ios)
-            if (ios == 0) close (u, status='delete')
-            call fail(EXIT_FAILURE, 'cannot write a temporary file in ' // tmpdir)
-        end if
-        write (u, '(a)') 'set terminal ' // terminal // ' size 1000,800 noenhanced'
-        write (u, '(a)') 'set output ' // gp_string(plot_temp_name(plot))
-        write (u, '(a)') 'set multiplot layout 2,1 title ' // gp_string(sc%title)
-        write (u, '(a)') 'set key off'
-        write (u, '(a)') 'set grid'
-        write (u, '(a)') 'set xlabel "t [s]"'
-        write (u, '(a)') 'set ylabel "' // ax // ' [m]"'
-        write (b, '(i0)') size(pick)
-        write (u, '(a)') 'plot for [i=2:' // trim(b) // '+1] ' // gp_string(dat) // ' using 1:i with lines'
-        write (u, '(a)') 'set ylabel "v_' // ax // ' [m/s]"'
-        write (u, '(a)') 'plot for [i=' // trim(b) // '+2:2*' // trim(b) // '+1] ' // gp_string(dat) // &
-                         ' using 1:i with lines'
-        write (u, '(a)') 'unset multiplot'
-        write (u, '(a)') 'set output'
-        close (u)
-        call plot_run(gp, plot_temp_name(plot), plot, [character(len=len(dat)) :: dat])
+        call s%close(u)
+        call s%open('scene', 'gp', u, gp)
+        n = itoa(size(pick))
+        call s%write(u, 'set terminal ' // terminal // ' size 1000,800 noenhanced')
+        call s%write(u, 'set output ' // gp_string(plot_temp_name(plot)))
+        call s%write(u, 'set multiplot layout 2,1 title ' // gp_string(sc%title))
+        call s%write(u, 'set key off')
+        call s%write(u, 'set grid')
+        call s%write(u, 'set xlabel "t [s]"')
+        call s%write(u, 'set ylabel "' // ax // ' [m]"')
+        call s%write(u, 'plot for [i=2:' // n // '+1] ' // gp_string(dat) // ' using 1:i with lines')
+        call s%write(u, 'set ylabel "v_' // ax // ' [m/s]"')
+        call s%write(u, 'plot for [i=' // n // '+2:2*' // n // '+1] ' // gp_string(dat) // ' using 1:i with lines')
+        call s%write(u, 'unset multiplot')
+        call s%write(u, 'set output')
+        call s%close(u)
+        call s%draw(gp, plot)
     end subroutine write_plot
 
 end module hertzdamp_cmd_scene

@@ -1,7 +1,7 @@
 !> `hertzdamp`: the command-line front end.  Parsing and printing only; every number
 !> comes from the library.  One dispatch line per command.
 program main
-    use hertzdamp_cli, only: fail, EXIT_USAGE
+    use hertzdamp_cli, only: fail, cli_start, EXIT_USAGE
     use hertzdamp_cli_help, only: print_help
     use hertzdamp_cmd_basic, only: cmd_table, cmd_forward, cmd_constants
     use hertzdamp_cmd_invert, only: cmd_invert, cmd_timestep
@@ -13,6 +13,7 @@ program main
     character(len=:), allocatable :: command
     integer :: l
 
+    call cli_start()
     if (command_argument_count() == 0) call print_help('')
     call get_command_argument(1, length=l)
     allocate (character(len=l) :: command)

@@ -74,8 +74,13 @@ j = json.load(open(sys.argv[1]))
 law = j["laws"][0]
 assert j["chosen"] == law["damping"] == "linear" and law["chosen"] is True
 assert abs(law["k"] / float(sys.argv[2]) - 1) < 1e-8 and abs(law["d"] / float(sys.argv[3]) - 1) < 1e-8
-assert len(law["residuals"]) == 6 and all(r["tc"] is not None for r in law["residuals"])
-' "$OUT" $K $D
+assert len(j["laws"]) == 3 and isinstance(law["dof"], int) and isinstance(law["iterations"], int)
+res = [r for r in j["residuals"] if r["damping"] == "linear"]
+assert len(res) == 6 and all(r["tc"] is not None for r in res)
+assert len(j["residuals"]) == 6 * sum(l["status"] == "ok" for l in j["laws"])
+assert j["command"] == "calibrate" and j["mass"] == float(sys.argv[4]) and j["k_phys"] is None
+assert j["weighted"] is False and j["k_fixed"] is False and j["damping"] == "auto"
+' "$OUT" $K $D $M
 
 run calibrate "$T/etc.csv" --mass $M
 check "text: exit 0" test "$RC" -eq 0
@@ -91,8 +96,9 @@ awk -F, 'NR == 3 || NR == 5 { print $1 "," $2 ",,0.01," ; next } { print }' "$T/
 run calibrate "$T/gap.csv" --mass $M --damping linear --format json
 check "empty tc fields: fitted with the other rows" python3 -c '
 import json, sys
-law = json.load(open(sys.argv[1]))["laws"][0]
-assert law["status"] == "ok" and sum(r["tc"] is None for r in law["residuals"]) == 2
+j = json.load(open(sys.argv[1]))
+assert j["laws"][0]["status"] == "ok" and len(j["residuals"]) == 6
+assert sum(r["tc"] is None for r in j["residuals"]) == 2
 ' "$OUT"
 
 # data far from the law (e alternating, sigma 0.005): reported, with its residuals
@@ -147,6 +153,52 @@ expect_fail 2 "no file" calibrate --mass $M
 printf 'velocity,e\n1,1e-6\n2,2e-6\n' >"$T/tiny.csv"
 expect_fail 4 "no convergence" calibrate "$T/tiny.csv" --mass $M --damping linear
 grep -q 'did not converge' "$ERR"; check "no convergence: said so" test $? -eq 0
+
+# spreadsheet exports: a UTF-8 byte-order mark at the start, quoted fields (RFC 4180)
+run calibrate "$T/etc.csv" --mass $M --format csv; cp "$OUT" "$T/plain.out"
+{ printf '\xef\xbb\xbf'; cat "$T/etc.csv"; } >"$T/bom.csv"
+run calibrate "$T/bom.csv" --mass $M --format csv
+check "byte-order mark: exit 0 (got $RC: $(head -c 100 "$ERR"))" test "$RC" -eq 0
+check "byte-order mark: the result without it" cmp -s "$OUT" "$T/plain.out"
+awk -F, 'NR == 1 { print "\"velocity\", \"e\" ,\"tc\""; next } NR == 2 { print "\"" $1 "\",\"" $2 "\", " $3; next } { print }' \
+  "$T/etc.csv" >"$T/quoted.csv"
+run calibrate "$T/quoted.csv" --mass $M --format csv
+check "quoted header and fields: exit 0 (got $RC: $(head -c 100 "$ERR"))" test "$RC" -eq 0
+check "quoted header and fields: the result without quotes" cmp -s "$OUT" "$T/plain.out"
+{ head -n 2 "$T/etc.csv"; printf '\xef\xbb\xbf'; tail -n +3 "$T/etc.csv"; } >"$T/bom3.csv"
+expect_fail 2 "a byte-order mark inside the file" calibrate "$T/bom3.csv" --mass $M
+check "a byte-order mark inside the file: names line 3" grep -q 'line 3' "$ERR"
+printf 'velocity,e\n"1,0.5\n2,0.6\n' >"$T/open.csv"
+expect_fail 2 "a quoted field without its closing quote" calibrate "$T/open.csv" --mass $M
+printf 'velocity,e\n"1"x,0.5\n2,0.6\n' >"$T/after.csv"
+expect_fail 2 "characters after a quoted field" calibrate "$T/after.csv" --mass $M
+printf 'velocity,e\n"1,5",0.5\n2,0.6\n' >"$T/comma.csv"
+expect_fail 2 "a quoted field with a comma is one (malformed) number" calibrate "$T/comma.csv" --mass $M
+check "a quoted field with a comma: names the field" grep -q '"1,5"' "$ERR"
+
+# a file name with a Latin-1 byte and a newline: text output one comment line of valid
+# UTF-8 (escaped as in messages), JSON valid with the name's newline escaped, an error
+# naming the file one line
+F="$T/$(printf 'caf\xe9\nx.csv')"
+cp "$T/etc.csv" "$F"
+run calibrate "$F" --mass $M
+check "odd file name, text: exit 0, first line one comment with the name escaped" \
+  bash -c "[ $RC -eq 0 ] && [ \"\$(head -n 1 '$OUT')\" = '# hertzdamp calibrate $T/caf\\xe9\\nx.csv' ]"
+run calibrate "$F" --mass $M --format json
+check "odd file name, json: valid UTF-8 JSON, the name with U+FFFD and its newline" python3 -c '
+import json, sys
+j = json.loads(open(sys.argv[1], "rb").read().decode("utf-8"))
+assert j["file"].endswith("caf\ufffd\nx.csv"), j["file"]' "$OUT"
+printf 'velocity,e\n1,0.5\n1,0.6\n' >"$F"
+expect_fail 3 "odd file name, one speed only" calibrate "$F" --mass $M
+
+# help: the limits of the data file are stated; a failed write of the help is exit 4
+run calibrate --help
+check "help: exit 0, usage" test "$RC" -eq 0 -a "$(head -c 26 "$OUT")" = "Usage: hertzdamp calibrate"
+check "help: the 100000-row and 4096-character limits" \
+  bash -c "grep -q '100000' '$OUT' && grep -q '4096 characters' '$OUT'"
+"$BIN" calibrate -h >/dev/full 2>"$ERR"; RC=$?
+check "help into /dev/full: exit 4, one line" test "$RC" -eq 4 -a "$(wc -l <"$ERR")" -eq 1
 
 # plot: written, or refused before any work
 if command -v gnuplot >/dev/null 2>&1; then

@@ -181,6 +181,40 @@ check "timestep overlap end: the damped contact is longer than the elastic estim
   python3 -c 'import sys; r = open(sys.argv[1]).read().splitlines()[1].split(","); assert float(r[10]) < 0' "$OUT"
 run timestep $GLASS --e 0.9,0.0001 --velocity 1 --format csv
 check "timestep: a bad e is its own row (exit $RC)" test "$RC" -eq 3 -a "$(tail -n 1 "$OUT" | cut -d, -f14)" = "outside-validity"
+# ranges of whole numbers are exact (A0 + (k (A1 - A0))/(N - 1)), and --steps takes a
+# value within 4 ulp of a whole number (a logarithmic range) as it
+run timestep --mass 1e-3 --k-phys 1e9 --e 0.5 --velocity 1 --steps 1:23:23,3:999:333 --format csv
+check "--steps 1:23:23,3:999:333: exit 0, every step count whole and exact (exit $RC)" python3 -c '
+import csv, sys
+s = [float(r["steps"]) for r in csv.DictReader(open(sys.argv[1]))]
+assert s == list(range(1, 24)) + list(range(3, 1000, 3)), s[:30]' "$OUT"
+run timestep --mass 1e-3 --k-phys 1e9 --e 0.5 --velocity 1 --steps 1:1000:log4 --format csv
+check "--steps 1:1000:log4: 1, 10, 100, 1000 (exit $RC)" test "$RC" -eq 0 -a \
+  "$(cut -d, -f2 "$OUT" | tail -n +2 | tr '\n' ' ')" = "1.000000000000000E+000 1.000000000000000E+001 1.000000000000000E+002 1.000000000000000E+003 "
+run forward --k 1e9 --d 0 --mass 1 --velocity -1e308:1e308:5 --format csv
+check "a range whose width overflows: -1e308, -5e307, 0, 5e307, 1e308 (exit $RC)" \
+  test "$(cut -d, -f3 "$OUT" | tail -n +2 | tr '\n' ' ')" = "-1.000000000000000E+308 -5.000000000000000E+307 0.000000000000000E+000 5.000000000000000E+307 1.000000000000000E+308 "
+expect_fail 2 "--steps 1:2:3 (1.5 is not whole)" timestep --mass 1e-3 --k-phys 1e9 --e 0.5 --velocity 1 --steps 1:2:3
+check "--steps 1:2:3: names 1.5" grep -q -- '--steps 1.5' "$ERR"
+# dt x steps beyond double precision: an out-of-range row (exit 3), not bad usage; the
+# other rows print
+run invert --e 0.5 --dt 1e-6,1e308 --steps 10 --mass 1e-3 --velocity 1 --format csv
+check "--dt 1e308 --steps 10 beside a valid dt: exit 3, both rows (exit $RC)" test "$RC" -eq 3 -a "$(wc -l <"$OUT")" -eq 3
+check "--dt 1e308 --steps 10: out-of-range, tc empty" test "$(tail -n 1 "$OUT" | cut -d, -f2,14)" = ",out-of-range"
+check "--dt 1e308 --steps 10: the message names both" grep -q -- '--dt 1e+308 x --steps 10: the contact time is outside' "$ERR"
+# timestep: a damped contact beyond double precision is out-of-range, with the reason
+run timestep --e 1e-4,0.5 --damping kuwabara-kono --velocity 1e-300 --mass 1e300 --k-phys 1e-318 --format csv
+check "timestep, tc_damped beyond double precision: exit 3, that row out-of-range (exit $RC)" \
+  test "$RC" -eq 3 -a "$(sed -n 2p "$OUT" | cut -d, -f9,14)" = ",out-of-range"
+check "timestep, tc_damped beyond double precision: the message says so" grep -q 'outside the double-precision range' "$ERR"
+# E* out of range: the more compliant body is named, with its defaults shown
+run invert --e 0.5 --tc 1e-5 --velocity 1 --radius 1e-3 --density 2500 --youngs-modulus 1e9 --poisson-ratio 0.3 \
+  --youngs-modulus2 1e-320
+check "E* from body 2's modulus: names --youngs-modulus2 and the defaulted --poisson-ratio2 ($(cat "$ERR"))" \
+  grep -q -- '--youngs-modulus2 1e-320 with --poisson-ratio2 (= --poisson-ratio 0.3)' "$ERR"
+run invert --e 0.5 --tc 1e-5 --velocity 1 --radius 1e-3 --density 2500 --youngs-modulus 1e-320 --poisson-ratio 0.3 \
+  --youngs-modulus2 1e9
+check "E* from body 1's modulus: names --youngs-modulus" grep -q -- '^hertzdamp: --youngs-modulus 1e-320 with' "$ERR"
 expect_fail 2 "timestep without a stiffness" timestep --mass 1 --e 0.9 --velocity 1
 expect_fail 2 "timestep bad velocity" timestep $GLASS --e 0.9 --velocity 0
 finish

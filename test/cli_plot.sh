@@ -1,9 +1,11 @@
 #!/usr/bin/env bash
-# Plots written safely (cli/hertzdamp_cli_plot.f90, used by `scene --plot` and
-# `bench --plot`): special files refused before any work and never opened (a device
-# node made with mknod, a FIFO under a timeout, a socket, a directory); a full disk
-# (a small tmpfs) gives exit 4 and leaves nothing behind, also for a path with a
-# newline and when gnuplot's own scratch directory is full; a complete PNG otherwise.
+# Plots written safely (cli/hertzdamp_cli_plot.f90, used by `scene --plot`,
+# `calibrate --plot` and `bench --plot`): special files refused before any work and
+# never opened (a device node made with mknod, a FIFO under a timeout, a socket, a
+# directory), and so is the command's own input file under any name; a full disk (a
+# small tmpfs) or a file size limit (ulimit -f) gives exit 4 and leaves nothing behind,
+# also for a path with a newline and when gnuplot's own scratch directory is full; a
+# complete PNG otherwise.
 # Tests that need mount or mknod print SKIPPED (not counted) where they cannot run.
 SUITE=cli_plot
 source "$(dirname "$0")/cli_common.bash"
@@ -102,5 +104,45 @@ b.png"
 else
   skip "cannot mount a tmpfs (not root?): full-disk tests not run"
 fi
+# a file size limit (ulimit -f, no root needed): the program ignores SIGXFSZ, so every
+# write beyond the limit fails and is reported (exit 4, one line) instead of killing it
+# (exit 153) with its scratch files left.  Limits: 1 KiB (the scratch data stops),
+# 16 KiB, and 1 KiB below the size of the PNG (gnuplot's PNG or an earlier scratch
+# file stops), for scene and calibrate; a limit the plot fits gives the plot
+CAL="calibrate data/calibrate/example.csv --radius 1e-3 --density 7800 --wall"
+for cmd in "scene $SCENE" "$CAL"; do
+  # shellcheck disable=SC2086
+  (ulimit -f 4000; exec "$BIN" $cmd --plot "$T/lim.png") >"$OUT" 2>"$ERR"; RC=$?
+  check "${cmd%% *} --plot under a limit the plot fits: exit 0, a complete PNG" \
+    bash -c "[ $RC -eq 0 ] && python3 -c 'import sys; b = open(sys.argv[1], \"rb\").read(); sys.exit(b[-8:-4] != b\"IEND\")' '$T/lim.png'"
+  kib=$(( $(stat -c %s "$T/lim.png" 2>/dev/null || echo 4096) / 1024 - 1 ))
+  rm -f "$T/lim.png"
+  for lim in 1 16 $kib; do
+    # shellcheck disable=SC2086
+    (ulimit -f $lim; exec "$BIN" $cmd --plot "$T/lim.png") >"$OUT" 2>"$ERR"; RC=$?
+    check "${cmd%% *} --plot under ulimit -f $lim: exit 4 (got $RC: $(head -c 120 "$ERR"))" test "$RC" -eq 4
+    check "${cmd%% *} --plot under ulimit -f $lim: stdout empty, one line on stderr" \
+      test ! -s "$OUT" -a "$(wc -l <"$ERR")" -eq 1
+    check "${cmd%% *} --plot under ulimit -f $lim: no target, no scratch, no temporary file" \
+      test ! -e "$T/lim.png" -a ! -e "$T/lim.png.hertzdamp-tmp" -a -z "$(ls -A "$TMPDIR")"
+  done
+done
+
+# the plot target is one of the command's inputs, under any name: refused (exit 2)
+# before any work, the input unchanged
+cp $SCENE "$T/in.nml"; cp data/calibrate/example.csv "$T/in.csv"
+ln "$T/in.csv" "$T/hard.csv"; ln -s in.nml "$T/sym.nml"
+expect_fail 2 "scene --plot its own scene file" scene "$T/in.nml" --plot "$T/in.nml"
+expect_fail 2 "scene --plot its scene file through a symbolic link" scene "$T/in.nml" --plot "$T/sym.nml"
+check "scene --plot its own scene file: message says so" grep -q 'is the input file' "$ERR"
+expect_fail 2 "calibrate --plot its own data file" calibrate "$T/in.csv" --radius 1e-3 --density 7800 --wall \
+  --plot "$T/in.csv"
+expect_fail 2 "calibrate --plot its data file through a hard link" calibrate "$T/in.csv" --radius 1e-3 \
+  --density 7800 --wall --plot "$T/hard.csv"
+expect_fail 2 "calibrate --plot its data file as ./path" calibrate "$T/in.csv" --radius 1e-3 --density 7800 --wall \
+  --plot "$T/./in.csv"
+check "the inputs are unchanged" bash -c "cmp -s $SCENE '$T/in.nml' && cmp -s data/calibrate/example.csv '$T/in.csv'"
+check "refused inputs: no scratch left" no_scratch_left
+
 echo "$SUITE: $skipped test groups skipped"
 finish

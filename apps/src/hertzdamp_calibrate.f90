@@ -36,6 +36,7 @@ module hertzdamp_calibrate
     use hertzdamp_status, only: HD_OK, HD_END_OVERLAP, HD_END_FORCE
     use hertzdamp_methods, only: HD_METHOD_FIT, HD_METHOD_RK45
     use hertzdamp_rk45, only: hertzdamp_rk45_default_tol
+    use hertzdamp_inverse, only: hertzdamp_invert_alpha
     use hertzdamp_calibrate_maps, only: cal_forward, cal_law_name, cal_law_q, cal_law_speed_exponent, &
                                         cal_law_supported, cal_max_law
     use, intrinsic :: ieee_arithmetic, only: ieee_is_finite, ieee_is_nan
@@ -354,18 +355,22 @@ contains
         if (all(ieee_is_finite(r)) .and. all(ieee_is_finite(jac))) status = CAL_OK
     end subroutine evaluate
 
-    !> alpha with e(alpha) = e_target for one law, to 1e-6 relative (a starting point
-    !> only): from the first-order guess (1 - e)/2, a geometric bracket and geometric
-    !> bisection on the forward map; 0 for e = 1, the largest alpha reached when e is
-    !> below the law's range.
+    !> alpha with e(alpha) = e_target for one law (a starting point): the library's
+    !> algebraic inverse (hertzdamp_invert_alpha, method fit, machine precision) where
+    !> it applies; below its range of e, geometric bisection to 1e-6 relative on the
+    !> forward map from the first-order guess (1 - e)/2 and a geometric bracket (the
+    !> largest alpha reached when e is below what the law reaches).  0 for e = 1.
     pure real(wp) function alpha_of_e(law, opts, e_target) result(alpha)
         integer, intent(in) :: law
         type(cal_options), intent(in) :: opts
         real(wp), intent(in) :: e_target
-        real(wp) :: lo, hi, mid
-        integer :: it, method
+        real(wp) :: lo, hi, mid, tau
+        integer :: it, method, st
         alpha = 0.0_wp
         if (e_target >= 1.0_wp) return
+        call hertzdamp_invert_alpha(e_target, opts%iend, alpha, tau, st, HD_METHOD_FIT, law=law)
+        if (st == HD_OK .and. alpha > 0.0_wp) return
+        alpha = 0.0_wp
         method = opts%method
         lo = 0.0_wp
         hi = max(0.5_wp * (1.0_wp - e_target), 1.0e-12_wp)

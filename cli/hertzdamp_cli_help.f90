@@ -220,34 +220,42 @@ module hertzdamp_cli_help
         '' // nl // list_syntax // nl // nl // status_help
 
     character(len=*), parameter :: bench = &
-        'Usage: hertzdamp bench [--quick] [--format text|csv|json] [--plot FILE.png]' // nl // &
+        'Usage: hertzdamp bench [--quick] [--damping LAW|all] [--format text|csv|json]' // nl // &
+        '                       [--plot FILE.png]' // nl // &
         '' // nl // &
         'Measures accuracy against time for every method the library provides, all in' // nl // &
-        'one run (methods that report not-supported are left out):' // nl // &
-        '  forward   alpha -> (e, tau_c) for a fixed set of alpha in [0, 1.1] (overlap) and' // nl // &
-        '            [0, 50] (force): rk45 and GSL rkf45/rk8pd at tol 1e-4 ... 1e-12 (relative' // nl // &
-        '            error control), series N = 1, 2, 3, 5, 10, 20 and pade (overlap only),' // nl // &
-        '            compact, fit; errors against rk45 at tol 1e-15 (e relative to max(e, 1e-3))' // nl // &
-        '  inverse   (e, T_c, m, u_in) -> (k, d) for e in [1e-3, 0.999]: fit, compact, series,' // nl // &
-        '            pade, iterative at tol 1e-6, 1e-8, 1e-10; errors of alpha, k, d against' // nl // &
-        '            the iterative inverse at tol 1e-13' // nl // &
-        '  throughput  the elemental fit inverse over 10^6 random contacts' // nl // &
+        'one run, for every damping law (methods that report not-supported are left out):' // nl // &
+        '  forward   alpha -> (e, tau_c) for a fixed set of alpha per law and contact end' // nl // &
+        '            (overlap and force, down to e ~ 1e-4): rk45 and GSL rkf45/rk8pd at tol' // nl // &
+        '            1e-4 ... 1e-12 (relative error control), fit; linear law also series' // nl // &
+        '            N = 1, 2, 3, 5, 10, 20 and pade (overlap only), compact; errors against' // nl // &
+        '            rk45 at tol 1e-15 (e relative to max(e, 1e-3))' // nl // &
+        '  inverse   (e, T_c, m, u_in) -> (k, d) for e in [1e-3, 0.999] (overlap): fit,' // nl // &
+        '            iterative (secant over rk45) at tol 1e-6 ... 1e-12; linear law also' // nl // &
+        '            compact, series, pade and gsl-secant (secant over GSL rk8pd); errors of' // nl // &
+        '            alpha, k, d against the iterative inverse at tol 1e-14' // nl // &
+        '  entry     the fit inverse of each law through every entry point (module scalar' // nl // &
+        '            and array calls, C, legacy) over 10^6 random contacts, side by side,' // nl // &
+        '            checked bit for bit against the module scalar call' // nl // &
+        '  closed-form  tsuji: its inverse against alpha = sqrt5 beta(e) of the overlap end' // nl // &
         'Times are wall clock per call: the median of 5 batches of >= 0.1 s each' // nl // &
-        '(--quick: fewer points, 3 batches of >= 0.01 s; well under 30 s).' // nl // &
+        '(--quick: fewer points, 3 batches of >= 0.01 s; about 10 s).' // nl // &
         'The text output ends with ''figure:'' lines: ratios measured side by side.' // nl // &
         '' // nl // &
         '  --quick         short run (smoke test, rough timings)' // nl // &
+        '  --damping LAW   the rows of one law: linear, tsuji or kuwabara-kono (default all)' // nl // &
         '  --format F      text (default), csv or json' // nl // &
         '  --plot FILE     also write a work-precision diagram (PNG, gnuplot): error' // nl // &
-        '                  against ns per call, forward and inverse panels.  Checked' // nl // &
-        '                  before benchmarking: no gnuplot -> exit 4, unwritable -> exit 2.' // nl // &
+        '                  against ns per call, forward and inverse panels per law.' // nl // &
+        '                  Checked before benchmarking: no gnuplot -> exit 4, unwritable' // nl // &
+        '                  -> exit 2.' // nl // &
         '  --help          this text' // nl // &
         '' // nl // &
-        'CSV columns: problem,method,setting,max_rel_err_e,max_rel_err_tau,' // nl // &
+        'CSV columns: problem,damping,method,setting,max_rel_err_e,max_rel_err_tau,' // nl // &
         'max_rel_err_alpha,max_rel_err_k,max_rel_err_d,ns_per_call,rhs_evals (empty where' // nl // &
         'not applicable; rhs_evals is the mean per collision of the integrators).' // nl // &
-        'problem is forward, inverse or throughput; setting is the tolerance (1e-10),' // nl // &
-        'the series order (N=10), the array size (n=1000000) or empty.'
+        'problem is forward, inverse, entry or closed-form; setting is the tolerance (1e-10),' // nl // &
+        'the series order (N=10), the number of contacts (n=1000000) or empty.'
     character(len=*), parameter :: scene = &
         'Usage: hertzdamp scene FILE [--method M] [--damping LAW] [--format text|csv|json]' // nl // &
         '                            [--plot FILE.png] [--progress] [--no-compare]' // nl // &

@@ -1,34 +1,38 @@
-!> The command `bench`: the work-precision report of the library's methods.
+!> The command `bench`: the work-precision report of the library's methods, for every
+!> damping law (or the one of --damping).
 !>
-!> Forward problem alpha -> (e, tau_c): every method against rk45 at tol 1e-15.
-!> Inverse problem (e, T_c, m, u_in) -> (k, d): every method against the iterative
-!> inverse at tol 1e-14, including the iterative baselines (the library's secant over
-!> rk45 and the GSL peer's secant over rk8pd, each at tolerances matched to the
-!> accuracy asked).  Entry points: the fit inverse through every way a user calls it
-!> (module scalar and array calls, C functions through their bind(C) names, legacy
-!> externals), side by side over the same 10^6 contacts, with their ratios to the
-!> module scalar call, a check that they agree bit for bit, and the speed-up against
-!> the fastest iterative row at equal accuracy.  Every number is measured in this run;
-!> methods the library does not (yet) provide are left out.  Everything is computed
-!> (and the plot written) before anything is printed: on failure stdout stays empty.
+!> Forward problem alpha -> (e, tau_c): every method against rk45 at tol 1e-15 (of the
+!> same law).  Inverse problem (e, T_c, m, u_in) -> (k, d): every method against the
+!> iterative inverse at tol 1e-14, including the iterative baselines (the library's
+!> secant over rk45 for every law, and for the linear law the GSL peer's secant over
+!> rk8pd, each at tolerances matched to the accuracy asked).  Entry points: the fit
+!> inverse of each law through every way a user calls it (module scalar and array
+!> calls, C functions through their bind(C) names, legacy externals), side by side over
+!> the same 10^6 contacts, with their ratios to the module scalar call, a check that
+!> they agree bit for bit, and the speed-up against the fastest iterative row at equal
+!> accuracy; for the tsuji law also its inverse against the closed form of its overlap
+!> end.  Every number is measured in this run; methods the library does not (yet)
+!> provide are left out.  Everything is computed (and the plot written) before anything
+!> is printed: on failure stdout stays empty.
 module hertzdamp_cmd_bench
     use hertzdamp, only: hertzdamp_rk, hertzdamp_collision, hertzdamp_forward_alpha, hertzdamp_message, &
-                         HD_OK, HD_NO_REBOUND, HD_NOT_SUPPORTED, HD_NO_CONVERGENCE, HD_END_OVERLAP, HD_END_FORCE, &
-                         HD_METHOD_RK45, HD_METHOD_SERIES, HD_METHOD_PADE, HD_METHOD_COMPACT, HD_METHOD_FIT, &
-                         HD_METHOD_ITERATIVE
+                         hertzdamp_law_name, HD_OK, HD_END_OVERLAP, HD_END_FORCE, HD_METHOD_RK45, HD_METHOD_SERIES, &
+                         HD_METHOD_PADE, HD_METHOD_COMPACT, HD_METHOD_FIT, HD_METHOD_ITERATIVE, HD_DAMPING_LINEAR, &
+                         HD_DAMPING_TSUJI, HD_DAMPING_KUWABARA_KONO, hertzdamp_tsuji_alpha
     use hertzdamp_inverse, only: hertzdamp_invert
     use hertzdamp_gsl, only: hertzdamp_gsl_collide, HERTZDAMP_GSL_RKF45, HERTZDAMP_GSL_RK8PD
     use hertzdamp_gsl_secant, only: hertzdamp_gsl_secant_invert
-    use hertzdamp_capi, only: hertzdamp_c_invert, hertzdamp_c_invert_n
-    use hertzdamp_bench_legacy, only: legacy_invert_each, legacy_invert_all
+    use hertzdamp_bench_entry, only: entry_data, entry_result, tsuji_result, entry_contacts, entry_measure, &
+                                     tsuji_measure, n_ways, way_name, way_label, WAY_SCALAR, WAY_ARRAY, WAY_C, WAY_C_N, &
+                                     WAY_LEGACY, WAY_LEGACY_N, n_ts, ts_name, ts_label, TS_CLOSED_ALPHA, TS_FIT_ALPHA, &
+                                     TS_CLOSED_ALPHA_N, TS_FIT_ALPHA_N, TS_CLOSED_D, TS_BOUND_D, TS_CLOSED_D_N, &
+                                     TS_BOUND_D_N
     use hertzdamp_cli_plot, only: plot_check_target, plot_run, plot_temp_name, gp_string
-    use hertzdamp_bench_timer, only: bench_case, bench_measure, bench_measure_all, bench_slot, wall_seconds, median
-    use hertzdamp_cli, only: cli_args, cli_buffer, parse_args, parse_choice, fail, quit, pad, EXIT_USAGE, EXIT_OK, &
-                             EXIT_FAILURE
+    use hertzdamp_bench_timer, only: bench_case, bench_measure, wall_seconds
+    use hertzdamp_cli, only: cli_args, cli_buffer, parse_args, parse_choice, fail, quit, pad, EXIT_OK, EXIT_FAILURE
     use hertzdamp_cli_output, only: out_table, format_choices, FORMAT_TEXT, FORMAT_CSV, FORMAT_JSON
     use hertzdamp_cli_help, only: print_help, wants_help
-    use, intrinsic :: iso_fortran_env, only: int64, error_unit
-    use, intrinsic :: iso_c_binding, only: c_int, c_char, c_null_char
+    use, intrinsic :: iso_fortran_env, only: int64
     use, intrinsic :: ieee_arithmetic, only: ieee_value, ieee_quiet_nan, ieee_is_nan, ieee_is_finite
     implicit none
     private
@@ -43,6 +47,9 @@ module hertzdamp_cmd_bench
     integer, parameter :: n_families = 9
     character(len=*), parameter :: fam(n_families) = [character(len=10) :: 'rk45', 'gsl-rkf45', 'gsl-rk8pd', &
                                                       'series', 'pade', 'compact', 'fit', 'iterative', 'gsl-secant']
+
+    !> The damping laws, in the order of the rows (codes HD_DAMPING_* = 0, 1, 2).
+    integer, parameter :: n_laws = 3
 
     !> Floor of the e error denominator: errors of e are relative to max(e, e_floor).
     real(wp), parameter :: e_floor = 1.0e-3_wp
@@ -59,6 +66,7 @@ module hertzdamp_cmd_bench
     type, extends(bench_case) :: fwd_case
         integer :: engine = ENGINE_LIB
         integer :: method = HD_METHOD_RK45   !! HD_METHOD_* (ENGINE_LIB) or HERTZDAMP_GSL_* (ENGINE_GSL)
+        integer :: law = HD_DAMPING_LINEAR
         real(wp) :: tol = 1.0e-13_wp
         integer :: order = -1                !! series order (< 0: not passed)
         real(wp), allocatable :: alpha(:)
@@ -72,6 +80,7 @@ module hertzdamp_cmd_bench
     !> One inverse sweep over a set of e (fixed m, u_in, T_c).
     type, extends(bench_case) :: inv_case
         integer :: method = HD_METHOD_FIT
+        integer :: law = HD_DAMPING_LINEAR
         real(wp) :: tol = 1.0e-10_wp
         real(wp), allocatable :: e(:), tc(:), m(:), u(:)
         real(wp), allocatable :: k(:), d(:), alpha(:), tstar(:), tau(:)
@@ -81,8 +90,8 @@ module hertzdamp_cmd_bench
         procedure :: run => inv_run
     end type inv_case
 
-    !> The iterative inverse of the GSL peer (secant over rk8pd) over a set of e; k and d
-    !> by the direct formulas from its alpha and tau_c.
+    !> The iterative inverse of the GSL peer (secant over rk8pd, linear law) over a set
+    !> of e; k and d by the direct formulas from its alpha and tau_c.
     type, extends(bench_case) :: gsl_inv_case
         real(wp) :: tol = 1.0e-10_wp
         real(wp), allocatable :: e(:), tc(:), m(:), u(:)
@@ -92,43 +101,10 @@ module hertzdamp_cmd_bench
         procedure :: run => gsl_inv_run
     end type gsl_inv_case
 
-    !> The contacts of the entry-point rows (shared by every way of calling).
-    type :: entry_data
-        real(wp), allocatable :: e(:), tc(:), m(:), u(:)
-    end type entry_data
-
-    !> One way of calling the fit inverse over all contacts of an entry_data.
-    type, extends(bench_case) :: entry_case
-        integer :: way = 1                       !! one of the WAY_* below
-        type(entry_data), pointer :: in => null()
-        real(wp), allocatable :: k(:), d(:)
-        integer(c_int), allocatable :: status(:)
-    contains
-        procedure :: run => entry_run
-    end type entry_case
-
-    !> The entry points, in the order of the rows.
-    integer, parameter :: n_ways = 6
-    integer, parameter :: WAY_SCALAR = 1, WAY_ARRAY = 2, WAY_C = 3, WAY_C_N = 4, WAY_LEGACY = 5, WAY_LEGACY_N = 6
-    character(len=*), parameter :: way_name(n_ways) = [character(len=13) :: 'module-scalar', 'module-array', &
-                                                       'c', 'c-array', 'legacy', 'legacy-n']
-    character(len=*), parameter :: way_label(n_ways) = [character(len=46) :: &
-        'module hertzdamp_invert, one contact per call', 'module hertzdamp_invert on rank-1 arrays', &
-        'C hertzdamp_c_invert, one contact per call', 'C hertzdamp_c_invert_n', &
-        'legacy HERTZDAMP_INVERT, one contact per call', 'legacy HERTZDAMP_INVERT_N']
-
-    !> What the entry-point rows found.
-    type :: entry_result
-        integer :: n = 0                   !! contacts
-        real(wp) :: ns(n_ways) = -1.0_wp   !! ns per contact of each way
-        integer :: mismatches(n_ways) = 0  !! contacts whose k, d or status differ from the module scalar call
-        integer :: failed = 0              !! contacts whose status is not ok
-    end type entry_result
-
-
     !> One result row.
     type :: bench_row
         character(len=:), allocatable :: problem, method, setting
+        integer :: law = HD_DAMPING_LINEAR
         integer :: family = 0
         integer :: npts = 0, ntot = 0
         real(wp) :: err(5) = -1.0_wp   !! e, tau, alpha, k, d; < 0: not applicable
@@ -136,6 +112,14 @@ module hertzdamp_cmd_bench
         real(wp) :: steps = -1.0_wp, rejected = -1.0_wp, rhs = -1.0_wp  !! means per collision; < 0: n/a
     end type bench_row
 
+    !> The sets of one law: alpha of the forward rows (the first n_ov for the overlap
+    !> end, the rest for the force end) and e of the inverse rows.
+    type :: law_sets
+        real(wp), allocatable :: alpha(:), e(:)
+        integer, allocatable :: iend(:)
+        integer :: n_ov = 0
+        character(len=:), allocatable :: text   !! for the header
+    end type law_sets
 
 contains
 
@@ -150,9 +134,10 @@ contains
             select case (self%engine)
             case (ENGINE_LIB)
                 if (self%order >= 0) then
-                    r = hertzdamp_forward_alpha(self%alpha(i), self%iend(i), self%method, self%tol, self%order)
+                    r = hertzdamp_forward_alpha(self%alpha(i), self%iend(i), self%method, self%tol, self%order, &
+                                                law=self%law)
                 else
-                    r = hertzdamp_forward_alpha(self%alpha(i), self%iend(i), self%method, self%tol)
+                    r = hertzdamp_forward_alpha(self%alpha(i), self%iend(i), self%method, self%tol, law=self%law)
                 end if
                 self%e(i) = r%e
                 self%tau(i) = r%tau_c
@@ -162,7 +147,8 @@ contains
                 self%rhs(i) = r%stats%rhs_evals
             case default
                 call hertzdamp_gsl_collide(self%alpha(i), self%iend(i), self%tol, self%method, self%e(i), &
-                                           self%tau(i), zm, tm, self%status(i), nrhs, nst, atol=1.0e-30_wp * self%tol)
+                                           self%tau(i), zm, tm, self%status(i), nrhs, nst, atol=1.0e-30_wp * self%tol, &
+                                           law=self%law)
                 self%steps(i) = nst
                 self%rejected(i) = -1
                 self%rhs(i) = nrhs
@@ -176,7 +162,7 @@ contains
         do i = 1, size(self%e)
             call hertzdamp_invert(self%e(i), self%tc(i), self%m(i), self%u(i), HD_END_OVERLAP, self%k(i), self%d(i), &
                                   self%status(i), alpha=self%alpha(i), tstar=self%tstar(i), tau_c=self%tau(i), &
-                                  bound_active=self%bound(i), method=self%method, tol=self%tol)
+                                  bound_active=self%bound(i), method=self%method, tol=self%tol, law=self%law)
         end do
     end subroutine inv_run
 
@@ -194,48 +180,16 @@ contains
         end do
     end subroutine gsl_inv_run
 
-    !> Every contact once through one entry point (overlap end).
-    subroutine entry_run(self)
-        class(entry_case), intent(inout) :: self
-        integer :: i, n
-        integer(c_int) :: st
-        n = size(self%in%e)
-        select case (self%way)
-        case (WAY_SCALAR)
-            do i = 1, n
-                call hertzdamp_invert(self%in%e(i), self%in%tc(i), self%in%m(i), self%in%u(i), HD_END_OVERLAP, &
-                                      self%k(i), self%d(i), self%status(i))
-            end do
-        case (WAY_ARRAY)
-            call hertzdamp_invert(self%in%e, self%in%tc, self%in%m, self%in%u, HD_END_OVERLAP, self%k, self%d, &
-                                  self%status)
-        case (WAY_C)
-            do i = 1, n
-                self%status(i) = hertzdamp_c_invert(self%in%e(i), self%in%tc(i), self%in%m(i), self%in%u(i), &
-                                                    int(HD_END_OVERLAP, c_int), self%k(i), self%d(i))
-            end do
-        case (WAY_C_N)
-            st = hertzdamp_c_invert_n(int(n, c_int), self%in%e, self%in%tc, self%in%m, self%in%u, &
-                                      int(HD_END_OVERLAP, c_int), self%k, self%d, self%status)
-        case (WAY_LEGACY)
-            ! HERTZDAMP_INVERT once per contact, declared by include/hertzdamp.fi
-            call legacy_invert_each(int(n, c_int), self%in%e, self%in%tc, self%in%m, self%in%u, &
-                                    int(HD_END_OVERLAP, c_int), self%k, self%d, self%status)
-        case default
-            call legacy_invert_all(int(n, c_int), self%in%e, self%in%tc, self%in%m, self%in%u, &
-                                   int(HD_END_OVERLAP, c_int), self%k, self%d, self%status)
-        end select
-    end subroutine entry_run
-
-    subroutine fwd_init(c, engine, method, tol, order, alpha, iend)
+    subroutine fwd_init(c, engine, method, law, tol, order, alpha, iend)
         type(fwd_case), intent(out) :: c
-        integer, intent(in) :: engine, method, order
+        integer, intent(in) :: engine, method, law, order
         real(wp), intent(in) :: tol, alpha(:)
         integer, intent(in) :: iend(:)
         integer :: n
         n = size(alpha)
         c%engine = engine
         c%method = method
+        c%law = law
         c%tol = tol
         c%order = order
         c%alpha = alpha
@@ -249,13 +203,14 @@ contains
         c%rhs = 0
     end subroutine fwd_init
 
-    subroutine inv_init(c, method, tol, e, tc, m, u)
+    subroutine inv_init(c, method, law, tol, e, tc, m, u)
         type(inv_case), intent(out) :: c
-        integer, intent(in) :: method
+        integer, intent(in) :: method, law
         real(wp), intent(in) :: tol, e(:), tc(:), m(:), u(:)
         integer :: n
         n = size(e)
         c%method = method
+        c%law = law
         c%tol = tol
         c%e = e
         c%tc = tc
@@ -271,22 +226,75 @@ contains
         c%bound = .false.
     end subroutine inv_init
 
+    !> The alpha and e of the rows of one law: overlap alpha up to e ~ 1e-4 (linear:
+    !> 1.1, tsuji: 2.1, kuwabara-kono: 13), force alpha up to e ~ 1e-4 .. 1e-5 (50, 200,
+    !> 1000), e of the inverse in [1e-3, 0.999] for every law.
+    function sets_of(law, quick) result(st)
+        integer, intent(in) :: law
+        logical, intent(in) :: quick
+        type(law_sets) :: st
+        real(wp), allocatable :: fo(:)
+        integer :: i
+        select case (law)
+        case (HD_DAMPING_LINEAR)
+            if (quick) then
+                st%alpha = [0.0_wp, 0.2_wp, 0.4_wp, 0.6_wp, 0.8_wp, 1.0_wp, 1.1_wp]
+                fo = [0.0_wp, 0.5_wp, 2.0_wp, 10.0_wp, 50.0_wp]
+            else
+                st%alpha = [(0.05_wp * i, i=0, 22)]
+                fo = [0.0_wp, 0.1_wp, 0.2_wp, 0.5_wp, 1.0_wp, 2.0_wp, 5.0_wp, 10.0_wp, 20.0_wp, 50.0_wp]
+            end if
+        case (HD_DAMPING_TSUJI)
+            if (quick) then
+                st%alpha = [0.0_wp, 0.4_wp, 0.8_wp, 1.2_wp, 1.6_wp, 2.0_wp]
+                fo = [0.0_wp, 1.0_wp, 10.0_wp, 100.0_wp]
+            else
+                st%alpha = [(0.1_wp * i, i=0, 21)]
+                fo = [0.0_wp, 0.1_wp, 0.2_wp, 0.5_wp, 1.0_wp, 2.0_wp, 5.0_wp, 10.0_wp, 20.0_wp, 50.0_wp, 100.0_wp, &
+                      200.0_wp]
+            end if
+        case default
+            if (quick) then
+                st%alpha = [0.0_wp, 1.0_wp, 2.0_wp, 4.0_wp, 8.0_wp, 13.0_wp]
+                fo = [0.0_wp, 1.0_wp, 10.0_wp, 100.0_wp, 1000.0_wp]
+            else
+                st%alpha = [(0.5_wp * i, i=0, 26)]
+                fo = [0.0_wp, 0.1_wp, 0.2_wp, 0.5_wp, 1.0_wp, 2.0_wp, 5.0_wp, 10.0_wp, 20.0_wp, 50.0_wp, 100.0_wp, &
+                      200.0_wp, 500.0_wp, 1000.0_wp]
+            end if
+        end select
+        st%n_ov = size(st%alpha)
+        st%text = itoa(st%n_ov) // ' alpha in [0, ' // short(st%alpha(st%n_ov)) // '] (overlap) and ' // &
+                  itoa(size(fo)) // ' in [0, ' // short(fo(size(fo))) // '] (force)'
+        st%alpha = [st%alpha, fo]
+        allocate (st%iend(size(st%alpha)))
+        st%iend(1:st%n_ov) = HD_END_OVERLAP
+        st%iend(st%n_ov + 1:) = HD_END_FORCE
+        if (quick) then
+            st%e = [1.0e-3_wp, 1.0e-2_wp, 0.1_wp, 0.5_wp, 0.9_wp, 0.99_wp]
+        else
+            st%e = [1.0e-3_wp, 2.0e-3_wp, 5.0e-3_wp, 1.0e-2_wp, 2.0e-2_wp, 5.0e-2_wp, 0.1_wp, 0.2_wp, 0.3_wp, &
+                    0.4_wp, 0.5_wp, 0.6_wp, 0.7_wp, 0.8_wp, 0.9_wp, 0.95_wp, 0.99_wp, 0.999_wp]
+        end if
+    end function sets_of
+
     ! ------------------------------------------------------------------ the command
 
     subroutine cmd_bench()
         type(cli_args) :: args
-        integer :: fmt
+        integer :: fmt, sel, il, i, nl, n_entry
         logical :: quick, want_plot
         character(len=:), allocatable :: plot_file, terminal
         real(wp) :: min_time, t_start
         integer :: repeats
-        real(wp), allocatable :: alpha(:), e_inv(:)
-        integer, allocatable :: iend(:)
+        integer, allocatable :: laws(:)
+        type(law_sets) :: sets(n_laws)
         type(fwd_case) :: fref
         type(inv_case) :: iref
         type(bench_row), allocatable :: rows(:)
-        type(entry_result) :: ent
-        integer :: i, n_ov, n_fo
+        type(entry_data) :: dat
+        type(entry_result) :: ent(n_laws)
+        type(tsuji_result) :: ts
         type(cli_buffer) :: buf
         type(out_table) :: t
         type(cli_buffer) :: figs
@@ -297,8 +305,9 @@ contains
             call print_help('bench')
             call quit(EXIT_OK)
         end if
-        call parse_args(2, '--format --plot', '--quick', args)
+        call parse_args(2, '--format --plot --damping', '--quick', args)
         fmt = parse_choice(args%get('--format', 'text'), format_choices, 'format (--format)')
+        sel = parse_choice(args%get('--damping', 'all'), 'all linear tsuji kuwabara-kono', 'damping law (--damping)')
         quick = args%has('--quick')
         want_plot = args%has('--plot')
         terminal = ''
@@ -307,70 +316,96 @@ contains
             call plot_check_target(plot_file, terminal)
         end if
         t_start = wall_seconds()
+        if (sel == 1) then
+            laws = [HD_DAMPING_LINEAR, HD_DAMPING_TSUJI, HD_DAMPING_KUWABARA_KONO]
+        else
+            laws = [sel - 2]
+        end if
+        nl = size(laws)
 
         if (quick) then
             min_time = 0.01_wp
             repeats = 3
-            alpha = [0.0_wp, 0.2_wp, 0.4_wp, 0.6_wp, 0.8_wp, 1.0_wp, 1.1_wp]
-            n_ov = size(alpha)
-            alpha = [alpha, 0.0_wp, 0.5_wp, 2.0_wp, 10.0_wp, 50.0_wp]
-            e_inv = [1.0e-3_wp, 1.0e-2_wp, 0.1_wp, 0.5_wp, 0.9_wp, 0.99_wp]
+            n_entry = 100000
         else
             min_time = 0.1_wp
             repeats = 5
-            alpha = [(0.05_wp * i, i=0, 22)]
-            n_ov = size(alpha)
-            alpha = [alpha, 0.0_wp, 0.1_wp, 0.2_wp, 0.5_wp, 1.0_wp, 2.0_wp, 5.0_wp, 10.0_wp, 20.0_wp, 50.0_wp]
-            e_inv = [1.0e-3_wp, 2.0e-3_wp, 5.0e-3_wp, 1.0e-2_wp, 2.0e-2_wp, 5.0e-2_wp, 0.1_wp, 0.2_wp, 0.3_wp, &
-                     0.4_wp, 0.5_wp, 0.6_wp, 0.7_wp, 0.8_wp, 0.9_wp, 0.95_wp, 0.99_wp, 0.999_wp]
+            n_entry = 1000000
         end if
-        n_fo = size(alpha) - n_ov
-        allocate (iend(size(alpha)))
-        iend(1:n_ov) = HD_END_OVERLAP
-        iend(n_ov + 1:) = HD_END_FORCE
-
-        ! References, computed once.
-        call fwd_init(fref, ENGINE_LIB, HD_METHOD_RK45, 1.0e-15_wp, -1, alpha, iend)
-        call fref%run()
-        do i = 1, size(alpha)
-            if (fref%status(i) /= HD_OK) call fail(EXIT_FAILURE, 'forward reference (rk45, tol 1e-15) failed: ' // &
-                                                   hertzdamp_message(fref%status(i)))
-        end do
-        call inv_init(iref, HD_METHOD_ITERATIVE, inv_ref_tol, e_inv, spread(inv_tc, 1, size(e_inv)), &
-                      spread(inv_m, 1, size(e_inv)), spread(inv_u, 1, size(e_inv)))
-        call iref%run()
-        do i = 1, size(e_inv)
-            if (iref%status(i) /= HD_OK) call fail(EXIT_FAILURE, 'inverse reference (' // inv_ref_text // ') failed: ' &
-                                                   // hertzdamp_message(iref%status(i)))
-        end do
 
         allocate (rows(0))
-        call forward_rows(alpha, iend, n_ov, fref, min_time, repeats, rows)
-        call inverse_rows(iref, min_time, repeats, rows)
-        call entry_rows(quick, min_time, repeats, rows, ent)
-        call figures(rows, ent, figs)
+        do il = 1, nl
+            sets(il) = sets_of(laws(il), quick)
+            ! references, computed once
+            call fwd_init(fref, ENGINE_LIB, HD_METHOD_RK45, laws(il), 1.0e-15_wp, -1, sets(il)%alpha, sets(il)%iend)
+            call fref%run()
+            do i = 1, size(sets(il)%alpha)
+                if (fref%status(i) /= HD_OK) call fail(EXIT_FAILURE, 'forward reference (rk45, tol 1e-15, ' // &
+                                                       hertzdamp_law_name(laws(il)) // ') failed: ' // &
+                                                       hertzdamp_message(fref%status(i)))
+            end do
+            call inv_init(iref, HD_METHOD_ITERATIVE, laws(il), inv_ref_tol, sets(il)%e, &
+                          spread(inv_tc, 1, size(sets(il)%e)), spread(inv_m, 1, size(sets(il)%e)), &
+                          spread(inv_u, 1, size(sets(il)%e)))
+            call iref%run()
+            do i = 1, size(sets(il)%e)
+                if (iref%status(i) /= HD_OK) call fail(EXIT_FAILURE, 'inverse reference (' // inv_ref_text // ', ' // &
+                                                       hertzdamp_law_name(laws(il)) // ') failed: ' // &
+                                                       hertzdamp_message(iref%status(i)))
+            end do
+            if (laws(il) == HD_DAMPING_TSUJI) then
+                ! the exact alpha of the overlap end (closed form) instead of the iterative one,
+                ! whose error grows like that of rk45's e over -ln e as e -> 1; d is proportional to it
+                iref%d = iref%d * (hertzdamp_tsuji_alpha(iref%e) / iref%alpha)
+                iref%alpha = hertzdamp_tsuji_alpha(iref%e)
+            end if
+            call forward_rows(laws(il), sets(il), fref, min_time, repeats, rows)
+            call inverse_rows(laws(il), iref, min_time, repeats, rows)
+        end do
+        call entry_contacts(n_entry, dat)
+        do il = 1, nl
+            call entry_measure(laws(il), dat, min_time, repeats, ent(il))
+            call entry_rows(ent(il), rows)
+        end do
+        if (any(laws == HD_DAMPING_TSUJI)) then
+            call tsuji_measure(dat, min_time, repeats, ts)
+            call tsuji_rows(ts, rows)
+        end if
+        call figures(rows, ent(1:nl), ts, figs)
 
         ! Render.
         call build_table(rows, fmt, t)
         if (fmt /= FORMAT_CSV) then
             call t%meta('bench', 'work-precision of hertzdamp: forward alpha -> (e, tau_c), inverse (e, T_c, m, ' // &
-                        'u_in) -> (k, d); every number measured in this run')
+                        'u_in) -> (k, d), for the damping laws ' // law_list(laws) // '; every number measured in ' // &
+                        'this run')
             if (quick) then
                 call t%meta('mode', 'quick: fewer alpha and e, each time the median of 3 batches of >= 0.01 s wall ' // &
                             'clock (full run: 5 batches of >= 0.1 s)')
             else
                 call t%meta('mode', 'full: each time the median of 5 batches of >= 0.1 s wall clock (system_clock)')
             end if
-            call t%meta('forward', itoa(n_ov) // ' alpha in [0, 1.1] (overlap) and ' // itoa(n_fo) // &
-                        ' alpha in [0, 50] (force); reference rk45 at tol 1e-15; error of e relative to max(e, 1e-3)' &
-                        // '; series and pade on the overlap alpha only')
-            call t%meta('inverse', itoa(size(e_inv)) // ' e in [1e-3, 0.999] (overlap), m = 1e-2 kg, u_in = 1 m/s, ' // &
-                        'T_c = 1e-4 s; reference ' // inv_ref_text // '; iterative = secant over rk45, gsl-secant = ' // &
-                        'secant over GSL rk8pd, each solve at tol/10 min(1, |ln e|), setting = accuracy asked of alpha')
-            call t%meta('entry', itoa(ent%n) // ' contacts (overlap), e uniform in [0.05, 0.99], m in [1e-9, 1] kg, ' // &
-                        'u_in in [1e-3, 10] m/s, T_c in [1e-7, 1e-3] s (log-uniform); every entry point timed side by ' // &
-                        'side (rounds of one batch each); ns_per_call = per contact')
+            do il = 1, nl
+                call t%meta('forward ' // hertzdamp_law_name(laws(il)), sets(il)%text)
+            end do
+            call t%meta('forward', 'reference rk45 at tol 1e-15 of the same law; error of e relative to ' // &
+                        'max(e, 1e-3); series, pade and compact: linear law only (series and pade on the overlap ' // &
+                        'alpha only)')
+            call t%meta('inverse', itoa(size(sets(1)%e)) // ' e in [1e-3, 0.999] (overlap), m = 1e-2 kg, ' // &
+                        'u_in = 1 m/s, T_c = 1e-4 s; reference ' // inv_ref_text // ' of the same law (tsuji: ' // &
+                        'with the exact alpha = sqrt5 beta(e)); iterative = ' // &
+                        'secant over rk45, gsl-secant = secant over GSL rk8pd (linear law only), each solve at ' // &
+                        'tol/10 min(1, |ln e|), setting = accuracy asked of alpha')
+            call t%meta('entry', itoa(n_entry) // ' contacts (overlap), e uniform in [0.05, 0.99], m in ' // &
+                        '[1e-9, 1] kg, u_in in [1e-3, 10] m/s, T_c in [1e-7, 1e-3] s (log-uniform), the same for ' // &
+                        'every law; the entry points of one law timed side by side (rounds of one batch each); ' // &
+                        'ns_per_call = per contact')
             call t%meta('entry points', entry_legend())
+            if (any(laws == HD_DAMPING_TSUJI)) then
+                call t%meta('closed-form', 'tsuji, overlap end, the entry contacts with k = k_phys half the ' // &
+                            'stiffness of the unbounded inverse (bound active), timed side by side: ' // ts_legend() // &
+                            '; err_alpha, err_d: largest relative difference from the closed form')
+            end if
             call t%meta('tolerances', 'rk45 and GSL (rkf45, rk8pd) with relative error control: absolute ' // &
                         'tolerance 1e-30 tol; rhs_evals, steps, rejected are means per collision (GSL: rejected n/a)')
             call t%meta('omitted', 'methods that report not-supported, and points whose status is not ok ' // &
@@ -389,16 +424,27 @@ contains
             call t%render(fmt, buf)
         end if
 
-        if (want_plot) call make_plot(rows, plot_file, terminal, quick)
+        if (want_plot) call make_plot(rows, laws, plot_file, terminal, quick)
         call buf%flush_to_stdout()
         call quit(EXIT_OK)
     end subroutine cmd_bench
 
+    !> 'linear, tsuji and kuwabara-kono' (the laws of the run).
+    function law_list(laws) result(s)
+        integer, intent(in) :: laws(:)
+        character(len=:), allocatable :: s
+        integer :: i
+        s = hertzdamp_law_name(laws(1))
+        do i = 2, size(laws)
+            s = s // trim(merge(' and', ',   ', i == size(laws))) // ' ' // hertzdamp_law_name(laws(i))
+        end do
+    end function law_list
+
     ! ------------------------------------------------------------------ forward
 
-    subroutine forward_rows(alpha, iend, n_ov, fref, min_time, repeats, rows)
-        real(wp), intent(in) :: alpha(:)
-        integer, intent(in) :: iend(:), n_ov
+    subroutine forward_rows(law, st, fref, min_time, repeats, rows)
+        integer, intent(in) :: law
+        type(law_sets), intent(in) :: st
         type(fwd_case), intent(in) :: fref
         real(wp), intent(in) :: min_time
         integer, intent(in) :: repeats
@@ -407,15 +453,17 @@ contains
         character(len=*), parameter :: tol_names(5) = ['1e-4 ', '1e-6 ', '1e-8 ', '1e-10', '1e-12']
         integer, parameter :: orders(6) = [1, 2, 3, 5, 10, 20]
         integer :: j, n
-        n = size(alpha)
+        n = size(st%alpha)
         do j = 1, size(tols)
             call one(ENGINE_LIB, HD_METHOD_RK45, tols(j), -1, 'rk45', trim(tol_names(j)), 1, n)
         end do
-        do j = 1, size(orders)
-            call one(ENGINE_LIB, HD_METHOD_SERIES, 0.0_wp, orders(j), 'series', 'N=' // itoa(orders(j)), 4, n_ov)
-        end do
-        call one(ENGINE_LIB, HD_METHOD_PADE, 0.0_wp, -1, 'pade', '', 5, n_ov)
-        call one(ENGINE_LIB, HD_METHOD_COMPACT, 0.0_wp, -1, 'compact', '', 6, n)
+        if (law == HD_DAMPING_LINEAR) then
+            do j = 1, size(orders)
+                call one(ENGINE_LIB, HD_METHOD_SERIES, 0.0_wp, orders(j), 'series', 'N=' // itoa(orders(j)), 4, st%n_ov)
+            end do
+            call one(ENGINE_LIB, HD_METHOD_PADE, 0.0_wp, -1, 'pade', '', 5, st%n_ov)
+            call one(ENGINE_LIB, HD_METHOD_COMPACT, 0.0_wp, -1, 'compact', '', 6, n)
+        end if
         call one(ENGINE_LIB, HD_METHOD_FIT, 0.0_wp, -1, 'fit', '', 7, n)
         do j = 1, size(tols)
             call one(ENGINE_GSL, HERTZDAMP_GSL_RKF45, tols(j), -1, 'gsl-rkf45', trim(tol_names(j)), 2, n)
@@ -436,12 +484,13 @@ contains
             real(wp) :: tol_
             tol_ = tol
             if (tol_ <= 0.0_wp) tol_ = 1.0e-13_wp
-            call fwd_init(c, engine, method, tol_, order, alpha(1:npts), iend(1:npts))
+            call fwd_init(c, engine, method, law, tol_, order, st%alpha(1:npts), st%iend(1:npts))
             call c%run()
             idx = pack([(i, i=1, npts)], c%status == HD_OK)
             if (size(idx) == 0) return
-            if (size(idx) < npts) call fwd_init(c, engine, method, tol_, order, alpha(idx), iend(idx))
+            if (size(idx) < npts) call fwd_init(c, engine, method, law, tol_, order, st%alpha(idx), st%iend(idx))
             r%problem = 'forward'
+            r%law = law
             r%method = name
             r%setting = setting
             r%family = family
@@ -462,7 +511,8 @@ contains
 
     ! ------------------------------------------------------------------ inverse
 
-    subroutine inverse_rows(iref, min_time, repeats, rows)
+    subroutine inverse_rows(law, iref, min_time, repeats, rows)
+        integer, intent(in) :: law
         type(inv_case), intent(in) :: iref
         real(wp), intent(in) :: min_time
         integer, intent(in) :: repeats
@@ -471,15 +521,19 @@ contains
         real(wp), parameter :: tols(5) = [1.0e-6_wp, 1.0e-8_wp, 1.0e-10_wp, 1.0e-11_wp, 1.0e-12_wp]
         character(len=*), parameter :: tol_names(5) = ['1e-6 ', '1e-8 ', '1e-10', '1e-11', '1e-12']
         call one(HD_METHOD_FIT, 0.0_wp, 'fit', '', 7)
-        call one(HD_METHOD_COMPACT, 0.0_wp, 'compact', '', 6)
-        call one(HD_METHOD_SERIES, 0.0_wp, 'series', '', 4)
-        call one(HD_METHOD_PADE, 0.0_wp, 'pade', '', 5)
+        if (law == HD_DAMPING_LINEAR) then
+            call one(HD_METHOD_COMPACT, 0.0_wp, 'compact', '', 6)
+            call one(HD_METHOD_SERIES, 0.0_wp, 'series', '', 4)
+            call one(HD_METHOD_PADE, 0.0_wp, 'pade', '', 5)
+        end if
         do j = 1, size(tols)
             call one(HD_METHOD_ITERATIVE, tols(j), 'iterative', trim(tol_names(j)), 8)
         end do
-        do j = 1, size(tols)
-            call one_gsl(tols(j), trim(tol_names(j)))
-        end do
+        if (law == HD_DAMPING_LINEAR) then
+            do j = 1, size(tols)
+                call one_gsl(tols(j), trim(tol_names(j)))
+            end do
+        end if
     contains
         !> The GSL peer's iterative inverse at accuracy tol (every point must succeed).
         subroutine one_gsl(tol, setting)
@@ -498,6 +552,7 @@ contains
             call c%run()
             if (any(c%status /= HD_OK)) return
             r%problem = 'inverse'
+            r%law = law
             r%method = 'gsl-secant'
             r%setting = setting
             r%family = 9
@@ -524,12 +579,13 @@ contains
             n = size(iref%e)
             tol_ = tol
             if (tol_ <= 0.0_wp) tol_ = 1.0e-10_wp
-            call inv_init(c, method, tol_, iref%e, iref%tc, iref%m, iref%u)
+            call inv_init(c, method, law, tol_, iref%e, iref%tc, iref%m, iref%u)
             call c%run()
             idx = pack([(i, i=1, n)], c%status == HD_OK)
             if (size(idx) == 0) return
-            if (size(idx) < n) call inv_init(c, method, tol_, iref%e(idx), iref%tc(idx), iref%m(idx), iref%u(idx))
+            if (size(idx) < n) call inv_init(c, method, law, tol_, iref%e(idx), iref%tc(idx), iref%m(idx), iref%u(idx))
             r%problem = 'inverse'
+            r%law = law
             r%method = name
             r%setting = setting
             r%family = family
@@ -551,171 +607,141 @@ contains
 
     ! ------------------------------------------------------------------ entry points
 
-    !> The fit inverse through every entry point over the same contacts, timed side by
-    !> side; then every way's results against the module scalar call, bit for bit.
-    subroutine entry_rows(quick, min_time, repeats, rows, res)
-        logical, intent(in) :: quick
-        real(wp), intent(in) :: min_time
-        integer, intent(in) :: repeats
+    !> The rows of the entry points of one law.
+    subroutine entry_rows(ent, rows)
+        type(entry_result), intent(in) :: ent
         type(bench_row), allocatable, intent(inout) :: rows(:)
-        type(entry_result), intent(out) :: res
-        type(entry_data), target :: dat
-        type(bench_slot) :: slots(n_ways)
-        real(wp) :: t(n_ways)
-        integer(int64) :: seed
-        integer :: w, n
         type(bench_row) :: r
-        n = merge(100000, 1000000, quick)
-        seed = 20261122_int64
-        allocate (dat%e(n), dat%m(n), dat%u(n), dat%tc(n))
-        dat%e(:) = 0.05_wp + 0.94_wp * lcg_uniform(seed, n)
-        dat%m(:) = 10.0_wp**(-9.0_wp + 9.0_wp * lcg_uniform(seed, n))
-        dat%u(:) = 10.0_wp**(-3.0_wp + 4.0_wp * lcg_uniform(seed, n))
-        dat%tc(:) = 10.0_wp**(-7.0_wp + 4.0_wp * lcg_uniform(seed, n))
+        integer :: w
         do w = 1, n_ways
-            allocate (slots(w)%c, source=entry_case(way=w, in=dat))
-            select type (c => slots(w)%c)
-            type is (entry_case)
-                allocate (c%k(n), c%d(n), c%status(n))
-                call c%run()
-            end select
-        end do
-        t = bench_measure_all(slots, min_time, repeats)
-        res%n = n
-        res%ns = 1.0e9_wp * t / n
-        select type (c1 => slots(1)%c)
-        type is (entry_case)
-            res%failed = count(c1%status /= HD_OK)
-            do w = 1, n_ways
-                select type (c => slots(w)%c)
-                type is (entry_case)
-                    res%mismatches(w) = count(transfer(c%k, 0_int64, n) /= transfer(c1%k, 0_int64, n) .or. &
-                                              transfer(c%d, 0_int64, n) /= transfer(c1%d, 0_int64, n) .or. &
-                                              c%status /= c1%status)
-                end select
-            end do
-        end select
-        do w = 1, n_ways
-            r = bench_row('entry', trim(way_name(w)), 'n=' // itoa(n), 7, n - res%failed, n, ns=res%ns(w))
+            r = bench_row('entry', trim(way_name(w)), 'n=' // itoa(ent%n), ent%law, 7, ent%n - ent%failed, ent%n, &
+                          ns=ent%ns(w))
             rows = [rows, r]
         end do
     end subroutine entry_rows
 
-    !> n uniform numbers in (0, 1) from the Park-Miller generator (reproducible everywhere).
-    function lcg_uniform(seed, n) result(x)
-        integer(int64), intent(inout) :: seed
-        integer, intent(in) :: n
-        real(wp) :: x(n)
-        integer :: i
-        integer(int64), parameter :: a = 16807_int64, modulus = 2147483647_int64
-        do i = 1, n
-            seed = mod(a * seed, modulus)
-            x(i) = real(seed, wp) / real(modulus, wp)
+    !> The rows of the tsuji comparison (problem closed-form): the fit's alpha and the
+    !> bound's d with their largest difference from the closed form.
+    subroutine tsuji_rows(ts, rows)
+        type(tsuji_result), intent(in) :: ts
+        type(bench_row), allocatable, intent(inout) :: rows(:)
+        type(bench_row) :: r
+        integer :: w
+        do w = 1, n_ts
+            r = bench_row('closed-form', trim(ts_name(w)), 'n=' // itoa(ts%n), HD_DAMPING_TSUJI, 7, ts%n, ts%n, &
+                          ns=ts%ns(w))
+            if (w == TS_FIT_ALPHA .or. w == TS_FIT_ALPHA_N) r%err(3) = ts%err_alpha
+            if (w == TS_BOUND_D .or. w == TS_BOUND_D_N) r%err(5) = ts%err_d
+            rows = [rows, r]
         end do
-    end function lcg_uniform
-
+    end subroutine tsuji_rows
 
     ! ------------------------------------------------------------------ figures
 
-    !> The 'figure' lines: ratios measured side by side in this run.
-    subroutine figures(rows, ent, figs)
+    !> The 'figure' lines: ratios measured side by side in this run, law by law.
+    subroutine figures(rows, ent, ts, figs)
+        type(bench_row), intent(in) :: rows(:)
+        type(entry_result), intent(in) :: ent(:)
+        type(tsuji_result), intent(in) :: ts
+        type(cli_buffer), intent(out) :: figs
+        integer :: il
+        do il = 1, size(ent)
+            call law_figures(rows, ent(il), figs)
+        end do
+        if (ts%n > 0) call tsuji_figures(ts, figs)
+    end subroutine figures
+
+    !> The figures of one law: its entry points, their targets (issue 11), the speed-up
+    !> against the iterative rows of the law, and the forward integrators at equal error.
+    subroutine law_figures(rows, ent, figs)
         type(bench_row), intent(in) :: rows(:)
         type(entry_result), intent(in) :: ent
-        type(cli_buffer), intent(out) :: figs
-        integer :: i_fit, i_eq, i_10, w, j
-        real(wp) :: targets(2), t_rk, t_f, t_8, acc_fit, worst_c, ns_arr
+        type(cli_buffer), intent(inout) :: figs
+        integer :: i_fit, i_eq, i_10, w, j, law
+        real(wp) :: targets(2), t_rk, t_f, t_8, acc_fit, worst_c
         character(len=*), parameter :: target_names(2) = ['1e-8 ', '1e-10']
-        character(len=:), allocatable :: q_rk, q_f, q_8, line
+        character(len=:), allocatable :: q_rk, q_f, q_8, line, lname
+        law = ent%law
+        lname = hertzdamp_law_name(law) // ': '
         ! ---- entry points
-        if (ent%n > 0) then
-            line = 'entry points over ' // itoa(ent%n) // ' contacts, ns per contact (ratio to the module scalar call):'
-            do w = 1, n_ways
-                line = line // ' ' // trim(way_name(w)) // ' ' // ftoa(ent%ns(w), '(f6.1)') // ' (' // &
-                       fratio(ent%ns(w) / ent%ns(WAY_SCALAR)) // ')' // trim(merge(',', ' ', w < n_ways))
+        line = lname // 'entry points over ' // itoa(ent%n) // ' contacts, ns per contact (ratio to the module ' // &
+               'scalar call):'
+        do w = 1, n_ways
+            line = line // ' ' // trim(way_name(w)) // ' ' // ftoa(ent%ns(w), '(f6.1)') // ' (' // &
+                   fratio(ent%ns(w) / ent%ns(WAY_SCALAR)) // ')' // trim(merge(',', ' ', w < n_ways))
+        end do
+        call figs%add(line)
+        if (all(ent%mismatches == 0)) then
+            call figs%add(lname // 'entry points: k, d and status bit-identical to the module scalar call for ' // &
+                          'every contact and every entry point (' // itoa(ent%failed) // ' contacts not ok)')
+        else
+            line = lname // 'entry points: NOT bit-identical to the module scalar call, contacts that differ:'
+            do w = 2, n_ways
+                line = line // ' ' // trim(way_name(w)) // ' ' // itoa(ent%mismatches(w))
             end do
             call figs%add(line)
-            if (all(ent%mismatches == 0)) then
-                call figs%add('entry points: k, d and status bit-identical to the module scalar call for every ' // &
-                              'contact and every entry point (' // itoa(ent%failed) // ' contacts not ok)')
-            else
-                line = 'entry points: NOT bit-identical to the module scalar call, contacts that differ:'
-                do w = 2, n_ways
-                    line = line // ' ' // trim(way_name(w)) // ' ' // itoa(ent%mismatches(w))
-                end do
-                call figs%add(line)
-            end if
-            worst_c = max(ent%ns(WAY_C), ent%ns(WAY_LEGACY)) / ent%ns(WAY_SCALAR)
-            ns_arr = min(ent%ns(WAY_ARRAY), ent%ns(WAY_C_N), ent%ns(WAY_LEGACY_N))
-            call figs%add('targets: legacy and C per contact at most 1.3 x the module scalar call: ' // &
-                          fratio(ent%ns(WAY_LEGACY) / ent%ns(WAY_SCALAR)) // ' and ' // &
-                          fratio(ent%ns(WAY_C) / ent%ns(WAY_SCALAR)) // ' (' // &
-                          met(worst_c <= 1.3_wp, 'short by ' // fratio(worst_c / 1.3_wp) // ' x') // &
-                          '); module scalar at most 40 ns: ' // ftoa(ent%ns(WAY_SCALAR), '(f6.1)') // ' ns (' // &
-                          met(ent%ns(WAY_SCALAR) <= 40.0_wp, 'short by ' // &
-                          ftoa(ent%ns(WAY_SCALAR) - 40.0_wp, '(f6.1)') // ' ns') // &
-                          '); array at least 2.5 x cheaper than the scalar call: ' // &
-                          fratio(ent%ns(WAY_SCALAR) / ent%ns(WAY_ARRAY)) // ' x (' // &
-                          met(ent%ns(WAY_SCALAR) / ent%ns(WAY_ARRAY) >= 2.5_wp, 'short by ' // &
-                          fratio(2.5_wp * ent%ns(WAY_ARRAY) / ent%ns(WAY_SCALAR)) // ' x') // &
-                          '); array at most 15 ns per contact: ' // ftoa(ent%ns(WAY_ARRAY), '(f6.1)') // ' ns (' // &
-                          met(ent%ns(WAY_ARRAY) <= 15.0_wp, 'short by ' // &
-                          ftoa(ent%ns(WAY_ARRAY) - 15.0_wp, '(f6.1)') // ' ns') // ')')
         end if
-        ! ---- against the iterative baselines, at equal accuracy
-        i_fit = find_row(rows, 'inverse', 'fit', '')
+        worst_c = max(ent%ns(WAY_C), ent%ns(WAY_LEGACY)) / ent%ns(WAY_SCALAR)
+        call figs%add(lname // 'targets: legacy and C per contact at most 1.3 x the module scalar call: ' // &
+                      fratio(ent%ns(WAY_LEGACY) / ent%ns(WAY_SCALAR)) // ' and ' // &
+                      fratio(ent%ns(WAY_C) / ent%ns(WAY_SCALAR)) // ' (' // &
+                      met(worst_c <= 1.3_wp, 'short by ' // fratio(worst_c / 1.3_wp) // ' x') // &
+                      '); module scalar at most 40 ns: ' // ftoa(ent%ns(WAY_SCALAR), '(f6.1)') // ' ns (' // &
+                      met(ent%ns(WAY_SCALAR) <= 40.0_wp, 'short by ' // &
+                      ftoa(ent%ns(WAY_SCALAR) - 40.0_wp, '(f6.1)') // ' ns') // &
+                      '); array at least 2.5 x cheaper than the scalar call: ' // &
+                      fratio(ent%ns(WAY_SCALAR) / ent%ns(WAY_ARRAY)) // ' x (' // &
+                      met(ent%ns(WAY_SCALAR) / ent%ns(WAY_ARRAY) >= 2.5_wp, 'short by ' // &
+                      fratio(2.5_wp * ent%ns(WAY_ARRAY) / ent%ns(WAY_SCALAR)) // ' x') // &
+                      '); array at most 15 ns per contact: ' // ftoa(ent%ns(WAY_ARRAY), '(f6.1)') // ' ns (' // &
+                      met(ent%ns(WAY_ARRAY) <= 15.0_wp, 'short by ' // &
+                      ftoa(ent%ns(WAY_ARRAY) - 15.0_wp, '(f6.1)') // ' ns') // ')')
+        ! ---- against the iterative baselines of the law, at equal accuracy
+        i_fit = find_row(rows, 'inverse', law, 'fit', '')
         if (i_fit > 0) then
             acc_fit = maxval(rows(i_fit)%err(3:5))
-            call figs%add('inverse: fit ' // ftoa(rows(i_fit)%ns, '(es9.2)') // ' ns per inverse over the ' // &
-                          'inverse set, max error on alpha, k, d ' // ftoa(acc_fit, '(es9.2)') // &
-                          '; iterative rows (secant over rk45 or GSL rk8pd at the accuracy asked): ' // iter_summary(rows))
-            i_eq = fastest_iterative(rows, acc_fit)
+            call figs%add(lname // 'inverse: fit ' // ftoa(rows(i_fit)%ns, '(es9.2)') // ' ns per inverse over ' // &
+                          'the inverse set, max error on alpha, k, d ' // ftoa(acc_fit, '(es9.2)') // &
+                          '; iterative rows (secant over rk45' // trim(merge(' or GSL rk8pd', '             ', &
+                          law == HD_DAMPING_LINEAR)) // ' at the accuracy asked): ' // iter_summary(rows, law))
+            i_eq = fastest_iterative(rows, law, acc_fit)
             if (i_eq > 0) then
-                call figs%add('speed-up at equal accuracy: the fastest iterative row as accurate as the fit is ' // &
-                              row_name(rows(i_eq)) // ' (' // ftoa(rows(i_eq)%ns, '(es9.2)') // ' ns, error ' // &
-                              ftoa(maxval(rows(i_eq)%err(3:5)), '(es9.2)') // '): ' // speedups(rows(i_eq)%ns))
+                call figs%add(lname // 'speed-up at equal accuracy: the fastest iterative row as accurate as the ' // &
+                              'fit is ' // row_name(rows(i_eq)) // ' (' // ftoa(rows(i_eq)%ns, '(es9.2)') // &
+                              ' ns, error ' // ftoa(maxval(rows(i_eq)%err(3:5)), '(es9.2)') // '): ' // &
+                              speedups(rows(i_eq)%ns))
             else
                 ! the most accurate rows (errors within 10 % of the smallest count as ties: the
                 ! reference resolves no finer), the fastest of them
-                i_eq = most_accurate_iterative(rows)
-                if (i_eq > 0) i_eq = fastest_iterative(rows, 1.1_wp * maxval(rows(i_eq)%err(3:5)))
-                if (i_eq > 0) call figs%add('speed-up at equal accuracy: no iterative row reaches the fit''s ' // &
-                                            'accuracy; against the fastest of the most accurate ones (error within ' // &
-                                            '10 % of the smallest), ' // row_name(rows(i_eq)) // &
+                i_eq = most_accurate_iterative(rows, law)
+                if (i_eq > 0) i_eq = fastest_iterative(rows, law, 1.1_wp * maxval(rows(i_eq)%err(3:5)))
+                if (i_eq > 0) call figs%add(lname // 'speed-up at equal accuracy: no iterative row reaches the ' // &
+                                            'fit''s accuracy; against the fastest of the most accurate ones ' // &
+                                            '(error within 10 % of the smallest), ' // row_name(rows(i_eq)) // &
                                             ' (' // ftoa(rows(i_eq)%ns, '(es9.2)') // ' ns, error ' // &
                                             ftoa(maxval(rows(i_eq)%err(3:5)), '(es9.2)') // ', the fit is more ' // &
                                             'accurate): ' // speedups(rows(i_eq)%ns))
             end if
-            i_10 = fastest_iterative(rows, 1.0e-10_wp)
-            if (i_10 > 0) call figs%add('speed-up at accuracy 1e-10 (alpha, k, d; the fit is more accurate): ' // &
-                                        'fastest iterative row ' // row_name(rows(i_10)) // ' (' // &
+            i_10 = fastest_iterative(rows, law, 1.0e-10_wp)
+            if (i_10 > 0) call figs%add(lname // 'speed-up at accuracy 1e-10 (alpha, k, d; the fit is more ' // &
+                                        'accurate): fastest iterative row ' // row_name(rows(i_10)) // ' (' // &
                                         ftoa(rows(i_10)%ns, '(es9.2)') // ' ns, error ' // &
-                                        ftoa(maxval(rows(i_10)%err(3:5)), '(es9.2)') // '): ' // speedups(rows(i_10)%ns))
+                                        ftoa(maxval(rows(i_10)%err(3:5)), '(es9.2)') // '): ' // &
+                                        speedups(rows(i_10)%ns))
         end if
         targets = [1.0e-8_wp, 1.0e-10_wp]
         do j = 1, size(targets)
-            call time_at_error(rows, 'rk45', targets(j), t_rk, q_rk)
-            call time_at_error(rows, 'gsl-rkf45', targets(j), t_f, q_f)
-            call time_at_error(rows, 'gsl-rk8pd', targets(j), t_8, q_8)
-            call figs%add('forward at equal achieved error ' // trim(target_names(j)) // &
+            call time_at_error(rows, law, 'rk45', targets(j), t_rk, q_rk)
+            call time_at_error(rows, law, 'gsl-rkf45', targets(j), t_f, q_f)
+            call time_at_error(rows, law, 'gsl-rk8pd', targets(j), t_8, q_8)
+            call figs%add(lname // 'forward at equal achieved error ' // trim(target_names(j)) // &
                           ' (max of e and tau_c errors; ns/call interpolated log-log between tolerances): rk45 ' // &
                           ns_text(q_rk, t_rk) // ', gsl-rk8pd ' // ns_text(q_8, t_8) // ' (' // ratio(t_8, t_rk) // &
                           '), gsl-rkf45 ' // ns_text(q_f, t_f) // ' (' // ratio(t_f, t_rk) // ')')
         end do
     contains
-        !> 'met' or the shortfall.
-        function met(ok, shortfall) result(r)
-            logical, intent(in) :: ok
-            character(len=*), intent(in) :: shortfall
-            character(len=:), allocatable :: r
-            if (ok) then
-                r = 'met'
-            else
-                r = shortfall
-            end if
-        end function met
-
-        !> Speed-up of every entry point (and of the inverse-set fit row) against t_iter [ns],
-        !> with the target of 1000.
+        !> Speed-up of every entry point of the law (and of the inverse-set fit row) against
+        !> t_iter [ns], with the target of 1000.
         function speedups(t_iter) result(r)
             real(wp), intent(in) :: t_iter
             character(len=:), allocatable :: r
@@ -723,28 +749,76 @@ contains
             real(wp) :: worst
             r = ''
             worst = huge(1.0_wp)
-            if (ent%n > 0) then
-                do k = 1, n_ways
-                    r = r // trim(way_name(k)) // ' ' // fratio(t_iter / ent%ns(k)) // ' x, '
-                    worst = min(worst, t_iter / ent%ns(k))
-                end do
-            end if
+            do k = 1, n_ways
+                r = r // trim(way_name(k)) // ' ' // fratio(t_iter / ent%ns(k)) // ' x, '
+                worst = min(worst, t_iter / ent%ns(k))
+            end do
             r = r // 'fit on the inverse set ' // fratio(t_iter / rows(i_fit)%ns) // ' x'
             worst = min(worst, t_iter / rows(i_fit)%ns)
             r = r // ' (target at least 1000 x for every entry point: ' // &
                 met(worst >= 1000.0_wp, 'short by ' // fratio(1000.0_wp / worst) // ' x') // ')'
         end function speedups
-    end subroutine figures
+    end subroutine law_figures
 
-    !> 'name = what it calls' of every entry point.
+    !> The figures of the tsuji comparison: what the fit's inverse costs against the
+    !> closed form of the overlap end, and how far its results are from it.
+    subroutine tsuji_figures(ts, figs)
+        type(tsuji_result), intent(in) :: ts
+        type(cli_buffer), intent(inout) :: figs
+        call figs%add('tsuji: inverse against the closed form alpha = sqrt5 beta(e) (overlap end, ' // itoa(ts%n) // &
+                      ' contacts, ns per contact): alpha alone ' // ftoa(ts%ns(TS_CLOSED_ALPHA), '(f6.1)') // &
+                      ' (closed form) against ' // ftoa(ts%ns(TS_FIT_ALPHA), '(f6.1)') // ' (fit: alpha and tau_c), ' // &
+                      'ratio ' // fratio(ts%ns(TS_FIT_ALPHA) / ts%ns(TS_CLOSED_ALPHA)) // '; over arrays ' // &
+                      ftoa(ts%ns(TS_CLOSED_ALPHA_N), '(f6.1)') // ' against ' // ftoa(ts%ns(TS_FIT_ALPHA_N), '(f6.1)') // &
+                      ', ratio ' // fratio(ts%ns(TS_FIT_ALPHA_N) / ts%ns(TS_CLOSED_ALPHA_N)) // &
+                      '; the engines'' d = alpha sqrt(m k) for a given k ' // ftoa(ts%ns(TS_CLOSED_D), '(f6.1)') // &
+                      ' (closed form) against ' // ftoa(ts%ns(TS_BOUND_D), '(f6.1)') // &
+                      ' (hertzdamp_invert with k_phys = k), ratio ' // fratio(ts%ns(TS_BOUND_D) / ts%ns(TS_CLOSED_D)) // &
+                      '; over arrays ' // ftoa(ts%ns(TS_CLOSED_D_N), '(f6.1)') // ' against ' // &
+                      ftoa(ts%ns(TS_BOUND_D_N), '(f6.1)') // ', ratio ' // &
+                      fratio(ts%ns(TS_BOUND_D_N) / ts%ns(TS_CLOSED_D_N)))
+        call figs%add('tsuji: the fit''s alpha differs from the closed form by at most ' // &
+                      ftoa(ts%err_alpha, '(es9.2)') // ' (relative), its bounded d from alpha sqrt(m k) by ' // &
+                      ftoa(ts%err_d, '(es9.2)') // '; ' // itoa(ts%failed) // ' library results not ok, ' // &
+                      itoa(ts%unbound) // ' contacts with the bound inactive, ' // itoa(ts%mismatches) // &
+                      ' contacts where an array call differs from the one-contact call')
+    end subroutine tsuji_figures
+
+    !> 'met' or the shortfall.
+    function met(ok, shortfall) result(r)
+        logical, intent(in) :: ok
+        character(len=*), intent(in) :: shortfall
+        character(len=:), allocatable :: r
+        if (ok) then
+            r = 'met'
+        else
+            r = shortfall
+        end if
+    end function met
+
+    !> 'name = what it calls' of every entry point, for the linear law and the others.
     function entry_legend() result(s)
         character(len=:), allocatable :: s
         integer :: w
-        s = trim(way_name(1)) // ' = ' // trim(way_label(1))
+        s = 'linear: ' // trim(way_name(1)) // ' = ' // trim(way_label(1, 1))
         do w = 2, n_ways
-            s = s // '; ' // trim(way_name(w)) // ' = ' // trim(way_label(w))
+            s = s // '; ' // trim(way_name(w)) // ' = ' // trim(way_label(w, 1))
+        end do
+        s = s // '; the other laws: ' // trim(way_name(1)) // ' = ' // trim(way_label(1, 2))
+        do w = 2, n_ways
+            s = s // '; ' // trim(way_name(w)) // ' = ' // trim(way_label(w, 2))
         end do
     end function entry_legend
+
+    !> 'name = what it computes' of every row of the tsuji comparison.
+    function ts_legend() result(s)
+        character(len=:), allocatable :: s
+        integer :: w
+        s = trim(ts_name(1)) // ' = ' // trim(ts_label(1))
+        do w = 2, n_ts
+            s = s // '; ' // trim(ts_name(w)) // ' = ' // trim(ts_label(w))
+        end do
+    end function ts_legend
 
     !> 'method setting' of a row.
     function row_name(r) result(s)
@@ -753,19 +827,24 @@ contains
         s = r%method // ' ' // r%setting
     end function row_name
 
-    logical function is_iterative(r)
+    !> An iterative inverse row of the law.
+    logical function is_iterative(r, law)
         type(bench_row), intent(in) :: r
-        is_iterative = r%problem == 'inverse' .and. (r%method == 'iterative' .or. r%method == 'gsl-secant')
+        integer, intent(in) :: law
+        is_iterative = r%problem == 'inverse' .and. r%law == law .and. &
+                       (r%method == 'iterative' .or. r%method == 'gsl-secant')
     end function is_iterative
 
-    !> The fastest iterative row whose max error on alpha, k and d is at most acc (0 if none).
-    integer function fastest_iterative(rows, acc) result(k)
+    !> The fastest iterative row of the law whose max error on alpha, k and d is at most
+    !> acc (0 if none).
+    integer function fastest_iterative(rows, law, acc) result(k)
         type(bench_row), intent(in) :: rows(:)
+        integer, intent(in) :: law
         real(wp), intent(in) :: acc
         integer :: i
         k = 0
         do i = 1, size(rows)
-            if (.not. is_iterative(rows(i))) cycle
+            if (.not. is_iterative(rows(i), law)) cycle
             if (.not. (maxval(rows(i)%err(3:5)) <= acc)) cycle
             if (k == 0) then
                 k = i
@@ -775,13 +854,14 @@ contains
         end do
     end function fastest_iterative
 
-    !> The iterative row with the smallest max error on alpha, k and d (0 if none).
-    integer function most_accurate_iterative(rows) result(k)
+    !> The iterative row of the law with the smallest max error on alpha, k and d (0 if none).
+    integer function most_accurate_iterative(rows, law) result(k)
         type(bench_row), intent(in) :: rows(:)
+        integer, intent(in) :: law
         integer :: i
         k = 0
         do i = 1, size(rows)
-            if (.not. is_iterative(rows(i))) cycle
+            if (.not. is_iterative(rows(i), law)) cycle
             if (k == 0) then
                 k = i
             else if (maxval(rows(i)%err(3:5)) < maxval(rows(k)%err(3:5))) then
@@ -790,14 +870,15 @@ contains
         end do
     end function most_accurate_iterative
 
-    !> 'method setting: ns, error' of every iterative row.
-    function iter_summary(rows) result(s)
+    !> 'method setting: ns, error' of every iterative row of the law.
+    function iter_summary(rows, law) result(s)
         type(bench_row), intent(in) :: rows(:)
+        integer, intent(in) :: law
         character(len=:), allocatable :: s
         integer :: i
         s = ''
         do i = 1, size(rows)
-            if (.not. is_iterative(rows(i))) cycle
+            if (.not. is_iterative(rows(i), law)) cycle
             if (len(s) > 0) s = s // '; '
             s = s // row_name(rows(i)) // ' ' // ftoa(rows(i)%ns, '(es9.2)') // ' ns, error ' // &
                 ftoa(maxval(rows(i)%err(3:5)), '(es9.2)')
@@ -844,8 +925,9 @@ contains
     !> log-log between the two tolerances whose errors bracket it (qualifier '');
     !> the loosest tolerance's time if that already achieves it ('<=');
     !> NaN if no tolerance does.
-    subroutine time_at_error(rows, name, target, t, qual)
+    subroutine time_at_error(rows, law, name, target, t, qual)
         type(bench_row), intent(in) :: rows(:)
+        integer, intent(in) :: law
         character(len=*), intent(in) :: name
         real(wp), intent(in) :: target
         real(wp), intent(out) :: t
@@ -855,7 +937,7 @@ contains
         real(wp) :: w
         allocate (err(0), ns(0))
         do i = 1, size(rows)
-            if (rows(i)%problem == 'forward' .and. rows(i)%method == name) then
+            if (rows(i)%problem == 'forward' .and. rows(i)%law == law .and. rows(i)%method == name) then
                 err = [err, max(rows(i)%err(1), rows(i)%err(2))]
                 ns = [ns, rows(i)%ns]
             end if
@@ -877,13 +959,15 @@ contains
         end do
     end subroutine time_at_error
 
-    integer function find_row(rows, problem, method, setting) result(k)
+    integer function find_row(rows, problem, law, method, setting) result(k)
         type(bench_row), intent(in) :: rows(:)
         character(len=*), intent(in) :: problem, method, setting
+        integer, intent(in) :: law
         integer :: i
         k = 0
         do i = 1, size(rows)
-            if (rows(i)%problem == problem .and. rows(i)%method == method .and. rows(i)%setting == setting) k = i
+            if (rows(i)%problem == problem .and. rows(i)%law == law .and. rows(i)%method == method .and. &
+                rows(i)%setting == setting) k = i
         end do
     end function find_row
 
@@ -895,14 +979,15 @@ contains
         type(out_table), intent(out) :: t
         integer :: i, j
         if (fmt == FORMAT_TEXT) then
-            call t%set_columns('problem,method,setting,points,err_e,err_tau,err_alpha,err_k,err_d,ns_per_call,' // &
-                               'steps,rejected,rhs_evals')
+            call t%set_columns('problem,damping,method,setting,points,err_e,err_tau,err_alpha,err_k,err_d,' // &
+                               'ns_per_call,steps,rejected,rhs_evals')
         else
-            call t%set_columns('problem,method,setting,max_rel_err_e,max_rel_err_tau,max_rel_err_alpha,' // &
+            call t%set_columns('problem,damping,method,setting,max_rel_err_e,max_rel_err_tau,max_rel_err_alpha,' // &
                                'max_rel_err_k,max_rel_err_d,ns_per_call,rhs_evals')
         end if
         do i = 1, size(rows)
             call t%str(rows(i)%problem)
+            call t%str(hertzdamp_law_name(rows(i)%law))
             call t%str(rows(i)%method)
             call t%str(blank_or(rows(i)%setting, fmt))
             if (fmt == FORMAT_TEXT) call t%str(itoa(rows(i)%npts) // '/' // itoa(rows(i)%ntot))
@@ -952,13 +1037,15 @@ contains
         do i = 1, size(t%meta_key) - nfig
             call buf%add('# ' // t%meta_key(i)%s // ': ' // t%meta_val(i)%s)
         end do
-        call buf%add(pad('problem', 10) // ' ' // pad('method', 9) // ' ' // pad('setting', 9) // ' ' // &
+        call buf%add(pad('problem', 11) // ' ' // pad('damping', 13) // ' ' // pad('method', 14) // ' ' // &
+                     pad('setting', 9) // ' ' // &
                      pad('points', -7) // ' ' // pad('err_e', -9) // ' ' // pad('err_tau', -9) // ' ' // &
                      pad('err_alpha', -9) // ' ' // pad('err_k', -9) // ' ' // pad('err_d', -9) // ' ' // &
                      pad('ns/call', -9) // ' ' // pad('steps', -7) // ' ' // pad('rejected', -8) // ' ' // &
                      pad('rhs_evals', -9))
         do i = 1, size(rows)
-            line = pad(rows(i)%problem, 10) // ' ' // pad(rows(i)%method, 9) // ' ' // &
+            line = pad(rows(i)%problem, 11) // ' ' // pad(hertzdamp_law_name(rows(i)%law), 13) // ' ' // &
+                   pad(rows(i)%method, 14) // ' ' // &
                    pad(blank_or(rows(i)%setting, FORMAT_TEXT), 9) // ' ' // &
                    pad(itoa(rows(i)%npts) // '/' // itoa(rows(i)%ntot), -7)
             do j = 1, 5
@@ -988,23 +1075,25 @@ contains
     !> Before any work: gnuplot present (else exit 4) and the target writable (else
     !> exit 2).  Chooses the terminal: pngcairo if gnuplot has it, else png.
 
-    !> Work-precision diagram: forward and inverse panels.  Data and script go to
-    !> temporary files; the PNG is written to FILE.tmp and renamed into place only
-    !> when gnuplot succeeded.
-    subroutine make_plot(rows, file, terminal, quick)
+    !> Work-precision diagram: forward (top) and inverse (bottom) panels, one column per
+    !> damping law of the run.  Data and script go to temporary files; the PNG is written
+    !> to FILE.tmp and renamed into place only when gnuplot succeeded.
+    subroutine make_plot(rows, laws, file, terminal, quick)
         type(bench_row), intent(in) :: rows(:)
+        integer, intent(in) :: laws(:)
         character(len=*), intent(in) :: file, terminal
         logical, intent(in) :: quick
         character(len=:), allocatable :: tmpdir, base, dat, gp, png_tmp
         type(cli_buffer) :: plots
         character(len=:), allocatable :: cmd
-        integer :: u, ios, p, f, i, nblock, blocks(2, n_families)
+        integer :: u, ios, p, f, i, il, nblock, blocks(2, size(laws), n_families)
         integer(int64) :: cnt
         character(len=*), parameter :: pts(n_families) = ['7 ', '5 ', '9 ', '13', '11', '3 ', '2 ', '1 ', '4 ']
         character(len=*), parameter :: colors(n_families) = ['#1f77b4', '#ff7f0e', '#2ca02c', '#9467bd', &
                                                              '#8c564b', '#e377c2', '#d62728', '#7f7f7f', '#17becf']
         character(len=*), parameter :: problems(2) = ['forward', 'inverse']
         real(wp) :: y
+        cmd = ''
         tmpdir = env_or('TMPDIR', '/tmp')
         call system_clock(cnt)
         base = tmpdir // '/hertzdamp_bench_' // itoa8(cnt)
@@ -1017,22 +1106,24 @@ contains
         nblock = 0
         blocks = -1
         do p = 1, 2
-            do f = 1, n_families
-                if (.not. any([(rows(i)%problem == problems(p) .and. rows(i)%family == f, i=1, size(rows))])) cycle
-                blocks(p, f) = nblock
-                nblock = nblock + 1
-                do i = 1, size(rows)
-                    if (rows(i)%problem /= problems(p) .or. rows(i)%family /= f) cycle
-                    if (p == 1) then
-                        y = max(rows(i)%err(1), rows(i)%err(2))
-                    else
-                        y = maxval(rows(i)%err(3:5))
-                    end if
-                    write (u, '(es14.6,1x,es14.6,1x,a)') rows(i)%ns, max(y, plot_floor), &
-                        '"' // trim(rows(i)%setting) // '"'
+            do il = 1, size(laws)
+                do f = 1, n_families
+                    if (.not. any([(in_panel(rows(i), p, il) .and. rows(i)%family == f, i=1, size(rows))])) cycle
+                    blocks(p, il, f) = nblock
+                    nblock = nblock + 1
+                    do i = 1, size(rows)
+                        if (.not. in_panel(rows(i), p, il) .or. rows(i)%family /= f) cycle
+                        if (p == 1) then
+                            y = max(rows(i)%err(1), rows(i)%err(2))
+                        else
+                            y = maxval(rows(i)%err(3:5))
+                        end if
+                        write (u, '(es14.6,1x,es14.6,1x,a)') rows(i)%ns, max(y, plot_floor), &
+                            '"' // trim(rows(i)%setting) // '"'
+                    end do
+                    write (u, '(a)') ''
+                    write (u, '(a)') ''
                 end do
-                write (u, '(a)') ''
-                write (u, '(a)') ''
             end do
         end do
         close (u)
@@ -1040,60 +1131,67 @@ contains
         open (newunit=u, file=gp, status='replace', action='write', iostat=ios)
         if (ios /= 0) call fail(EXIT_FAILURE, 'cannot write a temporary file in ' // tmpdir)
         if (terminal == 'pngcairo') then
-            write (u, '(a)') 'set terminal pngcairo size 1400,620 enhanced font "sans,10"'
+            write (u, '(a)') 'set terminal pngcairo size ' // itoa(100 + 620 * size(laws)) // &
+                ',1150 enhanced font "sans,10"'
         else
-            write (u, '(a)') 'set terminal png size 1400,620'
+            write (u, '(a)') 'set terminal png size ' // itoa(100 + 620 * size(laws)) // ',1150'
         end if
         write (u, '(a)') 'set output ' // gp_string(png_tmp)
-        write (u, '(a)') 'set multiplot layout 1,2 title "hertzdamp bench: work-precision' // &
-            trim(merge(' (--quick)', '          ', quick)) // '"'
+        write (u, '(a)') 'set multiplot layout 2,' // itoa(size(laws)) // &
+            ' title "hertzdamp bench: work-precision' // trim(merge(' (--quick)', '          ', quick)) // '"'
         write (u, '(a)') 'set logscale xy'
-        ! fixed decades wide enough for every method (no point on the frame)
+        ! fixed decades wide enough for every method (no point on the frame), room for the key
         write (u, '(a)') 'set xrange [3:3e7]'
-        write (u, '(a)') 'set yrange [1e-16:1e2]'
+        write (u, '(a)') 'set yrange [1e-16:1e6]'
         write (u, '(a)') 'set format x "10^{%L}"'
         write (u, '(a)') 'set format y "10^{%L}"'
         write (u, '(a)') 'set grid'
-        write (u, '(a)') 'set key outside right top'
+        write (u, '(a)') 'set key top left horizontal maxcols 3 samplen 2'
         write (u, '(a)') 'set xlabel "time per call [ns] (median)"'
         write (u, '(a)') 'set ylabel "max relative error (floor 1e-17)"'
         do p = 1, 2
-            if (p == 1) then
-                write (u, '(a)') 'set title "forward: alpha -> e, tau_c  (vs rk45 tol 1e-15)" noenhanced'
-            else
-                write (u, '(a)') 'set title "inverse: e, T_c, m, u_in -> alpha, k, d  (vs ' // inv_ref_text // ')" noenhanced'
-            end if
-            plots%n = 0
-            do f = 1, n_families
-                if (blocks(p, f) < 0) cycle
-                call plots%add(gp_string(dat) // ' index ' // itoa(blocks(p, f)) // &
-                               ' using 1:2 with linespoints pt ' // trim(pts(f)) // ' ps 1.5 lc rgb "' // colors(f) // &
-                               '" title "' // trim(fam(f)) // '" noenhanced')
-            end do
-            if (plots%n == 0) then
-                write (u, '(a)') 'set label 1 "no data" at graph 0.5, graph 0.5 center'
-                write (u, '(a)') 'plot [1:10] [1:10] NaN notitle'
-                write (u, '(a)') 'unset label 1'
-            else
-                cmd = 'plot '
-                do i = 1, plots%n
-                    cmd = cmd // plots%lines(i)%s
-                    if (i < plots%n) cmd = cmd // ', '
+            do il = 1, size(laws)
+                if (p == 1) then
+                    write (u, '(a)') 'set title "' // hertzdamp_law_name(laws(il)) // &
+                        ', forward: alpha -> e, tau_c  (vs rk45 tol 1e-15)" noenhanced'
+                else
+                    write (u, '(a)') 'set title "' // hertzdamp_law_name(laws(il)) // &
+                        ', inverse: e, T_c, m, u_in -> alpha, k, d  (vs ' // inv_ref_text // ')" noenhanced'
+                end if
+                plots%n = 0
+                do f = 1, n_families
+                    if (blocks(p, il, f) < 0) cycle
+                    call plots%add(gp_string(dat) // ' index ' // itoa(blocks(p, il, f)) // &
+                                   ' using 1:2 with linespoints pt ' // trim(pts(f)) // ' ps 1.5 lc rgb "' // &
+                                   colors(f) // '" title "' // trim(fam(f)) // '" noenhanced')
                 end do
-                write (u, '(a)') cmd
-            end if
+                if (plots%n == 0) then
+                    write (u, '(a)') 'set label 1 "no data" at graph 0.5, graph 0.5 center'
+                    write (u, '(a)') 'plot [1:10] [1:10] NaN notitle'
+                    write (u, '(a)') 'unset label 1'
+                else
+                    cmd = 'plot '
+                    do i = 1, plots%n
+                        cmd = cmd // plots%lines(i)%s
+                        if (i < plots%n) cmd = cmd // ', '
+                    end do
+                    write (u, '(a)') cmd
+                end if
+            end do
         end do
         write (u, '(a)') 'unset multiplot'
         write (u, '(a)') 'set output'
         close (u)
 
         call plot_run(gp, png_tmp, file, [character(len=len(dat)) :: dat])
+    contains
+        !> The row belongs to panel (problem p, law il).
+        logical function in_panel(r, p, il)
+            type(bench_row), intent(in) :: r
+            integer, intent(in) :: p, il
+            in_panel = r%problem == problems(p) .and. r%law == laws(il)
+        end function in_panel
     end subroutine make_plot
-
-
-
-
-
 
     function env_or(name, default) result(v)
         character(len=*), intent(in) :: name, default
@@ -1125,6 +1223,17 @@ contains
         write (b, '(i0)') i
         s = trim(b)
     end function itoa8
+
+    !> x as an integer when it is one, else with one decimal.
+    function short(x) result(s)
+        real(wp), intent(in) :: x
+        character(len=:), allocatable :: s
+        if (abs(x) < 1.0e9_wp .and. x == aint(x)) then
+            s = itoa(int(x))
+        else
+            s = ftoa(x, '(f0.1)')
+        end if
+    end function short
 
     function ftoa(x, f) result(s)
         real(wp), intent(in) :: x

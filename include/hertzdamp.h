@@ -118,6 +118,15 @@ int hertzdamp_c_invert_law(double e, double tc, double m, double u, double k_phy
                            int law, int end, double *k, double *d);
 
 /*
+ * hertzdamp_c_invert_law without the bound (k_phys = 0) for n contacts, vectorised:
+ * status[i] is the status of contact i, the results those of n calls, bit for bit.
+ * Returns HERTZDAMP_OK when all succeeded, else the first non-zero status.
+ */
+int hertzdamp_c_invert_law_n(int n, const double *e, const double *tc, const double *m,
+                             const double *u, int law, int end, double *k, double *d,
+                             int *status);
+
+/*
  * Material-pair constants of the law: per contact t* = T_c / tau_c,
  * k = m t*^{-5/2} u^{-1/2},  d = alpha m t*^{-1} (u t*)^{-q}.
  */

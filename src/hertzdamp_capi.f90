@@ -17,14 +17,14 @@ module hertzdamp_capi
     use, intrinsic :: iso_c_binding, only: c_double, c_int, c_char, c_ptr, c_loc, c_null_char
     use hertzdamp_status, only: HD_OK, HD_BAD_ARGUMENT, hertzdamp_message_table, hertzdamp_max_status, &
                                 hertzdamp_message_len
-    use hertzdamp_flat, only: flat_invert, flat_invert_n, flat_invert_bounded, flat_invert_law, flat_pair_law, &
-                              flat_forward_law
+    use hertzdamp_flat, only: flat_invert, flat_invert_n, flat_invert_bounded, flat_invert_law, flat_invert_law_n, &
+                              flat_pair_law, flat_forward_law
     implicit none
     private
 
     public :: hertzdamp_c_invert, hertzdamp_c_invert_bounded, hertzdamp_c_invert_n, hertzdamp_c_pair, &
               hertzdamp_c_forward, hertzdamp_c_strerror
-    public :: hertzdamp_c_invert_law, hertzdamp_c_pair_law, hertzdamp_c_forward_law
+    public :: hertzdamp_c_invert_law, hertzdamp_c_invert_law_n, hertzdamp_c_pair_law, hertzdamp_c_forward_law
 
     integer, private :: i_   ! implied-do index of the initialisation below (never used at run time)
     !> The NUL-terminated messages of hertzdamp_message_table (the one table behind
@@ -99,18 +99,25 @@ contains
         real(c_double), intent(out) :: k(n)          !! Hertz stiffnesses [N m^-3/2] (n)
         real(c_double), intent(out) :: d(n)          !! damping coefficients [kg/s] (n)
         integer(c_int), intent(out) :: st(n)         !! status of each contact (n)
-        integer :: i
         status = HD_OK
         if (n <= 0) return
         ! vectorised over the arrays; the results of n calls of hertzdamp_c_invert
         call flat_invert_n(int(n), e, tc, m, u, int(iend), k, d, st)
-        do i = 1, n
+        status = first_failure(st)
+    end function hertzdamp_c_invert_n
+
+    !> The first non-zero status of an array, or HD_OK.
+    pure integer(c_int) function first_failure(st) result(status)
+        integer(c_int), intent(in) :: st(:)
+        integer :: i
+        status = HD_OK
+        do i = 1, size(st)
             if (st(i) /= HD_OK) then
                 status = st(i)
                 return
             end if
         end do
-    end function hertzdamp_c_invert_n
+    end function first_failure
 
     !> `int hertzdamp_c_pair(double e, int end, double *alpha, double *tau_c)`: the
     !> constants of a material pair, alpha(e) and tau_c(alpha(e)); per contact
@@ -166,6 +173,30 @@ contains
         d = d_
         status = int(st, c_int)
     end function hertzdamp_c_invert_law
+
+    !> `int hertzdamp_c_invert_law_n(int n, const double *e, const double *tc, const double *m,
+    !> const double *u, int law, int end, double *k, double *d, int *status)`:
+    !> hertzdamp_c_invert_law without the bound (k_phys = 0) for n contacts; status[i] is
+    !> each contact's status.  Returns HD_OK when every contact succeeded, else the first
+    !> non-zero status; n <= 0 does nothing.
+    integer(c_int) function hertzdamp_c_invert_law_n(n, e, tc, m, u, law, iend, k, d, st) &
+            bind(c, name='hertzdamp_c_invert_law_n') result(status)
+        integer(c_int), value, intent(in) :: n       !! number of contacts
+        real(c_double), intent(in) :: e(n)           !! target restitution coefficients (n)
+        real(c_double), intent(in) :: tc(n)          !! target contact times [s] (n)
+        real(c_double), intent(in) :: m(n)           !! effective masses [kg] (n)
+        real(c_double), intent(in) :: u(n)           !! impact velocities [m/s] (n)
+        integer(c_int), value, intent(in) :: law     !! damping law: 0 linear, 1 tsuji, 2 kuwabara-kono
+        integer(c_int), value, intent(in) :: iend    !! contact end: 0 overlap, 1 force
+        real(c_double), intent(out) :: k(n)          !! Hertz stiffnesses [N m^-3/2] (n)
+        real(c_double), intent(out) :: d(n)          !! damping coefficients [kg s^-1 m^-q] (n)
+        integer(c_int), intent(out) :: st(n)         !! status of each contact (n)
+        status = HD_OK
+        if (n <= 0) return
+        ! vectorised over the arrays; the results of n calls of hertzdamp_c_invert_law
+        call flat_invert_law_n(int(n), e, tc, m, u, int(law), int(iend), k, d, st)
+        status = first_failure(st)
+    end function hertzdamp_c_invert_law_n
 
     !> `int hertzdamp_c_pair_law(double e, int law, int end, double *alpha, double *tau_c)`:
     !> the material-pair constants of the damping law `law`; per contact t* = T_c/tau_c,

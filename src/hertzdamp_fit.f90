@@ -5,7 +5,7 @@
 !> gen/fit/gen_fit.f90 from the reference integrator; see data/fit_coefficients.csv).
 !> No iteration, no LAPACK or GSL at run time, no module state.
 !>
-!> Variables (L = -ln e):
+!> Variables of the linear law (L = -ln e):
 !> - inverse, overlap:  alpha/L and tau_c as polynomials of L on [0, ln 1000];
 !> - inverse, force:    alpha/L and tau_c of L^(1/3) on [0, (ln 1e4)^(1/3)], because
 !>   e(alpha) of the force definition has terms alpha^(5/3), tau_c terms alpha^(2/3);
@@ -13,44 +13,53 @@
 !>   w = -ln(1 - alpha/alpha_c) beyond (L ~ w, tau_c ~ w as alpha -> alpha_c);
 !>   z_max, tau_max of alpha on [0, 1.3] (turning-point quantities are analytic);
 !> - forward, force:    L/alpha, tau_c, z_max, tau_max of alpha^(1/3).
+!> The inverse of the tsuji and kuwabara-kono laws (doc/damping-laws.md section 7) runs on
+!> the same kernels (hertzdamp_fit_inverse.inc lists the variable of each); their forward
+!> maps and the derivatives of every forward map are in hertzdamp_fit_laws.
 !>
 !> Ranges: overlap e in [1e-3, 1] (forward: alpha up to alpha(1e-5) = 1.12794); force
-!> e in [1e-4, 1] (alpha up to alpha(5e-5) = 52.5).  Overlap forward beyond the fitted
-!> range and below alpha_c: e and tau_c continue linearly in w (value and slope of
-!> the last piece; the exact asymptote is also linear in w), status HD_OK but accuracy
-!> not 1e-12; alpha >= alpha_c: HD_NO_REBOUND, e = 0, tau_c = +inf.
+!> e in [1e-4, 1] (alpha up to alpha(5e-5) = 52.5); the other laws' inverse e in
+!> [1e-4, 1].  Overlap forward beyond the fitted range and below alpha_c: e and tau_c
+!> continue linearly in w (value and slope of the last piece; the exact asymptote is
+!> also linear in w), status HD_OK but accuracy not 1e-12; alpha >= alpha_c:
+!> HD_NO_REBOUND, e = 0, tau_c = +inf.
 !> Measured max relative error against the reference (tolerance 1e-15): see the
-!> header of data/fit_coefficients.csv and test/test_fit.f90 (below 1e-12).
+!> header of data/fit_coefficients.csv, test/test_fit.f90 and test/test_fit_laws.f90
+!> (below 1e-12).
 !>
 !> ## One kernel per map, vectorised, shared by every entry point
 !>
-!> The work is done by `hertzdamp_fit_inverse_n` and `hertzdamp_fit_forward_n`, loops
+!> The work is done by `hertzdamp_fit_invert_n` and `hertzdamp_fit_forward_n`, loops
 !> over n values written so that the compiler vectorises them (SSE at
 !> -march=x86-64-v2, AVX2/AVX-512 with -march=x86-64-v3/native): no branch in the loop
 !> body (the piece is an index, a fitted map is a few loop-invariant numbers, invalid
 !> inputs are replaced by harmless ones with integer masks and flagged), no call (the
-!> logarithm, cube root and exponential are the arithmetic kernels below, not libm's),
-!> and the coefficients of a piece sit side by side (`fit_<family>_c` of
-!> hertzdamp_fit_data).  The scalar procedures call the same loops with n = 1, so a
+!> logarithm, cube and fifth roots and exponential are the arithmetic kernels below,
+!> not libm's), and the coefficients of a piece sit side by side (`fit_<family>_c` of
+!> hertzdamp_fit_data).  The scalar procedures run the same loops over one value, so a
 !> scalar call, an elemental or array call, the C functions and the legacy externals
-!> run the same code and give bit-identical results.
+!> run the same code and give bit-identical results, for every damping law.
 !>
 !> Why not libm: gfortran on glibc vectorises `log`, `exp` and `cbrt` in such loops
 !> with libmvec (math-vector-fortran.h is pre-included), whose results differ from the
 !> scalar libm in the last bit for about a quarter of the arguments; a vectorised array
 !> call would then disagree with the scalar call.  The kernels here are accurate to
 !> about one unit in the last place (test/test_fit.f90 checks them against quadruple
-!> precision), far below the 1e-13 of the fits.
+!> precision), far below the 1e-13 of the fits.  (sqrt is correctly rounded in scalar
+!> and vector form alike.)
 !>
 !> To add a fitted map (another damping law, ...): see tools/fit_csv_to_f90.py (its
-!> blocks, its family and map index), then select its map index where the contact
-!> end selects `fit_map_ov_inv` / `fit_map_fo_inv` below; a new variable code needs
-!> its transform in hertzdamp_fit_inverse.inc / hertzdamp_fit_forward.inc.
+!> blocks, its family and map index); an inverse map gets a kernel code kern_* below,
+!> chosen by `inverse_kernel` from the contact end and law, its variable and map in
+!> hertzdamp_fit_inverse.inc, its q in hertzdamp_fit_invert_out.inc and a case in
+!> hertzdamp_fit_invert_dispatch.inc; a forward map its transform in
+!> hertzdamp_fit_forward.inc (linear law) or hertzdamp_fit_laws.
 module hertzdamp_fit
     use hertzdamp_kinds, only: hertzdamp_rk
     use hertzdamp_status, only: HD_OK, HD_NO_REBOUND, HD_BAD_END, HD_BAD_ALPHA, HD_BAD_RESTITUTION, HD_OUT_OF_RANGE, &
                                 HD_OUTSIDE_VALIDITY, HD_END_OVERLAP, HD_END_FORCE
     use hertzdamp_constants, only: hertzdamp_tau_c0
+    use hertzdamp_laws, only: HD_DAMPING_LINEAR, HD_DAMPING_TSUJI, hertzdamp_law_status, hertzdamp_alpha_c_tsuji
     use hertzdamp_fit_data
     use, intrinsic :: iso_fortran_env, only: int64, real128
     implicit none
@@ -67,14 +76,16 @@ module hertzdamp_fit
     !> Largest alpha of the fitted forward map of the force definition.
     real(wp), parameter, public :: hertzdamp_fit_alpha_max_force = fit_alpha_max_force
 
-    ! ---- variable codes of the maps (column 3 of the block rows of the CSV)
-    integer, parameter :: var_l = 1, var_cbrt_l = 2, var_alpha = 3, var_w = 4, var_cbrt_alpha = 5
+    ! ---- the inverse kernels, one per contact end and damping law (hertzdamp_fit_inverse.inc)
+    integer, parameter :: kern_lin_ov = 1, kern_lin_fo = 2, kern_ts_ov = 3, kern_ts_fo = 4, kern_kk_ov = 5, &
+                          kern_kk_fo = 6
 
     ! The polynomial evaluations below are written for the degrees the generator uses
     ! (Estrin's scheme, fixed shape): a compile-time division by zero stops the build
     ! if the generated degrees change.
     integer, parameter :: inv_deg = fit_inv_deg + 0 * (1 / merge(1, 0, fit_inv_deg == 9))
-    integer, parameter :: fwd_deg = fit_fwd_deg + 0 * (1 / merge(1, 0, fit_fwd_deg == 11 .and. fit_turn_deg == 11))
+    integer, parameter :: fwd_deg = fit_fwd_deg + 0 * (1 / merge(1, 0, fit_fwd_deg == 11 .and. fit_turn_deg == 11 &
+                                                                 .and. fit_linv_deg == 11 .and. fit_one_deg == 11))
     ! hertzdamp_fit_forward.inc takes the turning point from the piece of the forward map
     ! where their grids agree (force; overlap up to 0.6): stop the build if they do not.
     integer, parameter :: turn_first_fo = fit_turn_first(fit_map_fo_turn) + 0 * (1 / merge(1, 0, &
@@ -120,6 +131,20 @@ module hertzdamp_fit
     real(wp), parameter :: cbrt2 = 2.0_wp**(1.0_wp / 3.0_wp), cbrt4 = 4.0_wp**(1.0_wp / 3.0_wp)
     real(wp), parameter :: cr_d1 = cbrt2 - 1.0_wp, cr_d2 = 0.5_wp * (cbrt4 - 2.0_wp * cbrt2 + 1.0_wp)
     real(wp), parameter :: third = 1.0_wp / 3.0_wp
+    !> First guess of m^(1/5) on [1, 2]: the quadratic through the exact fifth powers (1, 1),
+    !> ((17/16)^5, 17/16), ((9/8)^5, 9/8) in Newton form; times 2^(r/5), r = 0 .. 4, from
+    !> the quartic through (j, 2^(j/5)) (its divided differences p5_d).  Relative error
+    !> below 1e-3: after two Halley steps only rounding is left.
+    real(wp), parameter :: r5_x1 = (17.0_wp / 16.0_wp)**5, r5_x2 = (9.0_wp / 8.0_wp)**5
+    real(wp), parameter :: r5_d1 = (17.0_wp / 16.0_wp - 1.0_wp) / (r5_x1 - 1.0_wp)
+    real(wp), parameter :: r5_d2 = ((9.0_wp / 8.0_wp - 17.0_wp / 16.0_wp) / (r5_x2 - r5_x1) - r5_d1) / (r5_x2 - 1.0_wp)
+    real(wp), parameter :: p5(0:4) = [(2.0_wp**(0.2_wp * j_), j_ = 0, 4)]
+    real(wp), parameter :: p5_d(4) = [p5(1) - p5(0), (p5(2) - 2.0_wp * p5(1) + p5(0)) / 2.0_wp, &
+                                      (p5(3) - 3.0_wp * p5(2) + 3.0_wp * p5(1) - p5(0)) / 6.0_wp, &
+                                      (p5(4) - 4.0_wp * p5(3) + 6.0_wp * p5(2) - 4.0_wp * p5(1) + p5(0)) / 24.0_wp]
+    real(wp), parameter :: fifth = 0.2_wp
+    !> alpha(e) of the tsuji overlap end: sqrt(5) L / sqrt(pi^2 + L^2) (Antypov & Elliott 2011)
+    real(wp), parameter :: sqrt5 = hertzdamp_alpha_c_tsuji, pi_sq = acos(-1.0_wp)**2
 
     !> Values per pass when a buffer is needed (on the stack).
     integer, parameter :: chunk = 256
@@ -131,15 +156,15 @@ module hertzdamp_fit
     public :: hertzdamp_fit_invert_n, hertzdamp_fit_invert
     public :: hertzdamp_fit_forward, hertzdamp_fit_forward_n, hertzdamp_fit_e, hertzdamp_fit_tau_c
     public :: hertzdamp_approx_alpha_status
-    public :: hertzdamp_fit_neg_log, hertzdamp_fit_cbrt, hertzdamp_fit_exp_neg
+    public :: hertzdamp_fit_neg_log, hertzdamp_fit_cbrt, hertzdamp_fit_exp_neg, hertzdamp_fit_root5
 
 contains
 
     ! ================================================================ arithmetic kernels
-    ! (-ln x, x^(1/3), exp(-x): the fragments hertzdamp_fit_*.inc, applied by the loops
+    ! (-ln x, x^(1/3), exp(-x), x^(1/5): the fragments hertzdamp_fit_*.inc, applied by the loops
     ! below; the public functions exist for the tests and go through the same loops)
 
-    !> y(i) = -ln x(i) (which = 1), x(i)^(1/3) (2) or exp(-x(i)) (3).
+    !> y(i) = -ln x(i) (which = 1), x(i)^(1/3) (2), exp(-x(i)) (3) or x(i)^(1/5) (4).
     pure subroutine kernel_loop(which, n, x, y)
         integer, intent(in) :: which, n
         real(wp), intent(in) :: x(n)
@@ -157,6 +182,12 @@ contains
             do i = 1, n
                 kern_x = x(i)
                 include 'hertzdamp_fit_cbrt.inc'
+                y(i) = kern_y
+            end do
+        case (4)
+            do i = 1, n
+                kern_x = x(i)
+                include 'hertzdamp_fit_root5.inc'
                 y(i) = kern_y
             end do
         case default
@@ -185,6 +216,15 @@ contains
         call kernel_loop(2, 1, x1, y1)
         y = y1(1)
     end function hertzdamp_fit_cbrt
+
+    !> x^(1/5) of the fit kernels (x = 0 or positive normal; about one ulp).
+    pure elemental real(wp) function hertzdamp_fit_root5(x) result(y)
+        real(wp), intent(in) :: x   !! 0 or a positive normal number
+        real(wp) :: x1(1), y1(1)
+        x1(1) = x
+        call kernel_loop(4, 1, x1, y1)
+        y = y1(1)
+    end function hertzdamp_fit_root5
 
     !> exp(-l) of the fit kernels (0 <= l <= 700; about one ulp).
     pure elemental real(wp) function hertzdamp_fit_exp_neg(l) result(y)
@@ -258,136 +298,76 @@ contains
     end subroutine locate
 
     ! ================================================================ inverse
-    ! Each kernel exists as a loop (vectorised) and as a scalar procedure, both with the
-    ! element code of the same fragment; the scalar form avoids the set-up of a
-    ! vectorised loop for a single contact.  One instantiation per variable code of the
-    ! map (the branch on it stays outside the loops).
+    ! One kernel per contact end and damping law (kern_*), written once in
+    ! hertzdamp_fit_inverse.inc and hertzdamp_fit_invert_out.inc; hertzdamp_fit_invert_n
+    ! runs it as a loop (vectorised) and hertzdamp_fit_invert as a loop of one contact
+    ! (scalar code), both through hertzdamp_fit_invert_dispatch.inc, so that they give
+    ! the same bits.  The dimensionless inverse is the same kernel with T_c = m = u = 1.
 
-    !> Grid, e_min (bits) and tau_c(0) of a map of the inverse family.
-    pure subroutine map_grid(map, e_min, x0, scale, np, first, emin_bits, tau0)
-        integer, intent(in) :: map
-        real(wp), intent(in) :: e_min
-        real(wp), intent(out) :: x0, scale, tau0
-        integer, intent(out) :: np, first
-        integer(int64), intent(out) :: emin_bits
-        x0 = fit_inv_x0(map)
-        scale = fit_inv_scale(map)
-        np = fit_inv_np(map)
-        first = fit_inv_first(map)
-        emin_bits = transfer(e_min, 0_int64)
-        tau0 = hertzdamp_tau_c0()
-    end subroutine map_grid
-
-    !> The inverse map of one contact end: its index in the inverse family and e_min
-    !> (map = 0 for an invalid iend).
-    pure subroutine inverse_map(iend, map, e_min)
-        integer, intent(in) :: iend
-        integer, intent(out) :: map
+    !> The inverse kernel of a contact end and damping law, the smallest e of its fit
+    !> and a status: HD_OK, HD_BAD_LAW or HD_BAD_END (checked in this order; then
+    !> ikern = 0, e_min = 1).
+    pure subroutine inverse_kernel(iend, law, ikern, e_min, status)
+        integer, intent(in) :: iend, law
+        integer, intent(out) :: ikern, status
         real(wp), intent(out) :: e_min
-        select case (iend)
-        case (HD_END_OVERLAP)
-            map = fit_map_ov_inv
-            e_min = fit_e_min_overlap
-        case (HD_END_FORCE)
-            map = fit_map_fo_inv
-            e_min = fit_e_min_force
+        ikern = 0
+        e_min = 1.0_wp
+        status = hertzdamp_law_status(law)
+        if (status /= HD_OK) return
+        if (iend /= HD_END_OVERLAP .and. iend /= HD_END_FORCE) then
+            status = HD_BAD_END
+            return
+        end if
+        select case (law)
+        case (HD_DAMPING_LINEAR)
+            ikern = merge(kern_lin_ov, kern_lin_fo, iend == HD_END_OVERLAP)
+            e_min = merge(fit_e_min_overlap, fit_e_min_force, iend == HD_END_OVERLAP)
+        case (HD_DAMPING_TSUJI)
+            ikern = merge(kern_ts_ov, kern_ts_fo, iend == HD_END_OVERLAP)
+            e_min = fit_law_e_min
         case default
-            map = 0
-            e_min = 1.0_wp
+            ikern = merge(kern_kk_ov, kern_kk_fo, iend == HD_END_OVERLAP)
+            e_min = fit_law_e_min
         end select
-    end subroutine inverse_map
+    end subroutine inverse_kernel
 
-    !> The inverse map e -> (alpha, tau_c) for n restitution coefficients and one
-    !> contact end, vectorised.  Results per element as hertzdamp_fit_inverse (the same
-    !> bits); a bad iend gives HD_BAD_END everywhere.
-    pure subroutine hertzdamp_fit_inverse_n(n, e, iend, alpha, tau_c, status)
+    !> The inverse map e -> (alpha, tau_c) for n restitution coefficients, one contact
+    !> end and one damping law, vectorised.  Results per element as hertzdamp_fit_inverse
+    !> (the same bits).
+    pure subroutine hertzdamp_fit_inverse_n(n, e, iend, alpha, tau_c, status, law)
         integer, intent(in) :: n              !! number of values
         real(wp), intent(in) :: e(n)          !! restitution coefficients
         integer, intent(in) :: iend           !! HD_END_OVERLAP or HD_END_FORCE
         real(wp), intent(out) :: alpha(n)     !! damping parameters with e(alpha) = e
         real(wp), intent(out) :: tau_c(n)     !! dimensionless contact durations tau_c(alpha)
-        integer, intent(out) :: status(n)     !! HD_OK, HD_BAD_RESTITUTION or HD_BAD_END
-        real(wp) :: x0, scale, tau0, e_min, kin_e, kern_alpha, kern_tau, kout_alpha, kout_tau
-        integer :: np, first, i, map, kout_status
-        integer(int64) :: emin_bits, keep
-        call inverse_map(iend, map, e_min)
-        if (map == 0) then
-            alpha = 0.0_wp
-            tau_c = 0.0_wp
-            status = HD_BAD_END
-            return
-        end if
-        call map_grid(map, e_min, x0, scale, np, first, emin_bits, tau0)
-        associate (c => fit_inv_c)
-            if (fit_inv_var(map) == var_cbrt_l) then
-                do i = 1, n
-                    kin_e = e(i)
-                    block
-                        logical, parameter :: cube = .true., masked = .true.
-                        include 'hertzdamp_fit_inverse.inc'
-                    end block
-                    include 'hertzdamp_fit_inverse_out.inc'
-                    alpha(i) = kout_alpha
-                    tau_c(i) = kout_tau
-                    status(i) = kout_status
-                end do
-            else   ! var_l
-                do i = 1, n
-                    kin_e = e(i)
-                    block
-                        logical, parameter :: cube = .false., masked = .true.
-                        include 'hertzdamp_fit_inverse.inc'
-                    end block
-                    include 'hertzdamp_fit_inverse_out.inc'
-                    alpha(i) = kout_alpha
-                    tau_c(i) = kout_tau
-                    status(i) = kout_status
-                end do
-            end if
-        end associate
+        integer, intent(out) :: status(n)     !! HD_OK, HD_BAD_RESTITUTION, HD_BAD_END or HD_BAD_LAW
+        integer, intent(in), optional :: law  !! HD_DAMPING_* (default linear)
+        real(wp), parameter :: ones(chunk) = 1.0_wp
+        real(wp) :: kb(chunk), db(chunk)
+        integer :: i0, nc
+        do i0 = 0, n - 1, chunk
+            nc = min(chunk, n - i0)
+            call hertzdamp_fit_invert_n(nc, e(i0 + 1:i0 + nc), ones, ones, ones, iend, kb, db, alpha(i0 + 1:i0 + nc), &
+                                        tau_c(i0 + 1:i0 + nc), status(i0 + 1:i0 + nc), law)
+        end do
     end subroutine hertzdamp_fit_inverse_n
 
-    !> The inverse map e -> (alpha, tau_c).  e must be finite with e_min <= e <= 1
-    !> (e_min = 1e-3 overlap, 1e-4 force), else HD_BAD_RESTITUTION and zero outputs.
-    !> e = 1 gives alpha = +0 and tau_c(0).
-    pure elemental subroutine hertzdamp_fit_inverse(e, iend, alpha, tau_c, status)
-        real(wp), intent(in) :: e          !! restitution coefficient
-        integer, intent(in) :: iend        !! HD_END_OVERLAP or HD_END_FORCE
-        real(wp), intent(out) :: alpha     !! damping parameter with e(alpha) = e
-        real(wp), intent(out) :: tau_c     !! dimensionless contact duration tau_c(alpha)
-        integer, intent(out) :: status     !! HD_OK, HD_BAD_RESTITUTION or HD_BAD_END
-        real(wp) :: x0, scale, tau0, e_min, kin_e, kern_alpha, kern_tau, kout_alpha, kout_tau
-        integer :: np, first, map, kout_status
-        integer(int64) :: emin_bits, keep
-        call inverse_map(iend, map, e_min)
-        if (map == 0) then
-            alpha = 0.0_wp
-            tau_c = 0.0_wp
-            status = HD_BAD_END
-            return
-        end if
-        call map_grid(map, e_min, x0, scale, np, first, emin_bits, tau0)
-        kin_e = e
-        associate (c => fit_inv_c)
-            if (fit_inv_var(map) == var_cbrt_l) then
-                block
-                    logical, parameter :: cube = .true., masked = .true.
-                    include 'hertzdamp_fit_inverse.inc'
-                end block
-            else   ! var_l
-                block
-                    logical, parameter :: cube = .false., masked = .true.
-                    include 'hertzdamp_fit_inverse.inc'
-                end block
-            end if
-        end associate
-        include 'hertzdamp_fit_inverse_out.inc'
-        alpha = kout_alpha
-        tau_c = kout_tau
-        status = kout_status
+    !> The inverse map e -> (alpha, tau_c) of a contact end and damping law.  e must be
+    !> finite with e_min <= e <= 1 (e_min = 1e-3 linear overlap, 1e-4 otherwise), else
+    !> HD_BAD_RESTITUTION and zero outputs.  e = 1 gives alpha = +0 and tau_c(0).
+    pure elemental subroutine hertzdamp_fit_inverse(e, iend, alpha, tau_c, status, law)
+        real(wp), intent(in) :: e             !! restitution coefficient
+        integer, intent(in) :: iend           !! HD_END_OVERLAP or HD_END_FORCE
+        real(wp), intent(out) :: alpha        !! damping parameter with e(alpha) = e
+        real(wp), intent(out) :: tau_c        !! dimensionless contact duration tau_c(alpha)
+        integer, intent(out) :: status        !! HD_OK, HD_BAD_RESTITUTION, HD_BAD_END or HD_BAD_LAW
+        integer, intent(in), optional :: law  !! HD_DAMPING_* (default linear)
+        real(wp) :: k, d
+        call hertzdamp_fit_invert(e, 1.0_wp, 1.0_wp, 1.0_wp, iend, k, d, alpha, tau_c, status, law)
     end subroutine hertzdamp_fit_inverse
 
-    !> alpha(e) of the fit; 0 when e is outside [e_min, 1] or iend invalid
+    !> alpha(e) of the fit (linear law); 0 when e is outside [e_min, 1] or iend invalid
     !> (use hertzdamp_fit_inverse for the status).
     pure elemental real(wp) function hertzdamp_fit_alpha(e, iend) result(alpha)
         real(wp), intent(in) :: e      !! restitution coefficient
@@ -397,7 +377,7 @@ contains
         call hertzdamp_fit_inverse(e, iend, alpha, tau_c, status)
     end function hertzdamp_fit_alpha
 
-    !> tau_c(alpha(e)) of the fit; 0 when e is outside [e_min, 1] or iend invalid.
+    !> tau_c(alpha(e)) of the fit (linear law); 0 when e is outside [e_min, 1] or iend invalid.
     pure elemental real(wp) function hertzdamp_fit_tau_c_of_e(e, iend) result(tau_c)
         real(wp), intent(in) :: e      !! restitution coefficient
         integer, intent(in) :: iend    !! HD_END_OVERLAP or HD_END_FORCE
@@ -408,17 +388,17 @@ contains
 
     ! ================================================================ dimensional inverse
 
-    !> The fast path of the dimensional inverse (doc/theory.md section 6) for n contacts and
-    !> one contact end, vectorised: alpha(e) and tau_c from the fit, then with
-    !> r = tau_c / T_c = 1/t*
-    !>     k = m r^2 (r/u)^(1/2),   d = alpha m r.
+    !> The fast path of the dimensional inverse (doc/theory.md section 6,
+    !> doc/damping-laws.md section 8) for n contacts, one contact end and one damping
+    !> law, vectorised: alpha(e) and tau_c from the fit, then with r = tau_c / T_c = 1/t*
+    !>     k = m r^2 (r/u)^(1/2),   d = alpha m r (r/u)^q   (q = 0, 1/4, 1/2).
     !> It serves the contacts whose T_c, m and u lie in [1e-30, 1e30] (no power of them
-    !> can overflow there); for the others, and for an invalid e or iend, status is not
-    !> HD_OK (HD_OUT_OF_RANGE, HD_BAD_RESTITUTION or HD_BAD_END) and k = d = 0:
-    !> hertzdamp_invert, which uses this (or hertzdamp_fit_invert) for every fit
-    !> inverse, takes them through its general path (argument checks in their order,
+    !> can overflow there); for the others, and for an invalid e, iend or law, status is
+    !> not HD_OK (HD_OUT_OF_RANGE, HD_BAD_RESTITUTION, HD_BAD_END or HD_BAD_LAW) and
+    !> k = d = 0: hertzdamp_invert, which uses this (or hertzdamp_fit_invert) for every
+    !> fit inverse, takes them through its general path (argument checks in their order,
     !> logarithms for extreme inputs) and applies the physical bound.
-    pure subroutine hertzdamp_fit_invert_n(n, e, tc, m, u, iend, k, d, alpha, tau_c, status)
+    pure subroutine hertzdamp_fit_invert_n(n, e, tc, m, u, iend, k, d, alpha, tau_c, status, law)
         integer, intent(in) :: n              !! number of contacts
         real(wp), intent(in) :: e(n)          !! target restitution coefficients
         real(wp), intent(in) :: tc(n)         !! target contact times [s]
@@ -426,57 +406,41 @@ contains
         real(wp), intent(in) :: u(n)          !! impact velocities [m s^-1]
         integer, intent(in) :: iend           !! HD_END_OVERLAP or HD_END_FORCE
         real(wp), intent(out) :: k(n)         !! Hertz stiffnesses [N m^-3/2] (0 where status /= HD_OK)
-        real(wp), intent(out) :: d(n)         !! damping coefficients [kg s^-1] (0 where status /= HD_OK)
+        real(wp), intent(out) :: d(n)         !! damping coefficients [kg s^-1 m^-q] (0 where status /= HD_OK)
         real(wp), intent(out) :: alpha(n)     !! alpha(e) (0 where e is invalid)
         real(wp), intent(out) :: tau_c(n)     !! tau_c(alpha(e)) (0 where e is invalid)
         integer, intent(out) :: status(n)     !! HD_OK, or why the contact needs the general path
-        real(wp) :: x0, scale, tau0, e_min, kin_e, kin_tc, kin_m, kin_u
+        integer, intent(in), optional :: law  !! HD_DAMPING_* (default linear)
+        real(wp) :: tau0, e_min, kin_e, kin_tc, kin_m, kin_u
         real(wp) :: kout_k, kout_d, kout_alpha, kout_tau
-        integer :: np, first, i, i0, nc, map, kout_status
+        integer :: i, i0, nc, ikernel, kout_status, st
         integer(int64) :: emin_bits
-        logical :: cubic, valid
-        call inverse_map(iend, map, e_min)
-        if (map == 0) then
+        logical :: valid
+        call inverse_kernel(iend, optional_law(law), ikernel, e_min, st)
+        if (st /= HD_OK) then
             k = 0.0_wp
             d = 0.0_wp
             alpha = 0.0_wp
             tau_c = 0.0_wp
-            status = HD_BAD_END
+            status = st
             return
         end if
-        call map_grid(map, e_min, x0, scale, np, first, emin_bits, tau0)
-        cubic = fit_inv_var(map) == var_cbrt_l
-        associate (c => fit_inv_c)
-            ! by chunks: where every contact of a chunk is valid (the usual case) the loop
-            ! without masks, which gives the same bits and is faster
-            do i0 = 0, n - 1, chunk
-                nc = min(chunk, n - i0)
-                valid = all_valid(nc, e(i0 + 1:i0 + nc), tc(i0 + 1:i0 + nc), m(i0 + 1:i0 + nc), u(i0 + 1:i0 + nc), &
-                                  emin_bits)
-                if (cubic .and. valid) then
-                    block
-                        logical, parameter :: cube = .true., masked = .false.
-                        include 'hertzdamp_fit_invert_loop.inc'
-                    end block
-                else if (cubic) then
-                    block
-                        logical, parameter :: cube = .true., masked = .true.
-                        include 'hertzdamp_fit_invert_loop.inc'
-                    end block
-                else if (valid) then
-                    block
-                        logical, parameter :: cube = .false., masked = .false.
-                        include 'hertzdamp_fit_invert_loop.inc'
-                    end block
-                else
-                    block
-                        logical, parameter :: cube = .false., masked = .true.
-                        include 'hertzdamp_fit_invert_loop.inc'
-                    end block
-                end if
-            end do
-        end associate
+        emin_bits = transfer(e_min, 0_int64)
+        tau0 = hertzdamp_tau_c0()
+        do i0 = 0, n - 1, chunk
+            nc = min(chunk, n - i0)
+            valid = all_valid(nc, e(i0 + 1:i0 + nc), tc(i0 + 1:i0 + nc), m(i0 + 1:i0 + nc), u(i0 + 1:i0 + nc), &
+                              emin_bits)
+            include 'hertzdamp_fit_invert_dispatch.inc'
+        end do
     end subroutine hertzdamp_fit_invert_n
+
+    !> The law of an optional argument (default linear).
+    pure integer function optional_law(law)
+        integer, intent(in), optional :: law
+        optional_law = HD_DAMPING_LINEAR
+        if (present(law)) optional_law = law
+    end function optional_law
 
     !> True when every contact has a valid e (e_min <= e <= 1) and T_c, m, u in the
     !> direct range: the predicate of the masks of hertzdamp_fit_inverse.inc and
@@ -497,70 +461,52 @@ contains
     end function all_valid
 
     !> hertzdamp_fit_invert_n for one contact (the same bits).
-    pure elemental subroutine hertzdamp_fit_invert(e, tc, m, u, iend, k, d, alpha, tau_c, status)
+    pure elemental subroutine hertzdamp_fit_invert(e, tc, m, u, iend, k, d, alpha, tau_c, status, law)
         real(wp), intent(in) :: e             !! target restitution coefficient
         real(wp), intent(in) :: tc            !! target contact time [s]
         real(wp), intent(in) :: m             !! effective mass [kg]
         real(wp), intent(in) :: u             !! impact velocity [m s^-1]
         integer, intent(in) :: iend           !! HD_END_OVERLAP or HD_END_FORCE
         real(wp), intent(out) :: k            !! Hertz stiffness [N m^-3/2] (0 where status /= HD_OK)
-        real(wp), intent(out) :: d            !! damping coefficient [kg s^-1] (0 where status /= HD_OK)
+        real(wp), intent(out) :: d            !! damping coefficient [kg s^-1 m^-q] (0 where status /= HD_OK)
         real(wp), intent(out) :: alpha        !! alpha(e) (0 where e is invalid)
         real(wp), intent(out) :: tau_c        !! tau_c(alpha(e)) (0 where e is invalid)
         integer, intent(out) :: status        !! HD_OK, or why the contact needs the general path
-        real(wp) :: x0, scale, tau0, e_min, kin_e, kin_tc, kin_m, kin_u
-        real(wp) :: kout_k, kout_d, kout_alpha, kout_tau, e1(1), tc1(1), m1(1), u1(1)
-        integer :: np, first, map, kout_status
+        integer, intent(in), optional :: law  !! HD_DAMPING_* (default linear)
+        real(wp) :: tau0, e_min, kin_e, kin_tc, kin_m, kin_u
+        real(wp) :: kout_k, kout_d, kout_alpha, kout_tau
+        real(wp) :: e1(1), tc1(1), m1(1), u1(1), k1(1), d1(1), a1(1), t1(1)
+        integer :: i, ikernel, kout_status, st, s1(1)
         integer(int64) :: emin_bits
-        logical :: cubic, valid
-        call inverse_map(iend, map, e_min)
-        if (map == 0) then
+        logical :: valid
+        call inverse_kernel(iend, optional_law(law), ikernel, e_min, st)
+        if (st /= HD_OK) then
             k = 0.0_wp
             d = 0.0_wp
             alpha = 0.0_wp
             tau_c = 0.0_wp
-            status = HD_BAD_END
+            status = st
             return
         end if
-        call map_grid(map, e_min, x0, scale, np, first, emin_bits, tau0)
-        cubic = fit_inv_var(map) == var_cbrt_l
-        kin_e = e
-        kin_tc = tc
-        kin_m = m
-        kin_u = u
+        emin_bits = transfer(e_min, 0_int64)
+        tau0 = hertzdamp_tau_c0()
         e1(1) = e
         tc1(1) = tc
         m1(1) = m
         u1(1) = u
         valid = all_valid(1, e1, tc1, m1, u1, emin_bits)
-        associate (c => fit_inv_c)
-            if (cubic .and. valid) then
-                block
-                    logical, parameter :: cube = .true., masked = .false.
-                    include 'hertzdamp_fit_invert_element.inc'
-                end block
-            else if (cubic) then
-                block
-                    logical, parameter :: cube = .true., masked = .true.
-                    include 'hertzdamp_fit_invert_element.inc'
-                end block
-            else if (valid) then
-                block
-                    logical, parameter :: cube = .false., masked = .false.
-                    include 'hertzdamp_fit_invert_element.inc'
-                end block
-            else
-                block
-                    logical, parameter :: cube = .false., masked = .true.
-                    include 'hertzdamp_fit_invert_element.inc'
-                end block
-            end if
-        end associate
-        k = kout_k
-        d = kout_d
-        alpha = kout_alpha
-        tau_c = kout_tau
-        status = kout_status
+        ! the loop of hertzdamp_fit_invert_n over one contact (constant bounds: scalar code)
+        block
+            integer, parameter :: i0 = 0, nc = 1
+            associate (e => e1, tc => tc1, m => m1, u => u1, k => k1, d => d1, alpha => a1, tau_c => t1, status => s1)
+                include 'hertzdamp_fit_invert_dispatch.inc'
+            end associate
+        end block
+        k = k1(1)
+        d = d1(1)
+        alpha = a1(1)
+        tau_c = t1(1)
+        status = s1(1)
     end subroutine hertzdamp_fit_invert
 
     ! ================================================================ forward

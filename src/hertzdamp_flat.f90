@@ -8,7 +8,7 @@
 !> Everything here needs only the Fortran runtime (no GSL, no LAPACK).
 module hertzdamp_flat
     use hertzdamp_kinds, only: hertzdamp_rk
-    use hertzdamp_status, only: HD_OK, HD_NO_REBOUND, HD_BAD_KPHYS
+    use hertzdamp_status, only: HD_OK, HD_NO_REBOUND
     use hertzdamp_methods, only: hertzdamp_forward_dim, HD_METHOD_FIT
     use hertzdamp_inverse, only: mod_invert => hertzdamp_invert, hertzdamp_invert_alpha
     use hertzdamp_fit, only: hertzdamp_fit_invert
@@ -22,7 +22,7 @@ module hertzdamp_flat
     integer, parameter, public :: legacy_method = HD_METHOD_FIT
 
     public :: flat_invert, flat_invert_n, flat_invert_bounded, flat_pair, flat_forward
-    public :: flat_invert_law, flat_pair_law, flat_forward_law
+    public :: flat_invert_law, flat_invert_law_n, flat_pair_law, flat_forward_law
 
 contains
 
@@ -126,18 +126,37 @@ contains
         real(wp), intent(out) :: k       !! Hertz stiffness [N m^-3/2]
         real(wp), intent(out) :: d       !! damping coefficient [kg s^-1 m^-q]
         integer, intent(out) :: status   !! HD_OK or an error code
-        if (.not. (k_phys >= 0.0_wp .and. k_phys <= huge(k_phys))) then
-            status = HD_BAD_KPHYS
-        else if (k_phys > 0.0_wp) then
-            call mod_invert(e, tc, m, u, iend, k, d, status, k_phys=k_phys, method=legacy_method, law=law)
+        real(wp) :: a, tau
+        if (k_phys == 0.0_wp) then
+            ! as flat_invert: the fit's kernel of the law, then the general path
+            call hertzdamp_fit_invert(e, tc, m, u, iend, k, d, a, tau, status, law)
+            if (status /= HD_OK) call mod_invert(e, tc, m, u, iend, k, d, status, method=legacy_method, law=law)
         else
-            call mod_invert(e, tc, m, u, iend, k, d, status, method=legacy_method, law=law)
+            ! the bound; an invalid k_phys gets HD_BAD_KPHYS in the module's order of the checks
+            call mod_invert(e, tc, m, u, iend, k, d, status, k_phys=k_phys, method=legacy_method, law=law)
         end if
         if (status /= HD_OK) then
             k = 0.0_wp
             d = 0.0_wp
         end if
     end subroutine flat_invert_law
+
+    !> flat_invert_law for n contacts without the physical bound: the rank-1 form of
+    !> hertzdamp_invert with `law` (the fit runs vectorised over the arrays); the results
+    !> of n calls of flat_invert_law with k_phys = 0, bit for bit.
+    pure subroutine flat_invert_law_n(n, e, tc, m, u, law, iend, k, d, status)
+        integer, intent(in) :: n          !! number of contacts (>= 0)
+        real(wp), intent(in) :: e(n)      !! target restitution coefficients
+        real(wp), intent(in) :: tc(n)     !! target contact times [s]
+        real(wp), intent(in) :: m(n)      !! effective masses [kg]
+        real(wp), intent(in) :: u(n)      !! impact velocities [m s^-1]
+        integer, intent(in) :: law        !! 0 linear, 1 tsuji, 2 kuwabara-kono
+        integer, intent(in) :: iend       !! 0 overlap, 1 force
+        real(wp), intent(out) :: k(n)     !! Hertz stiffnesses [N m^-3/2] (0 on failure)
+        real(wp), intent(out) :: d(n)     !! damping coefficients [kg s^-1 m^-q] (0 on failure)
+        integer, intent(out) :: status(n) !! HD_OK or an error code, per contact
+        call mod_invert(e, tc, m, u, iend, k, d, status, method=legacy_method, law=law)
+    end subroutine flat_invert_law_n
 
     !> flat_pair for the damping law `law`.  Per contact (mass m, speed u, contact time
     !> T_c): t* = T_c / tau_c, k = m t*^(-5/2) u^(-1/2), d = alpha m t*^(-1) (u t*)^(-q).

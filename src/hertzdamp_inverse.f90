@@ -19,11 +19,11 @@
 !> secant iteration over reference-integrator solves (the baseline; slow).
 !>
 !> `hertzdamp_invert` is generic: scalars (or arrays of any rank, elementally) and
-!> rank-1 arrays.  Both run the fit through hertzdamp_fit_invert_n, the vectorised
-!> kernel that also serves the C and legacy entry points, so every way of calling gives
-!> the same bits; the rank-1 form runs it over whole arrays (SIMD) and takes only the
-!> contacts that need more (extreme inputs, the physical bound, errors, other methods,
-!> the other damping laws) through the scalar path.  A fitted map of another law gets
+!> rank-1 arrays.  Both run the fit of every damping law through hertzdamp_fit_invert_n,
+!> the vectorised kernels that also serve the C and legacy entry points, so every way
+!> of calling gives the same bits; the rank-1 form runs them over whole arrays (SIMD)
+!> and takes only the contacts that need more (extreme inputs, the physical bound,
+!> errors, other methods) through the scalar path.  A fitted map of another law gets
 !> the same fast path by a kernel of its own in hertzdamp_fit (see there and
 !> tools/fit_csv_to_f90.py) and its q in the direct formulas of
 !> hertzdamp_fit_invert_out.inc.
@@ -47,7 +47,7 @@ module hertzdamp_inverse
                                  hertzdamp_default_accuracy
     use hertzdamp_fit, only: hertzdamp_fit_inverse, hertzdamp_fit_invert, hertzdamp_fit_invert_n
     use hertzdamp_fit_laws, only: hertzdamp_fit_law_inverse, hertzdamp_fit_law_e_min
-    use hertzdamp_laws, only: HD_DAMPING_LINEAR, hertzdamp_law_q, hertzdamp_law_status, hertzdamp_law_alpha_c, &
+    use hertzdamp_laws, only: HD_DAMPING_LINEAR, HD_DAMPING_TSUJI, hertzdamp_law_q, hertzdamp_law_status, hertzdamp_law_alpha_c, &
                               hertzdamp_law_has_alpha_c
     use hertzdamp_compact, only: hertzdamp_compact_inverse, hertzdamp_compact_e_min_overlap, &
                                  hertzdamp_compact_e_min_force
@@ -121,12 +121,12 @@ contains
         ts = 0.0_wp
         bound = .false.
         status = -1
-        if (meth == HD_METHOD_FIT .and. law_ == HD_DAMPING_LINEAR) then
+        if (meth == HD_METHOD_FIT) then
             ! the kernel of every fit entry point (bit-identical to the rank-1 form)
-            call hertzdamp_fit_invert(e, tc, m, u, iend, k, d, a, tau, status)
+            call hertzdamp_fit_invert(e, tc, m, u, iend, k, d, a, tau, status, law_)
             if (status == HD_OK) then
                 if (present(tstar)) ts = tc / tau
-                if (present(k_phys)) call apply_bound(a, m, u, kp, k, d, ts, bound, status)
+                if (present(k_phys)) call apply_bound(a, m, u, kp, law_, present(tstar), k, d, ts, bound, status)
             end if
         end if
         if (status /= HD_OK) then
@@ -170,10 +170,10 @@ contains
         if (present(law)) law_ = law
         do i0 = 0, size(e) - 1, chunk
             nc = min(chunk, size(e) - i0)
-            if (meth == HD_METHOD_FIT .and. law_ == HD_DAMPING_LINEAR) then
+            if (meth == HD_METHOD_FIT) then
                 call hertzdamp_fit_invert_n(nc, e(i0 + 1:i0 + nc), tc(i0 + 1:i0 + nc), m(i0 + 1:i0 + nc), &
                                             u(i0 + 1:i0 + nc), iend, k(i0 + 1:i0 + nc), d(i0 + 1:i0 + nc), ab, tb, &
-                                            status(i0 + 1:i0 + nc))
+                                            status(i0 + 1:i0 + nc), law_)
             else
                 status(i0 + 1:i0 + nc) = -1
             end if
@@ -189,7 +189,8 @@ contains
                 do j = 1, nc
                     i = i0 + j
                     if (status(i) == HD_OK .and. present(k_phys)) then
-                        call apply_bound(ab(j), m(i), u(i), k_phys(i), k(i), d(i), sb_ts(j), bb(j), status(i))
+                        call apply_bound(ab(j), m(i), u(i), k_phys(i), law_, present(tstar), k(i), d(i), sb_ts(j), &
+                                         bb(j), status(i))
                     end if
                     if (status(i) /= HD_OK) then
                         kp = 0.0_wp
@@ -208,9 +209,12 @@ contains
 
     !> The physical bound on a contact of the fast path (k from the direct formulas): a
     !> valid k_phys <= k replaces k, with t* = (m/k_phys)^(2/5) u^(-1/5) and
-    !> d = alpha m / t*; an invalid k_phys gives HD_BAD_KPHYS and zero outputs.
-    pure elemental subroutine apply_bound(a, m, u, k_phys, k, d, ts, bound, status)
+    !> d = alpha m t*^(-1) (u t*)^(-q) (tsuji: alpha sqrt(m k_phys), which needs no t*:
+    !> t* only when want_ts); an invalid k_phys gives HD_BAD_KPHYS and zero outputs.
+    pure elemental subroutine apply_bound(a, m, u, k_phys, law, want_ts, k, d, ts, bound, status)
         real(wp), intent(in) :: a, m, u, k_phys
+        integer, intent(in) :: law
+        logical, intent(in) :: want_ts
         real(wp), intent(inout) :: k, d, ts
         logical, intent(out) :: bound
         integer, intent(inout) :: status
@@ -223,10 +227,18 @@ contains
             ts = 0.0_wp
         else if (k_phys <= k) then
             bound = .true.
+            k = k_phys
+            if (law == HD_DAMPING_TSUJI) then
+                d = a * (sqrt(m) * sqrt(k_phys))
+                if (.not. want_ts) return
+            end if
             lts = 0.4_wp * (log(m) - log(k_phys)) - 0.2_wp * log(u)
             call hertzdamp_safe_exp(lts, ts, status)
-            k = k_phys
-            d = a * m / ts
+            if (law == HD_DAMPING_LINEAR) then
+                d = a * m / ts
+            else if (law /= HD_DAMPING_TSUJI) then
+                d = a * m / ts / law_power(u * ts, law)
+            end if
         end if
     end subroutine apply_bound
 
@@ -272,10 +284,8 @@ contains
             ts = tc / tau
             if (min(m, u, tc) >= safe_lo .and. max(m, u, tc) <= safe_hi) then
                 ! direct path: the formulas of the fast path (every intermediate a normal double)
-                call direct_scale(tc, m, u, a, tau, k, d)
-                if (has_kphys) call apply_bound(a, m, u, k_phys, k, d, ts, bound, status)
-                ! d = alpha m t*^-1 (u t*)^-q
-                if (q > 0.0_wp) d = a * m / ts / law_power(u * ts, law)
+                call direct_scale(tc, m, u, a, tau, law, k, d)
+                if (has_kphys) call apply_bound(a, m, u, k_phys, law, .true., k, d, ts, bound, status)
             else
                 ! logarithmic path (extreme inputs)
                 lts = log(tc) - log(tau)
@@ -307,15 +317,23 @@ contains
 
     !> k and d from alpha and tau_c by the direct formulas, those of the fit's kernel
     !> (hertzdamp_fit_invert_out.inc, the same operations): r = tau_c / T_c = 1/t*,
-    !> k = m r^2 (r/u)^(1/2), d = alpha m r.  For T_c, m, u in [1e-30, 1e30] every
-    !> intermediate is a normal double.
-    pure elemental subroutine direct_scale(tc, m, u, a, tau, k, d)
+    !> s = (r/u)^(1/2), k = m r^2 s, d = alpha m r (r/u)^q.  For T_c, m, u in
+    !> [1e-30, 1e30] every intermediate is a normal double.
+    pure elemental subroutine direct_scale(tc, m, u, a, tau, law, k, d)
         real(wp), intent(in) :: tc, m, u, a, tau
+        integer, intent(in) :: law
         real(wp), intent(out) :: k, d
-        real(wp) :: r
+        real(wp) :: r, s
         r = tau * (1.0_wp / tc)
-        k = m * (r * r) * sqrt(tau * (1.0_wp / (tc * u)))
-        d = a * m * r
+        s = sqrt(tau * (1.0_wp / (tc * u)))
+        k = m * (r * r) * s
+        if (law == HD_DAMPING_LINEAR) then
+            d = a * m * r
+        else if (law == HD_DAMPING_TSUJI) then
+            d = a * m * r * sqrt(s)
+        else
+            d = a * m * r * s
+        end if
     end subroutine direct_scale
 
     !> (u t*)^q of the law, by square roots (q = 1/4 or 1/2).

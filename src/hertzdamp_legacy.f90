@@ -30,12 +30,12 @@
 module hertzdamp_legacy
     use, intrinsic :: iso_c_binding, only: c_double, c_int
     use hertzdamp_flat, only: flat_invert, flat_invert_bounded, flat_pair, flat_forward, flat_invert_n, flat_invert_law, &
-                              flat_pair_law, flat_forward_law
+                              flat_invert_law_n, flat_pair_law, flat_forward_law
     implicit none
     private
 
     public :: legacy_invert, legacy_invert_bounded, legacy_pair, legacy_forward, legacy_invert_n
-    public :: legacy_invert_law, legacy_pair_law, legacy_forward_law
+    public :: legacy_invert_law, legacy_invert_law_n, legacy_pair_law, legacy_forward_law
 
 contains
 
@@ -136,6 +136,24 @@ contains
         integer(c_int), intent(out) :: ierr !! 0 on success, else a status code
         call flat_invert_law(e, tc, m, u, kphys, ilaw, iend, k, d, ierr)
     end subroutine legacy_invert_law
+
+    !> HERTZDAMP_INVERT_LAW_N(N, E, TC, M, U, ILAW, IEND, K, D, IERR): HERTZDAMP_INVERT_LAW
+    !> without the bound (KPHYS = 0) for n contacts at once (one damping law and contact
+    !> end for all), vectorised; the same results, bit for bit.  n <= 0 does nothing.
+    subroutine legacy_invert_law_n(n, e, tc, m, u, ilaw, iend, k, d, ierr) bind(c, name='hertzdamp_invert_law_n_')
+        integer(c_int), intent(in) :: n           !! number of contacts
+        real(c_double), intent(in) :: e(n)        !! target restitution coefficients (n)
+        real(c_double), intent(in) :: tc(n)       !! target contact times [s] (n)
+        real(c_double), intent(in) :: m(n)        !! effective masses [kg] (n)
+        real(c_double), intent(in) :: u(n)        !! impact velocities [m/s] (n)
+        integer(c_int), intent(in) :: ilaw        !! damping law: 0 linear, 1 tsuji, 2 kuwabara-kono
+        integer(c_int), intent(in) :: iend        !! contact end: 0 overlap, 1 force
+        real(c_double), intent(out) :: k(n)       !! Hertz stiffnesses [N m^-3/2] (n)
+        real(c_double), intent(out) :: d(n)       !! damping coefficients [kg s^-1 m^-q] (n)
+        integer(c_int), intent(out) :: ierr(n)    !! status of each contact (n)
+        if (n <= 0) return
+        call flat_invert_law_n(n, e, tc, m, u, ilaw, iend, k, d, ierr)
+    end subroutine legacy_invert_law_n
 
     !> HERTZDAMP_PAIR_LAW(E, ILAW, IEND, ALPHA, TAUC, IERR): the material-pair constants of
     !> the damping law ilaw; per contact

@@ -207,9 +207,10 @@ contains
             return
         end if
         e = r%e
-        tc = tstar * r%tau_c
+        tc = tstar * r%tau_c                     ! +inf without rebound (the documented answer)
         zeta_max = u * tstar * r%z_max
-        if (status == HD_OK .and. .not. (ieee_is_finite(tc) .and. ieee_is_finite(zeta_max))) then
+        ! every result but the no-rebound contact time must be a finite double
+        if (.not. (ieee_is_finite(zeta_max) .and. (ieee_is_finite(tc) .or. status == HD_NO_REBOUND))) then
             status = HD_OUT_OF_RANGE
             e = 0.0_wp
             tc = 0.0_wp

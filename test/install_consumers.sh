@@ -69,7 +69,8 @@ check "shared library has soname libhertzdamp.so.0" \
 for sym in hertzdamp_c_invert hertzdamp_c_invert_bounded hertzdamp_c_invert_n hertzdamp_c_pair hertzdamp_c_forward \
            hertzdamp_c_strerror hertzdamp_invert_ hertzdamp_invert_bounded_ hertzdamp_pair_ hertzdamp_forward_ \
            hertzdamp_invert_n_ hertzdamp_message_ hertzdamp_c_invert_law hertzdamp_c_pair_law hertzdamp_c_forward_law \
-           hertzdamp_invert_law_ hertzdamp_pair_law_ hertzdamp_forward_law_; do
+           hertzdamp_invert_law_ hertzdamp_pair_law_ hertzdamp_forward_law_ hertzdamp_c_invert_law_n \
+           hertzdamp_invert_law_n_; do
   check "shared library exports $sym" grep -qx "$sym" <<<"$defined_so"
 done
 # the C names never equal a legacy name without gfortran's underscore (-fno-underscoring)
@@ -177,7 +178,8 @@ int main(void) {
         for (int end = HERTZDAMP_END_OVERLAP; end <= HERTZDAMP_END_FORCE; end++)
             for (int i = 1; i < 4; i++) {
                 const double q = 0.25 * law;
-                double alpha, tau, k, d, k0, d0, e, tcb;
+                double alpha, tau, k, d, k0, d0, e, tcb, kn[1], dn[1];
+                int st[1];
                 if (hertzdamp_c_invert_law(es[i], tc, m, us[i], 0.0, law, end, &k, &d) != HERTZDAMP_OK ||
                     hertzdamp_c_pair_law(es[i], law, end, &alpha, &tau) != HERTZDAMP_OK) bad |= 256;
                 double ts = tc / tau, kf = m * pow(ts, -2.5) / sqrt(us[i]), df = alpha * m / ts / pow(us[i] * ts, q);
@@ -187,6 +189,8 @@ int main(void) {
                     bad |= 1024;
                 if (hertzdamp_c_forward_law(k, d, m, us[i], law, end, &e, &tcb) != HERTZDAMP_OK ||
                     fabs(e / es[i] - 1) > 1e-12 || fabs(tcb / tc - 1) > 1e-12) bad |= 2048;
+                if (hertzdamp_c_invert_law_n(1, &es[i], &tc, &m, &us[i], law, end, kn, dn, st) != HERTZDAMP_OK ||
+                    st[0] != 0 || kn[0] != k || dn[0] != d) bad |= 8192;
             }
     if (hertzdamp_c_invert_law(0.5, tc, m, 1.0, 0.0, 3, 0, &a, &t) != HERTZDAMP_BAD_LAW) bad |= 4096;
     printf("%d\n", bad);

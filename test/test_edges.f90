@@ -256,6 +256,12 @@ contains
         call hertzdamp_forward_dim(1.0e10_wp, 1.0e6_wp, 1.0e-3_wp, 1.0_wp, HD_END_FORCE, HD_METHOD_FIT, a, ts, e, tc, zm, st)
         call s%check(st /= HD_OK .and. a == 0.0_wp .and. ts == 0.0_wp .and. e == 0.0_wp, &
                      'forward_dim: every output 0 on failure')
+        ! no rebound whose deepest overlap u t* z_max overflows (adversarial review):
+        ! out of range, every output finite, not a no-rebound row with zeta_max = +Inf
+        call hertzdamp_forward_dim(1.0e-320_wp, 1.0_wp, 1.0e-3_wp, 1.0e300_wp, HD_END_OVERLAP, HD_METHOD_FIT, a, ts, &
+                                   e, tc, zm, st)
+        call s%check(st == HD_OUT_OF_RANGE .and. ieee_is_finite(zm) .and. ieee_is_finite(tc), &
+                     'forward_dim: an overflowing zeta_max is out of range, never Inf')
     end subroutine review_fixes
 
 end program test_edges

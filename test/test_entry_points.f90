@@ -1,18 +1,23 @@
-!> Every way of calling the fit inverse gives the same bits (issue 11): the module's
-!> scalar call, its elemental call on a rank-2 array, its rank-1 (vectorised) call, the
-!> flat layer, the C functions (hertzdamp_c_invert, hertzdamp_c_invert_n,
-!> hertzdamp_c_invert_bounded) through their bind(C) names, and the legacy externals
-!> (HERTZDAMP_INVERT, HERTZDAMP_INVERT_N, HERTZDAMP_INVERT_BOUNDED), on a grid that takes
-!> each argument through its edge cases (e = 1, e_min and one ulp beyond, 0, -0, NaN,
-!> Inf; T_c, m, u at the ends of the direct range [1e-30, 1e30] and beyond, 0,
-!> negative, NaN, Inf; k_phys soft, stiff, invalid; bad contact ends).  Also the
-!> dimensionless kernels (scalar against n at once) and the forward map.
+!> Every way of calling the fit inverse gives the same bits (issue 11), for every damping
+!> law (issue 15): the module's scalar call, its elemental call on a rank-2 array, its
+!> rank-1 (vectorised) call, the flat layer, the C functions (hertzdamp_c_invert,
+!> hertzdamp_c_invert_n, hertzdamp_c_invert_bounded; hertzdamp_c_invert_law,
+!> hertzdamp_c_invert_law_n) through their bind(C) names, and the legacy externals
+!> (HERTZDAMP_INVERT, HERTZDAMP_INVERT_N, HERTZDAMP_INVERT_BOUNDED; HERTZDAMP_INVERT_LAW,
+!> HERTZDAMP_INVERT_LAW_N), on a grid that takes each argument through its edge cases
+!> (e = 1, e_min and one ulp beyond, 0, -0, NaN, Inf; T_c, m, u at the ends of the direct
+!> range [1e-30, 1e30] and beyond, 0, negative, NaN, Inf; k_phys soft, stiff, invalid;
+!> bad contact ends and laws).  The linear law through the law entry points gives the
+!> bits of the linear ones.  Also the dimensionless kernels (scalar against n at once,
+!> every law) and the forward map.
 program test_entry_points
     use hertzdamp, only: hertzdamp_rk, hertzdamp_invert, hertzdamp_fit_inverse, hertzdamp_fit_inverse_n, &
                          hertzdamp_fit_invert, hertzdamp_fit_invert_n, hertzdamp_fit_forward, hertzdamp_fit_forward_n, &
-                         hertzdamp_fit_alpha_c, HD_OK, HD_END_OVERLAP, HD_END_FORCE, HD_METHOD_FIT
-    use hertzdamp_flat, only: flat_invert, flat_invert_n, flat_invert_bounded
-    use hertzdamp_capi, only: hertzdamp_c_invert, hertzdamp_c_invert_n, hertzdamp_c_invert_bounded
+                         hertzdamp_fit_alpha_c, HD_OK, HD_END_OVERLAP, HD_END_FORCE, HD_METHOD_FIT, HD_BAD_LAW, &
+                         HD_DAMPING_LINEAR, HD_DAMPING_KUWABARA_KONO, hertzdamp_law_name
+    use hertzdamp_flat, only: flat_invert, flat_invert_n, flat_invert_bounded, flat_invert_law, flat_invert_law_n
+    use hertzdamp_capi, only: hertzdamp_c_invert, hertzdamp_c_invert_n, hertzdamp_c_invert_bounded, &
+                              hertzdamp_c_invert_law, hertzdamp_c_invert_law_n
     use hertzdamp_testing, only: test_suite, new_suite
     use, intrinsic :: iso_c_binding, only: c_int, c_double
     use, intrinsic :: iso_fortran_env, only: int64
@@ -46,13 +51,32 @@ program test_entry_points
             real(c_double), intent(out) :: k, d
             integer(c_int), intent(out) :: ierr
         end subroutine hertzdamp_invert_bounded_legacy
+        subroutine hertzdamp_invert_law_legacy(e, tc, m, u, kphys, ilaw, iend, k, d, ierr) &
+                bind(c, name='hertzdamp_invert_law_')
+            import :: c_double, c_int
+            implicit none
+            real(c_double), intent(in) :: e, tc, m, u, kphys
+            integer(c_int), intent(in) :: ilaw, iend
+            real(c_double), intent(out) :: k, d
+            integer(c_int), intent(out) :: ierr
+        end subroutine hertzdamp_invert_law_legacy
+        subroutine hertzdamp_invert_law_n_legacy(n, e, tc, m, u, ilaw, iend, k, d, ierr) &
+                bind(c, name='hertzdamp_invert_law_n_')
+            import :: c_double, c_int
+            implicit none
+            integer(c_int), intent(in) :: n
+            real(c_double), intent(in) :: e(n), tc(n), m(n), u(n)
+            integer(c_int), intent(in) :: ilaw, iend
+            real(c_double), intent(out) :: k(n), d(n)
+            integer(c_int), intent(out) :: ierr(n)
+        end subroutine hertzdamp_invert_law_n_legacy
     end interface
 
     integer, parameter :: wp = hertzdamp_rk
     type(test_suite) :: s
     real(wp), allocatable :: es(:), xs(:), e(:), tc(:), m(:), u(:), kp(:)
     real(wp) :: nan, inf
-    integer :: iend
+    integer :: iend, law
 
     s = new_suite('test_entry_points')
     nan = ieee_value(1.0_wp, ieee_quiet_nan)
@@ -69,6 +93,10 @@ program test_entry_points
     do iend = -1, 2
         call compare_inverse(iend)
         call compare_bounded(iend)
+        do law = -1, HD_DAMPING_KUWABARA_KONO + 1
+            call compare_law(iend, law)
+            call compare_law_bounded(iend, law)
+        end do
     end do
     call compare_kernels()
     call s%finish()
@@ -252,11 +280,156 @@ contains
                                                  'bounded: the bound is active on part of the grid, not all')
     end subroutine compare_bounded
 
+    !> 'law L, end E' for the labels (laws outside the range by their code).
+    function law_tag(iend, law) result(tag)
+        integer, intent(in) :: iend, law
+        character(len=:), allocatable :: tag
+        character(len=8) :: c
+        if (law >= HD_DAMPING_LINEAR .and. law <= HD_DAMPING_KUWABARA_KONO) then
+            tag = 'law ' // hertzdamp_law_name(law)
+        else
+            write (c, '(i0)') law
+            tag = 'law code ' // trim(c)
+        end if
+        write (c, '(i0)') iend
+        tag = tag // ', end ' // trim(c)
+    end function law_tag
+
+    !> The inverse of a damping law (no bound) through every entry point against the
+    !> module's scalar call with `law`; for the linear law also against the linear calls.
+    subroutine compare_law(iend, law)
+        integer, intent(in) :: iend, law
+        real(wp), dimension(size(e)) :: k0, d0, a0, t0, s0, k, d, a, t, ts
+        real(wp), allocatable :: e2(:, :), tc2(:, :), m2(:, :), u2(:, :), k2(:, :), d2(:, :)
+        integer, dimension(size(e)) :: st0, st
+        integer(c_int), dimension(size(e)) :: stc
+        integer(c_int) :: sc
+        integer, allocatable :: st2(:, :)
+        integer :: i, n, nbad(9)
+        character(len=:), allocatable :: tag
+        tag = law_tag(iend, law)
+        n = size(e)
+        do i = 1, n
+            call hertzdamp_invert(e(i), tc(i), m(i), u(i), iend, k0(i), d0(i), st0(i), alpha=a0(i), tau_c=t0(i), &
+                                  tstar=s0(i), law=law)
+        end do
+        nbad = 0
+        call hertzdamp_invert(e, tc, m, u, iend, k, d, st, alpha=a, tau_c=t, tstar=ts, law=law)
+        nbad(1) = count(bits(k) /= bits(k0) .or. bits(d) /= bits(d0) .or. st /= st0 .or. bits(a) /= bits(a0) &
+                        .or. bits(t) /= bits(t0) .or. bits(ts) /= bits(s0))
+        e2 = reshape(e(1:2 * (n / 2)), [2, n / 2])
+        tc2 = reshape(tc(1:2 * (n / 2)), [2, n / 2])
+        m2 = reshape(m(1:2 * (n / 2)), [2, n / 2])
+        u2 = reshape(u(1:2 * (n / 2)), [2, n / 2])
+        allocate (k2(2, n / 2), d2(2, n / 2), st2(2, n / 2))
+        call hertzdamp_invert(e2, tc2, m2, u2, iend, k2, d2, st2, law=law)
+        nbad(2) = count(bits(reshape(k2, [2 * (n / 2)])) /= bits(k0(1:2 * (n / 2))) .or. &
+                        bits(reshape(d2, [2 * (n / 2)])) /= bits(d0(1:2 * (n / 2))) .or. &
+                        reshape(st2, [2 * (n / 2)]) /= st0(1:2 * (n / 2)))
+        do i = 1, n
+            call flat_invert_law(e(i), tc(i), m(i), u(i), 0.0_wp, law, iend, k(i), d(i), st(i))
+        end do
+        nbad(3) = count(bits(k) /= bits(k0) .or. bits(d) /= bits(d0) .or. st /= st0)
+        call flat_invert_law_n(n, e, tc, m, u, law, iend, k, d, st)
+        nbad(4) = count(bits(k) /= bits(k0) .or. bits(d) /= bits(d0) .or. st /= st0)
+        do i = 1, n
+            stc(i) = hertzdamp_c_invert_law(e(i), tc(i), m(i), u(i), 0.0_wp, int(law, c_int), int(iend, c_int), &
+                                            k(i), d(i))
+        end do
+        nbad(5) = count(bits(k) /= bits(k0) .or. bits(d) /= bits(d0) .or. stc /= st0)
+        sc = hertzdamp_c_invert_law_n(int(n, c_int), e, tc, m, u, int(law, c_int), int(iend, c_int), k, d, stc)
+        nbad(6) = count(bits(k) /= bits(k0) .or. bits(d) /= bits(d0) .or. stc /= st0)
+        call s%check(sc == first_failure(st0), 'C invert_law_n returns the first non-zero status, ' // tag)
+        do i = 1, n
+            call hertzdamp_invert_law_legacy(e(i), tc(i), m(i), u(i), 0.0_wp, int(law, c_int), int(iend, c_int), &
+                                             k(i), d(i), stc(i))
+        end do
+        nbad(7) = count(bits(k) /= bits(k0) .or. bits(d) /= bits(d0) .or. stc /= st0)
+        call hertzdamp_invert_law_n_legacy(int(n, c_int), e, tc, m, u, int(law, c_int), int(iend, c_int), k, d, stc)
+        nbad(8) = count(bits(k) /= bits(k0) .or. bits(d) /= bits(d0) .or. stc /= st0)
+        if (law == HD_DAMPING_LINEAR) then
+            ! the linear calls: the same bits as the law calls with law = linear
+            call hertzdamp_invert(e, tc, m, u, iend, k, d, st, alpha=a, tau_c=t, tstar=ts)
+            nbad(9) = count(bits(k) /= bits(k0) .or. bits(d) /= bits(d0) .or. st /= st0 .or. bits(a) /= bits(a0) &
+                            .or. bits(t) /= bits(t0) .or. bits(ts) /= bits(s0))
+            call s%check(nbad(9) == 0, 'linear calls = law calls with the linear law, ' // tag)
+        end if
+        call s%check(nbad(1) == 0, 'rank-1 call (with alpha, tau_c, tstar) = scalar calls, ' // tag)
+        call s%check(nbad(2) == 0, 'elemental rank-2 call = scalar calls, ' // tag)
+        call s%check(nbad(3) == 0, 'flat_invert_law = module, ' // tag)
+        call s%check(nbad(4) == 0, 'flat_invert_law_n = module, ' // tag)
+        call s%check(nbad(5) == 0, 'hertzdamp_c_invert_law = module, ' // tag)
+        call s%check(nbad(6) == 0, 'hertzdamp_c_invert_law_n = module, ' // tag)
+        call s%check(nbad(7) == 0, 'HERTZDAMP_INVERT_LAW = module, ' // tag)
+        call s%check(nbad(8) == 0, 'HERTZDAMP_INVERT_LAW_N = module, ' // tag)
+        if (any(nbad /= 0)) print '(a, 9i6)', 'mismatches per entry point (' // tag // '): ', nbad
+        if (law < HD_DAMPING_LINEAR .or. law > HD_DAMPING_KUWABARA_KONO) then
+            ! (a bad T_c, m or u is reported before the law, as every argument check)
+            call s%check(all(st0 /= HD_OK) .and. count(st0 == HD_BAD_LAW) > n / 2 .and. all(bits(k0) == 0_int64) &
+                         .and. all(bits(d0) == 0_int64), 'invalid law: no success, HD_BAD_LAW, zeros, ' // tag)
+        else if (iend == HD_END_OVERLAP .or. iend == HD_END_FORCE) then
+            call s%check(count(st0 == HD_OK) > n / 2 .and. count(st0 /= HD_OK) > 100, &
+                         'grid covers successes and failures, ' // tag)
+        end if
+    end subroutine compare_law
+
+    !> The inverse of a damping law with the physical bound: the module's calls with
+    !> k_phys and `law` against the law entry points of the flat layer, C and legacy,
+    !> whose k_phys = 0 means no bound (there: against the unbounded module call).
+    subroutine compare_law_bounded(iend, law)
+        integer, intent(in) :: iend, law
+        real(wp), dimension(size(e)) :: k0, d0, k, d, ku, du
+        integer, dimension(size(e)) :: st0, st, stu
+        integer(c_int), dimension(size(e)) :: stc
+        logical, dimension(size(e)) :: b0, b, none
+        integer :: i, n, nbad(4)
+        character(len=:), allocatable :: tag
+        tag = law_tag(iend, law)
+        n = size(e)
+        do i = 1, n
+            call hertzdamp_invert(e(i), tc(i), m(i), u(i), iend, k0(i), d0(i), st0(i), bound_active=b0(i), &
+                                  k_phys=kp(i), method=HD_METHOD_FIT, law=law)
+            call hertzdamp_invert(e(i), tc(i), m(i), u(i), iend, ku(i), du(i), stu(i), law=law)
+        end do
+        call hertzdamp_invert(e, tc, m, u, iend, k, d, st, bound_active=b, k_phys=kp, law=law)
+        nbad(1) = count(bits(k) /= bits(k0) .or. bits(d) /= bits(d0) .or. st /= st0 .or. (b .neqv. b0))
+        ! the law entry points: k_phys = 0 is no bound
+        none = kp == 0.0_wp
+        where (none)
+            k0 = ku
+            d0 = du
+            st0 = stu
+        end where
+        do i = 1, n
+            call flat_invert_law(e(i), tc(i), m(i), u(i), kp(i), law, iend, k(i), d(i), st(i))
+        end do
+        nbad(2) = count(bits(k) /= bits(k0) .or. bits(d) /= bits(d0) .or. st /= st0)
+        do i = 1, n
+            stc(i) = hertzdamp_c_invert_law(e(i), tc(i), m(i), u(i), kp(i), int(law, c_int), int(iend, c_int), &
+                                            k(i), d(i))
+        end do
+        nbad(3) = count(bits(k) /= bits(k0) .or. bits(d) /= bits(d0) .or. stc /= st0)
+        do i = 1, n
+            call hertzdamp_invert_law_legacy(e(i), tc(i), m(i), u(i), kp(i), int(law, c_int), int(iend, c_int), &
+                                             k(i), d(i), stc(i))
+        end do
+        nbad(4) = count(bits(k) /= bits(k0) .or. bits(d) /= bits(d0) .or. stc /= st0)
+        call s%check(nbad(1) == 0, 'bounded: rank-1 call = scalar calls, ' // tag)
+        call s%check(nbad(2) == 0, 'bounded: flat_invert_law = module, ' // tag)
+        call s%check(nbad(3) == 0, 'bounded: hertzdamp_c_invert_law = module, ' // tag)
+        call s%check(nbad(4) == 0, 'bounded: HERTZDAMP_INVERT_LAW = module, ' // tag)
+        if (any(nbad /= 0)) print '(a, 4i6)', 'bounded mismatches per entry point (' // tag // '): ', nbad
+        if (iend == HD_END_OVERLAP .and. law >= HD_DAMPING_LINEAR .and. law <= HD_DAMPING_KUWABARA_KONO) then
+            call s%check(count(b0) > 300 .and. count(.not. b0 .and. st0 == HD_OK) > 300, &
+                         'bounded: the bound is active on part of the grid, not all, ' // tag)
+        end if
+    end subroutine compare_law_bounded
+
     !> The dimensionless kernels and the forward map: one value per call against n at once.
     subroutine compare_kernels()
         real(wp), allocatable :: al(:), a(:), t(:), a1(:), t1(:), k(:), d(:), k1(:), d1(:), z(:), zm(:), z1(:), zm1(:)
         integer, allocatable :: st(:), st1(:)
-        integer :: i, iend, n
+        integer :: i, iend, n, law
         character(len=3) :: cend
         ! alpha: the regimes and their ends (0.6, alpha_c, 1.3, 52.5) and invalid values
         n = 19 + 4000
@@ -276,26 +449,29 @@ contains
             end do
             call s%check(all(bits(a) == bits(a1) .and. bits(t) == bits(t1) .and. st == st1 .and. bits(z) == bits(z1) &
                              .and. bits(zm) == bits(zm1)), 'forward: n at once = one at a time, end ' // cend)
-            call hertzdamp_fit_inverse_n(size(e), e, iend, a(1:size(e)), t(1:size(e)), st(1:size(e)))
-            do i = 1, size(e)
-                call hertzdamp_fit_inverse(e(i), iend, a1(i), t1(i), st1(i))
+            do law = -1, HD_DAMPING_KUWABARA_KONO + 1
+                call hertzdamp_fit_inverse_n(size(e), e, iend, a(1:size(e)), t(1:size(e)), st(1:size(e)), law)
+                do i = 1, size(e)
+                    call hertzdamp_fit_inverse(e(i), iend, a1(i), t1(i), st1(i), law)
+                end do
+                call s%check(all(bits(a(1:size(e))) == bits(a1(1:size(e))) .and. bits(t(1:size(e))) == &
+                                 bits(t1(1:size(e))) .and. st(1:size(e)) == st1(1:size(e))), &
+                             'fit inverse: n at once = one at a time, ' // law_tag(iend, law))
             end do
-            call s%check(all(bits(a(1:size(e))) == bits(a1(1:size(e))) .and. bits(t(1:size(e))) == &
-                             bits(t1(1:size(e))) .and. st(1:size(e)) == st1(1:size(e))), &
-                         'fit inverse: n at once = one at a time, end ' // cend)
         end do
         deallocate (a, t, a1, t1, k, d, k1, d1, st, st1)
         n = size(e)
         allocate (a(n), t(n), a1(n), t1(n), k(n), d(n), k1(n), d1(n), st(n), st1(n))
         do iend = -1, 2
-            write (cend, '(i0)') iend
-            call hertzdamp_fit_invert_n(n, e, tc, m, u, iend, k, d, a, t, st)
-            do i = 1, n
-                call hertzdamp_fit_invert(e(i), tc(i), m(i), u(i), iend, k1(i), d1(i), a1(i), t1(i), st1(i))
+            do law = -1, HD_DAMPING_KUWABARA_KONO + 1
+                call hertzdamp_fit_invert_n(n, e, tc, m, u, iend, k, d, a, t, st, law)
+                do i = 1, n
+                    call hertzdamp_fit_invert(e(i), tc(i), m(i), u(i), iend, k1(i), d1(i), a1(i), t1(i), st1(i), law)
+                end do
+                call s%check(all(bits(k) == bits(k1) .and. bits(d) == bits(d1) .and. bits(a) == bits(a1) .and. &
+                                 bits(t) == bits(t1) .and. st == st1), 'fit invert kernel: n at once = one at a time, ' &
+                             // law_tag(iend, law))
             end do
-            call s%check(all(bits(k) == bits(k1) .and. bits(d) == bits(d1) .and. bits(a) == bits(a1) .and. &
-                             bits(t) == bits(t1) .and. st == st1), 'fit invert kernel: n at once = one at a time, end ' &
-                         // cend)
         end do
     end subroutine compare_kernels
 

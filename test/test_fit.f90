@@ -135,10 +135,11 @@ contains
     subroutine kernels()
         integer, parameter :: qp = selected_real_kind(30)
         integer :: j
-        real(wp) :: x, ulp_log, ulp_cbrt, ulp_exp
+        real(wp) :: x, ulp_log, ulp_cbrt, ulp_exp, ulp_root5
         real(qp) :: q
         ulp_log = 0.0_wp
         ulp_cbrt = 0.0_wp
+        ulp_root5 = 0.0_wp
         ulp_exp = 0.0_wp
         do j = 0, 100000
             ! -ln x on [1e-5, 1] (the inverse needs [1e-4, 1], the forward w needs (0, 1])
@@ -149,15 +150,24 @@ contains
             x = 10.0_wp**(-17.0_wp + 18.8_wp * real(j, wp) / 100000.0_wp)
             q = real(x, qp)**(1.0_qp / 3.0_qp)
             ulp_cbrt = max(ulp_cbrt, real(abs(hertzdamp_fit_cbrt(x) - q) / spacing(real(q, wp)), wp))
+            ! x^(1/5) on the same range (L^(1/5) of the tsuji force inverse)
+            q = real(x, qp)**(1.0_qp / 5.0_qp)
+            ulp_root5 = max(ulp_root5, real(abs(hertzdamp_fit_root5(x) - q) / spacing(real(q, wp)), wp))
             ! exp(-x) on [0, 40] (e of the forward map)
             x = 40.0_wp * real(j, wp) / 100000.0_wp
             q = exp(-real(x, qp))
             ulp_exp = max(ulp_exp, real(abs(hertzdamp_fit_exp_neg(x) - q) / spacing(real(q, wp)), wp))
         end do
-        print '(a, 3f7.3)', 'kernels: max error in ulp of -ln x, x^(1/3), exp(-x): ', ulp_log, ulp_cbrt, ulp_exp
+        print '(a, 4f7.3)', 'kernels: max error in ulp of -ln x, x^(1/3), exp(-x), x^(1/5): ', ulp_log, ulp_cbrt, &
+            ulp_exp, ulp_root5
         call s%check(ulp_log <= 1.5_wp, '-ln x within 1.5 ulp on [1e-5, 1]')
         call s%check(ulp_cbrt <= 1.0_wp, 'x^(1/3) within 1 ulp on [1e-17, 60]')
         call s%check(ulp_exp <= 1.0_wp, 'exp(-x) within 1 ulp on [0, 40]')
+        call s%check(ulp_root5 <= 1.0_wp, 'x^(1/5) within 1 ulp on [1e-17, 60]')
+        call s%check(same(hertzdamp_fit_root5(0.0_wp), 0.0_wp) .and. same(hertzdamp_fit_root5(-0.0_wp), 0.0_wp) .and. &
+                     same(hertzdamp_fit_root5(32.0_wp), 2.0_wp) .and. same(hertzdamp_fit_root5(1.0_wp / 32.0_wp), 0.5_wp) &
+                     .and. same(hertzdamp_fit_root5(243.0_wp), 3.0_wp) .and. same(hertzdamp_fit_root5(1.0_wp), 1.0_wp), &
+                     'x^(1/5) exact for 0, -0 and fifth powers')
         call s%check(same(hertzdamp_fit_neg_log(1.0_wp), 0.0_wp) .and. .not. (sign(1.0_wp, hertzdamp_fit_neg_log(1.0_wp)) &
                      < 0.0_wp), '-ln 1 = +0')
         call s%check(same(hertzdamp_fit_neg_log(0.5_wp), log(2.0_wp)) .and. same(hertzdamp_fit_neg_log(0.25_wp), &

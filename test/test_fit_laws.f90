@@ -22,6 +22,12 @@ program test_fit_laws
     call tsuji_closed_forms()
     call linear_unchanged()
     call inverse_rule()
+    do il = HD_DAMPING_LINEAR, HD_DAMPING_KUWABARA_KONO
+        do iend = HD_END_OVERLAP, HD_END_FORCE
+            call forward_derivatives(il, iend)
+        end do
+    end do
+    call derivative_edges()
     call s%finish()
 
 contains
@@ -161,6 +167,113 @@ contains
         end do
         call s%check(ok, 'linear law through hertzdamp_fit_law_* = hertzdamp_fit_* bit for bit')
     end subroutine linear_unchanged
+
+    !> hertzdamp_fit_forward_deriv: its e and tau_c are those of hertzdamp_fit_law_forward
+    !> bit for bit; its de/dalpha and dtau_c/dalpha against differences of the fit itself
+    !> (central, steps h and h/2 with Richardson extrapolation, h = 1e-3 of the distance
+    !> to the nearest end of the law's range: 0, alpha_c; to 1e-8 plus the rounding of the
+    !> differences: that of the values and of the fit's variable, which near alpha_c
+    !> carries that of alpha/alpha_c) and of the reference integrator (rk45 at 1e-14, central,
+    !> h = 1e-4 of that distance; to 1e-6), over the fitted forward range of each law and
+    !> end (e >= 1e-5; linear force: alpha <= 52.5), denser towards alpha = 0.
+    subroutine forward_derivatives(law, iend)
+        integer, intent(in) :: law, iend
+        real(wp) :: amax, ac, a, h, gap, e, tau, de, dtau, e0, t0, fd(2), worst(2), err
+        integer :: nbad
+        type(hertzdamp_collision) :: rp, rm
+        integer :: i, st, st0
+        logical :: same_values
+        character(len=40) :: lab
+        lab = ' ' // hertzdamp_law_name(law) // ' ' // hertzdamp_end_name(iend)
+        amax = alpha_at(law, iend, 1.05e-5_wp)
+        if (law == HD_DAMPING_LINEAR .and. iend == HD_END_FORCE) amax = min(amax, 0.999_wp * hertzdamp_fit_alpha_max_force)
+        ac = huge(1.0_wp)
+        if (iend == HD_END_OVERLAP) ac = hertzdamp_law_alpha_c(law)
+        worst = 0.0_wp
+        nbad = 0
+        same_values = .true.
+        do i = 1, 97
+            a = amax * (real(i, wp) / 97.0_wp)**2
+            call hertzdamp_fit_forward_deriv(a, iend, law, e, tau, de, dtau, st)
+            call hertzdamp_fit_law_forward(a, iend, law, e0, t0, st0)
+            same_values = same_values .and. st == HD_OK .and. st0 == HD_OK .and. .not. (e /= e0 .or. tau /= t0)
+            if (st /= HD_OK) cycle
+            gap = min(a, ac - a)
+            h = 1.0e-3_wp * gap
+            fd = richardson(law, iend, a, h)
+            err = max(rel_err(de, fd(1)), rel_err(dtau, fd(2)))
+            worst(1) = max(worst(1), err)
+            ! 1e-8 and the rounding of the differences (relative to f'): that of f itself and
+            ! that of the fit's variable (near alpha_c: of alpha/alpha_c), 100 eps (|f/f'| or alpha)/h
+            if (.not. (rel_err(de, fd(1)) <= 1.0e-8_wp + 100.0_wp * epsilon(a) * (a + abs(e / de)) / h .and. &
+                       rel_err(dtau, fd(2)) <= 1.0e-8_wp + 100.0_wp * epsilon(a) * (a + abs(tau / dtau)) / h)) then
+                nbad = nbad + 1
+                print '(a,4es12.4)', 'derivative against differences of the fit: alpha, error, de, dtau ', a, err, de, dtau
+            end if
+            h = 1.0e-4_wp * gap
+            rp = hertzdamp_rk45_collide(a + h, iend, 1.0e-14_wp, law)
+            rm = hertzdamp_rk45_collide(a - h, iend, 1.0e-14_wp, law)
+            worst(2) = max(worst(2), rel_err(de, (rp%e - rm%e) / (2.0_wp * h)), &
+                           rel_err(dtau, (rp%tau_c - rm%tau_c) / (2.0_wp * h)))
+        end do
+        print '(a,a,2es10.2)', 'derivatives de/dalpha, dtau_c/dalpha: max rel err against differences of the fit, ' // &
+            'of rk45:', trim(lab), worst
+        call s%check(same_values, 'derivative call: e, tau_c of the forward fit bit for bit' // trim(lab))
+        call s%check(nbad == 0, 'derivatives = Richardson differences of the fit (1e-8 + rounding)' // trim(lab))
+        call s%check(worst(2) < 1.0e-6_wp, 'derivatives = central differences of rk45 (1e-6)' // trim(lab))
+    end subroutine forward_derivatives
+
+    !> (4 D(h/2) - D(h))/3 of e and tau_c of the forward fit of a law and end at alpha.
+    function richardson(law, iend, alpha, h) result(df)
+        integer, intent(in) :: law, iend
+        real(wp), intent(in) :: alpha, h
+        real(wp) :: df(2), ee(-2:2), tt(-2:2)
+        integer :: j, stj
+        do j = -2, 2
+            call hertzdamp_fit_law_forward(alpha + 0.5_wp * j * h, iend, law, ee(j), tt(j), stj)
+            if (stj /= HD_OK) error stop 'forward_derivatives: the fit failed near alpha'
+        end do
+        df(1) = (4.0_wp * (ee(1) - ee(-1)) / h - (ee(2) - ee(-2)) / (2.0_wp * h)) / 3.0_wp
+        df(2) = (4.0_wp * (tt(1) - tt(-1)) / h - (tt(2) - tt(-2)) / (2.0_wp * h)) / 3.0_wp
+    end function richardson
+
+    !> The derivatives at the ends of their range: at alpha = 0 (overlap end) de/dalpha is
+    !> -e1(law), the first-order slope from its Beta-function closed form; towards alpha = 0
+    !> at the force end too (the force end differs at order alpha^(5/(3-2q))), while
+    !> alpha = 0 itself is HD_OUT_OF_RANGE there (dtau_c/dalpha is infinite); no rebound,
+    !> beyond the fitted range, bad arguments: the status and zero outputs.
+    subroutine derivative_edges()
+        real(wp) :: e, tau, de, dtau
+        integer :: law, st
+        character(len=40) :: lab
+        do law = HD_DAMPING_LINEAR, HD_DAMPING_KUWABARA_KONO
+            lab = ' ' // hertzdamp_law_name(law)
+            call hertzdamp_fit_forward_deriv(0.0_wp, HD_END_OVERLAP, law, e, tau, de, dtau, st)
+            call s%check(st == HD_OK, 'alpha = 0, overlap: status ok' // trim(lab))
+            call s%check_close(-de, hertzdamp_e1(law), 1.0e-11_wp, 'alpha = 0, overlap: de/dalpha = -e1(law)' // trim(lab))
+            call hertzdamp_fit_forward_deriv(1.0e-9_wp, HD_END_FORCE, law, e, tau, de, dtau, st)
+            call s%check(st == HD_OK .and. abs(dtau) > 0.0_wp .and. abs(dtau) <= huge(dtau), &
+                         'alpha = 1e-9, force: finite dtau_c/dalpha' // trim(lab))
+            call s%check_close(-de, hertzdamp_e1(law), 1.0e-5_wp, 'alpha = 1e-9, force: de/dalpha -> -e1(law)' // trim(lab))
+            call hertzdamp_fit_forward_deriv(0.0_wp, HD_END_FORCE, law, e, tau, de, dtau, st)
+            call s%check(st == HD_OUT_OF_RANGE .and. .not. (e /= 0.0_wp .or. tau /= 0.0_wp .or. de /= 0.0_wp .or. &
+                         dtau /= 0.0_wp), 'alpha = 0, force: HD_OUT_OF_RANGE and zeros' // trim(lab))
+            call hertzdamp_fit_forward_deriv(-0.1_wp, HD_END_OVERLAP, law, e, tau, de, dtau, st)
+            call s%check(st == HD_OUTSIDE_VALIDITY .and. .not. (de /= 0.0_wp), 'alpha < 0: outside validity' // trim(lab))
+            call hertzdamp_fit_forward_deriv(5.0e3_wp, HD_END_FORCE, law, e, tau, de, dtau, st)
+            call s%check(st == HD_OUTSIDE_VALIDITY .and. .not. (e /= 0.0_wp .or. dtau /= 0.0_wp), &
+                         'beyond the fitted range: outside validity, zeros' // trim(lab))
+            call hertzdamp_fit_forward_deriv(0.5_wp, 2, law, e, tau, de, dtau, st)
+            call s%check(st == HD_BAD_END, 'bad end' // trim(lab))
+        end do
+        call hertzdamp_fit_forward_deriv(2.3_wp, HD_END_OVERLAP, HD_DAMPING_TSUJI, e, tau, de, dtau, st)
+        call s%check(st == HD_NO_REBOUND .and. .not. (tau /= 0.0_wp .or. de /= 0.0_wp), &
+                     'tsuji beyond sqrt5: no rebound, zeros')
+        call hertzdamp_fit_forward_deriv(1.2_wp, HD_END_OVERLAP, HD_DAMPING_LINEAR, e, tau, de, dtau, st)
+        call s%check(st == HD_NO_REBOUND .and. .not. (tau /= 0.0_wp), 'linear beyond alpha_c: no rebound, zeros')
+        call hertzdamp_fit_forward_deriv(0.5_wp, HD_END_OVERLAP, 7, e, tau, de, dtau, st)
+        call s%check(st == HD_BAD_LAW, 'bad law')
+    end subroutine derivative_edges
 
     !> hertzdamp_invert with a law: the reduction of the returned (k, d) gives back alpha
     !> and the contact time T_c = t* tau_c; with the bound active, k = k_phys and

@@ -43,7 +43,7 @@ git diff --quiet HEAD -- src cli apps peers 2>/dev/null || commit="$commit (with
   echo "# commit: $commit"
   echo "# timing: wall clock per call, median of 5 batches of >= 0.1 s each (entry points: 5 rounds, one batch of each in turn); run time ${t_csv} s"
   echo "# integrators (rk45, GSL rkf45/rk8pd) use relative error control (absolute tolerance 1e-30 tol)"
-  echo "# forward errors against rk45 at tol 1e-15 (e relative to max(e, 1e-3)); inverse errors against iterative at tol 1e-14"
+  echo "# every damping law (column damping); forward errors against rk45 at tol 1e-15 of the law (e relative to max(e, 1e-3)); inverse errors against iterative at tol 1e-14 (tsuji: exact alpha)"
   if grep -q 'TEMPORARY stand-in' src/hertzdamp_inverse.f90 2>/dev/null; then
     echo "# WARNING: built with the TEMPORARY stand-in src/hertzdamp_inverse.f90 (rk45 secant for every method):"
     echo "#          the inverse and throughput rows do not measure the real fit/compact/series/pade inverses"

@@ -29,30 +29,53 @@ Layout of the module (what the SIMD kernels of src/hertzdamp_fit.f90 read):
   (variable code, first global piece, pieces, grid; one entry per map).  A family
   has one degree: blocks of lower degree are padded with zero coefficients, which
   changes no result (Horner or Estrin with leading zeros is exact).
-- every block has NAME_c(0:DEG, 0:NP-1), the coefficients of its pieces (for code that
-  evaluates one block at a time, such as the derivatives of hertzdamp_calibrate_maps):
-  its own array for a block in no map, a section of fit_F_c for a block of a map.
+- every block of the CSV belongs to a map (the conversion stops otherwise): code
+  that evaluates a block reaches it through its map, never through a copy of its
+  own (the derivatives of the maps are hertzdamp_fit_forward_deriv in the core).
+
+The variable code of a block (column 3 of its CSV row) does not say which root a
+'root' variable takes (code 2: L^(1/n), 5: alpha^(1/n); n = 3 linear, 5 tsuji,
+2 kuwabara-kono, gen/fit/gen_fit.f90): the kernel that evaluates a map knows it
+(the comments of MAPS name the variable of each map).
 
 To add a fitted map (for instance for another damping law): let the generator write
-its blocks to the CSV, add a line (family, map name, blocks) to MAPS, run
-`make fit-source`, and give the new map index to the kernel in hertzdamp_fit (the
-variable code of the map selects the transform of e or alpha the kernel applies).
+its blocks to the CSV, add a line (family, map name, blocks) to MAPS (a new map
+goes after the maps already in its family, so that their indices and pieces stay),
+run `make fit-source`, and give the new map index to a kernel in hertzdamp_fit:
+the inverse kernels are chosen by `inverse_kernel` (contact end and law), get a
+case in hertzdamp_fit_invert_dispatch.inc and are written once in
+hertzdamp_fit_inverse.inc (the variable of e and the map per kernel), with the law's
+q in hertzdamp_fit_invert_out.inc; forward maps of the laws are evaluated (with
+their derivatives) in hertzdamp_fit_laws.
 """
 import sys
 
 # family, map, blocks (the components of the family, in this order)
-#   inv:  inverse maps, components alpha/L and tau_c as functions of a variable of L = -ln e
+#   inv:  inverse maps of the linear law, components alpha/L and tau_c as functions of
+#         L = -ln e (overlap) or L^(1/3) (force); degree 9
 #   fwd:  forward maps of e and tau_c, components L/alpha (or L) and tau_c
 #   turn: forward maps of the turning point, components z_max and tau_max
+#   linv: inverse maps of the laws with both components on one grid: alpha/L and tau_c
+#   one:  maps of one component (the tsuji inverse: its alpha/L and tau_c have different
+#         variables, and alpha(e) of its overlap end is exact)
 MAPS = [
-    ('inv', 'ov_inv', ['ov_inv_a', 'ov_inv_t']),
-    ('inv', 'fo_inv', ['fo_inv_a', 'fo_inv_t']),
-    ('fwd', 'ov_fwd_a', ['ov_fwd_la', 'ov_fwd_ta']),
-    ('fwd', 'ov_fwd_w', ['ov_fwd_lw', 'ov_fwd_tw']),
-    ('fwd', 'fo_fwd', ['fo_fwd_la', 'fo_fwd_ta']),
-    ('turn', 'ov_turn_a', ['ov_fwd_za', 'ov_fwd_ma']),
-    ('turn', 'ov_turn_b', ['ov_fwd_zb', 'ov_fwd_mb']),
-    ('turn', 'fo_turn', ['fo_fwd_za', 'fo_fwd_ma']),
+    ('inv', 'ov_inv', ['ov_inv_a', 'ov_inv_t']),                   # linear overlap, of L
+    ('inv', 'fo_inv', ['fo_inv_a', 'fo_inv_t']),                   # linear force, of L^(1/3)
+    ('fwd', 'ov_fwd_a', ['ov_fwd_la', 'ov_fwd_ta']),               # linear overlap, of alpha <= 0.6
+    ('fwd', 'ov_fwd_w', ['ov_fwd_lw', 'ov_fwd_tw']),               # linear overlap, of w = -ln(1 - alpha/alpha_c)
+    ('fwd', 'fo_fwd', ['fo_fwd_la', 'fo_fwd_ta']),                 # linear force, of alpha^(1/3)
+    ('turn', 'ov_turn_a', ['ov_fwd_za', 'ov_fwd_ma']),             # linear overlap, of alpha <= 0.6
+    ('turn', 'ov_turn_b', ['ov_fwd_zb', 'ov_fwd_mb']),             # linear overlap, of alpha in [0.6, 1.3]
+    ('turn', 'fo_turn', ['fo_fwd_za', 'fo_fwd_ma']),               # linear force, of alpha^(1/3)
+    ('fwd', 'kk_ov_fwd', ['kk_ov_fwd_la', 'kk_ov_fwd_ta']),        # kuwabara-kono overlap, of alpha
+    ('fwd', 'kk_fo_fwd', ['kk_fo_fwd_la', 'kk_fo_fwd_ta']),        # kuwabara-kono force, of ln(1 + alpha^(1/2))
+    ('turn', 'ts_turn', ['ts_fwd_z', 'ts_fwd_m']),                 # tsuji, of alpha^(1/5)
+    ('turn', 'kk_turn', ['kk_fwd_z', 'kk_fwd_m']),                 # kuwabara-kono, of ln(1 + alpha^(1/2))
+    ('linv', 'kk_ov_inv', ['kk_ov_inv_a', 'kk_ov_inv_t']),         # kuwabara-kono overlap, of L
+    ('linv', 'kk_fo_inv', ['kk_fo_inv_a', 'kk_fo_inv_t']),         # kuwabara-kono force, of L^(1/2)
+    ('one', 'ts_ov_inv_t', ['ts_ov_inv_t']),                       # tsuji overlap tau_c, of L
+    ('one', 'ts_fo_inv_a', ['ts_fo_inv_a']),                       # tsuji force alpha/L, of L
+    ('one', 'ts_fo_inv_t', ['ts_fo_inv_t']),                       # tsuji force tau_c, of L^(1/5)
 ]
 
 
@@ -105,7 +128,8 @@ def read_csv(src):
 
 
 def families_of(blocks):
-    """family -> list of (map, [blocks]); checks that a map's blocks share one grid."""
+    """family -> list of (map, [blocks]); checks that a map's blocks share one grid and
+    that every block is in a map."""
     fams, in_map = {}, set()
     for fam, name, comps in MAPS:
         missing = [c for c in comps if c not in blocks]
@@ -119,7 +143,10 @@ def families_of(blocks):
             raise SystemExit('map %s: family %s has another number of components' % (name, fam))
         fams.setdefault(fam, []).append((name, comps))
         in_map.update(comps)
-    return fams, in_map
+    lost = [b for b in blocks if b not in in_map]
+    if lost:
+        raise SystemExit('blocks in no map (add them to MAPS): ' + ', '.join(lost))
+    return fams
 
 
 def main(argv):
@@ -128,7 +155,7 @@ def main(argv):
         return 2
     src, dst = argv[1], argv[2]
     comments, params, blocks, order = read_csv(src)
-    fams, in_map = families_of(blocks)
+    fams = families_of(blocks)
     out = []
     out.append('! Generated by tools/fit_csv_to_f90.py from data/fit_coefficients.csv; do not edit.')
     out.append('! Regenerate with `make fit-source` (CSV -> this file) after `make fit-data` (generator -> CSV).')
@@ -157,13 +184,6 @@ def main(argv):
         out.append('    integer, parameter, public :: %s_np = %d, %s_deg = %d' % (name, npc, name, deg))
         out.append('    real(wp), parameter, public :: %s_x0 = %s, %s_x1 = %s' % (name, lit(b['x0']), name, lit(b['x1'])))
         out.append('    real(wp), parameter, public :: %s_scale = %d / (%s_x1 - %s_x0)' % (name, npc, name, name))
-        if name in in_map:
-            continue
-        values = []
-        for i in range(npc):
-            values.extend(lit(v) for v in b['pieces'][i])
-        out.append('    real(wp), parameter, public :: %s_c(0:%d, 0:%d) = reshape([ &' % (name, deg, npc - 1))
-        out.append(wrap_values(values, '        ') + '], [%d, %d])' % (deg + 1, npc))
     for fam in sorted(fams, key=lambda f: [m[0] for m in MAPS].index(f)):
         maps = fams[fam]
         ncomp = len(maps[0][1])
@@ -213,14 +233,6 @@ def main(argv):
         out.append('    real(wp), parameter, public :: fit_%s_c(0:%d, %d, 0:%d) = reshape([ &' % (
             fam, deg, ncomp, npieces - 1))
         out.append('        %s], [%d, %d, %d])' % (', '.join(names), deg + 1, ncomp, npieces))
-        # every block of a map also under its own name, as a section of the family array
-        # (the layout of a block outside a map: for code that evaluates one block)
-        out.append('    !> the blocks of the maps one by one: NAME_c(0:DEG, 0:NP-1), sections of fit_%s_c' % fam)
-        for (m, comps), f in zip(maps, first):
-            for j, c in enumerate(comps):
-                b = blocks[c]
-                out.append('    real(wp), parameter, public :: %s_c(0:%d, 0:%d) = fit_%s_c(0:%d, %d, %d:%d)' % (
-                    c, b['deg'], b['np'] - 1, fam, b['deg'], j + 1, f, f + b['np'] - 1))
     out.append('')
     out.append('end module hertzdamp_fit_data')
     text = '\n'.join(out) + '\n'

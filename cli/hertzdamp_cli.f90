@@ -161,18 +161,20 @@ contains
     !> Parse the arguments from position `first` on.  `valued` and `flags` are
     !> space-separated option names; any other `--option`, a repeated option or a
     !> missing value is an error (exit 2).  At most one positional argument if
-    !> `allow_positional`.
-    subroutine parse_args(first, valued, flags, args, allow_positional)
+    !> `allow_positional`; any number, in order, into `positionals` when present.
+    subroutine parse_args(first, valued, flags, args, allow_positional, positionals)
         integer, intent(in) :: first
         character(len=*), intent(in) :: valued, flags
         type(cli_args), intent(out) :: args
         logical, intent(in), optional :: allow_positional
+        type(cli_line), allocatable, intent(out), optional :: positionals(:)
         integer :: i, n, j
         character(len=:), allocatable :: a, v
         logical :: pos_ok
         pos_ok = .false.
         if (present(allow_positional)) pos_ok = allow_positional
         allocate (args%opts(0))
+        if (present(positionals)) allocate (positionals(0))
         n = command_argument_count()
         i = first
         do while (i <= n)
@@ -200,7 +202,9 @@ contains
                     cycle
                 end if
             end if
-            if (pos_ok .and. .not. allocated(args%positional)) then
+            if (present(positionals)) then
+                positionals = [positionals, cli_line(a)]
+            else if (pos_ok .and. .not. allocated(args%positional)) then
                 args%positional = a
             else
                 call fail(EXIT_USAGE, 'unexpected argument "' // a // '" (see --help)')

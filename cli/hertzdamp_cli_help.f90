@@ -421,13 +421,19 @@ module hertzdamp_cli_help
         '  --release R      LAMMPS formulas of 2021 (29 Sep 2021, Debian 12), 2023' // nl // &
         '                   (28 Mar 2023 - 29 Aug 2024) or current (default)' // nl // &
         '  --format F       text (default), csv or json' // nl // &
+        '  --progress       progress on stderr (default: on a terminal, after 2 s)' // nl // &
         '  --table          the table of every engine''s formula and the e it achieves for' // nl // &
         '                   the targets 0.1 ... 0.9 (markdown; doc/peers.md)' // nl // &
         '' // nl // &
         'Columns: velocity, alpha, e, e_error (e/e_target - 1), t_c [s], t_attractive (overlap' // nl // &
         'end: when the total force turns attractive) [s], dt_max = t_c/N [s], t_hertz (elastic' // nl // &
         'Hertz time) [s], t_peer (the engine''s own estimate) [s], corrected (the engine''s' // nl // &
-        'parameter for the target e at this speed), status.  Empty (text: -): does not apply.'
+        'parameter for the target e at this speed), method (fit: the library''s fitted maps;' // nl // &
+        'rk45: the reference integrator, beyond their range), status (ok, no-rebound,' // nl // &
+        'out-of-range, outside-validity, failed).  Empty (text: -): does not apply, or beyond' // nl // &
+        'double precision.  Exit 0 when every speed has a result; else the table, one line on' // nl // &
+        'stderr and exit 3 (4: a computation failed); no speed with a result: exit 3 or 4, no' // nl // &
+        'output.'
 
 contains
 

@@ -8,22 +8,28 @@
 module hertzdamp_cmd_check
     use hertzdamp, only: hertzdamp_rk, hertzdamp_message, hertzdamp_end_name, hertzdamp_law_name, &
                          hertzdamp_law_has_alpha_c, hertzdamp_law_alpha_c, hertzdamp_law_speed_exponent, &
-                         HD_OK, HD_NO_REBOUND, HD_END_OVERLAP, HD_END_FORCE, HD_OUTSIDE_VALIDITY, &
+                         hertzdamp_method_name, hertzdamp_fit_law_e_min, hertzdamp_alpha_max, &
+                         HD_METHOD_FIT, HD_METHOD_RK45, &
+                         HD_OK, HD_NO_REBOUND, HD_END_OVERLAP, HD_END_FORCE, HD_OUTSIDE_VALIDITY, HD_OUT_OF_RANGE, &
                          HD_BAD_RESTITUTION, HD_NOT_SUPPORTED, HD_DAMPING_LINEAR, HD_DAMPING_TSUJI, &
                          HD_DAMPING_KUWABARA_KONO
     use hertzdamp_peers, only: peer_deck, peer_point, peer_text, peer_evaluate, peer_spec_field, peer_spec_count, &
                                peer_law_inverse, peer_law_forward, peer_beta, peer_beta_inverse, &
-                               peer_damping, peer_fmt, peer_itoa, peer_row_law, peer_row_end, peer_row_coef, &
+                               peer_damping, peer_fmt, peer_row_law, peer_row_end, peer_row_coef, &
                                peer_nan, peer_float, peer_name, &
                                PEER_LAMMPS, PEER_LIGGGHTS, PEER_MERCURYDPM, PEER_YADE, PEER_MFIX, PEER_CHRONO, &
-                               TSTEP_LIGGGHTS, TSTEP_MERCURY, TSTEP_MFIX, COEF_GAMMA_P6, COEF_GAMMA_SQRT2_P6, &
+                               TSTEP_NONE, TSTEP_LIGGGHTS, TSTEP_MERCURY, TSTEP_MFIX, COEF_GAMMA_P6, COEF_GAMMA_SQRT2_P6, &
                                COEF_GAMMA_SQRT5_BETA, COEF_GAMMA_2BETA, COEF_GAMMA_SQRT6, COEF_GAMMA_SQRT5_BETA_EPS
     use hertzdamp_peers_deck, only: peer_materials, peer_read_deck, peer_code, peer_parameter_problem, &
                                     LAMMPS_2021, LAMMPS_2023, LAMMPS_CURRENT, lammps_releases
-    use hertzdamp_cli, only: cli_buffer, parse_real, parse_int, parse_choice, fail, quit, EXIT_USAGE, EXIT_OK, &
-                             exit_code_of, get_arg, parse_sweep
+    use hertzdamp_cli, only: cli_args, cli_line, cli_buffer, parse_args, parse_real, parse_int, parse_choice, &
+                             required_sweep, fail, quit, EXIT_USAGE, EXIT_OK
+    use hertzdamp_cli_text, only: itoa
     use hertzdamp_cli_output, only: out_table, format_choices, FORMAT_TEXT
     use hertzdamp_cli_help, only: print_help, wants_help
+    use hertzdamp_cli_materials, only: cli_contact, parse_contact
+    use hertzdamp_cli_rows, only: row_log, row_kind, row_word, row_has_result
+    use hertzdamp_cli_progress, only: progress_reporter
     use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
     implicit none
     private
@@ -36,173 +42,144 @@ module hertzdamp_cmd_check
     !> Speed ratios u/u0 of the speed-dependence table.
     real(wp), parameter :: table_ratios(5) = [0.01_wp, 0.1_wp, 1.0_wp, 10.0_wp, 100.0_wp]
 
+    !> The contact options of `check` (hertzdamp_cli_materials reads and checks them; the
+    !> deck may give the radius and density instead, e.g. MFiX D_P0 and RO_S0).
+    character(len=*), parameter :: material_options = '--radius --radius2 --density --density2'
+
+    !> What `check` was asked (the options but the deck).
+    type :: check_request
+        integer :: release = LAMMPS_CURRENT  !! LAMMPS_*
+        integer :: steps = 10                !! time steps per contact of the advice
+        integer :: fmt = FORMAT_TEXT         !! FORMAT_*
+        logical :: have_e = .false.          !! --e given
+        logical :: progress = .false.        !! --progress
+        real(wp) :: e_user = 0.0_wp          !! --e
+        real(wp), allocatable :: speeds(:)   !! --velocity
+    end type check_request
+
 contains
 
     subroutine cmd_check()
-        character(len=:), allocatable :: a, key, val, peer_name, release_text
-        type(peer_text), allocatable :: tokens(:), opts_seen(:)
+        type(cli_args) :: args
+        type(cli_line), allocatable :: words(:)
+        type(cli_contact) :: ct
+        type(check_request) :: rq
+        type(peer_text), allocatable :: tokens(:)
         type(peer_materials) :: mat
-        real(wp), allocatable :: speeds(:)
-        real(wp) :: e_user
-        logical :: table, have_e, have_v, have_val
-        integer :: i, n, j, steps, fmt, release, peer
-        if (wants_help()) then
-            call print_help('check')
-            call quit(EXIT_OK)
-        end if
-        allocate (tokens(0), opts_seen(0), speeds(0))
-        table = .false.
-        have_e = .false.
-        have_v = .false.
-        e_user = 0.0_wp
-        steps = 10
-        fmt = FORMAT_TEXT
-        release = LAMMPS_CURRENT
-        release_text = ''
-        peer_name = ''
-        n = command_argument_count()
-        i = 2
-        do while (i <= n)
-            a = get_arg(i)
-            i = i + 1
-            if (len(a) >= 2) then
-                if (a(1:2) == '--') then
-                    j = index(a, '=')
-                    have_val = j > 0
-                    if (have_val) then
-                        key = a(1:j - 1)
-                        val = a(j + 1:)
-                    else
-                        key = a
-                        val = ''
-                    end if
-                    do j = 1, size(opts_seen)
-                        if (opts_seen(j)%s == key) call fail(EXIT_USAGE, 'option ' // key // ' given more than once')
-                    end do
-                    opts_seen = [opts_seen, peer_text(key)]
-                    select case (key)
-                    case ('--table', '--wall')
-                        if (have_val) call fail(EXIT_USAGE, 'option ' // key // ' takes no value')
-                        if (key == '--table') table = .true.
-                        if (key == '--wall') mat%wall = .true.
-                        cycle
-                    case ('--radius', '--radius2', '--density', '--density2', '--velocity', '--e', '--steps', &
-                          '--release', '--format')
-                        if (.not. have_val) then
-                            if (i > n) call fail(EXIT_USAGE, 'option ' // key // ' needs a value')
-                            val = get_arg(i)
-                            i = i + 1
-                        end if
-                    case default
-                        call fail(EXIT_USAGE, 'unknown option ' // key // ' (see hertzdamp check --help)')
-                    end select
-                    select case (key)
-                    case ('--radius'); mat%radius(1) = positive(val, key)
-                    case ('--radius2'); mat%radius(2) = positive(val, key)
-                    case ('--density'); mat%density(1) = positive(val, key)
-                    case ('--density2'); mat%density(2) = positive(val, key)
-                    case ('--velocity')
-                        speeds = parse_speeds(val)
-                        have_v = .true.
-                    case ('--e')
-                        e_user = parse_real(val, '--e')
-                        if (.not. (e_user > 0.0_wp .and. e_user <= 1.0_wp)) then
-                            call fail(EXIT_USAGE, '--e ' // val // ': the target restitution must be in (0, 1]')
-                        end if
-                        have_e = .true.
-                    case ('--steps')
-                        steps = parse_int(val, '--steps')
-                        if (steps < 1) call fail(EXIT_USAGE, '--steps must be >= 1')
-                    case ('--release')
-                        release = parse_choice(val, lammps_releases, 'LAMMPS release (--release)')
-                        release_text = val
-                    case ('--format')
-                        fmt = parse_choice(val, format_choices, 'format (--format)')
-                    case default
-                    end select
-                    cycle
-                end if
-            end if
-            if (len(peer_name) == 0) then
-                peer_name = a
-            else
-                call split_words(a, tokens)
-            end if
-        end do
-        if (table) then
-            if (len(peer_name) > 0 .or. size(opts_seen) > 1 + merge(1, 0, any_key(opts_seen, '--format'))) then
+        character(len=:), allocatable :: v
+        integer :: i, peer
+        if (wants_help()) call print_help('check')
+        call parse_args(2, '--velocity --e --steps --release --format ' // material_options, &
+                        '--table --wall --progress', args, positionals=words)
+        rq%fmt = parse_choice(args%get('--format', 'text'), format_choices, 'format (--format)')
+        if (args%has('--table')) then
+            if (size(words) > 0 .or. size(args%opts) > merge(2, 1, args%has('--format'))) then
                 call fail(EXIT_USAGE, '--table takes no engine and no option but --format')
             end if
-            call print_table(fmt)
+            call print_table(rq%fmt)
             call quit(EXIT_OK)
         end if
-        if (len(peer_name) == 0) call fail(EXIT_USAGE, 'missing the engine: lammps, liggghts, mercurydpm, yade, ' // &
-                                           'mfix or chrono (see hertzdamp check --help)')
-        peer = peer_code(peer_name)
-        if (peer == 0) call fail(EXIT_USAGE, 'unknown engine "' // peer_name // &
+        if (size(words) == 0) call fail(EXIT_USAGE, 'missing the engine: lammps, liggghts, mercurydpm, yade, ' // &
+                                        'mfix or chrono (see hertzdamp check --help)')
+        peer = peer_code(words(1)%s)
+        if (peer == 0) call fail(EXIT_USAGE, 'unknown engine "' // words(1)%s // &
                                  '": choose lammps, liggghts, mercurydpm, yade, mfix or chrono')
-        if (len(release_text) > 0 .and. peer /= PEER_LAMMPS) call fail(EXIT_USAGE, '--release applies to lammps only')
-        if (.not. have_v) call fail(EXIT_USAGE, 'missing --velocity (impact speeds [m/s]: a list 0.1,1,5 or a range ' // &
-                                    '0.01:5:log20)')
-        call run_check(peer, tokens, mat, release, speeds, have_e, e_user, steps, fmt)
-    end subroutine cmd_check
-
-    logical function any_key(list, key)
-        type(peer_text), intent(in) :: list(:)
-        character(len=*), intent(in) :: key
-        integer :: i
-        any_key = .false.
-        do i = 1, size(list)
-            if (list(i)%s == key) any_key = .true.
+        allocate (tokens(0))
+        do i = 2, size(words)
+            call split_words(words(i)%s, tokens)
         end do
-    end function any_key
+        ! the bodies: checked as every command checks them (a wall has no --radius2, ...)
+        call parse_contact(args, ct)
+        mat%wall = ct%wall
+        mat%radius(1) = optional_value('--radius')
+        mat%radius(2) = optional_value('--radius2')
+        mat%density(1) = optional_value('--density')
+        mat%density(2) = optional_value('--density2')
+        if (args%has('--release')) then
+            if (peer /= PEER_LAMMPS) call fail(EXIT_USAGE, '--release applies to lammps only')
+            rq%release = parse_choice(args%get('--release', ''), lammps_releases, 'LAMMPS release (--release)')
+        end if
+        rq%speeds = required_sweep(args, '--velocity')
+        do i = 1, size(rq%speeds)
+            if (.not. rq%speeds(i) > 0.0_wp) call fail(EXIT_USAGE, '--velocity ' // peer_fmt(rq%speeds(i)) // &
+                                                       ': impact speeds must be positive')
+        end do
+        rq%have_e = args%has('--e')
+        if (rq%have_e) then
+            v = args%get('--e', '')
+            rq%e_user = parse_real(v, '--e')
+            if (.not. (rq%e_user > 0.0_wp .and. rq%e_user <= 1.0_wp)) then
+                call fail(EXIT_USAGE, '--e ' // v // ': the target restitution must be in (0, 1]')
+            end if
+        end if
+        if (args%has('--steps')) then
+            rq%steps = parse_int(args%get('--steps', ''), '--steps')
+            if (rq%steps < 1) call fail(EXIT_USAGE, '--steps must be >= 1')
+        end if
+        rq%progress = args%has('--progress')
+        call run_check(peer, tokens, mat, rq)
+    contains
+        !> The value of a material option, 0 when absent (parse_contact has checked it).
+        real(wp) function optional_value(key) result(x)
+            character(len=*), intent(in) :: key
+            x = 0.0_wp
+            if (args%has(key)) x = parse_real(args%get(key, ''), key)
+        end function optional_value
+    end subroutine cmd_check
 
     ! ------------------------------------------------------------------ one deck
 
-    subroutine run_check(peer, tokens, mat, release, speeds, have_e, e_user, steps, fmt)
-        integer, intent(in) :: peer, release, steps, fmt
+    subroutine run_check(peer, tokens, mat, rq)
+        integer, intent(in) :: peer
         type(peer_text), intent(in) :: tokens(:)
         type(peer_materials), intent(in) :: mat
-        real(wp), intent(in) :: speeds(:), e_user
-        logical, intent(in) :: have_e
+        type(check_request), intent(in) :: rq
         type(peer_deck) :: deck
         type(peer_point), allocatable :: pt(:)
         type(out_table) :: t
-        type(cli_buffer) :: buf
+        type(row_log) :: rows
+        type(progress_reporter) :: progress
         type(peer_text), allocatable :: warn(:), note(:)
         character(len=:), allocatable :: msg, s
         real(wp) :: et
-        integer :: status, i, ngood, nfail, first_fail
-        call peer_read_deck(peer, tokens, mat, release, deck, status, msg)
+        integer :: status, i, kind, nfail, first_fail
+        logical :: have
+        call peer_read_deck(peer, tokens, mat, rq%release, deck, status, msg)
         if (status /= HD_OK) call fail(EXIT_USAGE, peer_name(peer) // ': ' // msg)
-        if (have_e) then
-            et = e_user
+        if (rq%have_e) then
+            et = rq%e_user
         else if (deck%e_deck > 0.0_wp) then
             et = deck%e_deck
         else
             call fail(EXIT_USAGE, 'missing --e (the restitution coefficient you want: this ' // peer_name(peer) // &
                       ' deck sets ' // deck%p_name // ', not e)')
         end if
-        allocate (pt(size(speeds)))
-        ngood = 0
+        allocate (pt(size(rq%speeds)))
+        call progress%start(real(size(pt), wp), 'check', force=rq%progress)
+        do i = 1, size(pt)
+            pt(i) = peer_evaluate(deck, rq%speeds(i), et)
+            call progress%update(real(i, wp))
+        end do
+        call progress%finish()
+        call t%set_columns('velocity,alpha,e,e_error,t_c,t_attractive,dt_max,t_hertz,t_peer,corrected,method,status')
         nfail = 0
         first_fail = 0
-        do i = 1, size(speeds)
-            pt(i) = peer_evaluate(deck, speeds(i), et)
-            if (pt(i)%status == HD_OK .or. pt(i)%status == HD_NO_REBOUND) then
-                ngood = ngood + 1
-            else
-                nfail = nfail + 1
-                if (first_fail == 0) first_fail = i
-            end if
+        do i = 1, size(pt)
+            if (row_has_result(row_kind(pt(i)%status))) cycle
+            nfail = nfail + 1
+            if (first_fail == 0) first_fail = i
         end do
-        if (ngood == 0) call fail(exit_code_of(pt(first_fail)%status), 'u = ' // peer_fmt(speeds(first_fail)) // &
-                                  ': ' // law_message(deck, pt(first_fail)%status))
+        if (nfail == size(pt)) then
+            ! no row has a result: one line on stderr, nothing on stdout (the rows decide the code)
+            do i = 1, size(pt)
+                call rows%add(row_kind(pt(i)%status), row_reason(deck, pt(i)))
+            end do
+            call rows%emit(t, rq%fmt)
+        end if
         allocate (warn(0), note(0))
-        call t%set_columns('velocity,alpha,e,e_error,t_c,t_attractive,dt_max,t_hertz,t_peer,corrected,status')
         call t%meta('engine', trim(peer_spec_field(deck%row, 'engine')) // ': ' // peer_spec_field(deck%row, 'option'))
         if (peer == PEER_LAMMPS) then
-            call t%meta('version', deck%version // ' (--release ' // release_word(release) // '); ' // &
+            call t%meta('version', deck%version // ' (--release ' // release_word(rq%release) // '); ' // &
                         peer_spec_field(deck%row, 'version'))
         else
             call t%meta('version', peer_spec_field(deck%row, 'version'))
@@ -221,21 +198,22 @@ contains
             s = s // ' (effective mass and radius of the pair)'
         end if
         call t%meta('contact', s)
-        if (have_e) then
+        if (rq%have_e) then
             call t%meta('target', 'e = ' // peer_fmt(et) // ' (--e)')
         else
             call t%meta('target', 'e = ' // peer_fmt(et) // ' (the ' // deck%p_name // ')')
         end if
         call t%meta('achieved', achieved_text(pt, et))
         call t%meta('corrected', corrected_text(deck, pt, et))
-        call time_step_texts(deck, pt, steps, t)
+        call time_step_texts(deck, pt, rq%steps, t)
+        call t%meta('method', method_text(pt))
         call collect_warnings(deck, pt, warn)
         do i = 1, size(deck%notes)
             note = [note, deck%notes(i)]
         end do
-        if (peer == PEER_LAMMPS) call release_notes(tokens, mat, release, deck, pt, et, note)
-        if (nfail > 0) warn = [warn, peer_text(peer_itoa(nfail) // ' of ' // peer_itoa(size(pt)) // &
-                               ' speeds have no result: ' // law_message(deck, pt(first_fail)%status))]
+        if (peer == PEER_LAMMPS) call release_notes(tokens, mat, rq%release, deck, pt, et, note)
+        if (nfail > 0) warn = [warn, peer_text(itoa(nfail) // ' of ' // itoa(size(pt)) // &
+                               ' speeds have no result; first: ' // row_reason(deck, pt(first_fail)))]
         do i = 1, size(warn)
             call t%meta(numbered('warning', i, size(warn)), warn(i)%s)
         end do
@@ -243,33 +221,82 @@ contains
             call t%meta(numbered('note', i, size(note)), note(i)%s)
         end do
         call t%meta('units', 'velocity [m/s]; t_c, t_attractive (overlap end: when the total force turns ' // &
-                    'attractive), dt_max = t_c/' // peer_itoa(steps) // ', t_hertz (elastic Hertz time), t_peer ' // &
-                    '(the engine''s own estimate) [s]; e_error = e/e_target - 1; corrected: ' // deck%p_name)
+                    'attractive), dt_max = t_c/' // itoa(rq%steps) // ', t_hertz (elastic Hertz time), t_peer ' // &
+                    '(the engine''s own estimate) [s]; e_error = e/e_target - 1; corrected: ' // deck%p_name // &
+                    '; method: what gave e and t_c')
         do i = 1, size(pt)
+            kind = row_kind(pt(i)%status)
+            have = row_has_result(kind)
             call t%num(pt(i)%u)
-            call t%num(pt(i)%alpha)
-            call t%num(pt(i)%e)
-            call t%num(pt(i)%e / et - 1.0_wp)
-            call t%num(pt(i)%tc)
-            call t%num(pt(i)%t_force)
-            if (pt(i)%status == HD_OK) then
-                call t%num(pt(i)%tc / steps)
+            call t%num_or_none(pt(i)%alpha, have)
+            call t%num_or_none(pt(i)%e, have)
+            call t%num_or_none(pt(i)%e_error, have)
+            call t%num_or_none(pt(i)%tc, have)
+            call t%num_or_none(pt(i)%t_force, have)
+            call t%num_or_none(pt(i)%tc / rq%steps, pt(i)%status == HD_OK)
+            call t%num_or_none(pt(i)%t_hertz, have)
+            call t%num_or_none(pt(i)%t_peer, have)
+            call t%num_or_none(pt(i)%p_corrected, have .and. pt(i)%status_corrected == HD_OK)
+            if (have .and. pt(i)%method > 0) then
+                call t%str(hertzdamp_method_name(pt(i)%method))
             else
-                call t%num(peer_nan())
+                call t%none()
             end if
-            call t%num(pt(i)%t_hertz)
-            call t%num(pt(i)%t_peer)
-            call t%num(pt(i)%p_corrected)
-            select case (pt(i)%status)
-            case (HD_OK); call t%str('ok')
-            case (HD_NO_REBOUND); call t%str('no-rebound')
-            case default; call t%str('failed')
-            end select
+            call t%str(row_word(kind))
+            if (have) then
+                call rows%add(kind, '')
+            else
+                call rows%add(kind, row_reason(deck, pt(i)))
+            end if
         end do
-        call t%render(fmt, buf)
-        call buf%flush_to_stdout()
-        call quit(merge(EXIT_OK, exit_code_of(pt(max(first_fail, 1))%status), nfail == 0))
+        call rows%emit(t, rq%fmt)
     end subroutine run_check
+
+    !> Why a speed has no result, naming --velocity and its value.
+    function row_reason(deck, pt) result(s)
+        type(peer_deck), intent(in) :: deck
+        type(peer_point), intent(in) :: pt
+        character(len=:), allocatable :: s
+        s = '--velocity ' // peer_fmt(pt%u) // ': '
+        if (ieee_is_finite(pt%alpha)) s = s // 'alpha = ' // peer_fmt(pt%alpha, 6)
+        if (pt%method == HD_METHOD_RK45) s = s // ' (rk45: beyond the fitted range)'
+        if (ieee_is_finite(pt%alpha)) s = s // ': '
+        select case (pt%status)
+        case (HD_OUT_OF_RANGE)
+            s = s // pt%beyond // ' is outside the double-precision range'
+        case (HD_OUTSIDE_VALIDITY)
+            if (pt%alpha > hertzdamp_alpha_max) then
+                s = s // 'beyond ' // peer_fmt(hertzdamp_alpha_max) // ', the largest alpha any method takes'
+            else
+                s = s // law_message(deck, pt%status)
+            end if
+        case default
+            s = s // law_message(deck, pt%status)
+        end select
+    end function row_reason
+
+    !> Which method gave e and t_c: the library's fitted maps, its reference integrator
+    !> beyond their range (the column method says it per speed).
+    function method_text(pt) result(s)
+        type(peer_point), intent(in) :: pt(:)
+        character(len=:), allocatable :: s
+        integer :: nfit, nrk
+        nfit = count(pt%method == HD_METHOD_FIT)
+        nrk = count(pt%method == HD_METHOD_RK45)
+        s = ''
+        if (nfit > 0) s = 'fit (the library''s fitted maps of the law and end) at ' // itoa(nfit) // ' of ' // &
+                          itoa(size(pt)) // ' speeds'
+        if (nrk > 0) then
+            if (len(s) > 0) s = s // '; '
+            s = s // 'rk45 (the reference integrator) at ' // itoa(nrk) // ' of ' // itoa(size(pt)) // &
+                ' speeds, where alpha is beyond the fitted range'
+        end if
+        if (nfit + nrk < size(pt)) then
+            if (len(s) > 0) s = s // '; '
+            s = s // 'none at ' // itoa(size(pt) - nfit - nrk) // ' of ' // itoa(size(pt)) // &
+                ' speeds (alpha beyond double precision and alpha_c: no rebound; or no result)'
+        end if
+    end function method_text
 
     !> 'warning', or 'warning 2' ... when there are several.
     function numbered(word, i, n) result(s)
@@ -277,7 +304,7 @@ contains
         integer, intent(in) :: i, n
         character(len=:), allocatable :: s
         s = word
-        if (n > 1) s = word // ' ' // peer_itoa(i)
+        if (n > 1) s = word // ' ' // itoa(i)
     end function numbered
 
     function release_word(release) result(s)
@@ -340,7 +367,7 @@ contains
         s = s // '; ' // trim(deck%p_name) // ' = ' // peer_fmt(deck%p)
     end function formula_text
 
-    !> e over the speeds against the target.
+    !> e over the speeds against the target (the rows with a result; there is one).
     function achieved_text(pt, et) result(s)
         type(peer_point), intent(in) :: pt(:)
         real(wp), intent(in) :: et
@@ -358,30 +385,42 @@ contains
             if (pt(i)%e > pt(ihi)%e) ihi = i
         end do
         if (abs(pt(ihi)%e - pt(ilo)%e) <= 1.0e-12_wp * pt(ihi)%e) then
-            s = 'e = ' // peer_fmt(pt(ilo)%e, 6) // ' at every speed (' // pct(pt(ilo)%e / et - 1.0_wp) // &
+            s = 'e = ' // peer_fmt(pt(ilo)%e, 6) // ' at every speed (' // pct(pt(ilo)%e_error) // &
                 ' against the target ' // peer_fmt(et) // ')'
         else
             s = 'e from ' // peer_fmt(pt(ilo)%e, 6) // ' (u = ' // peer_fmt(pt(ilo)%u, 6) // ' m/s, ' // &
-                pct(pt(ilo)%e / et - 1.0_wp) // ') to ' // peer_fmt(pt(ihi)%e, 6) // ' (u = ' // &
-                peer_fmt(pt(ihi)%u, 6) // ' m/s, ' // pct(pt(ihi)%e / et - 1.0_wp) // '); target ' // peer_fmt(et)
+                pct(pt(ilo)%e_error) // ') to ' // peer_fmt(pt(ihi)%e, 6) // ' (u = ' // &
+                peer_fmt(pt(ihi)%u, 6) // ' m/s, ' // pct(pt(ihi)%e_error) // '); target ' // peer_fmt(et)
         end if
     end function achieved_text
 
-    !> A relative error as a signed percentage.
+    !> A relative difference x (finite) as a signed percentage, '+23.22 %', '-1.5e-3 %',
+    !> '+5e+301 %'; 'within 1e-6' below 5e-7 in magnitude.
     function pct(x, unsigned) result(s)
         real(wp), intent(in) :: x
         logical, intent(in), optional :: unsigned   !! no + sign
         character(len=:), allocatable :: s
-        character(len=24) :: b
+        character(len=32) :: b
+        integer :: ex, ios
         if (abs(x) < 5.0e-7_wp) then
-            s = 'exact to 1e-6'
-        else
-            write (b, '(sp,f16.2)') 100.0_wp * x
-            if (abs(100.0_wp * x) < 0.005_wp) write (b, '(sp,es9.2)') 100.0_wp * x
+            s = 'within 1e-6'
+            return
+        end if
+        if (abs(x) < 0.00005_wp) then
+            write (b, '(sp,es9.2)') 100.0_wp * x
             s = trim(adjustl(b)) // ' %'
-            if (present(unsigned)) then
-                if (unsigned .and. s(1:1) == '+') s = s(2:)
-            end if
+        else if (abs(x) < 1.0e6_wp) then
+            write (b, '(sp,f16.2)') 100.0_wp * x
+            s = trim(adjustl(b)) // ' %'
+        else
+            ! 100 x may overflow: the digits of x (d.ddd) with its exponent raised by 2
+            write (b, '(sp,es12.3e3)') x
+            read (b(9:12), *, iostat=ios) ex
+            if (ios /= 0) ex = -2   ! (not reached: es12.3e3 always writes the exponent there)
+            s = trim(adjustl(b(1:7))) // 'e' // itoa(ex + 2) // ' %'
+        end if
+        if (present(unsigned)) then
+            if (unsigned .and. s(1:1) == '+') s = s(2:)
         end if
     end function pct
 
@@ -405,14 +444,22 @@ contains
             if (pt(i)%p_corrected > pt(ihi)%p_corrected) ihi = i
         end do
         if (ilo == 0) then
+            ! the reason at the first speed with a result (there is one)
+            i = 1
+            do while (.not. row_has_result(row_kind(pt(i)%status)))
+                i = i + 1
+            end do
             s = 'no value of ' // deck%p_name // ' gives e = ' // peer_fmt(et) // ': '
-            select case (pt(1)%status_corrected)
+            select case (pt(i)%status_corrected)
             case (HD_OUTSIDE_VALIDITY)
-                s = s // 'the engine''s formula cannot produce alpha = ' // peer_fmt(pt(1)%alpha_target, 6)
+                s = s // 'the engine''s formula cannot produce alpha = ' // peer_fmt(pt(i)%alpha_target, 6)
             case (HD_BAD_RESTITUTION)
-                s = s // 'the target is outside the inverse''s range (e >= 1e-3 overlap, 1e-4 force)'
+                s = s // 'the target is below e = ' // peer_fmt(hertzdamp_fit_law_e_min(deck%law, deck%iend)) // &
+                    ', the end of the library''s fitted inverse for this law and contact end'
+            case (HD_OUT_OF_RANGE)
+                s = s // 'the value is outside the double-precision range (u = ' // peer_fmt(pt(i)%u, 6) // ' m/s)'
             case default
-                s = s // law_message(deck, pt(1)%status_corrected)
+                s = s // law_message(deck, pt(i)%status_corrected)
             end select
             return
         end if
@@ -466,7 +513,7 @@ contains
         type(out_table), intent(inout) :: t
         character(len=:), allocatable :: s
         integer :: i, ib
-        real(wp) :: dt_mfix
+        real(wp) :: dt_mfix, x
         ib = 0
         do i = 1, size(pt)
             if (pt(i)%status /= HD_OK) cycle
@@ -477,41 +524,79 @@ contains
             call t%meta('time step', 'no speed rebounds: no contact time')
             return
         end if
-        s = peer_itoa(steps) // ' steps per contact need dt <= ' // peer_fmt(pt(ib)%tc / steps, 6) // ' s (u = ' // &
+        s = itoa(steps) // ' steps per contact need dt <= ' // peer_fmt(pt(ib)%tc / steps, 6) // ' s (u = ' // &
             peer_fmt(pt(ib)%u, 6) // ' m/s gives the shortest contact, t_c = ' // peer_fmt(pt(ib)%tc, 6) // &
-            ' s); the elastic Hertz time there is ' // peer_fmt(pt(ib)%t_hertz, 6) // ' s, so the contact lasts ' // &
-            pct(abs(pt(ib)%tc / pt(ib)%t_hertz - 1.0_wp), unsigned=.true.)
-        if (pt(ib)%tc >= pt(ib)%t_hertz) then
-            s = s // ' longer than the elastic estimate'
+            ' s); the elastic Hertz time there is ' // peer_fmt(pt(ib)%t_hertz, 6) // ' s, so the contact lasts '
+        x = pt(ib)%tc / pt(ib)%t_hertz - 1.0_wp
+        if (abs(x) < 5.0e-7_wp) then
+            s = s // 'as long as the elastic estimate (within 1e-6)'
+        else if (x > 0.0_wp) then
+            s = s // pct(x, unsigned=.true.) // ' longer than the elastic estimate'
         else
-            s = s // ' shorter than the elastic estimate'
+            s = s // pct(-x, unsigned=.true.) // ' shorter than the elastic estimate'
         end if
         call t%meta('time step', s)
+        if (deck%tstep /= TSTEP_NONE .and. .not. ieee_is_finite(pt(ib)%t_peer)) then
+            call t%meta('engine time step', engine_estimate_missing(deck))
+            return
+        end if
         select case (deck%tstep)
         case (TSTEP_LIGGGHTS)
             s = 'LIGGGHTS fix check/timestep/gran estimates 2.87 (m_p^2/(r/2 Y*^2 v))^(1/5) = ' // &
                 peer_fmt(pt(ib)%t_peer, 6) // ' s at v = ' // trim(merge('2u', 'u ', deck%wall)) // &
-                ' (whole particle mass m_p, r/2): ' // pct(pt(ib)%t_peer / pt(ib)%tc - 1.0_wp) // ' against t_c'
+                ' (whole particle mass m_p, r/2): ' // against(pt(ib)%t_peer, pt(ib)%tc) // ' against t_c'
         case (TSTEP_MERCURY)
             s = 'MercuryDPM getCollisionTime(2r, rho, u) = 2.214 (rho^2/(E^2 u))^(1/5) 2r = ' // &
                 peer_fmt(pt(ib)%t_peer, 6) // ' s (elastic, identical spheres): ' // &
-                pct(pt(ib)%t_peer / pt(ib)%tc - 1.0_wp) // ' against t_c'
+                against(pt(ib)%t_peer, pt(ib)%tc) // ' against t_c'
         case (TSTEP_MFIX)
-            if (ieee_is_finite(pt(ib)%t_peer)) then
-                dt_mfix = pt(ib)%t_peer / deck%dt_factor
-                s = 'MFiX sets DTSOLID = TCOLL/DTSOLID_FACTOR with TCOLL = pi/sqrt(k/m - (eta/m)^2/4) = ' // &
-                    peer_fmt(pt(ib)%t_peer, 6) // ' s (a linear-spring period with the Hertz k and eta: the ' // &
-                    'units do not match); DTSOLID = ' // peer_fmt(dt_mfix, 6) // ' s gives ' // &
-                    peer_fmt(pt(ib)%tc / dt_mfix, 4) // ' steps per contact at u = ' // peer_fmt(pt(ib)%u, 6) // ' m/s'
+            dt_mfix = pt(ib)%t_peer / deck%dt_factor
+            x = pt(ib)%tc / dt_mfix
+            s = 'MFiX sets DTSOLID = TCOLL/DTSOLID_FACTOR with TCOLL = pi/sqrt(k/m - (eta/m)^2/4) = ' // &
+                peer_fmt(pt(ib)%t_peer, 6) // ' s (a linear-spring period with the Hertz k and eta: the ' // &
+                'units do not match); DTSOLID = ' // peer_fmt(dt_mfix, 6) // ' s gives '
+            if (ieee_is_finite(x) .and. x > 0.0_wp) then
+                s = s // peer_fmt(x, 4) // ' steps per contact at u = ' // peer_fmt(pt(ib)%u, 6) // ' m/s'
             else
-                s = 'MFiX TCOLL = pi/sqrt(k/m - (eta/m)^2/4) is not defined for this deck (zero or negative radicand): ' // &
-                    'MFiX''s DTSOLID would be NaN'
+                s = s // 'a number of steps per contact beyond double precision at u = ' // peer_fmt(pt(ib)%u, 6) // &
+                    ' m/s'
             end if
         case default
             s = 'the engine has no contact-time estimate of its own (doc/peers.md)'
         end select
         call t%meta('engine time step', s)
     end subroutine time_step_texts
+
+    !> Why the engine's own contact-time estimate is missing (NaN) for this deck.
+    function engine_estimate_missing(deck) result(s)
+        type(peer_deck), intent(in) :: deck
+        character(len=:), allocatable :: s
+        real(wp) :: g
+        select case (deck%tstep)
+        case (TSTEP_LIGGGHTS); s = 'LIGGGHTS fix check/timestep/gran estimates 2.87 (m_p^2/(r/2 Y*^2 v))^(1/5)'
+        case (TSTEP_MERCURY); s = 'MercuryDPM getCollisionTime(2r, rho, u) = 2.214 (rho^2/(E^2 u))^(1/5) 2r'
+        case default; s = 'MFiX TCOLL = pi/sqrt(k/m - (eta/m)^2/4)'
+        end select
+        g = peer_damping(deck, deck%p)
+        if (deck%tstep == TSTEP_MFIX .and. .not. 0.25_wp * g**2 < 1.0_wp) then
+            s = s // ' is not defined for this deck (zero or negative radicand): MFiX''s DTSOLID would be NaN'
+        else
+            s = s // ': outside the double-precision range for this deck'
+        end if
+    end function engine_estimate_missing
+
+    !> a against b as a signed percentage of a/b - 1 (both finite and positive).
+    function against(a, b) result(s)
+        real(wp), intent(in) :: a, b
+        character(len=:), allocatable :: s
+        real(wp) :: x
+        x = a / b - 1.0_wp
+        if (ieee_is_finite(x)) then
+            s = pct(x)
+        else
+            s = 'a ratio beyond double precision'
+        end if
+    end function against
 
     subroutine collect_warnings(deck, pt, warn)
         type(peer_deck), intent(in) :: deck
@@ -538,7 +623,7 @@ contains
             end if
         end do
         if (nno > 0) then
-            s = 'no rebound at ' // peer_itoa(nno) // ' of ' // peer_itoa(size(pt)) // ' speeds (up to u = ' // &
+            s = 'no rebound at ' // itoa(nno) // ' of ' // itoa(size(pt)) // ' speeds (up to u = ' // &
                 peer_fmt(umax, 6) // ' m/s): the overlap never returns to zero'
             if (hertzdamp_law_has_alpha_c(deck%law) .and. deck%iend == HD_END_OVERLAP) then
                 ac = hertzdamp_law_alpha_c(deck%law)
@@ -572,7 +657,11 @@ contains
         type(peer_point) :: q
         integer :: r, st, i
         character(len=:), allocatable :: msg
+        ! at the first speed with a result (there is one)
         i = 1
+        do while (.not. row_has_result(row_kind(pt(i)%status)))
+            i = i + 1
+        end do
         do r = LAMMPS_2021, LAMMPS_CURRENT
             if (r == release) cycle
             call peer_read_deck(PEER_LAMMPS, tokens, mat, r, other, st, msg)
@@ -587,8 +676,12 @@ contains
                 if (q%status == HD_NO_REBOUND) cycle
                 if (abs(q%e - pt(i)%e) <= 1.0e-12_wp .and. abs(q%tc - pt(i)%tc) <= 1.0e-12_wp * pt(i)%tc) cycle
             end if
-            note = [note, peer_text(other%version // ' gives e = ' // peer_fmt(q%e, 6) // ', t_c = ' // &
-                                    peer_fmt(q%tc, 6) // ' s at u = ' // peer_fmt(pt(i)%u, 6) // &
+            if (q%status == HD_NO_REBOUND) then
+                msg = ' gives no rebound'
+            else
+                msg = ' gives e = ' // peer_fmt(q%e, 6) // ', t_c = ' // peer_fmt(q%tc, 6) // ' s'
+            end if
+            note = [note, peer_text(other%version // msg // ' at u = ' // peer_fmt(pt(i)%u, 6) // &
                                     ' m/s for this deck (' // peer_spec_field(other%row, 'alpha_expr') // &
                                     '; ' // other%k_text // ')')]
         end do
@@ -892,23 +985,5 @@ contains
             i = j
         end do
     end subroutine split_words
-
-    real(wp) function positive(text, what) result(x)
-        character(len=*), intent(in) :: text, what
-        x = parse_real(text, what)
-        if (.not. x > 0.0_wp) call fail(EXIT_USAGE, what // ' ' // text // ': must be positive')
-    end function positive
-
-    !> Impact speeds: a sweep (numbers, A0:A1:N, A0:A1:logN), each positive.
-    function parse_speeds(text) result(u)
-        character(len=*), intent(in) :: text
-        real(wp), allocatable :: u(:)
-        integer :: i
-        u = parse_sweep(text, '--velocity')
-        do i = 1, size(u)
-            if (.not. u(i) > 0.0_wp) call fail(EXIT_USAGE, '--velocity ' // peer_fmt(u(i)) // &
-                                               ': impact speeds must be positive')
-        end do
-    end function parse_speeds
 
 end module hertzdamp_cmd_check

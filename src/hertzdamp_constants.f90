@@ -9,6 +9,9 @@ module hertzdamp_constants
 
     public :: hertzdamp_z_max0, hertzdamp_tau_c0, hertzdamp_e1, hertzdamp_beta
 
+    !> pi, for every module of the package and its applications (one definition).
+    real(wp), parameter, public :: hertzdamp_pi = acos(-1.0_wp)
+
     ! The closed forms, evaluated once by the compiler (log_gamma is allowed in
     ! constant expressions), so that the functions below cost nothing in hot loops.
     real(wp), parameter :: z_max0 = 1.25_wp**0.4_wp

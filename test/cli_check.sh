@@ -22,8 +22,9 @@ check "doc/peers.md table equals hertzdamp check --table" cmp -s "$TMP/doc_table
 run check --table --format csv
 check "check --table --format csv" test "$RC" -eq 0 -a "$(head -n 1 "$OUT")" = "id,law,end,formula,target,speed_ratio,e,status"
 
-# --- a value of a CSV column by name (row n, 1-based) from $OUT
-col() { python3 -c "import csv,sys; r=list(csv.DictReader(open(sys.argv[1]))); print(r[int(sys.argv[3])-1][sys.argv[2]])" "$OUT" "$1" "${2:-1}"; }
+# --- a value of a CSV column by name (row n, 1-based) from a file, or from $OUT
+colf() { python3 -c "import csv,sys; r=list(csv.DictReader(open(sys.argv[1]))); print(r[int(sys.argv[3])-1][sys.argv[2]])" "$1" "$2" "${3:-1}"; }
+col() { colf "$OUT" "$@"; }
 close() { python3 -c "import sys; a,b,t=map(float,sys.argv[1:]); sys.exit(0 if abs(a-b)<=t*abs(b) else 1)" "$@"; }
 
 # --- LAMMPS: the literal pair_coeff line (one argument) and the same words as separate arguments
@@ -31,7 +32,7 @@ run check lammps "pair_coeff 1 1 hertz/material 1e8 0.02 0.3 tangential linear_n
   --radius 1e-3 --density 2500 --velocity 0.01,1,5 --e 0.5 --format csv
 check "lammps pair_coeff line: exit 0" test "$RC" -eq 0
 check "lammps: csv header" test "$(head -n 1 "$OUT")" = \
-  "velocity,alpha,e,e_error,t_c,t_attractive,dt_max,t_hertz,t_peer,corrected,status"
+  "velocity,alpha,e,e_error,t_c,t_attractive,dt_max,t_hertz,t_peer,corrected,method,status"
 check "lammps: one row per speed" test "$(wc -l <"$OUT")" -eq 4
 cp "$OUT" "$TMP/words1"
 run check lammps hertz/material 1e8 0.02 0.3 tangential linear_nohistory 0 0.5 damping velocity \
@@ -81,6 +82,107 @@ run check lammps "hertz/material 1e8 0.02 0.3 damping velocity" --radius 1e-3 --
 check "json parses, 3 rows, cites the source file" python3 -c "
 import json,sys; d=json.load(open(sys.argv[1])); assert len(d['rows'])==3; assert 'gran_sub_mod_damping.cpp' in d['source']
 assert d['rows'][0]['t_peer'] is None" "$OUT"
+
+# --- the method of each row: the library's fitted maps, rk45 beyond their range; both
+# agree with the reference integrator (table --method rk45 at the row's alpha) for every
+# law and end: linear (velocity), tsuji (coeff_restitution), kuwabara-kono (viscoelastic)
+ref() {  # law end alpha -> "e tau_c" of table --method rk45
+  "$BIN" table --method rk45 --damping "$1" --end "$2" --alpha "$3" --format csv |
+    python3 -c "import csv,sys; r=next(csv.DictReader(sys.stdin)); print(r['e'], r['tau_c'])"
+}
+for deck in "lammps|hertz/material 1e8 0.02 0.3 damping velocity|linear" \
+            "lammps|hertz/material 1e8 0.3 0.3 damping coeff_restitution|tsuji" \
+            "lammps|hertz/material 1e8 3e8 0.3 damping viscoelastic|kuwabara-kono"; do
+  IFS='|' read -r eng words law <<<"$deck"
+  for lim in "" " limit_damping"; do
+    end=overlap; [ -n "$lim" ] && end=force
+    run check "$eng" "$words$lim" --radius 1e-3 --density 2500 --velocity 0.01,1,1e7 --e 0.5 --format csv
+    cp "$OUT" "$TMP/m.csv"
+    for row in 1 2 3; do
+      a=$(colf "$TMP/m.csv" alpha $row); e=$(colf "$TMP/m.csv" e $row); st=$(colf "$TMP/m.csv" status $row)
+      me=$(colf "$TMP/m.csv" method $row)
+      # tau_c = t_c / t* = tau_c(0) t_c / t_hertz
+      ts=$(python3 -c "import sys; print(float(sys.argv[1]) / float(sys.argv[2]) * 3.2180654597190431)" \
+        "$(colf "$TMP/m.csv" t_c $row)" "$(colf "$TMP/m.csv" t_hertz $row)" 2>/dev/null)
+      if [ "$st" = ok ]; then
+        read -r er tr <<<"$(ref "$law" "$end" "$a")"
+        check "$law $end row $row ($me): e = rk45 at alpha $a to 1e-10 ($e vs $er)" close "$e" "$er" 1e-10
+        check "$law $end row $row ($me): t_c/t* = rk45 tau_c to 1e-10 ($ts vs $tr)" close "$ts" "$tr" 1e-10
+      else
+        check "$law $end row $row: status $st is no-rebound (a law with alpha_c, overlap end)" \
+          test "$st" = no-rebound -a "$law" != kuwabara-kono -a "$end" = overlap
+      fi
+    done
+  done
+done
+run check lammps "hertz/material 1e8 3e8 0.3 damping viscoelastic" --radius 1e-3 --density 2500 --velocity 1,1e7 \
+  --e 0.5 --format csv
+check "kuwabara-kono overlap: fit within the fitted range (alpha 0.5), rk45 beyond (alpha 21)" \
+  test "$(col method 1) $(col method 2)" = "fit rk45"
+run check lammps "hertz/material 1e8 3e8 0.3 damping viscoelastic" --radius 1e-3 --density 2500 --velocity 1,1e7 --e 0.5
+check "the method line counts the rows of each method" grep -q '^# method: fit .* at 1 of 2 speeds; rk45 .* at 1 of 2 speeds' "$OUT"
+
+# --- row statuses and exit codes (hertzdamp_cli_rows: exit 0 when every row has a
+# result, 3 or 4 with the table and one line on stderr when some have none, nothing on
+# stdout when none has)
+run check lammps "hertz/material 1e8 0.5 0.3 damping viscoelastic" --radius 1e-3 --density 2500 --velocity 1,1e100 \
+  --e 0.5 --format csv
+check "a speed whose computation fails (rk45 step limit): exit 4, the table, one line naming --velocity 1e100" \
+  test "$RC" -eq 4 -a "$(wc -l <"$OUT")" -eq 3 -a "$(wc -l <"$ERR")" -eq 1 -a "$(grep -c -- '--velocity 1e100' "$ERR")" -eq 1
+check "the failed row: status failed, results empty" test "$(col status 2),$(col e 2),$(col t_c 2)" = "failed,,"
+expect_fail 3 "every speed out of range (e/e_target - 1 beyond double precision)" \
+  check yade young=1e7 poisson=0.3 en=0.5 --radius 1e-3 --density 2500 --velocity 1,2 --e 1e-320
+check "message names e/e_target: $(cat "$ERR")" grep -q 'e/e_target - 1 .* outside the double-precision range' "$ERR"
+# an overdamped linear deck: alpha = 1e111 (and 1e191 with t* = 1e187 s) is no rebound
+run check lammps "hertz 1e-320 1 damping velocity" --radius 1e-3 --density 2500 --velocity 1e-300,1 --e 0.5 \
+  --format csv
+check "overdamped linear overlap: no rebound at every speed, exit 0" \
+  test "$RC" -eq 0 -a "$(col status 1) $(col status 2)" = "no-rebound no-rebound"
+# the same with the force end: no method takes alpha > 1e100 (exit 3, outside-validity)
+expect_fail 3 "overdamped linear force end: outside every method" \
+  check lammps "hertz 1e-320 1 damping velocity limit_damping" --radius 1e-3 --density 2500 --velocity 1 --e 0.5
+check "message: the largest alpha any method takes ($(cat "$ERR"))" grep -q 'largest alpha any method takes' "$ERR"
+# values beyond double precision are never printed as inf: the engine's estimate and
+# the corrected value are left empty with the reason
+run check mercurydpm setEffectiveElasticModulusAndRestitutionCoefficient=1e-300,0.5 --radius 1e-3 --density 2500 \
+  --velocity 1 --format csv
+tp=$(col t_peer)
+want=$(python3 -c "print(2.214 * (2500 / 1e-300)**0.4 * 1.0**-0.2 * 2 * 1e-3)")   # (rho/E)^(2/5) u^(-1/5) 2r
+check "MercuryDPM estimate with E = 1e-300: finite, 2.214 (rho^2/(E^2 u))^(1/5) 2r ($tp vs $want)" close "$tp" "$want" 1e-12
+run check lammps "hertz 2e7 0" --radius 1e-100 --radius2 1e-3 --density 2500 --velocity 1 --e 0.5
+check "corrected value beyond double precision: said so, exit 0" \
+  test "$RC" -eq 0 -a "$(grep -c '^# corrected: no value .*outside the double-precision range' "$OUT")" -eq 1
+# no inf and no NaN in any report but the contact time of a no-rebound row
+for f in text csv json; do
+  run check lammps "hertz 1e7 1e110 damping velocity" --radius 1e-3 --density 2500 --velocity 1,1e300 --e 0.5 --format $f
+  check "no-rebound deck, $f: no nan, inf only as t_c" python3 - "$f" "$OUT" <<'PYEOF'
+import csv, io, json, re, sys
+fmt, path = sys.argv[1], sys.argv[2]
+text = open(path).read()
+if fmt == "json":
+    doc = json.loads(text)   # Python reads NaN and Infinity: refuse them, and in the strings
+    meta = " ".join(v for v in doc.values() if isinstance(v, str))
+    sys.exit(1 if re.search(r"\bNaN\b|Infinity", text) or re.search(r"\b(nan|inf)\b", meta, re.I) else 0)
+lines = [l for l in text.splitlines() if not l.startswith("#")]
+if fmt == "csv":
+    rows = list(csv.DictReader(io.StringIO("\n".join(lines))))
+else:
+    head = lines[0].split(); rows = [dict(zip(head, l.split())) for l in lines[1:]]
+    if re.search(r"\b(nan|inf|infinity)\b", "".join(l for l in text.splitlines() if l.startswith("#")), re.I):
+        sys.exit(1)
+for r in rows:
+    for k, v in r.items():
+        if re.match(r"^[-+]?(nan|inf)", v or "", re.I) and not (k == "t_c" and r["status"] == "no-rebound"):
+            sys.exit(1)
+PYEOF
+done
+
+# --progress: progress on stderr, the same stdout
+run check yade young=1e7 poisson=0.3 en=0.5 --radius 1e-3 --density 2500 --velocity 0.1:1:50 --format csv
+cp "$OUT" "$TMP/noprog"
+run check yade young=1e7 poisson=0.3 en=0.5 --radius 1e-3 --density 2500 --velocity 0.1:1:50 --format csv --progress
+check "--progress: exit 0, stdout unchanged, progress on stderr" \
+  bash -c "[ $RC -eq 0 ] && cmp -s '$OUT' '$TMP/noprog' && grep -q 'check' '$ERR'"
 
 # --- every engine's syntax is read (the law may still be missing from the library: exit 0 or 4)
 for args in \
@@ -162,5 +264,19 @@ bad '--density' check yade young=1e7 poisson=0.3 en=0.5 --radius 1e-3 --density 
 bad '--bogus' check yade young=1e7 poisson=0.3 en=0.5 $M --bogus 1
 bad '--radius' check yade young=1e7 poisson=0.3 en=0.5 $M --radius 2e-3
 bad '--table' check --table lammps
+}
+
+# --- options through the shared parser and contact options (as invert, forward, timestep)
+M1="--density 2500 --velocity 1"
+# shellcheck disable=SC2086
+{
+bad '--radius2' check yade young=1e7 poisson=0.3 en=0.5 --radius 1e-3 $M1 --wall --radius2 1
+bad '--density2' check yade young=1e7 poisson=0.3 en=0.5 --radius 1e-3 $M1 --wall --density2 1
+bad '--radius' check yade young=1e7 poisson=0.3 en=0.5 --radius2 1e-3 $M1
+bad '--radius' check yade young=1e7 poisson=0.3 en=0.5 --radius 0 $M1
+bad '--wall' check yade young=1e7 poisson=0.3 en=0.5 --radius 1e-3 $M1 --wall=1
+bad '--velocity' check yade young=1e7 poisson=0.3 en=0.5 --radius 1e-3 --density 2500 --velocity
+bad '--format' check yade young=1e7 poisson=0.3 en=0.5 --radius 1e-3 $M1 --format xml
+bad '--release' check yade young=1e7 poisson=0.3 en=0.5 --radius 1e-3 $M1 --release 2021
 }
 finish

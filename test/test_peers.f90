@@ -8,7 +8,14 @@
 !> - zeta^(1/4) damping with the overlap end and gamma = sqrt(5) beta(e): e = target
 !>   to 1e-10 (the closed form of Antypov & Elliott 2011);
 !> - the corrected parameter, fed back as a deck, gives the target e;
-!> - the engines' own contact-time estimates against the exact elastic Hertz time;
+!> - the engines' own contact-time estimates against the exact elastic Hertz time, also
+!>   where E^2 alone would overflow;
+!> - the maps check uses (the library's fitted maps, rk45 beyond them) against the
+!>   reference integrator at tol 1e-14, for every law and end; the fit wherever e >= 1e-4;
+!> - an overdamped deck whose alpha double precision cannot hold: no rebound exactly
+!>   where the law has alpha_c and the overlap end;
+!> - decks scaled by up to 1e+-300: no infinity and no NaN result (only the contact time
+!>   of a point without rebound is infinite; a value beyond range is a status);
 !> - bad decks give an error naming the key.
 program test_peers
     use hertzdamp
@@ -17,9 +24,10 @@ program test_peers
     use hertzdamp_test_expr, only: expr_vars, expr_eval
     use hertzdamp_testing, only: test_suite, new_suite, rel_err
     use, intrinsic :: iso_fortran_env, only: real32, int64
+    use, intrinsic :: ieee_arithmetic, only: ieee_is_finite, ieee_is_nan
     implicit none
     integer, parameter :: wp = hertzdamp_rk
-    real(wp), parameter :: pi = acos(-1.0_wp)
+    real(wp), parameter :: pi = hertzdamp_pi
 
     !> One generated case: the deck tokens and what the test expects.
     type :: case_t
@@ -46,6 +54,9 @@ program test_peers
     call test_closed_form()
     call test_corrected()
     call test_time_estimates()
+    call test_maps()
+    call test_overdamped()
+    call test_extremes()
     call test_bad_decks()
     call s%finish()
 
@@ -589,6 +600,15 @@ contains
             call s%check_close(pt%t_peer / pt%t_hertz, g, 1.0e-12_wp, &
                                'LIGGGHTS fix check/timestep/gran against the elastic Hertz time')
         end do
+        ! the same with E* 1e296 times smaller and larger (E*^2 alone is beyond double precision)
+        do i = -1, 1, 2
+            call s%check_close(scaled_ratio('mercurydpm-restitution-overlap', 10.0_wp**(296 * i)), &
+                               2.214_wp / (ce * (pi**2 / 36.0_wp)**0.2_wp), 1.0e-12_wp, &
+                               'MercuryDPM getCollisionTime with E* scaled by 1e' // trim(merge('+296', '-296', i > 0)))
+            call s%check_close(scaled_ratio('liggghts-hertz-overlap', 10.0_wp**(296 * i)), 2.87_wp / ce * 4.0_wp**0.2_wp, &
+                               1.0e-12_wp, 'LIGGGHTS check/timestep/gran with E* scaled by 1e' // &
+                               trim(merge('+296', '-296', i > 0)))
+        end do
         call s%check_close(2.87_wp / ce * 4.0_wp**0.2_wp, 1.32_wp, 5.0e-3_wp, &
                            'LIGGGHTS estimate is 1.32 times the Hertz time for a pair (doc/peers.md)')
         ! MFiX TCOLL = pi / sqrt(k/m - (eta/m)^2/4), eta = 2 beta(e) sqrt(k m)
@@ -599,6 +619,217 @@ contains
         call s%check_close(pt%t_peer, pi / sqrt(deck%k / deck%m * (1.0_wp - g**2)), 1.0e-13_wp, &
                            'MFiX TCOLL with DES_ETAN = 2 beta(e) sqrt(k m)')
     end subroutine test_time_estimates
+
+    !> t_peer/t_hertz of a deck of two equal spheres of row `id` with E* and k scaled by f.
+    real(wp) function scaled_ratio(id, f) result(ratio)
+        character(len=*), intent(in) :: id
+        real(wp), intent(in) :: f
+        type(case_t) :: c
+        type(peer_deck) :: deck
+        type(peer_point) :: pt
+        integer :: st
+        character(len=:), allocatable :: msg
+        call make_case(id, c)
+        c%mat%radius(2) = c%mat%radius(1)
+        c%mat%density(2) = c%mat%density(1)
+        c%mat%wall = .false.
+        call read_case(c, deck, st, msg)
+        deck%e_star = deck%e_star * f
+        deck%k = deck%k * f
+        pt = peer_evaluate(deck, getv(c, 'u'), 0.5_wp)
+        ratio = pt%t_peer / pt%t_hertz
+    end function scaled_ratio
+
+    ! ------------------------------------------------------------------ the maps of check
+
+    !> peer_law_forward (fit, rk45 beyond the fitted range) and peer_law_inverse (fit)
+    !> against the reference integrator at tol 1e-14, every law and contact end.
+    subroutine test_maps()
+        integer, parameter :: laws(3) = [HD_DAMPING_LINEAR, HD_DAMPING_TSUJI, HD_DAMPING_KUWABARA_KONO]
+        real(wp), parameter :: alphas(17) = [0.0_wp, 1.0e-3_wp, 0.05_wp, 0.3_wp, 0.7_wp, 1.0_wp, 1.12_wp, &
+                                             1.1279_wp, 1.12797_wp, 1.5_wp, 2.2_wp, 3.0_wp, 8.0_wp, 14.0_wp, 40.0_wp, &
+                                             300.0_wp, 1500.0_wp]
+        real(wp), parameter :: targets(10) = [1.0e-4_wp, 1.0e-3_wp, 0.01_wp, 0.1_wp, 0.3_wp, 0.5_wp, 0.7_wp, &
+                                              0.9_wp, 0.999_wp, 1.0_wp]
+        type(hertzdamp_collision) :: r
+        real(wp) :: e, tau, a, tau_i
+        integer :: k, iend, j, st, meth, nbad, nfit_bad, nrk, nbad_inv, ninv
+        character(len=:), allocatable :: label
+        do k = 1, size(laws)
+            do iend = HD_END_OVERLAP, HD_END_FORCE
+                label = hertzdamp_law_name(laws(k)) // ' ' // hertzdamp_end_name(iend)
+                nbad = 0
+                nfit_bad = 0
+                nrk = 0
+                do j = 1, size(alphas)
+                    call peer_law_forward(laws(k), alphas(j), iend, e, tau, st, meth)
+                    r = hertzdamp_rk45_collide(alphas(j), iend, tol=1.0e-14_wp, law=laws(k))
+                    if (meth == HD_METHOD_RK45) nrk = nrk + 1
+                    if (st /= r%status) then
+                        nbad = nbad + 1
+                        print '(a,es10.3,2(1x,i0))', '  ' // label // ': status differs at alpha', alphas(j), st, r%status
+                    else if (st == HD_OK) then
+                        if (abs(e - r%e) > 1.0e-10_wp * max(r%e, 1.0e-3_wp) .or. rel_err(tau, r%tau_c) > 1.0e-10_wp) then
+                            nbad = nbad + 1
+                            print '(a,es10.3,2es12.4)', '  ' // label // ': e, tau_c differ at alpha', alphas(j), &
+                                e - r%e, tau - r%tau_c
+                        end if
+                        ! e >= 1e-4 lies inside every fitted forward range (doc/damping-laws.md)
+                        if (r%e >= 1.0e-4_wp .and. meth /= HD_METHOD_FIT) nfit_bad = nfit_bad + 1
+                    else if (st == HD_NO_REBOUND) then
+                        if (.not. (e == 0.0_wp .and. tau > huge(tau))) nbad = nbad + 1
+                    end if
+                end do
+                call s%check(nbad == 0, label // ': check''s forward map = rk45 at tol 1e-14 (e to 1e-10 of ' // &
+                             'max(e, 1e-3), tau_c to 1e-10, the same status) for alpha 0 ... 1500')
+                call s%check(nfit_bad == 0, label // ': the fitted map wherever e >= 1e-4')
+                print '(a,i0,a)', '  ' // label // ': ', nrk, ' of 17 alphas beyond the fitted range (rk45)'
+                ! the inverse: e(alpha(e)) = e on the reference integrator; the fit's range as documented
+                nbad_inv = 0
+                ninv = 0
+                do j = 1, size(targets)
+                    call peer_law_inverse(laws(k), targets(j), iend, a, st)
+                    if (targets(j) < hertzdamp_fit_law_e_min(laws(k), iend)) then
+                        if (st /= HD_BAD_RESTITUTION) nbad_inv = nbad_inv + 1
+                        cycle
+                    end if
+                    ninv = ninv + 1
+                    r = hertzdamp_rk45_collide(a, iend, tol=1.0e-14_wp, law=laws(k))
+                    call hertzdamp_invert_alpha(targets(j), iend, e, tau_i, st, law=laws(k))
+                    if (st /= HD_OK .or. r%status /= HD_OK .or. &
+                        abs(r%e - targets(j)) > 1.0e-10_wp * max(targets(j), 1.0e-3_wp)) then
+                        nbad_inv = nbad_inv + 1
+                        print '(a,2es12.4)', '  ' // label // ': target, e(alpha(target)) on rk45', targets(j), r%e
+                    end if
+                end do
+                call s%check(nbad_inv == 0 .and. ninv >= 8, label // ': e(alpha(e)) = e on rk45 at tol 1e-14 ' // &
+                             '(1e-10 of max(e, 1e-3)), targets below the fit''s e_min refused')
+            end do
+        end do
+    end subroutine test_maps
+
+    !> alpha beyond double precision: no rebound (e = 0, t_c = +inf) exactly for the
+    !> laws with alpha_c (linear, tsuji) at the overlap end (alpha >= alpha_c: the overlap
+    !> never returns, doc/theory.md section 3); otherwise no result, never an error of the input.
+    subroutine test_overdamped()
+        type(case_t) :: c
+        type(peer_deck) :: deck
+        type(peer_point) :: pt
+        integer :: st, iend
+        character(len=:), allocatable :: msg, id
+        real(wp) :: u
+        do iend = HD_END_OVERLAP, HD_END_FORCE
+            ! linear: LAMMPS velocity with eta_n0 = 1e300 at u = 1e-300 (alpha ~ 1e360)
+            id = 'lammps-2021-velocity-' // trim(merge('overlap', 'force  ', iend == HD_END_OVERLAP))
+            call make_case(id, c, coef=1.0e300_wp)
+            call read_case(c, deck, st, msg)
+            u = 1.0e-300_wp
+            pt = peer_evaluate(deck, u, 0.5_wp)
+            if (iend == HD_END_OVERLAP) then
+                call s%check(pt%status == HD_NO_REBOUND .and. pt%e == 0.0_wp .and. pt%tc > huge(1.0_wp) .and. &
+                             ieee_is_nan(pt%alpha), 'linear overlap, alpha ~ 1e360: no rebound, alpha not representable')
+            else
+                call s%check(pt%status == HD_OUT_OF_RANGE .and. ieee_is_nan(pt%e) .and. ieee_is_nan(pt%tc), &
+                             'linear force, alpha ~ 1e360: out of range (the force end always rebounds)')
+            end if
+            ! linear, alpha = 1e150 (representable, beyond every method): the fit's no rebound / outside
+            call make_case(id, c, coef=1.0_wp)
+            call read_case(c, deck, st, msg)
+            deck%p = 1.0e150_wp * deck%m / (deck%m / (deck%k * sqrt(1.0_wp)))**0.4_wp
+            pt = peer_evaluate(deck, 1.0_wp, 0.5_wp)
+            call s%check_close(pt%alpha, 1.0e150_wp, 1.0e-12_wp, 'linear, eta_n0 for alpha = 1e150')
+            if (iend == HD_END_OVERLAP) then
+                call s%check(pt%status == HD_NO_REBOUND .and. pt%method == HD_METHOD_FIT, &
+                             'linear overlap, alpha = 1e150: no rebound (fit: alpha >= alpha_c)')
+            else
+                call s%check(pt%status == HD_OUTSIDE_VALIDITY, &
+                             'linear force, alpha = 1e150: outside every method (not an input error)')
+            end if
+            ! kuwabara-kono (no alpha_c): never no rebound
+            id = 'lammps-2021-viscoelastic-' // trim(merge('overlap', 'force  ', iend == HD_END_OVERLAP))
+            call make_case(id, c, coef=1.0e300_wp)
+            call read_case(c, deck, st, msg)
+            pt = peer_evaluate(deck, 1.0e300_wp, 0.5_wp)
+            call s%check(pt%status == HD_OUT_OF_RANGE, 'kuwabara-kono ' // hertzdamp_end_name(iend) // &
+                         ', alpha beyond double precision: out of range (the law has no alpha_c)')
+        end do
+    end subroutine test_overdamped
+
+    !> Every row, decks scaled by up to 1e+-300 (mass, stiffness, radius, modulus, density,
+    !> the damping input), speeds 1e-300 ... 1e300, targets down to 1e-320: every number
+    !> of the point is finite or NaN (t_c = +inf only without rebound), and a point with a
+    !> result has its results; a value beyond range is said (beyond, status_corrected).
+    subroutine test_extremes()
+        type(case_t) :: c
+        type(peer_deck) :: deck
+        type(peer_point) :: pt
+        integer :: row, i, st, nbad, nres, nout, nnr
+        real(wp) :: f, et
+        character(len=:), allocatable :: msg, id
+        nres = 0
+        nout = 0
+        nnr = 0
+        do row = 1, peer_spec_count
+            id = peer_spec_field(row, 'id')
+            nbad = 0
+            do i = 1, 40
+                call make_case(id, c)
+                call read_case(c, deck, st, msg)
+                if (st /= HD_OK) cycle
+                f = 10.0_wp**(600.0_wp * rnd() - 300.0_wp)
+                deck%m = deck%m * 10.0_wp**(200.0_wp * rnd() - 100.0_wp)
+                deck%m_damp = deck%m
+                deck%k = deck%k * f
+                deck%e_star = deck%e_star * f
+                deck%mass1 = deck%mass1 * 10.0_wp**(200.0_wp * rnd() - 100.0_wp)
+                deck%radius1 = deck%radius1 * 10.0_wp**(200.0_wp * rnd() - 100.0_wp)
+                deck%radius = deck%radius * 10.0_wp**(200.0_wp * rnd() - 100.0_wp)
+                deck%density1 = deck%density1 * 10.0_wp**(200.0_wp * rnd() - 100.0_wp)
+                select case (deck%coef)
+                case (COEF_D, COEF_D_MASS, COEF_D_MASS_SQRT_R, COEF_D_MASS_R, COEF_GAMMA, COEF_GAMMA_SQRT6)
+                    deck%p = deck%p * 10.0_wp**(400.0_wp * rnd() - 200.0_wp)
+                case default
+                end select
+                et = merge(10.0_wp**(-320.0_wp * rnd()), rnd(), rnd() < 0.3_wp)
+                if (.not. et > 0.0_wp) et = 0.5_wp
+                pt = peer_evaluate(deck, 10.0_wp**(600.0_wp * rnd() - 300.0_wp), et)
+                if (.not. point_ok(pt)) then
+                    nbad = nbad + 1
+                    print '(a,i0,a,5es11.3)', '  ' // id // ': status ', pt%status, ' alpha, e, tc, t_peer, p', &
+                        pt%alpha, pt%e, pt%tc, pt%t_peer, pt%p_corrected
+                end if
+                if (pt%status == HD_OK) nres = nres + 1
+                if (pt%status == HD_NO_REBOUND) nnr = nnr + 1
+                if (pt%status == HD_OUT_OF_RANGE) nout = nout + 1
+            end do
+            call s%check(nbad == 0, id // ': decks scaled by 1e+-300: no infinity, no NaN result, statuses said')
+        end do
+        print '(a,3(i0,a))', 'extreme decks: ', nres, ' ok, ', nnr, ' no rebound, ', nout, ' out of range'
+        call s%check(nres > 0 .and. nnr > 0 .and. nout > 0, 'extreme decks reach ok, no rebound and out of range')
+    end subroutine test_extremes
+
+    !> The invariants of a point: finite or NaN, +inf only as the contact time of no rebound.
+    logical function point_ok(pt) result(ok)
+        type(peer_point), intent(in) :: pt
+        real(wp) :: v(11)
+        logical :: have
+        v = [pt%u, pt%alpha, pt%tstar, pt%e, pt%e_error, pt%t_force, pt%t_hertz, pt%t_peer, pt%alpha_target, &
+             pt%p_corrected, pt%tc]
+        ok = all(ieee_is_finite(v(1:10)) .or. ieee_is_nan(v(1:10)))
+        have = pt%status == HD_OK .or. pt%status == HD_NO_REBOUND
+        if (pt%status == HD_NO_REBOUND) then
+            ok = ok .and. pt%tc > huge(1.0_wp) .and. pt%e == 0.0_wp .and. pt%e_error == -1.0_wp
+        else
+            ok = ok .and. (ieee_is_finite(pt%tc) .or. ieee_is_nan(pt%tc))
+        end if
+        if (pt%status == HD_OK) then
+            ok = ok .and. all(ieee_is_finite([pt%alpha, pt%tstar, pt%e, pt%e_error, pt%tc, pt%t_hertz])) .and. &
+                 pt%e >= 0.0_wp .and. pt%e <= 1.0_wp .and. pt%tc > 0.0_wp
+        end if
+        if (.not. have) ok = ok .and. ieee_is_nan(pt%e) .and. ieee_is_nan(pt%tc) .and. pt%status_corrected /= HD_OK
+        if (pt%status == HD_OUT_OF_RANGE) ok = ok .and. allocated(pt%beyond)
+        if (pt%status_corrected == HD_OK) ok = ok .and. ieee_is_finite(pt%p_corrected) .and. have
+    end function point_ok
 
     ! ------------------------------------------------------------------ bad decks
 

@@ -15,23 +15,27 @@
 !> restated here; the test test/test_peers.f90 checks every COEF_* formula against the
 !> row's `alpha_expr`, evaluated by an independent expression evaluator.
 !>
-!> The numbers come from the library: the reference integrator for e(alpha), tau_c(alpha)
-!> and the fitted inverse for alpha(e) (`peer_law_forward`, `peer_law_inverse`).
+!> The numbers come from the library: its fitted maps of every law and contact end,
+!> e(alpha), tau_c(alpha) (`peer_law_forward`; the reference integrator beyond the
+!> fitted range) and alpha(e) (`peer_law_inverse`).  A quantity that double precision
+!> cannot hold is never returned as inf: the point gets HD_OUT_OF_RANGE (its own
+!> results) or NaN with a status (the engine's estimate, the corrected parameter).
 module hertzdamp_peers
-    use hertzdamp, only: hertzdamp_rk, hertzdamp_collision, hertzdamp_rk45_collide, hertzdamp_invert_alpha, &
-                         hertzdamp_tau_c0, hertzdamp_law_q, hertzdamp_tsuji_alpha, hertzdamp_tsuji_e, &
-                         hertzdamp_fit_e_min_overlap, hertzdamp_fit_e_min_force, &
-                         HD_DAMPING_LINEAR, HD_DAMPING_TSUJI, HD_DAMPING_KUWABARA_KONO, &
-                         HD_OK, HD_NO_REBOUND, HD_BAD_ARGUMENT, &
-                         HD_BAD_RESTITUTION, HD_OUT_OF_RANGE, HD_OUTSIDE_VALIDITY, HD_END_OVERLAP, HD_END_FORCE
+    use hertzdamp, only: hertzdamp_rk, hertzdamp_collision, hertzdamp_forward_alpha, hertzdamp_invert_alpha, &
+                         hertzdamp_tau_c0, hertzdamp_law_q, hertzdamp_law_has_alpha_c, hertzdamp_law_alpha_c, &
+                         hertzdamp_pi, &
+                         HD_DAMPING_LINEAR, HD_DAMPING_TSUJI, HD_DAMPING_KUWABARA_KONO, HD_METHOD_FIT, HD_METHOD_RK45, &
+                         HD_OK, HD_NO_REBOUND, HD_BAD_ARGUMENT, HD_BAD_ALPHA, &
+                         HD_OUT_OF_RANGE, HD_OUTSIDE_VALIDITY, HD_END_OVERLAP, HD_END_FORCE
+    use hertzdamp_fit_data, only: fit_law_e_min_forward
     use hertzdamp_peers_data, only: peer_spec_field, peer_spec_row, peer_spec_count
-    use, intrinsic :: ieee_arithmetic, only: ieee_value, ieee_quiet_nan, ieee_is_finite
+    use, intrinsic :: ieee_arithmetic, only: ieee_value, ieee_quiet_nan, ieee_positive_inf, ieee_is_finite
     use, intrinsic :: iso_fortran_env, only: real32
     implicit none
     private
 
     integer, parameter :: wp = hertzdamp_rk
-    real(wp), parameter :: pi = acos(-1.0_wp)
+    real(wp), parameter :: pi = hertzdamp_pi
 
     !> The engines, in the order of `peer_names`.
     integer, parameter, public :: PEER_LAMMPS = 1, PEER_LIGGGHTS = 2, PEER_MERCURYDPM = 3, PEER_YADE = 4, &
@@ -97,20 +101,27 @@ module hertzdamp_peers
         type(peer_text), allocatable :: notes(:)  !! remarks on the deck (version, geometry, ...)
     end type peer_deck
 
-    !> The deck at one impact speed.  Quantities that do not apply are NaN.
+    !> The deck at one impact speed.  Quantities that do not apply, or that double
+    !> precision cannot hold, are NaN; every other value is finite but tc = +inf of a
+    !> point without rebound.
     type, public :: peer_point
         real(wp) :: u = 0.0_wp          !! impact speed [m s^-1]
         real(wp) :: alpha = 0.0_wp      !! damping parameter of the model
         real(wp) :: tstar = 0.0_wp      !! time unit t* [s]
         real(wp) :: e = 0.0_wp          !! achieved restitution coefficient
+        real(wp) :: e_error = 0.0_wp    !! e/e_target - 1
         real(wp) :: tc = 0.0_wp         !! contact time [s] (+inf: no rebound)
         real(wp) :: t_force = 0.0_wp    !! overlap end: time at which the total force turns attractive [s]
         real(wp) :: t_hertz = 0.0_wp    !! elastic Hertz contact time tau_c(0) t* [s]
         real(wp) :: t_peer = 0.0_wp     !! the engine's own contact-time estimate [s]
         real(wp) :: alpha_target = 0.0_wp !! alpha that gives the target e
         real(wp) :: p_corrected = 0.0_wp !! the engine's parameter that gives the target e
-        integer :: status = HD_OK       !! HD_OK, HD_NO_REBOUND or an error of the forward map
+        integer :: method = 0           !! HD_METHOD_FIT or HD_METHOD_RK45: what gave e and tc (0: neither)
+        integer :: status = HD_OK       !! HD_OK, HD_NO_REBOUND or why the point has no result
+                                        !! (HD_OUT_OF_RANGE: alpha, t*, tc, t_hertz or e_error
+                                        !! beyond double precision; an error of the forward map)
         integer :: status_corrected = HD_OK !! HD_OK, or why there is no corrected parameter
+        character(len=:), allocatable :: beyond  !! HD_OUT_OF_RANGE: the quantity beyond double precision
     end type peer_point
 
     public :: peer_law_forward, peer_law_inverse
@@ -184,123 +195,47 @@ contains
         end select
     end function peer_row_coef
 
-    !> e(alpha) and tau_c(alpha) of a law and contact end, by the library's reference
-    !> integrator (hertzdamp_rk45_collide with the law).
-    pure subroutine peer_law_forward(law, alpha, iend, e, tau_c, status)
+    !> e(alpha) and tau_c(alpha) of a law and contact end: the library's fitted forward
+    !> map (hertzdamp_forward_alpha with HD_METHOD_FIT), and its reference integrator
+    !> (HD_METHOD_RK45) beyond the fitted range (the fit gives HD_OUTSIDE_VALIDITY there,
+    !> or, linear overlap end, e below 1e-5 from its extrapolation towards alpha_c).
+    !> alpha beyond what any method takes (hertzdamp_alpha_max): HD_OUTSIDE_VALIDITY.
+    pure subroutine peer_law_forward(law, alpha, iend, e, tau_c, status, method)
         integer, intent(in) :: law       !! HD_DAMPING_*
-        real(wp), intent(in) :: alpha    !! damping parameter
+        real(wp), intent(in) :: alpha    !! damping parameter, >= 0
         integer, intent(in) :: iend      !! HD_END_OVERLAP or HD_END_FORCE
         real(wp), intent(out) :: e       !! restitution coefficient (0: no rebound)
         real(wp), intent(out) :: tau_c   !! contact duration in units of t* (+inf: no rebound)
         integer, intent(out) :: status   !! HD_OK, HD_NO_REBOUND or an error
+        integer, intent(out), optional :: method  !! HD_METHOD_FIT or HD_METHOD_RK45: the one used
         type(hertzdamp_collision) :: r
-        r = hertzdamp_rk45_collide(alpha, iend, law=law)
+        integer :: used
+        used = HD_METHOD_FIT
+        r = hertzdamp_forward_alpha(alpha, iend, HD_METHOD_FIT, law=law)
+        if (r%status == HD_OUTSIDE_VALIDITY .or. (r%status == HD_OK .and. r%e < fit_law_e_min_forward)) then
+            used = HD_METHOD_RK45
+            r = hertzdamp_forward_alpha(alpha, iend, HD_METHOD_RK45, law=law)
+        end if
         status = r%status
+        ! a finite alpha the integrator refuses (beyond hertzdamp_alpha_max): no method has it
+        if (status == HD_BAD_ALPHA .and. alpha >= 0.0_wp .and. alpha <= huge(alpha)) status = HD_OUTSIDE_VALIDITY
         e = r%e
         tau_c = r%tau_c
+        if (present(method)) method = used
     end subroutine peer_law_forward
 
-    !> alpha(e) of a law and contact end: the library's fitted inverse (linear), the
-    !> closed form of the tsuji overlap end (alpha = sqrt(5) beta(e), hertzdamp_tsuji_alpha);
-    !> otherwise, until the library has fitted inverses for them, a bracketing root
-    !> search on the library's forward map (tsuji force: the closed form
-    !> hertzdamp_tsuji_e; kuwabara-kono: the reference integrator), which is monotone in
-    !> alpha.  Targets outside the linear fit's range give HD_BAD_RESTITUTION for every law.
+    !> alpha(e) of a law and contact end: the library's fitted inverse
+    !> (hertzdamp_invert_alpha with HD_METHOD_FIT and the law).  Targets outside its
+    !> range (hertzdamp_fit_law_e_min) give HD_BAD_RESTITUTION.
     pure subroutine peer_law_inverse(law, e, iend, alpha, status)
         integer, intent(in) :: law       !! HD_DAMPING_*
         real(wp), intent(in) :: e        !! target restitution coefficient
         integer, intent(in) :: iend      !! HD_END_OVERLAP or HD_END_FORCE
         real(wp), intent(out) :: alpha   !! damping parameter
         integer, intent(out) :: status   !! HD_OK or an error (HD_BAD_RESTITUTION: e outside the range)
-        real(wp) :: tau, emin
-        alpha = 0.0_wp
-        if (law == HD_DAMPING_LINEAR) then
-            call hertzdamp_invert_alpha(e, iend, alpha, tau, status)
-            return
-        end if
-        emin = merge(hertzdamp_fit_e_min_overlap, hertzdamp_fit_e_min_force, iend == HD_END_OVERLAP)
-        status = HD_OK
-        if (.not. (e >= emin .and. e <= 1.0_wp)) then
-            status = HD_BAD_RESTITUTION
-        else if (e == 1.0_wp) then
-            alpha = 0.0_wp
-        else if (law == HD_DAMPING_TSUJI .and. iend == HD_END_OVERLAP) then
-            alpha = hertzdamp_tsuji_alpha(e)
-        else
-            call root_on_forward(law, e, iend, alpha, status)
-        end if
+        real(wp) :: tau
+        call hertzdamp_invert_alpha(e, iend, alpha, tau, status, method=HD_METHOD_FIT, law=law)
     end subroutine peer_law_inverse
-
-    !> The alpha with e(alpha) = e on the library's forward map: bracket by doubling,
-    !> then Illinois steps on ln e(alpha) - ln e, safeguarded by bisection, to a relative
-    !> width of 4 ulp.
-    pure subroutine root_on_forward(law, e, iend, alpha, status)
-        integer, intent(in) :: law, iend
-        real(wp), intent(in) :: e
-        real(wp), intent(out) :: alpha
-        integer, intent(out) :: status
-        real(wp) :: lo, hi, flo, fhi, fm, x, target
-        integer :: it, side
-        target = log(e)
-        alpha = 0.0_wp
-        lo = 0.0_wp
-        flo = -target              ! ln e(0) - ln e = -ln e > 0
-        hi = 1.0_wp
-        call eval(hi, fhi, status)
-        do it = 1, 60
-            if (status /= HD_OK) return
-            if (fhi <= 0.0_wp) exit
-            lo = hi
-            flo = fhi
-            hi = 2.0_wp * hi
-            call eval(hi, fhi, status)
-        end do
-        if (.not. fhi <= 0.0_wp) then
-            status = HD_OUTSIDE_VALIDITY
-            return
-        end if
-        side = 0
-        do it = 1, 200
-            if (hi - lo <= 4.0_wp * spacing(hi)) exit
-            x = hi - fhi * (hi - lo) / (fhi - flo)
-            if (.not. (x > lo .and. x < hi) .or. mod(it, 4) == 0) x = 0.5_wp * (lo + hi)
-            call eval(x, fm, status)
-            if (status /= HD_OK) return
-            if (fm > 0.0_wp) then
-                lo = x
-                flo = fm
-                if (side == -1) fhi = 0.5_wp * fhi
-                side = -1
-            else
-                hi = x
-                fhi = fm
-                if (side == 1) flo = 0.5_wp * flo
-                side = 1
-            end if
-            if (fm == 0.0_wp) exit
-        end do
-        alpha = 0.5_wp * (lo + hi)
-        if (fm == 0.0_wp) alpha = x
-    contains
-        !> ln e(a) - ln e; no rebound counts as e = 0 (-huge)
-        pure subroutine eval(a, gv, st)
-            real(wp), intent(in) :: a
-            real(wp), intent(out) :: gv
-            integer, intent(out) :: st
-            real(wp) :: ea, ta
-            if (law == HD_DAMPING_TSUJI .and. iend == HD_END_FORCE) then
-                call hertzdamp_tsuji_e(a, iend, ea, st)
-            else
-                call peer_law_forward(law, a, iend, ea, ta, st)
-            end if
-            if (st == HD_NO_REBOUND .or. (st == HD_OK .and. ea <= 0.0_wp)) then
-                st = HD_OK
-                gv = -huge(1.0_wp)
-            else
-                gv = log(ea) - target
-            end if
-        end subroutine eval
-    end subroutine root_on_forward
 
     !> Name of an engine: as the command line takes it ('lammps', ...) or, with
     !> `title`, as the engine writes it ('LAMMPS', 'MercuryDPM', ...); '?' if unknown.
@@ -454,12 +389,14 @@ contains
     end function peer_damping
 
     !> The engine's parameter p that gives the damping c (gamma or d, see peer_damping):
-    !> the inverse of peer_damping.  status HD_OUTSIDE_VALIDITY when no value of p does.
+    !> the inverse of peer_damping.  status HD_OUTSIDE_VALIDITY when no value of p does,
+    !> HD_OUT_OF_RANGE when the value is beyond double precision (infinite, or zero for
+    !> a positive c).
     pure subroutine peer_parameter(deck, c, p, status)
         type(peer_deck), intent(in) :: deck   !! the resolved deck
-        real(wp), intent(in) :: c             !! gamma (q = 1/4 kinds) or d
+        real(wp), intent(in) :: c             !! gamma (q = 1/4 kinds) or d, finite, >= 0
         real(wp), intent(out) :: p            !! the engine's parameter
-        integer, intent(out) :: status        !! HD_OK or HD_OUTSIDE_VALIDITY
+        integer, intent(out) :: status        !! HD_OK, HD_OUTSIDE_VALIDITY or HD_OUT_OF_RANGE
         real(wp) :: g, f
         p = 0.0_wp
         status = HD_OK
@@ -491,6 +428,11 @@ contains
         case default
             status = HD_BAD_ARGUMENT
         end select
+        ! the scaled kinds (p proportional to c): an overflow, or an underflow to no damping
+        if (status == HD_OK .and. .not. (ieee_is_finite(p) .and. (p > 0.0_wp .or. .not. c > 0.0_wp))) then
+            p = 0.0_wp
+            status = HD_OUT_OF_RANGE
+        end if
     contains
         pure subroutine beta_root(b, e, st)
             real(wp), intent(in) :: b
@@ -508,100 +450,194 @@ contains
 
     !> alpha of the deck at impact speed u, and the time unit t* = (m/(k u^(1/2)))^(2/5).
     !> q = 1/4: alpha = gamma (independent of u); otherwise alpha = d t* (u t*)^q / m.
-    pure subroutine peer_alpha(deck, u, alpha, tstar, status)
+    !> HD_OUT_OF_RANGE when alpha or t* is beyond double precision; `log_alpha`, ln alpha
+    !> from the logarithms of the inputs (-huge for alpha = 0, and when the damping d
+    !> itself overflows: unknown), tells an overdamped deck (no rebound) from one that is
+    !> only beyond range.
+    pure subroutine peer_alpha(deck, u, alpha, tstar, status, log_alpha)
         type(peer_deck), intent(in) :: deck  !! the resolved deck
         real(wp), intent(in) :: u            !! impact speed [m s^-1]
         real(wp), intent(out) :: alpha       !! damping parameter
         real(wp), intent(out) :: tstar       !! time unit [s]
         integer, intent(out) :: status       !! HD_OK or HD_OUT_OF_RANGE
-        alpha = 0.0_wp
-        status = HD_OK
-        tstar = exp(0.4_wp * (log(deck%m) - log(deck%k)) - 0.2_wp * log(u))
-        if (deck%law == HD_DAMPING_TSUJI) then
-            alpha = peer_damping(deck, deck%p)
+        real(wp), intent(out), optional :: log_alpha  !! ln alpha
+        real(wp) :: c, lt, q, la
+        integer :: st
+        lt = 0.4_wp * (log(deck%m) - log(deck%k)) - 0.2_wp * log(u)
+        tstar = exp(lt)
+        c = peer_damping(deck, deck%p)
+        q = hertzdamp_law_q(deck%law)
+        if (.not. (c > 0.0_wp .and. c <= huge(c))) then
+            la = -huge(1.0_wp)
+        else if (deck%law == HD_DAMPING_TSUJI) then
+            la = log(c)
         else
-            alpha = peer_damping(deck, deck%p) * tstar * (u * tstar)**hertzdamp_law_q(deck%law) / deck%m
+            la = log(c) + lt + q * (log(u) + lt) - log(deck%m)
         end if
-        if (.not. (ieee_is_finite(alpha) .and. ieee_is_finite(tstar) .and. tstar > 0.0_wp)) status = HD_OUT_OF_RANGE
+        if (deck%law == HD_DAMPING_TSUJI) then
+            alpha = c
+        else
+            alpha = c * tstar * (u * tstar)**q / deck%m
+        end if
+        call from_log(alpha, la, c > 0.0_wp, st)
+        status = HD_OK
+        if (st /= HD_OK .or. .not. (ieee_is_finite(tstar) .and. tstar > 0.0_wp)) status = HD_OUT_OF_RANGE
+        if (present(log_alpha)) log_alpha = la
     end subroutine peer_alpha
 
+    !> A positive quantity computed directly (`x`) and as a logarithm (`lx`): when the
+    !> direct form overflowed or underflowed in an intermediate, exp(lx) where double
+    !> precision holds it; HD_OUT_OF_RANGE (x = NaN) where it does not.
+    pure subroutine from_log(x, lx, positive, status)
+        real(wp), intent(inout) :: x      !! the value computed directly
+        real(wp), intent(in) :: lx        !! its logarithm
+        logical, intent(in) :: positive   !! the exact value is > 0 (else x = 0 stands)
+        integer, intent(out) :: status    !! HD_OK or HD_OUT_OF_RANGE
+        status = HD_OK
+        if (ieee_is_finite(x) .and. (x > 0.0_wp .or. .not. positive)) return
+        if (lx < log(huge(1.0_wp)) .and. lx > log(tiny(1.0_wp))) then
+            x = exp(lx)
+        else
+            x = peer_nan()
+            status = HD_OUT_OF_RANGE
+        end if
+    end subroutine from_log
+
     !> The engine's own estimate of the contact time at impact speed u (NaN when the
-    !> engine has none).  LIGGGHTS fix check/timestep/gran (fix_check_timestep_gran.cpp:
-    !> 318-348): 2.87 (m_p^2/(r/2 Y*^2 v))^(1/5) with the particle's whole mass m_p and
-    !> radius r, v = max(2 v_max, v_max + v_mesh): u for two particles meeting at u, 2u
-    !> for a particle hitting a resting wall at u.  MercuryDPM getCollisionTime(D, rho, v)
-    !> (HertzianViscoelasticNormalSpecies.cc:290-300): 2.214 (rho^2/(E^2 v))^(1/5) D.
-    !> MFiX TCOLL = pi/sqrt(k/m - (eta/m)^2/4) with its Hertz k and eta (check_solids_dem.f:
-    !> 924-926, 990-991; independent of u; NaN where the root is imaginary).
+    !> engine has none, or when double precision cannot hold it).  LIGGGHTS fix
+    !> check/timestep/gran (fix_check_timestep_gran.cpp: 318-348): 2.87 (m_p^2/(r/2 Y*^2
+    !> v))^(1/5) with the particle's whole mass m_p and radius r, v = max(2 v_max, v_max +
+    !> v_mesh): u for two particles meeting at u, 2u for a particle hitting a resting wall
+    !> at u.  MercuryDPM getCollisionTime(D, rho, v) (HertzianViscoelasticNormalSpecies.cc:
+    !> 290-300): 2.214 (rho^2/(E^2 v))^(1/5) D.  MFiX TCOLL = pi/sqrt(k/m - (eta/m)^2/4)
+    !> with its Hertz k and eta = gamma sqrt(m k) (check_solids_dem.f: 924-926, 990-991;
+    !> independent of u; NaN where the root is imaginary), here as pi sqrt(m/k)/sqrt(1 -
+    !> gamma^2/4).  The powers are taken of logarithms: E^2 and m_p^2 alone may overflow.
     pure real(wp) function peer_time_estimate(deck, u) result(t)
         type(peer_deck), intent(in) :: deck  !! the resolved deck
         real(wp), intent(in) :: u            !! impact speed [m s^-1]
-        real(wp) :: v, eta, w2
+        real(wp) :: v, g, w
         t = peer_nan()
         select case (deck%tstep)
         case (TSTEP_LIGGGHTS)
             v = merge(2.0_wp * u, u, deck%wall)
-            t = 2.87_wp * (deck%mass1**2 / (0.5_wp * deck%radius1 * deck%e_star**2 * v))**0.2_wp
+            t = 2.87_wp * exp(0.2_wp * (2.0_wp * log(deck%mass1) - log(0.5_wp) - log(deck%radius1) - &
+                                        2.0_wp * log(deck%e_star) - log(v)))
         case (TSTEP_MERCURY)
-            t = 2.214_wp * (deck%density1**2 / (deck%e_star**2 * u))**0.2_wp * 2.0_wp * deck%radius1
+            t = 2.214_wp * 2.0_wp * exp(0.4_wp * (log(deck%density1) - log(deck%e_star)) - 0.2_wp * log(u) + &
+                                        log(deck%radius1))
         case (TSTEP_MFIX)
-            eta = peer_damping(deck, deck%p) * sqrt(deck%m * deck%k)
-            w2 = deck%k / deck%m - 0.25_wp * (eta / deck%m)**2
-            if (w2 > 0.0_wp) t = pi / sqrt(w2)
+            g = peer_damping(deck, deck%p)
+            w = 1.0_wp - 0.25_wp * g**2
+            if (w > 0.0_wp) t = pi * exp(0.5_wp * (log(deck%m) - log(deck%k))) / sqrt(w)
         case default
         end select
+        if (.not. (ieee_is_finite(t) .and. t > 0.0_wp)) t = peer_nan()
     end function peer_time_estimate
 
     !> The deck at impact speed u: what the engine achieves, and the value of its
     !> parameter that would give e_target (NaN with status_corrected /= HD_OK when
-    !> none does, or e_target <= 0).
+    !> none does).  An overdamped deck whose alpha double precision cannot hold has no
+    !> rebound where the law has alpha_c and the contact ends with the overlap;
+    !> otherwise a result beyond double precision gives HD_OUT_OF_RANGE.
     pure function peer_evaluate(deck, u, e_target) result(pt)
         type(peer_deck), intent(in) :: deck  !! the resolved deck
         real(wp), intent(in) :: u            !! impact speed [m s^-1], > 0
-        real(wp), intent(in) :: e_target     !! the restitution coefficient the user wants
+        real(wp), intent(in) :: e_target     !! the restitution coefficient the user wants, > 0
         type(peer_point) :: pt
-        real(wp) :: tau, ef, tauf, c
+        real(wp) :: tau, ef, tauf, la
         integer :: st
         pt%u = u
+        pt%e = peer_nan()
+        pt%e_error = peer_nan()
+        pt%tc = peer_nan()
         pt%t_force = peer_nan()
+        pt%t_hertz = peer_nan()
         pt%alpha_target = peer_nan()
         pt%p_corrected = peer_nan()
         pt%t_peer = peer_time_estimate(deck, u)
-        call peer_alpha(deck, u, pt%alpha, pt%tstar, pt%status)
-        pt%t_hertz = hertzdamp_tau_c0() * pt%tstar
-        if (pt%status /= HD_OK) then
+        call peer_alpha(deck, u, pt%alpha, pt%tstar, pt%status, la)
+        if (pt%status == HD_OK) then
+            call peer_law_forward(deck%law, pt%alpha, deck%iend, pt%e, tau, pt%status, pt%method)
+        else if (hertzdamp_law_has_alpha_c(deck%law) .and. deck%iend == HD_END_OVERLAP .and. &
+                 la > log(hertzdamp_law_alpha_c(deck%law)) + 1.0e-6_wp) then
+            pt%status = HD_NO_REBOUND   ! alpha or t* beyond double precision, alpha beyond alpha_c
+        end if
+        if (.not. ieee_is_finite(pt%alpha)) pt%alpha = peer_nan()
+        if (ieee_is_finite(pt%tstar) .and. pt%tstar > 0.0_wp) then
+            pt%t_hertz = hertzdamp_tau_c0() * pt%tstar
+        else
+            pt%tstar = peer_nan()
+        end if
+        select case (pt%status)
+        case (HD_OUT_OF_RANGE)
+            pt%beyond = 'alpha or the time unit t* = (m/(k u^(1/2)))^(2/5)'
+        case (HD_OK)
+            pt%tc = pt%tstar * tau
+            pt%e_error = pt%e / e_target - 1.0_wp
+            if (.not. ieee_is_finite(pt%t_hertz)) then
+                pt%beyond = 'the elastic Hertz time tau_c(0) t*'
+            else if (.not. ieee_is_finite(pt%tc)) then
+                pt%beyond = 'the contact time t_c = tau_c t*'
+            else if (.not. ieee_is_finite(pt%e_error)) then
+                pt%beyond = 'e/e_target - 1 (e = ' // peer_fmt(pt%e, 6) // ', e_target = ' // peer_fmt(e_target) // ')'
+            end if
+            if (allocated(pt%beyond)) pt%status = HD_OUT_OF_RANGE
+        case (HD_NO_REBOUND)
+            pt%e = 0.0_wp
+            pt%e_error = -1.0_wp
+            pt%tc = ieee_value(1.0_wp, ieee_positive_inf)
+        case default
+        end select
+        if (pt%status /= HD_OK .and. pt%status /= HD_NO_REBOUND) then
             pt%e = peer_nan()
+            pt%e_error = peer_nan()
             pt%tc = peer_nan()
             pt%status_corrected = pt%status
             return
         end if
-        call peer_law_forward(deck%law, pt%alpha, deck%iend, pt%e, tau, pt%status)
-        if (pt%status == HD_OK .or. pt%status == HD_NO_REBOUND) then
-            pt%tc = pt%tstar * tau
-        else
-            pt%e = peer_nan()
-            pt%tc = peer_nan()
-        end if
-        if (deck%iend == HD_END_OVERLAP .and. pt%alpha > 0.0_wp) then
+        if (deck%iend == HD_END_OVERLAP .and. pt%alpha > 0.0_wp .and. ieee_is_finite(pt%t_hertz)) then
             ! the total force -d zeta^q zeta' - k zeta^(3/2) turns attractive where the
             ! force-end contact ends (the same trajectory up to that instant)
             call peer_law_forward(deck%law, pt%alpha, HD_END_FORCE, ef, tauf, st)
             if (st == HD_OK) pt%t_force = pt%tstar * tauf
+            if (.not. ieee_is_finite(pt%t_force)) pt%t_force = peer_nan()
         end if
-        ! the corrected parameter
-        call peer_law_inverse(deck%law, e_target, deck%iend, pt%alpha_target, pt%status_corrected)
-        if (pt%status_corrected /= HD_OK) then
+        call corrected(deck, u, e_target, pt)
+    end function peer_evaluate
+
+    !> The engine's parameter that gives e_target at the point's speed: alpha_target
+    !> from the fitted inverse, the damping c = alpha_target (q = 1/4: gamma) or
+    !> alpha_target m / (t* (u t*)^q) (d), then peer_parameter; HD_OUT_OF_RANGE when c or
+    !> the parameter is beyond double precision.
+    pure subroutine corrected(deck, u, e_target, pt)
+        type(peer_deck), intent(in) :: deck       !! the resolved deck
+        real(wp), intent(in) :: u, e_target       !! impact speed, target restitution
+        type(peer_point), intent(inout) :: pt     !! the point (alpha_target, p_corrected, status_corrected)
+        real(wp) :: c, q, lt
+        integer :: st
+        call peer_law_inverse(deck%law, e_target, deck%iend, pt%alpha_target, st)
+        pt%status_corrected = st
+        if (st /= HD_OK) then
             pt%alpha_target = peer_nan()
             return
         end if
         if (deck%law == HD_DAMPING_TSUJI) then
             c = pt%alpha_target
+        else if (ieee_is_finite(pt%tstar)) then
+            q = hertzdamp_law_q(deck%law)
+            lt = log(pt%tstar)
+            c = pt%alpha_target * deck%m / (pt%tstar * (u * pt%tstar)**q)
+            if (pt%alpha_target > 0.0_wp) then
+                call from_log(c, log(pt%alpha_target) + log(deck%m) - lt - q * (log(u) + lt), .true., st)
+            end if
         else
-            c = pt%alpha_target * deck%m / (pt%tstar * (u * pt%tstar)**hertzdamp_law_q(deck%law))
+            st = HD_OUT_OF_RANGE
         end if
-        call peer_parameter(deck, c, pt%p_corrected, pt%status_corrected)
-        if (pt%status_corrected /= HD_OK) pt%p_corrected = peer_nan()
-    end function peer_evaluate
+        if (st == HD_OK) call peer_parameter(deck, c, pt%p_corrected, st)
+        pt%status_corrected = st
+        if (st /= HD_OK) pt%p_corrected = peer_nan()
+    end subroutine corrected
 
     pure function peer_itoa(i) result(s)
         integer, intent(in) :: i

@@ -19,6 +19,7 @@ module hertzdamp_peers_deck
                                PEER_LAMMPS, PEER_LIGGGHTS, PEER_MERCURYDPM, PEER_YADE, PEER_MFIX, PEER_CHRONO, &
                                TSTEP_LIGGGHTS, TSTEP_MERCURY, TSTEP_MFIX, peer_name, peer_fmt, peer_itoa, &
                                COEF_GAMMA_SQRT5_BETA
+    use hertzdamp_apps_text, only: lower, upper
     use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
     use, intrinsic :: iso_fortran_env, only: real32
     implicit none
@@ -1106,7 +1107,7 @@ contains
             call values(v, key, y, ny, msg)
             if (len(msg) > 0) return
             if (ny > 2) then
-                msg = key // ': at most 2 values (body 1, ' // merge('the wall', 'body 2  ', wall) // ')'
+                msg = key // ': at most 2 values (body 1, ' // trim(merge('the wall', 'body 2  ', wall)) // ')'
                 return
             end if
             x(1) = y(1)
@@ -1328,26 +1329,6 @@ contains
             s = s // t(i)%s
         end do
     end function join
-
-    pure function lower(s) result(r)
-        character(len=*), intent(in) :: s
-        character(len=len(s)) :: r
-        integer :: i
-        r = s
-        do i = 1, len(s)
-            if (s(i:i) >= 'A' .and. s(i:i) <= 'Z') r(i:i) = achar(iachar(s(i:i)) + 32)
-        end do
-    end function lower
-
-    pure function upper(s) result(r)
-        character(len=*), intent(in) :: s
-        character(len=len(s)) :: r
-        integer :: i
-        r = s
-        do i = 1, len(s)
-            if (s(i:i) >= 'a' .and. s(i:i) <= 'z') r(i:i) = achar(iachar(s(i:i)) - 32)
-        end do
-    end function upper
 
     pure function unquote(s) result(r)
         character(len=*), intent(in) :: s

@@ -23,6 +23,7 @@ module hertzdamp_scene_io
     use hertzdamp_kinds, only: hertzdamp_rk
     use hertzdamp_status, only: HD_OK, HD_BAD_ARGUMENT, HD_END_OVERLAP, HD_END_FORCE
     use hertzdamp_laws, only: hertzdamp_law_code
+    use hertzdamp_apps_text, only: lower
     use hertzdamp_dem, only: hertzdamp_dem_scene, hertzdamp_dem_material, hertzdamp_dem_wall, &
                              hertzdamp_dem_max_particles
     implicit none
@@ -337,16 +338,6 @@ contains
         is_name_char = (c >= 'a' .and. c <= 'z') .or. (c >= 'A' .and. c <= 'Z') .or. (c >= '0' .and. c <= '9') &
                        .or. c == '_'
     end function is_name_char
-
-    pure function lower(s) result(r)
-        character(len=*), intent(in) :: s
-        character(len=len(s)) :: r
-        integer :: k
-        r = s
-        do k = 1, len(s)
-            if (s(k:k) >= 'A' .and. s(k:k) <= 'Z') r(k:k) = achar(iachar(s(k:k)) + 32)
-        end do
-    end function lower
 
     subroutine read_scene(lines, first, sc, msg)
         character(len=*), intent(in) :: lines(:)

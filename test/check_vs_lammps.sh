@@ -60,7 +60,15 @@ p=0; f=0
 T="tangential linear_nohistory 0 0"
 compare() {  # kind (pair|wall), deck
   local kind=$1 deck=$2 e_lmp e_chk args
-  e_lmp=$(cd "$TMP" && "$LMP" -in "in.$kind" -var deck "$deck" -log none -echo none 2>/dev/null | sed -n 's/^RESULT //p')
+  # a LAMMPS run that ends without its RESULT line (seen once under heavy machine load:
+  # the engine itself failed) is run once more; its message is shown if it fails again
+  local try
+  for try in 1 2; do
+    e_lmp=$(cd "$TMP" && "$LMP" -in "in.$kind" -var deck "$deck" -log none -echo none 2>"$TMP/lmp.err" | \
+            sed -n 's/^RESULT //p')
+    [ -n "$e_lmp" ] && break
+  done
+  [ -n "$e_lmp" ] || tail -n 5 "$TMP/lmp.err" | sed 's/^/    lmp: /'
   if [ "$kind" = wall ]; then args=("fix 1 all wall/gran granular $deck zplane 0 NULL"); else args=("$deck"); fi
   e_chk=$("$BIN" check lammps "${args[@]}" --release 2021 --radius 1e-3 --density 2500 --velocity 1 --e 0.5 \
           --format csv | python3 -c "import csv,sys; print(list(csv.DictReader(sys.stdin))[0]['e'])")

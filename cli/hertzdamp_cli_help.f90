@@ -227,7 +227,7 @@ module hertzdamp_cli_help
 
     character(len=*), parameter :: bench = &
         'Usage: hertzdamp bench [--quick] [--damping LAW|all] [--format text|csv|json]' // nl // &
-        '                       [--plot FILE.png]' // nl // &
+        '                       [--plot FILE.png] [--progress]' // nl // &
         '' // nl // &
         'Measures accuracy against time for every method the library provides, all in' // nl // &
         'one run, for every damping law (methods that report not-supported are left out):' // nl // &
@@ -255,6 +255,7 @@ module hertzdamp_cli_help
         '                  against ns per call, forward and inverse panels per law.' // nl // &
         '                  Checked before benchmarking: no gnuplot -> exit 4, unwritable' // nl // &
         '                  -> exit 2.' // nl // &
+        '  --progress      progress on stderr (default: on a terminal, after 2 s)' // nl // &
         '  --help          this text' // nl // &
         '' // nl // &
         'CSV columns: problem,damping,method,setting,max_rel_err_e,max_rel_err_tau,' // nl // &

@@ -27,12 +27,12 @@ module hertzdamp_cmd_bench
                                      WAY_LEGACY, WAY_LEGACY_N, n_ts, ts_name, ts_label, TS_CLOSED_ALPHA, TS_FIT_ALPHA, &
                                      TS_CLOSED_ALPHA_N, TS_FIT_ALPHA_N, TS_CLOSED_D, TS_BOUND_D, TS_CLOSED_D_N, &
                                      TS_BOUND_D_N
-    use hertzdamp_cli_plot, only: plot_check_target, plot_run, plot_temp_name, gp_string
+    use hertzdamp_cli_plot, only: plot_check_target, plot_scratch, plot_temp_name, gp_string
+    use hertzdamp_cli_progress, only: progress_reporter
     use hertzdamp_bench_timer, only: bench_case, bench_measure, wall_seconds
     use hertzdamp_cli, only: cli_args, cli_buffer, parse_args, parse_choice, fail, quit, pad, EXIT_OK, EXIT_FAILURE
     use hertzdamp_cli_output, only: out_table, format_choices, FORMAT_TEXT, FORMAT_CSV, FORMAT_JSON
     use hertzdamp_cli_help, only: print_help, wants_help
-    use, intrinsic :: iso_fortran_env, only: int64
     use, intrinsic :: ieee_arithmetic, only: ieee_value, ieee_quiet_nan, ieee_is_nan, ieee_is_finite
     implicit none
     private
@@ -298,6 +298,8 @@ contains
         type(cli_buffer) :: buf
         type(out_table) :: t
         type(cli_buffer) :: figs
+        type(progress_reporter) :: prog
+        real(wp) :: done
 
         plot_file = ''
         terminal = ''
@@ -305,7 +307,7 @@ contains
             call print_help('bench')
             call quit(EXIT_OK)
         end if
-        call parse_args(2, '--format --plot --damping', '--quick', args)
+        call parse_args(2, '--format --plot --damping', '--quick --progress', args)
         fmt = parse_choice(args%get('--format', 'text'), format_choices, 'format (--format)')
         sel = parse_choice(args%get('--damping', 'all'), 'all linear tsuji kuwabara-kono', 'damping law (--damping)')
         quick = args%has('--quick')
@@ -334,6 +336,10 @@ contains
         end if
 
         allocate (rows(0))
+        ! progress in phases: forward and inverse rows per law, the contacts, the entry
+        ! points per law, the tsuji closed form
+        call prog%start(real(3 * nl + 2, wp), 'bench', force=args%has('--progress'))
+        done = 0.0_wp
         do il = 1, nl
             sets(il) = sets_of(laws(il), quick)
             ! references, computed once
@@ -360,17 +366,22 @@ contains
                 iref%alpha = hertzdamp_tsuji_alpha(iref%e)
             end if
             call forward_rows(laws(il), sets(il), fref, min_time, repeats, rows)
+            call step_done()
             call inverse_rows(laws(il), iref, min_time, repeats, rows)
+            call step_done()
         end do
         call entry_contacts(n_entry, dat)
+        call step_done()
         do il = 1, nl
             call entry_measure(laws(il), dat, min_time, repeats, ent(il))
             call entry_rows(ent(il), rows)
+            call step_done()
         end do
         if (any(laws == HD_DAMPING_TSUJI)) then
             call tsuji_measure(dat, min_time, repeats, ts)
             call tsuji_rows(ts, rows)
         end if
+        call prog%finish()
         call figures(rows, ent(1:nl), ts, figs)
 
         ! Render.
@@ -427,6 +438,11 @@ contains
         if (want_plot) call make_plot(rows, laws, plot_file, terminal, quick)
         call buf%flush_to_stdout()
         call quit(EXIT_OK)
+    contains
+        subroutine step_done()
+            done = done + 1.0_wp
+            call prog%update(done)
+        end subroutine step_done
     end subroutine cmd_bench
 
     !> 'linear, tsuji and kuwabara-kono' (the laws of the run).
@@ -1083,26 +1099,22 @@ contains
         integer, intent(in) :: laws(:)
         character(len=*), intent(in) :: file, terminal
         logical, intent(in) :: quick
-        character(len=:), allocatable :: tmpdir, base, dat, gp, png_tmp
+        character(len=:), allocatable :: dat, gp, png_tmp
         type(cli_buffer) :: plots
+        type(plot_scratch) :: sc
         character(len=:), allocatable :: cmd
-        integer :: u, ios, p, f, i, il, nblock, blocks(2, size(laws), n_families)
-        integer(int64) :: cnt
+        character(len=200) :: line
+        integer :: u, p, f, i, il, nblock, blocks(2, size(laws), n_families)
         character(len=*), parameter :: pts(n_families) = ['7 ', '5 ', '9 ', '13', '11', '3 ', '2 ', '1 ', '4 ']
         character(len=*), parameter :: colors(n_families) = ['#1f77b4', '#ff7f0e', '#2ca02c', '#9467bd', &
                                                              '#8c564b', '#e377c2', '#d62728', '#7f7f7f', '#17becf']
         character(len=*), parameter :: problems(2) = ['forward', 'inverse']
         real(wp) :: y
         cmd = ''
-        tmpdir = env_or('TMPDIR', '/tmp')
-        call system_clock(cnt)
-        base = tmpdir // '/hertzdamp_bench_' // itoa8(cnt)
-        dat = base // '.dat'
-        gp = base // '.gp'
         png_tmp = plot_temp_name(file)
-
-        open (newunit=u, file=dat, status='replace', action='write', iostat=ios)
-        if (ios /= 0) call fail(EXIT_FAILURE, 'cannot write a temporary file in ' // tmpdir)
+        ! data and script are scratch files of hertzdamp_cli_plot: every write checked, all
+        ! removed whatever happens, exit 4 with nothing left behind on failure
+        call sc%open('bench', 'dat', u, dat)
         nblock = 0
         blocks = -1
         do p = 1, 2
@@ -1118,45 +1130,45 @@ contains
                         else
                             y = maxval(rows(i)%err(3:5))
                         end if
-                        write (u, '(es14.6,1x,es14.6,1x,a)') rows(i)%ns, max(y, plot_floor), &
+                        write (line, '(es14.6,1x,es14.6,1x,a)') rows(i)%ns, max(y, plot_floor), &
                             '"' // trim(rows(i)%setting) // '"'
+                        call sc%write(u, trim(line))
                     end do
-                    write (u, '(a)') ''
-                    write (u, '(a)') ''
+                    call sc%write(u, '')
+                    call sc%write(u, '')
                 end do
             end do
         end do
-        close (u)
+        call sc%close(u)
 
-        open (newunit=u, file=gp, status='replace', action='write', iostat=ios)
-        if (ios /= 0) call fail(EXIT_FAILURE, 'cannot write a temporary file in ' // tmpdir)
+        call sc%open('bench', 'gp', u, gp)
         if (terminal == 'pngcairo') then
-            write (u, '(a)') 'set terminal pngcairo size ' // itoa(100 + 620 * size(laws)) // &
-                ',1150 enhanced font "sans,10"'
+            call sc%write(u, 'set terminal pngcairo size ' // itoa(100 + 620 * size(laws)) // &
+                ',1150 enhanced font "sans,10"')
         else
-            write (u, '(a)') 'set terminal png size ' // itoa(100 + 620 * size(laws)) // ',1150'
+            call sc%write(u, 'set terminal png size ' // itoa(100 + 620 * size(laws)) // ',1150')
         end if
-        write (u, '(a)') 'set output ' // gp_string(png_tmp)
-        write (u, '(a)') 'set multiplot layout 2,' // itoa(size(laws)) // &
-            ' title "hertzdamp bench: work-precision' // trim(merge(' (--quick)', '          ', quick)) // '"'
-        write (u, '(a)') 'set logscale xy'
+        call sc%write(u, 'set output ' // gp_string(png_tmp))
+        call sc%write(u, 'set multiplot layout 2,' // itoa(size(laws)) // &
+            ' title "hertzdamp bench: work-precision' // trim(merge(' (--quick)', '          ', quick)) // '"')
+        call sc%write(u, 'set logscale xy')
         ! fixed decades wide enough for every method (no point on the frame), room for the key
-        write (u, '(a)') 'set xrange [3:3e7]'
-        write (u, '(a)') 'set yrange [1e-16:1e6]'
-        write (u, '(a)') 'set format x "10^{%L}"'
-        write (u, '(a)') 'set format y "10^{%L}"'
-        write (u, '(a)') 'set grid'
-        write (u, '(a)') 'set key top left horizontal maxcols 3 samplen 2'
-        write (u, '(a)') 'set xlabel "time per call [ns] (median)"'
-        write (u, '(a)') 'set ylabel "max relative error (floor 1e-17)"'
+        call sc%write(u, 'set xrange [3:3e7]')
+        call sc%write(u, 'set yrange [1e-16:1e6]')
+        call sc%write(u, 'set format x "10^{%L}"')
+        call sc%write(u, 'set format y "10^{%L}"')
+        call sc%write(u, 'set grid')
+        call sc%write(u, 'set key top left horizontal maxcols 3 samplen 2')
+        call sc%write(u, 'set xlabel "time per call [ns] (median)"')
+        call sc%write(u, 'set ylabel "max relative error (floor 1e-17)"')
         do p = 1, 2
             do il = 1, size(laws)
                 if (p == 1) then
-                    write (u, '(a)') 'set title "' // hertzdamp_law_name(laws(il)) // &
-                        ', forward: alpha -> e, tau_c  (vs rk45 tol 1e-15)" noenhanced'
+                    call sc%write(u, 'set title "' // hertzdamp_law_name(laws(il)) // &
+                        ', forward: alpha -> e, tau_c  (vs rk45 tol 1e-15)" noenhanced')
                 else
-                    write (u, '(a)') 'set title "' // hertzdamp_law_name(laws(il)) // &
-                        ', inverse: e, T_c, m, u_in -> alpha, k, d  (vs ' // inv_ref_text // ')" noenhanced'
+                    call sc%write(u, 'set title "' // hertzdamp_law_name(laws(il)) // &
+                        ', inverse: e, T_c, m, u_in -> alpha, k, d  (vs ' // inv_ref_text // ')" noenhanced')
                 end if
                 plots%n = 0
                 do f = 1, n_families
@@ -1166,24 +1178,24 @@ contains
                                    colors(f) // '" title "' // trim(fam(f)) // '" noenhanced')
                 end do
                 if (plots%n == 0) then
-                    write (u, '(a)') 'set label 1 "no data" at graph 0.5, graph 0.5 center'
-                    write (u, '(a)') 'plot [1:10] [1:10] NaN notitle'
-                    write (u, '(a)') 'unset label 1'
+                    call sc%write(u, 'set label 1 "no data" at graph 0.5, graph 0.5 center')
+                    call sc%write(u, 'plot [1:10] [1:10] NaN notitle')
+                    call sc%write(u, 'unset label 1')
                 else
                     cmd = 'plot '
                     do i = 1, plots%n
                         cmd = cmd // plots%lines(i)%s
                         if (i < plots%n) cmd = cmd // ', '
                     end do
-                    write (u, '(a)') cmd
+                    call sc%write(u, cmd)
                 end if
             end do
         end do
-        write (u, '(a)') 'unset multiplot'
-        write (u, '(a)') 'set output'
-        close (u)
+        call sc%write(u, 'unset multiplot')
+        call sc%write(u, 'set output')
+        call sc%close(u)
 
-        call plot_run(gp, png_tmp, file, [character(len=len(dat)) :: dat])
+        call sc%draw(gp, file)
     contains
         !> The row belongs to panel (problem p, law il).
         logical function in_panel(r, p, il)
@@ -1192,19 +1204,6 @@ contains
             in_panel = r%problem == problems(p) .and. r%law == laws(il)
         end function in_panel
     end subroutine make_plot
-
-    function env_or(name, default) result(v)
-        character(len=*), intent(in) :: name, default
-        character(len=:), allocatable :: v
-        integer :: l, st
-        call get_environment_variable(name, length=l, status=st)
-        if (st /= 0 .or. l == 0) then
-            v = default
-            return
-        end if
-        allocate (character(len=l) :: v)
-        call get_environment_variable(name, v)
-    end function env_or
 
     ! ------------------------------------------------------------------ small helpers
 
@@ -1215,14 +1214,6 @@ contains
         write (b, '(i0)') i
         s = trim(b)
     end function itoa
-
-    function itoa8(i) result(s)
-        integer(int64), intent(in) :: i
-        character(len=:), allocatable :: s
-        character(len=24) :: b
-        write (b, '(i0)') i
-        s = trim(b)
-    end function itoa8
 
     !> x as an integer when it is one, else with one decimal.
     function short(x) result(s)

@@ -124,8 +124,11 @@ IFS=, read -r _ _ _ _ _ _ _ _ ed _ _ <<<"$r"
 below "$ed" 1e-14; check "closed-form: bounded d within $ed < 1e-14 of alpha sqrt(m k)" $?
 
 # --damping: the rows of one law
-timeout 120 "$bin" bench --quick --damping kuwabara-kono --format csv >"$tmp/kk.csv" 2>"$tmp/err.txt"
-check "bench --quick --damping kuwabara-kono exits 0 ($(head -c 300 "$tmp/err.txt"))" $?
+timeout 120 "$bin" bench --quick --damping kuwabara-kono --format csv --progress >"$tmp/kk.csv" 2>"$tmp/err.txt"
+check "bench --quick --damping kuwabara-kono --progress exits 0 ($(head -c 300 "$tmp/err.txt"))" $?
+# progress asked for: lines on stderr (not a terminal: full lines), the last at 100 %; stdout the table
+check "bench --progress: progress lines on stderr" $(grep -q '^hertzdamp: bench: ' "$tmp/err.txt"; echo $?)
+check "bench --progress: the CSV on stdout has no progress text" $(! grep -q 'hertzdamp: bench' "$tmp/kk.csv"; echo $?)
 check "--damping kuwabara-kono: every row of that law, forward, inverse and entry ones" \
   $(awk -F, 'NR > 1 { n++; if ($2 != "kuwabara-kono") bad = 1; p[$1] = 1 }
              END { exit !(n > 20 && !bad && p["forward"] && p["inverse"] && p["entry"] && !p["closed-form"]) }' \

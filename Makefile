@@ -68,10 +68,14 @@ build: deps
 run: build
 	@$(FPM) run hertzdamp --flag "$(RELEASE_FLAGS)" -- table
 
+# The LAMMPS tests need Debian's lammps, liblammps-dev and openmpi and the plugin:
+# `make lammps` installs and builds them first (check_vs_lammps runs before the
+# lammps_* scripts that would otherwise build them).
 test: deps
 	@$(STALE_ARCHIVES)
 	@$(FPM) build --tests --flag "$(TEST_FLAGS)" --link-flag "$(TEST_LINK)"
 	@$(FPM) build --flag "$(RELEASE_FLAGS)"
+	@$(MAKE) --no-print-directory lammps
 	@bash test/run_tests.sh "$(FPM)" "$(TEST_FLAGS)" "$(RELEASE_FLAGS)" "$(TEST_LINK)"
 
 # ---------------------------------------------------------------- generated tables
@@ -124,5 +128,5 @@ LAMMPS_CORE := $(CURDIR)/build/lammps/core
 lammps: deps $(LAMMPS_CORE)/lib/libhertzdamp.so
 	@$(MAKE) --no-print-directory -C integrations/lammps HERTZDAMP_PREFIX=$(LAMMPS_CORE)
 
-$(LAMMPS_CORE)/lib/libhertzdamp.so: $(wildcard src/*.f90) include/hertzdamp.h fpm.toml
+$(LAMMPS_CORE)/lib/libhertzdamp.so: $(wildcard src/*.f90 src/*.inc) include/hertzdamp.h CMakeLists.txt
 	@$(MAKE) --no-print-directory install PREFIX=$(LAMMPS_CORE) >/dev/null

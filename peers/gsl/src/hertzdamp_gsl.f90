@@ -33,13 +33,18 @@ module hertzdamp_gsl
     use hertzdamp_kinds, only: hertzdamp_rk
     use hertzdamp_status, only: HD_OK, HD_NO_REBOUND, HD_MAX_STEPS, HD_BAD_ARGUMENT, HD_NO_CONVERGENCE, &
                                 HD_END_OVERLAP, HD_END_FORCE, HD_BAD_LAW
+    use hertzdamp_gsl_c, only: gsl_success, gsl_ebadfunc, gsl_odeiv2_system, gsl_odeiv2_step_rkf45, &
+        gsl_odeiv2_step_rk8pd, gsl_sf_gamma, gsl_sf_beta, gsl_set_error_handler_off, gsl_odeiv2_step_alloc, &
+        gsl_odeiv2_step_reset, gsl_odeiv2_step_free, gsl_odeiv2_control_y_new, gsl_odeiv2_control_free, &
+        gsl_odeiv2_evolve_alloc, gsl_odeiv2_evolve_apply, gsl_odeiv2_evolve_reset, gsl_odeiv2_evolve_free
     implicit none
     private
 
     integer, parameter :: wp = hertzdamp_rk
 
     public :: hertzdamp_gsl_collide
-    public :: gsl_sf_gamma, gsl_sf_beta
+    public :: gsl_sf_gamma, gsl_sf_beta   ! re-exported for the tests (closed forms)
+    public :: gsl_odeiv2_step_rk8pd
 
     ! Statuses are those of the library (hertzdamp_status): HD_OK (rebound found),
     ! HD_NO_REBOUND (overlap definition, certified: e = 0, tau_c = +Inf), HD_MAX_STEPS
@@ -64,16 +69,6 @@ module hertzdamp_gsl
     !> Event kinds (each normalised so that g > 0 before and g <= 0 after the event).
     integer, parameter :: ev_turn = 1, ev_overlap = 2, ev_force = 3
 
-    ! GSL return codes used here
-    integer(c_int), parameter :: gsl_success = 0, gsl_ebadfunc = 9
-
-    !> GSL's `gsl_odeiv2_system` (layout of the C struct).
-    type, bind(C) :: gsl_odeiv2_system
-        type(c_funptr) :: function            !! int (*)(double t, const double y[], double dydt[], void *params)
-        type(c_funptr) :: jacobian            !! unused here (explicit steppers): NULL
-        integer(c_size_t) :: dimension        !! number of equations (2)
-        type(c_ptr) :: params                 !! points to a `rhs_params`
-    end type gsl_odeiv2_system
 
     !> What the right-hand side receives through `params`.
     type, bind(C) :: rhs_params
@@ -93,109 +88,7 @@ module hertzdamp_gsl
         real(wp) :: q = 0.0_wp
     end type solver_ctx
 
-    ! Step types: global `const gsl_odeiv2_step_type *` variables of libgsl.  They must
-    ! be public: gfortran gives private bind(C) variables hidden visibility, which turns
-    ! them into (null) local definitions instead of references to libgsl's variables.
-    ! `protected` keeps them read-only outside this module.
-    !> GSL's step type `gsl_odeiv2_step_rkf45` (read-only).
-    type(c_ptr), bind(C, name='gsl_odeiv2_step_rkf45'), public, protected :: gsl_odeiv2_step_rkf45
-    !> GSL's step type `gsl_odeiv2_step_rk8pd` (read-only).
-    type(c_ptr), bind(C, name='gsl_odeiv2_step_rk8pd'), public, protected :: gsl_odeiv2_step_rk8pd
 
-    interface
-        !> GSL's Gamma function (gsl_sf_gamma).
-        function gsl_sf_gamma(x) bind(C, name='gsl_sf_gamma') result(g)
-            import :: c_double
-            implicit none
-            real(c_double), value :: x     !! argument (not a non-positive integer)
-            real(c_double) :: g
-        end function gsl_sf_gamma
-
-        !> GSL's Beta function B(a, b) (gsl_sf_beta).
-        function gsl_sf_beta(a, b) bind(C, name='gsl_sf_beta') result(bab)
-            import :: c_double
-            implicit none
-            real(c_double), value :: a     !! first argument
-            real(c_double), value :: b     !! second argument
-            real(c_double) :: bab
-        end function gsl_sf_beta
-
-        function gsl_set_error_handler_off() bind(C, name='gsl_set_error_handler_off') &
-                result(old)
-            import :: c_funptr
-            implicit none
-            type(c_funptr) :: old
-        end function gsl_set_error_handler_off
-
-        function gsl_odeiv2_step_alloc(steptype, dim) bind(C, name='gsl_odeiv2_step_alloc') &
-                result(s)
-            import :: c_ptr, c_size_t
-            implicit none
-            type(c_ptr), value :: steptype
-            integer(c_size_t), value :: dim
-            type(c_ptr) :: s
-        end function gsl_odeiv2_step_alloc
-
-        function gsl_odeiv2_step_reset(s) bind(C, name='gsl_odeiv2_step_reset') result(rc)
-            import :: c_ptr, c_int
-            implicit none
-            type(c_ptr), value :: s
-            integer(c_int) :: rc
-        end function gsl_odeiv2_step_reset
-
-        subroutine gsl_odeiv2_step_free(s) bind(C, name='gsl_odeiv2_step_free')
-            import :: c_ptr
-            implicit none
-            type(c_ptr), value :: s
-        end subroutine gsl_odeiv2_step_free
-
-        function gsl_odeiv2_control_y_new(eps_abs, eps_rel) &
-                bind(C, name='gsl_odeiv2_control_y_new') result(c)
-            import :: c_ptr, c_double
-            implicit none
-            real(c_double), value :: eps_abs, eps_rel
-            type(c_ptr) :: c
-        end function gsl_odeiv2_control_y_new
-
-        subroutine gsl_odeiv2_control_free(c) bind(C, name='gsl_odeiv2_control_free')
-            import :: c_ptr
-            implicit none
-            type(c_ptr), value :: c
-        end subroutine gsl_odeiv2_control_free
-
-        function gsl_odeiv2_evolve_alloc(dim) bind(C, name='gsl_odeiv2_evolve_alloc') result(e)
-            import :: c_ptr, c_size_t
-            implicit none
-            integer(c_size_t), value :: dim
-            type(c_ptr) :: e
-        end function gsl_odeiv2_evolve_alloc
-
-        function gsl_odeiv2_evolve_apply(e, con, step, sys, t, t1, h, y) &
-                bind(C, name='gsl_odeiv2_evolve_apply') result(rc)
-            import :: c_ptr, c_double, c_int, gsl_odeiv2_system
-            implicit none
-            type(c_ptr), value :: e, con, step
-            type(gsl_odeiv2_system), intent(in) :: sys
-            real(c_double), intent(inout) :: t
-            real(c_double), value :: t1
-            real(c_double), intent(inout) :: h
-            real(c_double), intent(inout) :: y(2)   ! the state of this 2-D system
-            integer(c_int) :: rc
-        end function gsl_odeiv2_evolve_apply
-
-        function gsl_odeiv2_evolve_reset(e) bind(C, name='gsl_odeiv2_evolve_reset') result(rc)
-            import :: c_ptr, c_int
-            implicit none
-            type(c_ptr), value :: e
-            integer(c_int) :: rc
-        end function gsl_odeiv2_evolve_reset
-
-        subroutine gsl_odeiv2_evolve_free(e) bind(C, name='gsl_odeiv2_evolve_free')
-            import :: c_ptr
-            implicit none
-            type(c_ptr), value :: e
-        end subroutine gsl_odeiv2_evolve_free
-    end interface
 
 contains
 

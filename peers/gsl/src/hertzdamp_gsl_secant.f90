@@ -28,7 +28,9 @@ module hertzdamp_gsl_secant
     use hertzdamp_constants, only: hertzdamp_tau_c0, hertzdamp_e1
     use hertzdamp_inverse, only: hertzdamp_secant, hertzdamp_secant_start, hertzdamp_secant_next
     use hertzdamp_fit, only: hertzdamp_fit_e_min_overlap, hertzdamp_fit_e_min_force
-    use hertzdamp_gsl, only: gsl_odeiv2_step_rk8pd
+    use hertzdamp_gsl_c, only: gsl_odeiv2_system, gsl_odeiv2_step_rk8pd, gsl_set_error_handler_off, &
+        gsl_odeiv2_step_alloc, gsl_odeiv2_step_apply, gsl_odeiv2_step_free, gsl_odeiv2_control_y_new, &
+        gsl_odeiv2_control_free, gsl_odeiv2_evolve_alloc, gsl_odeiv2_evolve_apply, gsl_odeiv2_evolve_free
     implicit none
     private
 
@@ -43,13 +45,6 @@ module hertzdamp_gsl_secant
     !> Start of the integration (the local series is exact to ~1e-22 there).
     real(wp), parameter :: tau0 = 1.0e-4_wp
 
-    !> GSL's `gsl_odeiv2_system` (layout of the C struct).
-    type, bind(C) :: ode_system
-        type(c_funptr) :: function
-        type(c_funptr) :: jacobian
-        integer(c_size_t) :: dimension
-        type(c_ptr) :: params
-    end type ode_system
 
     !> What the right-hand side receives through `params`.
     type, bind(C) :: ode_params
@@ -57,72 +52,6 @@ module hertzdamp_gsl_secant
         integer(c_long) :: nevals = 0_c_long
     end type ode_params
 
-    interface
-        function gsl_set_error_handler_off() bind(C, name='gsl_set_error_handler_off') result(old)
-            import :: c_funptr
-            implicit none
-            type(c_funptr) :: old
-        end function gsl_set_error_handler_off
-        function gsl_odeiv2_step_alloc(steptype, dim) bind(C, name='gsl_odeiv2_step_alloc') result(s)
-            import :: c_ptr, c_size_t
-            implicit none
-            type(c_ptr), value :: steptype
-            integer(c_size_t), value :: dim
-            type(c_ptr) :: s
-        end function gsl_odeiv2_step_alloc
-        function gsl_odeiv2_step_apply(s, t, h, y, yerr, dydt_in, dydt_out, sys) &
-                bind(C, name='gsl_odeiv2_step_apply') result(rc)
-            import :: c_ptr, c_double, c_int, ode_system
-            implicit none
-            type(c_ptr), value :: s
-            real(c_double), value :: t, h
-            real(c_double), intent(inout) :: y(2)
-            real(c_double), intent(out) :: yerr(2)
-            real(c_double), intent(in) :: dydt_in(2)
-            real(c_double), intent(out) :: dydt_out(2)
-            type(ode_system), intent(in) :: sys
-            integer(c_int) :: rc
-        end function gsl_odeiv2_step_apply
-        subroutine gsl_odeiv2_step_free(s) bind(C, name='gsl_odeiv2_step_free')
-            import :: c_ptr
-            implicit none
-            type(c_ptr), value :: s
-        end subroutine gsl_odeiv2_step_free
-        function gsl_odeiv2_control_y_new(eps_abs, eps_rel) bind(C, name='gsl_odeiv2_control_y_new') result(c)
-            import :: c_ptr, c_double
-            implicit none
-            real(c_double), value :: eps_abs, eps_rel
-            type(c_ptr) :: c
-        end function gsl_odeiv2_control_y_new
-        subroutine gsl_odeiv2_control_free(c) bind(C, name='gsl_odeiv2_control_free')
-            import :: c_ptr
-            implicit none
-            type(c_ptr), value :: c
-        end subroutine gsl_odeiv2_control_free
-        function gsl_odeiv2_evolve_alloc(dim) bind(C, name='gsl_odeiv2_evolve_alloc') result(e)
-            import :: c_ptr, c_size_t
-            implicit none
-            integer(c_size_t), value :: dim
-            type(c_ptr) :: e
-        end function gsl_odeiv2_evolve_alloc
-        function gsl_odeiv2_evolve_apply(e, con, step, sys, t, t1, h, y) bind(C, name='gsl_odeiv2_evolve_apply') &
-                result(rc)
-            import :: c_ptr, c_double, c_int, ode_system
-            implicit none
-            type(c_ptr), value :: e, con, step
-            type(ode_system), intent(in) :: sys
-            real(c_double), intent(inout) :: t
-            real(c_double), value :: t1
-            real(c_double), intent(inout) :: h
-            real(c_double), intent(inout) :: y(2)
-            integer(c_int) :: rc
-        end function gsl_odeiv2_evolve_apply
-        subroutine gsl_odeiv2_evolve_free(e) bind(C, name='gsl_odeiv2_evolve_free')
-            import :: c_ptr
-            implicit none
-            type(c_ptr), value :: e
-        end subroutine gsl_odeiv2_evolve_free
-    end interface
 
 contains
 
@@ -195,7 +124,7 @@ contains
         integer, intent(out) :: status     !! HD_OK or the reason
         integer, intent(out) :: rhs_evals  !! right-hand-side evaluations
         type(ode_params), target :: par
-        type(ode_system) :: sys
+        type(gsl_odeiv2_system) :: sys
         type(c_ptr) :: step, control, evolve
         type(c_funptr) :: old_handler
         real(c_double) :: t, h, y(2), t0, y0(2), f0(2), f1(2), yerr(2), ys(2), fs(2)

@@ -129,7 +129,7 @@ void FixHertzdampWall::post_force(int /*vflag*/)
       if (ov <= 0.0) {
         if (s[0] == 0.0) continue;
         const double prev = p[P_PREV_OV], tprev = p[P_TPREV];
-        const double tend_ov = (prev > 0.0 && tprev < step) ? tprev + (step - tprev) * prev / (prev - ov) : step;
+        const double tend_ov = zero_crossing(prev, tprev, ov, step);
         const double tend = (force_end && p[P_TEND] >= 0.0) ? p[P_TEND] : tend_ov;
         double fc = 0.0;
         if (rule.phase && !force_end && tprev < step)
@@ -146,32 +146,11 @@ void FixHertzdampWall::post_force(int /*vflag*/)
         const double kphys = estar > 0.0 ? 4.0 / 3.0 * estar * sqrt(radius[i]) : 0.0;
         const Onset o = contact_rule(lmp, rule, e, kphys, m, approach, dt);
         s[0] = 1.0;
-        p[P_K] = o.k;
-        p[P_D] = o.d;
-        p[P_UIN] = approach;
-        p[P_UUSED] = o.u_used;
-        p[P_M] = m;
-        p[P_TON] = approach > 0.0 ? step - ov / (approach * dt) : step;
-        p[P_PREV_OV] = 0.0;
-        p[P_PREV_F] = 0.0;
-        p[P_TPREV] = step;
-        p[P_TEND] = -1.0;
-        p[P_FLAGS] = o.bounded;
+        payload_onset(p, o, approach, m, ov, step, dt);
         book.onset(o, approach);
         if (rule.phase && approach > 0.0) f_phase = o.d * approach * phase_weight(ov / (approach * dt));
       }
-      const double f_unclipped = p[P_K] * ov * sqrt(ov) + p[P_D] * approach;
-      double fn = f_unclipped + f_phase;
-      if (force_end && f_unclipped <= 0.0) {
-        fn = 0.0;
-        if (p[P_TEND] < 0.0) {
-          const double prev = p[P_PREV_F], tprev = p[P_TPREV];
-          p[P_TEND] = (prev > 0.0 && tprev < step) ? tprev + (step - tprev) * prev / (prev - f_unclipped) : step;
-        }
-      }
-      p[P_PREV_OV] = ov;
-      p[P_PREV_F] = f_unclipped;
-      p[P_TPREV] = step;
+      const double fn = payload_force(p, ov, approach, step, force_end, f_phase);
       f[i][axis] += side == 0 ? fn : -fn;
     }
   }

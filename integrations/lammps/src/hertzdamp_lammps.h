@@ -18,6 +18,7 @@
 
 #include <hertzdamp.h>
 
+#include <cmath>
 #include <string>
 #include <vector>
 
@@ -101,6 +102,52 @@ enum Payload {
   P_FLAGS,      // bit 0: k_phys bound active
   NPAYLOAD
 };
+
+// Time in steps at which a quantity that was prev > 0 at step tprev and is now <= 0
+// at step `step` crossed zero (linear interpolation; `step` when there is nothing to
+// interpolate).
+inline double zero_crossing(double prev, double tprev, double now, double step)
+{
+  return (prev > 0.0 && tprev < step) ? tprev + (step - tprev) * prev / (prev - now) : step;
+}
+
+// Fill the payload of a contact detected at step `step` with overlap ov > 0, approach
+// speed u and effective mass m, whose k and d are those of the onset o.
+inline void payload_onset(double *p, const Onset &o, double u, double m, double ov, double step,
+                          double dt)
+{
+  p[P_K] = o.k;
+  p[P_D] = o.d;
+  p[P_UIN] = u;
+  p[P_UUSED] = o.u_used;
+  p[P_M] = m;
+  // the overlap began ov/u before this step (free flight before it)
+  p[P_TON] = u > 0.0 ? step - ov / (u * dt) : step;
+  p[P_PREV_OV] = 0.0;
+  p[P_PREV_F] = 0.0;
+  p[P_TPREV] = step;
+  p[P_TEND] = -1.0;
+  p[P_FLAGS] = o.bounded;
+}
+
+// Normal force k ov^1.5 + d u + f_phase of a contact at step `step` (overlap ov > 0,
+// approach speed u).  With the force end, the total force is clipped at zero (like
+// limit_damping) and the first step where k ov^1.5 + d u <= 0 records the end time.
+// Keeps ov, the unclipped force and the step for the next call.
+inline double payload_force(double *p, double ov, double u, double step, bool force_end,
+                            double f_phase)
+{
+  const double f_unclipped = p[P_K] * ov * std::sqrt(ov) + p[P_D] * u;
+  double fn = f_unclipped + f_phase;
+  if (force_end && f_unclipped <= 0.0) {
+    fn = 0.0;
+    if (p[P_TEND] < 0.0) p[P_TEND] = zero_crossing(p[P_PREV_F], p[P_TPREV], f_unclipped, step);
+  }
+  p[P_PREV_OV] = ov;
+  p[P_PREV_F] = f_unclipped;
+  p[P_TPREV] = step;
+  return fn;
+}
 
 // Statistics and log of contacts; one per pair style / wall fix.
 class ContactBook {

@@ -276,7 +276,7 @@ void PairGranularHertzdamp::compute(int eflag, int vflag)
         const double u_out = ((v[i][0] - v[j][0]) * delx + (v[i][1] - v[j][1]) * dely +
                               (v[i][2] - v[j][2]) * delz) * rinv;
         const double prev = p[P_PREV_OV], tprev = p[P_TPREV];
-        const double tend_ov = (prev > 0.0 && tprev < step) ? tprev + (step - tprev) * prev / (prev - ov) : step;
+        const double tend_ov = zero_crossing(prev, tprev, ov, step);
         const double tend = (force_end && p[P_TEND] >= 0.0) ? p[P_TEND] : tend_ov;
         double f_end = 0.0;
         // the overlap ended a fraction psi into the last step: d zeta' (psi - 1/2)
@@ -321,18 +321,7 @@ void PairGranularHertzdamp::compute(int eflag, int vflag)
         c = new_contact();
         ci[jj] = c;
         p = &pool[static_cast<size_t>(c) * NPAYLOAD];
-        p[P_K] = o.k;
-        p[P_D] = o.d;
-        p[P_UIN] = approach;
-        p[P_UUSED] = o.u_used;
-        p[P_M] = m;
-        // the overlap began ov/approach before this step (free flight before it)
-        p[P_TON] = approach > 0.0 ? step - ov / (approach * dt) : step;
-        p[P_PREV_OV] = 0.0;
-        p[P_PREV_F] = 0.0;
-        p[P_TPREV] = step;
-        p[P_TEND] = -1.0;
-        p[P_FLAGS] = o.bounded;
+        payload_onset(p, o, approach, m, ov, step, dt);
         if (newton_pair || j < nlocal || tag[i] < tag[j]) book.onset(o, approach);
         // onset a fraction phi = ov / (approach dt) of a step ago: d zeta' (phi - 1/2)
         if (rule.phase && approach > 0.0) f_phase = o.d * approach * phase_weight(ov / (approach * dt));
@@ -340,19 +329,7 @@ void PairGranularHertzdamp::compute(int eflag, int vflag)
         p = &pool[static_cast<size_t>(c) * NPAYLOAD];
       }
 
-      const double f_unclipped = p[P_K] * ov * sqrt(ov) + p[P_D] * approach;
-      double fn = f_unclipped + f_phase;
-      if (force_end && f_unclipped <= 0.0) {
-        // force end: the total force is clipped at zero (like limit_damping)
-        fn = 0.0;
-        if (p[P_TEND] < 0.0) {
-          const double prev = p[P_PREV_F], tprev = p[P_TPREV];
-          p[P_TEND] = (prev > 0.0 && tprev < step) ? tprev + (step - tprev) * prev / (prev - f_unclipped) : step;
-        }
-      }
-      p[P_PREV_OV] = ov;
-      p[P_PREV_F] = f_unclipped;
-      p[P_TPREV] = step;
+      const double fn = payload_force(p, ov, approach, step, force_end, f_phase);
 
       const double fpair = fn * rinv;
       f[i][0] += delx * fpair;

@@ -30,6 +30,7 @@
 !> piece); the tsuji closed forms differentiated analytically.
 module hertzdamp_fit_laws
     use hertzdamp_kinds, only: hertzdamp_rk
+    use hertzdamp_constants, only: pi => hertzdamp_pi
     use hertzdamp_status, only: HD_OK, HD_NO_REBOUND, HD_BAD_END, HD_OUTSIDE_VALIDITY, HD_OUT_OF_RANGE, &
                                 HD_END_OVERLAP, HD_END_FORCE
     use hertzdamp_laws, only: HD_DAMPING_LINEAR, HD_DAMPING_TSUJI, hertzdamp_law_status, hertzdamp_alpha_c_tsuji, &
@@ -51,7 +52,6 @@ module hertzdamp_fit_laws
     private
 
     integer, parameter :: wp = hertzdamp_rk
-    real(wp), parameter :: pi = acos(-1.0_wp)
 
     !> The families of hertzdamp_fit_data that the forward maps of the laws use.
     integer, parameter :: fam_fwd = 1, fam_turn = 2, fam_one = 3

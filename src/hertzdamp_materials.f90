@@ -26,12 +26,11 @@ module hertzdamp_materials
     use hertzdamp_status, only: HD_OK, HD_BAD_RADIUS, HD_BAD_DENSITY, HD_BAD_MODULUS, HD_BAD_POISSON, &
                                 HD_BAD_MASS, HD_BAD_VELOCITY, HD_BAD_STIFFNESS, HD_OUT_OF_RANGE
     use hertzdamp_scaling, only: hertzdamp_safe_exp, hertzdamp_check_positive
-    use hertzdamp_constants, only: hertzdamp_tau_c0
+    use hertzdamp_constants, only: hertzdamp_tau_c0, pi => hertzdamp_pi
     implicit none
     private
 
     integer, parameter :: wp = hertzdamp_rk
-    real(wp), parameter :: pi = acos(-1.0_wp)
 
     public :: hertzdamp_sphere_mass, hertzdamp_effective_mass, hertzdamp_effective_radius, &
               hertzdamp_plane_strain_modulus, hertzdamp_effective_modulus, hertzdamp_hertz_stiffness, &

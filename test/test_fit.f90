@@ -30,6 +30,19 @@ program test_fit
         call s%check(emax(1) < 1.0e-12_wp, 'fit forward e, tau_c within 1e-12 (' // hertzdamp_end_name(iend) // ')')
         call s%check(emax(2) < 1.0e-12_wp, 'fit forward z_max, tau_max within 1e-12')
         call s%check(emax(3) < 1.0e-12_wp, 'fit inverse alpha, tau_c within 1e-12 (' // hertzdamp_end_name(iend) // ')')
+        ! relative error of alpha where alpha is small (e near 1): log-spaced alpha in [0.01, 0.3].
+        ! The reference e has an absolute error ~1e-15; with d ln e / d ln alpha ~ -ln e >= 0.01
+        ! that resolves alpha to ~1e-13 relative, well inside the 1e-12 asserted.
+        emax(4) = 0.0_wp
+        do i = 0, 120
+            a = 0.01_wp * 30.0_wp**(real(i, wp) / 120.0_wp)
+            r = hertzdamp_rk45_collide(a, iend, 1.0e-15_wp)
+            call hertzdamp_fit_inverse(r%e, iend, a2, tc2, st)
+            emax(4) = max(emax(4), rel_err(a2, a))
+        end do
+        call s%check(emax(4) < 1.0e-12_wp, 'fit inverse alpha within 1e-12 relative for alpha in [0.01, 0.3] (' // &
+                     hertzdamp_end_name(iend) // ')')
+        print '(a,a8,es10.2)', 'max rel err fit inverse alpha, alpha in [0.01, 0.3]: ', hertzdamp_end_name(iend), emax(4)
         print '(a,a8,3es10.2)', 'max rel err fit fwd (e,tau_c), (z_max,tau_max), inverse (alpha,tau_c): ', &
             hertzdamp_end_name(iend), emax(1:3)
         ! exact limits at e = 1

@@ -161,78 +161,43 @@ module hertzdamp_fit
 contains
 
     ! ================================================================ arithmetic kernels
-    ! (-ln x, x^(1/3), exp(-x), x^(1/5): the fragments hertzdamp_fit_*.inc, applied by the loops
-    ! below; the public functions exist for the tests and go through the same loops)
-
-    !> y(i) = -ln x(i) (which = 1), x(i)^(1/3) (2), exp(-x(i)) (3) or x(i)^(1/5) (4).
-    pure subroutine kernel_loop(which, n, x, y)
-        integer, intent(in) :: which, n
-        real(wp), intent(in) :: x(n)
-        real(wp), intent(out) :: y(n)
-        real(wp) :: kern_x, kern_l, kern_y
-        integer :: i
-        select case (which)
-        case (1)
-            do i = 1, n
-                kern_x = x(i)
-                include 'hertzdamp_fit_neg_log.inc'
-                y(i) = kern_l
-            end do
-        case (2)
-            do i = 1, n
-                kern_x = x(i)
-                include 'hertzdamp_fit_cbrt.inc'
-                y(i) = kern_y
-            end do
-        case (4)
-            do i = 1, n
-                kern_x = x(i)
-                include 'hertzdamp_fit_root5.inc'
-                y(i) = kern_y
-            end do
-        case default
-            do i = 1, n
-                kern_x = x(i)
-                include 'hertzdamp_fit_exp_neg.inc'
-                y(i) = kern_y
-            end do
-        end select
-    end subroutine kernel_loop
+    ! (-ln x, x^(1/3), exp(-x), x^(1/5): the fragments hertzdamp_fit_*.inc that the kernels
+    ! include, as functions of their own for the tests and the forward maps)
 
     !> -ln x of the fit kernels (x positive and normal; +0 at x = 1; about one ulp).
     pure elemental real(wp) function hertzdamp_fit_neg_log(x) result(l)
         real(wp), intent(in) :: x   !! positive normal number
-        real(wp) :: x1(1), l1(1)
-        x1(1) = x
-        call kernel_loop(1, 1, x1, l1)
-        l = l1(1)
+        real(wp) :: kern_x, kern_l
+        kern_x = x
+        include 'hertzdamp_fit_neg_log.inc'
+        l = kern_l
     end function hertzdamp_fit_neg_log
 
     !> x^(1/3) of the fit kernels (x = 0 or positive normal; about one ulp).
     pure elemental real(wp) function hertzdamp_fit_cbrt(x) result(y)
         real(wp), intent(in) :: x   !! 0 or a positive normal number
-        real(wp) :: x1(1), y1(1)
-        x1(1) = x
-        call kernel_loop(2, 1, x1, y1)
-        y = y1(1)
+        real(wp) :: kern_x, kern_y
+        kern_x = x
+        include 'hertzdamp_fit_cbrt.inc'
+        y = kern_y
     end function hertzdamp_fit_cbrt
 
     !> x^(1/5) of the fit kernels (x = 0 or positive normal; about one ulp).
     pure elemental real(wp) function hertzdamp_fit_root5(x) result(y)
         real(wp), intent(in) :: x   !! 0 or a positive normal number
-        real(wp) :: x1(1), y1(1)
-        x1(1) = x
-        call kernel_loop(4, 1, x1, y1)
-        y = y1(1)
+        real(wp) :: kern_x, kern_y
+        kern_x = x
+        include 'hertzdamp_fit_root5.inc'
+        y = kern_y
     end function hertzdamp_fit_root5
 
     !> exp(-l) of the fit kernels (0 <= l <= 700; about one ulp).
     pure elemental real(wp) function hertzdamp_fit_exp_neg(l) result(y)
         real(wp), intent(in) :: l   !! 0 <= l <= 700
-        real(wp) :: l1(1), y1(1)
-        l1(1) = l
-        call kernel_loop(3, 1, l1, y1)
-        y = y1(1)
+        real(wp) :: kern_x, kern_y
+        kern_x = l
+        include 'hertzdamp_fit_exp_neg.inc'
+        y = kern_y
     end function hertzdamp_fit_exp_neg
 
     ! ================================================================ masks and pieces

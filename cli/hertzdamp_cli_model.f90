@@ -16,7 +16,7 @@ module hertzdamp_cli_model
                          hertzdamp_compact_alpha_max_force, hertzdamp_compact_alpha_max_overlap, &
                          hertzdamp_forward_alpha, hertzdamp_collision, &
                          hertzdamp_method_code, hertzdamp_law_code, hertzdamp_fit_law_e_min, &
-                         HD_DAMPING_LINEAR, HD_END_OVERLAP, HD_METHOD_RK45, HD_METHOD_SERIES, HD_METHOD_PADE, &
+                         HD_DAMPING_LINEAR, HD_DAMPING_TSUJI, HD_END_OVERLAP, HD_METHOD_RK45, HD_METHOD_SERIES, HD_METHOD_PADE, &
                          HD_METHOD_COMPACT, HD_METHOD_FIT, HD_METHOD_ITERATIVE, HD_OK
     use hertzdamp_cli, only: cli_args, parse_real, parse_int, parse_choice, fail, EXIT_USAGE
     use hertzdamp_cli_text, only: fmt_short, itoa
@@ -126,7 +126,7 @@ contains
         character(len=:), allocatable :: s
         select case (c%law)
         case (HD_DAMPING_LINEAR); s = 'kg/s'
-        case default; s = 'kg s^-1 m^-' // merge('1/4', '1/2', hertzdamp_law_code('tsuji') == c%law)
+        case default; s = 'kg s^-1 m^-' // merge('1/4', '1/2', c%law == HD_DAMPING_TSUJI)
         end select
     end function damping_unit
 

@@ -33,6 +33,7 @@ module hertzdamp_cmd_bench
     use hertzdamp_cli, only: cli_args, cli_buffer, parse_args, parse_choice, fail, quit, pad, EXIT_OK, EXIT_FAILURE
     use hertzdamp_cli_output, only: out_table, format_choices, FORMAT_TEXT, FORMAT_CSV, FORMAT_JSON
     use hertzdamp_cli_help, only: print_help, wants_help
+    use hertzdamp_cli_text, only: itoa
     use, intrinsic :: ieee_arithmetic, only: ieee_value, ieee_quiet_nan, ieee_is_nan, ieee_is_finite
     implicit none
     private
@@ -1206,14 +1207,6 @@ contains
     end subroutine make_plot
 
     ! ------------------------------------------------------------------ small helpers
-
-    function itoa(i) result(s)
-        integer, intent(in) :: i
-        character(len=:), allocatable :: s
-        character(len=16) :: b
-        write (b, '(i0)') i
-        s = trim(b)
-    end function itoa
 
     !> x as an integer when it is one, else with one decimal.
     function short(x) result(s)

@@ -463,7 +463,7 @@ contains
                      '; ' // itoa(res(l)%iterations) // ' iterations')
         if (dat%weighted) then
             call buf%add('# ' // cal_law_name(l) // ': chi2 = ' // g(res(l)%chi2) // ', dof = ' // itoa(res(l)%dof) // &
-                         ', chi2/dof = ' // g(res(l)%chi2 / res(l)%dof) // ', p-value = ' // g(res(l)%p_value))
+                         ', chi2/dof = ' // g(res(l)%chi2 / max(res(l)%dof, 1)) // ', p-value = ' // g(res(l)%p_value))
         else
             call buf%add('# ' // cal_law_name(l) // ': RMS of the weighted residuals ' // g(res(l)%scale) // &
                          ' (the uncertainties are scaled by it)')

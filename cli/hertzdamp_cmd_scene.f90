@@ -6,7 +6,7 @@
 module hertzdamp_cmd_scene
     use hertzdamp, only: hertzdamp_rk, hertzdamp_end_name, HD_OK, HD_METHOD_ITERATIVE, HD_METHOD_SERIES, &
                          HD_METHOD_PADE, HD_METHOD_COMPACT, HD_METHOD_FIT, HD_METHOD_FIRST_ORDER, hertzdamp_method_name, &
-                         hertzdamp_law_code, hertzdamp_law_name, HD_DAMPING_LINEAR
+                         hertzdamp_law_code, hertzdamp_law_name, HD_DAMPING_LINEAR, HD_DAMPING_TSUJI
     use hertzdamp_dem, only: hertzdamp_dem_scene, hertzdamp_dem_result, hertzdamp_dem_check, hertzdamp_dem_state, &
                              hertzdamp_dem_start, hertzdamp_dem_advance, hertzdamp_dem_finish, hertzdamp_dem_steps_done, &
                              hertzdamp_dem_steps_total, hertzdamp_dem_rule, hertzdamp_dem_select, &
@@ -314,7 +314,7 @@ contains
         character(len=:), allocatable :: s
         if (law == HD_DAMPING_LINEAR) then
             s = 'linear: force k zeta^(3/2) + d zeta''; alpha = d t*/m (~ u^(-1/5) at fixed k, d)'
-        else if (law == hertzdamp_law_code('tsuji')) then
+        else if (law == HD_DAMPING_TSUJI) then
             s = 'tsuji: force k zeta^(3/2) + d zeta^(1/4) zeta''; alpha = d t* (u t*)^(1/4)/m = d/sqrt(m k) ' // &
                 '(independent of u: e the same at every impact speed)'
         else

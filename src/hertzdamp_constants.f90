@@ -12,6 +12,10 @@ module hertzdamp_constants
     !> pi, for every module of the package and its applications (one definition).
     real(wp), parameter, public :: hertzdamp_pi = acos(-1.0_wp)
 
+    !> Magnitudes (of T_c, m, u, material data) for which the direct, power-free
+    !> formulas cannot overflow or underflow; others take a logarithmic path.
+    real(wp), parameter, public :: hertzdamp_direct_lo = 1.0e-30_wp, hertzdamp_direct_hi = 1.0e30_wp
+
     ! The closed forms, evaluated once by the compiler (log_gamma is allowed in
     ! constant expressions), so that the functions below cost nothing in hot loops.
     real(wp), parameter :: z_max0 = 1.25_wp**0.4_wp

@@ -58,7 +58,7 @@ module hertzdamp_fit
     use hertzdamp_kinds, only: hertzdamp_rk
     use hertzdamp_status, only: HD_OK, HD_NO_REBOUND, HD_BAD_END, HD_BAD_ALPHA, HD_BAD_RESTITUTION, HD_OUT_OF_RANGE, &
                                 HD_OUTSIDE_VALIDITY, HD_END_OVERLAP, HD_END_FORCE
-    use hertzdamp_constants, only: hertzdamp_tau_c0
+    use hertzdamp_constants, only: hertzdamp_tau_c0, hertzdamp_pi, hertzdamp_direct_lo, hertzdamp_direct_hi
     use hertzdamp_laws, only: HD_DAMPING_LINEAR, HD_DAMPING_TSUJI, hertzdamp_law_status, hertzdamp_alpha_c_tsuji
     use hertzdamp_fit_data
     use, intrinsic :: iso_fortran_env, only: int64, real128
@@ -144,13 +144,13 @@ module hertzdamp_fit
                                       (p5(4) - 4.0_wp * p5(3) + 6.0_wp * p5(2) - 4.0_wp * p5(1) + p5(0)) / 24.0_wp]
     real(wp), parameter :: fifth = 0.2_wp
     !> alpha(e) of the tsuji overlap end: sqrt(5) L / sqrt(pi^2 + L^2) (Antypov & Elliott 2011)
-    real(wp), parameter :: sqrt5 = hertzdamp_alpha_c_tsuji, pi_sq = acos(-1.0_wp)**2
+    real(wp), parameter :: sqrt5 = hertzdamp_alpha_c_tsuji, pi_sq = hertzdamp_pi**2
 
     !> Values per pass when a buffer is needed (on the stack).
     integer, parameter :: chunk = 256
     !> T_c, m, u in [direct_lo, direct_hi]: the direct path of hertzdamp_fit_invert_n.
-    integer(int64), parameter :: direct_lo_bits = transfer(1.0e-30_wp, 0_int64)
-    integer(int64), parameter :: direct_hi_bits = transfer(1.0e30_wp, 0_int64)
+    integer(int64), parameter :: direct_lo_bits = transfer(hertzdamp_direct_lo, 0_int64)
+    integer(int64), parameter :: direct_hi_bits = transfer(hertzdamp_direct_hi, 0_int64)
 
     public :: hertzdamp_fit_inverse, hertzdamp_fit_inverse_n, hertzdamp_fit_alpha, hertzdamp_fit_tau_c_of_e
     public :: hertzdamp_fit_invert_n, hertzdamp_fit_invert

@@ -40,13 +40,14 @@ module hertzdamp_inverse
                                 HD_NO_CONVERGENCE, HD_NO_REBOUND, HD_OUT_OF_RANGE, HD_END_OVERLAP, HD_END_FORCE, &
                                 HD_OUTSIDE_VALIDITY, HD_INACCURATE
     use hertzdamp_scaling, only: hertzdamp_safe_exp, hertzdamp_safe_exp_or_zero
-    use hertzdamp_constants, only: hertzdamp_e1, hertzdamp_tau_c0
+    use hertzdamp_constants, only: hertzdamp_e1, hertzdamp_tau_c0, safe_lo => hertzdamp_direct_lo, &
+                                   safe_hi => hertzdamp_direct_hi
     use hertzdamp_rk45, only: hertzdamp_collision, hertzdamp_rk45_collide
     use hertzdamp_methods, only: HD_METHOD_RK45, HD_METHOD_SERIES, HD_METHOD_PADE, HD_METHOD_COMPACT, &
                                  HD_METHOD_FIT, HD_METHOD_ITERATIVE, HD_METHOD_FIRST_ORDER, hertzdamp_forward_alpha, &
                                  hertzdamp_default_accuracy
     use hertzdamp_fit, only: hertzdamp_fit_inverse, hertzdamp_fit_invert, hertzdamp_fit_invert_n
-    use hertzdamp_fit_laws, only: hertzdamp_fit_law_inverse, hertzdamp_fit_law_e_min
+    use hertzdamp_fit_laws, only: hertzdamp_fit_law_e_min
     use hertzdamp_laws, only: HD_DAMPING_LINEAR, HD_DAMPING_TSUJI, hertzdamp_law_q, hertzdamp_law_status, hertzdamp_law_alpha_c, &
                               hertzdamp_law_has_alpha_c
     use hertzdamp_compact, only: hertzdamp_compact_inverse, hertzdamp_compact_e_min_overlap, &
@@ -60,7 +61,6 @@ module hertzdamp_inverse
     !> Default tolerance of the iterative method (relative, on alpha).
     real(wp), parameter, public :: hertzdamp_invert_default_tol = 1.0e-10_wp
     !> Inputs m, u, T_c in [safe_lo, safe_hi] take the direct (power-free) path.
-    real(wp), parameter :: safe_lo = 1.0e-30_wp, safe_hi = 1.0e30_wp
     !> Contacts per pass of the rank-1 form (buffers on the stack).
     integer, parameter :: chunk = 256
 
@@ -178,10 +178,10 @@ contains
                 status(i0 + 1:i0 + nc) = -1
             end if
             bb(1:nc) = .false.
+            sb_ts(1:nc) = 0.0_wp
             if (present(tstar)) then
-                sb_ts(1:nc) = tc(i0 + 1:i0 + nc) / tb(1:nc)
-            else
-                sb_ts(1:nc) = 0.0_wp
+                ! only where the kernel served the contact (tb is not set, or 0, elsewhere)
+                where (status(i0 + 1:i0 + nc) == HD_OK) sb_ts(1:nc) = tc(i0 + 1:i0 + nc) / tb(1:nc)
             end if
             ! one contact at a time only where needed: the bound, and the contacts the
             ! kernel does not serve (the same code as the scalar form)
@@ -272,10 +272,8 @@ contains
             if (.not. (k_phys > 0.0_wp .and. k_phys <= huge(k_phys))) status = HD_BAD_KPHYS
         end if
         if (status == HD_OK) then
-            if (meth == HD_METHOD_FIT .and. law == HD_DAMPING_LINEAR) then
-                call hertzdamp_fit_inverse(e, iend, a, tau, status)
-            else if (meth == HD_METHOD_FIT) then
-                call hertzdamp_fit_law_inverse(e, iend, law, a, tau, status)
+            if (meth == HD_METHOD_FIT) then
+                call hertzdamp_fit_inverse(e, iend, a, tau, status, law)
             else
                 call hertzdamp_invert_alpha(e, iend, a, tau, status, meth, tol, accuracy, law)
             end if
@@ -389,7 +387,7 @@ contains
         end if
         select case (meth)
         case (HD_METHOD_FIT)
-            call hertzdamp_fit_law_inverse(e, iend, law_, alpha, tau_c, status)
+            call hertzdamp_fit_inverse(e, iend, alpha, tau_c, status, law_)
         case (HD_METHOD_COMPACT)
             call hertzdamp_compact_inverse(e, iend, alpha, tau_c, status)
         case (HD_METHOD_FIRST_ORDER)

@@ -16,6 +16,7 @@ module hertzdamp_laws
     use hertzdamp_status, only: HD_OK, HD_BAD_LAW, HD_NOT_SUPPORTED, HD_DAMPING_LINEAR, HD_DAMPING_TSUJI, &
                                 HD_DAMPING_KUWABARA_KONO
     use hertzdamp_fit_data, only: fit_alpha_c
+    use hertzdamp_constants, only: hertzdamp_pi
     implicit none
     private
 
@@ -150,7 +151,7 @@ contains
                 status = HD_NOT_SUPPORTED
                 return
             end if
-            e = exp(-acos(-1.0_wp) * a / sqrt(w2))
+            e = exp(-hertzdamp_pi * a / sqrt(w2))
         else
             if (alpha < 0.0_wp) then
                 status = HD_NOT_SUPPORTED
@@ -188,7 +189,7 @@ contains
             return
         end if
         l = log(e)
-        alpha = -hertzdamp_alpha_c_tsuji * l / sqrt(acos(-1.0_wp)**2 + l * l)
+        alpha = -hertzdamp_alpha_c_tsuji * l / sqrt(hertzdamp_pi**2 + l * l)
     end function hertzdamp_tsuji_alpha
 
 end module hertzdamp_laws

@@ -26,7 +26,7 @@ module hertzdamp_materials
     use hertzdamp_status, only: HD_OK, HD_BAD_RADIUS, HD_BAD_DENSITY, HD_BAD_MODULUS, HD_BAD_POISSON, &
                                 HD_BAD_MASS, HD_BAD_VELOCITY, HD_BAD_STIFFNESS, HD_OUT_OF_RANGE
     use hertzdamp_scaling, only: hertzdamp_safe_exp, hertzdamp_check_positive
-    use hertzdamp_constants, only: hertzdamp_tau_c0, pi => hertzdamp_pi
+    use hertzdamp_constants, only: hertzdamp_tau_c0, pi => hertzdamp_pi, hertzdamp_direct_lo, hertzdamp_direct_hi
     implicit none
     private
 
@@ -214,7 +214,7 @@ contains
     !> logarithmic path, slightly less accurate, takes the others).
     pure elemental logical function ordinary(x)
         real(wp), intent(in) :: x
-        ordinary = x >= 1.0e-30_wp .and. x <= 1.0e30_wp
+        ordinary = x >= hertzdamp_direct_lo .and. x <= hertzdamp_direct_hi
     end function ordinary
 
     !> HD_OK, HD_BAD_MODULUS or HD_BAD_POISSON for the elastic constants of one body.

@@ -593,7 +593,7 @@ contains
             status = HD_NOT_SUPPORTED
             return
         end if
-        call hertzdamp_rk45_tolerances(1.0e-13_wp, opts)
+        call hertzdamp_rk45_tolerances(hertzdamp_rk45_default_tol, opts)
         lo = 1.0_wp
         hi = 1.25_wp
         do while (hi - lo > w)

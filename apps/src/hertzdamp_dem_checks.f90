@@ -139,6 +139,9 @@ contains
         nb = min(max(nmin, 1.0e-50_wp), 1.0e100_wp)   ! for the bounds: 1/N^2 and its square without overflow
         bound = sc%accuracy + 2.0_wp / nb**2
         mask = hertzdamp_dem_checked(sc, res)
+        ! how many contacts the e and T_c rows below stand on (0: there are no such rows)
+        rows = [rows, hertzdamp_dem_check_row('contacts with e, tc checked', real(count(mask), wp), .false., 0.0_wp, &
+                                              HD_CHECK_INFO)]
         if (any(mask)) call add_errors(rows, res, 'binary contacts', mask, bound, sc%gravity)
         if (sc%gravity) then
             ! gravity changes e by about -0.1 e g T_c/u_in (measured, e = 0.8): check the

@@ -21,7 +21,7 @@ module hertzdamp_dem_validate
     use hertzdamp_kinds, only: hertzdamp_rk
     use hertzdamp_status, only: HD_OK, HD_BAD_ARGUMENT, hertzdamp_message, hertzdamp_end_name
     use hertzdamp_methods, only: HD_METHOD_FIT
-    use hertzdamp_constants, only: hertzdamp_tau_c0
+    use hertzdamp_constants, only: hertzdamp_tau_c0, hertzdamp_pi
     use hertzdamp_inverse, only: hertzdamp_invert_alpha
     use hertzdamp_laws, only: hertzdamp_law_status, hertzdamp_law_name
     use hertzdamp_fit_laws, only: hertzdamp_fit_law_e_min
@@ -289,7 +289,7 @@ contains
         ! masses (through logarithms: density r^3 may overflow or underflow)
         do i = 1, size(sc%radius)
             at = line_text(sc%pline(i)) // '&particle '
-            lm(i) = lg(sc%mat(sc%pmat(i))%density) + lg(4.0_wp / 3.0_wp * acos(-1.0_wp)) + 3.0_wp * lg(sc%radius(i))
+            lm(i) = lg(sc%mat(sc%pmat(i))%density) + lg(4.0_wp / 3.0_wp * hertzdamp_pi) + 3.0_wp * lg(sc%radius(i))
             if (abs(lm(i)) > lg_big) then
                 message = at // 'radius: the mass density 4/3 pi radius^3 = ' // pow10_text(lm(i)) // &
                           ' kg lies outside [1e-150, 1e150] kg'

@@ -38,6 +38,10 @@ for f in lib/libhertzdamp.a lib/libhertzdamp.so lib/libhertzdamp.so.0 include/he
   check "installed $f" test -s "$prefix/$f"
 done
 check "installed bin/hertzdamp" test -x "$prefix/bin/hertzdamp"
+# a fresh clone has no build/ yet: the install must create its build directory's parent
+check "install into a build directory whose parent does not exist" \
+  bash tools/install.sh "$tmp/prefix_fresh" "$tmp/fresh/build/cmake"
+check "fresh install has the library" test -s "$tmp/prefix_fresh/lib/libhertzdamp.so.0"
 check "man page renders" bash -c "man -l '$prefix/share/man/man1/hertzdamp.1' 2>/dev/null | grep -q hertzdamp || \
   groff -man -Tascii '$prefix/share/man/man1/hertzdamp.1' | grep -q hertzdamp"
 check "no staging directory left in the prefix" test -z "$(find "$prefix" -name '*stage*')"

@@ -10,6 +10,7 @@ cd "$(dirname "$0")/.."
 die() { echo "install: $*" >&2; exit 1; }
 case "$prefix" in /*) ;; *) die "PREFIX must be an absolute path: $prefix";; esac
 
+mkdir -p "$(dirname "$build")"   # a fresh clone has no build/ yet
 cmake -S . -B "$build" -DCMAKE_INSTALL_PREFIX="$prefix" >"$build.configure.log" 2>&1 ||
   { cat "$build.configure.log" >&2; die "cmake configure failed"; }
 cmake --build "$build" -j "$(nproc)" >"$build.build.log" 2>&1 ||

@@ -65,6 +65,17 @@ contains
         call s%check(err(2) < 1.0e-12_wp, 'fit forward z_max, tau_max within 1e-12' // trim(lab))
         call s%check(err(3) < 1.0e-12_wp, 'fit inverse alpha, tau_c within 1e-12' // trim(lab))
         print '(a,a,3es10.2)', 'max rel err fit fwd (e,tau_c), (z_max,tau_max), inverse (alpha,tau_c):', trim(lab), err
+        ! relative error of alpha where alpha is small (e near 1): 121 alpha log-spaced in [0.01, 0.3]
+        ! (the reference e, ~1e-15 absolute, resolves alpha there to ~1e-13 relative)
+        err(3) = 0.0_wp
+        do i = 0, 120
+            a = 0.01_wp * 30.0_wp**(real(i, wp) / 120.0_wp)
+            r = hertzdamp_rk45_collide(a, iend, 1.0e-15_wp, law)
+            call hertzdamp_fit_law_inverse(r%e, iend, law, a2, tc2, st)
+            err(3) = max(err(3), rel_err(a2, a))
+        end do
+        call s%check(err(3) < 1.0e-12_wp, 'fit inverse alpha within 1e-12 relative, alpha in [0.01, 0.3]' // trim(lab))
+        print '(a,a,es10.2)', 'max rel err fit inverse alpha, alpha in [0.01, 0.3]:', trim(lab), err(3)
     end subroutine against_reference
 
     !> alpha with e(alpha) = e by bisection on rk45 (for the forward range of the test).

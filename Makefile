@@ -106,7 +106,7 @@ fit-source:
 # CMake builds and installs the core library (shared and static), its modules, the C
 # header, the legacy include file, pkg-config and CMake package files, the program
 # and its man page (CMakeLists.txt); tools/install.sh stages and checks first.
-install: deps
+install: .deps-apt
 	@bash tools/install.sh "$(abspath $(PREFIX))"
 
 # API documentation of the core library (FORD, settings in ford.md) -> build/docs/index.html

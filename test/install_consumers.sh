@@ -212,6 +212,9 @@ check "static C example: no libhertzdamp.so needed" bash -c "! ldd '$tmp/c/dem_c
 "$tmp/c/dem_c" >"$tmp/c_static.out" 2>&1
 check "static C example: same output" cmp "$tmp/c.out" "$tmp/c_static.out"
 export PKG_CONFIG_PATH="$prefix/lib/pkgconfig"
+v_fpm=$(sed -nE 's/^version *= *"([^"]+)".*/\1/p' fpm.toml)
+check "pkg-config version = fpm.toml ($v_fpm)" test "$(pkg-config --modversion hertzdamp)" = "$v_fpm"
+check "CMake package version = fpm.toml" grep -q "PACKAGE_VERSION \"$v_fpm\"" "$prefix/lib/cmake/hertzdamp/hertzdampConfigVersion.cmake"
 # shellcheck disable=SC2046
 check "pkg-config (shared): C example builds (it uses libm itself)" cc -O2 "$tmp/c/dem.c" $(pkg-config --cflags --libs hertzdamp) \
   -lm -o "$tmp/dem_pc"

@@ -18,7 +18,7 @@ namespace HertzdampLammps {
 FixHertzdampWall::FixHertzdampWall(LAMMPS *lmp, int narg, char **arg) : Fix(lmp, narg, arg)
 {
   const char *cmd = "fix hertzdamp/wall";
-  bool have_time = false, have_e = false;
+  bool have_e = false;
   double y = 0.0, nu = 0.0, yw = 0.0, nuw = 0.0;
   bool have_y = false, have_nu = false, have_yw = false, have_nuw = false;
   int iarg = 3;
@@ -26,10 +26,6 @@ FixHertzdampWall::FixHertzdampWall(LAMMPS *lmp, int narg, char **arg) : Fix(lmp,
     const std::string key = arg[iarg];
     const int used = rule.parse(lmp, cmd, narg, arg, iarg);
     if (used) {
-      if (key == "steps" || key == "tc" || key == "fixed") {
-        if (have_time) fail_all(lmp, __FILE__, __LINE__, "fix hertzdamp/wall: give only one of steps N, tc T, fixed K D");
-        have_time = true;
-      }
       iarg += used;
       continue;
     }
@@ -59,7 +55,7 @@ FixHertzdampWall::FixHertzdampWall(LAMMPS *lmp, int narg, char **arg) : Fix(lmp,
       fail_all(lmp, __FILE__, __LINE__, std::string(cmd) + ": unknown keyword '" + key + "'");
     }
   }
-  if (!have_time) fail_all(lmp, __FILE__, __LINE__, std::string(cmd) + ": one of steps N, tc T or fixed K D is required");
+  rule.check(lmp, cmd);
   if (!have_e || !(e > 0.0 && e <= 1.0)) fail_all(lmp, __FILE__, __LINE__, std::string(cmd) + ": e E with 0 < E <= 1 is required");
   if (axis < 0 || (!has_lo && !has_hi)) fail_all(lmp, __FILE__, __LINE__, std::string(cmd) + ": a wall (xplane|yplane|zplane LO HI) is required");
   if (has_lo && has_hi && !(lo < hi)) fail_all(lmp, __FILE__, __LINE__, std::string(cmd) + ": need LO < HI");
@@ -128,13 +124,9 @@ void FixHertzdampWall::post_force(int /*vflag*/)
       double *p = s + 1;
       if (ov <= 0.0) {
         if (s[0] == 0.0) continue;
-        const double prev = p[P_PREV_OV], tprev = p[P_TPREV];
-        const double tend_ov = zero_crossing(prev, tprev, ov, step);
-        const double tend = (force_end && p[P_TEND] >= 0.0) ? p[P_TEND] : tend_ov;
-        double fc = 0.0;
-        if (rule.phase && !force_end && tprev < step)
-          fc = p[P_D] * approach * phase_weight((tend_ov - tprev) / (step - tprev));
-        book.finish(p, static_cast<double>(tag[i]), side == 0 ? -1.0 : -2.0, tend, -approach + fc * dt / p[P_M], dt);
+        const ContactEnd ce = payload_end(p, ov, -approach, step, force_end, rule.phase);
+        const double fc = ce.f_end;
+        book.finish(p, static_cast<double>(tag[i]), side == 0 ? -1.0 : -2.0, ce.tend, -approach + fc * dt / p[P_M], dt);
         f[i][axis] += side == 0 ? fc : -fc;
         s[0] = 0.0;
         continue;
@@ -146,9 +138,8 @@ void FixHertzdampWall::post_force(int /*vflag*/)
         const double kphys = estar > 0.0 ? 4.0 / 3.0 * estar * sqrt(radius[i]) : 0.0;
         const Onset o = contact_rule(lmp, rule, e, kphys, m, approach, dt);
         s[0] = 1.0;
-        payload_onset(p, o, approach, m, ov, step, dt);
+        f_phase = payload_onset(p, o, approach, m, ov, step, dt, rule.phase);
         book.onset(o, approach);
-        if (rule.phase && approach > 0.0) f_phase = o.d * approach * phase_weight(ov / (approach * dt));
       }
       const double fn = payload_force(p, ov, approach, step, force_end, f_phase);
       f[i][axis] += side == 0 ? fn : -fn;

@@ -65,6 +65,10 @@ int RuleSettings::parse(LAMMPS *lmp, const char *cmd, int narg, char **arg, int 
                std::string(cmd) + ": keyword '" + key + "' needs " + std::to_string(n) +
                    " value(s)");
   };
+  if (key == "steps" || key == "tc" || key == "fixed") {
+    if (++ntimes > 1)
+      fail_all(lmp, __FILE__, __LINE__, std::string(cmd) + ": give only one of steps N, tc T, fixed K D");
+  }
   if (key == "steps") {
     need(1);
     tcmode = TC_STEPS;
@@ -126,7 +130,7 @@ int RuleSettings::parse(LAMMPS *lmp, const char *cmd, int narg, char **arg, int 
 
 void RuleSettings::check(LAMMPS *lmp, const char *cmd) const
 {
-  if (tcmode == TC_STEPS && !(nsteps > 0.0))
+  if (ntimes == 0)
     fail_all(lmp, __FILE__, __LINE__, std::string(cmd) + ": one of steps N, tc T or fixed K D is required");
 }
 

@@ -45,9 +45,12 @@ struct RuleSettings {
   double vmin = 0.0;         // floor of the impact speed used by the rule
   int phase = 1;             // 1: weight the damping force's jumps by the contact phase (see README)
   std::string logfile;       // per-contact log ("" = none)
+  int ntimes = 0;            // timing keywords given (steps, tc, fixed): exactly one
 
   // Parse one keyword at arg[iarg]; return the number of words used (0 = not ours).
+  // A second timing keyword stops the run.
   int parse(LAMMPS *lmp, const char *cmd, int narg, char **arg, int iarg);
+  // After the last keyword: stops the run when no timing keyword was given.
   void check(LAMMPS *lmp, const char *cmd) const;
   double contact_time(double dt) const { return tcmode == TC_STEPS ? nsteps * dt : tc; }
   std::string describe() const;
@@ -112,9 +115,11 @@ inline double zero_crossing(double prev, double tprev, double now, double step)
 }
 
 // Fill the payload of a contact detected at step `step` with overlap ov > 0, approach
-// speed u and effective mass m, whose k and d are those of the onset o.
-inline void payload_onset(double *p, const Onset &o, double u, double m, double ov, double step,
-                          double dt)
+// speed u and effective mass m, whose k and d are those of the onset o.  Returns the
+// onset's phase force (phase correction on): the onset was a fraction
+// phi = ov / (u dt) of a step ago, d zeta' (phi - 1/2).
+inline double payload_onset(double *p, const Onset &o, double u, double m, double ov, double step,
+                            double dt, bool phase)
 {
   p[P_K] = o.k;
   p[P_D] = o.d;
@@ -128,6 +133,29 @@ inline void payload_onset(double *p, const Onset &o, double u, double m, double 
   p[P_TPREV] = step;
   p[P_TEND] = -1.0;
   p[P_FLAGS] = o.bounded;
+  return (phase && u > 0.0) ? o.d * u * phase_weight(ov / (u * dt)) : 0.0;
+}
+
+// End of a contact whose overlap is back to zero (ov <= 0) at step `step`, with
+// separation speed u_out: the end time in steps (force end: where the force reached
+// zero; overlap end: where the overlap did) and the phase force of this step (phase
+// correction, overlap end: the overlap ended a fraction psi into the last step,
+// d zeta' (psi - 1/2)).
+struct ContactEnd {
+  double tend;    // end time in steps
+  double f_end;   // phase force to apply now (0 without it)
+};
+inline ContactEnd payload_end(const double *p, double ov, double u_out, double step, bool force_end,
+                              bool phase)
+{
+  const double prev = p[P_PREV_OV], tprev = p[P_TPREV];
+  const double tend_ov = zero_crossing(prev, tprev, ov, step);
+  ContactEnd c;
+  c.tend = (force_end && p[P_TEND] >= 0.0) ? p[P_TEND] : tend_ov;
+  c.f_end = 0.0;
+  if (phase && !force_end && tprev < step)
+    c.f_end = p[P_D] * (-u_out) * phase_weight((tend_ov - tprev) / (step - tprev));
+  return c;
 }
 
 // Normal force k ov^1.5 + d u + f_phase of a contact at step `step` (overlap ov > 0,

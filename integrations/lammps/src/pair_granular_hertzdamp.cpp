@@ -72,23 +72,14 @@ void PairGranularHertzdamp::allocate()
 void PairGranularHertzdamp::settings(int narg, char **arg)
 {
   RuleSettings rs;
-  bool have_time = false;
+  const char *cmd = "pair_style granular/hertzdamp";
   for (int iarg = 0; iarg < narg;) {
     const std::string key = arg[iarg];
-    const int used = rs.parse(lmp, "pair_style granular/hertzdamp", narg, arg, iarg);
-    if (used == 0)
-      fail_all(lmp, __FILE__, __LINE__, "pair_style granular/hertzdamp: unknown keyword '" + key + "'");
-    if (key == "steps" || key == "tc" || key == "fixed") {
-      if (have_time)
-        fail_all(lmp, __FILE__, __LINE__,
-                 "pair_style granular/hertzdamp: give only one of steps N, tc T, fixed K D");
-      have_time = true;
-    }
+    const int used = rs.parse(lmp, cmd, narg, arg, iarg);
+    if (used == 0) fail_all(lmp, __FILE__, __LINE__, std::string(cmd) + ": unknown keyword '" + key + "'");
     iarg += used;
   }
-  if (!have_time)
-    fail_all(lmp, __FILE__, __LINE__,
-             "pair_style granular/hertzdamp: one of steps N, tc T or fixed K D is required");
+  rs.check(lmp, cmd);
   rule = rs;
   book.reset();
   book.open_log(lmp, rule.logfile, "# hertzdamp pair_style granular/hertzdamp " + rule.describe());
@@ -275,17 +266,12 @@ void PairGranularHertzdamp::compute(int eflag, int vflag)
         const double r = sqrt(rsq), rinv = 1.0 / r, ov = radsum - r;
         const double u_out = ((v[i][0] - v[j][0]) * delx + (v[i][1] - v[j][1]) * dely +
                               (v[i][2] - v[j][2]) * delz) * rinv;
-        const double prev = p[P_PREV_OV], tprev = p[P_TPREV];
-        const double tend_ov = zero_crossing(prev, tprev, ov, step);
-        const double tend = (force_end && p[P_TEND] >= 0.0) ? p[P_TEND] : tend_ov;
-        double f_end = 0.0;
-        // the overlap ended a fraction psi into the last step: d zeta' (psi - 1/2)
-        if (rule.phase && !force_end && tprev < step)
-          f_end = p[P_D] * (-u_out) * phase_weight((tend_ov - tprev) / (step - tprev));
+        const ContactEnd ce = payload_end(p, ov, u_out, step, force_end, rule.phase);
+        const double f_end = ce.f_end;
         if (newton_pair || j < nlocal || tag[i] < tag[j]) {
           const double ta = tag[i] < tag[j] ? tag[i] : tag[j], tb = tag[i] < tag[j] ? tag[j] : tag[i];
           // separation speed once the kick f_end (applied now) is complete
-          book.finish(p, ta, tb, tend, u_out + f_end * dt / p[P_M], dt);
+          book.finish(p, ta, tb, ce.tend, u_out + f_end * dt / p[P_M], dt);
         }
         if (f_end != 0.0) {
           const double fpair = f_end * rinv;
@@ -321,10 +307,8 @@ void PairGranularHertzdamp::compute(int eflag, int vflag)
         c = new_contact();
         ci[jj] = c;
         p = &pool[static_cast<size_t>(c) * NPAYLOAD];
-        payload_onset(p, o, approach, m, ov, step, dt);
+        f_phase = payload_onset(p, o, approach, m, ov, step, dt, rule.phase);
         if (newton_pair || j < nlocal || tag[i] < tag[j]) book.onset(o, approach);
-        // onset a fraction phi = ov / (approach dt) of a step ago: d zeta' (phi - 1/2)
-        if (rule.phase && approach > 0.0) f_phase = o.d * approach * phase_weight(ov / (approach * dt));
       } else {
         p = &pool[static_cast<size_t>(c) * NPAYLOAD];
       }

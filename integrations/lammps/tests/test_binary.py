@@ -128,6 +128,24 @@ def main():
             abs(r["d"] / (d * (kphys / k) ** 0.4) - 1) <= 1e-13, "%r" % r["d"])
     c.check("wall k_phys: e within 3e-3, T_c > target",
             abs(r["e"] / 0.5 - 1) <= 3e-3 and r["tc"] > 1000 * DT, "%r %r" % (r["e"], r["tc"]))
+
+    # input errors: exactly one timing keyword (steps, tc, fixed), for the pair style and the wall
+    box = ("include ${load}\natom_style sphere\nregion b block 0 1 0 1 0 1\ncreate_box 1 b\n"
+           "comm_modify vel yes\n")
+    cases = [("pair_style granular/hertzdamp steps 20 tc 1e-5",
+              "pair_style granular/hertzdamp: give only one of steps N, tc T, fixed K D"),
+             ("pair_style granular/hertzdamp end force",
+              "pair_style granular/hertzdamp: one of steps N, tc T or fixed K D is required"),
+             ("fix w all hertzdamp/wall e 0.5 steps 20 fixed 1e6 0.1 zplane 0 NULL",
+              "fix hertzdamp/wall: give only one of steps N, tc T, fixed K D"),
+             ("fix w all hertzdamp/wall e 0.5 zplane 0 NULL",
+              "fix hertzdamp/wall: one of steps N, tc T or fixed K D is required")]
+    for i, (line, msg) in enumerate(cases):
+        path = os.path.join(tmp, "bad%d.lmp" % i)
+        with open(path, "w") as f:
+            f.write(box + line + "\n")
+        out = hdlmp.lmp(path, {}, tmp, check=False)
+        c.check("input error: " + line, ("ERROR: " + msg) in out, out[-300:])
     c.finish()
 
 

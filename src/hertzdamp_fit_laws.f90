@@ -149,7 +149,9 @@ contains
         real(wp), intent(out), optional :: z_max   !! deepest overlap (units of u_in t*)
         real(wp), intent(out), optional :: tau_max !! time of deepest overlap (units of t*)
         real(wp) :: zm, tm, dl, dtau
-        call law_forward(alpha, iend, law, .false., e, tau_c, status, zm, tm, dl, dtau)
+        ! the turning point only when asked for (it costs a map of its own)
+        call law_forward(alpha, iend, law, .false., present(z_max) .or. present(tau_max), e, tau_c, status, zm, tm, &
+                         dl, dtau)
         if (present(z_max)) z_max = zm
         if (present(tau_max)) tau_max = tm
     end subroutine hertzdamp_fit_law_forward
@@ -175,7 +177,7 @@ contains
         logical :: singular
         ! the force end at alpha = 0: the slope of tau_c is infinite (not computed)
         singular = iend == HD_END_FORCE .and. alpha == 0.0_wp
-        call law_forward(alpha, iend, law, .not. singular, e, tau_c, status, zm, tm, dl, dtau)
+        call law_forward(alpha, iend, law, .not. singular, .false., e, tau_c, status, zm, tm, dl, dtau)
         de = 0.0_wp
         if (status == HD_OK .and. singular) status = HD_OUT_OF_RANGE
         if (status == HD_OK) then
@@ -190,12 +192,13 @@ contains
         end if
     end subroutine hertzdamp_fit_forward_deriv
 
-    !> The forward map of every law (values of hertzdamp_fit_law_forward) and, with
-    !> `deriv`, dL/dalpha (L = -ln e) and dtau_c/dalpha (else 0).
-    pure subroutine law_forward(alpha, iend, law, deriv, e, tau_c, status, zm, tm, dl, dtau)
+    !> The forward map of every law (values of hertzdamp_fit_law_forward), with
+    !> `turning` its turning point zm, tm (else 0), and with `deriv` dL/dalpha
+    !> (L = -ln e) and dtau_c/dalpha (else 0).  e and tau_c do not depend on the switches.
+    pure subroutine law_forward(alpha, iend, law, deriv, turning, e, tau_c, status, zm, tm, dl, dtau)
         real(wp), intent(in) :: alpha
         integer, intent(in) :: iend, law
-        logical, intent(in) :: deriv
+        logical, intent(in) :: deriv, turning
         real(wp), intent(out) :: e, tau_c, zm, tm, dl, dtau
         integer, intent(out) :: status
         real(wp) :: l, x, p, dp, dx, sa
@@ -207,7 +210,11 @@ contains
         dtau = 0.0_wp
         status = hertzdamp_law_status(law)
         if (status == HD_OK .and. law == HD_DAMPING_LINEAR) then
-            call hertzdamp_fit_forward(alpha, iend, e, tau_c, status, zm, tm)
+            if (turning) then
+                call hertzdamp_fit_forward(alpha, iend, e, tau_c, status, zm, tm)
+            else
+                call hertzdamp_fit_forward(alpha, iend, e, tau_c, status)
+            end if
             if (status == HD_OK .and. deriv) call linear_deriv(alpha, iend, dl, dtau)
             return
         else if (status == HD_OK) then
@@ -215,7 +222,7 @@ contains
         end if
         if (status /= HD_OK) return
         if (law == HD_DAMPING_TSUJI) then
-            if (alpha <= fit_ts_alpha_max_force) then
+            if (turning .and. alpha <= fit_ts_alpha_max_force) then
                 x = alpha**0.2_wp
                 zm = map_value(fam_turn, fit_map_ts_turn, 1, x)
                 tm = map_value(fam_turn, fit_map_ts_turn, 2, x)
@@ -244,8 +251,10 @@ contains
             if (alpha <= fit_kk_alpha_max_force) then
                 sa = sqrt(alpha)
                 x = log(1.0_wp + sa)
-                zm = map_value(fam_turn, fit_map_kk_turn, 1, x)
-                tm = map_value(fam_turn, fit_map_kk_turn, 2, x)
+                if (turning) then
+                    zm = map_value(fam_turn, fit_map_kk_turn, 1, x)
+                    tm = map_value(fam_turn, fit_map_kk_turn, 2, x)
+                end if
                 if (iend == HD_END_FORCE) then
                     ! L = alpha P(x), dx/dalpha = 1/(2 sqrt(alpha) (1 + sqrt(alpha)))
                     call map_eval(fam_fwd, fit_map_kk_fo_fwd, 1, x, p, dp)

@@ -185,9 +185,9 @@ contains
         real(wp), intent(out) :: e       !! restitution coefficient
         real(wp), intent(out) :: tc      !! contact time [s]
         integer, intent(out) :: status   !! HD_OK, HD_NO_REBOUND or an error code
-        real(wp) :: alpha, tstar, zeta_max
-        call hertzdamp_forward_dim(k, d, m, u, iend, legacy_method, alpha, tstar, e, tc, zeta_max, &
-                                   status, law=law)
+        real(wp) :: alpha, tstar
+        ! without zeta_max: the fit skips the turning point (the same e, tc and status)
+        call hertzdamp_forward_dim(k, d, m, u, iend, legacy_method, alpha, tstar, e, tc, status=status, law=law)
         select case (status)
         case (HD_OK)
         case (HD_NO_REBOUND)

@@ -10,7 +10,7 @@
 !> maps of `hertzdamp_fit_data` (gen/fit/gen_fit.f90, data/fit_coefficients.csv) and
 !> the exact tsuji closed forms.  With L = -ln e:
 !> - tsuji, overlap: e(alpha) exactly; tau_c as a polynomial of L (the exact L(alpha));
-!> - tsuji, force: e(alpha) exactly (hertzdamp_tsuji_e); tau_c of L^(1/5) (tau_c has an
+!> - tsuji, force: e(alpha) exactly (hertzdamp_tsuji_l); tau_c of L^(1/5) (tau_c has an
 !>   alpha^(4/5) term);
 !> - kuwabara-kono, overlap: L/alpha and tau_c of alpha;
 !> - kuwabara-kono, force: L/alpha and tau_c of ln(1 + alpha^(1/2)) (non-analytic terms
@@ -30,11 +30,10 @@
 !> piece); the tsuji closed forms differentiated analytically.
 module hertzdamp_fit_laws
     use hertzdamp_kinds, only: hertzdamp_rk
-    use hertzdamp_constants, only: pi => hertzdamp_pi
     use hertzdamp_status, only: HD_OK, HD_NO_REBOUND, HD_BAD_END, HD_OUTSIDE_VALIDITY, HD_OUT_OF_RANGE, &
                                 HD_END_OVERLAP, HD_END_FORCE
     use hertzdamp_laws, only: HD_DAMPING_LINEAR, HD_DAMPING_TSUJI, hertzdamp_law_status, hertzdamp_alpha_c_tsuji, &
-                              hertzdamp_tsuji_e
+                              hertzdamp_tsuji_l
     use hertzdamp_fit, only: hertzdamp_fit_inverse, hertzdamp_fit_forward, hertzdamp_approx_alpha_status, &
                              hertzdamp_fit_e_min_overlap, hertzdamp_fit_e_min_force, hertzdamp_fit_neg_log, &
                              hertzdamp_fit_cbrt
@@ -149,7 +148,9 @@ contains
         real(wp), intent(out), optional :: z_max   !! deepest overlap (units of u_in t*)
         real(wp), intent(out), optional :: tau_max !! time of deepest overlap (units of t*)
         real(wp) :: zm, tm, dl, dtau
-        call law_forward(alpha, iend, law, .false., e, tau_c, status, zm, tm, dl, dtau)
+        ! the turning point only when asked for (it costs a map of its own)
+        call law_forward(alpha, iend, law, .false., present(z_max) .or. present(tau_max), e, tau_c, status, zm, tm, &
+                         dl, dtau)
         if (present(z_max)) z_max = zm
         if (present(tau_max)) tau_max = tm
     end subroutine hertzdamp_fit_law_forward
@@ -175,7 +176,7 @@ contains
         logical :: singular
         ! the force end at alpha = 0: the slope of tau_c is infinite (not computed)
         singular = iend == HD_END_FORCE .and. alpha == 0.0_wp
-        call law_forward(alpha, iend, law, .not. singular, e, tau_c, status, zm, tm, dl, dtau)
+        call law_forward(alpha, iend, law, .not. singular, .false., e, tau_c, status, zm, tm, dl, dtau)
         de = 0.0_wp
         if (status == HD_OK .and. singular) status = HD_OUT_OF_RANGE
         if (status == HD_OK) then
@@ -190,12 +191,13 @@ contains
         end if
     end subroutine hertzdamp_fit_forward_deriv
 
-    !> The forward map of every law (values of hertzdamp_fit_law_forward) and, with
-    !> `deriv`, dL/dalpha (L = -ln e) and dtau_c/dalpha (else 0).
-    pure subroutine law_forward(alpha, iend, law, deriv, e, tau_c, status, zm, tm, dl, dtau)
+    !> The forward map of every law (values of hertzdamp_fit_law_forward), with
+    !> `turning` its turning point zm, tm (else 0), and with `deriv` dL/dalpha
+    !> (L = -ln e) and dtau_c/dalpha (else 0).  e and tau_c do not depend on the switches.
+    pure subroutine law_forward(alpha, iend, law, deriv, turning, e, tau_c, status, zm, tm, dl, dtau)
         real(wp), intent(in) :: alpha
         integer, intent(in) :: iend, law
-        logical, intent(in) :: deriv
+        logical, intent(in) :: deriv, turning
         real(wp), intent(out) :: e, tau_c, zm, tm, dl, dtau
         integer, intent(out) :: status
         real(wp) :: l, x, p, dp, dx, sa
@@ -207,7 +209,11 @@ contains
         dtau = 0.0_wp
         status = hertzdamp_law_status(law)
         if (status == HD_OK .and. law == HD_DAMPING_LINEAR) then
-            call hertzdamp_fit_forward(alpha, iend, e, tau_c, status, zm, tm)
+            if (turning) then
+                call hertzdamp_fit_forward(alpha, iend, e, tau_c, status, zm, tm)
+            else
+                call hertzdamp_fit_forward(alpha, iend, e, tau_c, status)
+            end if
             if (status == HD_OK .and. deriv) call linear_deriv(alpha, iend, dl, dtau)
             return
         else if (status == HD_OK) then
@@ -215,7 +221,7 @@ contains
         end if
         if (status /= HD_OK) return
         if (law == HD_DAMPING_TSUJI) then
-            if (alpha <= fit_ts_alpha_max_force) then
+            if (turning .and. alpha <= fit_ts_alpha_max_force) then
                 x = alpha**0.2_wp
                 zm = map_value(fam_turn, fit_map_ts_turn, 1, x)
                 tm = map_value(fam_turn, fit_map_ts_turn, 2, x)
@@ -224,18 +230,21 @@ contains
                 status = HD_NO_REBOUND
                 tau_c = ieee_value(1.0_wp, ieee_positive_inf)
             else
-                call hertzdamp_tsuji_e(alpha, iend, e, status)
-                l = 0.0_wp - log(e)
-                if (deriv) dl = tsuji_dl(alpha, iend)
+                ! L of the closed form (never -ln of the rounded e), e = exp(-L)
+                if (deriv) then
+                    call hertzdamp_tsuji_l(alpha, iend, l, status, dl)
+                else
+                    call hertzdamp_tsuji_l(alpha, iend, l, status)
+                end if
+                e = exp(-l)
                 if (iend == HD_END_OVERLAP .and. l <= fit_one_x1(fit_map_ts_ov_inv_t)) then
                     call map_eval(fam_one, fit_map_ts_ov_inv_t, 1, l, tau_c, dp)
                     dtau = dp * dl
                 else if (iend == HD_END_FORCE .and. alpha <= fit_ts_alpha_max_force) then
                     x = l**0.2_wp
                     call map_eval(fam_one, fit_map_ts_fo_inv_t, 1, x, tau_c, dp)
-                    ! d(L^(1/5))/dL = L^(-4/5)/5, with the exact L of the closed form (L = -ln e
-                    ! loses its relative accuracy where e rounds to 1)
-                    if (deriv) dtau = dp * 0.2_wp * tsuji_l_force(alpha)**(-0.8_wp) * dl
+                    ! d(L^(1/5))/dL = L^(-4/5)/5
+                    if (deriv) dtau = dp * 0.2_wp * l**(-0.8_wp) * dl
                 else
                     status = HD_OUTSIDE_VALIDITY
                 end if
@@ -244,8 +253,10 @@ contains
             if (alpha <= fit_kk_alpha_max_force) then
                 sa = sqrt(alpha)
                 x = log(1.0_wp + sa)
-                zm = map_value(fam_turn, fit_map_kk_turn, 1, x)
-                tm = map_value(fam_turn, fit_map_kk_turn, 2, x)
+                if (turning) then
+                    zm = map_value(fam_turn, fit_map_kk_turn, 1, x)
+                    tm = map_value(fam_turn, fit_map_kk_turn, 2, x)
+                end if
                 if (iend == HD_END_FORCE) then
                     ! L = alpha P(x), dx/dalpha = 1/(2 sqrt(alpha) (1 + sqrt(alpha)))
                     call map_eval(fam_fwd, fit_map_kk_fo_fwd, 1, x, p, dp)
@@ -319,67 +330,5 @@ contains
             dtau = dtau * x / (3.0_wp * alpha)   ! alpha = 0: not finite (HD_OUT_OF_RANGE)
         end if
     end subroutine linear_deriv
-
-    !> dL/dalpha of the tsuji closed forms (doc/damping-laws.md section 4), alpha >= 0 and
-    !> below sqrt(5) for the overlap end.  With a = 2 alpha/5, W^2 = 4/5 - a^2:
-    !> overlap L = pi a/W, dL/dalpha = (2/5) (4/5) pi / W^3; force L = 2 f(x) with
-    !> x = W^2/a^2 = (4/5)/a^2 - 1 and f(x) = atan(sqrt x)/sqrt x (atanh(sqrt(-x))/sqrt(-x)
-    !> for x < 0), dL/dalpha = 2 f'(x) dx/dalpha, dx/dalpha = -(16/25)/a^3,
-    !> f'(x) = (1/(1 + x) - f(x))/(2x) (its series for |x| < 0.1); near alpha = 0, with
-    !> zeta = alpha/sqrt(5), L = pi zeta - 2 zeta^2 + O(zeta^3).
-    pure real(wp) function tsuji_dl(alpha, iend) result(dl)
-        real(wp), intent(in) :: alpha
-        integer, intent(in) :: iend
-        real(wp) :: a, w2, x, f, fp, xn, r
-        integer :: n
-        a = 0.4_wp * alpha
-        w2 = 0.16_wp * (hertzdamp_alpha_c_tsuji - alpha) * (hertzdamp_alpha_c_tsuji + alpha)
-        if (iend == HD_END_OVERLAP) then
-            dl = 0.32_wp * pi / (w2 * sqrt(w2))
-            return
-        end if
-        if (alpha < 1.0e-8_wp) then
-            dl = (pi - 4.0_wp * alpha / hertzdamp_alpha_c_tsuji) / hertzdamp_alpha_c_tsuji
-            return
-        end if
-        x = w2 / (a * a)
-        if (abs(x) < 0.1_wp) then
-            ! f(x) = sum_n (-x)^n / (2n + 1): f'(x) = sum_{n >= 1} (-1)^n n x^(n-1) / (2n + 1)
-            fp = 0.0_wp
-            xn = 1.0_wp
-            do n = 1, 30
-                fp = fp + real((-1)**n * n, wp) * xn / real(2 * n + 1, wp)
-                xn = xn * x
-            end do
-        else
-            if (x > 0.0_wp) then
-                r = sqrt(x)
-                f = atan(r) / r
-            else
-                ! atanh(|W|/a) = ln((a + |W|)/sqrt(4/5)), free of cancellation
-                r = sqrt(-w2)
-                f = a * log((a + r) / sqrt(0.8_wp)) / r
-            end if
-            fp = (1.0_wp / (1.0_wp + x) - f) / (2.0_wp * x)
-        end if
-        dl = 2.0_wp * fp * (-0.64_wp / (a * a * a))
-    end function tsuji_dl
-
-    !> L = -ln e of the tsuji force end from the closed form (alpha > 0), without exp and
-    !> log: 2 zeta acos(zeta)/sqrt(1 - zeta^2) for zeta = alpha/sqrt(5) < 1, its atanh form
-    !> above (2 zeta ln(zeta + sqrt(zeta^2 - 1))/sqrt(zeta^2 - 1)), 2 at zeta = 1.
-    pure real(wp) function tsuji_l_force(alpha) result(l)
-        real(wp), intent(in) :: alpha
-        real(wp) :: z, s
-        z = alpha / hertzdamp_alpha_c_tsuji
-        s = (1.0_wp - z) * (1.0_wp + z)
-        if (s > 0.0_wp) then
-            l = 2.0_wp * z * acos(z) / sqrt(s)
-        else if (s < 0.0_wp) then
-            l = 2.0_wp * z * log(z + sqrt(-s)) / sqrt(-s)
-        else
-            l = 2.0_wp
-        end if
-    end function tsuji_l_force
 
 end module hertzdamp_fit_laws

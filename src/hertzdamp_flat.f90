@@ -10,7 +10,8 @@ module hertzdamp_flat
     use hertzdamp_kinds, only: hertzdamp_rk
     use hertzdamp_status, only: HD_OK, HD_NO_REBOUND
     use hertzdamp_methods, only: hertzdamp_forward_dim, HD_METHOD_FIT
-    use hertzdamp_inverse, only: mod_invert => hertzdamp_invert, hertzdamp_invert_alpha
+    use hertzdamp_inverse, only: mod_invert => hertzdamp_invert, hertzdamp_invert_alpha, hertzdamp_invert_fit_rest
+    use hertzdamp_laws, only: HD_DAMPING_LINEAR
     use hertzdamp_fit, only: hertzdamp_fit_invert
     implicit none
     private
@@ -40,9 +41,9 @@ contains
         real(wp) :: a, tau
         ! what hertzdamp_invert does for the fit without optional arguments, without the
         ! layer of its optional arguments: the fit's kernel, then the general path for the
-        ! contacts the kernel does not serve
+        ! contacts the kernel does not serve (the kernel is not run again)
         call hertzdamp_fit_invert(e, tc, m, u, iend, k, d, a, tau, status)
-        if (status /= HD_OK) call mod_invert(e, tc, m, u, iend, k, d, status, method=legacy_method)
+        if (status /= HD_OK) call hertzdamp_invert_fit_rest(e, tc, m, u, iend, HD_DAMPING_LINEAR, k, d, status)
         if (status /= HD_OK) then
             k = 0.0_wp
             d = 0.0_wp
@@ -130,7 +131,7 @@ contains
         if (k_phys == 0.0_wp) then
             ! as flat_invert: the fit's kernel of the law, then the general path
             call hertzdamp_fit_invert(e, tc, m, u, iend, k, d, a, tau, status, law)
-            if (status /= HD_OK) call mod_invert(e, tc, m, u, iend, k, d, status, method=legacy_method, law=law)
+            if (status /= HD_OK) call hertzdamp_invert_fit_rest(e, tc, m, u, iend, law, k, d, status)
         else
             ! the bound; an invalid k_phys gets HD_BAD_KPHYS in the module's order of the checks
             call mod_invert(e, tc, m, u, iend, k, d, status, k_phys=k_phys, method=legacy_method, law=law)
@@ -185,9 +186,9 @@ contains
         real(wp), intent(out) :: e       !! restitution coefficient
         real(wp), intent(out) :: tc      !! contact time [s]
         integer, intent(out) :: status   !! HD_OK, HD_NO_REBOUND or an error code
-        real(wp) :: alpha, tstar, zeta_max
-        call hertzdamp_forward_dim(k, d, m, u, iend, legacy_method, alpha, tstar, e, tc, zeta_max, &
-                                   status, law=law)
+        real(wp) :: alpha, tstar
+        ! without zeta_max: the fit skips the turning point (the same e, tc and status)
+        call hertzdamp_forward_dim(k, d, m, u, iend, legacy_method, alpha, tstar, e, tc, status=status, law=law)
         select case (status)
         case (HD_OK)
         case (HD_NO_REBOUND)

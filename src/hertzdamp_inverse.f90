@@ -86,6 +86,7 @@ module hertzdamp_inverse
     end type hertzdamp_secant
 
     public :: hertzdamp_invert, hertzdamp_invert_alpha, hertzdamp_secant_start, hertzdamp_secant_next
+    public :: hertzdamp_invert_fit_rest
 
 contains
 
@@ -241,6 +242,27 @@ contains
             end if
         end if
     end subroutine apply_bound
+
+    !> The contacts the fit's kernel (hertzdamp_fit_invert) does not serve, without the
+    !> physical bound: what hertzdamp_invert with method = HD_METHOD_FIT and no k_phys
+    !> does after its kernel failed, the same bits, without running the kernel again.
+    !> For callers that have run the kernel themselves (the flat C and legacy entry
+    !> points); on failure k = d = 0 and status names the bad argument.
+    pure elemental subroutine hertzdamp_invert_fit_rest(e, tc, m, u, iend, law, k, d, status)
+        real(wp), intent(in) :: e        !! target restitution coefficient
+        real(wp), intent(in) :: tc       !! target contact time [s]
+        real(wp), intent(in) :: m        !! effective mass [kg]
+        real(wp), intent(in) :: u        !! impact velocity [m s^-1]
+        integer, intent(in) :: iend      !! HD_END_OVERLAP or HD_END_FORCE
+        integer, intent(in) :: law       !! HD_DAMPING_*
+        real(wp), intent(out) :: k       !! stiffness [N m^-3/2] (0 on error)
+        real(wp), intent(out) :: d       !! damping coefficient [kg s^-1 m^-q] (0 on error)
+        integer, intent(out) :: status   !! HD_OK or an error code
+        real(wp) :: a, ts, tau
+        logical :: bound
+        call invert_general(e, tc, m, u, iend, .false., 0.0_wp, HD_METHOD_FIT, law, k=k, d=d, status=status, a=a, &
+                            ts=ts, tau=tau, bound=bound)
+    end subroutine hertzdamp_invert_fit_rest
 
     !> Every contact the fast path does not serve: the argument checks in their order
     !> (the law, T_c, m, u, k_phys, then e and iend by the method), the dimensionless

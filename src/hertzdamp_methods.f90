@@ -80,6 +80,22 @@ contains
         real(wp), intent(in), optional :: accuracy !! relative accuracy asked of series and Pade
         integer, intent(in), optional :: law       !! HD_DAMPING_* (default linear)
         type(hertzdamp_collision) :: res
+        res = forward_alpha(alpha, iend, method, .true., tol, order, accuracy, law)
+    end function hertzdamp_forward_alpha
+
+    !> hertzdamp_forward_alpha; without `turning` the fit leaves z_max = tau_max = 0
+    !> (not computed; the other methods compute them anyway).  e, tau_c and the status
+    !> do not depend on `turning`.
+    pure elemental function forward_alpha(alpha, iend, method, turning, tol, order, accuracy, law) result(res)
+        real(wp), intent(in) :: alpha
+        integer, intent(in) :: iend
+        integer, intent(in) :: method
+        logical, intent(in) :: turning
+        real(wp), intent(in), optional :: tol
+        integer, intent(in), optional :: order
+        real(wp), intent(in), optional :: accuracy
+        integer, intent(in), optional :: law
+        type(hertzdamp_collision) :: res
         real(wp) :: tol_, acc, err_e, err_tau
         integer :: st, law_
         tol_ = hertzdamp_rk45_default_tol
@@ -110,7 +126,11 @@ contains
             ! z_max and tau_max are fitted too (0 beyond alpha = 1.3 for the overlap)
             res%alpha = alpha
             res%iend = iend
-            call hertzdamp_fit_law_forward(alpha, iend, law_, res%e, res%tau_c, res%status, res%z_max, res%tau_max)
+            if (turning) then
+                call hertzdamp_fit_law_forward(alpha, iend, law_, res%e, res%tau_c, res%status, res%z_max, res%tau_max)
+            else
+                call hertzdamp_fit_law_forward(alpha, iend, law_, res%e, res%tau_c, res%status)
+            end if
         case (HD_METHOD_COMPACT)
             ! the compact formulas give e and tau_c only (z_max = tau_max = 0)
             res%alpha = alpha
@@ -170,11 +190,13 @@ contains
             res%iend = iend
             res%status = HD_BAD_ARGUMENT
         end select
-    end function hertzdamp_forward_alpha
+    end function forward_alpha
 
     !> The dimensional forward problem (damping force d zeta^q zeta' of the law, default
     !> linear q = 0: d in kg s^-1 m^-q).  On no rebound e = 0 and T_c = +inf with
-    !> status HD_NO_REBOUND; on any other failure all outputs are 0.
+    !> status HD_NO_REBOUND; on any other failure all outputs are 0.  Without
+    !> `zeta_max` the fit does not compute the turning point (the other outputs and the
+    !> status are the same bits as with it).
     pure elemental subroutine hertzdamp_forward_dim(k, d, m, u, iend, method, alpha, tstar, e, tc, &
                                                    zeta_max, status, tol, order, accuracy, law)
         real(wp), intent(in) :: k                !! Hertz stiffness [N m^-3/2]
@@ -187,19 +209,23 @@ contains
         real(wp), intent(out) :: tstar           !! time unit [s]
         real(wp), intent(out) :: e               !! restitution coefficient
         real(wp), intent(out) :: tc              !! contact time [s]
-        real(wp), intent(out) :: zeta_max        !! deepest overlap [m]
+        real(wp), intent(out), optional :: zeta_max !! deepest overlap [m]
         integer, intent(out) :: status           !! HD_OK, HD_NO_REBOUND or an error
         real(wp), intent(in), optional :: tol    !! rk45 tolerance
         integer, intent(in), optional :: order   !! series order
         real(wp), intent(in), optional :: accuracy !! relative accuracy asked of series and Pade
         integer, intent(in), optional :: law     !! HD_DAMPING_* (default linear)
         type(hertzdamp_collision) :: r
+        real(wp) :: zm
         e = 0.0_wp
         tc = 0.0_wp
-        zeta_max = 0.0_wp
+        if (present(zeta_max)) zeta_max = 0.0_wp
         call hertzdamp_reduce(k, d, m, u, alpha, tstar, status, law)
         if (status /= HD_OK) return
-        r = hertzdamp_forward_alpha(alpha, iend, method, tol, order, accuracy, law)
+        ! the turning point is needed for zeta_max, and for the range check below where
+        ! u t* is so large that u t* z_max (|z_max| < 2) might overflow
+        r = forward_alpha(alpha, iend, method, present(zeta_max) .or. .not. ieee_is_finite(u * tstar * 2.0_wp), &
+                          tol, order, accuracy, law)
         status = r%status
         if (status /= HD_OK .and. status /= HD_NO_REBOUND) then
             alpha = 0.0_wp
@@ -208,16 +234,17 @@ contains
         end if
         e = r%e
         tc = tstar * r%tau_c                     ! +inf without rebound (the documented answer)
-        zeta_max = u * tstar * r%z_max
+        zm = u * tstar * r%z_max
         ! every result but the no-rebound contact time must be a finite double
-        if (.not. (ieee_is_finite(zeta_max) .and. (ieee_is_finite(tc) .or. status == HD_NO_REBOUND))) then
+        if (.not. (ieee_is_finite(zm) .and. (ieee_is_finite(tc) .or. status == HD_NO_REBOUND))) then
             status = HD_OUT_OF_RANGE
             e = 0.0_wp
             tc = 0.0_wp
-            zeta_max = 0.0_wp
+            zm = 0.0_wp
             alpha = 0.0_wp
             tstar = 0.0_wp
         end if
+        if (present(zeta_max)) zeta_max = zm
     end subroutine hertzdamp_forward_dim
 
 end module hertzdamp_methods

@@ -14,7 +14,7 @@ module hertzdamp_cmd_basic
     use hertzdamp_cli_help, only: print_help, wants_help
     use hertzdamp_cli_model, only: model_opts, parse_model, model_options, method_accepts, instead, law_choices, damping_unit
     use hertzdamp_cli_rows, only: row_log, row_kind, row_word, row_has_result
-    use hertzdamp_cli_materials, only: cli_contact, parse_contact, contact_table, contact_options, contact_flags
+    use hertzdamp_cli_materials, only: cli_contact, parse_contact, require_mass, contact_table, contact_options, contact_flags
     use hertzdamp_cli_progress, only: progress_reporter
     use, intrinsic :: ieee_arithmetic, only: ieee_value, ieee_positive_inf
     implicit none
@@ -120,7 +120,7 @@ contains
                         contact_flags // ' --progress', args)
         call parse_model(args, c, inverse=.false.)
         call parse_contact(args, ct)
-        if (.not. ct%has_mass) call fail(EXIT_USAGE, 'missing option --mass (or --radius with --density) (see --help)')
+        call require_mass(ct)
         if (args%has('--k')) then
             ks = parse_sweep(args%get('--k', ''), '--k')
         else if (ct%has_kphys) then

@@ -49,7 +49,7 @@ module hertzdamp_cli_model
         character(len=:), allocatable :: tol_text, accuracy_text  !! as given (for the metadata)
     end type model_opts
 
-    public :: parse_model, method_accepts, instead, e_range_message, damping_unit
+    public :: parse_model, method_accepts, instead, e_range_message, damping_unit, law_text
 
 contains
 
@@ -121,14 +121,31 @@ contains
     end subroutine parse_model
 
     !> Unit of the damping coefficient d of the law (damping force d zeta^q zeta').
-    function damping_unit(c) result(s)
-        type(model_opts), intent(in) :: c
+    function damping_unit(law) result(s)
+        integer, intent(in) :: law   !! HD_DAMPING_*
         character(len=:), allocatable :: s
-        select case (c%law)
+        select case (law)
         case (HD_DAMPING_LINEAR); s = 'kg/s'
-        case default; s = 'kg s^-1 m^-' // merge('1/4', '1/2', c%law == HD_DAMPING_TSUJI)
+        case default; s = 'kg s^-1 m^-' // merge('1/4', '1/2', law == HD_DAMPING_TSUJI)
         end select
     end function damping_unit
+
+    !> The damping law as the reports of `check` and `scene` state it: name, damping
+    !> force, and how its alpha depends on the impact speed.
+    function law_text(law) result(s)
+        integer, intent(in) :: law   !! HD_DAMPING_*
+        character(len=:), allocatable :: s
+        select case (law)
+        case (HD_DAMPING_LINEAR)
+            s = 'linear: damping force d zeta'' (q = 0); alpha = d t*/m falls with speed as u^(-1/5)'
+        case (HD_DAMPING_TSUJI)
+            s = 'tsuji: damping force d zeta^(1/4) zeta'' (q = 1/4) with d = gamma sqrt(m k); alpha = gamma, ' // &
+                'the same at every speed'
+        case default
+            s = 'kuwabara-kono: damping force d zeta^(1/2) zeta'' (q = 1/2); alpha = d t* (u t*)^(1/2)/m rises ' // &
+                'with speed as u^(1/5)'
+        end select
+    end function law_text
 
     !> The alpha range a forward method accepts, as text.
     function method_accepts(c) result(s)

@@ -132,7 +132,7 @@ contains
         us = required_sweep(args, '--velocity')
         call check_combinations([size(ks), size(ds), size(us)], '--k, --d and --velocity')
         call contact_table(t, c, ct, 'k,d,velocity,mass,radius_eff,k_phys,alpha,t_star,e,t_c,zeta_max,status', &
-                           'k, k_phys [N m^-3/2], d [' // damping_unit(c) // '], velocity [m/s], mass [kg], ' // &
+                           'k, k_phys [N m^-3/2], d [' // damping_unit(c%law) // '], velocity [m/s], mass [kg], ' // &
                            'radius_eff [m], ' // &
                            't_star [s], t_c [s], zeta_max [m]')
         n = 0

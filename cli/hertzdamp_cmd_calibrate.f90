@@ -631,7 +631,7 @@ contains
         call s%open('calibrate', 'gp', u, gp)
         tcs = any(dat%has_tc)
         call s%write(u, 'set terminal ' // terminal // ' size 900,' // trim(merge('900', '500', tcs)) // ' noenhanced')
-        call s%write(u, 'set output ' // gp_string(plot_temp_name(plot)))
+        call s%write(u, 'set output ' // gp_string(plot_temp_name()))
         if (tcs) call s%write(u, 'set multiplot layout 2,1')
         call s%write(u, 'set logscale x')
         call s%write(u, 'set grid')

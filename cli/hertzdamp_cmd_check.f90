@@ -28,6 +28,7 @@ module hertzdamp_cmd_check
     use hertzdamp_cli_output, only: out_table, format_choices, FORMAT_TEXT
     use hertzdamp_cli_help, only: print_help, wants_help
     use hertzdamp_cli_materials, only: cli_contact, parse_contact
+    use hertzdamp_cli_model, only: law_text
     use hertzdamp_cli_rows, only: row_log, row_kind, row_word, row_has_result
     use hertzdamp_cli_progress, only: progress_reporter
     use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
@@ -329,21 +330,6 @@ contains
         end if
     end function law_message
 
-    function law_text(law) result(s)
-        integer, intent(in) :: law
-        character(len=:), allocatable :: s
-        select case (law)
-        case (HD_DAMPING_LINEAR)
-            s = 'linear: damping force d zeta'' (q = 0); alpha = d t*/m falls with speed as u^(-1/5)'
-        case (HD_DAMPING_TSUJI)
-            s = 'tsuji: damping force d zeta^(1/4) zeta'' (q = 1/4) with d = gamma sqrt(m k); alpha = gamma, ' // &
-                'the same at every speed'
-        case default
-            s = 'kuwabara-kono: damping force d zeta^(1/2) zeta'' (q = 1/2); alpha = d t* (u t*)^(1/2)/m rises ' // &
-                'with speed as u^(1/5)'
-        end select
-    end function law_text
-
     function end_text(iend) result(s)
         integer, intent(in) :: iend
         character(len=:), allocatable :: s
@@ -394,15 +380,22 @@ contains
         end if
     end function achieved_text
 
+    !> Whether a relative difference is below what the reports state (5e-7 in
+    !> magnitude, 'within 1e-6').
+    pure logical function negligible(x)
+        real(wp), intent(in) :: x
+        negligible = abs(x) < 5.0e-7_wp
+    end function negligible
+
     !> A relative difference x (finite) as a signed percentage, '+23.22 %', '-1.5e-3 %',
-    !> '+5e+301 %'; 'within 1e-6' below 5e-7 in magnitude.
+    !> '+5e+301 %'; 'within 1e-6' when negligible.
     function pct(x, unsigned) result(s)
         real(wp), intent(in) :: x
         logical, intent(in), optional :: unsigned   !! no + sign
         character(len=:), allocatable :: s
         character(len=32) :: b
         integer :: ex, ios
-        if (abs(x) < 5.0e-7_wp) then
+        if (negligible(x)) then
             s = 'within 1e-6'
             return
         end if
@@ -528,8 +521,8 @@ contains
             fmt_short(pt(ib)%u, 6) // ' m/s gives the shortest contact, t_c = ' // fmt_short(pt(ib)%tc, 6) // &
             ' s); the elastic Hertz time there is ' // fmt_short(pt(ib)%t_hertz, 6) // ' s, so the contact lasts '
         x = pt(ib)%tc / pt(ib)%t_hertz - 1.0_wp
-        if (abs(x) < 5.0e-7_wp) then
-            s = s // 'as long as the elastic estimate (within 1e-6)'
+        if (negligible(x)) then
+            s = s // 'as long as the elastic estimate (' // pct(x) // ')'
         else if (x > 0.0_wp) then
             s = s // pct(x, unsigned=.true.) // ' longer than the elastic estimate'
         else

@@ -47,7 +47,7 @@ contains
         call check_combinations([size(es), size(tcs), size(us)], '--e, the contact times and --velocity')
         call contact_table(t, c, ct, 'e,tc,velocity,mass,radius_eff,k_phys,alpha,tau_c,t_star,k,d,bound_active,' // &
                            'tc_actual,status', 'tc, t_star, tc_actual [s], velocity [m/s], mass [kg], radius_eff [m], ' // &
-                           'k, k_phys [N m^-3/2], d [' // damping_unit(c) // ']')
+                           'k, k_phys [N m^-3/2], d [' // damping_unit(c%law) // ']')
         n = 0
         call p%start(real(size(es) * size(tcs) * size(us), wp), 'invert', force=args%has('--progress'))
         do ie = 1, size(es)

@@ -14,10 +14,11 @@ module hertzdamp_cli_model
                          hertzdamp_fit_e_min_overlap, hertzdamp_fit_e_min_force, hertzdamp_compact_e_min_overlap, &
                          hertzdamp_compact_e_min_force, hertzdamp_pade_alpha_max, hertzdamp_fit_alpha_max_force, &
                          hertzdamp_compact_alpha_max_force, hertzdamp_compact_alpha_max_overlap, &
-                         hertzdamp_forward_alpha, hertzdamp_collision, &
+                         hertzdamp_forward_alpha, hertzdamp_collision, hertzdamp_alpha_min, hertzdamp_alpha_max, &
                          hertzdamp_method_code, hertzdamp_law_code, hertzdamp_fit_law_e_min, &
                          HD_DAMPING_LINEAR, HD_DAMPING_TSUJI, HD_END_OVERLAP, HD_METHOD_RK45, HD_METHOD_SERIES, HD_METHOD_PADE, &
                          HD_METHOD_COMPACT, HD_METHOD_FIT, HD_METHOD_ITERATIVE, HD_OK
+    use hertzdamp_fit_data, only: fit_law_e_min_forward
     use hertzdamp_cli, only: cli_args, parse_real, parse_int, parse_choice, fail, EXIT_USAGE
     use hertzdamp_cli_text, only: fmt_short, itoa
     use hertzdamp_cli_output, only: format_choices
@@ -153,12 +154,14 @@ contains
         character(len=:), allocatable :: s
         select case (c%method)
         case (HD_METHOD_RK45)
-            s = '-10 <= alpha <= 1e100 (overlap), 0 <= alpha <= 1e100 (force)'
+            s = fmt_short(hertzdamp_alpha_min) // ' <= alpha <= ' // fmt_short(hertzdamp_alpha_max) // ' (overlap), ' // &
+                '0 <= alpha <= ' // fmt_short(hertzdamp_alpha_max) // ' (force)'
         case (HD_METHOD_FIT)
             if (c%law == HD_DAMPING_LINEAR) then
                 s = 'alpha >= 0 (overlap), 0 <= alpha <= ' // fmt_short(hertzdamp_fit_alpha_max_force) // ' (force)'
             else
-                s = 'the alpha of e >= 1e-5 with --damping ' // c%law_name // ' (its fitted range)'
+                s = 'the alpha of e >= ' // fmt_short(fit_law_e_min_forward) // ' with --damping ' // c%law_name // &
+                    ' (its fitted range)'
             end if
         case (HD_METHOD_COMPACT)
             s = '0 <= alpha <= ' // fmt_short(hertzdamp_compact_alpha_max_overlap) // ' (overlap; no rebound from ' // &

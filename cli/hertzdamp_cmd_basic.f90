@@ -34,7 +34,8 @@ contains
         select case (status)
         case (HD_BAD_ALPHA, HD_OUTSIDE_VALIDITY)
             if (abs(alpha) > hertzdamp_alpha_max) then
-                s = 'alpha = ' // fmt_short(alpha) // ' is beyond 1e100, the largest alpha any method takes'
+                s = 'alpha = ' // fmt_short(alpha) // ' is beyond ' // fmt_short(hertzdamp_alpha_max) // &
+                    ', the largest alpha any method takes'
                 return
             end if
             s = 'alpha = ' // fmt_short(alpha) // ' is outside the range of --method ' // c%method_name // ' (' // &

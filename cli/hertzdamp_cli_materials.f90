@@ -14,6 +14,7 @@
 !>
 !> Interface: list `contact_options` among the command's valued options and
 !> `contact_flags` among its flags (parse_args), then `call parse_contact(args, ct)`.
+!> A command that needs the mass then calls `require_mass(ct)`.
 !> `ct%has_mass`, `ct%has_radius`, `ct%has_kphys` say which of `ct%mass`,
 !> `ct%radius`, `ct%k_phys` (and `ct%e_star` with has_kphys from materials) are
 !> known.  Every bad value exits 2 with one line naming the option; a mass or
@@ -51,9 +52,15 @@ module hertzdamp_cli_materials
         character(len=:), allocatable :: description   !! e.g. 'two spheres', 'sphere and wall'
     end type cli_contact
 
-    public :: parse_contact, contact_table
+    public :: parse_contact, require_mass, contact_table
 
 contains
+
+    !> Exit 2 when the contact options gave no mass (the message names --mass).
+    subroutine require_mass(ct)
+        type(cli_contact), intent(in) :: ct
+        if (.not. ct%has_mass) call fail(EXIT_USAGE, 'missing option --mass (or --radius with --density) (see --help)')
+    end subroutine require_mass
 
     !> Read the contact options into `ct`; exit 2 naming the option on any bad value
     !> or combination.

@@ -14,10 +14,11 @@ module hertzdamp_cli_model
                          hertzdamp_fit_e_min_overlap, hertzdamp_fit_e_min_force, hertzdamp_compact_e_min_overlap, &
                          hertzdamp_compact_e_min_force, hertzdamp_pade_alpha_max, hertzdamp_fit_alpha_max_force, &
                          hertzdamp_compact_alpha_max_force, hertzdamp_compact_alpha_max_overlap, &
-                         hertzdamp_forward_alpha, hertzdamp_collision, &
+                         hertzdamp_forward_alpha, hertzdamp_collision, hertzdamp_alpha_min, hertzdamp_alpha_max, &
                          hertzdamp_method_code, hertzdamp_law_code, hertzdamp_fit_law_e_min, &
                          HD_DAMPING_LINEAR, HD_DAMPING_TSUJI, HD_END_OVERLAP, HD_METHOD_RK45, HD_METHOD_SERIES, HD_METHOD_PADE, &
                          HD_METHOD_COMPACT, HD_METHOD_FIT, HD_METHOD_ITERATIVE, HD_OK
+    use hertzdamp_fit_data, only: fit_law_e_min_forward
     use hertzdamp_cli, only: cli_args, parse_real, parse_int, parse_choice, fail, EXIT_USAGE
     use hertzdamp_cli_text, only: fmt_short, itoa
     use hertzdamp_cli_output, only: format_choices
@@ -49,7 +50,7 @@ module hertzdamp_cli_model
         character(len=:), allocatable :: tol_text, accuracy_text  !! as given (for the metadata)
     end type model_opts
 
-    public :: parse_model, method_accepts, instead, e_range_message, damping_unit
+    public :: parse_model, method_accepts, instead, e_range_message, damping_unit, law_text
 
 contains
 
@@ -121,14 +122,31 @@ contains
     end subroutine parse_model
 
     !> Unit of the damping coefficient d of the law (damping force d zeta^q zeta').
-    function damping_unit(c) result(s)
-        type(model_opts), intent(in) :: c
+    function damping_unit(law) result(s)
+        integer, intent(in) :: law   !! HD_DAMPING_*
         character(len=:), allocatable :: s
-        select case (c%law)
+        select case (law)
         case (HD_DAMPING_LINEAR); s = 'kg/s'
-        case default; s = 'kg s^-1 m^-' // merge('1/4', '1/2', c%law == HD_DAMPING_TSUJI)
+        case default; s = 'kg s^-1 m^-' // merge('1/4', '1/2', law == HD_DAMPING_TSUJI)
         end select
     end function damping_unit
+
+    !> The damping law as the reports of `check` and `scene` state it: name, damping
+    !> force, and how its alpha depends on the impact speed.
+    function law_text(law) result(s)
+        integer, intent(in) :: law   !! HD_DAMPING_*
+        character(len=:), allocatable :: s
+        select case (law)
+        case (HD_DAMPING_LINEAR)
+            s = 'linear: damping force d zeta'' (q = 0); alpha = d t*/m falls with speed as u^(-1/5)'
+        case (HD_DAMPING_TSUJI)
+            s = 'tsuji: damping force d zeta^(1/4) zeta'' (q = 1/4) with d = gamma sqrt(m k); alpha = gamma, ' // &
+                'the same at every speed'
+        case default
+            s = 'kuwabara-kono: damping force d zeta^(1/2) zeta'' (q = 1/2); alpha = d t* (u t*)^(1/2)/m rises ' // &
+                'with speed as u^(1/5)'
+        end select
+    end function law_text
 
     !> The alpha range a forward method accepts, as text.
     function method_accepts(c) result(s)
@@ -136,12 +154,14 @@ contains
         character(len=:), allocatable :: s
         select case (c%method)
         case (HD_METHOD_RK45)
-            s = '-10 <= alpha <= 1e100 (overlap), 0 <= alpha <= 1e100 (force)'
+            s = fmt_short(hertzdamp_alpha_min) // ' <= alpha <= ' // fmt_short(hertzdamp_alpha_max) // ' (overlap), ' // &
+                '0 <= alpha <= ' // fmt_short(hertzdamp_alpha_max) // ' (force)'
         case (HD_METHOD_FIT)
             if (c%law == HD_DAMPING_LINEAR) then
                 s = 'alpha >= 0 (overlap), 0 <= alpha <= ' // fmt_short(hertzdamp_fit_alpha_max_force) // ' (force)'
             else
-                s = 'the alpha of e >= 1e-5 with --damping ' // c%law_name // ' (its fitted range)'
+                s = 'the alpha of e >= ' // fmt_short(fit_law_e_min_forward) // ' with --damping ' // c%law_name // &
+                    ' (its fitted range)'
             end if
         case (HD_METHOD_COMPACT)
             s = '0 <= alpha <= ' // fmt_short(hertzdamp_compact_alpha_max_overlap) // ' (overlap; no rebound from ' // &

@@ -11,7 +11,7 @@
 !>    write, flush and close checked and the size compared with what was written (a
 !>    full disk, `ulimit -f`: the program ignores SIGXFSZ, see main.f90, so that such a
 !>    write fails instead of killing the process).
-!> 3. gnuplot draws into plot_temp_name(target), a file of this process in
+!> 3. gnuplot draws into plot_temp_name(), a file of this process in
 !>    scratch_dir() whose name needs no quoting, so any target name works (quotes, a
 !>    leading '-', a newline).
 !> 4. plot_run checks gnuplot's own output: its exit status, its error stream (any
@@ -79,12 +79,10 @@ module hertzdamp_cli_plot
 contains
 
     !> The file gnuplot draws into: $TMPDIR/hertzdamp-plot-PID.png (the same name
-    !> for the whole run of this process; `file` is the target).
-    function plot_temp_name(file) result(tmp)
-        character(len=*), intent(in) :: file
+    !> for the whole run of this process, whatever the target).
+    function plot_temp_name() result(tmp)
         character(len=:), allocatable :: tmp
         tmp = scratch_dir() // '/hertzdamp-plot-' // itoa(int(c_getpid())) // '.png'
-        if (len(file) < 0) tmp = ''
     end function plot_temp_name
 
     !> The temporary name of the copy in the target's directory.
@@ -138,7 +136,7 @@ contains
         terminal = 'png'
         if (cs == 0 .and. es == 0) terminal = 'pngcairo'
         call check_new(dir_temp_name(file), 'cannot write the plot file "' // file // '" (directory not writable?)')
-        call check_new(plot_temp_name(file), 'cannot write a temporary file in ' // scratch_dir())
+        call check_new(plot_temp_name(), 'cannot write a temporary file in ' // scratch_dir())
     end subroutine plot_check_target
 
     !> Exit 2 unless `file` is absent or a writable regular file; the test does not
@@ -183,7 +181,7 @@ contains
         close (u, status='delete')
     end subroutine check_new
 
-    !> Run gnuplot on `script` (which draws into png_tmp = plot_temp_name(target)),
+    !> Run gnuplot on `script` (which draws into png_tmp = plot_temp_name()),
     !> check its output, copy the PNG next to the target and rename it into place.
     !> `script` and the `scratch` files are removed whatever happens; on failure exit 4
     !> with nothing left behind.
@@ -375,7 +373,7 @@ contains
         if (present(message)) call fail(EXIT_FAILURE, message)
     end subroutine scratch_discard
 
-    !> Run gnuplot on the scratch file `script` (which draws into plot_temp_name(target))
+    !> Run gnuplot on the scratch file `script` (which draws into plot_temp_name())
     !> and put the PNG in place (plot_run); every scratch file is removed.
     subroutine scratch_draw(self, script, target)
         class(plot_scratch), intent(inout) :: self
@@ -405,7 +403,7 @@ contains
             k = k + 1
             others(k) = self%names(i)%s
         end do
-        call plot_run(script, plot_temp_name(target), target, others)
+        call plot_run(script, plot_temp_name(), target, others)
     end subroutine draw_with
 
     function c_str(s) result(c)

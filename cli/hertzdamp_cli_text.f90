@@ -1,8 +1,10 @@
 !> Text for the output contract of the `hertzdamp` program: valid UTF-8 everywhere
 !> (invalid bytes replaced), one-line messages (control characters escaped), and the
-!> number formats of the text, CSV and JSON outputs.
+!> number formats of the text, CSV and JSON outputs (fmt_short, for messages, is the
+!> applications' own, hertzdamp_apps_text).
 module hertzdamp_cli_text
     use hertzdamp_kinds, only: hertzdamp_rk
+    use hertzdamp_apps_text, only: fmt_short, itoa, ROUND_TRIP
     use, intrinsic :: ieee_arithmetic, only: ieee_is_finite, ieee_is_nan
     implicit none
     private
@@ -11,7 +13,9 @@ module hertzdamp_cli_text
     !> U+FFFD REPLACEMENT CHARACTER, in UTF-8.
     character(len=*), parameter :: replacement = char(239) // char(191) // char(189)
 
-    public :: utf8_clean, one_line, json_string, csv_field, fmt_csv, fmt_json, fmt_text, fmt_short, itoa
+    public :: utf8_clean, one_line, json_string, csv_field, fmt_csv, fmt_json, fmt_text
+    !> The short number format and itoa of the applications, for the commands.
+    public :: fmt_short, itoa, ROUND_TRIP
 
 contains
 
@@ -223,64 +227,5 @@ contains
             s = trim(adjustl(buf))
         end if
     end function fmt_text
-
-    !> A number in a message: at most 6 significant digits, trailing zeros dropped,
-    !> positional from 1e-4 to 1e6 (0.0005, 2.5, 10000), otherwise 1.5e-07, 1e+200.
-    function fmt_short(x) result(s)
-        real(wp), intent(in) :: x
-        character(len=:), allocatable :: s
-        character(len=32) :: buf
-        character(len=:), allocatable :: digits, sgn
-        integer :: ex, ios, k
-        if (.not. ieee_is_finite(x)) then
-            s = fmt_csv(x)
-            return
-        end if
-        if (x == 0.0_wp) then
-            s = '0'
-            return
-        end if
-        write (buf, '(es14.5e3)') abs(x)            ! d.ddddde+xxx
-        buf = adjustl(buf)
-        read (buf(9:12), *, iostat=ios) ex
-        if (ios /= 0) then
-            s = fmt_csv(x)
-            return
-        end if
-        digits = buf(1:1) // buf(3:7)
-        k = len(digits)
-        do while (k > 1)
-            if (digits(k:k) /= '0') exit
-            k = k - 1
-        end do
-        digits = digits(1:k)
-        sgn = merge('-', ' ', x < 0.0_wp)
-        sgn = trim(sgn)
-        if (ex >= -4 .and. ex < 6) then
-            if (ex >= 0) then
-                if (len(digits) <= ex + 1) then
-                    s = digits // repeat('0', ex + 1 - len(digits))
-                else
-                    s = digits(1:ex + 1) // '.' // digits(ex + 2:)
-                end if
-            else
-                s = '0.' // repeat('0', -ex - 1) // digits
-            end if
-        else
-            s = digits(1:1)
-            if (len(digits) > 1) s = s // '.' // digits(2:)
-            s = s // 'e' // merge('-', '+', ex < 0) // itoa(abs(ex))
-        end if
-        s = sgn // s
-    end function fmt_short
-
-    !> An integer as text.
-    pure function itoa(i) result(s)
-        integer, intent(in) :: i
-        character(len=:), allocatable :: s
-        character(len=12) :: buf
-        write (buf, '(i0)') i
-        s = trim(buf)
-    end function itoa
 
 end module hertzdamp_cli_text

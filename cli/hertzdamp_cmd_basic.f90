@@ -14,7 +14,7 @@ module hertzdamp_cmd_basic
     use hertzdamp_cli_help, only: print_help, wants_help
     use hertzdamp_cli_model, only: model_opts, parse_model, model_options, method_accepts, instead, law_choices, damping_unit
     use hertzdamp_cli_rows, only: row_log, row_kind, row_word, row_has_result
-    use hertzdamp_cli_materials, only: cli_contact, parse_contact, contact_table, contact_options, contact_flags
+    use hertzdamp_cli_materials, only: cli_contact, parse_contact, require_mass, contact_table, contact_options, contact_flags
     use hertzdamp_cli_progress, only: progress_reporter
     use, intrinsic :: ieee_arithmetic, only: ieee_value, ieee_positive_inf
     implicit none
@@ -34,7 +34,8 @@ contains
         select case (status)
         case (HD_BAD_ALPHA, HD_OUTSIDE_VALIDITY)
             if (abs(alpha) > hertzdamp_alpha_max) then
-                s = 'alpha = ' // fmt_short(alpha) // ' is beyond 1e100, the largest alpha any method takes'
+                s = 'alpha = ' // fmt_short(alpha) // ' is beyond ' // fmt_short(hertzdamp_alpha_max) // &
+                    ', the largest alpha any method takes'
                 return
             end if
             s = 'alpha = ' // fmt_short(alpha) // ' is outside the range of --method ' // c%method_name // ' (' // &
@@ -120,7 +121,7 @@ contains
                         contact_flags // ' --progress', args)
         call parse_model(args, c, inverse=.false.)
         call parse_contact(args, ct)
-        if (.not. ct%has_mass) call fail(EXIT_USAGE, 'missing option --mass (or --radius with --density) (see --help)')
+        call require_mass(ct)
         if (args%has('--k')) then
             ks = parse_sweep(args%get('--k', ''), '--k')
         else if (ct%has_kphys) then
@@ -132,7 +133,7 @@ contains
         us = required_sweep(args, '--velocity')
         call check_combinations([size(ks), size(ds), size(us)], '--k, --d and --velocity')
         call contact_table(t, c, ct, 'k,d,velocity,mass,radius_eff,k_phys,alpha,t_star,e,t_c,zeta_max,status', &
-                           'k, k_phys [N m^-3/2], d [' // damping_unit(c) // '], velocity [m/s], mass [kg], ' // &
+                           'k, k_phys [N m^-3/2], d [' // damping_unit(c%law) // '], velocity [m/s], mass [kg], ' // &
                            'radius_eff [m], ' // &
                            't_star [s], t_c [s], zeta_max [m]')
         n = 0

@@ -1112,7 +1112,7 @@ contains
         character(len=*), parameter :: problems(2) = ['forward', 'inverse']
         real(wp) :: y
         cmd = ''
-        png_tmp = plot_temp_name(file)
+        png_tmp = plot_temp_name()
         ! data and script are scratch files of hertzdamp_cli_plot: every write checked, all
         ! removed whatever happens, exit 4 with nothing left behind on failure
         call sc%open('bench', 'dat', u, dat)

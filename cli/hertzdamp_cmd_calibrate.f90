@@ -13,7 +13,7 @@ module hertzdamp_cmd_calibrate
     use hertzdamp_cli_plot, only: plot_check_target, plot_scratch, plot_temp_name, gp_string
     use hertzdamp_cli_help, only: print_help, wants_help
     use hertzdamp_cli_text, only: g => fmt_short, itoa, one_line
-    use hertzdamp_cli_materials, only: cli_contact, parse_contact, contact_options, contact_flags
+    use hertzdamp_cli_materials, only: cli_contact, parse_contact, require_mass, contact_options, contact_flags
     implicit none
     private
     public :: cmd_calibrate
@@ -59,7 +59,7 @@ contains
         if (.not. allocated(args%positional)) call fail(EXIT_USAGE, 'missing data file (see --help)')
         file = args%positional
         call parse_contact(args, ct)
-        if (.not. ct%has_mass) call fail(EXIT_USAGE, 'missing option --mass (or --radius with --density) (see --help)')
+        call require_mass(ct)
         o%mass = ct%mass
         dname = args%get('--damping', 'auto')
         law = parse_choice(dname, 'linear tsuji kuwabara-kono auto', 'damping law (--damping)') - 1
@@ -631,7 +631,7 @@ contains
         call s%open('calibrate', 'gp', u, gp)
         tcs = any(dat%has_tc)
         call s%write(u, 'set terminal ' // terminal // ' size 900,' // trim(merge('900', '500', tcs)) // ' noenhanced')
-        call s%write(u, 'set output ' // gp_string(plot_temp_name(plot)))
+        call s%write(u, 'set output ' // gp_string(plot_temp_name()))
         if (tcs) call s%write(u, 'set multiplot layout 2,1')
         call s%write(u, 'set logscale x')
         call s%write(u, 'set grid')

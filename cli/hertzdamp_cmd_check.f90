@@ -15,7 +15,7 @@ module hertzdamp_cmd_check
                          HD_DAMPING_KUWABARA_KONO
     use hertzdamp_peers, only: peer_deck, peer_point, peer_text, peer_evaluate, peer_spec_field, peer_spec_count, &
                                peer_law_inverse, peer_law_forward, peer_beta, peer_beta_inverse, &
-                               peer_damping, peer_fmt, peer_row_law, peer_row_end, peer_row_coef, &
+                               peer_damping, peer_row_law, peer_row_end, peer_row_coef, &
                                peer_nan, peer_float, peer_name, &
                                PEER_LAMMPS, PEER_LIGGGHTS, PEER_MERCURYDPM, PEER_YADE, PEER_MFIX, PEER_CHRONO, &
                                TSTEP_NONE, TSTEP_LIGGGHTS, TSTEP_MERCURY, TSTEP_MFIX, COEF_GAMMA_P6, COEF_GAMMA_SQRT2_P6, &
@@ -24,10 +24,11 @@ module hertzdamp_cmd_check
                                     LAMMPS_2021, LAMMPS_2023, LAMMPS_CURRENT, lammps_releases
     use hertzdamp_cli, only: cli_args, cli_line, cli_buffer, parse_args, parse_real, parse_int, parse_choice, &
                              required_sweep, fail, quit, EXIT_USAGE, EXIT_OK
-    use hertzdamp_cli_text, only: itoa
+    use hertzdamp_cli_text, only: itoa, fmt_short, ROUND_TRIP
     use hertzdamp_cli_output, only: out_table, format_choices, FORMAT_TEXT
     use hertzdamp_cli_help, only: print_help, wants_help
     use hertzdamp_cli_materials, only: cli_contact, parse_contact
+    use hertzdamp_cli_model, only: law_text
     use hertzdamp_cli_rows, only: row_log, row_kind, row_word, row_has_result
     use hertzdamp_cli_progress, only: progress_reporter
     use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
@@ -101,7 +102,7 @@ contains
         end if
         rq%speeds = required_sweep(args, '--velocity')
         do i = 1, size(rq%speeds)
-            if (.not. rq%speeds(i) > 0.0_wp) call fail(EXIT_USAGE, '--velocity ' // peer_fmt(rq%speeds(i)) // &
+            if (.not. rq%speeds(i) > 0.0_wp) call fail(EXIT_USAGE, '--velocity ' // fmt_short(rq%speeds(i), ROUND_TRIP) // &
                                                        ': impact speeds must be positive')
         end do
         rq%have_e = args%has('--e')
@@ -190,8 +191,8 @@ contains
         call t%meta('formula', formula_text(deck))
         call t%meta('source', peer_spec_field(deck%row, 'source_path') // ' (' // &
                     peer_spec_field(deck%row, 'source_lines') // ')')
-        call t%meta('stiffness', deck%k_text // ': k = ' // peer_fmt(deck%k, 6) // ' N m^-3/2')
-        s = 'm = ' // peer_fmt(deck%m, 6) // ' kg, R = ' // peer_fmt(deck%radius, 6) // ' m'
+        call t%meta('stiffness', deck%k_text // ': k = ' // fmt_short(deck%k, 6) // ' N m^-3/2')
+        s = 'm = ' // fmt_short(deck%m, 6) // ' kg, R = ' // fmt_short(deck%radius, 6) // ' m'
         if (deck%wall) then
             s = s // ' (particle against a flat wall)'
         else
@@ -199,9 +200,9 @@ contains
         end if
         call t%meta('contact', s)
         if (rq%have_e) then
-            call t%meta('target', 'e = ' // peer_fmt(et) // ' (--e)')
+            call t%meta('target', 'e = ' // fmt_short(et, ROUND_TRIP) // ' (--e)')
         else
-            call t%meta('target', 'e = ' // peer_fmt(et) // ' (the ' // deck%p_name // ')')
+            call t%meta('target', 'e = ' // fmt_short(et, ROUND_TRIP) // ' (the ' // deck%p_name // ')')
         end if
         call t%meta('achieved', achieved_text(pt, et))
         call t%meta('corrected', corrected_text(deck, pt, et))
@@ -257,8 +258,8 @@ contains
         type(peer_deck), intent(in) :: deck
         type(peer_point), intent(in) :: pt
         character(len=:), allocatable :: s
-        s = '--velocity ' // peer_fmt(pt%u) // ': '
-        if (ieee_is_finite(pt%alpha)) s = s // 'alpha = ' // peer_fmt(pt%alpha, 6)
+        s = '--velocity ' // fmt_short(pt%u, ROUND_TRIP) // ': '
+        if (ieee_is_finite(pt%alpha)) s = s // 'alpha = ' // fmt_short(pt%alpha, 6)
         if (pt%method == HD_METHOD_RK45) s = s // ' (rk45: beyond the fitted range)'
         if (ieee_is_finite(pt%alpha)) s = s // ': '
         select case (pt%status)
@@ -266,7 +267,7 @@ contains
             s = s // pt%beyond // ' is outside the double-precision range'
         case (HD_OUTSIDE_VALIDITY)
             if (pt%alpha > hertzdamp_alpha_max) then
-                s = s // 'beyond ' // peer_fmt(hertzdamp_alpha_max) // ', the largest alpha any method takes'
+                s = s // 'beyond ' // fmt_short(hertzdamp_alpha_max, ROUND_TRIP) // ', the largest alpha any method takes'
             else
                 s = s // law_message(deck, pt%status)
             end if
@@ -329,21 +330,6 @@ contains
         end if
     end function law_message
 
-    function law_text(law) result(s)
-        integer, intent(in) :: law
-        character(len=:), allocatable :: s
-        select case (law)
-        case (HD_DAMPING_LINEAR)
-            s = 'linear: damping force d zeta'' (q = 0); alpha = d t*/m falls with speed as u^(-1/5)'
-        case (HD_DAMPING_TSUJI)
-            s = 'tsuji: damping force d zeta^(1/4) zeta'' (q = 1/4) with d = gamma sqrt(m k); alpha = gamma, ' // &
-                'the same at every speed'
-        case default
-            s = 'kuwabara-kono: damping force d zeta^(1/2) zeta'' (q = 1/2); alpha = d t* (u t*)^(1/2)/m rises ' // &
-                'with speed as u^(1/5)'
-        end select
-    end function law_text
-
     function end_text(iend) result(s)
         integer, intent(in) :: iend
         character(len=:), allocatable :: s
@@ -360,11 +346,11 @@ contains
         if (deck%law == HD_DAMPING_TSUJI) then
             s = 'gamma = ' // peer_spec_field(deck%row, 'alpha_expr')
             if (deck%m_damp /= deck%m) s = s // ' times sqrt(M_w/(m + M_w)) (the wall body''s mass)'
-            s = s // ' = ' // peer_fmt(peer_damping(deck, deck%p), 10) // ' (alpha = gamma)'
+            s = s // ' = ' // fmt_short(peer_damping(deck, deck%p), 10) // ' (alpha = gamma)'
         else
             s = 'alpha = ' // peer_spec_field(deck%row, 'alpha_expr') // ' with tstar = (m/(k sqrt(u)))^(2/5)'
         end if
-        s = s // '; ' // trim(deck%p_name) // ' = ' // peer_fmt(deck%p)
+        s = s // '; ' // trim(deck%p_name) // ' = ' // fmt_short(deck%p, ROUND_TRIP)
     end function formula_text
 
     !> e over the speeds against the target (the rows with a result; there is one).
@@ -385,24 +371,31 @@ contains
             if (pt(i)%e > pt(ihi)%e) ihi = i
         end do
         if (abs(pt(ihi)%e - pt(ilo)%e) <= 1.0e-12_wp * pt(ihi)%e) then
-            s = 'e = ' // peer_fmt(pt(ilo)%e, 6) // ' at every speed (' // pct(pt(ilo)%e_error) // &
-                ' against the target ' // peer_fmt(et) // ')'
+            s = 'e = ' // fmt_short(pt(ilo)%e, 6) // ' at every speed (' // pct(pt(ilo)%e_error) // &
+                ' against the target ' // fmt_short(et, ROUND_TRIP) // ')'
         else
-            s = 'e from ' // peer_fmt(pt(ilo)%e, 6) // ' (u = ' // peer_fmt(pt(ilo)%u, 6) // ' m/s, ' // &
-                pct(pt(ilo)%e_error) // ') to ' // peer_fmt(pt(ihi)%e, 6) // ' (u = ' // &
-                peer_fmt(pt(ihi)%u, 6) // ' m/s, ' // pct(pt(ihi)%e_error) // '); target ' // peer_fmt(et)
+            s = 'e from ' // fmt_short(pt(ilo)%e, 6) // ' (u = ' // fmt_short(pt(ilo)%u, 6) // ' m/s, ' // &
+                pct(pt(ilo)%e_error) // ') to ' // fmt_short(pt(ihi)%e, 6) // ' (u = ' // &
+                fmt_short(pt(ihi)%u, 6) // ' m/s, ' // pct(pt(ihi)%e_error) // '); target ' // fmt_short(et, ROUND_TRIP)
         end if
     end function achieved_text
 
+    !> Whether a relative difference is below what the reports state (5e-7 in
+    !> magnitude, 'within 1e-6').
+    pure logical function negligible(x)
+        real(wp), intent(in) :: x
+        negligible = abs(x) < 5.0e-7_wp
+    end function negligible
+
     !> A relative difference x (finite) as a signed percentage, '+23.22 %', '-1.5e-3 %',
-    !> '+5e+301 %'; 'within 1e-6' below 5e-7 in magnitude.
+    !> '+5e+301 %'; 'within 1e-6' when negligible.
     function pct(x, unsigned) result(s)
         real(wp), intent(in) :: x
         logical, intent(in), optional :: unsigned   !! no + sign
         character(len=:), allocatable :: s
         character(len=32) :: b
         integer :: ex, ios
-        if (abs(x) < 5.0e-7_wp) then
+        if (negligible(x)) then
             s = 'within 1e-6'
             return
         end if
@@ -449,15 +442,15 @@ contains
             do while (.not. row_has_result(row_kind(pt(i)%status)))
                 i = i + 1
             end do
-            s = 'no value of ' // deck%p_name // ' gives e = ' // peer_fmt(et) // ': '
+            s = 'no value of ' // deck%p_name // ' gives e = ' // fmt_short(et, ROUND_TRIP) // ': '
             select case (pt(i)%status_corrected)
             case (HD_OUTSIDE_VALIDITY)
-                s = s // 'the engine''s formula cannot produce alpha = ' // peer_fmt(pt(i)%alpha_target, 6)
+                s = s // 'the engine''s formula cannot produce alpha = ' // fmt_short(pt(i)%alpha_target, 6)
             case (HD_BAD_RESTITUTION)
-                s = s // 'the target is below e = ' // peer_fmt(hertzdamp_fit_law_e_min(deck%law, deck%iend)) // &
+                s = s // 'the target is below e = ' // fmt_short(hertzdamp_fit_law_e_min(deck%law, deck%iend), ROUND_TRIP) // &
                     ', the end of the library''s fitted inverse for this law and contact end'
             case (HD_OUT_OF_RANGE)
-                s = s // 'the value is outside the double-precision range (u = ' // peer_fmt(pt(i)%u, 6) // ' m/s)'
+                s = s // 'the value is outside the double-precision range (u = ' // fmt_short(pt(i)%u, 6) // ' m/s)'
             case default
                 s = s // law_message(deck, pt(i)%status_corrected)
             end select
@@ -466,20 +459,20 @@ contains
         lo = pt(ilo)%p_corrected
         hi = pt(ihi)%p_corrected
         if (deck%law == HD_DAMPING_TSUJI) then
-            s = subst(deck%p_template, peer_fmt(lo, 12)) // ' gives e = ' // peer_fmt(et) // ' (alpha = ' // &
-                peer_fmt(pt(ilo)%alpha_target, 10) // ')'
+            s = subst(deck%p_template, fmt_short(lo, 12)) // ' gives e = ' // fmt_short(et, ROUND_TRIP) // ' (alpha = ' // &
+                fmt_short(pt(ilo)%alpha_target, 10) // ')'
             problem = peer_parameter_problem(deck, lo)
             if (len(problem) > 0) s = s // '; but ' // problem
         else
             if (ilo == ihi) then
-                s = subst(deck%p_template, peer_fmt(lo, 12)) // ' gives e = ' // peer_fmt(et) // ' at u = ' // &
-                    peer_fmt(pt(ilo)%u, 6) // ' m/s only (alpha depends on u)'
+                s = subst(deck%p_template, fmt_short(lo, 12)) // ' gives e = ' // fmt_short(et, ROUND_TRIP) // ' at u = ' // &
+                    fmt_short(pt(ilo)%u, 6) // ' m/s only (alpha depends on u)'
             else
-                s = 'no single value of ' // deck%p_name // ' gives e = ' // peer_fmt(et) // ' at every speed ' // &
-                    '(alpha depends on u); per speed in the column corrected, from ' // peer_fmt(lo, 6) // &
-                    ' (u = ' // peer_fmt(pt(ilo)%u, 6) // ' m/s) to ' // peer_fmt(hi, 6) // ' (u = ' // &
-                    peer_fmt(pt(ihi)%u, 6) // ' m/s): ' // subst(deck%p_template, peer_fmt(lo, 12)) // ' ... ' // &
-                    subst(deck%p_template, peer_fmt(hi, 12))
+                s = 'no single value of ' // deck%p_name // ' gives e = ' // fmt_short(et, ROUND_TRIP) // ' at every speed ' // &
+                    '(alpha depends on u); per speed in the column corrected, from ' // fmt_short(lo, 6) // &
+                    ' (u = ' // fmt_short(pt(ilo)%u, 6) // ' m/s) to ' // fmt_short(hi, 6) // ' (u = ' // &
+                    fmt_short(pt(ihi)%u, 6) // ' m/s): ' // subst(deck%p_template, fmt_short(lo, 12)) // ' ... ' // &
+                    subst(deck%p_template, fmt_short(hi, 12))
             end if
             if (deck%peer == PEER_LAMMPS) then
                 ! the zeta^(1/4) law is speed-independent: coeff_restitution with the e that gives the target
@@ -487,7 +480,7 @@ contains
                 if (st == HD_OK .and. alpha < sqrt(5.0_wp)) then
                     ealt = peer_beta_inverse(alpha / sqrt(5.0_wp))
                     s = s // '. Speed-independent instead (LAMMPS 27 Jun 2024 and later): damping coeff_restitution ' // &
-                        'with e = ' // peer_fmt(ealt, 12)
+                        'with e = ' // fmt_short(ealt, 12)
                 end if
             end if
         end if
@@ -524,12 +517,12 @@ contains
             call t%meta('time step', 'no speed rebounds: no contact time')
             return
         end if
-        s = itoa(steps) // ' steps per contact need dt <= ' // peer_fmt(pt(ib)%tc / steps, 6) // ' s (u = ' // &
-            peer_fmt(pt(ib)%u, 6) // ' m/s gives the shortest contact, t_c = ' // peer_fmt(pt(ib)%tc, 6) // &
-            ' s); the elastic Hertz time there is ' // peer_fmt(pt(ib)%t_hertz, 6) // ' s, so the contact lasts '
+        s = itoa(steps) // ' steps per contact need dt <= ' // fmt_short(pt(ib)%tc / steps, 6) // ' s (u = ' // &
+            fmt_short(pt(ib)%u, 6) // ' m/s gives the shortest contact, t_c = ' // fmt_short(pt(ib)%tc, 6) // &
+            ' s); the elastic Hertz time there is ' // fmt_short(pt(ib)%t_hertz, 6) // ' s, so the contact lasts '
         x = pt(ib)%tc / pt(ib)%t_hertz - 1.0_wp
-        if (abs(x) < 5.0e-7_wp) then
-            s = s // 'as long as the elastic estimate (within 1e-6)'
+        if (negligible(x)) then
+            s = s // 'as long as the elastic estimate (' // pct(x) // ')'
         else if (x > 0.0_wp) then
             s = s // pct(x, unsigned=.true.) // ' longer than the elastic estimate'
         else
@@ -543,22 +536,22 @@ contains
         select case (deck%tstep)
         case (TSTEP_LIGGGHTS)
             s = 'LIGGGHTS fix check/timestep/gran estimates 2.87 (m_p^2/(r/2 Y*^2 v))^(1/5) = ' // &
-                peer_fmt(pt(ib)%t_peer, 6) // ' s at v = ' // trim(merge('2u', 'u ', deck%wall)) // &
+                fmt_short(pt(ib)%t_peer, 6) // ' s at v = ' // trim(merge('2u', 'u ', deck%wall)) // &
                 ' (whole particle mass m_p, r/2): ' // against(pt(ib)%t_peer, pt(ib)%tc) // ' against t_c'
         case (TSTEP_MERCURY)
             s = 'MercuryDPM getCollisionTime(2r, rho, u) = 2.214 (rho^2/(E^2 u))^(1/5) 2r = ' // &
-                peer_fmt(pt(ib)%t_peer, 6) // ' s (elastic, identical spheres): ' // &
+                fmt_short(pt(ib)%t_peer, 6) // ' s (elastic, identical spheres): ' // &
                 against(pt(ib)%t_peer, pt(ib)%tc) // ' against t_c'
         case (TSTEP_MFIX)
             dt_mfix = pt(ib)%t_peer / deck%dt_factor
             x = pt(ib)%tc / dt_mfix
             s = 'MFiX sets DTSOLID = TCOLL/DTSOLID_FACTOR with TCOLL = pi/sqrt(k/m - (eta/m)^2/4) = ' // &
-                peer_fmt(pt(ib)%t_peer, 6) // ' s (a linear-spring period with the Hertz k and eta: the ' // &
-                'units do not match); DTSOLID = ' // peer_fmt(dt_mfix, 6) // ' s gives '
+                fmt_short(pt(ib)%t_peer, 6) // ' s (a linear-spring period with the Hertz k and eta: the ' // &
+                'units do not match); DTSOLID = ' // fmt_short(dt_mfix, 6) // ' s gives '
             if (ieee_is_finite(x) .and. x > 0.0_wp) then
-                s = s // peer_fmt(x, 4) // ' steps per contact at u = ' // peer_fmt(pt(ib)%u, 6) // ' m/s'
+                s = s // fmt_short(x, 4) // ' steps per contact at u = ' // fmt_short(pt(ib)%u, 6) // ' m/s'
             else
-                s = s // 'a number of steps per contact beyond double precision at u = ' // peer_fmt(pt(ib)%u, 6) // &
+                s = s // 'a number of steps per contact beyond double precision at u = ' // fmt_short(pt(ib)%u, 6) // &
                     ' m/s'
             end if
         case default
@@ -624,16 +617,16 @@ contains
         end do
         if (nno > 0) then
             s = 'no rebound at ' // itoa(nno) // ' of ' // itoa(size(pt)) // ' speeds (up to u = ' // &
-                peer_fmt(umax, 6) // ' m/s): the overlap never returns to zero'
+                fmt_short(umax, 6) // ' m/s): the overlap never returns to zero'
             if (hertzdamp_law_has_alpha_c(deck%law) .and. deck%iend == HD_END_OVERLAP) then
                 ac = hertzdamp_law_alpha_c(deck%law)
-                s = s // ' (alpha >= alpha_c = ' // peer_fmt(ac, 6) // ')'
+                s = s // ' (alpha >= alpha_c = ' // fmt_short(ac, 6) // ')'
             end if
             warn = [warn, peer_text(s)]
         end if
         if (iworst > 0) then
             s = 'the total force turns attractive before the particles separate: for the last ' // &
-                peer_fmt(100.0_wp * worst, 3) // ' % of the contact (u = ' // peer_fmt(pt(iworst)%u, 6) // &
+                fmt_short(100.0_wp * worst, 3) // ' % of the contact (u = ' // fmt_short(pt(iworst)%u, 6) // &
                 ' m/s); the engine does not clip it'
             select case (deck%peer)
             case (PEER_LAMMPS); s = s // ' (limit_damping clips it: the force end)'
@@ -679,9 +672,9 @@ contains
             if (q%status == HD_NO_REBOUND) then
                 msg = ' gives no rebound'
             else
-                msg = ' gives e = ' // peer_fmt(q%e, 6) // ', t_c = ' // peer_fmt(q%tc, 6) // ' s'
+                msg = ' gives e = ' // fmt_short(q%e, 6) // ', t_c = ' // fmt_short(q%tc, 6) // ' s'
             end if
-            note = [note, peer_text(other%version // msg // ' at u = ' // peer_fmt(pt(i)%u, 6) // &
+            note = [note, peer_text(other%version // msg // ' at u = ' // fmt_short(pt(i)%u, 6) // &
                                     ' m/s for this deck (' // peer_spec_field(other%row, 'alpha_expr') // &
                                     '; ' // other%k_text // ')')]
         end do
@@ -888,9 +881,9 @@ contains
                 do j = 1, size(table_targets)
                     if (j == 1) then
                         s = '| ' // hertzdamp_law_name(law) // ' | ' // hertzdamp_end_name(ends(iend)) // ' | ' // &
-                            used_by(law, ends(iend)) // ' | ' // peer_fmt(table_targets(j)) // ' |'
+                            used_by(law, ends(iend)) // ' | ' // fmt_short(table_targets(j), ROUND_TRIP) // ' |'
                     else
-                        s = '| | | | ' // peer_fmt(table_targets(j)) // ' |'
+                        s = '| | | | ' // fmt_short(table_targets(j), ROUND_TRIP) // ' |'
                     end if
                     do row = 1, size(table_ratios)
                         call speed_achieved(law, ends(iend), table_targets(j), table_ratios(row), e, st)

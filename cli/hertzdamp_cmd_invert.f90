@@ -11,7 +11,7 @@ module hertzdamp_cmd_invert
     use hertzdamp_cli_help, only: print_help, wants_help
     use hertzdamp_cli_model, only: model_opts, parse_model, model_options, e_range_message, instead, damping_unit
     use hertzdamp_cli_rows, only: row_log, row_kind, row_word, row_has_result, ROW_OUTSIDE_VALIDITY, ROW_OUT_OF_RANGE
-    use hertzdamp_cli_materials, only: cli_contact, parse_contact, contact_table, contact_options, contact_flags
+    use hertzdamp_cli_materials, only: cli_contact, parse_contact, require_mass, contact_table, contact_options, contact_flags
     use hertzdamp_cli_progress, only: progress_reporter
     use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
     implicit none
@@ -43,11 +43,11 @@ contains
         es = required_sweep(args, '--e')
         call contact_times(args, tcs, tc_key, tc_dt, tc_steps)
         us = required_sweep(args, '--velocity')
-        if (.not. ct%has_mass) call fail(EXIT_USAGE, 'missing option --mass (or --radius with --density) (see --help)')
+        call require_mass(ct)
         call check_combinations([size(es), size(tcs), size(us)], '--e, the contact times and --velocity')
         call contact_table(t, c, ct, 'e,tc,velocity,mass,radius_eff,k_phys,alpha,tau_c,t_star,k,d,bound_active,' // &
                            'tc_actual,status', 'tc, t_star, tc_actual [s], velocity [m/s], mass [kg], radius_eff [m], ' // &
-                           'k, k_phys [N m^-3/2], d [' // damping_unit(c) // ']')
+                           'k, k_phys [N m^-3/2], d [' // damping_unit(c%law) // ']')
         n = 0
         call p%start(real(size(es) * size(tcs) * size(us), wp), 'invert', force=args%has('--progress'))
         do ie = 1, size(es)
@@ -207,7 +207,7 @@ contains
         call parse_args(2, '--e --velocity --steps ' // contact_options // ' ' // model_options, contact_flags, args)
         call parse_model(args, c, inverse=.true.)
         call parse_contact(args, ct)
-        if (.not. ct%has_mass) call fail(EXIT_USAGE, 'missing option --mass (or --radius with --density) (see --help)')
+        call require_mass(ct)
         if (.not. ct%has_kphys) call fail(EXIT_USAGE, 'missing option --k-phys (or --radius with --youngs-modulus ' // &
                                           'and --poisson-ratio) (see --help)')
         es = required_sweep(args, '--e')

@@ -6,7 +6,7 @@
 module hertzdamp_cmd_scene
     use hertzdamp, only: hertzdamp_rk, hertzdamp_end_name, HD_OK, HD_METHOD_ITERATIVE, HD_METHOD_SERIES, &
                          HD_METHOD_PADE, HD_METHOD_COMPACT, HD_METHOD_FIT, HD_METHOD_FIRST_ORDER, hertzdamp_method_name, &
-                         hertzdamp_law_code, hertzdamp_law_name, HD_DAMPING_LINEAR, HD_DAMPING_TSUJI
+                         hertzdamp_law_code, hertzdamp_law_name
     use hertzdamp_dem, only: hertzdamp_dem_scene, hertzdamp_dem_result, hertzdamp_dem_check, hertzdamp_dem_state, &
                              hertzdamp_dem_start, hertzdamp_dem_advance, hertzdamp_dem_finish, hertzdamp_dem_steps_done, &
                              hertzdamp_dem_steps_total, hertzdamp_dem_rule, hertzdamp_dem_select, &
@@ -18,7 +18,7 @@ module hertzdamp_cmd_scene
                              EXIT_USAGE, EXIT_OK, EXIT_FAILURE, EXIT_NO_SOLUTION
     use hertzdamp_cli_output, only: out_table, format_choices, FORMAT_JSON, FORMAT_CSV
     use hertzdamp_cli_help, only: print_help, wants_help
-    use hertzdamp_cli_model, only: law_choices, model_opts, damping_unit
+    use hertzdamp_cli_model, only: law_choices, damping_unit, law_text
     use hertzdamp_cli_plot, only: plot_check_target, plot_scratch, plot_temp_name, gp_string
     use hertzdamp_cli_text, only: itoa
     use hertzdamp_cli_progress, only: progress_reporter
@@ -308,30 +308,6 @@ contains
         call add_section('method', t, fmt, buf, nsec)
     end subroutine report_method
 
-    !> The damping law as the report states it: name, force, and its alpha.
-    function law_text(law) result(s)
-        integer, intent(in) :: law
-        character(len=:), allocatable :: s
-        if (law == HD_DAMPING_LINEAR) then
-            s = 'linear: force k zeta^(3/2) + d zeta''; alpha = d t*/m (~ u^(-1/5) at fixed k, d)'
-        else if (law == HD_DAMPING_TSUJI) then
-            s = 'tsuji: force k zeta^(3/2) + d zeta^(1/4) zeta''; alpha = d t* (u t*)^(1/4)/m = d/sqrt(m k) ' // &
-                '(independent of u: e the same at every impact speed)'
-        else
-            s = hertzdamp_law_name(law) // ': force k zeta^(3/2) + d zeta^(1/2) zeta''; alpha = d t* (u t*)^(1/2)/m ' // &
-                '(~ u^(1/5) at fixed k, d)'
-        end if
-    end function law_text
-
-    !> Unit of the damping coefficient d of the law (damping force d zeta^q zeta').
-    function d_unit(law) result(s)
-        integer, intent(in) :: law
-        character(len=:), allocatable :: s
-        type(model_opts) :: mo
-        mo%law = law
-        s = damping_unit(mo)
-    end function d_unit
-
     !> Name of the bodies of a contact: 'p3-p4' or 'p1-wall1'.
     function bodies(i, j) result(s)
         integer, intent(in) :: i, j
@@ -360,7 +336,7 @@ contains
         nbin = count(res%contacts%binary .and. res%contacts%t_end >= 0.0_wp)
         write (b, '(i0,a,i0,a)') res%ncontacts, ' contacts, ', nbin, ' binary and ended'
         call t%meta('contacts', trim(b))
-        call t%meta('units', 'u_in [m/s], k [N m^-3/2], d [' // d_unit(sc%law) // '], tc [s]; e = separation/' // &
+        call t%meta('units', 'u_in [m/s], k [N m^-3/2], d [' // damping_unit(sc%law) // '], tc [s]; e = separation/' // &
                     'impact normal speed (- where u_in <= 0)')
         if (.not. sc%want_duration) call t%meta('tc_target', 'physical contact time t*(k_phys) tau_c(alpha)')
         if (sc%gravity) call t%meta('gravity', 'acts during contacts too: e and tc differ from the ' // &
@@ -533,7 +509,7 @@ contains
         call s%open('scene', 'gp', u, gp)
         n = itoa(size(pick))
         call s%write(u, 'set terminal ' // terminal // ' size 1000,800 noenhanced')
-        call s%write(u, 'set output ' // gp_string(plot_temp_name(plot)))
+        call s%write(u, 'set output ' // gp_string(plot_temp_name()))
         call s%write(u, 'set multiplot layout 2,1 title ' // gp_string(sc%title))
         call s%write(u, 'set key off')
         call s%write(u, 'set grid')

@@ -39,7 +39,8 @@ module hertzdamp_calibrate
     use hertzdamp_inverse, only: hertzdamp_invert_alpha
     use hertzdamp_calibrate_maps, only: cal_forward, cal_law_name, cal_law_q, cal_law_speed_exponent, &
                                         cal_law_supported, cal_max_law
-    use, intrinsic :: ieee_arithmetic, only: ieee_is_finite, ieee_is_nan
+    use hertzdamp_apps_text, only: fmt_short
+    use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
     implicit none
     private
 
@@ -186,20 +187,6 @@ contains
         end if
     end function at_row
 
-    pure function num(x) result(s)
-        real(wp), intent(in) :: x
-        character(len=:), allocatable :: s
-        character(len=32) :: b
-        if (ieee_is_nan(x)) then
-            b = 'nan'
-        else if (.not. ieee_is_finite(x)) then
-            b = merge('inf ', '-inf', x > 0.0_wp)
-        else
-            write (b, '(es11.4)') x
-        end if
-        s = trim(adjustl(b))
-    end function num
-
     pure logical function positive(x)
         real(wp), intent(in) :: x
         positive = ieee_is_finite(x) .and. x > 0.0_wp
@@ -216,7 +203,7 @@ contains
         character(len=:), allocatable :: message
         message = ''
         if (applies .and. .not. positive(x)) message = at_row(dat, i) // ': ' // name // &
-            ' must be finite and positive (got ' // num(x) // ')'
+            ' must be finite and positive (got ' // fmt_short(x) // ')'
     end function not_positive
 
     !> Whether the data and options can be fitted at all, independently of the law:
@@ -254,11 +241,11 @@ contains
             return
         end if
         if (.not. positive(opts%mass)) then
-            message = 'the effective mass must be finite and positive (got ' // num(opts%mass) // ')'
+            message = 'the effective mass must be finite and positive (got ' // fmt_short(opts%mass) // ')'
             return
         end if
         if (.not. (ieee_is_finite(opts%k_known) .and. opts%k_known >= 0.0_wp)) then
-            message = 'the known stiffness must be finite and positive (got ' // num(opts%k_known) // ')'
+            message = 'the known stiffness must be finite and positive (got ' // fmt_short(opts%k_known) // ')'
             return
         end if
         if (opts%iend /= HD_END_OVERLAP .and. opts%iend /= HD_END_FORCE) then
@@ -269,7 +256,7 @@ contains
             message = not_positive(dat, i, 'the impact speed', dat%u(i), .true.)
             if (len(message) > 0) return
             if (.not. positive(dat%e(i)) .or. dat%e(i) > 1.0_wp) then
-                message = at_row(dat, i) // ': e = ' // num(dat%e(i)) // ' is outside (0, 1]'
+                message = at_row(dat, i) // ': e = ' // fmt_short(dat%e(i)) // ' is outside (0, 1]'
                 if (dat%e(i) > 1.0_wp .and. ieee_is_finite(dat%e(i))) message = message // &
                     ': a damped contact never returns more energy than it received'
                 return
@@ -283,7 +270,7 @@ contains
         end do
         status = CAL_NOT_IDENTIFIED
         if (.not. (maxval(dat%u) > minval(dat%u))) then
-            message = 'every measurement is at one impact speed (' // num(dat%u(1)) // ' m/s): the speed ' // &
+            message = 'every measurement is at one impact speed (' // fmt_short(dat%u(1)) // ' m/s): the speed ' // &
                       'dependence that tells the laws apart is not measured (for one speed use hertzdamp invert)'
             return
         end if
@@ -634,7 +621,7 @@ contains
         if (res%status /= CAL_OK) then
             write (b, '(i0)') res%iterations
             res%message = 'the fit of the ' // cal_law_name(law) // ' law did not converge after ' // trim(b) // &
-                          ' iterations (Gauss-Newton correction ' // num(res%gn_step) // ' > ' // num(o%xtol) // ')'
+                          ' iterations (Gauss-Newton correction ' // fmt_short(res%gn_step) // ' > ' // fmt_short(o%xtol) // ')'
             return
         end if
         ! identifiability: the scaled Jacobian must have full rank
@@ -687,7 +674,7 @@ contains
         res%rms_e = sqrt(sum((dat%e - efit)**2) / n)
         if (use_tc) res%rms_tc = sqrt(sum(merge((dat%tc - tcfit)**2, 0.0_wp, dat%has_tc)) / res%n_tc)
         if (dat%weighted .and. res%p_value < 1.0e-3_wp) then
-            call add_note(res, 'chi2/dof = ' // num(cost / res%dof) // ', p = ' // num(res%p_value) // &
+            call add_note(res, 'chi2/dof = ' // fmt_short(cost / res%dof) // ', p = ' // fmt_short(res%p_value) // &
                        ': the data are far from the ' // cal_law_name(law) // ' law (see the residuals)')
         end if
         res%status = CAL_OK
@@ -737,7 +724,7 @@ contains
             if (res(second)%delta_aic < 2.0_wp) then
                 call add_note(res(chosen), 'the data do not clearly prefer the ' // cal_law_name(chosen) // &
                               ' law: delta AIC of the ' // cal_law_name(second) // ' law is ' // &
-                              num(res(second)%delta_aic) // ' < 2')
+                              fmt_short(res(second)%delta_aic) // ' < 2')
             end if
         end if
     end subroutine cal_auto

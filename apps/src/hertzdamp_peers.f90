@@ -29,6 +29,7 @@ module hertzdamp_peers
                          HD_OUT_OF_RANGE, HD_OUTSIDE_VALIDITY, HD_END_OVERLAP, HD_END_FORCE
     use hertzdamp_fit_data, only: fit_law_e_min_forward
     use hertzdamp_peers_data, only: peer_spec_field, peer_spec_row, peer_spec_count
+    use hertzdamp_apps_text, only: fmt_short, ROUND_TRIP
     use, intrinsic :: ieee_arithmetic, only: ieee_value, ieee_quiet_nan, ieee_positive_inf, ieee_is_finite
     use, intrinsic :: iso_fortran_env, only: real32
     implicit none
@@ -127,7 +128,7 @@ module hertzdamp_peers
     public :: peer_law_forward, peer_law_inverse
     public :: peer_beta, peer_beta_inverse, peer_p6, peer_p6_inverse
     public :: peer_damping, peer_parameter, peer_alpha, peer_evaluate, peer_time_estimate
-    public :: peer_row_law, peer_row_end, peer_row_coef, peer_nan, peer_float, peer_fmt, peer_itoa, peer_name
+    public :: peer_row_law, peer_row_end, peer_row_coef, peer_nan, peer_float, peer_name
     public :: peer_spec_field, peer_spec_row, peer_spec_count
 
 contains
@@ -580,7 +581,8 @@ contains
             else if (.not. ieee_is_finite(pt%tc)) then
                 pt%beyond = 'the contact time t_c = tau_c t*'
             else if (.not. ieee_is_finite(pt%e_error)) then
-                pt%beyond = 'e/e_target - 1 (e = ' // peer_fmt(pt%e, 6) // ', e_target = ' // peer_fmt(e_target) // ')'
+                pt%beyond = 'e/e_target - 1 (e = ' // fmt_short(pt%e, 6) // ', e_target = ' // &
+                            fmt_short(e_target, ROUND_TRIP) // ')'
             end if
             if (allocated(pt%beyond)) pt%status = HD_OUT_OF_RANGE
         case (HD_NO_REBOUND)
@@ -638,91 +640,5 @@ contains
         pt%status_corrected = st
         if (st /= HD_OK) pt%p_corrected = peer_nan()
     end subroutine corrected
-
-    pure function peer_itoa(i) result(s)
-        integer, intent(in) :: i
-        character(len=:), allocatable :: s
-        character(len=12) :: buf
-        write (buf, '(i0)') i
-        s = trim(buf)
-    end function peer_itoa
-
-    !> A number in its shortest decimal form that reads back exactly, or with at most
-    !> `digits` significant digits; plain notation from 1e-4 to 1e6 (0.5, 2e11, 1.5e-7).
-    pure function peer_fmt(x, digits) result(s)
-        real(wp), intent(in) :: x            !! the number (finite)
-        integer, intent(in), optional :: digits  !! at most this many significant digits (default 17)
-        character(len=:), allocatable :: s
-        character(len=40) :: buf
-        integer :: d, dmax
-        real(wp) :: y
-        integer :: ios
-        dmax = 17
-        if (present(digits)) dmax = max(1, min(17, digits))
-        if (.not. ieee_is_finite(x)) then
-            s = 'nan'
-            if (x > 0.0_wp) s = 'inf'
-            if (x < 0.0_wp) s = '-inf'
-            return
-        end if
-        do d = 1, dmax
-            write (buf, '(es40.' // peer_itoa(d - 1) // 'e3)') x
-            read (buf, *, iostat=ios) y
-            if (ios == 0 .and. y == x) exit
-        end do
-        s = trim(adjustl(buf))
-        call tidy(s)
-    end function peer_fmt
-
-    !> 1.500e+000 -> 1.5, 2.000e+011 -> 2e11, 5.000e-001 -> 0.5.
-    pure subroutine tidy(s)
-        character(len=:), allocatable, intent(inout) :: s
-        integer :: ie, ex, ios, j
-        character(len=:), allocatable :: mant
-        ie = scan(s, 'eE')
-        if (ie == 0) return
-        read (s(ie + 1:), *, iostat=ios) ex
-        if (ios /= 0) return
-        mant = s(1:ie - 1)
-        if (index(mant, '.') > 0) then
-            j = len(mant)
-            do while (mant(j:j) == '0')
-                j = j - 1
-            end do
-            if (mant(j:j) == '.') j = j - 1
-            mant = mant(1:j)
-        end if
-        if (ex >= -4 .and. ex <= 5) then
-            s = shift(mant, ex)
-        else
-            s = mant // 'e' // peer_itoa(ex)
-        end if
-    end subroutine tidy
-
-    !> Plain decimal form of mantissa * 10^ex (mantissa d.ddd, possibly signed).
-    pure function shift(mant, ex) result(s)
-        character(len=*), intent(in) :: mant
-        integer, intent(in) :: ex
-        character(len=:), allocatable :: s
-        character(len=:), allocatable :: sign, dig
-        integer :: p
-        sign = ''
-        dig = mant
-        if (dig(1:1) == '-') then
-            sign = '-'
-            dig = dig(2:)
-        end if
-        p = index(dig, '.')
-        if (p > 0) dig = dig(1:p - 1) // dig(p + 1:)
-        ! dig holds the digits, the point after the first one
-        p = 1 + ex
-        if (p <= 0) then
-            s = sign // '0.' // repeat('0', -p) // dig
-        else if (p >= len(dig)) then
-            s = sign // dig // repeat('0', p - len(dig))
-        else
-            s = sign // dig(1:p) // '.' // dig(p + 1:)
-        end if
-    end function shift
 
 end module hertzdamp_peers

@@ -17,9 +17,9 @@ module hertzdamp_peers_deck
                                    hertzdamp_effective_modulus
     use hertzdamp_peers, only: peer_deck, peer_text, peer_spec_row, peer_row_law, peer_row_end, peer_row_coef, &
                                PEER_LAMMPS, PEER_LIGGGHTS, PEER_MERCURYDPM, PEER_YADE, PEER_MFIX, PEER_CHRONO, &
-                               TSTEP_LIGGGHTS, TSTEP_MERCURY, TSTEP_MFIX, peer_name, peer_fmt, peer_itoa, &
+                               TSTEP_LIGGGHTS, TSTEP_MERCURY, TSTEP_MFIX, peer_name, &
                                COEF_GAMMA_SQRT5_BETA
-    use hertzdamp_apps_text, only: lower, upper
+    use hertzdamp_apps_text, only: lower, upper, itoa, fmt_short, ROUND_TRIP
     use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
     use, intrinsic :: iso_fortran_env, only: real32
     implicit none
@@ -147,14 +147,14 @@ contains
         character(len=:), allocatable :: msg
         msg = ''
         if (deck%e_deck < 0.0_wp) then
-            if (.not. p >= 0.0_wp) msg = deck%p_name // ' = ' // peer_fmt(p) // ' is negative'
+            if (.not. p >= 0.0_wp) msg = deck%p_name // ' = ' // fmt_short(p, ROUND_TRIP) // ' is negative'
             return
         end if
         if (deck%peer == PEER_LIGGGHTS) then
             if (.not. (p > 0.05_wp .and. p <= 1.0_wp)) msg = 'LIGGGHTS refuses coefficientRestitution = ' // &
-                peer_fmt(p, 6) // ' (it requires 0.05 < e <= 1, global_properties.cpp:488)'
+                fmt_short(p, 6) // ' (it requires 0.05 < e <= 1, global_properties.cpp:488)'
         else if (.not. (p >= 0.0_wp .and. p <= 1.0_wp)) then
-            msg = deck%p_name // ' = ' // peer_fmt(p, 6) // ' is not a restitution coefficient in [0, 1]'
+            msg = deck%p_name // ' = ' // fmt_short(p, 6) // ' is not a restitution coefficient in [0, 1]'
         else if (p == 0.0_wp .and. deck%coef == COEF_GAMMA_SQRT5_BETA .and. deck%peer /= PEER_MERCURYDPM) then
             msg = deck%p_name // ' = 0: the engine takes ln(0) (not guarded)'
         end if
@@ -229,7 +229,7 @@ contains
                     msg = 'unknown fix wall/gran keyword "' // t // '"'
                     exit
                 end select
-                if (i + na > n) msg = 'fix wall/gran ' // t // ' needs ' // peer_itoa(na) // ' values'
+                if (i + na > n) msg = 'fix wall/gran ' // t // ' needs ' // itoa(na) // ' values'
                 i = i + na + 1
                 cycle
             end if
@@ -242,7 +242,7 @@ contains
                 normal = t
                 na = merge(2, 3, t == 'hertz')
                 if (i + na > n) then
-                    msg = t // ' needs ' // peer_itoa(na) // ' values (' // trim(merge('kn eta_n0  ', 'E eta_n0 nu', &
+                    msg = t // ' needs ' // itoa(na) // ' values (' // trim(merge('kn eta_n0  ', 'E eta_n0 nu', &
                           t == 'hertz')) // ')'
                     exit
                 end if
@@ -294,7 +294,7 @@ contains
                     exit
                 end if
                 if (i + 1 + na > n) then
-                    msg = t // ' ' // tok(i + 1)%s // ' needs ' // peer_itoa(na) // ' values'
+                    msg = t // ' ' // tok(i + 1)%s // ' needs ' // itoa(na) // ' values'
                     exit
                 end if
                 call check_values(tok(i + 2:i + 1 + na), t // ' ' // tok(i + 1)%s, msg)
@@ -357,7 +357,7 @@ contains
         dm = damping
         if (damping == 'tsuji' .or. damping == 'coeff_restitution') then
             if (.not. (c >= 0.0_wp .and. c <= 1.0_wp)) then
-                msg = normal // ' damping coefficient ' // peer_fmt(c) // ': with damping ' // damping // &
+                msg = normal // ' damping coefficient ' // fmt_short(c, ROUND_TRIP) // ': with damping ' // damping // &
                       ' it is the restitution coefficient e, 0 <= e <= 1'
                 return
             end if
@@ -371,7 +371,7 @@ contains
             if (damping == 'coeff_restitution') rel = '2024'
         else
             if (.not. c >= 0.0_wp) then
-                msg = normal // ' damping coefficient eta_n0 = ' // peer_fmt(c) // ' must be >= 0'
+                msg = normal // ' damping coefficient eta_n0 = ' // fmt_short(c, ROUND_TRIP) // ' must be >= 0'
                 return
             end if
             deck%p_name = normal // ' damping coefficient eta_n0 (damping ' // damping // ')'
@@ -481,10 +481,10 @@ contains
             call pair_values(kv, 'youngsModulus', deck%wall, ymod, msg)
             call pair_values(kv, 'poissonsRatio', deck%wall, nu, msg)
             if (len(msg) > 0) return
-            call check_modulus(ymod(1), 'youngsModulus', peer_fmt(ymod(1)), msg)
-            call check_modulus(ymod(2), 'youngsModulus', peer_fmt(ymod(2)), msg)
-            call check_poisson(nu(1), 'poissonsRatio', peer_fmt(nu(1)), msg)
-            call check_poisson(nu(2), 'poissonsRatio', peer_fmt(nu(2)), msg)
+            call check_modulus(ymod(1), 'youngsModulus', fmt_short(ymod(1), ROUND_TRIP), msg)
+            call check_modulus(ymod(2), 'youngsModulus', fmt_short(ymod(2), ROUND_TRIP), msg)
+            call check_poisson(nu(1), 'poissonsRatio', fmt_short(nu(1), ROUND_TRIP), msg)
+            call check_poisson(nu(2), 'poissonsRatio', fmt_short(nu(2), ROUND_TRIP), msg)
             if (len(msg) > 0) return
             deck%e_star = effective_modulus(ymod, nu)
             deck%tstep = TSTEP_LIGGGHTS
@@ -494,7 +494,7 @@ contains
             call required(kv, 'coefficientRestitution', e, msg)
             if (len(msg) > 0) return
             if (.not. (e > 0.05_wp .and. e <= 1.0_wp)) then
-                msg = 'coefficientRestitution = ' // peer_fmt(e) // ': LIGGGHTS requires 0.05 < e <= 1 ' // &
+                msg = 'coefficientRestitution = ' // fmt_short(e, ROUND_TRIP) // ': LIGGGHTS requires 0.05 < e <= 1 ' // &
                       '(global_properties.cpp:488)'
                 return
             end if
@@ -505,15 +505,15 @@ contains
             deck%k = (4.0_wp / 3.0_wp) * deck%e_star * sqrt(deck%radius)
             deck%k_text = 'k = (4/3) Y* sqrt(R), 1/Y* = (1-nu1^2)/Y1 + (1-nu2^2)/Y2'
             deck%row = peer_spec_row('liggghts-hertz-' // end_word(limit))
-            deck%deck_text = 'model hertz limitForce ' // lf // ' youngsModulus ' // peer_fmt(ymod(1)) // ' ' // &
-                             peer_fmt(ymod(2)) // ' poissonsRatio ' // peer_fmt(nu(1)) // ' ' // peer_fmt(nu(2)) // &
-                             ' coefficientRestitution ' // peer_fmt(e)
+            deck%deck_text = 'model hertz limitForce ' // lf // ' youngsModulus ' // fmt_short(ymod(1), ROUND_TRIP) // &
+                             ' ' // fmt_short(ymod(2), ROUND_TRIP) // ' poissonsRatio ' // fmt_short(nu(1), ROUND_TRIP) // &
+                             ' ' // fmt_short(nu(2), ROUND_TRIP) // ' coefficientRestitution ' // fmt_short(e, ROUND_TRIP)
         case ('hertz/stiffness')
             call required(kv, 'kn', kn, msg)
             call required(kv, 'gamman', gamman, msg)
             if (len(msg) > 0) return
-            if (.not. kn > 0.0_wp) msg = 'kn = ' // peer_fmt(kn) // ' must be positive'
-            if (.not. gamman >= 0.0_wp) msg = 'gamman = ' // peer_fmt(gamman) // ' must be >= 0'
+            if (.not. kn > 0.0_wp) msg = 'kn = ' // fmt_short(kn, ROUND_TRIP) // ' must be positive'
+            if (.not. gamman >= 0.0_wp) msg = 'gamman = ' // fmt_short(gamman, ROUND_TRIP) // ' must be >= 0'
             if (len(msg) > 0) return
             deck%p = gamman
             deck%p_name = 'gamman'
@@ -521,7 +521,8 @@ contains
             deck%k = kn * sqrt(deck%radius)
             deck%k_text = 'k = kn sqrt(R) (model hertz/stiffness)'
             deck%row = peer_spec_row('liggghts-hertz_stiffness-' // end_word(limit))
-            deck%deck_text = 'model hertz/stiffness limitForce ' // lf // ' kn ' // peer_fmt(kn) // ' gamman ' // peer_fmt(gamman)
+            deck%deck_text = 'model hertz/stiffness limitForce ' // lf // ' kn ' // fmt_short(kn, ROUND_TRIP) // &
+                             ' gamman ' // fmt_short(gamman, ROUND_TRIP)
         case ('hooke', 'hooke/stiffness')
             msg = 'model ' // model // ' is a linear spring; hertzdamp checks Hertz contacts (hertz, hertz/stiffness)'
         case default
@@ -581,14 +582,14 @@ contains
                 if (len(msg) > 0) return
                 call set_modulus(x(1))
                 if (.not. (x(2) >= 0.0_wp .and. x(2) <= 1.0_wp)) then
-                    msg = key // ': restitution ' // peer_fmt(x(2)) // ' must be in [0, 1]'
+                    msg = key // ': restitution ' // fmt_short(x(2), ROUND_TRIP) // ' must be in [0, 1]'
                     return
                 end if
                 kind = 'restitution'
                 deck%p = x(2)
                 deck%e_deck = x(2)
                 deck%p_name = 'restitution argument of ' // key
-                deck%p_template = key // '=' // peer_fmt(x(1)) // ',{}'
+                deck%p_template = key // '=' // fmt_short(x(1), ROUND_TRIP) // ',{}'
             case ('setEffectiveElasticModulus', 'setEffectiveElasticModulusAndPoissonRatio')
                 if (old) call wrong_species()
                 call nargs(merge(1, 2, key == 'setEffectiveElasticModulus'))
@@ -602,7 +603,7 @@ contains
                 call nargs(1)
                 if (len(msg) > 0) return
                 if (.not. x(1) >= 0.0_wp) then
-                    msg = 'setDissipation(' // peer_fmt(x(1)) // '): must be >= 0'
+                    msg = 'setDissipation(' // fmt_short(x(1), ROUND_TRIP) // '): must be >= 0'
                     return
                 end if
                 kind = 'dissipation'
@@ -616,11 +617,11 @@ contains
                 if (len(msg) > 0) return
                 call set_modulus(x(1))
                 if (.not. (x(2) > 0.0_wp .and. x(2) <= 1.0_wp)) then
-                    msg = key // ': restitution ' // peer_fmt(x(2)) // ' must be in (0, 1]'
+                    msg = key // ': restitution ' // fmt_short(x(2), ROUND_TRIP) // ' must be in (0, 1]'
                     return
                 end if
                 if (.not. x(3) > 0.0_wp) then
-                    msg = key // ': mass ' // peer_fmt(x(3)) // ' must be positive'
+                    msg = key // ': mass ' // fmt_short(x(3), ROUND_TRIP) // ' must be positive'
                     return
                 end if
                 kind = 'stiffness_restitution'
@@ -628,7 +629,7 @@ contains
                 deck%e_deck = x(2)
                 deck%mass_arg = x(3)
                 deck%p_name = 'restitution argument of setStiffnessAndRestitutionCoefficient'
-                deck%p_template = key // '=' // peer_fmt(x(1)) // ',{},' // peer_fmt(x(3))
+                deck%p_template = key // '=' // fmt_short(x(1), ROUND_TRIP) // ',{},' // fmt_short(x(3), ROUND_TRIP)
             case ('setDensity')
                 call nargs(1)
                 if (len(msg) > 0) return
@@ -681,11 +682,11 @@ contains
     contains
         subroutine nargs(k)
             integer, intent(in) :: k
-            if (nx /= k) msg = key // ' takes ' // peer_itoa(k) // ' arguments, got ' // peer_itoa(nx)
+            if (nx /= k) msg = key // ' takes ' // itoa(k) // ' arguments, got ' // itoa(nx)
         end subroutine nargs
         subroutine set_modulus(y)
             real(wp), intent(in) :: y
-            call check_modulus(y, key // ' modulus', peer_fmt(y), msg)
+            call check_modulus(y, key // ' modulus', fmt_short(y, ROUND_TRIP), msg)
             emod = y
             have_e = .true.
         end subroutine set_modulus
@@ -731,10 +732,10 @@ contains
         call pair_values(kv, 'young', deck%wall, ymod, msg)
         call pair_values(kv, 'poisson', deck%wall, nu, msg)
         if (len(msg) > 0) return
-        call check_modulus(ymod(1), 'young', peer_fmt(ymod(1)), msg)
-        call check_modulus(ymod(2), 'young', peer_fmt(ymod(2)), msg)
-        call check_poisson(nu(1), 'poisson', peer_fmt(nu(1)), msg)
-        call check_poisson(nu(2), 'poisson', peer_fmt(nu(2)), msg)
+        call check_modulus(ymod(1), 'young', fmt_short(ymod(1), ROUND_TRIP), msg)
+        call check_modulus(ymod(2), 'young', fmt_short(ymod(2), ROUND_TRIP), msg)
+        call check_poisson(nu(1), 'poisson', fmt_short(nu(1), ROUND_TRIP), msg)
+        call check_poisson(nu(2), 'poisson', fmt_short(nu(2), ROUND_TRIP), msg)
         if (len(msg) > 0) return
         if (has(kv, 'en') .and. has(kv, 'betan')) then
             msg = 'en and betan: Yade takes only one of them (Ip2_FrictMat_FrictMat_MindlinPhys)'
@@ -789,11 +790,11 @@ contains
             msg = 'missing en (or betan)'
             return
         end if
-        deck%deck_text = deck%deck_text // ' FrictMat(young=' // peer_fmt(ymod(1)) // ', poisson=' // &
-                         peer_fmt(nu(1)) // ')'
+        deck%deck_text = deck%deck_text // ' FrictMat(young=' // fmt_short(ymod(1), ROUND_TRIP) // ', poisson=' // &
+                         fmt_short(nu(1), ROUND_TRIP) // ')'
         if (deck%wall) then
-            deck%deck_text = deck%deck_text // ', ' // shape // ' (young=' // peer_fmt(ymod(2)) // ', poisson=' // &
-                             peer_fmt(nu(2)) // ')'
+            deck%deck_text = deck%deck_text // ', ' // shape // ' (young=' // fmt_short(ymod(2), ROUND_TRIP) // ', poisson=' // &
+                             fmt_short(nu(2), ROUND_TRIP) // ')'
             if (hertzian) deck%deck_text = deck%deck_text // ', hertzian=True'
         end if
     end subroutine read_yade
@@ -860,14 +861,14 @@ contains
             ekey = 'DES_EN_INPUT'
         end if
         if (len(msg) > 0) return
-        call check_modulus(ymod(1), 'E_YOUNG', peer_fmt(ymod(1)), msg)
-        call check_modulus(ymod(2), trim(merge('EW_YOUNG', 'E_YOUNG ', deck%wall)), peer_fmt(ymod(2)), msg)
-        call check_poisson(nu(1), 'V_POISSON', peer_fmt(nu(1)), msg)
-        call check_poisson(nu(2), trim(merge('VW_POISSON', 'V_POISSON ', deck%wall)), peer_fmt(nu(2)), msg)
+        call check_modulus(ymod(1), 'E_YOUNG', fmt_short(ymod(1), ROUND_TRIP), msg)
+        call check_modulus(ymod(2), trim(merge('EW_YOUNG', 'E_YOUNG ', deck%wall)), fmt_short(ymod(2), ROUND_TRIP), msg)
+        call check_poisson(nu(1), 'V_POISSON', fmt_short(nu(1), ROUND_TRIP), msg)
+        call check_poisson(nu(2), trim(merge('VW_POISSON', 'V_POISSON ', deck%wall)), fmt_short(nu(2), ROUND_TRIP), msg)
         call required(kv, ekey, e, msg)
         if (len(msg) > 0) return
         if (.not. (e >= 0.0_wp .and. e <= 1.0_wp)) then
-            msg = ekey // ' = ' // peer_fmt(e) // ': MFiX requires 0 <= e <= 1 (check_solids_dem.f)'
+            msg = ekey // ' = ' // fmt_short(e, ROUND_TRIP) // ': MFiX requires 0 <= e <= 1 (check_solids_dem.f)'
             return
         end if
         deck%e_star = effective_modulus(ymod, nu)
@@ -879,10 +880,11 @@ contains
         deck%p_template = ekey // '={}'
         deck%row = peer_spec_row('mfix-hertzian-overlap')
         deck%tstep = TSTEP_MFIX
-        deck%deck_text = 'DES_COLL_MODEL=HERTZIAN ' // ekey // '=' // peer_fmt(e) // ' E_YOUNG=' // peer_fmt(ymod(1)) // &
-                         ' V_POISSON=' // peer_fmt(nu(1))
+        deck%deck_text = 'DES_COLL_MODEL=HERTZIAN ' // ekey // '=' // fmt_short(e, ROUND_TRIP) // ' E_YOUNG=' // &
+                         fmt_short(ymod(1), ROUND_TRIP) // ' V_POISSON=' // fmt_short(nu(1), ROUND_TRIP)
         if (deck%wall) then
-            deck%deck_text = deck%deck_text // ' EW_YOUNG=' // peer_fmt(ymod(2)) // ' VW_POISSON=' // peer_fmt(nu(2))
+            deck%deck_text = deck%deck_text // ' EW_YOUNG=' // fmt_short(ymod(2), ROUND_TRIP) // ' VW_POISSON=' // &
+                             fmt_short(nu(2), ROUND_TRIP)
             call add_note(deck, 'MFiX computes the wall TCOLL but does not fold it into DTSOLID ' // &
                           '(check_solids_dem.f:990-997): wall contacts do not limit its time step')
         end if
@@ -945,24 +947,25 @@ contains
             ! (ChCollisionSystemBullet.cpp:227-228, ChCollisionInfo.cpp:19)
             deck%radius = 0.1_wp
             call add_note(deck, 'Chrono BULLET collision system: the contact radius is its default 0.1 m, ' // &
-                          'not R* = ' // peer_fmt(rphys) // ' m (only MULTICORE computes it); k uses 0.1')
+                          'not R* = ' // fmt_short(rphys, ROUND_TRIP) // ' m (only MULTICORE computes it); k uses 0.1')
         end if
         if (deck%wall) then
             ! the fixed wall body keeps its mass (ChBody default 1 kg) in the damping's effective mass
             deck%m_damp = deck%m * mwall / (deck%m + mwall)
-            call add_note(deck, 'against a fixed body of mass M_w = ' // peer_fmt(mwall) // ' kg the damping uses ' // &
+            call add_note(deck, 'against a fixed body of mass M_w = ' // fmt_short(mwall, ROUND_TRIP) // &
+                          ' kg the damping uses ' // &
                           'm M_w/(m + M_w) while the dynamics has m: gamma is scaled by sqrt(M_w/(m + M_w)) = ' // &
-                          peer_fmt(sqrt(deck%m_damp / deck%m), 6) // ' (wallMass)')
+                          fmt_short(sqrt(deck%m_damp / deck%m), 6) // ' (wallMass)')
         end if
         if (matprops) then
             call pair_values(kv, 'SetYoungModulus', deck%wall, ymod, msg)
             call pair_values(kv, 'SetPoissonRatio', deck%wall, nu, msg)
             call pair_values(kv, 'SetRestitution', deck%wall, e, msg)
             if (len(msg) > 0) return
-            call check_modulus(ymod(1), 'SetYoungModulus', peer_fmt(ymod(1)), msg)
-            call check_modulus(ymod(2), 'SetYoungModulus', peer_fmt(ymod(2)), msg)
-            call check_poisson(nu(1), 'SetPoissonRatio', peer_fmt(nu(1)), msg)
-            call check_poisson(nu(2), 'SetPoissonRatio', peer_fmt(nu(2)), msg)
+            call check_modulus(ymod(1), 'SetYoungModulus', fmt_short(ymod(1), ROUND_TRIP), msg)
+            call check_modulus(ymod(2), 'SetYoungModulus', fmt_short(ymod(2), ROUND_TRIP), msg)
+            call check_poisson(nu(1), 'SetPoissonRatio', fmt_short(nu(1), ROUND_TRIP), msg)
+            call check_poisson(nu(2), 'SetPoissonRatio', fmt_short(nu(2), ROUND_TRIP), msg)
             if (len(msg) > 0) return
             if (.not. all(e >= 0.0_wp .and. e <= 1.0_wp)) then
                 msg = 'SetRestitution: must be in [0, 1]'
@@ -981,8 +984,9 @@ contains
             deck%p_name = 'SetRestitution (composite: the smaller of the two, as a float)'
             deck%p_template = 'SetRestitution={}'
             deck%row = peer_spec_row('chrono-material-force')
-            deck%deck_text = 'ChSystemSMC Hertz, UseMaterialProperties(true): SetYoungModulus(' // peer_fmt(ymod(1)) // &
-                             ') SetPoissonRatio(' // peer_fmt(nu(1)) // ') SetRestitution(' // peer_fmt(e(1)) // ')'
+            deck%deck_text = 'ChSystemSMC Hertz, UseMaterialProperties(true): SetYoungModulus(' // &
+                             fmt_short(ymod(1), ROUND_TRIP) // ') SetPoissonRatio(' // fmt_short(nu(1), ROUND_TRIP) // &
+                             ') SetRestitution(' // fmt_short(e(1), ROUND_TRIP) // ')'
         else
             call pair_values(kv, 'SetKn', deck%wall, kn, msg)
             call pair_values(kv, 'SetGn', deck%wall, gn, msg)
@@ -999,8 +1003,8 @@ contains
             deck%p_name = 'SetGn (composite: the mean of the two, as a float)'
             deck%p_template = 'SetGn={}'
             deck%row = peer_spec_row('chrono-kn_gn-force')
-            deck%deck_text = 'ChSystemSMC Hertz, UseMaterialProperties(false): SetKn(' // peer_fmt(kn(1)) // ') SetGn(' // &
-                             peer_fmt(gn(1)) // ')'
+            deck%deck_text = 'ChSystemSMC Hertz, UseMaterialProperties(false): SetKn(' // fmt_short(kn(1), ROUND_TRIP) // &
+                             ') SetGn(' // fmt_short(gn(1), ROUND_TRIP) // ')'
         end if
         deck%deck_text = deck%deck_text // ', ' // coll // merge(', wall', '      ', deck%wall)
         deck%deck_text = trim(deck%deck_text)

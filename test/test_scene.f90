@@ -3,7 +3,7 @@
 !>   plus the time-step error 2/N^2 (velocity Verlet, N steps per contact), and the
 !>   error falls as N = 10, 20, 40 (overlap and force contact ends);
 !> - ball dropped on a wall: successive rebound heights follow e^2 up to the gravity
-!>   correction |e_eff/e - 1| <= 0.25 g T_c/u_in (measured 0.1 for e = 0.8), the
+!>   correction |e_eff/e - 1| <= 0.25 g T_c/u_in (asserted in drop), the
 !>   flights conserve energy, and the ball comes to rest at its static overlap;
 !> - chain: momentum conserved to round-off, energy never increases;
 !> - bed: finishes, no particle leaves the box, comes to rest;
@@ -93,7 +93,8 @@ contains
     !> log(err(N1)/err(N2)) / log(N2/N1): within 2 +- 0.6 from N = 10 to 40 (measured
     !> 1.83 to 2.52: N = 10 is not yet asymptotic) and within 2 +- 0.25 from 40 to 320
     !> (measured 1.95 to 2.20; without the damping force's trapezoid correction the
-    !> tsuji and kuwabara-kono runs fall to orders 1.25 and 1.5, its exponent 1 + q).
+    !> tsuji and kuwabara-kono runs would fall to order 1 + q, the exponent of the
+    !> error term it removes: a design note, no run here drops the correction).
     subroutine binary_convergence(iend, law)
         integer, intent(in) :: iend, law
         type(hertzdamp_dem_scene) :: sc

@@ -37,6 +37,7 @@ module hertzdamp_calibrate
     use hertzdamp_methods, only: HD_METHOD_FIT, HD_METHOD_RK45
     use hertzdamp_rk45, only: hertzdamp_rk45_default_tol
     use hertzdamp_inverse, only: hertzdamp_invert_alpha
+    use hertzdamp_scaling, only: hertzdamp_reduce
     use hertzdamp_calibrate_maps, only: cal_forward, cal_law_name, cal_law_q, cal_law_speed_exponent, &
                                         cal_law_supported, cal_max_law
     use hertzdamp_apps_text, only: fmt_short
@@ -730,7 +731,8 @@ contains
     end subroutine cal_auto
 
     !> The fitted model at impact speeds u: e, and T_c when k is known (tc = 0
-    !> otherwise).  status HD_OK or the forward map's failure (then e = tc = 0 there).
+    !> otherwise; t* from hertzdamp_reduce, in logarithms as the fit's).  status HD_OK or
+    !> the failure of the forward map (then e = tc = 0 there) or of t* (then tc = 0).
     pure elemental subroutine cal_model(law, opts, a, k, u, e, tc, status)
         integer, intent(in) :: law              !! CAL_LAW_*
         type(cal_options), intent(in) :: opts   !! mass, end, method, tol
@@ -740,11 +742,14 @@ contains
         real(wp), intent(out) :: e              !! restitution coefficient
         real(wp), intent(out) :: tc             !! contact time [s] (0 when k = 0)
         integer, intent(out) :: status          !! HD_OK or the failure
-        real(wp) :: tau, de, dtau
+        real(wp) :: tau, de, dtau, alpha0, tstar
         tc = 0.0_wp
         call cal_forward(law, opts%iend, opts%method, a * u**cal_law_speed_exponent(law), e, tau, de, dtau, status, &
                          opts%tol)
-        if (status == HD_OK .and. k > 0.0_wp) tc = (opts%mass / (k * sqrt(u)))**0.4_wp * tau
+        if (status == HD_OK .and. k > 0.0_wp) then
+            call hertzdamp_reduce(k, 0.0_wp, opts%mass, u, alpha0, tstar, status)
+            if (status == HD_OK) tc = tstar * tau
+        end if
     end subroutine cal_model
 
     !> Append a warning to the note of a result ('; ' between two).

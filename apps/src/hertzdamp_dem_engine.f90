@@ -935,7 +935,8 @@ contains
     !> same bit for bit).  g_(1/4)(theta) runs from zeta(-1/4) = -0.3205 (theta -> 0) to
     !> -0.0205 (theta = 1), g_(1/2) from zeta(-1/2) = -0.2079 to -0.0412 (these values to
     !> 1e-10).  The subtracted term is of order dt^(1+q): without it the achieved e and
-    !> T_c converge at order 1 + q only (measured 1.25 and 1.5 on binary.nml).
+    !> T_c would converge at order 1 + q only (from this error term; not measured by a
+    !> test, the engine has no switch to drop the correction).
     pure elemental real(wp) function trapezoid_error(p, theta) result(gt)
         real(wp), intent(in) :: p       !! exponent of the force, 0 < p < 2
         real(wp), intent(in) :: theta   !! fraction of the step, in [0, 1]

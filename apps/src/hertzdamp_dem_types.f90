@@ -39,6 +39,7 @@ module hertzdamp_dem_types
         real(wp) :: youngs_modulus = 0.0_wp     !! [Pa]
         real(wp) :: poisson_ratio = 0.0_wp      !! [-], in (-1, 0.5]
         real(wp) :: restitution = 0.0_wp        !! target restitution, in (0, 1]
+        integer :: line = 0                     !! source line (for messages; 0: not from a file)
     end type hertzdamp_dem_material
 
     !> One plane wall: the particles stay on the side the normal points to.

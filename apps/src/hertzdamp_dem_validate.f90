@@ -27,11 +27,10 @@ module hertzdamp_dem_validate
     use hertzdamp_fit_laws, only: hertzdamp_fit_law_e_min
     use hertzdamp_materials, only: hertzdamp_sphere_mass, hertzdamp_effective_mass, hertzdamp_effective_radius, &
                                    hertzdamp_effective_modulus
-    use hertzdamp_dem_types, only: hertzdamp_dem_scene, hertzdamp_dem_max_particles, hertzdamp_dem_max_steps, &
-                                   hertzdamp_dem_max_samples, hertzdamp_dem_max_trace_values, hertzdamp_dem_big, &
-                                   hertzdamp_dem_u_floor, hertzdamp_dem_pair_e, hertzdamp_dem_pairs_met, &
-                                   hertzdamp_dem_nsteps, &
-                                   hertzdamp_dem_trace_size
+    use hertzdamp_dem_types, only: hertzdamp_dem_scene, hertzdamp_dem_material, hertzdamp_dem_max_particles, &
+                                   hertzdamp_dem_max_steps, hertzdamp_dem_max_samples, hertzdamp_dem_max_trace_values, &
+                                   hertzdamp_dem_big, hertzdamp_dem_u_floor, hertzdamp_dem_pair_e, hertzdamp_dem_pairs_met, &
+                                   hertzdamp_dem_nsteps, hertzdamp_dem_trace_size
     use hertzdamp_dem_rules, only: hertzdamp_dem_rule
     use hertzdamp_dem_types, only: int_text => hertzdamp_dem_int_text
     implicit none
@@ -54,8 +53,8 @@ contains
         character(len=:), allocatable, intent(out) :: message !! empty on success
         status = HD_BAD_ARGUMENT
         message = finite_values(sc)
-        if (len(message) == 0) message = settings(sc)
         if (len(message) == 0) message = materials(sc)
+        if (len(message) == 0) message = settings(sc)
         if (len(message) == 0) message = particles(sc)
         if (len(message) == 0) message = magnitudes(sc)
         if (len(message) == 0) message = pair_limits(sc)
@@ -109,6 +108,14 @@ contains
         s = 'line ' // int_text(line) // ': '
     end function line_text
 
+    !> 'material NAME: ', after 'line N: ' for a material read from a file.
+    pure function material_text(mt) result(s)
+        type(hertzdamp_dem_material), intent(in) :: mt
+        character(len=:), allocatable :: s
+        s = 'material ' // trim(mt%name) // ': '
+        if (mt%line > 0) s = line_text(mt%line) // '&' // s
+    end function material_text
+
     !> Every real value finite (NaN or Inf would reach the report).
     pure function finite_values(sc) result(message)
         type(hertzdamp_dem_scene), intent(in) :: sc
@@ -134,13 +141,13 @@ contains
         do i = 1, size(sc%mat)
             associate (mt => sc%mat(i))
                 if (.not. finite(mt%density)) then
-                    message = 'material ' // trim(mt%name) // ': density must be finite'
+                    message = material_text(mt) // 'density must be finite'
                 else if (.not. finite(mt%youngs_modulus)) then
-                    message = 'material ' // trim(mt%name) // ': youngs_modulus must be finite'
+                    message = material_text(mt) // 'youngs_modulus must be finite'
                 else if (.not. finite(mt%poisson_ratio)) then
-                    message = 'material ' // trim(mt%name) // ': poisson_ratio must be finite'
+                    message = material_text(mt) // 'poisson_ratio must be finite'
                 else if (.not. finite(mt%restitution)) then
-                    message = 'material ' // trim(mt%name) // ': restitution must be finite'
+                    message = material_text(mt) // 'restitution must be finite'
                 end if
             end associate
             if (len(message) > 0) return
@@ -222,17 +229,17 @@ contains
         do i = 1, size(sc%mat)
             associate (mt => sc%mat(i))
                 if (.not. (mt%density > 0.0_wp)) then
-                    message = 'material ' // trim(mt%name) // ': density must be positive'
+                    message = material_text(mt) // 'density must be positive'
                 else if (.not. (mt%youngs_modulus > 0.0_wp)) then
-                    message = 'material ' // trim(mt%name) // ': youngs_modulus must be positive'
+                    message = material_text(mt) // 'youngs_modulus must be positive'
                 else if (.not. (mt%poisson_ratio > -1.0_wp .and. mt%poisson_ratio <= 0.5_wp)) then
-                    message = 'material ' // trim(mt%name) // ': poisson_ratio must lie in (-1, 0.5]'
+                    message = material_text(mt) // 'poisson_ratio must lie in (-1, 0.5]'
                 else if (.not. (mt%restitution > 0.0_wp .and. mt%restitution <= 1.0_wp)) then
-                    message = 'material ' // trim(mt%name) // ': restitution must lie in (0, 1]'
+                    message = material_text(mt) // 'restitution must lie in (0, 1]'
                 else if (abs(lg(mt%density)) > lg_big) then
-                    message = 'material ' // trim(mt%name) // ': density must lie within [1e-150, 1e150] kg/m^3'
+                    message = material_text(mt) // 'density must lie within [1e-150, 1e150] kg/m^3'
                 else if (abs(lg(mt%youngs_modulus)) > lg_big) then
-                    message = 'material ' // trim(mt%name) // ': youngs_modulus must lie within [1e-150, 1e150] Pa'
+                    message = material_text(mt) // 'youngs_modulus must lie within [1e-150, 1e150] Pa'
                 end if
             end associate
             if (len(message) > 0) return

@@ -14,7 +14,7 @@
 module hertzdamp_peers_deck
     use hertzdamp, only: hertzdamp_rk, hertzdamp_message, HD_OK, HD_BAD_ARGUMENT
     use hertzdamp_materials, only: hertzdamp_sphere_mass, hertzdamp_effective_mass, hertzdamp_effective_radius, &
-                                   hertzdamp_effective_modulus
+                                   hertzdamp_effective_modulus, hertzdamp_hertz_stiffness
     use hertzdamp_peers, only: peer_deck, peer_text, peer_spec_row, peer_row_law, peer_row_end, peer_row_coef, &
                                PEER_LAMMPS, PEER_LIGGGHTS, PEER_MERCURYDPM, PEER_YADE, PEER_MFIX, PEER_CHRONO, &
                                TSTEP_LIGGGHTS, TSTEP_MERCURY, TSTEP_MFIX, peer_name, &
@@ -387,14 +387,14 @@ contains
             deck%k_text = 'k = kn sqrt(R) (normal hertz)'
         else if (deck%wall .and. release == LAMMPS_2021) then
             deck%e_star = ymod / (2.0_wp * (1.0_wp - nu))
-            deck%k = (4.0_wp / 3.0_wp) * deck%e_star * sqrt(deck%radius)
+            deck%k = hertz_k(deck%e_star, deck%radius)
             deck%k_text = 'k = (4/3) E/(2(1-nu)) sqrt(R) (fix wall/gran hertz/material, LAMMPS 2021: 1-nu, not 1-nu^2)'
             call add_note(deck, 'LAMMPS 29 Sep 2021 fix wall/gran builds the hertz/material stiffness with 1-nu ' // &
                           'instead of 1-nu^2 (fix_wall_gran.cpp:160,171,183): k is 1+nu times the pair formula; ' // &
                           'the 2023 refactor removed this')
         else
             deck%e_star = ymod / (2.0_wp * (1.0_wp - nu) * (1.0_wp + nu))
-            deck%k = (4.0_wp / 3.0_wp) * deck%e_star * sqrt(deck%radius)
+            deck%k = hertz_k(deck%e_star, deck%radius)
             deck%k_text = 'k = (4/3) E/(2(1-nu^2)) sqrt(R) (hertz/material, one material on both sides)'
         end if
         deck%deck_text = normal_text // ' damping ' // damping // merge(' limit_damping', '              ', limit)
@@ -502,7 +502,7 @@ contains
             deck%e_deck = e
             deck%p_name = 'coefficientRestitution'
             deck%p_template = 'coefficientRestitution={}'
-            deck%k = (4.0_wp / 3.0_wp) * deck%e_star * sqrt(deck%radius)
+            deck%k = hertz_k(deck%e_star, deck%radius)
             deck%k_text = 'k = (4/3) Y* sqrt(R), 1/Y* = (1-nu1^2)/Y1 + (1-nu2^2)/Y2'
             deck%row = peer_spec_row('liggghts-hertz-' // end_word(limit))
             deck%deck_text = 'model hertz limitForce ' // lf // ' youngsModulus ' // fmt_short(ymod(1), ROUND_TRIP) // &
@@ -664,7 +664,7 @@ contains
         deck%e_star = emod
         deck%modulus_arg = emod
         if (old) then
-            deck%k = (4.0_wp / 3.0_wp) * sqrt(2.0_wp) * emod * sqrt(deck%radius)
+            deck%k = hertz_k(sqrt(2.0_wp) * emod, deck%radius)
             deck%k_text = 'k = (4/3) sqrt(2) E sqrt(R) (stiffness uses sqrt(2 R delta), the "effective diameter")'
             deck%row = peer_spec_row('mercurydpm2015-' // kind // '-overlap')
             if (kind == 'stiffness_restitution') then
@@ -673,7 +673,7 @@ contains
                               'd has units kg s^-1 m^-1/2, not kg s^-1')
             end if
         else
-            deck%k = (4.0_wp / 3.0_wp) * emod * sqrt(deck%radius)
+            deck%k = hertz_k(emod, deck%radius)
             deck%k_text = 'k = (4/3) E_eff sqrt(R) (E_eff: the effective modulus the species holds)'
             deck%row = peer_spec_row('mercurydpm-' // kind // '-overlap')
             deck%tstep = TSTEP_MERCURY
@@ -759,7 +759,7 @@ contains
                 ' instead of r (Ig2_Facet_Sphere_ScGeom.cpp); hertzian=True gives R = r')
         end if
         deck%e_star = effective_modulus(ymod, nu)
-        deck%k = (4.0_wp / 3.0_wp) * deck%e_star * sqrt(deck%radius)
+        deck%k = hertz_k(deck%e_star, deck%radius)
         deck%k_text = 'k = Kno = (4/3) E* sqrt(R), 1/E* = (1-nu1^2)/E1 + (1-nu2^2)/E2'
         if (take(kv, 'en', v)) then
             call number(v, 'en', e, msg)
@@ -872,7 +872,7 @@ contains
             return
         end if
         deck%e_star = effective_modulus(ymod, nu)
-        deck%k = (4.0_wp / 3.0_wp) * sqrt(deck%radius) * deck%e_star
+        deck%k = hertz_k(deck%e_star, deck%radius)
         deck%k_text = 'k = HERT_KN = (4/3) sqrt(R_EFF) E_EFF, 1/E_EFF = (1-nu1^2)/E1 + (1-nu2^2)/E2'
         deck%p = e
         deck%e_deck = e
@@ -977,7 +977,7 @@ contains
             e_eff = 1 / inv_e
             cr = min(real(e(1), real32), real(e(2), real32))
             deck%e_star = real(e_eff, wp)
-            deck%k = (4.0_wp / 3.0_wp) * deck%e_star * sqrt(deck%radius)
+            deck%k = hertz_k(deck%e_star, deck%radius)
             deck%k_text = 'k = (2/3) Sn / sqrt(delta) = (4/3) E_eff sqrt(R), E_eff in single precision'
             deck%p = real(cr, wp)
             deck%e_deck = real(cr, wp)
@@ -1070,6 +1070,15 @@ contains
         integer :: st
         call hertzdamp_effective_modulus(ymod(1), nu(1), ymod(2), nu(2), es, st)
     end function effective_modulus
+
+    !> k = (4/3) E* sqrt(R) (hertzdamp_hertz_stiffness, overflow-safe); 0 when it is out
+    !> of range, which peer_read_deck reports.
+    elemental function hertz_k(e_star, radius) result(k)
+        real(wp), intent(in) :: e_star, radius
+        real(wp) :: k
+        integer :: st
+        call hertzdamp_hertz_stiffness(e_star, radius, k, st)
+    end function hertz_k
 
     subroutine check_modulus(x, what, text, msg)
         real(wp), intent(in) :: x

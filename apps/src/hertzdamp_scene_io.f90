@@ -485,17 +485,8 @@ contains
                 return
             end if
         end do
-        if (.not. (density > 0.0_wp)) then
-            msg = at(first) // '&material: density must be positive'
-        else if (.not. (youngs_modulus > 0.0_wp)) then
-            msg = at(first) // '&material: youngs_modulus must be positive'
-        else if (.not. (poisson_ratio > -1.0_wp .and. poisson_ratio <= 0.5_wp)) then
-            msg = at(first) // '&material: poisson_ratio must lie in (-1, 0.5]'
-        else if (.not. (restitution > 0.0_wp .and. restitution <= 1.0_wp)) then
-            msg = at(first) // '&material: restitution must lie in (0, 1]'
-        end if
-        if (len(msg) > 0) return
-        mt = hertzdamp_dem_material(name, density, youngs_modulus, poisson_ratio, restitution)
+        ! the values' ranges: hertzdamp_dem_check, whose message names this line
+        mt = hertzdamp_dem_material(name, density, youngs_modulus, poisson_ratio, restitution, first)
         sc%mat = [sc%mat, mt]
 
     contains

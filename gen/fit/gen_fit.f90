@@ -253,7 +253,7 @@ contains
         blocks(:) = [ &
             block_spec('ts_ov_inv_t', HD_END_OVERLAP, VAR_L, Q_TAU_C, 0.0_wp, lfwd, 16, 11, HD_DAMPING_TSUJI), &
             ! alpha(e) of the force end is analytic in L (its e(alpha) is): in L^(1/5) it would
-            ! be exp(x^5/2)-steep at large L (6.5e-12 measured), so it keeps its own grid
+            ! be exp(x^5/2)-steep at large L, so it keeps its own grid
             block_spec('ts_fo_inv_a', HD_END_FORCE, VAR_L, Q_ALPHA_OVER_L, 0.0_wp, lfwd, 16, 11, HD_DAMPING_TSUJI), &
             block_spec('ts_fo_inv_t', HD_END_FORCE, VAR_ROOT_L, Q_TAU_C, 0.0_wp, lfwd**0.2_wp, 16, 11, &
                        HD_DAMPING_TSUJI, 5), &

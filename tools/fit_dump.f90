@@ -4,8 +4,10 @@
 !> kernels and the maps of hertzdamp_fit_laws, for every law and contact end (and invalid
 !> ones), scalar and array, on dense grids with the edges: piece boundaries and the ends
 !> of the fitted and direct ranges (and one ulp either side), 0, -0, NaN, +-inf,
-!> negatives, subnormals, huge.  One line per input: a tag, the index, the outputs'
-!> bits in hexadecimal.  Writes to the file named by its first argument.
+!> negatives, subnormals, huge.  Also the reference integrator (hertzdamp_rk45_solve with
+!> its statistics, hertzdamp_alpha_c) on a grid of alpha, every law, end and three
+!> tolerances.  One line per input: a tag, the index, the outputs' bits in hexadecimal.
+!> Writes to the file named by its first argument.
 program fit_dump
     use hertzdamp_kinds, only: hertzdamp_rk
     use hertzdamp_status, only: HD_END_OVERLAP, HD_END_FORCE
@@ -15,6 +17,8 @@ program fit_dump
                              hertzdamp_fit_cbrt, hertzdamp_fit_exp_neg, hertzdamp_fit_root5, hertzdamp_fit_alpha_c, &
                              hertzdamp_fit_alpha_max_force, hertzdamp_fit_e_min_overlap, hertzdamp_fit_e_min_force, &
                              hertzdamp_approx_alpha_status
+    use hertzdamp_rk45, only: hertzdamp_rk45_solve, hertzdamp_rk45_options, hertzdamp_collision, hertzdamp_alpha_c, &
+                              hertzdamp_rk45_tolerances
     use hertzdamp_fit_laws, only: hertzdamp_fit_law_inverse, hertzdamp_fit_law_forward, hertzdamp_fit_law_e_min, &
                                   hertzdamp_fit_forward_deriv
     use hertzdamp_fit_data, only: fit_inv_x0, fit_inv_x1, fit_inv_np, fit_fwd_x0, fit_fwd_x1, fit_fwd_np, fit_turn_x0, &
@@ -57,6 +61,7 @@ program fit_dump
                 call dump_law_forward(as(::41), ends(ie), laws(il))
             end if
         end do
+        call dump_rk45(ends(ie))
         if (ie <= 2) then
             call dump_linear_inverse(es, ends(ie))
             call dump_forward(as, ends(ie))
@@ -230,6 +235,40 @@ contains
                  [integer ::])
         call put('exp_neg_array', 0, hertzdamp_fit_exp_neg(pack(x, x >= 0.0_wp .and. x <= 700.0_wp)), [integer ::])
     end subroutine dump_arithmetic
+
+    !> The reference integrator: every law (and invalid ones) at alpha on a grid over
+    !> [-12, 1e3] with the edges (0, +-0, alpha_c, sqrt(5), NaN, inf, the range limits),
+    !> tolerances 1e-6, 1e-10, 1e-13: e, tau_c, z_max, tau_max, status and the work done;
+    !> then alpha_c of each law.
+    subroutine dump_rk45(iend)
+        integer, intent(in) :: iend
+        type(hertzdamp_rk45_options) :: opts
+        type(hertzdamp_collision) :: r
+        real(wp), allocatable :: al(:)
+        real(wp), parameter :: tols(3) = [1.0e-6_wp, 1.0e-10_wp, 1.0e-13_wp]
+        real(wp) :: ac
+        integer :: i, il, it, st
+        character(len=24) :: tag
+        al = [(-12.0_wp + 0.37_wp * real(i, wp), i = 0, 60), (10.0_wp**(-3.0_wp + 0.1_wp * real(i, wp)), i = 0, 60), &
+              0.0_wp, -0.0_wp, nan, inf, -inf, hertzdamp_fit_alpha_c, nearest(hertzdamp_fit_alpha_c, -1.0_wp), &
+              sqrt(5.0_wp), nearest(sqrt(5.0_wp), -1.0_wp), -sqrt(5.0_wp), -10.0_wp, nearest(-10.0_wp, -1.0_wp), &
+              1.0e100_wp, 1.5e100_wp, -1.3884_wp, -1.5_wp, 1.0e-300_wp]
+        do il = 1, size(laws)
+            do it = 1, size(tols)
+                call hertzdamp_rk45_tolerances(tols(it), opts)
+                write (tag, '(a, i0, a, i0, a, i0)') 'rk45_end', iend, '_law', laws(il), '_tol', it
+                do i = 1, size(al)
+                    call hertzdamp_rk45_solve(al(i), iend, opts, r, laws(il))
+                    call put(trim(tag), i, [r%e, r%tau_c, r%z_max, r%tau_max], [r%status, r%stats%steps, &
+                             r%stats%rejected, r%stats%rhs_evals])
+                end do
+            end do
+            if (iend == HD_END_OVERLAP) then
+                call hertzdamp_alpha_c(ac, st, law=laws(il))
+                call put('alpha_c', laws(il), [ac], [st])
+            end if
+        end do
+    end subroutine dump_rk45
 
     !> The law-less linear entry points (alpha, tau_c of e; inverse without `law`).
     subroutine dump_linear_inverse(e, iend)

@@ -782,55 +782,25 @@ contains
         real(wp), intent(out) :: k(n)        !! Hertz stiffnesses [N m^-3/2] (0 where status /= HD_OK)
         real(wp), intent(out) :: d(n)        !! damping coefficients [kg s^-1 m^-q] (0 where status /= HD_OK)
         real(wp) :: tcs, ms, us, r, s
-        integer(int64) :: keep, direct
+        integer(int64) :: keep, direct, tsuji, kk
         integer :: i
-        select case (law)
-        case (HD_DAMPING_TSUJI)   ! tsuji, q = 1/4: alpha m r s^(1/2)
-            do i = 1, n
-                keep = shifta(int(status(i), int64) - 1_int64, 63)      ! all ones where the kernel's status is HD_OK (0)
-                direct = iand(keep, keep_mask(ior(outside(tc(i), direct_lo_bits, direct_hi_bits), &
-                                                  ior(outside(m(i), direct_lo_bits, direct_hi_bits), &
-                                                      outside(u(i), direct_lo_bits, direct_hi_bits)))))
-                tcs = blend(direct, tc(i), 1.0_wp)
-                ms = blend(direct, m(i), 1.0_wp)
-                us = blend(direct, u(i), 1.0_wp)
-                r = tau_c(i) * (1.0_wp / tcs)
-                s = sqrt(tau_c(i) * (1.0_wp / (tcs * us)))
-                k(i) = blend(direct, ms * (r * r) * s, 0.0_wp)
-                d(i) = blend(direct, alpha(i) * ms * r * sqrt(s), 0.0_wp)
-                status(i) = int(iblend(keep, iand(not(direct), int(HD_OUT_OF_RANGE, int64)), int(status(i), int64)))
-            end do
-        case (HD_DAMPING_KUWABARA_KONO)   ! kuwabara-kono, q = 1/2: alpha m r s
-            do i = 1, n
-                keep = shifta(int(status(i), int64) - 1_int64, 63)      ! all ones where the kernel's status is HD_OK (0)
-                direct = iand(keep, keep_mask(ior(outside(tc(i), direct_lo_bits, direct_hi_bits), &
-                                                  ior(outside(m(i), direct_lo_bits, direct_hi_bits), &
-                                                      outside(u(i), direct_lo_bits, direct_hi_bits)))))
-                tcs = blend(direct, tc(i), 1.0_wp)
-                ms = blend(direct, m(i), 1.0_wp)
-                us = blend(direct, u(i), 1.0_wp)
-                r = tau_c(i) * (1.0_wp / tcs)
-                s = sqrt(tau_c(i) * (1.0_wp / (tcs * us)))
-                k(i) = blend(direct, ms * (r * r) * s, 0.0_wp)
-                d(i) = blend(direct, alpha(i) * ms * r * s, 0.0_wp)
-                status(i) = int(iblend(keep, iand(not(direct), int(HD_OUT_OF_RANGE, int64)), int(status(i), int64)))
-            end do
-        case default   ! linear, q = 0: alpha m r
-            do i = 1, n
-                keep = shifta(int(status(i), int64) - 1_int64, 63)      ! all ones where the kernel's status is HD_OK (0)
-                direct = iand(keep, keep_mask(ior(outside(tc(i), direct_lo_bits, direct_hi_bits), &
-                                                  ior(outside(m(i), direct_lo_bits, direct_hi_bits), &
-                                                      outside(u(i), direct_lo_bits, direct_hi_bits)))))
-                tcs = blend(direct, tc(i), 1.0_wp)
-                ms = blend(direct, m(i), 1.0_wp)
-                us = blend(direct, u(i), 1.0_wp)
-                r = tau_c(i) * (1.0_wp / tcs)
-                s = sqrt(tau_c(i) * (1.0_wp / (tcs * us)))
-                k(i) = blend(direct, ms * (r * r) * s, 0.0_wp)
-                d(i) = blend(direct, alpha(i) * ms * r, 0.0_wp)
-                status(i) = int(iblend(keep, iand(not(direct), int(HD_OUT_OF_RANGE, int64)), int(status(i), int64)))
-            end do
-        end select
+        ! all ones for the law's factor (r/u)^q of d: s^(1/2) (tsuji), s (kuwabara-kono), else 1
+        tsuji = -int(merge(1, 0, law == HD_DAMPING_TSUJI), int64)
+        kk = -int(merge(1, 0, law == HD_DAMPING_KUWABARA_KONO), int64)
+        do i = 1, n
+            keep = shifta(int(status(i), int64) - 1_int64, 63)      ! all ones where the kernel's status is HD_OK (0)
+            direct = iand(keep, keep_mask(ior(outside(tc(i), direct_lo_bits, direct_hi_bits), &
+                                              ior(outside(m(i), direct_lo_bits, direct_hi_bits), &
+                                                  outside(u(i), direct_lo_bits, direct_hi_bits)))))
+            tcs = blend(direct, tc(i), 1.0_wp)
+            ms = blend(direct, m(i), 1.0_wp)
+            us = blend(direct, u(i), 1.0_wp)
+            r = tau_c(i) * (1.0_wp / tcs)
+            s = sqrt(tau_c(i) * (1.0_wp / (tcs * us)))
+            k(i) = blend(direct, ms * (r * r) * s, 0.0_wp)
+            d(i) = blend(direct, alpha(i) * ms * r * blend(tsuji, sqrt(s), blend(kk, s, 1.0_wp)), 0.0_wp)
+            status(i) = int(iblend(keep, iand(not(direct), int(HD_OUT_OF_RANGE, int64)), int(status(i), int64)))
+        end do
     end subroutine kernel_dimensional
 
     !> kernel_dimensional for one contact (the same bits), with a branch instead of masks.

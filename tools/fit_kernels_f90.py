@@ -426,11 +426,12 @@ pure subroutine kernel_dimensional(law, n, tc, m, u, alpha, tau_c, status, k, d)
     real(wp), intent(out) :: k(n)        !! Hertz stiffnesses [N m^-3/2] (0 where status /= HD_OK)
     real(wp), intent(out) :: d(n)        !! damping coefficients [kg s^-1 m^-q] (0 where status /= HD_OK)
     real(wp) :: tcs, ms, us, r, s
-    integer(int64) :: keep, direct
+    integer(int64) :: keep, direct, tsuji, kk
     integer :: i
-    select case (law)
+    ! all ones for the law's factor (r/u)^q of d: s^(1/2) (tsuji), s (kuwabara-kono), else 1
+    tsuji = -int(merge(1, 0, law == HD_DAMPING_TSUJI), int64)
+    kk = -int(merge(1, 0, law == HD_DAMPING_KUWABARA_KONO), int64)
 {cases}
-    end select
 end subroutine kernel_dimensional
 
 !> kernel_dimensional for one contact (the same bits), with a branch instead of masks.
@@ -473,17 +474,18 @@ end do'''
 
 
 def dimensional():
-    cases, one_cases = [], []
+    one_cases = []
     for law, q, text in LAW_Q:
         label = 'case default' if law == 'default' else 'case (%s)' % law
-        loop = DIMENSIONAL_FORMULA.format(tau='tau_c(i)', tc='tcs', u='us', m='ms', alpha='alpha(i)', k='k(i)',
-                                          d='d(i)', ok='blend(direct, ', end=', 0.0_wp)', q=q)
-        cases += ['    %s   ! %s' % (label, text),
-                  indent(DIMENSIONAL_LOOP.replace('{formula}', indent(loop, 4)), 8)]
         one = DIMENSIONAL_FORMULA.format(tau='tau_c', tc='tc', u='u', m='m', alpha='alpha', k='k', d='d', ok='',
                                          end='', q=q)
         one_cases += ['        %s' % label, indent(one, 12)]
-    return DIMENSIONAL.replace('{cases}', '\n'.join(cases)).replace('{one_cases}', '\n'.join(one_cases))
+    # one loop for every law: (r/u)^q = 1, s^(1/2), s chosen by loop-invariant masks (x 1 is exact)
+    loop = DIMENSIONAL_FORMULA.format(tau='tau_c(i)', tc='tcs', u='us', m='ms', alpha='alpha(i)', k='k(i)',
+                                      d='d(i)', ok='blend(direct, ', end=', 0.0_wp)',
+                                      q=' * blend(tsuji, sqrt(s), blend(kk, s, 1.0_wp))')
+    return DIMENSIONAL.replace('{cases}', indent(DIMENSIONAL_LOOP.replace('{formula}', indent(loop, 4)), 4)) \
+        .replace('{one_cases}', '\n'.join(one_cases))
 
 
 # ------------------------------------------------------------------ forward

@@ -26,7 +26,7 @@ Instances (the fewer, the faster the build; each choice keeps the bits):
   overlap, force), run with n = 1 by the scalar entry points; no unmasked twin and no
   scalar copy (the dimensionless inverse is as fast as before or faster without them).
 - k and d of the dimensional inverse apart from the kernels (kernel_dimensional, one masked
-  loop per damping law, and kernel_dimensional_one): the one block that goes when the
+  loop for every damping law, and kernel_dimensional_one): the one block that goes when the
   dimensional fit inverse goes.  Apart, k and d cost more than inside the kernel's loop,
   whose work hid their divisions and square root (tools/fit_speed.sh measures it).
 - one procedure per contact end for one value of the forward map, which skips the
@@ -776,7 +776,7 @@ def main(argv):
            '! Regenerate with `make fit-source`; test/cli_sync_fit.sh checks that this file is what it writes.',
            '! Settings: polynomials by Estrin\'s scheme, degrees %s; instances: one masked loop per' % (
                ', '.join('%s %d' % (f, degs[f]) for f in sorted(degs))),
-           '! inverse kernel (%d), one masked loop per damping law for k and d and its one-contact form, one' % (
+           '! inverse kernel (%d), one masked loop for k and d of every damping law and its one-contact form, one' % (
                len(INVERSE_KERNELS)),
            '! procedure per contact end for one value of the forward map.',
            '',

@@ -2,14 +2,14 @@
 !>
 !> Help goes to stdout through the checked writer (a failed write exits 4, e.g.
 !> `hertzdamp --help > /dev/full`).  doc/hertzdamp.1 carries the same commands and
-!> options (test/cli_docs.sh checks it).
+!> options (test/docs/cli_docs.sh checks it).
 module hertzdamp_cli_help
     use hertzdamp_cli, only: write_stdout, quit, EXIT_OK
     implicit none
     private
     public :: print_help, wants_help, hertzdamp_version
 
-    !> The program's version: the same as fpm.toml and CMakeLists.txt (test/cli_docs.sh).
+    !> The program's version: the same as fpm.toml and CMakeLists.txt (test/docs/cli_docs.sh).
     character(len=*), parameter :: hertzdamp_version = '0.2.0'
 
     character(len=*), parameter :: nl = new_line('a')

@@ -1,7 +1,7 @@
 !> The command `calibrate`: k and d (or the combination e identifies) fitted to
 !> measured restitution coefficients, and contact times, at several impact speeds;
 !> with `--damping auto`, the damping law the data support.  Parsing, reading the
-!> CSV and printing only: the fit is hertzdamp_calibrate (apps).
+!> CSV and printing only: the fit is hertzdamp_calibrate (packages/calibrate).
 module hertzdamp_cmd_calibrate
     use hertzdamp, only: hertzdamp_rk, hertzdamp_end_name, HD_METHOD_FIT, HD_METHOD_RK45, HD_OK
     use hertzdamp_calibrate, only: cal_data, cal_options, cal_result, cal_check, cal_fit, cal_auto, cal_model, &

@@ -1,6 +1,6 @@
 """Print the markdown table of the overlap compact-formula constants (doc/compact.md)
 from data/fit_coefficients.csv, so that the document never holds hand-typed numbers.
-Usage: python3 tools/compact_table.py [data/fit_coefficients.csv]"""
+Usage: python3 gen/compact_table.py [data/fit_coefficients.csv]"""
 import sys
 
 path = sys.argv[1] if len(sys.argv) > 1 else "data/fit_coefficients.csv"

@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """Convert a generated CSV table into a Fortran module of named constants.
 
-Usage:  python3 tools/csv_to_f90.py IN.csv OUT.f90 MODULE_NAME PREFIX
+Usage:  python3 gen/csv_to_f90.py IN.csv OUT.f90 MODULE_NAME PREFIX
 
 IN.csv: leading '#' comment lines, one header row of column names, then data
 rows.  OUT.f90 gets one public parameter array per column, named
@@ -42,7 +42,7 @@ def comment_lines(text, width=96):
 
 def main(argv):
     if len(argv) != 5:
-        fail("usage: python3 tools/csv_to_f90.py IN.csv OUT.f90 MODULE_NAME PREFIX")
+        fail("usage: python3 gen/csv_to_f90.py IN.csv OUT.f90 MODULE_NAME PREFIX")
     in_csv, out_f90, module, prefix = argv[1:5]
     for what, name in (("module name", module), ("prefix", prefix)):
         if not NAME_RE.match(name):
@@ -71,7 +71,7 @@ def main(argv):
     out.append("!> Constants generated from %s." % in_csv)
     out.append("!>")
     out.append("!> Generated from %s by" % in_csv)
-    out.append("!>   python3 tools/csv_to_f90.py %s %s \\" % (in_csv, out_f90))
+    out.append("!>   python3 gen/csv_to_f90.py %s %s \\" % (in_csv, out_f90))
     out.append("!>       %s %s" % (module, prefix))
     out.append("!> Do not edit by hand: regenerate the CSV, then rerun the command above.")
     out.append("!> Each array holds one column; element i (0-based) is data row i.")

@@ -10,7 +10,7 @@
 # every input the commands accept.
 SUITE=cli_adversarial
 source "$(dirname "$0")/cli_common.bash"
-cd "$(dirname "$0")/.."
+cd "$(dirname "$0")/../.."
 T=$(mktemp -d)
 cleanup() { mountpoint -q "$T/full" 2>/dev/null && umount "$T/full"; rm -rf "$T" "$OUT" "$ERR"; }
 trap cleanup EXIT
@@ -78,14 +78,14 @@ for f in csv text; do
 done
 
 # --- timestep: tc_damped = t*_min tau_c overflows: tc_damped = dt_max = inf,
-# elastic_excess = -1, status ok, exit 0 (cli/hertzdamp_cmd_invert.f90, cmd_timestep)
+# elastic_excess = -1, status ok, exit 0 (app/hertzdamp_cmd_invert.f90, cmd_timestep)
 run timestep --e 1e-4 --damping kuwabara-kono --velocity 1e-300 --mass 1e300 --k-phys 1e-318 --format csv
 cp "$OUT" "$T/ts.csv"
 check "timestep with tc_damped beyond double precision: exit 0 only with finite numbers (exit $RC)" \
   bash -c "[ $RC -ne 0 ] || python3 '$T/clean.py' csv '$T/ts.csv'"
 
 # --- 16 significant digits: DBL_MAX is printed as 1.797693134862316E+308, which reads
-# back as infinity (json.loads, strtod), exit 0 (cli/hertzdamp_cli_text.f90, fmt_csv
+# back as infinity (json.loads, strtod), exit 0 (app/hertzdamp_cli_text.f90, fmt_csv
 # es24.15e3; 17 digits round-trip every double)
 run forward --k 1e9 --d 0.5 --mass 1e-3 --velocity 1 --k-phys 1.7976931348623157e308 --format json
 cp "$OUT" "$T/max.json"
@@ -96,7 +96,7 @@ cp "$OUT" "$T/max.csv"
 check "forward --k-phys DBL_MAX, csv: every number reads back finite" clean csv "$T/max.csv"
 
 # --- a range of whole step counts refused as not whole: 1:23:23 gives 16 as
-# 15.999999999999998 (cli/hertzdamp_cli.f90 parse_range; cli/hertzdamp_cmd_invert.f90
+# 15.999999999999998 (app/hertzdamp_cli.f90 parse_range; app/hertzdamp_cmd_invert.f90
 # parse_steps demands exact integers), and the message says "--steps 16: ... must be a
 # whole number"
 run timestep --e 0.5 --steps 1:23:23 --velocity 1 --mass 1e-3 --k-phys 1e9 --format csv
@@ -113,7 +113,7 @@ check "invert --dt 1e308 --steps 10 (valid values, product not representable): n
   test "$RC" -ne 2
 
 # --- contact options: an out-of-range E* caused by body 2 is blamed on body 1
-# (cli/hertzdamp_cli_materials.f90, parse_contact: check(..., '--youngs-modulus',
+# (app/hertzdamp_cli_materials.f90, parse_contact: check(..., '--youngs-modulus',
 # '--poisson-ratio', ' effective modulus E*'))
 run invert --e 0.5 --tc 1e-5 --velocity 1 --radius 1e-3 --density 2500 --youngs-modulus 1e9 --poisson-ratio 0.3 \
   --youngs-modulus2 1e-320 --poisson-ratio2 0.3
@@ -133,7 +133,7 @@ check "compact forward at alpha = 1.1279: an ok row is within 1e-3 of rk45 (comp
   bash -c "[ '$st' != ok ] || python3 -c 'import sys; a,b=float(sys.argv[1]),float(sys.argv[2]); sys.exit(0 if abs(a-b)<=1e-3*b else 1)' '$ec' '$er'"
 
 # --- check: some speeds fail, exit 4, the table on stdout and NOTHING on stderr
-# (cli/hertzdamp_cmd_check.f90, run_check: quit(exit_code_of(...)) without a message)
+# (app/hertzdamp_cmd_check.f90, run_check: quit(exit_code_of(...)) without a message)
 run check lammps "hertz/material 1e8 0.5 0.3 damping viscoelastic" --radius 1e-3 --density 2500 \
   --velocity 1,1e100 --e 0.5 --format csv
 check "check with one of two speeds failing: exit 3 or 4 (got $RC)" test "$RC" -eq 3 -o "$RC" -eq 4
@@ -141,7 +141,7 @@ check "check with one of two speeds failing: one line on stderr (got $(wc -l <"$
 
 # --- check: an overdamped deck (alpha > 1e100) is bad usage (exit 2, "invalid damping
 # parameter alpha"), while the same deck with eta_n0 = 1e90 and forward --k 1e7 --d 1e110
-# say no-rebound, exit 0 (apps/src/hertzdamp_peers.f90 has no `overdamped` path)
+# say no-rebound, exit 0 (packages/check/src/hertzdamp_peers.f90 has no `overdamped` path)
 run check lammps "hertz 1e7 1e110 damping velocity" --radius 1e-3 --density 2500 --velocity 1 --e 0.5 --format csv
 check "check lammps 'hertz 1e7 1e110 damping velocity' (overlap end, no rebound): exit 0 (got $RC: $(head -c 100 "$ERR"))" \
   test "$RC" -eq 0
@@ -149,7 +149,7 @@ check "check lammps 'hertz 1e7 1e110 damping velocity': status no-rebound" \
   bash -c "[ $RC -eq 0 ] && grep -q 'no-rebound$' '$OUT'"
 
 # --- check: the engine's own time estimate overflows in its intermediate (E^2 = 1e-600):
-# t_peer = inf, "= inf s ... +Infinity % against t_c", exit 0 (apps/src/hertzdamp_peers.f90,
+# t_peer = inf, "= inf s ... +Infinity % against t_c", exit 0 (packages/check/src/hertzdamp_peers.f90,
 # peer_time_estimate)
 for f in csv text; do
   run check mercurydpm setEffectiveElasticModulusAndRestitutionCoefficient=1e-300,0.5 --radius 1e-3 --density 2500 \
@@ -160,14 +160,14 @@ for f in csv text; do
 done
 
 # --- check: a target e = 1e-320 is accepted; e_error = e/e_target - 1 = inf and
-# "+Infinity %" in the achieved line, exit 0 (cli/hertzdamp_cmd_check.f90, --e)
+# "+Infinity %" in the achieved line, exit 0 (app/hertzdamp_cmd_check.f90, --e)
 run check yade young=1e7 poisson=0.3 en=0.5 --radius 1e-3 --density 2500 --velocity 1 --e 1e-320
 cp "$OUT" "$T/etiny.txt"
 check "check --e 1e-320: refused (exit 2) or no inf/Infinity in the report (exit $RC)" \
   bash -c "[ $RC -ne 0 ] || python3 '$T/clean.py' text '$T/etiny.txt'"
 
 # --- check: the corrected parameter overflows and is prescribed as "inf", exit 0
-# (apps/src/hertzdamp_peers.f90, peer_evaluate: p_corrected not checked for finiteness)
+# (packages/check/src/hertzdamp_peers.f90, peer_evaluate: p_corrected not checked for finiteness)
 run check lammps "hertz 2e7 0" --radius 1e-100 --radius2 1e-3 --density 2500 --velocity 1 --e 0.5
 cp "$OUT" "$T/corr.txt"
 check "check: corrected parameter beyond double precision is not printed as 'inf' (exit $RC)" \
@@ -181,13 +181,13 @@ expect_fail 2 "check --wall --radius2 (body 2 is a wall)" check yade young=1e7 p
   --density 2500 --velocity 1 --wall --radius2 1
 
 # --- calibrate --help into a full device: exit 0 with nothing written
-# (cli/hertzdamp_cmd_calibrate.f90 writes its help with an unchecked write)
+# (app/hertzdamp_cmd_calibrate.f90 writes its help with an unchecked write)
 "$BIN" calibrate --help >/dev/full 2>"$ERR"; RC=$?
 check "calibrate --help > /dev/full: exit 4 (got $RC)" test "$RC" -eq 4
 check "calibrate --help > /dev/full: one line on stderr" test "$(wc -l <"$ERR")" -eq 1
 
 # --- calibrate text output: the file name is printed raw ('# hertzdamp calibrate FILE',
-# cli/hertzdamp_cmd_calibrate.f90 write_text): a Latin-1 byte makes the output invalid
+# app/hertzdamp_cmd_calibrate.f90 write_text): a Latin-1 byte makes the output invalid
 # UTF-8, a newline breaks the comment line
 F=$T/$(printf 'caf\xe9\nx.csv')
 printf 'velocity,e\n1,0.5\n2,0.6\n' >"$F"
@@ -218,7 +218,7 @@ for law in linear tsuji kuwabara-kono; do
 done
 
 # --- check: the corrected parameter of every engine, fed back, gives the target e
-# (test/cli_check.sh does this for LAMMPS velocity); Chrono stores SetRestitution and
+# (test/cli/cli_check.sh does this for LAMMPS velocity); Chrono stores SetRestitution and
 # SetGn as floats (the deck says so), hence 1e-6 there
 M="--radius 1e-3 --density 2500 --velocity 0.7"
 feed() {  # tolerance, key-of-corrected, engine words... (with the target via --e)

@@ -6,7 +6,7 @@
 # plot is written (or refused before any work); the shipped example reproduces.
 SUITE=cli_calibrate
 source "$(dirname "$0")/cli_common.bash"
-cd "$(dirname "$0")/.."
+cd "$(dirname "$0")/../.."
 T=$(mktemp -d); trap 'rm -rf "$T" "$OUT" "$ERR"' EXIT
 
 K=3.0e9 D=2.5 M=2.0e-3

@@ -3,14 +3,14 @@
 # table are in sync, decks in each engine's syntax are read, the printed corrected
 # parameter fed back gives the target, and bad input gives one line naming the key.
 SUITE=cli_check
-cd "$(dirname "$0")/.." || exit 1
-. test/cli_common.bash
+cd "$(dirname "$0")/../.." || exit 1
+. test/cli/cli_common.bash
 TMP=$(mktemp -d); trap 'rm -rf "$TMP" "$OUT" "$ERR"' EXIT
 
 # --- the specification embedded in the program is the CSV (regenerated and compared)
-python3 tools/peers_to_f90.py data/peers/peers_spec.csv "$TMP/data.f90"
-check "apps/src/hertzdamp_peers_data.f90 is tools/peers_to_f90.py of data/peers/peers_spec.csv" \
-  cmp -s "$TMP/data.f90" apps/src/hertzdamp_peers_data.f90
+python3 gen/peers_to_f90.py data/peers/peers_spec.csv "$TMP/data.f90"
+check "packages/check/src/hertzdamp_peers_data.f90 is gen/peers_to_f90.py of data/peers/peers_spec.csv" \
+  cmp -s "$TMP/data.f90" packages/check/src/hertzdamp_peers_data.f90
 
 # --- the table in doc/peers.md is `check --table`
 run check --table

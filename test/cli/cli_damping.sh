@@ -5,8 +5,8 @@
 # law (alpha ~ u^(-1/5), u^0, u^(1/5)), invert -> forward round trips through the
 # reference integrator, and the refusals (unknown law, methods of the linear law only).
 SUITE=cli_damping
-cd "$(dirname "$0")/.."
-. test/cli_common.bash
+cd "$(dirname "$0")/../.."
+. test/cli/cli_common.bash
 
 # python3 checks on the CSV output in $OUT: the script gets the rows as dicts
 pycheck() {  # label, python body (rows: list of dicts; fail with `raise SystemExit(1)`)

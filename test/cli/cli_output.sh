@@ -6,7 +6,7 @@
 # request or on a terminal.
 SUITE=cli_output
 source "$(dirname "$0")/cli_common.bash"
-cd "$(dirname "$0")/.."
+cd "$(dirname "$0")/../.."
 T=$(mktemp -d); trap 'rm -rf "$T" "$OUT" "$ERR"' EXIT
 
 # ---------------------------------------------------------------- linear time

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Plots written safely (cli/hertzdamp_cli_plot.f90, used by `scene --plot`,
+# Plots written safely (app/hertzdamp_cli_plot.f90, used by `scene --plot`,
 # `calibrate --plot` and `bench --plot`): special files refused before any work and
 # never opened (a device node made with mknod, a FIFO under a timeout, a socket, a
 # directory), and so is the command's own input file under any name; a full disk (a
@@ -9,7 +9,7 @@
 # Tests that need mount or mknod print SKIPPED (not counted) where they cannot run.
 SUITE=cli_plot
 source "$(dirname "$0")/cli_common.bash"
-cd "$(dirname "$0")/.."
+cd "$(dirname "$0")/../.."
 command -v gnuplot >/dev/null 2>&1 || { echo "SKIPPED cli_plot: gnuplot missing"; echo "$SUITE: 0 passed, 0 failed"; exit 0; }
 T=$(mktemp -d)
 FULL=$T/full

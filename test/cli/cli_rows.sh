@@ -1,12 +1,12 @@
 #!/usr/bin/env bash
-# Per-row statuses and the exit codes they decide (cli/hertzdamp_cli_rows.f90), for every
+# Per-row statuses and the exit codes they decide (app/hertzdamp_cli_rows.f90), for every
 # status word, including `failed`, which the library's bounded integrators do not
 # produce on any input we know: a small driver program is compiled with the real CLI
 # modules and emits tables of rows of chosen kinds.  Then each status word is checked
 # once more through the program itself where an input produces it.
 SUITE=cli_rows
 source "$(dirname "$0")/cli_common.bash"
-cd "$(dirname "$0")/.."
+cd "$(dirname "$0")/../.."
 W=$(mktemp -d); trap 'rm -rf "$W" "$OUT" "$ERR"' EXIT
 cat >"$W/driver.f90" <<'F90'
 program driver
@@ -35,8 +35,8 @@ program driver
 end program driver
 F90
 if ! gfortran -std=f2018 -Wall -Werror -J "$W" -o "$W/driver" src/hertzdamp_kinds.f90 src/hertzdamp_status.f90 \
-     apps/src/hertzdamp_apps_text.f90 \
-     cli/hertzdamp_cli_text.f90 cli/hertzdamp_cli.f90 cli/hertzdamp_cli_output.f90 cli/hertzdamp_cli_rows.f90 \
+     packages/text/src/hertzdamp_apps_text.f90 \
+     app/hertzdamp_cli_text.f90 app/hertzdamp_cli.f90 app/hertzdamp_cli_output.f90 app/hertzdamp_cli_rows.f90 \
      "$W/driver.f90" >"$W/build.log" 2>&1; then
   cat "$W/build.log"; check "driver builds" false; finish; exit 1
 fi

@@ -1,13 +1,13 @@
 #!/usr/bin/env bash
 # Documentation that ships with the program: one version everywhere (fpm.toml, which
-# CMakeLists.txt reads (test/install_consumers.sh checks the installed one), CITATION.cff, the man page, `hertzdamp --version`); the man page
+# CMakeLists.txt reads (test/integration/install_consumers.sh checks the installed one), CITATION.cff, the man page, `hertzdamp --version`); the man page
 # names every command and option that the help texts name, and renders without
 # warnings; the license is MIT in LICENSE and fpm.toml; CITATION.cff is valid YAML
 # with the fields the format requires; doc/theory.md holds the sections the sources
 # cite and no file points to the internal THEORY.md any more.
 SUITE=cli_docs
-source "$(dirname "$0")/cli_common.bash"
-cd "$(dirname "$0")/.."
+source "$(dirname "$0")/../cli/cli_common.bash"
+cd "$(dirname "$0")/../.."
 
 v_fpm=$(sed -nE 's/^version *= *"([^"]+)".*/\1/p' fpm.toml)
 v_cff=$(sed -nE 's/^version: *"?([0-9.]+)"?.*/\1/p' CITATION.cff)
@@ -56,6 +56,6 @@ for s in "1. The model" "2. One parameter" "3. When does the contact end" "4. Ex
 done
 check "doc/theory.md cites Ray, Kempe & Froehlich (2015) and Kempe & Froehlich (2012)" \
   bash -c "grep -q 'Ray, T. Kempe and J. Fröhlich' doc/theory.md && grep -q 'Kempe and J. Fröhlich, \*Collision' doc/theory.md"
-left=$(git grep -n 'THEORY\.md\|\.\./shared/' -- ':!test/cli_docs.sh' 2>/dev/null)
+left=$(git grep -n 'THEORY\.md\|\.\./shared/' -- ':!test/docs/cli_docs.sh' 2>/dev/null)
 check "no file points to THEORY.md or ../shared any more${left:+: $(head -c 200 <<<"$left")}" test -z "$left"
 finish

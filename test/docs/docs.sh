@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # The API documentation builds (make docs: FORD over src/, settings in ford.md) without
 # a warning, and documents every public module of the core.
-cd "$(dirname "$0")/.."
+cd "$(dirname "$0")/../.."
 p=0; f=0
 ok() { if "$@"; then p=$((p + 1)); else f=$((f + 1)); echo "FAIL docs: $label"; fi; }
 out=$(mktemp -d); trap 'rm -rf "$out"' EXIT

@@ -3,9 +3,9 @@
 # (figures computed by the library, never typed): each between the markers
 # <!-- BEGIN damping_laws example --> and <!-- END damping_laws example -->.  The
 # marked blocks, in order, must equal the example's tables line for line, so a
-# changed, missing or stale extra row (or table) fails, as test/cli_check.sh does for
+# changed, missing or stale extra row (or table) fails, as test/cli/cli_check.sh does for
 # doc/peers.md.
-cd "$(dirname "$0")/.."
+cd "$(dirname "$0")/../.."
 fpm=${HERTZDAMP_FPM:-.venv/bin/fpm}
 p=0; f=0
 tmp=$(mktemp -d)

@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Lint: fortitude (settings in fortitude.toml) finds nothing in the Fortran sources.
-cd "$(dirname "$0")/.."
-dirs=$(for d in src cli apps peers test gen example; do [ -d $d ] && echo $d; done)
+cd "$(dirname "$0")/../.."
+dirs=$(for d in src app packages test gen example; do [ -d $d ] && echo $d; done)
 if .venv/bin/fortitude check $dirs --output-format concise >/tmp/hertzdamp-lint.$$ 2>&1; then
   echo "lint: 1 passed, 0 failed"; rm -f /tmp/hertzdamp-lint.$$
 else

@@ -6,7 +6,7 @@
 # directory (the static lines without libhertzdamp.so), and every relative link in
 # README.md and doc/*.md resolves to a file (and, for a #fragment into a markdown file,
 # to one of its headings).
-cd "$(dirname "$0")/.."
+cd "$(dirname "$0")/../.."
 root=$PWD
 fpm=${HERTZDAMP_FPM:-.venv/bin/fpm}
 p=0; f=0

@@ -2,9 +2,9 @@
 # The series tables are reproducible and in sync:
 #  1. rerunning the generator reproduces data/series_coefficients.csv and
 #     data/pade_coefficients.csv within the accuracy stated in their *_err columns;
-#  2. the Fortran sources are exactly what tools/csv_to_f90.py makes of the CSVs.
+#  2. the Fortran sources are exactly what gen/csv_to_f90.py makes of the CSVs.
 SUITE=sync_series
-cd "$(dirname "$0")/.."
+cd "$(dirname "$0")/../.."
 PASSED=0; FAILED=0
 check() { local l=$1; shift; if "$@"; then PASSED=$((PASSED+1)); else FAILED=$((FAILED+1)); echo "FAIL $SUITE: $l"; fi; }
 tmp=$(mktemp -d); trap 'rm -rf "$tmp"' EXIT
@@ -42,8 +42,8 @@ for ra, rb in zip(a[1:], b[1:]):
         assert abs(fx - fy) <= 1e-13 * max(1.0, abs(fy)), (x, y)
 PY
 # run the converter exactly as `make series-source` does, in a copy of the tree
-mkdir -p "$tmp/tree/src" "$tmp/tree/tools" "$tmp/tree/data"
-cp tools/csv_to_f90.py "$tmp/tree/tools/"; cp data/series_coefficients.csv data/pade_coefficients.csv "$tmp/tree/data/"
+mkdir -p "$tmp/tree/src" "$tmp/tree/gen" "$tmp/tree/data"
+cp gen/csv_to_f90.py "$tmp/tree/gen/"; cp data/series_coefficients.csv data/pade_coefficients.csv "$tmp/tree/data/"
 (cd "$tmp/tree" && make -s -f "$OLDPWD/Makefile" series-source >/dev/null)
 check "src/hertzdamp_series_data.f90 is generated from the CSV" diff -q "$tmp/tree/src/hertzdamp_series_data.f90" src/hertzdamp_series_data.f90
 check "src/hertzdamp_pade_data.f90 is generated from the CSV" diff -q "$tmp/tree/src/hertzdamp_pade_data.f90" src/hertzdamp_pade_data.f90

@@ -7,7 +7,7 @@
 # the e that `check` predicts to 3e-4 (LAMMPS's own first-order time-step error; seen:
 # below 6e-5).  The current-release prediction for tsuji must differ (the test tells the
 # formulas apart).  Needs the Debian package lammps (`make lammps` installs it).
-cd "$(dirname "$0")/.." || exit 1
+cd "$(dirname "$0")/../.." || exit 1
 BIN=${HERTZDAMP_BIN:?set HERTZDAMP_BIN}
 LMP=$(command -v lmp || true)
 if [ -z "$LMP" ]; then

@@ -11,7 +11,7 @@
 # procedure.  A fixture with the pattern that caused it first shows that the check
 # sees such calls with this compiler.
 set -u
-cd "$(dirname "$0")/.."
+cd "$(dirname "$0")/../.."
 passed=0; failed=0
 check() {  # label, condition status (0 = pass)
   if [ "$2" -eq 0 ]; then passed=$((passed + 1)); else failed=$((failed + 1)); echo "FAIL fpenv_symbols: $1"; fi

@@ -1,4 +1,4 @@
-!> Tests of the calibration fit (apps: hertzdamp_calibrate, hertzdamp_calibrate_maps).
+!> Tests of the calibration fit (packages/calibrate: hertzdamp_calibrate, hertzdamp_calibrate_maps).
 !>
 !> - derivatives of the forward maps against central differences of the core fit and
 !>   of the reference integrator;

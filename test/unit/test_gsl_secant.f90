@@ -1,4 +1,4 @@
-!> The GSL iterative peer (peers/gsl/src/hertzdamp_gsl_secant.f90): its rk8pd solve with
+!> The GSL iterative peer (packages/reference/src/hertzdamp_gsl_secant.f90): its rk8pd solve with
 !> Hermite event location agrees with the reference integrator, and the secant over
 !> it meets the accuracy asked of alpha (against the fit, 1e-13) for both ends.
 program test_gsl_secant

@@ -5,7 +5,7 @@
 !> exactly as a Fortran 77 caller sees them (double precision and default integer
 !> by reference, a character argument of any length).  The truly implicit calls from
 !> fixed-form code are exercised by example/legacy_dem, built and run by
-!> test/cli_install.sh.
+!> test/integration/install_consumers.sh.
 program test_legacy
     use hertzdamp, only: hertzdamp_rk, mod_invert => hertzdamp_invert, hertzdamp_forward_dim, hertzdamp_invert_alpha, &
                          mod_message => hertzdamp_message, HD_OK, HD_NO_REBOUND, HD_BAD_RESTITUTION, &

@@ -12,7 +12,7 @@
 !> value of the engine's parameter that gives a target e (`peer_evaluate`).
 !>
 !> The law q and the contact end of a row are read from the specification, never
-!> restated here; the test test/test_peers.f90 checks every COEF_* formula against the
+!> restated here; the test test/unit/test_peers.f90 checks every COEF_* formula against the
 !> row's `alpha_expr`, evaluated by an independent expression evaluator.
 !>
 !> The numbers come from the library: its fitted maps of every law and contact end,
@@ -158,7 +158,7 @@ contains
 
     !> The formula (COEF_*) of a specification row: how the engine's damping parameter
     !> gives gamma or d.  This table and peer_damping implement the rows' alpha_expr;
-    !> test/test_peers.f90 checks them against it.  0 for an unknown row.
+    !> test/unit/test_peers.f90 checks them against it.  0 for an unknown row.
     pure integer function peer_row_coef(row) result(coef)
         integer, intent(in) :: row   !! row of the specification
         select case (peer_spec_field(row, 'id'))

@@ -1,16 +1,21 @@
 !> Thread safety: the library holds no mutable state, so an OpenMP-parallel loop
-!> gives bit-identical results to the serial loop.
+!> gives bit-identical results to the serial loop.  The parallel loops ask for
+!> n_team threads and the test fails unless more than one thread ran them: built
+!> without -fopenmp (the `!$` lines vanish) or limited to one thread, it proves nothing.
 program test_threads
     use hertzdamp
     use hertzdamp_testing, only: test_suite, new_suite
     use, intrinsic :: iso_fortran_env, only: int64
+    !$ use omp_lib, only: omp_get_thread_num, omp_get_num_threads
     implicit none
     integer, parameter :: wp = hertzdamp_rk
     integer, parameter :: n_rk45 = 1000
+    !> Threads asked of each parallel loop (more than this machine's cores is fine).
+    integer, parameter :: n_team = 4
     type(test_suite) :: s
     real(wp), allocatable :: alpha(:)
     type(hertzdamp_collision), allocatable :: serial(:), parallel(:)
-    integer :: i
+    integer :: i, team
 
     s = new_suite('test_threads')
     allocate (alpha(n_rk45), serial(n_rk45), parallel(n_rk45))
@@ -20,11 +25,15 @@ program test_threads
     do i = 1, n_rk45
         serial(i) = hertzdamp_rk45_collide(alpha(i), tol=1.0e-10_wp)
     end do
-    !$omp parallel do schedule(dynamic, 7)
+    team = 1
+    !$omp parallel do schedule(dynamic, 7) num_threads(n_team) shared(team)
     do i = 1, n_rk45
         parallel(i) = hertzdamp_rk45_collide(alpha(i), tol=1.0e-10_wp)
+        !$ if (i == 1) team = omp_get_num_threads()
     end do
     !$omp end parallel do
+    call s%check(team > 1, 'rk45: the parallel loop ran in a team of more than one thread (got ' // &
+                 achar(48 + min(team, 9)) // '; built with -fopenmp?)')
     call s%check(all(serial%status == parallel%status), 'rk45: same statuses serial and parallel')
     call s%check(all(bits(serial%e) == bits(parallel%e)), 'rk45: bit-identical e')
     call s%check(all(bits(serial%tau_c) == bits(parallel%tau_c)), 'rk45: bit-identical tau_c')
@@ -40,9 +49,9 @@ contains
     subroutine inversions()
         integer, parameter :: n = 100000
         real(wp), allocatable :: e(:), tc(:), m(:), u(:), k1(:), d1(:), k2(:), d2(:), r(:, :)
-        integer, allocatable :: s1(:), s2(:)
+        integer, allocatable :: s1(:), s2(:), tid(:)
         integer :: j
-        allocate (e(n), tc(n), m(n), u(n), k1(n), d1(n), k2(n), d2(n), s1(n), s2(n), r(n, 4))
+        allocate (e(n), tc(n), m(n), u(n), k1(n), d1(n), k2(n), d2(n), s1(n), s2(n), r(n, 4), tid(n))
         call random_number(r)
         e = 10.0_wp**(-3 * r(:, 1))
         tc = 10.0_wp**(-9 + 8 * r(:, 2))
@@ -51,11 +60,15 @@ contains
         do j = 1, n
             call hertzdamp_invert(e(j), tc(j), m(j), u(j), HD_END_OVERLAP, k1(j), d1(j), s1(j))
         end do
-        !$omp parallel do schedule(static, 97)
+        tid = 0
+        !$omp parallel do schedule(static, 97) num_threads(n_team)
         do j = 1, n
             call hertzdamp_invert(e(j), tc(j), m(j), u(j), HD_END_OVERLAP, k2(j), d2(j), s2(j))
+            !$ tid(j) = omp_get_thread_num()
         end do
         !$omp end parallel do
+        ! static chunks of 97 over 10^5 contacts: every thread of the team computes some
+        call s%check(minval(tid) == 0 .and. maxval(tid) > 0, 'inverse: contacts computed by more than one thread')
         call s%check(all(s1 == HD_OK) .and. all(s1 == s2), 'inverse: statuses ok and equal')
         call s%check(all(bits(k1) == bits(k2)) .and. all(bits(d1) == bits(d2)), 'inverse: bit-identical k and d')
         ! and the elemental array call agrees too

@@ -118,7 +118,10 @@ contains
         call order(lab, nn(4:7), ee(4:7), et(4:7), 0.25_wp)
         ! stronger damping, every pair at e = 0.5 (within the bound) and e = 0.3 (the
         ! overlap end reaches 3.2/N^2 at N = 10 and 20 for every law: the bound fails
-        ! there, as the README says; asserted from N = 40 on)
+        ! there, as the README says; asserted from N = 40 on).  At N = 10 and 20 instead:
+        ! the report is honest (a run passes exactly when its error is within the bound,
+        ! see phases) and the errors converge, at least at order 2 - 0.6 from N = 10 to 40
+        ! (second-order Verlet; not yet asymptotic there, measured 1.8 to 3.1, faster is fine)
         call load('data/scenes/binary.nml', sc)
         sc%iend = iend
         sc%law = law
@@ -132,6 +135,9 @@ contains
             call phases(sc, 40, method, trim(lab), .true., ee(3), et(3))
             write (output_unit, '(2a,2(a,3f7.3))') trim(lab), ', N = 10, 20, 40', &
                 ': err N^2 in e', ee(1:3) * nn(1:3)**2, ', in T_c', et(1:3) * nn(1:3)**2
+            if (k == 2) call s%check(log(ee(1) / ee(3)) / log(4.0_wp) >= 1.4_wp .and. &
+                                     log(et(1) / et(3)) / log(4.0_wp) >= 1.4_wp, trim(lab) // &
+                                     ', N = 10 to 40: the e and T_c errors fall at least as N^-1.4')
         end do
     end subroutine binary_convergence
 
@@ -197,11 +203,21 @@ contains
                 call s%check(rows(ie)%outcome == HD_CHECK_PASS .and. rows(it)%outcome == HD_CHECK_PASS, &
                              trim(l2) // ': e and T_c within the report''s bound accuracy + 2/N^2')
                 call s%check(nfail == 0, trim(l2) // ': every check of the report passes')
+            else
+                ! beyond the bound is allowed here, but the report must say so
+                call s%check(honest(rows(ie)) .and. honest(rows(it)), trim(l2) // ': the report''s e and T_c ' // &
+                             'rows pass exactly when the error is within the bound, and fail otherwise')
             end if
             ee = max(ee, rows(ie)%value)
             et = max(et, rows(it)%value)
         end do
     end subroutine phases
+
+    !> A report row with a bound whose outcome is pass exactly when its value is within it.
+    logical function honest(r)
+        type(hertzdamp_dem_check_row), intent(in) :: r
+        honest = r%has_bound .and. (r%outcome == merge(HD_CHECK_PASS, HD_CHECK_FAIL, r%value <= r%bound))
+    end function honest
 
     !> Impacts slower than the speed floor (rest_speed) get k and d from the rule at
     !> u_rule = rest_speed, so their alpha at the real impact speed u_in is the law's:

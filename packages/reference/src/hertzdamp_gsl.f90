@@ -115,15 +115,9 @@ contains
         integer, intent(in), optional :: law   !! damping law: 0 linear (default), 1 tsuji, 2 kuwabara-kono
 
         type(solver_ctx), target :: ctx
-        real(wp) :: atol_
-        type(c_funptr) :: old_handler
-        type(c_ptr) :: steptype
-        real(c_double) :: t, h, y(2), ta, ya(2), tr, yr(2)
-        real(c_double), parameter :: t_far = 1.0e30_c_double
-        real(wp) :: tau0, q
-        integer :: phase, kind_end, law_
-        integer(c_int) :: rc
-        logical :: ok
+        real(wp) :: q
+        real(c_double) :: t, h, y(2)
+        integer :: kind_end, law_
 
         e = 0.0_wp
         tau_c = 0.0_wp
@@ -131,29 +125,67 @@ contains
         tau_max = 0.0_wp
         rhs_evals = 0
         steps = 0
-        status = HD_BAD_ARGUMENT
+        call check_input(alpha, iend, tol, method, law, law_, status)
+        if (status /= HD_OK) return
+        q = 0.25_wp * law_
+        call open_solver(ctx, alpha, q, method, tol, atol, status)
+        if (status /= HD_OK) return
+        if (iend == HD_END_OVERLAP) then
+            kind_end = ev_overlap
+        else
+            kind_end = ev_force
+        end if
+        call start(alpha, law_, q, t, h, y)
+        call march_to_turn(ctx, iend, t, h, y, steps, z_max, tau_max, status)
+        if (status == HD_OK) call march_to_end(ctx, iend, kind_end, t, h, y, steps, e, tau_c, status)
+        call settle(status, e, tau_c, z_max, tau_max)
+        rhs_evals = int(min(ctx%par%nevals, int(huge(rhs_evals), c_long)))
+        call free_ctx(ctx)
+    end subroutine hertzdamp_gsl_collide
 
+    ! ---------------------------------------------------------------- phases of a solve
+
+    !> The arguments of hertzdamp_gsl_collide checked: status HD_OK, HD_BAD_ARGUMENT or
+    !> HD_BAD_LAW; law_ is the law (0 when absent).
+    subroutine check_input(alpha, iend, tol, method, law, law_, status)
+        real(wp), intent(in) :: alpha, tol
+        integer, intent(in) :: iend, method
+        integer, intent(in), optional :: law
+        integer, intent(out) :: law_, status
+        law_ = 0
+        status = HD_BAD_ARGUMENT
         if (.not. ieee_is_finite(alpha) .or. ieee_is_nan(tol)) return
         if (.not. (tol > 0.0_wp .and. tol < 1.0_wp)) return
         if (iend /= HD_END_OVERLAP .and. iend /= HD_END_FORCE) return
         if (iend == HD_END_FORCE .and. alpha < 0.0_wp) return
         if (method /= HERTZDAMP_GSL_RKF45 .and. method /= HERTZDAMP_GSL_RK8PD) return
         if (abs(alpha) > 1.0e8_wp) return
-        law_ = 0
         if (present(law)) law_ = law
         if (law_ < 0 .or. law_ > 2) then
             status = HD_BAD_LAW
             return
         end if
-        q = 0.25_wp * law_
+        status = HD_OK
+    end subroutine check_input
 
+    !> GSL's error handler off, the stepper, control (absolute tolerance atol if present,
+    !> else tol; relative tol) and evolve objects of one solve, and its system.  Status
+    !> HD_OK, or HD_NO_CONVERGENCE with nothing left allocated.
+    subroutine open_solver(ctx, alpha, q, method, tol, atol, status)
+        type(solver_ctx), target, intent(inout) :: ctx
+        real(wp), intent(in) :: alpha, q, tol
+        integer, intent(in) :: method
+        real(wp), intent(in), optional :: atol
+        integer, intent(out) :: status
+        type(c_funptr) :: old_handler
+        type(c_ptr) :: steptype
+        real(wp) :: atol_
         old_handler = gsl_set_error_handler_off()
         if (method == HERTZDAMP_GSL_RKF45) then
             steptype = gsl_odeiv2_step_rkf45
         else
             steptype = gsl_odeiv2_step_rk8pd
         end if
-
         status = HD_NO_CONVERGENCE
         if (.not. c_associated(steptype)) return
         ctx%alpha = alpha
@@ -175,74 +207,117 @@ contains
             call free_ctx(ctx)
             return
         end if
+        status = HD_OK
+    end subroutine open_solver
 
-        if (iend == HD_END_OVERLAP) then
-            kind_end = ev_overlap
-        else
-            kind_end = ev_force
-        end if
-
-        ! Start from the local series at tau0 (alpha tau0^{1+q} <= 0.05).
+    !> The start of the march: the local series at tau0 (alpha tau0^{1+q} <= 0.05), and
+    !> the first step size.
+    subroutine start(alpha, law, q, t, h, y)
+        real(wp), intent(in) :: alpha, q
+        integer, intent(in) :: law
+        real(c_double), intent(out) :: t, h, y(2)
+        real(wp) :: tau0
         tau0 = 0.05_wp / max(1.0_wp, abs(alpha))**(1.0_wp / (1.0_wp + q))
-        call series_start(alpha, law_, tau0, y(1), y(2))
+        call series_start(alpha, law, tau0, y(1), y(2))
         t = tau0
         h = 0.1_wp * tau0
-        phase = 1
+    end subroutine start
 
-        march: do
-            if (steps >= max_steps) then
-                status = HD_MAX_STEPS
-                exit march
-            end if
-            ta = t
-            ya = y
-            rc = gsl_odeiv2_evolve_apply(ctx%evolve, ctx%control, ctx%step, ctx%sys, &
-                t, t_far, h, y)
-            if (rc /= gsl_success .or. .not. all(ieee_is_finite(y))) then
-                status = HD_NO_CONVERGENCE
-                exit march
-            end if
-            steps = steps + 1
+    !> One accepted step of the march from (t, y), which it keeps in (ta, ya).  Status
+    !> HD_OK, HD_MAX_STEPS (max_steps taken already) or HD_NO_CONVERGENCE.
+    subroutine advance(ctx, t, h, y, ta, ya, steps, status)
+        type(solver_ctx), intent(inout) :: ctx
+        real(c_double), intent(inout) :: t, h, y(2)
+        real(c_double), intent(out) :: ta, ya(2)
+        integer, intent(inout) :: steps
+        integer, intent(out) :: status
+        real(c_double), parameter :: t_far = 1.0e30_c_double
+        integer(c_int) :: rc
+        ta = t
+        ya = y
+        if (steps >= max_steps) then
+            status = HD_MAX_STEPS
+            return
+        end if
+        rc = gsl_odeiv2_evolve_apply(ctx%evolve, ctx%control, ctx%step, ctx%sys, &
+            t, t_far, h, y)
+        if (rc /= gsl_success .or. .not. all(ieee_is_finite(y))) then
+            status = HD_NO_CONVERGENCE
+            return
+        end if
+        steps = steps + 1
+        status = HD_OK
+    end subroutine advance
 
-            if (phase == 1) then
-                if (event_g(ev_turn, alpha, q, y) <= 0.0_wp) then
-                    call locate(ctx, ev_turn, ta, ya, t, y, tr, yr, ok)
-                    if (.not. ok) then
-                        status = HD_NO_CONVERGENCE
-                        exit march
-                    end if
-                    tau_max = tr
-                    z_max = yr(1)
-                    ! Restart the march from the turning point.
-                    t = tr
-                    y = yr
-                    rc = gsl_odeiv2_evolve_reset(ctx%evolve)
-                    phase = 2
-                    if (no_rebound(iend, alpha, q, y)) then
-                        status = HD_NO_REBOUND
-                        exit march
-                    end if
-                end if
-                cycle march
-            end if
+    !> Phase 1: march to the turning point (z' = 0) and restart from it.  Status HD_OK
+    !> (go on to the end), HD_NO_REBOUND, or a failure of advance or locate.
+    subroutine march_to_turn(ctx, iend, t, h, y, steps, z_max, tau_max, status)
+        type(solver_ctx), intent(inout) :: ctx
+        integer, intent(in) :: iend
+        real(c_double), intent(inout) :: t, h, y(2)
+        integer, intent(inout) :: steps
+        real(wp), intent(out) :: z_max, tau_max
+        integer, intent(out) :: status
+        real(c_double) :: ta, ya(2), tr, yr(2)
+        integer(c_int) :: rc
+        logical :: ok
+        z_max = 0.0_wp
+        tau_max = 0.0_wp
+        do
+            call advance(ctx, t, h, y, ta, ya, steps, status)
+            if (status /= HD_OK) return
+            if (event_g(ev_turn, ctx%alpha, ctx%q, y) <= 0.0_wp) exit
+        end do
+        call locate(ctx, ev_turn, ta, ya, t, y, tr, yr, ok)
+        if (.not. ok) then
+            status = HD_NO_CONVERGENCE
+            return
+        end if
+        tau_max = tr
+        z_max = yr(1)
+        ! Restart the march from the turning point.
+        t = tr
+        y = yr
+        rc = gsl_odeiv2_evolve_reset(ctx%evolve)
+        if (no_rebound(iend, ctx%alpha, ctx%q, y)) status = HD_NO_REBOUND
+    end subroutine march_to_turn
 
-            if (event_g(kind_end, alpha, q, y) <= 0.0_wp) then
-                call locate(ctx, kind_end, ta, ya, t, y, tr, yr, ok)
-                if (.not. ok) then
-                    status = HD_NO_CONVERGENCE
-                    exit march
-                end if
-                tau_c = tr
-                e = -yr(2)
-                status = HD_OK
-                exit march
-            end if
-            if (no_rebound(iend, alpha, q, y)) then
+    !> Phase 2: march from the turning point to the contact end kind_end (e = -z' there).
+    !> Status HD_OK, HD_NO_REBOUND, or a failure of advance or locate.
+    subroutine march_to_end(ctx, iend, kind_end, t, h, y, steps, e, tau_c, status)
+        type(solver_ctx), intent(inout) :: ctx
+        integer, intent(in) :: iend, kind_end
+        real(c_double), intent(inout) :: t, h, y(2)
+        integer, intent(inout) :: steps
+        real(wp), intent(out) :: e, tau_c
+        integer, intent(out) :: status
+        real(c_double) :: ta, ya(2), tr, yr(2)
+        logical :: ok
+        e = 0.0_wp
+        tau_c = 0.0_wp
+        do
+            call advance(ctx, t, h, y, ta, ya, steps, status)
+            if (status /= HD_OK) return
+            if (event_g(kind_end, ctx%alpha, ctx%q, y) <= 0.0_wp) exit
+            if (no_rebound(iend, ctx%alpha, ctx%q, y)) then
                 status = HD_NO_REBOUND
-                exit march
+                return
             end if
-        end do march
+        end do
+        call locate(ctx, kind_end, ta, ya, t, y, tr, yr, ok)
+        if (.not. ok) then
+            status = HD_NO_CONVERGENCE
+            return
+        end if
+        tau_c = tr
+        e = -yr(2)
+    end subroutine march_to_end
 
+    !> The outputs of a solve that did not end with status HD_OK: e = 0, tau_c = +Inf
+    !> (no rebound) or 0; z_max and tau_max 0 unless finite.
+    subroutine settle(status, e, tau_c, z_max, tau_max)
+        integer, intent(in) :: status
+        real(wp), intent(inout) :: e, tau_c, z_max, tau_max
         if (status == HD_NO_REBOUND) then
             e = 0.0_wp
             tau_c = ieee_value(1.0_wp, ieee_positive_inf)
@@ -254,9 +329,7 @@ contains
             z_max = 0.0_wp
             tau_max = 0.0_wp
         end if
-        rhs_evals = int(min(ctx%par%nevals, int(huge(rhs_evals), c_long)))
-        call free_ctx(ctx)
-    end subroutine hertzdamp_gsl_collide
+    end subroutine settle
 
     ! ---------------------------------------------------------------- internals
 

@@ -58,4 +58,10 @@ check "doc/theory.md cites Ray, Kempe & Froehlich (2015) and Kempe & Froehlich (
   bash -c "grep -q 'Ray, T. Kempe and J. Fröhlich' doc/theory.md && grep -q 'Kempe and J. Fröhlich, \*Collision' doc/theory.md"
 left=$(git grep -n 'THEORY\.md\|\.\./shared/' -- ':!test/docs/cli_docs.sh' 2>/dev/null)
 check "no file points to THEORY.md or ../shared any more${left:+: $(head -c 200 <<<"$left")}" test -z "$left"
+# the layout of issue 22: the old directories are gone and no file names a path in them
+# (tools/calibrate_example.py stays in tools/; integrations/lammps/tools/ is the plugin's)
+for d in cli apps peers; do check "no directory $d/ any more" test ! -e "$d"; done
+left=$(git grep -nE '(^|[^a-z/_.-])(cli|apps)/[a-zA-Z_*]|peers/gsl|(^|[^/])tools/[a-z_]+_to_f90\.py|tools/compact_table|(^|[^a-z])test/[a-z_]+\.(f90|py|bash|in)|(^|[^a-z])test/[a-z_]+\.sh' \
+       -- ':!test/docs/cli_docs.sh' 2>/dev/null | grep -v 'test/run_tests\.sh')
+check "no file names a path of the old layout${left:+: $(head -c 300 <<<"$left")}" test -z "$left"
 finish

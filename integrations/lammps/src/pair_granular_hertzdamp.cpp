@@ -371,7 +371,11 @@ void PairGranularHertzdamp::history_to_atoms(FixHertzdampHistory *fix)
              " contacts lost (atoms changed between runs); they restart as new contacts");
 
   if (newton_pair) {
+#if HERTZDAMP_LAMMPS_NUM < 20220000
     comm->reverse_comm_fix_variable(fix);
+#else
+    comm->reverse_comm_variable(fix);
+#endif
     for (int i = nlocal; i < nall && i < static_cast<int>(fix->rec.size()); i++) fix->rec[i].clear();
   }
   clear_contacts();

@@ -21,6 +21,8 @@ sys.dont_write_bytecode = True
 
 import hdlmp
 
+NAME = "lammps_parallel"
+
 
 def stats_line(path):
     with open(path) as f:
@@ -33,7 +35,13 @@ def sorted_rows(path):
 
 
 def main():
-    c = hdlmp.Checks("lammps_parallel")
+    c = hdlmp.Checks(NAME)
+    for _ in hdlmp.each_flavor():
+        run(c)
+    c.finish()
+
+
+def run(c):
     api = hdlmp.CApi()
     tmp = tempfile.mkdtemp(prefix="hd_lmp_par_")
     atexit.register(shutil.rmtree, tmp, True)
@@ -110,7 +118,6 @@ def main():
                     "%s %s" % ([owner.get((on, a)) for a in (1, 2)], [owner.get((off, a)) for a in (1, 2)]))
             print("%s: e %.12f T_c %.6e (at rest %.12f %.6e), carried %s" %
                   (tag, r["e"], r["tc"], rest["e"], rest["tc"], res[14]))
-    c.finish()
 
 
 if __name__ == "__main__":

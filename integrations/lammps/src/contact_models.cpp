@@ -1,0 +1,2 @@
+/* placeholder */
+#include "contact_models.h"

@@ -11,7 +11,7 @@ BUILD = os.path.join(ROOT, "build", "lammps")
 LOAD = os.path.join(BUILD, "load.lmp")
 EXAMPLES = os.path.join(ROOT, "integrations", "lammps", "examples")
 LOG_COLS = ["t_on", "tag_i", "tag_j", "m", "u_in", "u_used", "k", "d", "bounded", "tc",
-            "u_out", "e", "t_end"]
+            "u_out", "e", "t_end", "isolated"]
 
 
 # the two LAMMPS versions every test runs on (integrations/lammps/Makefile): Debian's lmp

@@ -218,13 +218,8 @@ void FixHertzdampWall::contact(int i, int side, double ov, int setup)
   const double tor[3] = {n[1] * fs[2] - n[2] * fs[1], n[2] * fs[0] - n[0] * fs[2], n[0] * fs[1] - n[1] * fs[0]};
   const double troll[3] = {radi * (n[1] * fr[2] - n[2] * fr[1]), radi * (n[2] * fr[0] - n[0] * fr[2]),
                            radi * (n[0] * fr[1] - n[1] * fr[0])};
-  // lever arm of the tangential force: LAMMPS 2021's fix wall/gran takes the distance to
-  // the contact point, later versions the radius
-#if HERTZDAMP_LAMMPS_NUM < 20230000
-  const double arm = radi - 0.5 * ov;
-#else
+  // lever arm of the tangential force: the radius (as fix wall/gran)
   const double arm = radi;
-#endif
   for (int k = 0; k < 3; k++) torque[i][k] += -arm * tor[k] + troll[k] + p[P_MT] * n[k];
 }
 

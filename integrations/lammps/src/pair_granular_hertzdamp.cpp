@@ -664,7 +664,16 @@ void PairGranularHertzdamp::history_to_atoms(FixHertzdampHistory *fix, bool keep
         }
         const double *p = &pool[static_cast<size_t>(c) * NPAYLOAD];
         fix->add_record(i, static_cast<double>(tag[j]), p);
-        if (newton_pair || j < nlocal) fix->add_record(j, static_cast<double>(tag[i]), p);
+        if (newton_pair || j < nlocal) {
+          // j's copy seen from j: the friction history and the tangential force change
+          // sign, as pair_style granular transfers its history (also the rolling and
+          // twisting history, though their rates do not change sign with the order)
+          double q[NPAYLOAD];
+          std::memcpy(q, p, sizeof(q));
+          for (int k = P_HIST; k < P_HIST + 7; k++) q[k] = -q[k];
+          for (int k = P_FS; k < P_FS + 3; k++) q[k] = -q[k];
+          fix->add_record(j, static_cast<double>(tag[i]), q);
+        }
       }
     }
   } else if (active_contacts() > 0) {

@@ -231,7 +231,10 @@ void ContactBook::finish(const double *p, double tag_a, double tag_b, double ten
   n_end += 1;
   const double e = p[P_UIN] > 0.0 ? u_out / p[P_UIN] : 0.0;
   const int flags = static_cast<int>(p[P_FLAGS]);
-  const bool isolated = !(flags & FLAG_NOT_ISOLATED) && std::isfinite(e);
+  // a collision of its own: no other contact meanwhile, and an impact speed the rule saw
+  // (not raised to vmin: a resting or grazing contact has no restitution coefficient)
+  const bool isolated = !(flags & FLAG_NOT_ISOLATED) && std::isfinite(e) && p[P_UIN] > 0.0 &&
+      p[P_UIN] >= p[P_UUSED];
   if (isolated) {
     n_iso += 1;
     e_sum += e;
@@ -366,7 +369,7 @@ void ContactBook::summary(LAMMPS *lmp, const char *who)
     if (v[13] > 0)
       s += ": mean " + fmt_g(v[14]) + ", spread " + fmt_g(v[15]) + ", " + fmt_g(v[9]) + " .. " +
            fmt_g(v[10]);
-    s += " (" + fmt_g(v[16]) + " contacts with other contacts at the same time left out)";
+    s += " (" + fmt_g(v[16]) + " contacts left out: other contacts at the same time, or impact speed below vmin)";
   }
   logmesg(lmp, s + "\n");
 }

@@ -198,8 +198,9 @@ inline double payload_force(double *p, double ov, double u, double step, bool fo
 
 // Statistics and log of contacts; one per pair style / wall fix.  The restitution
 // statistics (e min, max, mean, spread) are taken over isolated binary collisions only:
-// contacts during which neither body touched anything else (flag FLAG_NOT_ISOLATED
-// unset) and whose e is finite.  Resting contacts and contacts inside clusters have no
+// contacts during which neither body touched anything else through granular/hertzdamp
+// or fix hertzdamp/wall (flag FLAG_NOT_ISOLATED unset), whose impact speed was not raised
+// to vmin, and whose e is finite.  Resting contacts and contacts inside clusters have no
 // restitution coefficient of their own.
 class ContactBook {
  public:

@@ -475,11 +475,14 @@ void PairGranularHertzdamp::compute(int eflag, int vflag)
 void PairGranularHertzdamp::mark_isolation()
 {
   if (force->newton_pair) HD_REVERSE_COMM_PAIR(this);
-  // wall contacts (fix hertzdamp/wall) of local atoms
+  // pair contacts of the local atoms (for the walls), then with the wall contacts
+  // (fix hertzdamp/wall) of the step before, to every ghost atom
+  const int nlocal = atom->nlocal;
+  npair.assign(ncontact.begin(), ncontact.begin() + nlocal);
   for (int k = 0; k < modify->nfix; k++) {
     const auto *wall = dynamic_cast<const FixHertzdampWall *>(modify->fix[k]);
     if (!wall) continue;
-    for (int i = 0; i < atom->nlocal; i++) ncontact[i] += wall->active_contacts(i);
+    for (int i = 0; i < nlocal; i++) ncontact[i] += wall->active_contacts(i);
   }
   HD_FORWARD_COMM_PAIR(this);
   for (size_t t = 0; t < touching.size(); t += 3) {

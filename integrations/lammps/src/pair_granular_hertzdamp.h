@@ -42,9 +42,8 @@ class PairGranularHertzdamp : public LAMMPS_NS::Pair {
   void history_from_atoms(FixHertzdampHistory *fix);             // after the list is rebuilt (post_neighbor)
   void end_of_run(FixHertzdampHistory *fix);
 
-  // contacts of atom i (local) in this step's force computation: pair contacts, plus
-  // 1 if it touched a hertzdamp wall in the step before (for the isolation flag)
-  double contacts_of(int i) const { return i < static_cast<int>(ncontact.size()) ? ncontact[i] : 0.0; }
+  // pair contacts of local atom i in this step's force computation (isolation flag of walls)
+  double contacts_of(int i) const { return i < static_cast<int>(npair.size()) ? npair[i] : 0.0; }
 
   ContactBook book;
   RuleSettings rule;
@@ -79,6 +78,7 @@ class PairGranularHertzdamp : public LAMMPS_NS::Pair {
 
   // isolation of contacts: contacts per atom (local + ghost) and this step's contacts
   std::vector<double> ncontact;
+  std::vector<double> npair;      // pair contacts of the local atoms
   std::vector<int> touching;      // (contact, i, j) triples of this step
 
   FixHertzdampHistory *fix_history = nullptr;

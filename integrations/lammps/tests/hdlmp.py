@@ -37,7 +37,7 @@ def lmp_exe(flavor):
 
 
 def lmp(infile, variables, cwd, np=1, check=True, flavor=None):
-    """Run lmp of `flavor` on infile with -var NAME VALUE; return its screen output."""
+    """Run lmp of `flavor` (default: the current one) on infile with -var NAME VALUE; return its screen output."""
     flavor = flavor or CURRENT[0]
     cmd = []
     if np > 1:

@@ -1,12 +1,5 @@
 #!/usr/bin/env bash
-# LAMMPS plugin test (integrations/lammps/tests/test_friction.py): friction against stock
-# pair_style granular, rolling, spin, restart; on both LAMMPS versions.  Builds what it
-# needs with `make lammps`.
-set -u
-cd "$(dirname "$0")/.."
-if ! make --no-print-directory -s lammps >/tmp/hertzdamp_lammps_build.$$ 2>&1; then
-  tail -n 30 /tmp/hertzdamp_lammps_build.$$; rm -f /tmp/hertzdamp_lammps_build.$$
-  echo "lammps_friction: 0 passed, 1 failed"; exit 1
-fi
-rm -f /tmp/hertzdamp_lammps_build.$$
-exec python3 integrations/lammps/tests/test_friction.py
+# LAMMPS plugin test (integrations/lammps/tests/test_friction.py), on both LAMMPS versions:
+# friction against stock pair_style granular, rolling, spin, restart.
+source "$(dirname "$0")/lammps_common.bash"
+run_lammps_test friction

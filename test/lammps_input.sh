@@ -1,12 +1,5 @@
 #!/usr/bin/env bash
-# LAMMPS plugin test (integrations/lammps/tests/test_input.py): bad input stops LAMMPS
-# with an error naming the keyword, on both LAMMPS versions.  Builds what it
-# needs with `make lammps`.
-set -u
-cd "$(dirname "$0")/.."
-if ! make --no-print-directory -s lammps >/tmp/hertzdamp_lammps_build.$$ 2>&1; then
-  tail -n 30 /tmp/hertzdamp_lammps_build.$$; rm -f /tmp/hertzdamp_lammps_build.$$
-  echo "lammps_input: 0 passed, 1 failed"; exit 1
-fi
-rm -f /tmp/hertzdamp_lammps_build.$$
-exec python3 integrations/lammps/tests/test_input.py
+# LAMMPS plugin test (integrations/lammps/tests/test_input.py), on both LAMMPS versions:
+# bad input stops LAMMPS with an error naming the keyword.
+source "$(dirname "$0")/lammps_common.bash"
+run_lammps_test input

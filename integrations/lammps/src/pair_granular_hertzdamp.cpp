@@ -348,18 +348,7 @@ void PairGranularHertzdamp::compute(int eflag, int vflag)
           // separation speed once the kick f_end (applied now) is complete
           book.finish(p, ta, tb, ce.tend, u_out + f_end * dt / p[P_M], dt);
         }
-        if (f_end != 0.0) {
-          const double fpair = f_end * rinv;
-          f[i][0] += delx * fpair;
-          f[i][1] += dely * fpair;
-          f[i][2] += delz * fpair;
-          if (newton_pair || j < nlocal) {
-            f[j][0] -= delx * fpair;
-            f[j][1] -= dely * fpair;
-            f[j][2] -= delz * fpair;
-          }
-          if (evflag) ev_tally(i, j, nlocal, newton_pair, 0.0, 0.0, fpair, delx, dely, delz);
-        }
+        if (f_end != 0.0) add_central(i, j, f_end * rinv, delx, dely, delz);
         free_contact(c);
         ci[jj] = -1;
         continue;
@@ -400,16 +389,7 @@ void PairGranularHertzdamp::compute(int eflag, int vflag)
       p[P_FN] = fn;
       const FrictionModel &fmij = fm[ti * nt + tj];
       if (!fmij.any()) {
-        const double fpair = fn * rinv;
-        f[i][0] += delx * fpair;
-        f[i][1] += dely * fpair;
-        f[i][2] += delz * fpair;
-        if (newton_pair || j < nlocal) {
-          f[j][0] -= delx * fpair;
-          f[j][1] -= dely * fpair;
-          f[j][2] -= delz * fpair;
-        }
-        if (evflag) ev_tally(i, j, nlocal, newton_pair, 0.0, 0.0, fpair, delx, dely, delz);
+        add_central(i, j, fn * rinv, delx, dely, delz);
         continue;
       }
 
@@ -464,6 +444,23 @@ void PairGranularHertzdamp::compute(int eflag, int vflag)
     }
   }
   mark_isolation();
+}
+
+// A central force fpair (x_i - x_j) on i and its opposite on j (when j is local or
+// newton_pair is on), with its virial.
+void PairGranularHertzdamp::add_central(int i, int j, double fpair, double delx, double dely, double delz)
+{
+  double **f = atom->f;
+  const int nlocal = atom->nlocal, newton_pair = force->newton_pair;
+  f[i][0] += delx * fpair;
+  f[i][1] += dely * fpair;
+  f[i][2] += delz * fpair;
+  if (newton_pair || j < nlocal) {
+    f[j][0] -= delx * fpair;
+    f[j][1] -= dely * fpair;
+    f[j][2] -= delz * fpair;
+  }
+  if (evflag) ev_tally(i, j, nlocal, newton_pair, 0.0, 0.0, fpair, delx, dely, delz);
 }
 
 /* ----------------------------------------------------------------------

@@ -57,6 +57,7 @@ class PairGranularHertzdamp : public LAMMPS_NS::Pair {
   void free_contact(int c);
   void clear_contacts();
   void mark_isolation();
+  void add_central(int i, int j, double fpair, double delx, double dely, double delz);
 
   // per type pair
   double **e_ij = nullptr;        // target restitution

@@ -109,3 +109,11 @@ class Checks:
     def finish(self):
         print("%s: %d passed, %d failed" % (self.name, self.passed, self.failed))
         sys.exit(1 if self.failed else 0)
+
+
+def main_each_flavor(name, run):
+    """Runs run(checks) on each LAMMPS flavor, then prints the summary and exits."""
+    c = Checks(name)
+    for _ in each_flavor():
+        run(c)
+    c.finish()

@@ -44,13 +44,6 @@ def run_binary(tmp, e, N, end, phase=0.3, correction="yes"):
                   "ended": float(res[12])}
 
 
-def main():
-    c = hdlmp.Checks(NAME)
-    for _ in hdlmp.each_flavor():
-        run(c)
-    c.finish()
-
-
 def run(c):
     api = hdlmp.CApi()
     tmp = tempfile.mkdtemp(prefix="hd_lmp_bin_")
@@ -157,4 +150,4 @@ def run(c):
 
 
 if __name__ == "__main__":
-    main()
+    hdlmp.main_each_flavor(NAME, run)

@@ -136,12 +136,5 @@ def run(c):
             print("%s: identical %s, onsets/ends after read_restart %s/%s" % (tag, same, res[-3], res[-1]))
 
 
-def main():
-    c = hdlmp.Checks(NAME)
-    for _ in hdlmp.each_flavor():
-        run(c)
-    c.finish()
-
-
 if __name__ == "__main__":
-    main()
+    hdlmp.main_each_flavor(NAME, run)

@@ -98,12 +98,5 @@ def run(c):
             c.check("bad input: " + first, ("ERROR: " + msg) in out, "want '%s' in: %s" % (msg, out[-400:]))
 
 
-def main():
-    c = hdlmp.Checks(NAME)
-    for _ in hdlmp.each_flavor():
-        run(c)
-    c.finish()
-
-
 if __name__ == "__main__":
-    main()
+    hdlmp.main_each_flavor(NAME, run)

@@ -34,13 +34,6 @@ def sorted_rows(path):
         return sorted(l for l in f if not l.startswith("#"))
 
 
-def main():
-    c = hdlmp.Checks(NAME)
-    for _ in hdlmp.each_flavor():
-        run(c)
-    c.finish()
-
-
 def run(c):
     api = hdlmp.CApi()
     tmp = tempfile.mkdtemp(prefix="hd_lmp_par_")
@@ -121,4 +114,4 @@ def run(c):
 
 
 if __name__ == "__main__":
-    main()
+    hdlmp.main_each_flavor(NAME, run)

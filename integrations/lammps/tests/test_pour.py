@@ -101,12 +101,5 @@ def run(c):
                 " ".join(st))
 
 
-def main():
-    c = hdlmp.Checks(NAME)
-    for _ in hdlmp.each_flavor():
-        run(c)
-    c.finish()
-
-
 if __name__ == "__main__":
-    main()
+    hdlmp.main_each_flavor(NAME, run)

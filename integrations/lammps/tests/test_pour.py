@@ -1,6 +1,7 @@
 """Poured beads: LAMMPS's granular examples in.pour.flatwall and in.pour.drum with
 pair_style granular/hertzdamp swapped in (examples/in.pour, examples/in.drum), shortened,
-under -np 1 and -np 2, on each LAMMPS version.
+and beads that fix deposit drops (examples/in.deposit), under -np 1 and -np 2, on each
+LAMMPS version.
 
 - every bead that fix pour inserts is there at the end (no bead lost);
 - no two beads overlap by more than 25 % of the smaller diameter in the final state (the
@@ -99,6 +100,16 @@ def run(c):
         c.check(tag + ": statistics finite", all(math.isfinite(x) for x in pair), " ".join(st))
         c.check(tag + ": collisions, e of isolated ones >= 0", pair[0] > 100 and pair[13] > 10 and pair[9] >= 0.0,
                 " ".join(st))
+
+        # fix deposit: 100 beads dropped one by one
+        tag = "deposit np %d" % np
+        out = hdlmp.lmp(os.path.join(hdlmp.EXAMPLES, "in.deposit"), {}, tmp, np=np)
+        res = [l for l in out.splitlines() if l.startswith("RESULT")][0].split()
+        rows = read_final(os.path.join(tmp, "deposit.dump"))
+        ov = worst_overlap(rows, 10.0)
+        print("%s: %d beads, worst overlap %.4f, %s pair contacts" % (tag, len(rows), ov, res[2]))
+        c.check(tag + ": all 100 beads, pair contacts", len(rows) == 100 and float(res[2]) > 100, " ".join(res))
+        c.check(tag + ": no pair overlap beyond 25 % of a diameter", ov <= 0.25, repr(ov))
 
 
 if __name__ == "__main__":

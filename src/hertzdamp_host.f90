@@ -134,7 +134,7 @@ module hertzdamp_host
     !> HD_NO_CONVERGENCE; a regular case takes 200 to 500, the chaotic releases of
     !> alpha near alpha_c at two steps per contact 30000).
     integer, parameter :: max_runs = 200000
-    !> tanh-sinh: abscissae t in [-t_max, t_max] (the weight beyond is below 1e-16 of the
+    !> The tanh-sinh quadrature takes abscissae t in [-t_max, t_max] (the weight beyond is below 1e-16 of the
     !> piece), levels of step 2^-l, l = 0 .. level_max; a level l >= level_min whose
     !> change from level l - 1 is below quad_tol (relative to the piece) ends the
     !> refinement: the error then falls like the square of that change (measured below
@@ -316,8 +316,9 @@ contains
         status = check_common(law, iend, host)
         if (status == HD_OK) status = check_alpha(alpha)
         if (status == HD_OK .and. host /= HD_HOST_NONE) status = check_h(h)
-        if (status == HD_OK .and. host /= HD_HOST_NONE .and. .not. (phi > 0.0_wp .and. phi <= 1.0_wp)) &
-            status = HD_BAD_ARGUMENT
+        if (status == HD_OK .and. host /= HD_HOST_NONE) then
+            if (.not. (phi > 0.0_wp .and. phi <= 1.0_wp)) status = HD_BAD_ARGUMENT
+        end if
         if (status /= HD_OK) return
         if (host == HD_HOST_NONE) then
             call continuous(alpha, law, iend, e, tau_c, status)
@@ -396,7 +397,7 @@ contains
         r%sig = [n, kind, nf]
     end subroutine finish_run
 
-    !> lammps, mfix-euler and lammps-phase: at step n the force from z_n and the velocity
+    !> The lammps, mfix-euler and lammps-phase schemes: at step n the force from z_n and the velocity
     !> w_n that moved the body there, then w_(n+1) = w_n - h F_n, z_(n+1) = z_n + h w_(n+1).
     !> phase: the plugin's correction at the onset step and at the step detecting the
     !> overlap end (hertzdamp_host_phase_force).
@@ -435,7 +436,7 @@ contains
         r%status = HD_NO_REBOUND
     end subroutine run_symplectic
 
-    !> mfix-ab2: a_n from (z_n, v_n) (clipped at the force end), v_(n+1) = v_n +
+    !> The mfix-ab2 scheme: a_n from (z_n, v_n) (clipped at the force end), v_(n+1) = v_n +
     !> h (3 a_n - a_(n-1))/2, z_(n+1) = z_n + h (v_n + v_(n+1))/2; a_0 = 0 (free flight
     !> before the contact).  The release is the first step without overlap (or with a
     !> clipped force); the free-flight speed is final once a_n = a_(n-1) = 0.  An overlap
@@ -502,7 +503,7 @@ contains
         r%status = HD_NO_REBOUND
     end subroutine run_ab2
 
-    !> verlet: the scene engine's sequence for one contact (apps/src/hertzdamp_dem_engine.f90,
+    !> The verlet scheme, the scene engine's sequence for one contact (apps/src/hertzdamp_dem_engine.f90,
     !> doc/host-schemes.md): half kick, drift, the velocity v_pred = v_half + h/2 A +
     !> h/2 (A - A_prev) in the damping, the force, the closing half kick plus the impulse
     !> corrections of the onset step (the part of the step in contact, the Hertz and

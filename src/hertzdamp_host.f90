@@ -129,7 +129,7 @@ module hertzdamp_host
     !> longest continuous contact of the fitted range is 50, kuwabara-kono at e = 1e-4).
     real(wp), parameter :: contact_time_max = 5.0e2_wp
     !> Coarse phase samples before the breakpoint search, and the most pieces.
-    integer, parameter :: n_coarse = 8, max_pieces = 64
+    integer, parameter :: n_coarse = 8, max_pieces = 256
     !> Most discrete collisions run for one set of phase statistics (beyond it:
     !> HD_NO_CONVERGENCE; a regular case takes 200 to 500, the chaotic releases of
     !> alpha near alpha_c at two steps per contact 30000).
@@ -295,7 +295,7 @@ contains
 
     !> One discrete collision of a host: the achieved restitution e and contact duration
     !> tau_c (units of t*) for the onset phase phi (module header).  host = HD_HOST_NONE:
-    !> the continuous model (reference integrator), h and phi unused.  Status HD_OK,
+    !> the continuous model (reference integrator; h and phi are checked, not used).  Status HD_OK,
     !> HD_NO_REBOUND (the discrete overlap does not return within 2000 t*, or the bodies do
     !> not separate), or for a bad argument (checked in this order) HD_BAD_HOST, HD_BAD_LAW,
     !> HD_BAD_END, HD_BAD_ALPHA (not 0 <= alpha <= 1e4), HD_BAD_STEPS (h not in
@@ -315,10 +315,8 @@ contains
         tau_c = 0.0_wp
         status = check_common(law, iend, host)
         if (status == HD_OK) status = check_alpha(alpha)
-        if (status == HD_OK .and. host /= HD_HOST_NONE) status = check_h(h)
-        if (status == HD_OK .and. host /= HD_HOST_NONE) then
-            if (.not. (phi > 0.0_wp .and. phi <= 1.0_wp)) status = HD_BAD_ARGUMENT
-        end if
+        if (status == HD_OK) status = check_h(h)
+        if (status == HD_OK .and. .not. (phi > 0.0_wp .and. phi <= 1.0_wp)) status = HD_BAD_ARGUMENT
         if (status /= HD_OK) return
         if (host == HD_HOST_NONE) then
             call continuous(alpha, law, iend, e, tau_c, status)
@@ -665,8 +663,10 @@ contains
     !> Phase statistics of a host's discrete collision: mean, standard deviation, min and
     !> max of e and tau_c over the onset phase phi uniform on (0, 1] (module header; the
     !> means to about 1e-14).  host = HD_HOST_NONE: the continuous e and tau_c with zero
-    !> spread.  Status as hertzdamp_host_collide (HD_NO_REBOUND when some phase does not
-    !> rebound); zero statistics on failure.
+    !> spread (h checked, not used).  Status as hertzdamp_host_collide (HD_NO_REBOUND when
+    !> some phase does not rebound; HD_NO_CONVERGENCE when the quadrature does not settle:
+    !> more than 200000 collisions or 256 pieces, or a piece whose tanh-sinh levels do not
+    !> agree by level 7, not met in the tested range); zero statistics on failure.
     pure subroutine hertzdamp_host_mean(alpha, h, law, iend, host, stats, status)
         real(wp), intent(in) :: alpha                     !! damping parameter
         real(wp), intent(in) :: h                         !! dimensionless step dt / t*
@@ -678,7 +678,7 @@ contains
         real(wp) :: e, tau
         status = check_common(law, iend, host)
         if (status == HD_OK) status = check_alpha(alpha)
-        if (status == HD_OK .and. host /= HD_HOST_NONE) status = check_h(h)
+        if (status == HD_OK) status = check_h(h)
         if (status /= HD_OK) return
         if (host == HD_HOST_NONE) then
             call continuous(alpha, law, iend, e, tau, status)
@@ -708,6 +708,7 @@ contains
         integer :: j, np, sbad(3)
         logical :: bad
         cx = ctx_t(alpha, h, law, iend, host)
+        status = HD_OK
         ! coarse samples phi_j = j / M; the first one's values are the references of the
         ! variance sums
         do j = 1, n_coarse
@@ -729,11 +730,12 @@ contains
                 call breakpoint(cx, ps(j - 1), rs(j - 1)%sig, ps(j), b, acc, status)
                 if (status /= HD_OK) return
                 pc%b = b
-                call push(pieces, np, pc)
+                call push(pieces, np, pc, status)
                 pc = piece_t(b, 1.0_wp, ps(j), rs(j)%sig)
             end if
         end do
-        call push(pieces, np, pc)
+        call push(pieces, np, pc, status)
+        if (status /= HD_OK) return
         do while (np > 0)
             pc = pieces(np)
             np = np - 1
@@ -745,12 +747,13 @@ contains
                 call breakpoint(cx, pc%pref, pc%sig, xbad, b, acc, status)
                 if (status /= HD_OK) return
                 if (xbad > pc%pref) then
-                    call push(pieces, np, piece_t(pc%a, b, pc%pref, pc%sig))
-                    call push(pieces, np, piece_t(b, pc%b, xbad, sbad))
+                    call push(pieces, np, piece_t(pc%a, b, pc%pref, pc%sig), status)
+                    call push(pieces, np, piece_t(b, pc%b, xbad, sbad), status)
                 else
-                    call push(pieces, np, piece_t(b, pc%b, pc%pref, pc%sig))
-                    call push(pieces, np, piece_t(pc%a, b, xbad, sbad))
+                    call push(pieces, np, piece_t(b, pc%b, pc%pref, pc%sig), status)
+                    call push(pieces, np, piece_t(pc%a, b, xbad, sbad), status)
                 end if
+                if (status /= HD_OK) return
             end if
         end do
         stats%e_mean = acc%ie
@@ -784,18 +787,17 @@ contains
         end if
     end subroutine sample
 
-    !> Push a piece on the stack (when it is full, the top piece grows to cover the new
-    !> one: its quadrature then runs across a breakpoint; not met in practice).
-    pure subroutine push(pieces, np, p)
+    !> Push a piece on the stack; status HD_NO_CONVERGENCE when it is full.
+    pure subroutine push(pieces, np, p, status)
         type(piece_t), intent(inout) :: pieces(:)
         integer, intent(inout) :: np
         type(piece_t), intent(in) :: p
+        integer, intent(inout) :: status
         if (np < size(pieces)) then
             np = np + 1
             pieces(np) = p
         else
-            pieces(np)%a = min(pieces(np)%a, p%a)
-            pieces(np)%b = max(pieces(np)%b, p%b)
+            status = HD_NO_CONVERGENCE
         end if
     end subroutine push
 
@@ -890,10 +892,14 @@ contains
                 k = k + kstep
             end do
             cur = s * ht
+            ! converged: the change of the level below quad_tol of the piece, or (pieces a
+            ! few doubles wide) below the weight of the nodes left out next to the ends
             if (level >= level_min) then
-                if (abs(cur(1) - prev(1)) <= quad_tol * max(width, abs(cur(1))) .and. &
-                    abs(cur(2) - prev(2)) <= quad_tol * max(width, abs(cur(2)))) exit
+                if (abs(cur(1) - prev(1)) <= quad_tol * max(width, abs(cur(1))) + 16.0_wp * guard * &
+                    max(1.0_wp, abs(cur(1)) / width) .and. abs(cur(2) - prev(2)) <= quad_tol * max(width, abs(cur(2))) &
+                    + 16.0_wp * guard * max(1.0_wp, abs(cur(2)) / width)) exit
             end if
+            if (level == level_max) status = HD_NO_CONVERGENCE
             prev = cur
         end do
         acc%ie = acc%ie + cur(1)
@@ -909,7 +915,7 @@ contains
     !> each to 1e-10 relative (Newton's method on the phase means in (alpha, h), started from
     !> the continuous inverse of the law and end).  stats: the phase statistics there.
     !> host = HD_HOST_NONE: exactly hertzdamp_fit_inverse (alpha(e), tau_c(alpha)) with
-    !> zero spread.  steps is real (T_c = N dt need not be whole).  Status HD_OK; for bad
+    !> zero spread (steps checked, not used).  steps is real (T_c = N dt need not be whole).  Status HD_OK; for bad
     !> input (in this order) HD_BAD_HOST, HD_BAD_LAW, HD_BAD_END, HD_BAD_RESTITUTION (e
     !> outside the fitted inverse's range), HD_BAD_STEPS (not 2 <= steps <= 1e5); HD_HOST_UNREACHABLE
     !> when no alpha >= 0 reaches e at this many steps (hertzdamp_host_min_steps); zero
@@ -933,19 +939,14 @@ contains
         status = check_common(law, iend, host)
         if (status /= HD_OK) return
         call hertzdamp_fit_inverse(e, iend, a0, t0, status, law)
-        if (status /= HD_OK) then
-            alpha = 0.0_wp
-            tau_c = 0.0_wp
-            return
+        if (status == HD_OK) then
+            if (.not. (steps >= hertzdamp_host_steps_min .and. steps <= hertzdamp_host_steps_max)) status = HD_BAD_STEPS
         end if
+        if (status /= HD_OK) return
         if (host == HD_HOST_NONE) then
             alpha = a0
             tau_c = t0
             stats = point_stats(e, t0)
-            return
-        end if
-        if (.not. (steps >= hertzdamp_host_steps_min .and. steps <= hertzdamp_host_steps_max)) then
-            status = HD_BAD_STEPS
             return
         end if
         ! Newton in x = (alpha, h) on r = (e_mean - e, tau_mean / (N h) - 1): a forward
@@ -1126,7 +1127,8 @@ contains
 
     !> At a fixed dimensionless step h (a deck's k and dt fix t* and h), the damping alpha >= 0
     !> whose phase-mean e equals e (to 1e-10 relative), and the phase statistics there: the
-    !> corrected coefficient of a deck.  host none: the continuous alpha(e) of the fit.
+    !> corrected coefficient of a deck.  host none: the continuous alpha(e) of the fit (h
+    !> checked, not used).
     !> Status HD_OK; bad input as hertzdamp_host_solve (HD_BAD_STEPS for h outside [1e-5, 4]);
     !> HD_HOST_UNREACHABLE when no alpha >= 0 gives e at this h; zero outputs on failure.
     pure subroutine hertzdamp_host_alpha_for_e(e, h, law, iend, host, alpha, stats, status)
@@ -1145,14 +1147,13 @@ contains
         status = check_common(law, iend, host)
         if (status /= HD_OK) return
         call hertzdamp_fit_inverse(e, iend, a0, t0, status, law)
+        if (status == HD_OK) status = check_h(h)
         if (status /= HD_OK) return
         if (host == HD_HOST_NONE) then
             alpha = a0
             stats = point_stats(e, t0)
             return
         end if
-        status = check_h(h)
-        if (status /= HD_OK) return
         ! bracket: e_mean falls with alpha; from the continuous alpha step outwards
         call mean_at(a0, em, s, st)
         if (st /= HD_OK) then

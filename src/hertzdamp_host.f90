@@ -43,7 +43,7 @@ module hertzdamp_host
                                 HD_BAD_HOST, HD_BAD_STEPS, HD_HOST_UNREACHABLE, HD_END_OVERLAP, HD_END_FORCE, &
                                 HD_DAMPING_LINEAR, HD_DAMPING_TSUJI, HD_DAMPING_KUWABARA_KONO
     use hertzdamp_constants, only: hertzdamp_pi
-    use hertzdamp_laws, only: hertzdamp_law_status
+    use hertzdamp_laws, only: hertzdamp_law_status, hertzdamp_law_q
     use hertzdamp_fit, only: hertzdamp_fit_inverse
     use hertzdamp_rk45, only: hertzdamp_rk45_collide, hertzdamp_collision
     implicit none
@@ -513,7 +513,7 @@ contains
         type(run_t), intent(inout) :: r
         real(wp) :: q, z, v, vh, vp, acc, acc_prev, f, dv, fh, fd, zl, vl, fl, s, us, jn
         integer :: n, kind
-        q = law_q(law)
+        q = hertzdamp_law_q(law)
         s = 0.0_wp
         ! step 1 (onset): free flight before it (acc = acc_prev = 0, v = 1), in contact
         ! for the fraction phi of the step; the impact speed is 1
@@ -577,19 +577,6 @@ contains
         r%status = HD_NO_REBOUND
     end subroutine run_verlet
 
-    !> Exponent q of the law (0, 1/4, 1/2).
-    pure real(wp) function law_q(law)
-        integer, intent(in) :: law
-        select case (law)
-        case (HD_DAMPING_TSUJI)
-            law_q = 0.25_wp
-        case (HD_DAMPING_KUWABARA_KONO)
-            law_q = 0.5_wp
-        case default
-            law_q = 0.0_wp
-        end select
-    end function law_q
-
     !> The engine's trapezoid error g_p(theta) = zeta_H(-p, theta) + theta^(p+1)/(p+1) -
     !> theta^p/2 of a force c s^p starting (or ending) a fraction theta of a step away
     !> (apps/src/hertzdamp_dem_engine.f90: start_error p = 3/2, trapezoid_error p = q).
@@ -632,20 +619,9 @@ contains
         glo = g(lo)
         side = 0
         do it = 1, 200
-            s = (lo * ghi - hi * glo) / (ghi - glo)
-            if (.not. (s > lo .and. s < hi)) s = 0.5_wp * (lo + hi)
+            s = illinois_point(lo, hi, glo, ghi)
             gs = g(s)
-            if (gs > 0.0_wp) then
-                lo = s
-                glo = gs
-                if (side == -1) ghi = 0.5_wp * ghi
-                side = -1
-            else
-                hi = s
-                ghi = gs
-                if (side == 1) glo = 0.5_wp * glo
-                side = 1
-            end if
+            call illinois_update(s, gs, lo, hi, glo, ghi, side)
             if (hi - lo <= 4.0_wp * spacing(hi) .or. gs == 0.0_wp) exit
         end do
     contains
@@ -657,6 +633,35 @@ contains
             if (zz == 0.0_wp) g = alpha * (vl + t * (ve - vl))
         end function g
     end function force_zero
+
+    !> The next point of the Illinois method in a bracket (lo, hi) of a function falling
+    !> through zero (glo > 0 >= ghi): the secant's zero, or the middle when the secant
+    !> leaves the bracket.
+    pure real(wp) function illinois_point(lo, hi, glo, ghi) result(s)
+        real(wp), intent(in) :: lo, hi, glo, ghi
+        s = lo + (hi - lo) * glo / (glo - ghi)
+        if (.not. (s > lo .and. s < hi)) s = 0.5_wp * (lo + hi)
+    end function illinois_point
+
+    !> The bracket after the value gs at s: s replaces the end of the same sign; when the
+    !> same end was replaced twice in a row, the other end's value is halved (side: -1 the
+    !> low end was replaced last, 1 the high end, 0 none yet).
+    pure subroutine illinois_update(s, gs, lo, hi, glo, ghi, side)
+        real(wp), intent(in) :: s, gs
+        real(wp), intent(inout) :: lo, hi, glo, ghi
+        integer, intent(inout) :: side
+        if (gs > 0.0_wp) then
+            lo = s
+            glo = gs
+            if (side == -1) ghi = 0.5_wp * ghi
+            side = -1
+        else
+            hi = s
+            ghi = gs
+            if (side == 1) glo = 0.5_wp * glo
+            side = 1
+        end if
+    end subroutine illinois_update
 
     ! ================================================================ phase statistics
 
@@ -1196,8 +1201,7 @@ contains
         side = 0
         status = HD_HOST_UNREACHABLE
         do it = 1, 200
-            am = alo + (ahi - alo) * glo / (glo - ghi)
-            if (.not. (am > alo .and. am < ahi)) am = 0.5_wp * (alo + ahi)
+            am = illinois_point(alo, ahi, glo, ghi)
             call mean_at(am, em, s, st)
             if (st /= HD_OK) return
             if (abs(em - e) <= solve_tol * e .or. ahi - alo <= 4.0_wp * spacing(ahi)) then
@@ -1206,17 +1210,7 @@ contains
                 status = HD_OK
                 return
             end if
-            if (em > e) then
-                alo = am
-                glo = em - e
-                if (side == -1) ghi = 0.5_wp * ghi
-                side = -1
-            else
-                ahi = am
-                ghi = em - e
-                if (side == 1) glo = 0.5_wp * glo
-                side = 1
-            end if
+            call illinois_update(am, em - e, alo, ahi, glo, ghi, side)
         end do
     contains
         pure subroutine mean_at(a, ea, sa, sta)

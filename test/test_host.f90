@@ -22,6 +22,7 @@ program test_host
     use hertzdamp_dem, only: hertzdamp_dem_scene, hertzdamp_dem_result, hertzdamp_dem_material, hertzdamp_dem_wall, &
                              hertzdamp_dem_check, hertzdamp_dem_run
     use hertzdamp_testing, only: test_suite, new_suite, rel_err
+    use hertzdamp_apps_text, only: itoa, fmt_short
     use, intrinsic :: iso_fortran_env, only: int64
     implicit none
     integer, parameter :: wp = hertzdamp_rk
@@ -129,7 +130,7 @@ contains
                 worst = max(worst, abs(hertzdamp_host_hurwitz(p(i), 2.0_wp * a) - zeta_h(p(i), 2.0_wp * a)))
             end do
         end do
-        call s%check(worst <= 1.0e-13_wp, 'Hurwitz zeta: duplication formula and own sum (absolute), max ' // etoa(worst))
+        call s%check(worst <= 1.0e-13_wp, 'Hurwitz zeta: duplication formula and own sum (absolute), max ' // fmt_short(worst, 3))
         call s%check(hertzdamp_host_hurwitz(0.5_wp, 1.5_wp) == 0.0_wp .and. hertzdamp_host_hurwitz(2.5_wp, 0.5_wp) == 0.0_wp, &
                      'Hurwitz zeta outside its domain: 0')
         ! linear law: the plugin's d zeta' (frac - 1/2) bit for bit, frac clamped
@@ -138,7 +139,7 @@ contains
             fr = 0.1_wp * i
             f = hertzdamp_host_phase_force(3.7_wp, -0.83_wp, 1.0e-3_wp, fr, HD_DAMPING_LINEAR)
             call s%check(transfer(f, 0_int64) == transfer(3.7_wp * (-0.83_wp) * (fr - 0.5_wp), 0_int64), &
-                         'phase force, linear: d zeta'' (frac - 1/2) bit for bit, frac ' // ftoa(fr))
+                         'phase force, linear: d zeta'' (frac - 1/2) bit for bit, frac ' // fmt_short(fr, 3))
         end do
         call s%check(hertzdamp_host_phase_force(2.0_wp, 1.0_wp, 0.1_wp, 1.7_wp, HD_DAMPING_LINEAR) == 1.0_wp .and. &
                      hertzdamp_host_phase_force(2.0_wp, 1.0_wp, 0.1_wp, -0.3_wp, HD_DAMPING_LINEAR) == -1.0_wp, &
@@ -158,7 +159,7 @@ contains
             end do
         end do
         call s%check(worst <= 1.0e-13_wp, 'phase force, tsuji and kuwabara-kono: Hurwitz form, max (of d |zeta''|^(1+q) '// &
-                     'dt^q) ' // etoa(worst))
+                     'dt^q) ' // fmt_short(worst, 3))
     end subroutine hurwitz_and_phase_force
 
     ! ================================================================ this program's steppers
@@ -460,9 +461,10 @@ contains
                 end do
             end do
             call s%check(nbad == 0 .and. we <= 1.0e-12_wp .and. wt <= 1.0e-12_wp, hertzdamp_host_name(hosts(ih)) // &
-                         ': library and own stepper per phase, max rel e ' // etoa(we) // ', tau_c ' // etoa(wt))
-            print '(a)', '  ' // hertzdamp_host_name(hosts(ih)) // ' vs own stepper (240 phases): max rel e ' // etoa(we) // &
-                ', tau_c ' // etoa(wt)
+                         ': library and own stepper per phase, max rel e ' // fmt_short(we, 3) // ', tau_c ' // fmt_short(wt, 3))
+            print '(a)', '  ' // hertzdamp_host_name(hosts(ih)) // ' vs own stepper (240 phases): max rel e ' // &
+                fmt_short(we, 3) // &
+                ', tau_c ' // fmt_short(wt, 3)
         end do
     end subroutine steppers_agree
 
@@ -528,8 +530,9 @@ contains
             end do
         end do
         call s%check(n == 18 .and. we <= 1.0e-10_wp .and. wt <= 1.0e-10_wp, 'verlet = the scene engine, ' // itoa(n) // &
-                     ' contacts, every law and end, max rel e ' // etoa(we) // ', tau_c ' // etoa(wt))
-        print '(a)', '  verlet vs the scene engine (' // itoa(n) // ' contacts): max rel e ' // etoa(we) // ', tau_c ' // etoa(wt)
+                     ' contacts, every law and end, max rel e ' // fmt_short(we, 3) // ', tau_c ' // fmt_short(wt, 3))
+        print '(a)', '  verlet vs the scene engine (' // itoa(n) // ' contacts): max rel e ' // fmt_short(we, 3) // &
+            ', tau_c ' // fmt_short(wt, 3)
     end subroutine scene_engine_agrees
 
     !> Debian's LAMMPS (lmp, which `make lammps` installs), one run of eight head-on pairs
@@ -608,8 +611,8 @@ contains
             n = n + 1
         end do
         call s%check(n == 8 .and. worst <= 1.0e-12_wp, 'lammps = Debian''s LAMMPS, 8 pairs (linear, kuwabara-kono, '// &
-                     'both ends), max rel e ' // etoa(worst))
-        print '(a)', '  lammps vs Debian''s LAMMPS (' // itoa(n) // ' pairs): max rel e ' // etoa(worst)
+                     'both ends), max rel e ' // fmt_short(worst, 3))
+        print '(a)', '  lammps vs Debian''s LAMMPS (' // itoa(n) // ' pairs): max rel e ' // fmt_short(worst, 3)
     end subroutine lammps_agrees
 
     ! ================================================================ own phase quadrature
@@ -778,9 +781,9 @@ contains
                 end do
             end do
             call s%check(nm == 0 .and. we <= 1.0e-12_wp .and. wt <= 1.0e-12_wp, hertzdamp_host_name(hosts(ih)) // &
-                         ': phase means = own quadrature, max e ' // etoa(we) // ', rel tau_c ' // etoa(wt))
+                         ': phase means = own quadrature, max e ' // fmt_short(we, 3) // ', rel tau_c ' // fmt_short(wt, 3))
             print '(a)', '  ' // hertzdamp_host_name(hosts(ih)) // ' phase means vs own quadrature (12 cases): max e ' // &
-                etoa(we) // ', rel tau_c ' // etoa(wt)
+                fmt_short(we, 3) // ', rel tau_c ' // fmt_short(wt, 3)
         end do
     end subroutine means_agree
 
@@ -816,7 +819,7 @@ contains
                         if (st == HD_HOST_UNREACHABLE) then
                             call hertzdamp_host_min_steps(e, laws(il), ends(ie), hosts(ih), nmin, st2)
                             call s%check(st2 /= HD_OK .or. real(nmin, wp) > n, 'unreachable means N < N_min: ' // &
-                                         hertzdamp_host_name(hosts(ih)) // ' e = ' // ftoa(e) // ' N = ' // ftoa(n))
+                                         hertzdamp_host_name(hosts(ih)) // ' e = ' // fmt_short(e, 3) // ' N = ' // fmt_short(n, 3))
                             nun = nun + 1
                             cycle
                         end if
@@ -828,9 +831,9 @@ contains
                         call s%check(nmiss == 0 .and. abs(em / e - 1.0_wp) <= 1.0e-10_wp .and. &
                                      abs(tm / tau - 1.0_wp) <= 1.0e-10_wp .and. abs(st0%e_mean / e - 1.0_wp) <= 1.0e-10_wp, &
                                      hertzdamp_host_name(hosts(ih)) // ' ' // hertzdamp_law_name(laws(il)) // ' ' // &
-                                     hertzdamp_end_name(ends(ie)) // ' e = ' // ftoa(e) // ' N = ' // ftoa(n) // &
-                                     ': own phase means = targets, rel ' // etoa(em / e - 1.0_wp) // ', ' // &
-                                     etoa(tm / tau - 1.0_wp))
+                                     hertzdamp_end_name(ends(ie)) // ' e = ' // fmt_short(e, 3) // ' N = ' // fmt_short(n, 3) // &
+                                     ': own phase means = targets, rel ' // fmt_short(em / e - 1.0_wp, 3) // ', ' // &
+                                     fmt_short(tm / tau - 1.0_wp, 3))
                         nok = nok + 1
                     end do
                 end do
@@ -843,15 +846,16 @@ contains
             call hertzdamp_host_solve(e, HD_DAMPING_LINEAR, HD_END_OVERLAP, HD_HOST_LAMMPS, n, alpha, tau, st0, st)
             call own_mean(alpha, tau / n, HD_DAMPING_LINEAR, HD_END_OVERLAP, HD_HOST_LAMMPS, em, tm, nmiss)
             call s%check(st == HD_OK .and. nmiss == 0 .and. abs(em / e - 1.0_wp) <= 1.0e-10_wp .and. &
-                         abs(tm / tau - 1.0_wp) <= 1.0e-10_wp, 'lammps corner e = ' // ftoa(e) // ', N = ' // ftoa(n))
+                         abs(tm / tau - 1.0_wp) <= 1.0e-10_wp, 'lammps corner e = ' // fmt_short(e, 3) // ', N = ' // &
+                         fmt_short(n, 3))
             we = max(we, abs(em / e - 1.0_wp))
             wt = max(wt, abs(tm / tau - 1.0_wp))
             nok = nok + 1
         end do
-        call s%check(nok >= 50, itoa(nok) // ' targets met, ' // itoa(nun) // ' unreachable; max rel e ' // etoa(we) // &
-                     ', tau_c ' // etoa(wt))
+        call s%check(nok >= 50, itoa(nok) // ' targets met, ' // itoa(nun) // ' unreachable; max rel e ' // fmt_short(we, 3) // &
+                     ', tau_c ' // fmt_short(wt, 3))
         print '(a)', '  per-pair constants: ' // itoa(nok) // ' targets met (own quadrature), ' // itoa(nun) // &
-            ' unreachable; max rel error of the mean e ' // etoa(we) // ', tau_c ' // etoa(wt)
+            ' unreachable; max rel error of the mean e ' // fmt_short(we, 3) // ', tau_c ' // fmt_short(wt, 3)
         ! the issue's example: LAMMPS, e = 0.2, N = 10 (mean error -19 % with the continuous constants)
         call hertzdamp_host_solve(0.2_wp, HD_DAMPING_LINEAR, HD_END_OVERLAP, HD_HOST_LAMMPS, 10.0_wp, alpha, tau, st0, st)
         call s%check(st == HD_OK .and. st0%e_sd > 0.1_wp * 0.2_wp, 'lammps e = 0.2, N = 10 solves, spread above 10 %')
@@ -897,8 +901,9 @@ contains
                 ot = log((t(2) - t0) / (t(3) - t0)) / log(2.0_wp)
                 want = merge(2.0_wp, 1.0_wp, hosts(ih) == HD_HOST_MFIX_AB2 .or. hosts(ih) == HD_HOST_VERLET)
                 call s%check(abs(oa - want) <= 0.15_wp .and. abs(ot - want) <= 0.15_wp, hertzdamp_host_name(hosts(ih)) // &
-                             ' ' // hertzdamp_end_name(ends(ie)) // ': (alpha_N, tau_N) converge at order ' // ftoa(want) // &
-                             ' (observed ' // ftoa(oa) // ', ' // ftoa(ot) // ')')
+                             ' ' // hertzdamp_end_name(ends(ie)) // ': (alpha_N, tau_N) converge at order ' // &
+                             fmt_short(want, 3) // &
+                             ' (observed ' // fmt_short(oa, 3) // ', ' // fmt_short(ot, 3) // ')')
             end do
         end do
     end subroutine solve_order
@@ -932,8 +937,9 @@ contains
                 end if
                 call s%check(ok .and. abs(ce(3)) < 1.0e-3_wp, &
                              hertzdamp_host_name(hosts(ih)) // ' ' // hertzdamp_law_name(laws(il)) // &
-                             ': mean -> continuous as h -> 0 at order ' // ftoa(want) // ' (observed ' // ftoa(oe) // ', ' // &
-                             ftoa(ot) // ')')
+                             ': mean -> continuous as h -> 0 at order ' // fmt_short(want, 3) // ' (observed ' // &
+                             fmt_short(oe, 3) // ', ' // &
+                             fmt_short(ot, 3) // ')')
             end do
         end do
     end subroutine mean_tends_to_continuous
@@ -957,7 +963,7 @@ contains
             call hertzdamp_host_solve(e, il, HD_END_OVERLAP, ih, real(nmin - 1, wp), a, t, st0, st1)
             call hertzdamp_host_solve(e, il, HD_END_OVERLAP, ih, real(nmin, wp), a, t, st0, st2)
             call s%check(st == HD_OK .and. nmin > 2 .and. st1 == HD_HOST_UNREACHABLE .and. st2 == HD_OK, &
-                         'min_steps ' // hertzdamp_host_name(ih) // ' ' // hertzdamp_law_name(il) // ' e = ' // ftoa(e) // &
+                         'min_steps ' // hertzdamp_host_name(ih) // ' ' // hertzdamp_law_name(il) // ' e = ' // fmt_short(e, 3) // &
                          ': N_min = ' // itoa(nmin) // ' succeeds, N_min - 1 does not')
         end do
         call hertzdamp_host_min_steps(0.5_wp, HD_DAMPING_LINEAR, HD_END_OVERLAP, HD_HOST_NONE, nmin, st)
@@ -978,7 +984,7 @@ contains
             call own_mean(a, t0 / 11.0_wp, HD_DAMPING_TSUJI, HD_END_FORCE, hosts(ih), em, tm, nmiss)
             call s%check(st == HD_OK .and. nmiss == 0 .and. abs(em / 0.6_wp - 1.0_wp) <= 1.0e-10_wp .and. &
                          abs(st0%e_mean / 0.6_wp - 1.0_wp) <= 1.0e-10_wp, 'alpha_for_e ' // hertzdamp_host_name(hosts(ih)) // &
-                         ', tsuji force, h = tau_c/11: own mean e = 0.6, rel ' // etoa(em / 0.6_wp - 1.0_wp))
+                         ', tsuji force, h = tau_c/11: own mean e = 0.6, rel ' // fmt_short(em / 0.6_wp - 1.0_wp, 3))
         end do
         call hertzdamp_host_alpha_for_e(0.6_wp, 0.3_wp, HD_DAMPING_TSUJI, HD_END_FORCE, HD_HOST_NONE, a, st0, st)
         call s%check(st == HD_OK .and. a == a0, 'alpha_for_e, host none: the fit''s alpha(e)')
@@ -1077,31 +1083,5 @@ contains
         f = hertzdamp_host_phase_force(1.0_wp, 1.0_wp, 1.0_wp, 0.5_wp, -1)
         call s%check(f == 0.0_wp, 'phase force: bad law gives 0')
     end subroutine bad_input
-
-    ! ================================================================ text
-
-    function itoa(i) result(t)
-        integer, intent(in) :: i
-        character(len=:), allocatable :: t
-        character(len=24) :: b
-        write (b, '(i0)') i
-        t = trim(b)
-    end function itoa
-
-    function ftoa(x) result(t)
-        real(wp), intent(in) :: x
-        character(len=:), allocatable :: t
-        character(len=24) :: b
-        write (b, '(f0.3)') x
-        t = trim(b)
-    end function ftoa
-
-    function etoa(x) result(t)
-        real(wp), intent(in) :: x
-        character(len=:), allocatable :: t
-        character(len=24) :: b
-        write (b, '(es9.2)') x
-        t = trim(adjustl(b))
-    end function etoa
 
 end program test_host

@@ -16,7 +16,7 @@
 !> - `mfix-ab2`: v_(n+1) = v_n + h (3 a_n - a_(n-1))/2, z_(n+1) = z_n + h (v_n + v_(n+1))/2,
 !>   a_(n-1) = 0 before the contact, the last contact acceleration acting once more
 !>   after the release;
-!> - `verlet`: the scene engine of this repository (apps/src/hertzdamp_dem_engine.f90):
+!> - `verlet`: the scene engine of this repository (packages/scene/src/hertzdamp_dem_engine.f90):
 !>   velocity Verlet with the extrapolated velocity in the damping and its onset and
 !>   release impulse corrections;
 !> - `lammps-phase`: `lammps` with the onset/release correction of the LAMMPS plugin
@@ -138,7 +138,7 @@ module hertzdamp_host
     !> piece), levels of step 2^-l, l = 0 .. level_max; a level l >= level_min whose
     !> change from level l - 1 is below quad_tol (relative to the piece) ends the
     !> refinement: the error then falls like the square of that change (measured below
-    !> 1e-14 of e and tau_c, test/test_host.f90 checks the means against its own quadrature).
+    !> 1e-14 of e and tau_c, test/unit/test_host.f90 checks the means against its own quadrature).
     real(wp), parameter :: ts_t_max = 3.2_wp
     integer, parameter :: level_min = 2, level_max = 7
     real(wp), parameter :: quad_tol = 1.0e-10_wp
@@ -213,7 +213,7 @@ contains
     !> for p = 1/4, 1/2, 3/2 (by square roots) or any other 0 < p < 2 (by powers) and
     !> 0 <= a <= 1: eight terms, then the Euler-Maclaurin tail with six Bernoulli terms
     !> at a + 8 (truncation below 5e-15; the terms cancel against the tail, so the absolute
-    !> error is below 1e-14 for p <= 1/2 and 1e-13 for p = 3/2, test/test_host.f90).
+    !> error is below 1e-14 for p <= 1/2 and 1e-13 for p = 3/2, test/unit/test_host.f90).
     !> zeta(-p, 0) = zeta(-p, 1) = zeta(-p), Riemann's.
     !> zeta(0, a) = 1/2 - a.  0 for an a outside [0, 1] or a p outside (0, 2).
     pure elemental real(wp) function hertzdamp_host_hurwitz(p, a) result(z)
@@ -503,7 +503,7 @@ contains
         r%status = HD_NO_REBOUND
     end subroutine run_ab2
 
-    !> The verlet scheme, the scene engine's sequence for one contact (apps/src/hertzdamp_dem_engine.f90,
+    !> The verlet scheme, the scene engine's sequence for one contact (packages/scene/src/hertzdamp_dem_engine.f90,
     !> doc/host-schemes.md): half kick, drift, the velocity v_pred = v_half + h/2 A +
     !> h/2 (A - A_prev) in the damping, the force, the closing half kick plus the impulse
     !> corrections of the onset step (the part of the step in contact, the Hertz and
@@ -581,7 +581,7 @@ contains
 
     !> The engine's trapezoid error g_p(theta) = zeta_H(-p, theta) + theta^(p+1)/(p+1) -
     !> theta^p/2 of a force c s^p starting (or ending) a fraction theta of a step away
-    !> (apps/src/hertzdamp_dem_engine.f90: start_error p = 3/2, trapezoid_error p = q).
+    !> (packages/scene/src/hertzdamp_dem_engine.f90: start_error p = 3/2, trapezoid_error p = q).
     pure real(wp) function trapezoid_g(p, theta) result(g)
         real(wp), intent(in) :: p, theta
         real(wp) :: tp

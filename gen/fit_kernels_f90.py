@@ -508,7 +508,9 @@ def forward_body(end, degs):
     if end == 'overlap':
         # a branch, not the blend, where alpha is valid: its long chain (logarithm of w,
         # two polynomials) need not wait for the mask (measured: 6 % less time per call)
-        out[-1:] = ['if (keep == -1_int64) then', '    a = %s' % ain, 'else',
+        out[-1:] = ['! (a branch where alpha is valid, the same value as the blend: the long chain that',
+                    '! follows need not wait for the mask)',
+                    'if (keep == -1_int64) then', '    a = %s' % ain, 'else',
                     '    a = blend(keep, %s, 0.5_wp)' % ain, 'end if']
     if end == 'force':
         out.append('! L/alpha and tau_c of alpha^(1/3) (map fo_fwd)')

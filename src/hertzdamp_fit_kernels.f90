@@ -871,6 +871,8 @@ contains
                                              int(HD_BAD_ALPHA, int64)), iand(beyond, beyond_code)))
             keep = not(ior(bad, beyond))
             valid = not(bad)
+            ! (a branch where alpha is valid, the same value as the blend: the long chain that
+            ! follows need not wait for the mask)
             if (keep == -1_int64) then
                 a = alpha
             else

@@ -234,13 +234,21 @@ def main(argv):
         out.append('        %s], [%d, %d, %d])' % (', '.join(names), deg + 1, ncomp, npieces))
     out.append('')
     out.append('end module hertzdamp_fit_data')
-    text = '\n'.join(out) + '\n'
+    write_source('\n'.join(out) + '\n', dst)
+    return 0
+
+
+def write_source(text, dst):
+    """Write generated Fortran to the file dst ('-': stdout), ASCII with '\\n' line ends;
+    stop if a line is longer than the 132 characters of free form."""
+    long_lines = [line for line in text.split('\n') if len(line) > 132]
+    if long_lines:
+        raise SystemExit('generated line longer than 132 characters: ' + long_lines[0])
     if dst == '-':
         sys.stdout.write(text)
     else:
         with open(dst, 'w', encoding='ascii', newline='\n') as f:
             f.write(text)
-    return 0
 
 
 if __name__ == '__main__':

@@ -42,7 +42,7 @@ import re
 import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from fit_csv_to_f90 import MAPS, read_csv, families_of  # noqa: E402
+from fit_csv_to_f90 import MAPS, read_csv, families_of, write_source  # noqa: E402
 
 GENERATOR = 'gen/fit_kernels_f90.py'
 WIDTH = 100   # longest expression line before the indentation of its block (fortitude: 132 in all)
@@ -839,14 +839,7 @@ def main(argv):
             cur += item
     lines.append(cur)
     text = text.replace('    use hertzdamp_fit_data\n', '\n'.join(lines) + '\n')
-    long_lines = [l for l in text.split('\n') if len(l) > 132]
-    if long_lines:
-        raise SystemExit('generated line longer than 132 characters: ' + long_lines[0])
-    if dst == '-':
-        sys.stdout.write(text)
-    else:
-        with open(dst, 'w', encoding='ascii', newline='\n') as f:
-            f.write(text)
+    write_source(text, dst)
     return 0
 
 

@@ -16,15 +16,11 @@ if [ "${1:-}" = "-n" ]; then runs=$2; shift 2; fi
 fpm=${FPM:-$root/.venv/bin/fpm}
 flags=$(sed -n 's/^RELEASE_FLAGS := //p' "$root/Makefile")
 tmp=$(mktemp -d); trap 'rm -rf "$tmp"' EXIT
+source "$root/tools/core_package.bash"
 n=0
 for src in "$@"; do
   n=$((n + 1))
-  mkdir -p "$tmp/$n"
-  cp -r "$src" "$tmp/$n/src"
-  printf '[build]\nauto-executables = false\nauto-tests = false\nauto-examples = false\n[fortran]\n%s\n' \
-    'implicit-typing = false
-implicit-external = false
-source-form = "free"' | sed '1i name = "hertzdamp"' > "$tmp/$n/fpm.toml"
+  core_package "$tmp/$n" "$src"
 done
 for ((r = 1; r <= runs; r++)); do
   for ((i = 1; i <= n; i++)); do

@@ -15,28 +15,11 @@ release=$(sed -n 's/^RELEASE_FLAGS := //p' "$root/Makefile")
 if [ $# -gt 0 ]; then flagsets=("$@"); else flagsets=("$release" "-O2 -g -fPIC"); fi
 fpm=${FPM:-$root/.venv/bin/fpm}
 tmp=$(mktemp -d); trap 'rm -rf "$tmp"' EXIT
-mkdir -p "$tmp/ref" "$tmp/new"
-git -C "$root" archive "$ref" src | tar -x -C "$tmp/ref"
-cp -r "$root/src" "$tmp/new/"
-for side in ref new; do
-  mkdir -p "$tmp/$side/dump"
-  cp "$root/tools/fit_dump.f90" "$tmp/$side/dump/"
-  cat > "$tmp/$side/fpm.toml" <<'TOML'
-name = "hertzdamp"
-[build]
-auto-executables = false
-auto-tests = false
-auto-examples = false
-[fortran]
-implicit-typing = false
-implicit-external = false
-source-form = "free"
-[[executable]]
-name = "fit_dump"
-source-dir = "dump"
-main = "fit_dump.f90"
-TOML
-done
+mkdir -p "$tmp/refsrc"
+git -C "$root" archive "$ref" src | tar -x -C "$tmp/refsrc"
+source "$root/tools/core_package.bash"
+core_package "$tmp/ref" "$tmp/refsrc/src" "$root/tools/fit_dump.f90"
+core_package "$tmp/new" "$root/src" "$root/tools/fit_dump.f90"
 fail=0
 for flags in "${flagsets[@]}"; do
   for side in ref new; do

@@ -2,8 +2,9 @@
 !> trees side by side): the inverse (dimensionless and dimensional, one value per call and
 !> over arrays) for every law at the overlap end, and the forward map of both ends (one
 !> value per call with and without the turning point, and over arrays).  Each figure is the
-!> median of `rounds` batches over the same 100000 values (e uniform in [0.05, 0.99];
-!> alpha uniform in [0, 1.1] (overlap) or [0, 50] (force); T_c, m, u log-uniform).
+!> shortest of `rounds` batches (the least disturbed by other jobs on a shared machine)
+!> over the same 100000 values (e uniform in [0.05, 0.99]; alpha uniform in [0, 1.1]
+!> (overlap) or [0, 50] (force); T_c, m, u log-uniform).
 !> Prints one line per entry point: its name and ns per value.
 program fit_speed
     use hertzdamp_kinds, only: hertzdamp_rk
@@ -13,12 +14,15 @@ program fit_speed
     use, intrinsic :: iso_fortran_env, only: int64
     implicit none
     integer, parameter :: wp = hertzdamp_rk, n = 100000, rounds = 15
+    !> the entry points, in the order printed
+    character(len=*), parameter :: names(8) = [character(len=24) :: 'inverse scalar law', 'inverse_n law', &
+        'invert scalar law', 'invert_n law', 'forward scalar', 'forward scalar turning', 'forward_n', &
+        'forward_n turning']
     real(wp), allocatable :: e(:), tc(:), m(:), u(:), ao(:), af(:)
     real(wp), allocatable :: k(:), d(:), a(:), t(:), z(:), x(:)
     integer, allocatable :: s(:)
-    real(wp) :: times(rounds), sink
-    character(len=32) :: arg
-    integer :: law, r, i
+    real(wp) :: sink
+    integer :: law, i, ep
 
     allocate (e(n), tc(n), m(n), u(n), ao(n), af(n), k(n), d(n), a(n), t(n), z(n), x(n), s(n))
     do i = 1, n
@@ -30,85 +34,68 @@ program fit_speed
         af(i) = 50.0_wp * frac(i, 6)
     end do
     sink = 0.0_wp
-    call get_command_argument(1, arg)
-
     do law = 0, 2
-        do r = 1, rounds
-            times(r) = now()
-            do i = 1, n
-                call hertzdamp_fit_inverse(e(i), HD_END_OVERLAP, a(i), t(i), s(i), law)
-            end do
-            times(r) = now() - times(r)
-            sink = sink + a(n)
+        do ep = 1, 4
+            write (*, '(a, 1x, i0, t40, f8.2)') trim(names(ep)), law, best(ep, law, HD_END_OVERLAP, ao)
         end do
-        call report('inverse scalar law', law, times)
-        do r = 1, rounds
-            times(r) = now()
-            call hertzdamp_fit_inverse_n(n, e, HD_END_OVERLAP, a, t, s, law)
-            times(r) = now() - times(r)
-            sink = sink + a(n)
-        end do
-        call report('inverse_n law', law, times)
-        do r = 1, rounds
-            times(r) = now()
-            do i = 1, n
-                call hertzdamp_fit_invert(e(i), tc(i), m(i), u(i), HD_END_OVERLAP, k(i), d(i), a(i), t(i), s(i), law)
-            end do
-            times(r) = now() - times(r)
-            sink = sink + k(n)
-        end do
-        call report('invert scalar law', law, times)
-        do r = 1, rounds
-            times(r) = now()
-            call hertzdamp_fit_invert_n(n, e, tc, m, u, HD_END_OVERLAP, k, d, a, t, s, law)
-            times(r) = now() - times(r)
-            sink = sink + k(n)
-        end do
-        call report('invert_n law', law, times)
     end do
-    call forward(HD_END_OVERLAP, ao, 'overlap')
-    call forward(HD_END_FORCE, af, 'force')
+    do ep = 5, 8
+        write (*, '(a, t40, f8.2)') trim(names(ep)) // ' overlap', best(ep, 0, HD_END_OVERLAP, ao)
+    end do
+    do ep = 5, 8
+        write (*, '(a, t40, f8.2)') trim(names(ep)) // ' force', best(ep, 0, HD_END_FORCE, af)
+    end do
     if (sink == 42.0_wp) print *, sink
 
 contains
 
-    subroutine forward(iend, al, name)
-        integer, intent(in) :: iend
+    !> ns per value of an entry point: the shortest of `rounds` batches over the n values.
+    real(wp) function best(ep, law, iend, al)
+        integer, intent(in) :: ep, law, iend
         real(wp), intent(in) :: al(:)
-        character(len=*), intent(in) :: name
+        real(wp) :: times(rounds)
+        integer :: r
         do r = 1, rounds
             times(r) = now()
+            call batch(ep, law, iend, al)
+            times(r) = now() - times(r)
+            sink = sink + a(n) + k(n) + z(n)
+        end do
+        best = 1.0e9_wp * minval(times) / real(n, wp)
+    end function best
+
+    !> One batch of an entry point over the n values.
+    subroutine batch(ep, law, iend, al)
+        integer, intent(in) :: ep, law, iend
+        real(wp), intent(in) :: al(:)
+        integer :: i
+        select case (ep)
+        case (1)
+            do i = 1, n
+                call hertzdamp_fit_inverse(e(i), iend, a(i), t(i), s(i), law)
+            end do
+        case (2)
+            call hertzdamp_fit_inverse_n(n, e, iend, a, t, s, law)
+        case (3)
+            do i = 1, n
+                call hertzdamp_fit_invert(e(i), tc(i), m(i), u(i), iend, k(i), d(i), a(i), t(i), s(i), law)
+            end do
+        case (4)
+            call hertzdamp_fit_invert_n(n, e, tc, m, u, iend, k, d, a, t, s, law)
+        case (5)
             do i = 1, n
                 call hertzdamp_fit_forward(al(i), iend, a(i), t(i), s(i))
             end do
-            times(r) = now() - times(r)
-            sink = sink + a(n)
-        end do
-        call report('forward scalar ' // name, -1, times)
-        do r = 1, rounds
-            times(r) = now()
+        case (6)
             do i = 1, n
                 call hertzdamp_fit_forward(al(i), iend, a(i), t(i), s(i), z(i), x(i))
             end do
-            times(r) = now() - times(r)
-            sink = sink + z(n)
-        end do
-        call report('forward scalar turning ' // name, -1, times)
-        do r = 1, rounds
-            times(r) = now()
+        case (7)
             call hertzdamp_fit_forward_n(n, al, iend, a, t, s)
-            times(r) = now() - times(r)
-            sink = sink + a(n)
-        end do
-        call report('forward_n ' // name, -1, times)
-        do r = 1, rounds
-            times(r) = now()
+        case default
             call hertzdamp_fit_forward_n(n, al, iend, a, t, s, z, x)
-            times(r) = now() - times(r)
-            sink = sink + z(n)
-        end do
-        call report('forward_n turning ' // name, -1, times)
-    end subroutine forward
+        end select
+    end subroutine batch
 
     !> A number in [0, 1) from a fixed integer hash of (i, k).
     real(wp) function frac(i, k)
@@ -124,29 +111,5 @@ contains
         call system_clock(c, rate)
         now = real(c, wp) / real(rate, wp)
     end function now
-
-    subroutine report(what, law, tm)
-        character(len=*), intent(in) :: what
-        integer, intent(in) :: law
-        real(wp), intent(in) :: tm(:)
-        real(wp) :: v(size(tm)), w
-        integer :: p, q
-        v = tm
-        do p = 2, size(v)
-            w = v(p)
-            q = p - 1
-            do while (q >= 1)
-                if (v(q) <= w) exit
-                v(q + 1) = v(q)
-                q = q - 1
-            end do
-            v(q + 1) = w
-        end do
-        if (law >= 0) then
-            write (*, '(a, 1x, i0, t40, f8.2)') what, law, 1.0e9_wp * v(1) / real(n, wp)
-        else
-            write (*, '(a, t40, f8.2)') what, 1.0e9_wp * v(1) / real(n, wp)
-        end if
-    end subroutine report
 
 end program fit_speed

@@ -12,21 +12,12 @@ rounds=${2:-5}
 fpm=${FPM:-$root/.venv/bin/fpm}
 flags=$(sed -n 's/^RELEASE_FLAGS := //p' "$root/Makefile")
 tmp=$(mktemp -d); trap 'rm -rf "$tmp"' EXIT
-mkdir -p "$tmp/ref" "$tmp/new"
-git -C "$root" archive "$ref" src | tar -x -C "$tmp/ref"
-cp -r "$root/src" "$tmp/new/"
+mkdir -p "$tmp/refsrc"
+git -C "$root" archive "$ref" src | tar -x -C "$tmp/refsrc"
+source "$root/tools/core_package.bash"
+core_package "$tmp/ref" "$tmp/refsrc/src" "$root/tools/fit_speed.f90"
+core_package "$tmp/new" "$root/src" "$root/tools/fit_speed.f90"
 for side in ref new; do
-  mkdir -p "$tmp/$side/prog"
-  cp "$root/tools/fit_speed.f90" "$tmp/$side/prog/"
-  printf 'name = "hertzdamp"\n[build]\nauto-executables = false\nauto-tests = false\nauto-examples = false\n%s\n' \
-    '[fortran]
-implicit-typing = false
-implicit-external = false
-source-form = "free"
-[[executable]]
-name = "fit_speed"
-source-dir = "prog"
-main = "fit_speed.f90"' > "$tmp/$side/fpm.toml"
   (cd "$tmp/$side" && "$fpm" build --flag "$flags" >"$tmp/$side.log" 2>&1) || { tail -20 "$tmp/$side.log"; echo "fit_speed: $side build failed"; exit 2; }
   find "$tmp/$side/build" -type f -name fit_speed -perm -u+x -exec cp {} "$tmp/$side.exe" \;
 done

@@ -11,7 +11,8 @@
 !> - method `fit`: the exact derivative of the library's machine-precision approximant,
 !>   from the core (hertzdamp_fit_forward_deriv: its piecewise polynomials differentiated
 !>   and composed with the change of variable of each map, the tsuji closed forms
-!>   differentiated analytically); value and derivative belong to one function;
+!>   differentiated analytically); value and derivative belong to one function; beyond
+!>   the fitted maps (e < 1e-5, the force end beyond the fit's alpha) as with `rk45`;
 !> - method `rk45` (for checking): differences of the reference integrator, central
 !>   with steps h = 1e-4 max(alpha, 1e-2) and h/2 and Richardson extrapolation
 !>   (one-sided near a limit of the law); the optimum of a fit does not depend on
@@ -21,7 +22,7 @@
 module hertzdamp_calibrate_maps
     use hertzdamp_kinds, only: hertzdamp_rk
     use hertzdamp_status, only: HD_OK, HD_NO_REBOUND, HD_BAD_END, HD_BAD_ALPHA, &
-                                HD_END_OVERLAP, HD_END_FORCE, HD_BAD_ARGUMENT
+                                HD_END_OVERLAP, HD_END_FORCE, HD_BAD_ARGUMENT, HD_OUTSIDE_VALIDITY
     use hertzdamp_methods, only: HD_METHOD_FIT, HD_METHOD_RK45, hertzdamp_forward_alpha
     use hertzdamp_rk45, only: hertzdamp_collision, hertzdamp_rk45_default_tol
     use hertzdamp_laws, only: CAL_LAW_LINEAR => HD_DAMPING_LINEAR, CAL_LAW_TSUJI => HD_DAMPING_TSUJI, &
@@ -56,9 +57,10 @@ contains
     end function cal_law_supported
 
     !> e, tau_c and their derivatives in alpha for one law, contact end and method.
-    !> status HD_OK; HD_NO_REBOUND (overlap, alpha >= alpha_c of the law), the fit's
-    !> HD_OUTSIDE_VALIDITY (e < 1e-5) and every other failure give zero outputs.
-    !> tol: rk45 tolerance (default 1e-13).
+    !> With method fit, alpha beyond the fitted maps (e < 1e-5, or the force end beyond
+    !> the fit's alpha) is computed as with method rk45.  status HD_OK; HD_NO_REBOUND
+    !> (overlap, alpha >= alpha_c of the law) and every other failure (the reference
+    !> integrator's too) give zero outputs.  tol: rk45 tolerance (default 1e-13).
     pure elemental subroutine cal_forward(law, iend, method, alpha, e, tau_c, de, dtau, status, tol)
         integer, intent(in) :: law            !! CAL_LAW_*
         integer, intent(in) :: iend           !! HD_END_OVERLAP or HD_END_FORCE
@@ -89,6 +91,9 @@ contains
         if (present(tol)) tol_ = tol
         if (method == HD_METHOD_FIT) then
             call hertzdamp_fit_forward_deriv(alpha, iend, law, e, tau_c, de, dtau, status)
+            ! beyond the fitted maps (e < 1e-5, force alpha beyond the fit's range): the
+            ! reference integrator, so that data there are fitted as well, not avoided
+            if (status == HD_OUTSIDE_VALIDITY) call rk45_differences(law, alpha, iend, tol_, e, tau_c, de, dtau, status)
         else
             call rk45_differences(law, alpha, iend, tol_, e, tau_c, de, dtau, status)
         end if

@@ -44,8 +44,9 @@ module hertzdamp_cli_help
         'without a result keeps its inputs; its results are empty (csv), null (json)' // nl // &
         'or - (text), as are quantities a method does not give.' // nl // &
         'Exit: 0 when every row has a result; 3 when some have none (all rows are' // nl // &
-        'printed, and one line on stderr says how many and why); when none has one,' // nl // &
-        'nothing on stdout, one line on stderr, exit 2 (bad input), 3 or 4 (failed).'
+        'printed, and one line on stderr says how many and why), 4 if a computation of' // nl // &
+        'one of them failed; when none has one, nothing on stdout, one line on stderr,' // nl // &
+        'exit 2 (bad input), 3 or 4 (failed).'
 
     character(len=*), parameter :: method_help = &
         '  --damping LAW         damping force d zeta^q zeta'': linear (q = 0, default; d in' // nl // &
@@ -115,7 +116,8 @@ module hertzdamp_cli_help
         '                        with n the unit vector from body 1 to body 2 [m s^-1].' // nl // &
         '  e                     restitution: normal separation speed / approach speed.' // nl // &
         '' // nl // &
-        'Exit codes: 0 success, 2 bad usage, 3 no solution, 4 computation failed.' // nl // &
+        'Exit codes: 0 success, 2 bad usage, 3 no solution, 4 computation failed (also' // nl // &
+        'when some rows of a table have a result and the computation of another failed).' // nl // &
         'Errors go to stderr as one line (the last, after the lines --progress writes' // nl // &
         'into a file or pipe); stdout is then empty, except for commands that print one' // nl // &
         'row per value, where rows with a result still print (see their --help).' // nl // &

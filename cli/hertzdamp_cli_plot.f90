@@ -34,7 +34,7 @@
 module hertzdamp_cli_plot
     use, intrinsic :: iso_c_binding, only: c_char, c_int, c_null_char, c_funptr, c_funloc, c_ptr, c_loc, &
                                            c_null_ptr, c_intptr_t, c_long
-    use hertzdamp_cli, only: fail, cli_line, EXIT_USAGE, EXIT_FAILURE
+    use hertzdamp_cli, only: fail, cli_line, EXIT_USAGE, EXIT_FAILURE, c_signal
     use hertzdamp_cli_text, only: itoa
     use, intrinsic :: iso_fortran_env, only: int64
     implicit none
@@ -124,13 +124,6 @@ module hertzdamp_cli_plot
             integer(c_int), value :: sig
             integer(c_int) :: rc
         end function c_raise
-        function c_signal(sig, handler) bind(C, name='signal') result(previous)
-            import :: c_int, c_funptr
-            implicit none
-            integer(c_int), value :: sig
-            type(c_funptr), value :: handler
-            type(c_funptr) :: previous
-        end function c_signal
         function c_sigfillset(set) bind(C, name='sigfillset') result(rc)
             import :: c_long, c_int
             implicit none
@@ -572,12 +565,12 @@ contains
         type(c_ptr) :: argv(7)
         integer(c_long) :: all_signals(16), old_mask(16)
         integer(c_int) :: pid, rc, status
-        sh = c_str('/bin/sh')
-        a0 = c_str('sh')
-        a1 = c_str('-c')
-        a2 = c_str('exec gnuplot "$1" >/dev/null 2>"$2"')
-        a3 = c_str(script)
-        a4 = c_str(errfile)
+        allocate (sh, source=c_str('/bin/sh'))
+        allocate (a0, source=c_str('sh'))
+        allocate (a1, source=c_str('-c'))
+        allocate (a2, source=c_str('exec gnuplot "$1" >/dev/null 2>"$2"'))
+        allocate (a3, source=c_str(script))
+        allocate (a4, source=c_str(errfile))
         ! sh -c CMD sh SCRIPT ERRFILE: the names are $1 and $2, no quoting needed
         argv = [c_loc(a0), c_loc(a1), c_loc(a2), c_loc(a0), c_loc(a3), c_loc(a4), c_null_ptr]
         es = -1

@@ -33,32 +33,14 @@
 module hertzdamp_cli_progress
     use hertzdamp_kinds, only: hertzdamp_rk
     use, intrinsic :: iso_fortran_env, only: error_unit, int64
-    use, intrinsic :: iso_c_binding, only: c_int, c_funptr, c_intptr_t, c_char, c_size_t, c_long
-    use hertzdamp_cli, only: stderr_is_terminal
+    use, intrinsic :: iso_c_binding, only: c_int, c_funptr, c_intptr_t, c_size_t, c_long
+    ! write(2): a report goes to stderr unbuffered, and a failed write is seen (the
+    ! Fortran runtime does not report EPIPE on the error unit, and retries it)
+    use hertzdamp_cli, only: stderr_is_terminal, c_write, c_signal
     implicit none
     private
 
     integer, parameter :: wp = hertzdamp_rk
-
-    interface
-        !> POSIX write(2): a report goes to stderr unbuffered, and a failed write is seen
-        !> (the Fortran runtime does not report EPIPE on the error unit, and retries it).
-        function c_write(fd, buf, n) bind(C, name='write') result(written)
-            import :: c_int, c_char, c_size_t, c_long
-            implicit none
-            integer(c_int), value :: fd
-            integer(c_size_t), value :: n
-            character(kind=c_char), intent(in) :: buf(n)
-            integer(c_long) :: written
-        end function c_write
-        function c_signal(sig, handler) bind(C, name='signal') result(previous)
-            import :: c_int, c_funptr
-            implicit none
-            integer(c_int), value :: sig
-            type(c_funptr), value :: handler
-            type(c_funptr) :: previous
-        end function c_signal
-    end interface
 
     !> SIGPIPE on Linux.
     integer(c_int), parameter :: sigpipe = 13

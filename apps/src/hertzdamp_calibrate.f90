@@ -40,7 +40,8 @@
 !> Nothing is printed and nothing stops: a status (CAL_*) and a one-line message.
 module hertzdamp_calibrate
     use hertzdamp_kinds, only: hertzdamp_rk
-    use hertzdamp_status, only: HD_OK, HD_END_OVERLAP, HD_END_FORCE
+    use hertzdamp_status, only: HD_OK, HD_END_OVERLAP, HD_END_FORCE, HD_OUTSIDE_VALIDITY
+    use hertzdamp_fit_laws, only: hertzdamp_fit_forward_deriv
     use hertzdamp_methods, only: HD_METHOD_FIT, HD_METHOD_RK45
     use hertzdamp_rk45, only: hertzdamp_rk45_default_tol
     use hertzdamp_inverse, only: hertzdamp_invert_alpha
@@ -321,11 +322,13 @@ contains
 
     !> Residuals and Jacobian at theta = (ln A[, ln k]).  Rows: e of every
     !> measurement, then tc of the rows that have one (when k is known or fitted).
-    pure subroutine evaluate(dat, law, opts, use_tc, theta, lnk_fixed, we, wt, r, jac, alpha, efit, tcfit, status)
+    pure subroutine evaluate(dat, law, opts, use_tc, beyond, theta, lnk_fixed, we, wt, r, jac, alpha, efit, tcfit, &
+                             status)
         type(cal_data), intent(in) :: dat
         integer, intent(in) :: law
         type(cal_options), intent(in) :: opts
         logical, intent(in) :: use_tc
+        logical, intent(in) :: beyond(:)   !! per row: the reference integrator beyond the fitted maps
         real(wp), intent(in) :: theta(:), lnk_fixed, we(:), wt(:)
         real(wp), intent(out) :: r(:), jac(:, :), alpha(:), efit(:), tcfit(:)
         integer, intent(out) :: status
@@ -347,7 +350,7 @@ contains
             la = theta(1) + s * log(dat%u(i))
             if (abs(la) > ln_limit) return
             alpha(i) = exp(la)
-            call cal_forward(law, opts%iend, opts%method, alpha(i), e, tau, de, dtau, st, opts%tol)
+            call cal_forward(law, opts%iend, opts%method, alpha(i), e, tau, de, dtau, st, opts%tol, beyond(i))
             if (st /= HD_OK) return
             efit(i) = e
             r(i) = (dat%e(i) - e) * we(i)
@@ -419,6 +422,22 @@ contains
         end function above
     end function alpha_of_e
 
+    !> True when alpha, or up to twice it, lies beyond the fitted forward maps of the
+    !> law and end (e < 1e-5, the force end beyond the fit's alpha): a measurement whose
+    !> own alpha is there needs the reference integrator in the model.
+    pure logical function beyond_maps(law, iend, alpha) result(beyond)
+        integer, intent(in) :: law, iend
+        real(wp), intent(in) :: alpha
+        real(wp) :: e, tau, de, dtau
+        integer :: j, st
+        beyond = .false.
+        if (.not. (alpha > 0.0_wp)) return
+        do j = 0, 2
+            call hertzdamp_fit_forward_deriv(alpha * (1.0_wp + 0.5_wp * j), iend, law, e, tau, de, dtau, st)
+            beyond = beyond .or. st == HD_OUTSIDE_VALIDITY
+        end do
+    end function beyond_maps
+
     !> Why the model cannot be evaluated at the starting point theta: a parameter
     !> beyond what the fit accepts (|ln| <= ln_limit; the contact times set k, so
     !> contact times in the wrong unit show here), alpha beyond it at a measured speed,
@@ -461,12 +480,15 @@ contains
     !> The starting point: ln A from the mean of ln(alpha_i u_i^-s) over the rows with
     !> e < 1 (alpha_i inverts e_i), ln k from the mean of the k that gives each contact
     !> time with that A (the algebraic inverse of hertzdamp invert).
-    pure subroutine start_point(dat, law, opts, use_tc, fit_k, theta, status, message)
+    pure subroutine start_point(dat, law, opts, use_tc, fit_k, theta, beyond, status, message)
         type(cal_data), intent(in) :: dat
         integer, intent(in) :: law
         type(cal_options), intent(in) :: opts
         logical, intent(in) :: use_tc, fit_k
         real(wp), intent(out) :: theta(:)
+        !> per row: the row's own alpha (or up to twice it) lies beyond the fitted maps, so
+        !> the model uses the reference integrator there (method fit)
+        logical, intent(out) :: beyond(:)
         integer, intent(out) :: status
         character(len=:), allocatable, intent(out) :: message  !! why there is none ('' with one)
         real(wp) :: s, sum_a, sum_k, a, e, tau, de, dtau, tstar
@@ -478,8 +500,10 @@ contains
         message = 'no measured e that the law reaches'
         sum_a = 0.0_wp
         na = 0
+        beyond = .false.
         do i = 1, size(dat%u)
             a = alpha_of_e(law, opts, dat%e(i))
+            beyond(i) = beyond_maps(law, opts%iend, a)
             if (a > 0.0_wp) then
                 sum_a = sum_a + log(a) - s * log(dat%u(i))
                 na = na + 1
@@ -493,7 +517,7 @@ contains
             ok = .true.
             do i = 1, size(dat%u)
                 call cal_forward(law, opts%iend, opts%method, exp(theta(1) + s * log(dat%u(i))), e, tau, de, dtau, &
-                                 st, opts%tol)
+                                 st, opts%tol, beyond(i))
                 ok = ok .and. st == HD_OK
             end do
             if (ok) exit
@@ -510,7 +534,7 @@ contains
             do i = 1, size(dat%u)
                 if (.not. dat%has_tc(i)) cycle
                 call cal_forward(law, opts%iend, opts%method, exp(theta(1) + s * log(dat%u(i))), e, tau, de, dtau, &
-                                 st, opts%tol)
+                                 st, opts%tol, beyond(i))
                 tstar = dat%tc(i) / tau
                 ! k = m t*^(-5/2) u^(-1/2)
                 sum_k = sum_k + log(opts%mass) - 2.5_wp * log(tstar) - 0.5_wp * log(dat%u(i))
@@ -583,6 +607,7 @@ contains
         real(wp) :: q, bm, bk, stepmax, sd(2), gn_last, ln_sd(3), dir(2, 3), var_lnd
         integer :: n, nobs, np, st, info, it, inner, i, j
         logical :: use_tc, fit_k, accepted, polishing, full_rank, stalled
+        logical, allocatable :: beyond(:)
         character(len=:), allocatable :: msg
         character(len=32) :: b
 
@@ -619,13 +644,13 @@ contains
         res%dof = nobs - np
         res%k_fitted = fit_k
         res%kd_known = fit_k .or. o%k_known > 0.0_wp
-        allocate (we(n), wt(n), r(nobs), jac(nobs, np), rn(nobs), jn(nobs, np), u(nobs, np), alpha(n), efit(n), &
+        allocate (beyond(n), we(n), wt(n), r(nobs), jac(nobs, np), rn(nobs), jn(nobs, np), u(nobs, np), alpha(n), efit(n), &
                   tcfit(n), an(n), en(n), tn(n), theta(np), tn_(np), g(np), step(np), gn(np), pred_r(nobs))
         call weights(dat, we, wt)
 
-        call start_point(dat, law, o, use_tc, fit_k, theta, st, msg)
+        call start_point(dat, law, o, use_tc, fit_k, theta, beyond, st, msg)
         if (st == CAL_OK) then
-            call evaluate(dat, law, o, use_tc, theta, lnk_fixed, we, wt, r, jac, alpha, efit, tcfit, st)
+            call evaluate(dat, law, o, use_tc, beyond, theta, lnk_fixed, we, wt, r, jac, alpha, efit, tcfit, st)
             if (st /= CAL_OK) msg = start_failure(dat, law, theta, fit_k)
         end if
         if (st /= CAL_OK) then
@@ -666,7 +691,7 @@ contains
                     ! converged: apply the last Gauss-Newton correction too (the sum of
                     ! squares may no longer resolve it, the correction itself is exact)
                     tn_ = theta - gn
-                    call evaluate(dat, law, o, use_tc, tn_, lnk_fixed, we, wt, rn, jn, an, en, tn, st)
+                    call evaluate(dat, law, o, use_tc, beyond, tn_, lnk_fixed, we, wt, rn, jn, an, en, tn, st)
                     if (st == CAL_OK) then
                         call scaled_svd(jn, colnorm(1:np), u, sv(1:np), vt(1:np, 1:np), info)
                         if (info == 0) then
@@ -695,7 +720,7 @@ contains
                     tn_ = theta + step
                     pred_r = r + matmul(jac, step)
                     pred = cost - sum(pred_r**2)
-                    call evaluate(dat, law, o, use_tc, tn_, lnk_fixed, we, wt, rn, jn, an, en, tn, st)
+                    call evaluate(dat, law, o, use_tc, beyond, tn_, lnk_fixed, we, wt, rn, jn, an, en, tn, st)
                     rho = -1.0_wp
                     if (st == CAL_OK .and. pred > 0.0_wp) then
                         cost_new = sum(rn**2)
@@ -721,7 +746,7 @@ contains
             if (.not. accepted .and. full_rank) then
                 if (res%gn_step < 0.5_wp * gn_last .and. res%gn_step <= polish_max) then
                     tn_ = theta - gn
-                    call evaluate(dat, law, o, use_tc, tn_, lnk_fixed, we, wt, rn, jn, an, en, tn, st)
+                    call evaluate(dat, law, o, use_tc, beyond, tn_, lnk_fixed, we, wt, rn, jn, an, en, tn, st)
                     accepted = st == CAL_OK
                     if (accepted) cost_new = sum(rn**2)
                     polishing = accepted

@@ -14,7 +14,8 @@
 # What a minimal root lacks and a real machine has, provided here:
 #   /proc, /sys, /dev (devtmpfs), /dev/pts and /dev/shm (a tmpfs: MPI's shared memory)
 #   are mounted for the run and unmounted on exit, also on failure or a signal;
-#   the host's apt sources (its mirror) and its Acquire settings, /etc/resolv.conf;
+#   the host's apt sources (its mirror) and its Acquire settings, /etc/resolv.conf,
+#   and /etc/hosts as the Debian installer writes it (localhost, the machine's name);
 #   what pip is configured with on the host (pip config, PIP_* variables, the CA
 #   bundle and files they name), so that PyPI is reachable the same way.
 # No locale is set: a fresh root has none (the POSIX locale), and make test must pass
@@ -103,6 +104,12 @@ fi
 apt-config dump 2>/dev/null | grep -E '^Acquire::(https?::Proxy|Check-Valid-Until|Check-Date) ' \
   >"$root/etc/apt/apt.conf.d/99fresh-debian-host" || true
 cp -L /etc/resolv.conf "$root/etc/resolv.conf" 2>/dev/null || true
+# /etc/hosts as the Debian installer writes it (debootstrap writes none): without it
+# localhost and the machine's name go to DNS, and every MPI start waits for the answer
+if [ ! -s "$root/etc/hosts" ]; then
+  printf '127.0.0.1\tlocalhost\n127.0.1.1\t%s\n::1\tlocalhost ip6-localhost ip6-loopback\n' \
+    "$(cat "$root/etc/hostname" 2>/dev/null || hostname)" >"$root/etc/hosts"
+fi
 # pip: the host's settings, and the files they name (a CA bundle, a wheel directory).
 pipenv=()
 {

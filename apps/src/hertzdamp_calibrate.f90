@@ -695,12 +695,7 @@ contains
                     if (st == CAL_OK) then
                         call scaled_svd(jn, colnorm(1:np), u, sv(1:np), vt(1:np, 1:np), info)
                         if (info == 0) then
-                            theta = tn_
-                            r = rn
-                            jac = jn
-                            alpha = an
-                            efit = en
-                            tcfit = tn
+                            call take_trial()
                             cost = sum(r**2)
                         else
                             call scaled_svd(jac, colnorm(1:np), u, sv(1:np), vt(1:np, 1:np), info)
@@ -755,12 +750,7 @@ contains
             end if
             stalled = .not. accepted
             if (stalled) exit
-            theta = tn_
-            r = rn
-            jac = jn
-            alpha = an
-            efit = en
-            tcfit = tn
+            call take_trial()
             cost = cost_new
         end do
         res%alpha = alpha
@@ -853,6 +843,16 @@ contains
                        ': the data are far from the ' // cal_law_name(law) // ' law (see the residuals)')
         end if
         res%status = CAL_OK
+    contains
+        !> The trial point (tn_ and what evaluate gave there) becomes the current one.
+        subroutine take_trial()
+            theta = tn_
+            r = rn
+            jac = jn
+            alpha = an
+            efit = en
+            tcfit = tn
+        end subroutine take_trial
     end subroutine cal_fit
 
     !> Fit every law and choose the one with the smallest AIC among the fits that

@@ -56,7 +56,7 @@ $(VENV)/bin/ford: $(FPM)
 
 # Python modules the tests import beyond the standard library (a fresh Debian has
 # none of them; the tests run with .venv's python, HERTZDAMP_PYTHON): PyYAML for
-# test/cli_docs.sh (CITATION.cff).
+# test/docs/cli_docs.sh (CITATION.cff).
 TEST_PY_MODULES := PyYAML==6.0.2
 $(VENV)/.test-modules: $(FPM) Makefile
 	$(VENV)/bin/pip install -q $(TEST_PY_MODULES)

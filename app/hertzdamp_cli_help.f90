@@ -212,7 +212,13 @@ module hertzdamp_cli_help
         'resolves it with N steps is dt_max = tc_damped / N.  Next to it, the elastic' // nl // &
         'Hertz estimate most DEM codes use, T_c = 2.868 (m*^2 / (R* E*^2 u_in))^(1/5) =' // nl // &
         'tau_c(0) t*: elastic_excess = tc_elastic / tc_damped - 1 says how much longer' // nl // &
-        '(> 0) or shorter (< 0) it is than the damped contact.' // nl // &
+        '(> 0) or shorter (< 0) it is than the damped contact.  With the spheres'' radii,' // nl // &
+        'densities and elastic constants, also the Rayleigh time step of codes that do' // nl // &
+        'not look at the impact speed (EDEM; LIGGGHTS fix check/timestep/gran):' // nl // &
+        't_rayleigh = pi R / v_R, v_R = (0.1631 nu + 0.8766) sqrt(G/rho), G = E/(2(1+nu))' // nl // &
+        '(the usual fit of the Rayleigh wave speed, within 0.3 % for 0 <= nu <= 0.5;' // nl // &
+        'the smaller sphere''s), and dt_rayleigh = 0.2 t_rayleigh, the usual fraction' // nl // &
+        '(EDEM: 20 %, range 10 to 40 %).' // nl // &
         '' // nl // &
         '  --e LIST              restitution coefficients of the material pair [-]' // nl // &
         '  --velocity LIST       relative normal impact velocities u_in [m s^-1]' // nl // &
@@ -222,7 +228,8 @@ module hertzdamp_cli_help
         '' // nl // &
         'Columns: e, steps, velocity_max [m s^-1], mass [kg], radius_eff [m], k_phys,' // nl // &
         'alpha, tau_c [-], tc_damped [s], tc_elastic [s], elastic_excess [-],' // nl // &
-        'dt_max [s], dt_elastic [s] (tc_elastic / N), status.' // nl // &
+        'dt_max [s], dt_elastic [s] (tc_elastic / N), t_rayleigh [s], dt_rayleigh [s]' // nl // &
+        '(empty without the materials), status.' // nl // &
         '' // nl // list_syntax // nl // nl // status_help
 
     character(len=*), parameter :: bench = &

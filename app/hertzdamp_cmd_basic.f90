@@ -135,7 +135,8 @@ contains
         call contact_table(t, c, ct, 'k,d,velocity,mass,radius_eff,k_phys,alpha,t_star,e,t_c,zeta_max,status', &
                            'k, k_phys [N m^-3/2], d [' // damping_unit(c%law) // '], velocity [m/s], mass [kg], ' // &
                            'radius_eff [m], ' // &
-                           't_star [s], t_c [s], zeta_max [m]')
+                           't_star [s], t_c [s], zeta_max [m]', &
+                           'N m^-3/2,' // damping_unit(c%law) // ',m/s,kg,m,N m^-3/2,,s,,s,m,')
         n = 0
         call p%start(real(size(ks) * size(ds) * size(us), wp), 'forward', force=args%has('--progress'))
         do ik = 1, size(ks)

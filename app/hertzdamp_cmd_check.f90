@@ -162,7 +162,8 @@ contains
             call progress%update(real(i, wp))
         end do
         call progress%finish()
-        call t%set_columns('velocity,alpha,e,e_error,t_c,t_attractive,dt_max,t_hertz,t_peer,corrected,method,status')
+        call t%set_columns('velocity,alpha,e,e_error,t_c,t_attractive,dt_max,t_hertz,t_peer,corrected,method,status', &
+                           'm/s,,,,s,s,s,s,s,,,')
         nfail = 0
         first_fail = 0
         do i = 1, size(pt)

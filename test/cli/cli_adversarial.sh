@@ -41,13 +41,13 @@ if fmt == "json":
 elif fmt == "csv":
     rows = list(csv.DictReader(io.StringIO(text)))
 else:
-    lines = text.splitlines()
-    for l in lines:
-        if l.startswith("#") and re.search(r"\b(nan|inf|infinity)\b", l, re.I):
-            bad.append(l[:160])
-    body = [l for l in lines if not l.startswith("#")]
-    head = body[0].split()
-    rows = [dict(zip(head, l.split())) for l in body[1:]]
+    import hertzdamp_text   # columns that never change are the rows' cells, not comments
+    rows = []
+    for t in hertzdamp_text.tables(text):
+        for k, v in t.meta.items():
+            if re.search(r"\b(nan|inf|infinity)\b", v, re.I):
+                bad.append(f"{k}: {v[:160]}")
+        rows += t.rows
 for r in rows:
     for k, v in r.items():
         cell(r, k, v)

@@ -167,8 +167,9 @@ lines = [l for l in text.splitlines() if not l.startswith("#")]
 if fmt == "csv":
     rows = list(csv.DictReader(io.StringIO("\n".join(lines))))
 else:
-    head = lines[0].split(); rows = [dict(zip(head, l.split())) for l in lines[1:]]
-    if re.search(r"\b(nan|inf|infinity)\b", "".join(l for l in text.splitlines() if l.startswith("#")), re.I):
+    import hertzdamp_text   # the metadata must be finite; columns that never change are rows' cells
+    t = hertzdamp_text.tables(text)[0]; rows = t.rows
+    if re.search(r"\b(nan|inf|infinity)\b", " ".join(t.meta.values()), re.I):
         sys.exit(1)
 for r in rows:
     for k, v in r.items():

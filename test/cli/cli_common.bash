@@ -3,6 +3,8 @@
 set -u
 BIN=${HERTZDAMP_BIN:?HERTZDAMP_BIN must point to the hertzdamp executable}
 PASSED=0; FAILED=0
+# hertzdamp_text.py (beside this file) reads the text output back: `import hertzdamp_text`
+export PYTHONPATH="$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)${PYTHONPATH:+:$PYTHONPATH}"
 OUT=$(mktemp); ERR=$(mktemp)
 trap 'rm -f "$OUT" "$ERR"' EXIT
 

@@ -13,6 +13,7 @@ reproduces) and assert the output contract:
 Prints `cli_fuzz: P passed, F failed`."""
 import json
 import os
+import hertzdamp_text
 import random
 import re
 import subprocess
@@ -101,7 +102,7 @@ def statuses(out, fmt):
             head = lines[0].split(",")
             k = head.index("status")
             return [l.split(",")[k] for l in lines[1:]]
-        return [l.split()[-1] for l in lines[1:]]
+        return [r["status"] for r in hertzdamp_text.rows(out)]
     except (ValueError, KeyError, IndexError, TypeError):
         return None
 

@@ -21,6 +21,13 @@ module hertzdamp_cli_help
         'combination of the lists, at most 10000 rows.  CSV and JSON numbers read back' // nl // &
         'as the same double (16 significant digits, 17 where needed).'
 
+    character(len=*), parameter :: quiet_help = &
+        '  --quiet               no warnings on stderr about values outside what granular' // nl // &
+        '                        materials have, most often a unit slip: E outside 1e5 to' // nl // &
+        '                        1e13 Pa, R outside 1e-7 to 1 m, RHO outside 10 to 3e4' // nl // &
+        '                        kg m^-3, impact speeds above 1e3 m s^-1 (the results are' // nl // &
+        '                        printed all the same)'
+
     character(len=*), parameter :: contact_help = &
         'Contact (definitions: hertzdamp --help):' // nl // &
         '  --mass M              effective mass m* [kg]; or from the materials:' // nl // &
@@ -33,7 +40,8 @@ module hertzdamp_cli_help
         '  --wall                body 2 is a wall: infinite radius and mass (m* = m,' // nl // &
         '                        R* = R); its E and NU from --youngs-modulus2 and' // nl // &
         '                        --poisson-ratio2, by default sphere 1''s' // nl // &
-        '  --k-phys K            physical stiffness [N m^-3/2] instead of E and NU'
+        '  --k-phys K            physical stiffness [N m^-3/2] instead of E and NU' // nl // &
+        quiet_help
 
     character(len=*), parameter :: status_help = &
         'Status of a row: ok; no-rebound (a result: the overlap never returns to zero,' // nl // &
@@ -367,6 +375,7 @@ module hertzdamp_cli_help
         '  --plot FILE     the data with error bars and the fitted e(u), T_c(u) of each law' // nl // &
         '                  (PNG, gnuplot; checked before any work: no gnuplot -> exit 4,' // nl // &
         '                  not a regular file, not writable, or the data file -> exit 2)' // nl // &
+        '  --quiet         no warnings about implausible R, RHO, E or file speeds (as invert)' // nl // &
         '  --help          this text' // nl // &
         '' // nl // &
         'Weights: 1/sigma when the sigma columns are given (then chi2/dof and its p-value);' // nl // &
@@ -430,6 +439,7 @@ module hertzdamp_cli_help
         '                   (28 Mar 2023 - 29 Aug 2024) or current (default)' // nl // &
         '  --format F       text (default), csv or json' // nl // &
         '  --progress       progress on stderr (default: on a terminal, after 2 s)' // nl // &
+        '  --quiet          no warnings about implausible R, RHO or U (as invert --help)' // nl // &
         '  --table          the table of every engine''s formula and the e it achieves for' // nl // &
         '                   the targets 0.1 ... 0.9 (markdown; doc/peers.md)' // nl // &
         '' // nl // &

@@ -15,6 +15,7 @@ module hertzdamp_cmd_calibrate
     use hertzdamp_cli_text, only: g => fmt_text_short, itoa, one_line
     use hertzdamp_cli_materials, only: cli_contact, parse_contact, require_mass, contact_options, contact_flags
     use hertzdamp_cli_model, only: damping_unit
+    use hertzdamp_cli_plausible, only: warn_implausible, warn_value, quiet_flag
     implicit none
     private
     public :: cmd_calibrate
@@ -55,8 +56,8 @@ contains
         integer, allocatable :: order(:)
         type(cli_buffer) :: buf
         if (wants_help()) call print_help('calibrate')
-        call parse_args(2, '--damping --end --method --tol --format --plot ' // contact_options, contact_flags, args, &
-                        allow_positional=.true.)
+        call parse_args(2, '--damping --end --method --tol --format --plot ' // contact_options, &
+                        contact_flags // ' ' // quiet_flag, args, allow_positional=.true.)
         if (.not. allocated(args%positional)) call fail(EXIT_USAGE, 'missing data file (see --help)')
         file = args%positional
         call parse_contact(args, ct)
@@ -84,6 +85,9 @@ contains
         if (ct%has_kphys .and. .not. any(dat%has_tc)) o%k_known = ct%k_phys
         call cal_check(dat, o, st, msg)
         if (st /= CAL_OK) call fail(exit_of(st), file // ': ' // msg)
+        call warn_implausible(args)
+        call warn_value('--velocity', maxval(dat%u), g(maxval(dat%u)), args%has(quiet_flag), typed=.false., &
+                        name=file // ': velocity')
 
         if (law < 0) then
             call cal_auto(dat, o, res, chosen)

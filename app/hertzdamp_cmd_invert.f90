@@ -13,6 +13,7 @@ module hertzdamp_cmd_invert
     use hertzdamp_cli_rows, only: row_log, row_kind, row_word, row_has_result, ROW_OUTSIDE_VALIDITY, ROW_OUT_OF_RANGE
     use hertzdamp_cli_materials, only: cli_contact, parse_contact, require_mass, contact_table, contact_options, contact_flags
     use hertzdamp_cli_progress, only: progress_reporter
+    use hertzdamp_cli_plausible, only: warn_implausible, quiet_flag
     use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
     implicit none
     private
@@ -37,7 +38,7 @@ contains
         allocate (es(0), tcs(0), us(0), tc_dt(0), tc_steps(0))   ! (defined descriptors for the reallocating assignments)
         if (wants_help()) call print_help('invert')
         call parse_args(2, '--e --tc --dt --steps --velocity ' // contact_options // ' ' // model_options, &
-                        contact_flags // ' --progress', args)
+                        contact_flags // ' --progress ' // quiet_flag, args)
         call parse_model(args, c, inverse=.true.)
         call parse_contact(args, ct)
         es = required_sweep(args, '--e')
@@ -45,6 +46,7 @@ contains
         us = required_sweep(args, '--velocity')
         call require_mass(ct)
         call check_combinations([size(es), size(tcs), size(us)], '--e, the contact times and --velocity')
+        call warn_implausible(args)
         call contact_table(t, c, ct, 'e,tc,velocity,mass,radius_eff,k_phys,alpha,tau_c,t_star,k,d,bound_active,' // &
                            'tc_actual,status', 'tc, t_star, tc_actual [s], velocity [m/s], mass [kg], radius_eff [m], ' // &
                            'k, k_phys [N m^-3/2], d [' // damping_unit(c%law) // ']', &
@@ -206,7 +208,8 @@ contains
         type(row_log) :: rows
         allocate (es(0), us(0), steps(0))
         if (wants_help()) call print_help('timestep')
-        call parse_args(2, '--e --velocity --steps ' // contact_options // ' ' // model_options, contact_flags, args)
+        call parse_args(2, '--e --velocity --steps ' // contact_options // ' ' // model_options, &
+                        contact_flags // ' ' // quiet_flag, args)
         call parse_model(args, c, inverse=.true.)
         call parse_contact(args, ct)
         call require_mass(ct)
@@ -216,6 +219,7 @@ contains
         us = required_sweep(args, '--velocity')
         steps = parse_steps(args, 10.0_wp)
         call check_combinations([size(es), size(steps)], '--e and --steps')
+        call warn_implausible(args)
         ! the time unit t* and the elastic Hertz time at every velocity; both fall as u^(-1/5)
         tmin = huge(1.0_wp)
         thertz = huge(1.0_wp)

@@ -126,7 +126,7 @@ check "the method line counts the rows of each method" grep -q '^# method: fit .
 # result, 3 or 4 with the table and one line on stderr when some have none, nothing on
 # stdout when none has)
 run check lammps "hertz/material 1e8 0.5 0.3 damping viscoelastic" --radius 1e-3 --density 2500 --velocity 1,1e100 \
-  --e 0.5 --format csv
+  --e 0.5 --format csv --quiet
 check "a speed whose computation fails (rk45 step limit): exit 4, the table, one line naming --velocity 1e100" \
   test "$RC" -eq 4 -a "$(wc -l <"$OUT")" -eq 3 -a "$(wc -l <"$ERR")" -eq 1 -a "$(grep -c -- '--velocity 1e100' "$ERR")" -eq 1
 check "the failed row: status failed, results empty" test "$(col status 2),$(col e 2),$(col t_c 2)" = "failed,,"

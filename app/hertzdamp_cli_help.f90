@@ -182,7 +182,7 @@ module hertzdamp_cli_help
         'Usage: hertzdamp invert --e LIST (--tc LIST | --dt LIST --steps LIST)' // nl // &
         '                        --velocity LIST (--mass M | --radius R --density RHO ...)' // nl // &
         '                        [--k-phys K | --youngs-modulus E --poisson-ratio NU]' // nl // &
-        '                        [options]' // nl // &
+        '                        [--fixed] [options]' // nl // &
         '' // nl // &
         'The inverse rule of the adaptive collision time model: the stiffness k and' // nl // &
         'damping d that give a contact with effective mass m*, hit at relative normal' // nl // &
@@ -199,6 +199,18 @@ module hertzdamp_cli_help
         '  --steps LIST          time steps per contact N (whole numbers): T_c = N dt;' // nl // &
         '                        N dt beyond double precision: out-of-range' // nl // &
         '  --velocity LIST       relative normal impact velocity u_in [m s^-1]' // nl // &
+        '  --fixed               one k and d for every contact, for engines that cannot set' // nl // &
+        '                        them per contact: over the range of the --velocity list' // nl // &
+        '                        the worst |e_fixed/e - 1| as small as one pair makes it' // nl // &
+        '                        (equal and opposite at the slowest and fastest impact),' // nl // &
+        '                        and the shortest contact of the range lasting T_c (every' // nl // &
+        '                        contact then takes at least --steps steps of --dt); with' // nl // &
+        '                        k_phys below that k, k = k_phys.  Uses the fitted forward' // nl // &
+        '                        maps (rk45 beyond them): no --method, --tol, --accuracy.' // nl // &
+        '                        Columns: e, tc, velocity, mass, radius_eff, k_phys, k, d,' // nl // &
+        '                        bound_active, alpha, e_fixed, e_error (e_fixed/e - 1),' // nl // &
+        '                        tc_fixed [s] (what the pair gives at that speed),' // nl // &
+        '                        worst_e_error, status' // nl // &
         contact_help // nl // &
         'Method:' // nl // inverse_methods_help // nl // method_help // nl // &
         '' // nl // &

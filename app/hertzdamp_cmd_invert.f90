@@ -14,6 +14,7 @@ module hertzdamp_cmd_invert
     use hertzdamp_cli_materials, only: cli_contact, parse_contact, require_mass, contact_table, contact_options, contact_flags
     use hertzdamp_cli_progress, only: progress_reporter
     use hertzdamp_cli_plausible, only: warn_implausible, quiet_flag
+    use hertzdamp_cmd_fixed, only: invert_fixed
     use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
     implicit none
     private
@@ -38,7 +39,7 @@ contains
         allocate (es(0), tcs(0), us(0), tc_dt(0), tc_steps(0))   ! (defined descriptors for the reallocating assignments)
         if (wants_help()) call print_help('invert')
         call parse_args(2, '--e --tc --dt --steps --velocity ' // contact_options // ' ' // model_options, &
-                        contact_flags // ' --progress ' // quiet_flag, args)
+                        contact_flags // ' --progress --fixed ' // quiet_flag, args)
         call parse_model(args, c, inverse=.true.)
         call parse_contact(args, ct)
         es = required_sweep(args, '--e')
@@ -47,6 +48,7 @@ contains
         call require_mass(ct)
         call check_combinations([size(es), size(tcs), size(us)], '--e, the contact times and --velocity')
         call warn_implausible(args)
+        if (args%has('--fixed')) call invert_fixed(args, c, ct, es, tcs, tc_key, us)
         call contact_table(t, c, ct, 'e,tc,velocity,mass,radius_eff,k_phys,alpha,tau_c,t_star,k,d,bound_active,' // &
                            'tc_actual,status', 'tc, t_star, tc_actual [s], velocity [m/s], mass [kg], radius_eff [m], ' // &
                            'k, k_phys [N m^-3/2], d [' // damping_unit(c%law) // ']', &

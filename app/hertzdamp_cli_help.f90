@@ -64,7 +64,9 @@ module hertzdamp_cli_help
         '                        the total contact force does' // nl // &
         '  --accuracy A          relative accuracy asked of series and pade (default' // nl // &
         '                        1e-10): beyond it the row is inaccurate' // nl // &
-        '  --format F            text (aligned, default), csv or json' // nl // &
+        '  --format F            text (default; for people: units in the header, 7' // nl // &
+        '                        digits, what every row shares once above the table),' // nl // &
+        '                        csv or json' // nl // &
         '  --progress            progress on stderr (default: on a terminal, after 2 s,' // nl // &
         '                        one line that an error replaces; into a file or pipe,' // nl // &
         '                        lines that precede an error, which comes last)' // nl // &

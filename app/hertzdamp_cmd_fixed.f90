@@ -5,7 +5,8 @@
 !> One row per target and listed speed: what that pair achieves there.
 module hertzdamp_cmd_fixed
     use hertzdamp, only: hertzdamp_rk, hertzdamp_forward_dim, hertzdamp_message, HD_OK, HD_NO_REBOUND, &
-                         HD_OUTSIDE_VALIDITY, HD_BAD_RESTITUTION, HD_METHOD_FIT, HD_METHOD_RK45
+                         HD_OUTSIDE_VALIDITY, HD_BAD_RESTITUTION, HD_BAD_VELOCITY, HD_BAD_TIME, HD_METHOD_FIT, &
+                         HD_METHOD_RK45
     use hertzdamp_fixed, only: fixed_pair, hertzdamp_fixed_pair
     use hertzdamp_cli, only: cli_args, fail, EXIT_USAGE
     use hertzdamp_cli_text, only: fmt_short
@@ -56,7 +57,7 @@ contains
                     p = hertzdamp_fixed_pair(es(ie), tcs(it), ct%mass, minval(us), maxval(us), c%iend, c%law)
                 end if
                 why = ''
-                if (p%status /= HD_OK) why = reason(c, p%status, es(ie), tcs(it), tc_key)
+                if (p%status /= HD_OK) why = reason(c, p%status, es(ie), tcs(it), tc_key, us)
                 do iu = 1, size(us)
                     st = p%status
                     if (st == HD_OK) call achieved(p, ct%mass, us(iu), c, alpha, tstar, e, tc, zmax, st)
@@ -116,18 +117,23 @@ contains
     end subroutine achieved
 
     !> Why no pair exists for a target, naming the option.
-    function reason(c, status, e, tc, tc_key) result(s)
+    function reason(c, status, e, tc, tc_key, us) result(s)
         type(model_opts), intent(in) :: c
         integer, intent(in) :: status
-        real(wp), intent(in) :: e, tc
+        real(wp), intent(in) :: e, tc, us(:)
         character(len=*), intent(in) :: tc_key
         character(len=:), allocatable :: s
-        if (status == HD_BAD_RESTITUTION .or. status == HD_OUTSIDE_VALIDITY) then
+        select case (status)
+        case (HD_BAD_RESTITUTION, HD_OUTSIDE_VALIDITY)
             s = e_range_message(c, e, fmt_short(e))
-        else
+        case (HD_BAD_VELOCITY)
+            s = '--velocity ' // fmt_short(minval(us)) // ': ' // hertzdamp_message(status)
+        case (HD_BAD_TIME)
+            s = tc_key // ' (contact time ' // fmt_short(tc) // '): ' // hertzdamp_message(status)
+        case default
             s = 'e = ' // fmt_short(e) // ', ' // tc_key // ' (contact time ' // fmt_short(tc) // '): ' // &
                 hertzdamp_message(status)
-        end if
+        end select
     end function reason
 
 end module hertzdamp_cmd_fixed

@@ -85,6 +85,8 @@ run invert --fixed --mass 1e-3 --e 0.9,0.0005 --tc 1e-5 --velocity 0.1,1 --forma
 check "e outside the fit: its rows without result, exit 3, the others ok" \
   test "$RC" -eq 3 -a "$(grep -c ',ok$' "$OUT")" -eq 2 -a "$(grep -c ',outside-validity$' "$OUT")" -eq 2
 check "e outside the fit: the message names --e and the range" grep -q -- '--e 0.0005: --method fit accepts' "$ERR"
+expect_fail 2 "a negative speed: every row bad-input" invert --fixed --mass 1e-3 --e 0.9 --tc 1e-5 --velocity -1,1
+check "a negative speed: the message names --velocity" grep -q -- '--velocity -1: ' "$ERR"
 expect_fail 2 "--fixed with --method" invert --fixed --mass 1e-3 --e 0.9 --tc 1e-5 --velocity 1 --method iterative
 check "--fixed with --method: says why" grep -q -- '--method, --tol and --accuracy do not apply' "$ERR"
 finish

@@ -19,9 +19,10 @@ module hertzdamp_cmd_check
                                peer_nan, peer_float, peer_name, &
                                PEER_LAMMPS, PEER_LIGGGHTS, PEER_MERCURYDPM, PEER_YADE, PEER_MFIX, PEER_CHRONO, &
                                TSTEP_NONE, TSTEP_LIGGGHTS, TSTEP_MERCURY, TSTEP_MFIX, COEF_GAMMA_P6, COEF_GAMMA_SQRT2_P6, &
-                               COEF_GAMMA_SQRT5_BETA, COEF_GAMMA_2BETA, COEF_GAMMA_SQRT6, COEF_GAMMA_SQRT5_BETA_EPS
+                               COEF_GAMMA_SQRT5_BETA, COEF_GAMMA_2BETA, COEF_GAMMA_SQRT6, COEF_GAMMA_SQRT5_BETA_EPS, &
+                               COEF_GAMMA_SQRT6_THORNTON
     use hertzdamp_peers_deck, only: peer_materials, peer_read_deck, peer_code, peer_parameter_problem, &
-                                    LAMMPS_2021, LAMMPS_2023, LAMMPS_CURRENT, lammps_releases
+                                    LAMMPS_2021, LAMMPS_2023, LAMMPS_CURRENT, peer_releases
     use hertzdamp_cli, only: cli_args, cli_line, cli_buffer, parse_args, parse_real, parse_int, parse_choice, &
                              required_sweep, fail, quit, EXIT_USAGE, EXIT_OK
     use hertzdamp_cli_text, only: itoa, fmt_short, ROUND_TRIP
@@ -97,8 +98,9 @@ contains
         mat%density(1) = optional_value('--density')
         mat%density(2) = optional_value('--density2')
         if (args%has('--release')) then
-            if (peer /= PEER_LAMMPS) call fail(EXIT_USAGE, '--release applies to lammps only')
-            rq%release = parse_choice(args%get('--release', ''), lammps_releases, 'LAMMPS release (--release)')
+            if (len(peer_releases(peer)) == 0) call fail(EXIT_USAGE, '--release applies to lammps and yade only')
+            rq%release = parse_choice(args%get('--release', ''), peer_releases(peer), &
+                                      peer_name(peer, title=.true.) // ' release (--release)')
         end if
         rq%speeds = required_sweep(args, '--velocity')
         do i = 1, size(rq%speeds)
@@ -705,7 +707,7 @@ contains
         integer, intent(in) :: row
         select case (peer_row_coef(row))
         case (COEF_GAMMA_P6, COEF_GAMMA_SQRT2_P6, COEF_GAMMA_SQRT5_BETA, COEF_GAMMA_2BETA, COEF_GAMMA_SQRT6, &
-              COEF_GAMMA_SQRT5_BETA_EPS)
+              COEF_GAMMA_SQRT5_BETA_EPS, COEF_GAMMA_SQRT6_THORNTON)
             restitution_row = .true.
         case default
             restitution_row = .false.
@@ -802,7 +804,9 @@ contains
         case ('mercurydpm-dissipation-overlap'); s = '`setDissipation`'
         case ('mercurydpm2015-dissipation-overlap'); s = '`HertzianViscoelasticSpecies` `setDissipation`'
         case ('mercurydpm2015-stiffness_restitution-overlap'); s = '`setStiffnessAndRestitutionCoefficient`'
-        case ('yade-en-force'); s = '`en`'
+        case ('yade-en-force', 'yade2023-en-force'); s = '`en`'
+        case ('yade2024-vn-force'); s = '`en` + `vn`'
+        case ('lammps-hertz_history-overlap', 'lammps-hertz_history-force'); s = '`gran/hertz/history`'
         case ('yade-betan-force'); s = '`betan` = beta(e)'
         case ('mfix-hertzian-overlap'); s = '`HERTZIAN`'
         case ('chrono-material-force'); s = 'Hertz, material properties'
@@ -831,6 +835,14 @@ contains
             s = 'Beta 2015'
         else if (index(id, 'mercurydpm') == 1) then
             s = 'trunk 2018-2024'
+        else if (index(id, 'lammps-hertz_history') == 1) then
+            s = '29 Sep 2021 +'
+        else if (index(id, 'yade2023') == 1) then
+            s = '2023.02a +'
+        else if (index(id, 'yade2024') == 1) then
+            s = '2024.02a +'
+        else if (id == 'yade-betan-force') then
+            s = '2020 trunk +'
         else if (index(id, 'yade') == 1) then
             s = '2020-2022 trunk'
         else if (index(id, 'mfix') == 1) then

@@ -170,7 +170,25 @@ contains
             r = r1 * r2 / (r1 + r2)
         end if
         call c%vars%set('u', u)
-        if (index(id, 'lammps-') == 1) then
+        if (index(id, 'lammps-hertz_history-') == 1) then
+            ! section 1, classic style: k = Kn sqrt(R), d = gamma_n m sqrt(R)
+            c%peer = PEER_LAMMPS
+            c%mat%wall = .false.
+            c%release = LAMMPS_2021 + int(2.999_wp * rnd())   ! 2021, 2023 or current
+            kn = log_uniform(1.0e5_wp, 1.0e11_wp)
+            x = log_uniform(1.0e-6_wp, 1.0e3_wp)
+            if (present(coef)) x = coef
+            call c%vars%set('gamma_n', x)
+            if (wall) then
+                call add(c, 'fix 1 all wall/gran hertz/history ' // num(kn) // ' NULL ' // num(x) // ' NULL 0.5 1')
+                if (limit) call add(c, 'limit_damping')
+                call add(c, 'zplane 0 NULL')
+            else
+                call add(c, 'gran/hertz/history ' // num(kn) // ' NULL ' // num(x) // ' 0.5 0.4 1')
+                if (limit) call add(c, 'limit_damping')
+            end if
+            c%k = kn * sqrt(r)
+        else if (index(id, 'lammps-') == 1) then
             ! doc/peers.md section 1: k = kn sqrt(R); hertz/material kn = (4/3) E/(2(1-nu^2)),
             ! the 2021 wall (4/3) E/(2(1-nu))
             c%peer = PEER_LAMMPS
@@ -270,10 +288,17 @@ contains
                 call add(c, 'setElasticModulus=' // num(ymod) // ' setDissipation=' // num(x))
                 call c%vars%set('d', x)
             end if
-        else if (index(id, 'yade-') == 1) then
+        else if (index(id, 'yade') == 1) then
             ! section 4: k = (4/3) E* sqrt(R); walls: R = refR1 r/(refR1 + r), refR1 = r (Wall),
-            ! 2r (Facet), 1e8 r (hertzian=True)
+            ! 2r (Facet), 1e8 r (hertzian=True); en by release: yade-en up to 2022.01a,
+            ! yade2023-en (Thornton) from 2023.02a, yade2024-vn (en with vn) from 2024.02a
             c%peer = PEER_YADE
+            select case (id)
+            case ('yade-en-force'); c%release = YADE_2022
+            case ('yade2023-en-force'); c%release = merge(YADE_2023, YADE_CURRENT, rnd() < 0.5_wp)
+            case ('yade2024-vn-force'); c%release = YADE_CURRENT
+            case default; c%release = YADE_2022 + int(2.999_wp * rnd())   ! 2022, 2023 or current
+            end select
             call add(c, 'young=' // num(ymod) // ',' // num(y2) // ' poisson=' // num(nu) // ',' // num(nu2))
             es = 1.0_wp / ((1.0_wp - nu**2) / ymod + (1.0_wp - nu2**2) / y2)
             if (wall) then
@@ -301,6 +326,11 @@ contains
                 if (present(coef)) x = coef
                 call add(c, 'en=' // num(x))
                 call c%vars%set('e', x)
+                if (index(id, '-vn-') > 0) then
+                    x2 = log_uniform(1.0e-2_wp, 1.0e2_wp)
+                    call add(c, 'vn=' // num(x2))
+                    call c%vars%set('vn', x2)
+                end if
             end if
         else if (index(id, 'mfix-') == 1) then
             ! section 5: k = HERT_KN = (4/3) sqrt(R) E*

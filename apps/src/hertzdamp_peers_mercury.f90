@@ -113,8 +113,9 @@ contains
             call set_modulus(x(1))
         case ('setDissipation')
             call nargs(1)
-            if (len(msg) == 0 .and. .not. x(1) >= 0.0_wp) &
+            if (len(msg) == 0 .and. .not. x(1) >= 0.0_wp) then
                 msg = 'setDissipation(' // fmt_short(x(1), ROUND_TRIP) // '): must be >= 0'
+            end if
             if (len(msg) > 0) return
             st%kind = 'dissipation'
             deck%p = x(1)

@@ -192,8 +192,9 @@ contains
             msg = 'missing ' // base // ' (' // pair // ': ' // base // ' or ' // indexed // ')'
         end if
         if (len(msg) > 0) return
-        if (.not. (e >= 0.0_wp .and. e <= 1.0_wp)) &
+        if (.not. (e >= 0.0_wp .and. e <= 1.0_wp)) then
             msg = ekey // ' = ' // fmt_short(e, ROUND_TRIP) // ': MFiX requires 0 <= e <= 1 (check_solids_dem.f)'
+        end if
     end subroutine restitution
 
 end module hertzdamp_peers_mfix

@@ -338,8 +338,9 @@ contains
         character(len=:), allocatable :: r
         r = trim(adjustl(s))
         if (len(r) >= 2) then
-            if ((r(1:1) == '''' .and. r(len(r):len(r)) == '''') .or. (r(1:1) == '"' .and. r(len(r):len(r)) == '"')) &
+            if ((r(1:1) == '''' .and. r(len(r):len(r)) == '''') .or. (r(1:1) == '"' .and. r(len(r):len(r)) == '"')) then
                 r = r(2:len(r) - 1)
+            end if
         end if
     end function peer_strip_quotes
 
@@ -646,8 +647,9 @@ contains
                 exit
             end if
         end do
-        if (.not. peer_number(t(start:pos - 1), x, fortran_d=syn == SYNTAX_MFIX)) &
+        if (.not. peer_number(t(start:pos - 1), x, fortran_d=syn == SYNTAX_MFIX)) then
             msg = 'malformed number "' // t(start:pos - 1) // '" in "' // t // '"'
+        end if
     end subroutine scan_number
 
     !> A name: a deck variable, or a constant of the syntax.

@@ -436,8 +436,9 @@ contains
             end if
         case ('atom_style')
             if (w%item(2)%s == 'granular') st%liggghts = .true.
-            if (w%item(2)%s /= 'sphere' .and. w%item(2)%s /= 'granular' .and. w%item(2)%s /= 'hybrid') &
+            if (w%item(2)%s /= 'sphere' .and. w%item(2)%s /= 'granular' .and. w%item(2)%s /= 'hybrid') then
                 call st%scene%note(where, 'atom_style ' // w%item(2)%s // ': the checker expects sphere (granular)')
+            end if
         case default
         end select
     end subroutine setting

@@ -25,7 +25,7 @@
 !> and takes only the contacts that need more (extreme inputs, the physical bound,
 !> errors, other methods) through the scalar path.  A fitted map of another law gets
 !> the same fast path by a kernel of its own in hertzdamp_fit (see there and
-!> tools/fit_csv_to_f90.py) and its q in the direct formulas of
+!> gen/fit_csv_to_f90.py) and its q in the direct formulas of
 !> hertzdamp_fit_invert_out.inc.
 !>
 !> Supported restitution: e_min <= e <= 1 with e_min = 1e-3 (overlap; e -> 0 has
@@ -550,7 +550,7 @@ contains
     !> fallback; a no-rebound trial shrinks it); the second trial is the proportional
     !> step alpha ln e / ln e(alpha) (exact where ln e is linear in alpha).  It stops
     !> when the secant step is below tol/10 alpha or the residual below tol/10 |ln e|.
-    !> Used by the iterative method (rk45) and by the GSL peer (peers/gsl).
+    !> Used by the iterative method (rk45) and by the GSL reference solver (packages/reference).
     pure subroutine hertzdamp_secant_next(state, e_trial, no_rebound, alpha, done, status)
         type(hertzdamp_secant), intent(inout) :: state    !! the iteration's state
         real(wp), intent(in) :: e_trial                   !! e(alpha) of the last trial (ignored without rebound)
@@ -612,7 +612,7 @@ contains
     !> The iterative baseline: hertzdamp_secant over rk45 solves of the law, each at a
     !> tolerance derived from the accuracy asked of alpha: rk45 tol = tol/10 min(1, |ln e|),
     !> since the relative error of alpha is about that of ln e, (delta e / e) / |ln e|
-    !> (test/test_inverse.f90 checks alpha within tol).  A trial without rebound, or with
+    !> (test/unit/test_inverse.f90 checks alpha within tol).  A trial without rebound, or with
     !> e below what rk45 resolves near alpha_c (HD_INACCURATE), shrinks the bracket from
     !> above.  tau_c is that of the last solve: its error is the error of alpha times
     !> d ln tau_c / d ln alpha, which grows towards alpha_c (7 tol at e = 1e-3, overlap);

@@ -26,7 +26,7 @@
 !> they are module procedures whose binding labels (`bind(c, name='hertzdamp_invert_')`,
 !> the name gfortran gives an external HERTZDAMP_INVERT) keep the link names and the
 !> calling convention (scalars and explicit-shape arrays by reference) of the externals.
-!> test/fpenv_symbols.sh fails if a legacy or C entry point calls those routines again.
+!> test/integration/fpenv_symbols.sh fails if a legacy or C entry point calls those routines again.
 module hertzdamp_legacy
     use, intrinsic :: iso_c_binding, only: c_double, c_int
     use hertzdamp_flat, only: flat_invert, flat_invert_bounded, flat_pair, flat_forward, flat_invert_n, flat_invert_law, &

@@ -293,6 +293,7 @@ contains
                     w = peer_num_text(x)
                 end if
             end if
+            if (peer_number(w, x, fortran_d=.true.)) w = peer_num_text(x)   ! 1.0d-3 as the readers take it
             do k = 1, max(1, nint(n))
                 call vals%push(peer_strip_quotes(w))
             end do
@@ -346,9 +347,8 @@ contains
         select case (m)
         case ('', 'EULER')
             scene%host = HD_HOST_MFIX_EULER
-            scene%host_text = 'DES_INTG_METHOD = EULER (' // merge('MFiX''s default', where // '       ', &
-                              len(m) == 0) // '): v += dt F/m, then x += dt v (cfnewvalues.f)'
-            scene%host_text = trim(scene%host_text)
+            if (len(m) == 0) where = 'MFiX''s default'
+            scene%host_text = 'DES_INTG_METHOD = EULER (' // where // '): v += dt F/m, then x += dt v (cfnewvalues.f)'
         case ('ADAMS_BASHFORTH')
             scene%host = HD_HOST_MFIX_AB2
             scene%host_text = 'DES_INTG_METHOD = ADAMS_BASHFORTH (' // where // '): v += dt (3a - a_old)/2, ' // &
@@ -459,7 +459,7 @@ contains
         d = 0.0_wp
         rho = 0.0_wp
         c%sizes = ''
-        do j = 1, merge(1, 2, l == 0)
+        do j = 1, merge(1, 2, l == 0 .or. l == m)
             if (.not. get_num(mv, 'D_P0', ph(j), d(j))) then
                 if (len(c%problem) == 0) c%problem = 'D_P0 of phase ' // itoa(ph(j)) // ' is missing'
             end if
@@ -469,6 +469,10 @@ contains
             if (j > 1) c%sizes = c%sizes // '; '
             c%sizes = c%sizes // 'phase ' // itoa(ph(j)) // ': D_P0 ' // fmt_short(d(j)) // ', RO_S0 ' // fmt_short(rho(j))
         end do
+        if (l == m) then
+            d(2) = d(1)
+            rho(2) = rho(1)
+        end if
         c%mat%radius = 0.5_wp * d
         c%mat%density = rho
     end subroutine sizes

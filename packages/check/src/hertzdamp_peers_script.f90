@@ -535,7 +535,7 @@ contains
                                '(4/3) pi r^3 rho')
             st%dens(t) = x
         end select
-        st%src(t)%s = st%src(t)%s // ' set (' // where // ')'
+        if (index(st%src(t)%s, '(' // where // ')') == 0) st%src(t)%s = st%src(t)%s // ' set (' // where // ')'
     end subroutine set_one
 
     !> fix nve/sphere is LAMMPS's velocity Verlet (the host scheme `lammps`); other

@@ -14,7 +14,8 @@
 module hertzdamp_peers_yade_deck
     use hertzdamp, only: hertzdamp_rk
     use hertzdamp_peers, only: peer_text, PEER_YADE
-    use hertzdamp_peers_text, only: peer_list, peer_vars, peer_eval, peer_num_text, peer_strip_quotes, SYNTAX_PYTHON
+    use hertzdamp_peers_text, only: peer_list, peer_vars, peer_eval, peer_num_text, peer_strip_quotes, peer_words, &
+                                    peer_number, SYNTAX_PYTHON
     use hertzdamp_peers_scene, only: peer_scene, peer_contact, peer_read_lines, peer_where
     use hertzdamp_host, only: HD_HOST_LAMMPS, HD_HOST_NONE
     use hertzdamp_apps_text, only: itoa, fmt_short
@@ -40,6 +41,8 @@ module hertzdamp_peers_yade_deck
         type(ymat), allocatable :: mats(:)
         integer :: nmats = 0, nappended = 0
         character(len=:), allocatable :: law_where, en, betan, vn     !! the Ip2 arguments (text)
+        character(len=:), allocatable :: law_label, newton_label      !! their label= (attributes set later)
+        character(len=:), allocatable :: dir                          !! the script's directory (ymport files)
         logical :: have_law = .false.
         logical :: hertzian(nshape) = .false.
         real(wp) :: damping = 0.2_wp           !! NewtonIntegrator damping (Yade's default)
@@ -74,7 +77,10 @@ contains
         md%dt_text = ''
         md%dt_where = ''
         md%cloud_material = ''
+        md%law_label = ''
+        md%newton_label = ''
         do f = 1, size(paths)
+            md%dir = directory(paths(f)%s)
             call peer_read_lines(paths(f)%s, lines, msg, scene%work)
             if (len(msg) > 0) return
             call scene%files%push(paths(f)%s)
@@ -165,6 +171,10 @@ contains
         if (k > 0 .or. index(s, 'O.engines') > 0) return
         if (index(s, 'O.dt') == 1) then
             call time_step(md, s, where)
+        else if (label_attribute(scene, md, s, where)) then
+            continue
+        else if (index(s, 'ymport.') > 0) then
+            call ymport(scene, md, s, where)
         else if (index(s, 'Mat(') > 0 .or. index(s, 'O.materials.append') > 0) then
             call material(scene, md, s, where)
         else if (body_call(s) > 0) then
@@ -274,12 +284,37 @@ contains
             if (s(e + 1:e + 1) == '=') return
         end if
         name = trim(s(1:e - 1))
+        if (index(name, ',') > 0) then
+            ok = tuple_assignment(md, name, s(e + 1:))
+            return
+        end if
         if (verify(name, 'abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ0123456789_') /= 0) return
         call peer_eval(trim(adjustl(s(e + 1:))), SYNTAX_PYTHON, md%vars, x, msg)
         if (len(msg) > 0) return
         call md%vars%set_num(name, x)
         ok = .true.
     end function assignment
+
+    !> a, b, c = x, y, z (every value numeric).
+    logical function tuple_assignment(md, lhs, rhs) result(ok)
+        type(yade_model), intent(inout) :: md
+        character(len=*), intent(in) :: lhs, rhs
+        type(peer_list) :: names, values, k2, v2
+        real(wp) :: x
+        integer :: i
+        ok = .false.
+        call call_args('(' // lhs // ')', 1, names, k2, v2)
+        call call_args('(' // rhs // ')', 1, values, k2, v2)
+        if (names%n /= values%n .or. names%n < 2) return
+        do i = 1, names%n
+            if (verify(names%item(i)%s, 'abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ0123456789_') /= 0) return
+        end do
+        do i = 1, names%n
+            call number_arg(md, values%item(i)%s, x, ok)
+            if (.not. ok) return
+            call md%vars%set_num(names%item(i)%s, x)
+        end do
+    end function tuple_assignment
 
     !> A number argument (a Python expression of the script's variables); ok false if not.
     subroutine number_arg(md, text, x, ok)
@@ -524,6 +559,7 @@ contains
         md%en = kwarg(keys, vals, 'en')
         md%betan = kwarg(keys, vals, 'betan')
         md%vn = kwarg(keys, vals, 'vn')
+        md%law_label = peer_strip_quotes(kwarg(keys, vals, 'label'))
         if (index(s, 'Law2_ScGeom_MindlinPhys_Mindlin') == 0) call scene%note(where, &
             'Ip2_FrictMat_FrictMat_MindlinPhys without Law2_ScGeom_MindlinPhys_Mindlin in the same statement: ' // &
             'the checker assumes that law')
@@ -561,12 +597,111 @@ contains
         logical :: ok
         call call_args(s, call_at(s, 'NewtonIntegrator'), pos, keys, vals)
         md%newton_where = where
+        md%newton_label = peer_strip_quotes(kwarg(keys, vals, 'label'))
         md%damping = 0.2_wp
         if (len(kwarg(keys, vals, 'damping')) > 0) then
             call number_arg(md, kwarg(keys, vals, 'damping'), md%damping, ok)
             if (.not. ok) call scene%note(where, 'NewtonIntegrator damping is not evaluated')
         end if
     end subroutine newton
+
+    !> LABEL.attr = value for the Ip2 functor's label (en, betan, vn) or the
+    !> NewtonIntegrator's (damping), as Yade's examples set them after O.engines.
+    logical function label_attribute(scene, md, s, where) result(done)
+        type(peer_scene), intent(inout) :: scene
+        type(yade_model), intent(inout) :: md
+        character(len=*), intent(in) :: s, where
+        character(len=:), allocatable :: lhs, obj, attr, rhs
+        integer :: e, d
+        logical :: ok
+        done = .false.
+        e = index(s, '=')
+        if (e < 2) return
+        lhs = trim(s(1:e - 1))
+        d = index(lhs, '.')
+        if (d < 2) return
+        obj = lhs(1:d - 1)
+        attr = lhs(d + 1:)
+        rhs = trim(adjustl(s(e + 1:)))
+        if (len(md%law_label) > 0 .and. obj == md%law_label) then
+            done = .true.
+            select case (attr)
+            case ('en'); md%en = rhs
+            case ('betan'); md%betan = rhs
+            case ('vn'); md%vn = rhs
+            case ('betas', 'es', 'useDamping', 'krot', 'ktwist', 'eta', 'gamma', 'frictAngle')
+            case default
+                call scene%note(where, lhs // ': attribute not interpreted')
+            end select
+            md%law_where = where
+        else if (len(md%newton_label) > 0 .and. obj == md%newton_label) then
+            done = .true.
+            if (attr == 'damping') then
+                call number_arg(md, rhs, md%damping, ok)
+                if (.not. ok) call scene%note(where, lhs // ' = ' // rhs // ' is not evaluated')
+                md%newton_where = where
+            end if
+        end if
+    end function label_attribute
+
+    !> ymport.text(file, material=...) (spheres x y z r: the radii are read from the file
+    !> when it exists) and ymport.textFacets / stl / gmsh (facet walls).
+    subroutine ymport(scene, md, s, where)
+        type(peer_scene), intent(inout) :: scene
+        type(yade_model), intent(inout) :: md
+        character(len=*), intent(in) :: s, where
+        type(peer_list) :: pos, keys, vals, lines, w
+        character(len=:), allocatable :: path, msg
+        real(wp) :: r, rmin
+        integer :: k, m, i
+        logical :: facets
+        facets = call_at(s, 'textFacets') > 0 .or. call_at(s, 'stl') > 0 .or. call_at(s, 'gmsh') > 0
+        k = call_at(s, 'text')
+        if (facets) k = max(call_at(s, 'textFacets'), call_at(s, 'stl'), call_at(s, 'gmsh'))
+        if (k == 0) then
+            call scene%note(where, 'ymport call not interpreted')
+            return
+        end if
+        call call_args(s, k, pos, keys, vals)
+        m = material_of(md, kwarg(keys, vals, 'material'))
+        if (m == 0) then
+            call scene%note(where, 'ymport: material "' // kwarg(keys, vals, 'material') // '" not read')
+            return
+        end if
+        if (facets) then
+            md%mats(m)%walls(2) = .true.
+            return
+        end if
+        path = ''
+        if (pos%n >= 1) path = peer_strip_quotes(pos%item(1)%s)
+        if (len(path) > 0) then
+            if (path(1:1) /= '/') path = md%dir // path
+        end if
+        call peer_read_lines(path, lines, msg, scene%work)
+        if (len(msg) > 0) then
+            call scene%note(where, 'ymport.text: ' // msg // ' (the spheres'' radii are in it)')
+            return
+        end if
+        rmin = huge(1.0_wp)
+        do i = 1, lines%n
+            w%n = 0
+            call peer_words(lines%item(i)%s, w)
+            if (w%n < 4) cycle
+            if (peer_number(w%item(4)%s, r)) rmin = min(rmin, r)
+        end do
+        if (rmin < huge(1.0_wp)) then
+            if (md%mats(m)%rmin <= 0.0_wp .or. rmin < md%mats(m)%rmin) md%mats(m)%rmin = rmin
+        else
+            call scene%note(where, 'ymport.text ' // path // ': no line "x y z r"')
+        end if
+    end subroutine ymport
+
+    !> The directory part of a path, with its slash ('' for none).
+    pure function directory(path) result(d)
+        character(len=*), intent(in) :: path
+        character(len=:), allocatable :: d
+        d = path(1:index(path, '/', back=.true.))
+    end function directory
 
     !> O.dt = expr (PWaveTimeStep() evaluated at the end).
     subroutine time_step(md, s, where)
@@ -594,10 +729,10 @@ contains
                               'pos += dt vel (NewtonIntegrator.cpp), the sequence of LAMMPS''s velocity Verlet'
         else
             scene%host = HD_HOST_NONE
-            scene%host_text = 'NewtonIntegrator damping = ' // fmt_short(md%damping) // ' (' // &
-                              merge(md%newton_where // '    ', 'Yade''s default', len(md%newton_where) > 0) // &
+            t = 'Yade''s default'
+            if (len(md%newton_where) > 0) t = md%newton_where
+            scene%host_text = 'NewtonIntegrator damping = ' // fmt_short(md%damping) // ' (' // t // &
                               '): Cundall''s non-viscous damping also dissipates in every contact; not modeled'
-            scene%host_text = trim(scene%host_text)
         end if
         if (md%stiffness_stepper) then
             scene%dt_text = 'GlobalStiffnessTimeStepper changes O.dt during the run; not modeled'

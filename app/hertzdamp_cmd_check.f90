@@ -100,25 +100,29 @@ contains
         rq%progress = args%has('--progress')
     end subroutine common_options
 
-    !> True when every argument after the engine names an existing file (the deck);
-    !> an argument list that mixes files and words is an error.
+    !> True when the first argument after the engine names an existing file: then every
+    !> argument must be one (the deck's files, in order).  Otherwise the arguments are the
+    !> engine's words (no file system call per word: a deck of 40,000 words stays fast).
     logical function deck_files(words, files) result(is_deck)
         type(cli_line), intent(in) :: words(:)
         type(peer_text), allocatable, intent(out) :: files(:)
         logical :: exists
-        integer :: i, n
-        n = 0
+        integer :: i
+        allocate (files(0))
+        is_deck = .false.
+        if (size(words) < 2) return
+        if (index(words(2)%s, '=') > 0) return
+        inquire (file=words(2)%s, exist=exists)
+        if (.not. exists) return
+        is_deck = .true.
+        deallocate (files)
         allocate (files(size(words) - 1))
         do i = 2, size(words)
             inquire (file=words(i)%s, exist=exists)
-            if (exists .and. index(words(i)%s, '=') == 0) then
-                n = n + 1
-                files(n)%s = words(i)%s
-            end if
+            if (.not. exists .or. index(words(i)%s, '=') > 0) call fail(EXIT_USAGE, 'give either deck files or ' // &
+                'the engine''s words, not both ("' // words(2)%s // '" is a file, "' // words(i)%s // '" is not)')
+            files(i - 1)%s = words(i)%s
         end do
-        is_deck = n > 0 .and. n == size(words) - 1
-        if (n > 0 .and. .not. is_deck) call fail(EXIT_USAGE, 'give either deck files or the engine''s words, ' // &
-                                                 'not both ("' // files(1)%s // '" is a file)')
     end function deck_files
 
     ! ------------------------------------------------------------------ a whole deck

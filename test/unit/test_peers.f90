@@ -58,6 +58,7 @@ program test_peers
     call test_overdamped()
     call test_extremes()
     call test_bad_decks()
+    call test_yade_pade()
     call s%finish()
 
 contains
@@ -915,10 +916,80 @@ contains
         call expect_error(PEER_MFIX, 'DES_COLL_MODEL=HERTZIAN KN=1e5 DES_EN_INPUT=0.9', 'KN', 'MFiX KN')
         call expect_error(PEER_MFIX, 'DES_COLL_MODEL=HERTZIAN E_YOUNG=1e9 V_POISSON=0.3 DES_EN_INPUT=0.9', &
                           'EW_YOUNG', 'MFiX wall without EW_YOUNG', wall=.true.)
+        ! issue 21 item 5: three values of a two-body key are refused before anything is written
+        ! (this test ran into -fcheck=bounds before the fix)
+        call expect_error(PEER_MFIX, 'DES_COLL_MODEL=HERTZIAN E_YOUNG=1e9 V_POISSON=0.3 DES_EN_INPUT=0.9 RO_S0=1,2,3', &
+                          'RO_S0: at most 2 values', 'MFiX RO_S0 with three values')
+        call expect_error(PEER_MFIX, 'DES_COLL_MODEL=HERTZIAN E_YOUNG=1e9 V_POISSON=0.3 DES_EN_INPUT=0.9 D_P0=1,2,3', &
+                          'D_P0: at most 2 values', 'MFiX D_P0 with three values')
+        ! issue 21 item 8: DES_EN_INPUT(k) is the pair k in MFiX's order 1-1, 1-2, 2-2
+        call expect_error(PEER_MFIX, 'DES_COLL_MODEL=HERTZIAN E_YOUNG=1e9,2e9 V_POISSON=0.3 DES_EN_INPUT(1)=0.9', &
+                          'DES_EN_INPUT(2)', 'MFiX two phases: the 1-2 pair is DES_EN_INPUT(2)')
+        call expect_error(PEER_YADE, 'young=1e9 poisson=0.3 en=0.5 vn=1', 'vn', 'Yade vn before 2024.02a', &
+                          release=YADE_2023)
+        call expect_error(PEER_YADE, 'young=1e9 poisson=0.3 vn=1', 'vn needs en', 'Yade vn without en')
+        call expect_error(PEER_LAMMPS, 'gran/hertz/history 1e5 NULL', 'gran/hertz/history', 'classic style too short')
+        call expect_error(PEER_LAMMPS, 'gran/hooke/history 1e5 NULL 10 NULL 0.5 1', 'linear spring', 'classic hooke')
+        call mfix_indexed()
         call expect_error(PEER_CHRONO, 'SetYoungModulus=1e9 SetPoissonRatio=0.3 SetRestitution=0.5 SetKn=1e5', &
                           'SetKn', 'Chrono keys of the other mode')
         call expect_error(PEER_CHRONO, 'SetYoungModulus=1e9 SetPoissonRatio=0.3 SetRestitution=0.5 SetYoungModulus=2e9', &
                           'SetYoungModulus', 'repeated key')
     end subroutine test_bad_decks
+
+    !> Yade's vn: alpha = V*^2 (u/vn)^(1/5), so at u = vn the force-end Kuwabara-Kono e of
+    !> the reference integrator at alpha = V*^2 must be the Mueller-Poeschel Pade of V*, to
+    !> the accuracy of their fit (measured: 6.4e-4 at most for 0.05 <= V* <= 3).
+    subroutine test_yade_pade()
+        type(hertzdamp_collision) :: r
+        real(wp) :: v, worst
+        integer :: i
+        worst = 0.0_wp
+        do i = 1, 60
+            v = 0.05_wp * i
+            r = hertzdamp_forward_alpha(v * v, HD_END_FORCE, HD_METHOD_RK45, law=HD_DAMPING_KUWABARA_KONO)
+            worst = max(worst, abs(r%e - peer_pade_mp(v)))
+            call s%check(r%status == HD_OK, 'Yade vn: rk45 at alpha = V*^2')
+        end do
+        call s%check(worst < 1.0e-3_wp, 'Yade vn: Pade(V*) = force-end Kuwabara-Kono e(V*^2) within 1e-3')
+        print '(a, es10.2)', 'Yade vn: worst |Pade(V*) - e_force(V*^2)| ', worst
+        call s%check(abs(peer_pade_mp(peer_pade_mp_inverse(0.37_wp)) - 0.37_wp) < 1.0e-14_wp, &
+                     'Yade vn: the Pade inverse')
+        call s%check(abs(peer_thornton(peer_thornton_inverse_e(0.8_wp)) - 0.8_wp) < 1.0e-12_wp, &
+                     'Yade en: the Thornton inverse')
+    end subroutine test_yade_pade
+
+    real(wp) function peer_thornton_inverse_e(b) result(e)
+        real(wp), intent(in) :: b
+        integer :: st
+        call peer_thornton_inverse(b, e, st)
+    end function peer_thornton_inverse_e
+
+    !> issue 21 item 8: `check mfix DES_EN_INPUT(1)=0.5` reads the 1-1 pair (it said
+    !> DES_EN_INPUT is missing); DES_EN_INPUT(2) the 1-2 pair of two phases; the wall
+    !> DES_EN_WALL_INPUT(1).
+    subroutine mfix_indexed()
+        type(case_t) :: c
+        type(peer_deck) :: deck
+        integer :: st
+        character(len=:), allocatable :: msg
+        allocate (c%tok(0))
+        c%peer = PEER_MFIX
+        c%mat%radius = [1.0e-3_wp, 0.0_wp]
+        c%mat%density = [2500.0_wp, 0.0_wp]
+        call add(c, 'DES_COLL_MODEL=HERTZIAN E_YOUNG=1e9 V_POISSON=0.3 DES_EN_INPUT(1)=0.5')
+        call read_case(c, deck, st, msg)
+        call s%check(st == HD_OK .and. deck%e_deck == 0.5_wp, 'MFiX DES_EN_INPUT(1)=0.5: the 1-1 pair''s e (' // msg // ')')
+        c%tok = c%tok(1:0)
+        call add(c, 'DES_COLL_MODEL=HERTZIAN E_YOUNG=1e9,2e9 V_POISSON=0.3 DES_EN_INPUT(2)=0.6')
+        call read_case(c, deck, st, msg)
+        call s%check(st == HD_OK .and. deck%e_deck == 0.6_wp, 'MFiX two phases DES_EN_INPUT(2)=0.6: the 1-2 pair (' // &
+                     msg // ')')
+        c%tok = c%tok(1:0)
+        c%mat%wall = .true.
+        call add(c, 'DES_COLL_MODEL=HERTZIAN E_YOUNG=1e9 V_POISSON=0.3 EW_YOUNG=2e9 VW_POISSON=0.3 DES_EN_WALL_INPUT(1)=0.7')
+        call read_case(c, deck, st, msg)
+        call s%check(st == HD_OK .and. deck%e_deck == 0.7_wp, 'MFiX DES_EN_WALL_INPUT(1)=0.7 (' // msg // ')')
+    end subroutine mfix_indexed
 
 end program test_peers

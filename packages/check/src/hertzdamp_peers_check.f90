@@ -102,11 +102,8 @@ contains
         if (nok == 0) then
             status = HD_BAD_ARGUMENT
             msg = 'no contact of the deck can be checked'
-            if (scene%skipped%n > 0) then
-                msg = msg // '; first: ' // scene%skipped%item(1)%s
-            else if (scene%notes%n > 0) then
-                msg = msg // '; first: ' // scene%notes%item(1)%s
-            end if
+            if (scene%skipped%n > 0) msg = msg // '; first: ' // scene%skipped%item(1)%s
+            if (scene%notes%n > 0) msg = msg // '; first note: ' // scene%notes%item(1)%s
             return
         end if
         status = HD_OK

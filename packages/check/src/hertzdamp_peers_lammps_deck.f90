@@ -322,9 +322,14 @@ contains
         if (k == 0) then
             ki = last_coeff(md, i, i)
             kj = last_coeff(md, j, j)
-            c%problem = 'no pair_coeff ' // itoa(i) // ' ' // itoa(j) // ': LAMMPS mixes the coefficients of ' // &
-                        itoa(i) // '-' // itoa(i) // ' and ' // itoa(j) // '-' // itoa(j) // ', which the checker ' // &
-                        'does not model'
+            if (i == j) then
+                c%problem = 'no pair_coeff covers ' // itoa(i) // ' ' // itoa(i) // ' (LAMMPS stops: all pair ' // &
+                            'coeffs are not set)'
+            else
+                c%problem = 'no pair_coeff ' // itoa(i) // ' ' // itoa(j) // ': LAMMPS mixes the coefficients of ' // &
+                            itoa(i) // '-' // itoa(i) // ' and ' // itoa(j) // '-' // itoa(j) // ', which the ' // &
+                            'checker does not model'
+            end if
             if (ki > 0 .and. kj > 0) then
                 if (md%coeffs(ki)%sub == md%coeffs(kj)%sub .and. join(md%coeffs(ki)%args) == join(md%coeffs(kj)%args)) then
                     k = ki

@@ -293,7 +293,9 @@ contains
                     w = peer_num_text(x)
                 end if
             end if
-            if (peer_number(w, x, fortran_d=.true.)) w = peer_num_text(x)   ! 1.0d-3 as the readers take it
+            if (scan(w, 'dD') > 0) then      ! 1.0d-3 as the readers take it
+                if (peer_number(w, x, fortran_d=.true.)) w = peer_num_text(x)
+            end if
             do k = 1, max(1, nint(n))
                 call vals%push(peer_strip_quotes(w))
             end do

@@ -15,7 +15,7 @@ module hertzdamp_peers_script
     use hertzdamp, only: hertzdamp_rk
     use hertzdamp_peers, only: peer_text
     use hertzdamp_peers_text, only: peer_list, peer_vars, peer_words, peer_eval, peer_number, peer_num_text, &
-                                    SYNTAX_LAMMPS
+                                    peer_g15, SYNTAX_LAMMPS
     use hertzdamp_peers_scene, only: peer_scene, peer_read_lines, peer_where
     use hertzdamp_peers_common, only: join
     use hertzdamp_host, only: HD_HOST_NONE, HD_HOST_LAMMPS
@@ -82,6 +82,7 @@ contains
         character(len=*), intent(in) :: path, where
         character(len=:), allocatable, intent(inout) :: msg
         character(len=:), allocatable :: m
+        logical :: found
         if (st%depth == max_depth) then
             msg = where // ': include nested deeper than ' // itoa(max_depth) // ' files'
             return
@@ -89,15 +90,29 @@ contains
         st%depth = st%depth + 1
         st%stack(st%depth)%name = path
         st%stack(st%depth)%next = 1
-        call peer_read_lines(path, st%stack(st%depth)%lines, m, st%scene%work)
+        ! an include is looked up beside the file that includes it, then in the working directory
+        if (st%depth > 1 .and. len(path) > 0) then
+            if (path(1:1) /= '/') then
+                inquire (file=directory(st%stack(st%depth - 1)%name) // path, exist=found)
+                if (found) st%stack(st%depth)%name = directory(st%stack(st%depth - 1)%name) // path
+            end if
+        end if
+        call peer_read_lines(st%stack(st%depth)%name, st%stack(st%depth)%lines, m, st%scene%work)
         if (len(m) > 0) then
             st%depth = st%depth - 1
             msg = m
             if (len(where) > 0) msg = where // ': include ' // m
             return
         end if
-        call st%scene%files%push(path)
+        call st%scene%files%push(st%stack(st%depth)%name)
     end subroutine push_file
+
+    !> The directory part of a path, with its slash ('' for none).
+    pure function directory(path) result(d)
+        character(len=*), intent(in) :: path
+        character(len=:), allocatable :: d
+        d = path(1:index(path, '/', back=.true.))
+    end function directory
 
     !> The next logical line (continuations joined), with the file:line of its start.
     subroutine next_line(st, line, where, more)
@@ -284,9 +299,8 @@ contains
         st%scene%work = st%scene%work + 1
         if (i == 0) then
             msg = 'variable ' // name // ' is not defined'
-        else if (st%vars%numeric(i)) then
-            val = fmt15(st%vars%x(i))
-            if (st%vars%text(i)%s /= peer_num_text(st%vars%x(i))) val = st%vars%text(i)%s
+        else if (st%vars%numeric(i) .and. len(st%vars%text(i)%s) == 0) then
+            val = peer_g15(st%vars%x(i))      ! an equal-style value, as LAMMPS's "%.15g"
         else if (index(st%vars%text(i)%s, 'no value:') == 1) then
             msg = 'variable ' // name // ' has ' // st%vars%text(i)%s
         else
@@ -294,18 +308,6 @@ contains
         end if
     end subroutine variable_text
 
-    !> A number as LAMMPS substitutes an equal-style variable ("%.15g").
-    function fmt15(x) result(s)
-        real(wp), intent(in) :: x
-        character(len=:), allocatable :: s
-        character(len=40) :: b
-        real(wp) :: y
-        integer :: ios
-        write (b, '(es24.14e3)') x
-        read (b, *, iostat=ios) y
-        if (ios /= 0) y = x
-        s = peer_num_text(y)
-    end function fmt15
 
     !> The commands interpreted for every engine; handled false for the others.
     subroutine common_command(st, w, where, handled)

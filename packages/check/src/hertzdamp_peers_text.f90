@@ -57,7 +57,7 @@ module hertzdamp_peers_text
         procedure :: find => vars_find           !! index of a name, 0 if absent
     end type peer_vars
 
-    public :: peer_number, peer_words, peer_eval, peer_num_text, peer_strip_quotes, peer_find_unquoted
+    public :: peer_number, peer_words, peer_eval, peer_num_text, peer_g15, peer_strip_quotes, peer_find_unquoted
 
 contains
 
@@ -211,7 +211,7 @@ contains
         i = vars_slot(self, name)
         self%x(i) = x
         self%numeric(i) = .true.
-        self%text(i)%s = peer_num_text(x)
+        self%text(i)%s = ''      ! a number: no text (peer_g15 formats it where a deck substitutes it)
     end subroutine vars_set_num
 
     !> A string variable; it is numeric too when the whole string reads as a number.
@@ -295,6 +295,55 @@ contains
         character(len=:), allocatable :: s
         s = fmt_short(x, ROUND_TRIP)
     end function peer_num_text
+
+    !> x with at most 15 significant digits, as C's "%.15g" (LAMMPS substitutes equal-style
+    !> variables so): trailing zeros dropped, plain notation for exponents -4 to 14.
+    function peer_g15(x) result(s)
+        real(wp), intent(in) :: x
+        character(len=:), allocatable :: s
+        character(len=32) :: b
+        character(len=15) :: d
+        integer :: e, nd, ios
+        if (.not. ieee_is_finite(x)) then
+            s = fmt_short(x)
+            return
+        end if
+        if (x == 0.0_wp) then
+            s = '0'
+            return
+        end if
+        write (b, '(es23.14e3)') abs(x)
+        b = adjustl(b)
+        d = b(1:1) // b(3:16)
+        read (b(18:), *, iostat=ios) e
+        nd = len_trim(d)
+        do while (nd > 1)
+            if (d(nd:nd) /= '0') exit
+            nd = nd - 1
+        end do
+        if (e < -4 .or. e >= 15) then
+            s = d(1:1)
+            if (nd > 1) s = s // '.' // d(2:nd)
+            s = s // 'e' // itoa_local(e)
+        else if (e >= 0) then
+            if (nd <= e + 1) then
+                s = d(1:nd) // repeat('0', e + 1 - nd)
+            else
+                s = d(1:e + 1) // '.' // d(e + 2:nd)
+            end if
+        else
+            s = '0.' // repeat('0', -e - 1) // d(1:nd)
+        end if
+        if (x < 0.0_wp) s = '-' // s
+    end function peer_g15
+
+    pure function itoa_local(i) result(s)
+        integer, intent(in) :: i
+        character(len=:), allocatable :: s
+        character(len=12) :: b
+        write (b, '(i0)') i
+        s = trim(b)
+    end function itoa_local
 
     !> Append the words of s to `words`: separated by blanks and tabs; a word in single
     !> or double quotes (`quotes`) is one word without its quotes.

@@ -316,6 +316,7 @@ contains
         b = adjustl(b)
         d = b(1:1) // b(3:16)
         read (b(18:), *, iostat=ios) e
+        if (ios /= 0) e = 0        ! (not reached: es23.14e3 always writes the exponent there)
         nd = len_trim(d)
         do while (nd > 1)
             if (d(nd:nd) /= '0') exit

@@ -125,6 +125,12 @@ g=$(py "import math; e=0.4; l=-math.log(e); print(repr(math.sqrt(5)*l/math.sqrt(
 check "liggghts_two_types 1-2: limitForce on: e_model = rk45 force end at sqrt(5) beta(0.4)" \
   close "$(pcol 1-2 e_model)" "$(rk45 tsuji force "$g")" 1e-10
 
+sed 's/^                0.3 0.4 0.5 &$/                0.06 0.4 0.5 \&/' "$D/liggghts_two_types.in" >"$TMP/lig_low.in"
+run check liggghts "$TMP/lig_low.in" --velocity 1
+check "liggghts: a target below what limitForce can reach: corrected empty, the header says why" \
+  bash -c "grep -q '^# corrected: contact 1-1 at u = 1: no value of coefficientRestitution gives e_target' '$OUT' && \
+           grep -q '^ *1-1 .* - *ok$' '$OUT'"
+
 # ------------------------------------------------------------------ MFiX
 run check mfix "$D/mfix_two_phases.dat" --velocity 1 --format csv
 check "mfix_two_phases: exit 0" test "$RC" -eq 0

@@ -114,7 +114,7 @@ deck() {  # kind(pair|wall) dt u diameter density coefficients > deck file
 import sys
 kind, dt, u, d, rho, coeff = sys.argv[1], sys.argv[2], float(sys.argv[3]), float(sys.argv[4]), sys.argv[5], sys.argv[6]
 K = 32
-o = ["# %d head-on collisions at the onset phases (k - 1/2)/%d (test/check_vs_lammps.sh)" % (K, K),
+o = ["# %d head-on collisions at the onset phases (k - 1/2)/%d (test/integration/check_vs_lammps.sh)" % (K, K),
      "variable dt equal %s" % dt, "units si", "atom_style sphere", "atom_modify map array", "boundary f f f",
      "comm_modify vel yes", "region box block -0.02 0.02 -0.005 %g -0.02 0.02" % (0.01 * K + 0.005), "create_box 1 box"]
 for k in range(1, K + 1):

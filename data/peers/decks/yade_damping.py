@@ -1,6 +1,6 @@
 # Cundall's numerical damping left at NewtonIntegrator's default (0.2), a linear ViscElMat
 # material, and spheres whose radius is a loop variable: what the checker reports and skips.
-# After Yade's examples/test/mindlin.py and the ViscElMat documentation.
+# After Yade's example mindlin.py (examples, directory test) and the ViscElMat documentation.
 import random
 mat = O.materials.append(FrictMat(young=1e8, poisson=0.25, density=2000, label='sand'))
 visc = O.materials.append(ViscElMat(young=1e8, poisson=0.25, density=2000, en=0.5, et=0.5, label='visc'))

@@ -1,6 +1,6 @@
 # Velocity-dependent restitution (Yade 2024.02a and later: en with vn, the viscoelastic damping
 # of Brilliantov et al. 1996 with the Mueller and Poeschel 2011 Pade), the law's parameters set
-# through its label as Yade's examples/test/Damping_HM.py does.
+# through its label as Yade's example Damping_HM.py (examples, directory test) does.
 young = 1e9
 O.materials.append(FrictMat(young=young, poisson=0.3, density=1500))
 O.bodies.append(sphere((0, 0, 0), 0.002))

@@ -19,7 +19,7 @@ module hertzdamp_peers_check
     use hertzdamp_peers, only: peer_deck, peer_point, peer_text, peer_evaluate, peer_parameter, peer_time_estimate, &
                                peer_spec_field, peer_nan, peer_name, peer_damping, TSTEP_MFIX, &
                                PEER_LAMMPS, PEER_LIGGGHTS, PEER_YADE, PEER_MFIX
-    use hertzdamp_peers_deck, only: peer_read_deck, peer_releases
+    use hertzdamp_peers_deck, only: peer_read_deck, peer_releases, peer_parameter_problem
     use hertzdamp_peers_scene, only: peer_scene, peer_contact
     use hertzdamp_peers_lammps_deck, only: read_lammps_deck
     use hertzdamp_peers_liggghts_deck, only: read_liggghts_deck
@@ -58,6 +58,7 @@ module hertzdamp_peers_check
         real(wp) :: steps = 0.0_wp, t_c = 0.0_wp, corrected = 0.0_wp
         logical :: have_target = .false., have_host = .false., have_steps = .false., have_corrected = .false.
         character(len=:), allocatable :: verdict
+        character(len=:), allocatable :: why   !! why there is no corrected value ('' when none is asked or there is one)
     end type check_row
 
     public :: peer_read_scene, peer_check_scene
@@ -93,6 +94,7 @@ contains
         character(len=:), allocatable, intent(out) :: msg
         type(peer_deck), allocatable :: decks(:)
         logical, allocatable :: ok(:)
+        type(peer_list) :: refused
         integer :: i, nok
         msg = ''
         allocate (decks(scene%ncontacts), ok(scene%ncontacts))
@@ -110,7 +112,10 @@ contains
         if (scene%dt_from_tcoll) call mfix_dtsolid(scene, decks, ok)
         call header(scene, opt, decks, ok, rep)
         do i = 1, scene%ncontacts
-            if (ok(i)) call contact_rows(scene, scene%contacts(i), decks(i), opt, rep)
+            if (ok(i)) call contact_rows(scene, scene%contacts(i), decks(i), opt, rep, refused)
+        end do
+        do i = 1, refused%n
+            call rep%meta(numbered('corrected', i, refused%n), refused%item(i)%s)
         end do
     end subroutine peer_check_scene
 
@@ -263,16 +268,18 @@ contains
     end function numbered
 
     !> The rows of one contact, one per speed.
-    subroutine contact_rows(scene, c, deck, opt, rep)
+    subroutine contact_rows(scene, c, deck, opt, rep, refused)
         type(peer_scene), intent(in) :: scene
         type(peer_contact), intent(in) :: c
         type(peer_deck), intent(in) :: deck
         type(peer_check_options), intent(in) :: opt
         type(peer_report), intent(inout) :: rep
+        type(peer_list), intent(inout) :: refused   !! corrected values the engine refuses, why
         type(peer_point) :: pt
         type(check_row) :: r
         real(wp) :: et
         logical :: have_et, have
+        character(len=:), allocatable :: problem
         integer :: i
         have_et = opt%have_e .or. deck%e_deck > 0.0_wp
         et = 0.5_wp
@@ -286,7 +293,7 @@ contains
             if (have) then
                 call evaluate_row(scene, deck, pt, et, have_et, r)
             else
-                r = check_row(verdict='')
+                r = check_row(verdict='', why='')
             end if
             call rep%num_or_none(et, have_et)
             call rep%num_or_none(pt%e, have)
@@ -298,6 +305,17 @@ contains
                 call rep%str(r%verdict)
             else
                 call rep%none()
+            end if
+            if (len(r%why) > 0) call refused%push('contact ' // c%pair // ' at u = ' // fmt_short(pt%u, 6) // &
+                                                  ': no value of ' // deck%p_name // ' gives e_target: ' // r%why)
+            if (r%have_corrected) then
+                problem = peer_parameter_problem(deck, r%corrected)
+                if (len(problem) > 0) then
+                    call refused%push('contact ' // c%pair // ' at u = ' // fmt_short(pt%u, 6) // ': ' // &
+                                      deck%p_name // ' = ' // fmt_short(r%corrected, 12) // ' would give the ' // &
+                                      'target, but ' // problem)
+                    r%have_corrected = .false.
+                end if
             end if
             call rep%num_or_none(r%corrected, r%have_corrected)
             if (have) then
@@ -320,9 +338,11 @@ contains
         real(wp) :: h
         integer :: st
         r%verdict = 'unchecked'
+        r%why = ''
         if (have_et) then
             r%corrected = pt%p_corrected
             r%have_corrected = pt%status_corrected == HD_OK
+            if (.not. r%have_corrected) r%why = 'the continuous model: ' // hertzdamp_message(pt%status_corrected)
         end if
         if (.not. (scene%dt > 0.0_wp .and. pt%status == HD_OK)) then
             if (pt%status == HD_NO_REBOUND) r%verdict = 'unresolved'
@@ -366,17 +386,25 @@ contains
         type(hertzdamp_host_stats) :: stats
         real(wp) :: alpha, c, q
         integer :: st
+        r%why = ''
         call hertzdamp_host_alpha_for_e(et, h, deck%law, deck%iend, scene%host, alpha, stats, st)
-        if (st /= HD_OK) return
+        if (st /= HD_OK) then
+            r%why = 'the integrator at this time step: ' // hertzdamp_message(st)
+            return
+        end if
         if (deck%law == HD_DAMPING_TSUJI) then
             c = alpha
         else
             q = hertzdamp_law_q(deck%law)
             c = alpha * deck%m / (pt%tstar * (pt%u * pt%tstar)**q)
         end if
-        if (.not. ieee_is_finite(c)) return
+        if (.not. ieee_is_finite(c)) then
+            r%why = 'the damping is beyond double precision'
+            return
+        end if
         call peer_parameter(deck, c, r%corrected, st)
         r%have_corrected = st == HD_OK
+        if (st /= HD_OK) r%why = 'the engine''s formula cannot produce alpha = ' // fmt_short(alpha, 6)
     end subroutine host_corrected
 
 end module hertzdamp_peers_check

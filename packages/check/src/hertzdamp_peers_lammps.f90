@@ -310,7 +310,7 @@ contains
         select case (t)
         case ('wiggle'); na = 3
         case ('shear'); na = 2
-        case ('contacts', 'limit_damping'); na = 0
+        case ('contacts'); na = 0
         case ('temperature'); na = 1
         case default
             msg = 'unknown fix wall/gran keyword "' // t // '"'

@@ -63,6 +63,9 @@ module hertzdamp_peers
     integer, parameter, public :: COEF_GAMMA_SQRT6_THORNTON = 13 !! gamma = sqrt(6) betan_T(p), Thornton et al. 2013
     integer, parameter, public :: COEF_D_YADE_VN = 14      !! d = V*(p)^2 vn^(-1/5) k^(3/5) m^(2/5), Pade(V*) = p
 
+    !> The decreasing functions bisect_decreasing inverts.
+    integer, parameter :: FN_P6 = 1, FN_THORNTON = 2, FN_PADE = 3
+
     !> The engines' own contact-time estimates (doc/peers.md).
     integer, parameter, public :: TSTEP_NONE = 0
     integer, parameter, public :: TSTEP_LIGGGHTS = 1  !! fix check/timestep/gran: 2.87 (m_p^2/(r/2 Y*^2 v))^(1/5)
@@ -310,27 +313,40 @@ contains
         real(wp), intent(in) :: g       !! value of the polynomial
         real(wp), intent(out) :: e      !! its root in [0, 1]
         integer, intent(out) :: status  !! HD_OK or HD_OUTSIDE_VALIDITY
-        real(wp) :: lo, hi, mid
-        integer :: i
         e = 0.0_wp
         status = HD_OK
         if (.not. (g <= peer_p6(0.0_wp) .and. g >= peer_p6(1.0_wp))) then
             status = HD_OUTSIDE_VALIDITY
             return
         end if
-        lo = 0.0_wp
-        hi = 1.0_wp
-        do i = 1, 200
+        e = bisect_decreasing(FN_P6, g, 0.0_wp, 1.0_wp)
+    end subroutine peer_p6_inverse
+
+    !> The x in [lo, hi] where a decreasing function (FN_*) equals y, by bisection to
+    !> the last bit.
+    pure real(wp) function bisect_decreasing(fn, y, lo0, hi0) result(x)
+        integer, intent(in) :: fn         !! FN_P6, FN_THORNTON or FN_PADE
+        real(wp), intent(in) :: y, lo0, hi0
+        real(wp) :: lo, hi, mid, f
+        integer :: i
+        lo = lo0
+        hi = hi0
+        do i = 1, 400
             mid = 0.5_wp * (lo + hi)
             if (mid <= lo .or. mid >= hi) exit
-            if (peer_p6(mid) > g) then
+            select case (fn)
+            case (FN_P6); f = peer_p6(mid)
+            case (FN_THORNTON); f = peer_thornton(mid)
+            case default; f = peer_pade_mp(mid)
+            end select
+            if (f > y) then
                 lo = mid
             else
                 hi = mid
             end if
         end do
-        e = 0.5_wp * (lo + hi)
-    end subroutine peer_p6_inverse
+        x = 0.5_wp * (lo + hi)
+    end function bisect_decreasing
 
     !> Yade's betan from en since 2023.02a: Thornton et al. (2013), eq. (B6) with the fit
     !> (B7) of their Table 2 (HertzMindlin.cpp, Ip2_FrictMat_FrictMat_MindlinPhys::go):
@@ -365,8 +381,6 @@ contains
         real(wp), intent(in) :: b       !! betan, >= 0
         real(wp), intent(out) :: e      !! en
         integer, intent(out) :: status  !! HD_OK or HD_OUTSIDE_VALIDITY
-        real(wp) :: lo, hi, mid
-        integer :: i
         e = 1.0_wp
         status = HD_OK
         if (.not. b >= 0.0_wp) then
@@ -374,18 +388,7 @@ contains
             return
         end if
         if (b == 0.0_wp) return
-        lo = 0.0_wp
-        hi = 1.0_wp
-        do i = 1, 200
-            mid = 0.5_wp * (lo + hi)
-            if (mid <= lo .or. mid >= hi) exit
-            if (peer_thornton(mid) > b) then
-                lo = mid
-            else
-                hi = mid
-            end if
-        end do
-        e = 0.5_wp * (lo + hi)
+        e = bisect_decreasing(FN_THORNTON, b, 0.0_wp, 1.0_wp)
         if (.not. e > 0.0_wp) status = HD_OUTSIDE_VALIDITY
     end subroutine peer_thornton_inverse
 
@@ -414,27 +417,16 @@ contains
     !> Newton's method), by bisection on the decreasing Pade; 0 for e >= 1, +huge for e <= 0.
     pure elemental real(wp) function peer_pade_mp_inverse(e) result(v)
         real(wp), intent(in) :: e   !! restitution coefficient
-        real(wp) :: lo, hi, mid
-        integer :: i
+        real(wp) :: hi
         v = 0.0_wp
         if (e >= 1.0_wp) return
         v = huge(1.0_wp)
         if (.not. e > 0.0_wp) return
-        lo = 0.0_wp
         hi = 1.0_wp
         do while (peer_pade_mp(hi) > e .and. hi < 1.0e100_wp)
             hi = 2.0_wp * hi
         end do
-        do i = 1, 400
-            mid = 0.5_wp * (lo + hi)
-            if (mid <= lo .or. mid >= hi) exit
-            if (peer_pade_mp(mid) > e) then
-                lo = mid
-            else
-                hi = mid
-            end if
-        end do
-        v = 0.5_wp * (lo + hi)
+        v = bisect_decreasing(FN_PADE, e, 0.0_wp, hi)
     end function peer_pade_mp_inverse
 
     !> A value as an engine that stores it in single precision (C++ float) sees it.

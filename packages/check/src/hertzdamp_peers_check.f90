@@ -27,7 +27,7 @@ module hertzdamp_peers_check
     use hertzdamp_peers_yade_deck, only: read_yade_deck
     use hertzdamp_peers_report, only: peer_report
     use hertzdamp_peers_text, only: peer_list, peer_map
-    use hertzdamp_peers_single, only: peer_has_result, peer_row_reason, pct, negligible, end_text
+    use hertzdamp_peers_single, only: peer_has_result, peer_row_reason, numbered
     use hertzdamp_host, only: hertzdamp_host_mean, hertzdamp_host_alpha_for_e, hertzdamp_host_stats, &
                               hertzdamp_host_name, HD_HOST_NONE
     use hertzdamp_apps_text, only: itoa, fmt_short, ROUND_TRIP
@@ -258,14 +258,6 @@ contains
             fmt_short(deck%k, 6) // ', m = ' // fmt_short(deck%m, 6) // ', R = ' // fmt_short(deck%radius, 6) // &
             '; ' // c%sizes
     end function contact_text
-
-    function numbered(word, i, n) result(s)
-        character(len=*), intent(in) :: word
-        integer, intent(in) :: i, n
-        character(len=:), allocatable :: s
-        s = word
-        if (n > 1) s = word // ' ' // itoa(i)
-    end function numbered
 
     !> The rows of one contact, one per speed.
     subroutine contact_rows(scene, c, deck, opt, rep, refused)

@@ -15,7 +15,7 @@ module hertzdamp_peers_script
     use hertzdamp, only: hertzdamp_rk
     use hertzdamp_peers, only: peer_text
     use hertzdamp_peers_text, only: peer_list, peer_vars, peer_words, peer_eval, peer_number, peer_num_text, &
-                                    peer_g15, SYNTAX_LAMMPS
+                                    peer_g15, peer_directory, SYNTAX_LAMMPS
     use hertzdamp_peers_scene, only: peer_scene, peer_read_lines, peer_where
     use hertzdamp_peers_common, only: join
     use hertzdamp_host, only: HD_HOST_NONE, HD_HOST_LAMMPS
@@ -93,8 +93,8 @@ contains
         ! an include is looked up beside the file that includes it, then in the working directory
         if (st%depth > 1 .and. len(path) > 0) then
             if (path(1:1) /= '/') then
-                inquire (file=directory(st%stack(st%depth - 1)%name) // path, exist=found)
-                if (found) st%stack(st%depth)%name = directory(st%stack(st%depth - 1)%name) // path
+                inquire (file=peer_directory(st%stack(st%depth - 1)%name) // path, exist=found)
+                if (found) st%stack(st%depth)%name = peer_directory(st%stack(st%depth - 1)%name) // path
             end if
         end if
         call peer_read_lines(st%stack(st%depth)%name, st%stack(st%depth)%lines, m, st%scene%work)
@@ -106,13 +106,6 @@ contains
         end if
         call st%scene%files%push(st%stack(st%depth)%name)
     end subroutine push_file
-
-    !> The directory part of a path, with its slash ('' for none).
-    pure function directory(path) result(d)
-        character(len=*), intent(in) :: path
-        character(len=:), allocatable :: d
-        d = path(1:index(path, '/', back=.true.))
-    end function directory
 
     !> The next logical line (continuations joined), with the file:line of its start.
     subroutine next_line(st, line, where, more)

@@ -25,6 +25,7 @@ module hertzdamp_peers_single
     integer, parameter :: wp = hertzdamp_rk
 
     public :: peer_single_report, peer_has_result, peer_row_reason, pct, negligible, subst, law_message, end_text
+    public :: numbered
 
 contains
 

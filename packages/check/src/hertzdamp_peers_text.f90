@@ -9,7 +9,7 @@
 module hertzdamp_peers_text
     use hertzdamp, only: hertzdamp_rk, hertzdamp_pi
     use hertzdamp_peers, only: peer_text
-    use hertzdamp_apps_text, only: lower, fmt_short, ROUND_TRIP
+    use hertzdamp_apps_text, only: lower, itoa, fmt_short, ROUND_TRIP
     use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
     use, intrinsic :: iso_fortran_env, only: int64
     implicit none
@@ -58,6 +58,7 @@ module hertzdamp_peers_text
     end type peer_vars
 
     public :: peer_number, peer_words, peer_eval, peer_num_text, peer_g15, peer_strip_quotes, peer_find_unquoted
+    public :: peer_directory
 
 contains
 
@@ -325,7 +326,7 @@ contains
         if (e < -4 .or. e >= 15) then
             s = d(1:1)
             if (nd > 1) s = s // '.' // d(2:nd)
-            s = s // 'e' // itoa_local(e)
+            s = s // 'e' // itoa(e)
         else if (e >= 0) then
             if (nd <= e + 1) then
                 s = d(1:nd) // repeat('0', e + 1 - nd)
@@ -338,13 +339,12 @@ contains
         if (x < 0.0_wp) s = '-' // s
     end function peer_g15
 
-    pure function itoa_local(i) result(s)
-        integer, intent(in) :: i
-        character(len=:), allocatable :: s
-        character(len=12) :: b
-        write (b, '(i0)') i
-        s = trim(b)
-    end function itoa_local
+    !> The directory part of a path, with its slash ('' for none).
+    pure function peer_directory(path) result(d)
+        character(len=*), intent(in) :: path
+        character(len=:), allocatable :: d
+        d = path(1:index(path, '/', back=.true.))
+    end function peer_directory
 
     !> Append the words of s to `words`: separated by blanks and tabs; a word in single
     !> or double quotes (`quotes`) is one word without its quotes.

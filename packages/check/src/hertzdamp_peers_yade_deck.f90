@@ -15,7 +15,7 @@ module hertzdamp_peers_yade_deck
     use hertzdamp, only: hertzdamp_rk
     use hertzdamp_peers, only: peer_text, PEER_YADE
     use hertzdamp_peers_text, only: peer_list, peer_vars, peer_eval, peer_num_text, peer_strip_quotes, peer_words, &
-                                    peer_number, SYNTAX_PYTHON
+                                    peer_number, peer_directory, SYNTAX_PYTHON
     use hertzdamp_peers_scene, only: peer_scene, peer_contact, peer_read_lines, peer_where
     use hertzdamp_host, only: HD_HOST_LAMMPS, HD_HOST_NONE
     use hertzdamp_apps_text, only: itoa, fmt_short
@@ -80,7 +80,7 @@ contains
         md%law_label = ''
         md%newton_label = ''
         do f = 1, size(paths)
-            md%dir = directory(paths(f)%s)
+            md%dir = peer_directory(paths(f)%s)
             call peer_read_lines(paths(f)%s, lines, msg, scene%work)
             if (len(msg) > 0) return
             call scene%files%push(paths(f)%s)
@@ -695,13 +695,6 @@ contains
             call scene%note(where, 'ymport.text ' // path // ': no line "x y z r"')
         end if
     end subroutine ymport
-
-    !> The directory part of a path, with its slash ('' for none).
-    pure function directory(path) result(d)
-        character(len=*), intent(in) :: path
-        character(len=:), allocatable :: d
-        d = path(1:index(path, '/', back=.true.))
-    end function directory
 
     !> O.dt = expr (PWaveTimeStep() evaluated at the end).
     subroutine time_step(md, s, where)

@@ -42,7 +42,8 @@ module hertzdamp_peers_check
     character(len=*), parameter, public :: verdict_text = &
         'ok: the integrator changes e by at most 1 % of e_model and e_spread is at most 1 % of it; ' // &
         'coarse: more (the corrected coefficient makes the mean e_host equal the target); unresolved: fewer ' // &
-        'than 3 steps per contact or no discrete rebound; unchecked: the integrator is not modeled'
+        'than 3 steps per contact or no rebound; unchecked: no e_host (the integrator is not modeled, or the ' // &
+        'header says why)'
 
     !> What the caller asks.
     type, public :: peer_check_options
@@ -59,6 +60,7 @@ module hertzdamp_peers_check
         logical :: have_target = .false., have_host = .false., have_steps = .false., have_corrected = .false.
         character(len=:), allocatable :: verdict
         character(len=:), allocatable :: why   !! why there is no corrected value ('' when none is asked or there is one)
+        character(len=:), allocatable :: host_why  !! why there is no e_host though the integrator is modeled ('')
     end type check_row
 
     public :: peer_read_scene, peer_check_scene
@@ -94,7 +96,7 @@ contains
         character(len=:), allocatable, intent(out) :: msg
         type(peer_deck), allocatable :: decks(:)
         logical, allocatable :: ok(:)
-        type(peer_list) :: refused
+        type(peer_list) :: refused, host_notes
         integer :: i, nok
         msg = ''
         allocate (decks(scene%ncontacts), ok(scene%ncontacts))
@@ -112,7 +114,10 @@ contains
         if (scene%dt_from_tcoll) call mfix_dtsolid(scene, decks, ok)
         call header(scene, opt, decks, ok, rep)
         do i = 1, scene%ncontacts
-            if (ok(i)) call contact_rows(scene, scene%contacts(i), decks(i), opt, rep, refused)
+            if (ok(i)) call contact_rows(scene, scene%contacts(i), decks(i), opt, rep, refused, host_notes)
+        end do
+        do i = 1, host_notes%n
+            call rep%meta(numbered('e_host', i, host_notes%n), host_notes%item(i)%s)
         end do
         do i = 1, refused%n
             call rep%meta(numbered('corrected', i, refused%n), refused%item(i)%s)
@@ -260,13 +265,14 @@ contains
     end function contact_text
 
     !> The rows of one contact, one per speed.
-    subroutine contact_rows(scene, c, deck, opt, rep, refused)
+    subroutine contact_rows(scene, c, deck, opt, rep, refused, host_notes)
         type(peer_scene), intent(in) :: scene
         type(peer_contact), intent(in) :: c
         type(peer_deck), intent(in) :: deck
         type(peer_check_options), intent(in) :: opt
         type(peer_report), intent(inout) :: rep
-        type(peer_list), intent(inout) :: refused   !! corrected values the engine refuses, why
+        type(peer_list), intent(inout) :: refused     !! corrected values the engine refuses, why
+        type(peer_list), intent(inout) :: host_notes  !! why e_host is missing where the integrator is modeled
         type(peer_point) :: pt
         type(check_row) :: r
         real(wp) :: et
@@ -285,7 +291,7 @@ contains
             if (have) then
                 call evaluate_row(scene, deck, pt, et, have_et, r)
             else
-                r = check_row(verdict='', why='')
+                r = check_row(verdict='', why='', host_why='')
             end if
             call rep%num_or_none(et, have_et)
             call rep%num_or_none(pt%e, have)
@@ -298,6 +304,8 @@ contains
             else
                 call rep%none()
             end if
+            if (len(r%host_why) > 0) call host_notes%push('contact ' // c%pair // ' at u = ' // fmt_short(pt%u, 6) // &
+                                                          ': e_host: ' // r%host_why)
             if (len(r%why) > 0) call refused%push('contact ' // c%pair // ' at u = ' // fmt_short(pt%u, 6) // &
                                                   ': no value of ' // deck%p_name // ' gives e_target: ' // r%why)
             if (r%have_corrected) then
@@ -331,6 +339,7 @@ contains
         integer :: st
         r%verdict = 'unchecked'
         r%why = ''
+        r%host_why = ''
         if (have_et) then
             r%corrected = pt%p_corrected
             r%have_corrected = pt%status_corrected == HD_OK
@@ -349,9 +358,8 @@ contains
         if (scene%host == HD_HOST_NONE) return
         h = scene%dt / pt%tstar
         call hertzdamp_host_mean(pt%alpha, h, deck%law, deck%iend, scene%host, stats, st)
-        if (st /= HD_OK) then
-            r%verdict = 'unresolved'
-            r%have_corrected = .false.
+        if (st /= HD_OK) then      ! (e.g. h = dt/t* outside the host module's range): no guess
+            r%host_why = hertzdamp_message(st) // ' (h = dt/t* = ' // fmt_short(h, 6) // ')'
             return
         end if
         r%e_host = stats%e_mean

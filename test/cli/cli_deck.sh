@@ -9,6 +9,7 @@
 SUITE=cli_deck
 cd "$(dirname "$0")/../.." || exit 1
 . test/cli/cli_common.bash
+BIN=$(realpath "$BIN")   # the test runs in the examples' directories too
 TMP=$(mktemp -d); trap 'rm -rf "$TMP" "$OUT" "$ERR"' EXIT
 D=$PWD/data/peers/decks
 LEX=/usr/share/lammps/examples

@@ -8,7 +8,7 @@
 # below 6e-5).  The current-release prediction for tsuji must differ (the test tells the
 # formulas apart).  Needs the Debian package lammps (`make lammps` installs it).
 cd "$(dirname "$0")/../.." || exit 1
-BIN=${HERTZDAMP_BIN:?set HERTZDAMP_BIN}
+BIN=$(realpath "${HERTZDAMP_BIN:?set HERTZDAMP_BIN}")   # the onset runs call it from a scratch directory
 LMP=$(command -v lmp || true)
 if [ -z "$LMP" ]; then
   echo "FAIL check_vs_lammps: lmp not found (Debian package lammps; make lammps installs it)"

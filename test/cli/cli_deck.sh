@@ -189,6 +189,19 @@ check "yade_spheres: O.dt = 0.5*PWaveTimeStep() = 0.5 min r/sqrt(E/rho) ($got vs
 check "yade_spheres: NewtonIntegrator(damping=0) is the lammps scheme" grep -q '^# integrator: NewtonIntegrator(damping=0) .*host scheme lammps' "$OUT"
 run check yade "$D/yade_vn.py" --velocity 2 --format csv
 check "yade_vn: at u = vn the Pade gives en: e_model = 0.8 within the fit (2e-3)" close "$(col e_model 1)" 0.8 2.5e-3
+check "yade_vn: e_target at u = vn is en" close "$(col e_target 1)" 0.8 1e-14
+run check yade "$D/yade_vn.py" --velocity 20 --format csv
+et=$(py "
+a=[1,1.07232,0.574198,0.141552]; b=[1,1.07232,1.72765,1.37842,1.19449,0.467273,0.235585]
+P=lambda v: sum(c*v**i for i,c in enumerate(a))/sum(c*v**i for i,c in enumerate(b))
+lo,hi=0.0,10.0
+for _ in range(200):
+    m=(lo+hi)/2
+    if P(m)>0.8: lo=m
+    else: hi=m
+print(repr(P(lo*(20/2.0)**0.1)))")
+check "yade_vn: e_target at u = 10 vn is Pade(V* 10^(1/10)) ($(col e_target 1) vs $et)" close "$(col e_target 1)" "$et" 1e-12
+check "yade_vn: e_model follows it within the Pade's accuracy" close "$(col e_model 1)" "$et" 2.5e-3
 expect_fail 2 "yade_vn with --release 2023: vn does not exist there" check yade "$D/yade_vn.py" --release 2023
 check "message names vn and 2024.02a: $(cat "$ERR")" grep -q 'vn.*2024.02a' "$ERR"
 run check yade "$D/yade_damping.py" --velocity 1 --format csv

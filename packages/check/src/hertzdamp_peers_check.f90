@@ -4,8 +4,9 @@
 !> contact is resolved by the engine's contact reader (hertzdamp_peers_deck) and
 !> evaluated at every impact speed:
 !>
-!> - e_target: the restitution coefficient the deck asks for (its restitution input), or
-!>   --e; empty where neither says;
+!> - e_target: the restitution coefficient the deck asks for (its restitution input; for
+!>   Yade's en with vn, the Mueller-Poeschel e at each speed), or --e; empty where neither
+!>   says;
 !> - e_model, t_c: the continuous model with the deck's k and d (hertzdamp_peers);
 !> - e_host, e_spread: the mean and the standard deviation over the onset phase of the
 !>   restitution coefficient the engine's own integrator gives at the deck's time step
@@ -17,7 +18,8 @@ module hertzdamp_peers_check
     use hertzdamp, only: hertzdamp_rk, hertzdamp_message, hertzdamp_law_name, hertzdamp_end_name, hertzdamp_law_q, &
                          HD_OK, HD_NO_REBOUND, HD_BAD_ARGUMENT, HD_DAMPING_TSUJI
     use hertzdamp_peers, only: peer_deck, peer_point, peer_text, peer_evaluate, peer_parameter, peer_time_estimate, &
-                               peer_spec_field, peer_nan, peer_name, peer_damping, TSTEP_MFIX, &
+                               peer_spec_field, peer_name, peer_pade_mp, peer_pade_mp_inverse, TSTEP_MFIX, &
+                               COEF_D_YADE_VN, &
                                PEER_LAMMPS, PEER_LIGGGHTS, PEER_YADE, PEER_MFIX
     use hertzdamp_peers_deck, only: peer_read_deck, peer_releases, peer_parameter_problem
     use hertzdamp_peers_scene, only: peer_scene, peer_contact
@@ -279,11 +281,15 @@ contains
         logical :: have_et, have
         character(len=:), allocatable :: problem
         integer :: i
+        problem = ''
         have_et = opt%have_e .or. deck%e_deck > 0.0_wp
         et = 0.5_wp
         if (deck%e_deck > 0.0_wp) et = deck%e_deck
         if (opt%have_e) et = opt%e_user
         do i = 1, size(opt%speeds)
+            ! Yade's en with vn asks for the Mueller-Poeschel e at each speed: Pade(V*(en) (u/vn)^(1/10))
+            if (deck%coef == COEF_D_YADE_VN .and. .not. opt%have_e) et = &
+                peer_pade_mp(peer_pade_mp_inverse(deck%p) * (opt%speeds(i) / deck%vn)**0.1_wp)
             pt = peer_evaluate(deck, opt%speeds(i), et)
             have = peer_has_result(pt%status)
             call rep%str(c%pair)

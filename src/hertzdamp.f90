@@ -2,7 +2,8 @@
 !>
 !> `use hertzdamp` gives the whole public API: kinds, status codes and messages,
 !> the dimensionless reduction, the damping laws, the reference integrator, the named constants, the
-!> fitted and compact approximants and the inverse rule `hertzdamp_invert`.
+!> fitted and compact approximants, the inverse rule `hertzdamp_invert` and the host-exact
+!> per-pair constants of `hertzdamp_host`.
 module hertzdamp
     use hertzdamp_kinds
     use hertzdamp_status
@@ -17,6 +18,7 @@ module hertzdamp
     use hertzdamp_compact
     use hertzdamp_inverse
     use hertzdamp_materials
+    use hertzdamp_host
     implicit none
     public
 end module hertzdamp

@@ -24,7 +24,7 @@ TEST_LINK := -fopenmp
 all: build
 
 # ---------------------------------------------------------------- set-up
-deps: .deps-apt $(FPM) $(VENV)/bin/fortitude $(VENV)/bin/ford
+deps: .deps-apt $(FPM) $(VENV)/bin/fortitude $(VENV)/bin/ford $(VENV)/.test-modules
 
 # Install only the Debian packages that are missing; a stamp keeps reruns silent.
 .deps-apt: Makefile
@@ -54,6 +54,14 @@ $(VENV)/bin/ford: $(FPM)
 	$(VENV)/bin/pip install -q ford==7.0.13
 	@touch $@
 
+# Python modules the tests import beyond the standard library (a fresh Debian has
+# none of them; the tests run with .venv's python, HERTZDAMP_PYTHON): PyYAML for
+# test/cli_docs.sh (CITATION.cff).
+TEST_PY_MODULES := PyYAML==6.0.2
+$(VENV)/.test-modules: $(FPM) Makefile
+	$(VENV)/bin/pip install -q $(TEST_PY_MODULES)
+	@touch $@
+
 # ---------------------------------------------------------------- build and run
 # fpm 0.12 keeps libhertzdamp.a when a merge adds a source file or recompiles an
 # object without refreshing the archive (seen again with this layout), so programs
@@ -79,7 +87,7 @@ test: deps
 	@$(FPM) build --tests --flag "$(TEST_FLAGS)" --link-flag "$(TEST_LINK)"
 	@$(FPM) build --flag "$(RELEASE_FLAGS)"
 	@$(MAKE) --no-print-directory lammps
-	@bash test/run_tests.sh "$(FPM)" "$(TEST_FLAGS)" "$(RELEASE_FLAGS)" "$(TEST_LINK)"
+	@HERTZDAMP_PYTHON=$(CURDIR)/$(VENV)/bin/python bash test/run_tests.sh "$(FPM)" "$(TEST_FLAGS)" "$(RELEASE_FLAGS)" "$(TEST_LINK)"
 
 # ---------------------------------------------------------------- generated tables
 # Series coefficients: the generator writes data/*.csv, the converter turns them into

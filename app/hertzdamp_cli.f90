@@ -91,6 +91,7 @@ module hertzdamp_cli
     public :: check_combinations
     public :: exit_code_of, write_failed, write_stdout, error_line, stderr_is_terminal, cli_start
     public :: fail, quit, fmt_csv, fmt_text, fmt_json, fmt_short, json_string, csv_join, pad
+    public :: c_write, c_signal   ! POSIX write(2) and signal(2), for the progress and plot modules
 
 contains
 

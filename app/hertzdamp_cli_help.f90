@@ -44,8 +44,9 @@ module hertzdamp_cli_help
         'without a result keeps its inputs; its results are empty (csv), null (json)' // nl // &
         'or - (text), as are quantities a method does not give.' // nl // &
         'Exit: 0 when every row has a result; 3 when some have none (all rows are' // nl // &
-        'printed, and one line on stderr says how many and why); when none has one,' // nl // &
-        'nothing on stdout, one line on stderr, exit 2 (bad input), 3 or 4 (failed).'
+        'printed, and one line on stderr says how many and why), 4 if a computation of' // nl // &
+        'one of them failed; when none has one, nothing on stdout, one line on stderr,' // nl // &
+        'exit 2 (bad input), 3 or 4 (failed).'
 
     character(len=*), parameter :: method_help = &
         '  --damping LAW         damping force d zeta^q zeta'': linear (q = 0, default; d in' // nl // &
@@ -115,7 +116,8 @@ module hertzdamp_cli_help
         '                        with n the unit vector from body 1 to body 2 [m s^-1].' // nl // &
         '  e                     restitution: normal separation speed / approach speed.' // nl // &
         '' // nl // &
-        'Exit codes: 0 success, 2 bad usage, 3 no solution, 4 computation failed.' // nl // &
+        'Exit codes: 0 success, 2 bad usage, 3 no solution, 4 computation failed (also' // nl // &
+        'when some rows of a table have a result and the computation of another failed).' // nl // &
         'Errors go to stderr as one line (the last, after the lines --progress writes' // nl // &
         'into a file or pipe); stdout is then empty, except for commands that print one' // nl // &
         'row per value, where rows with a result still print (see their --help).' // nl // &
@@ -349,9 +351,12 @@ module hertzdamp_cli_help
         '  --damping D     linear (q = 0), tsuji (q = 1/4), kuwabara-kono (q = 1/2) or' // nl // &
         '                  auto (default): every law, the one with the smallest AIC chosen' // nl // &
         '                  (AIC = chi2 + 2p with sigmas, n ln(RSS/n) + 2p without; all laws' // nl // &
-        '                  have the same p, so this is the smallest chi2 or RSS)' // nl // &
+        '                  have the same p, so this is the smallest chi2 or RSS); a law' // nl // &
+        '                  whose fit failed is passed over only where it already fits worse,' // nl // &
+        '                  else none is chosen (exit 4)' // nl // &
         '  --end overlap|force   contact-end definition (default overlap)' // nl // &
-        '  --method M      fit (default: machine-precision maps and their exact derivatives)' // nl // &
+        '  --method M      fit (default: machine-precision maps and their exact derivatives;' // nl // &
+        '                  the reference integrator for measurements beyond the maps, e < 1e-5)' // nl // &
         '                  or rk45 (reference integrator in the loop, for checking; slow)' // nl // &
         '  --tol T         rk45 tolerance, 1e-15 <= T <= 1e-2 (default 1e-13)' // nl // &
         '  --format F      text (default: summary and residuals), csv (summary) or json' // nl // &
@@ -373,7 +378,8 @@ module hertzdamp_cli_help
         'rms_residual_tc [s], c [SI].' // nl // &
         'Exit codes: 2 invalid file or values (NaN, u <= 0, e outside (0, 1], ...), 3 the' // nl // &
         'data cannot determine the parameters (one speed only, e = 1 everywhere), 4 the fit' // nl // &
-        'did not converge.'
+        'did not converge (without sigmas: Gauss-Newton correction above 1e-10) or the model' // nl // &
+        'cannot be evaluated at the start (the message names why).'
 
     character(len=*), parameter :: check = &
         'Usage: hertzdamp check ENGINE FILE... [--velocity U] [--e E] [--release R] [--format F]' // nl // &

@@ -6,7 +6,8 @@ module hertzdamp_cmd_basic
                          hertzdamp_law_has_alpha_c, hertzdamp_law_alpha_c, hertzdamp_law_code, &
                          HD_OK, HD_NO_REBOUND, HD_END_OVERLAP, HD_METHOD_RK45, HD_METHOD_SERIES, HD_METHOD_PADE, &
                          HD_BAD_ALPHA, HD_BAD_STIFFNESS, HD_BAD_DAMPING, HD_BAD_VELOCITY, HD_BAD_MASS, &
-                         HD_OUT_OF_RANGE, HD_OUTSIDE_VALIDITY, HD_INACCURATE
+                         HD_OUT_OF_RANGE, HD_OUTSIDE_VALIDITY, HD_INACCURATE, HD_MAX_STEPS, hertzdamp_reduce, &
+                         hertzdamp_rk45_options
     use hertzdamp_cli, only: cli_args, cli_buffer, parse_args, parse_choice, parse_sweep, parse_range, fail, quit, &
                              required_sweep, check_combinations, EXIT_USAGE, EXIT_OK, EXIT_FAILURE, max_list_length
     use hertzdamp_cli_text, only: fmt_short, itoa
@@ -31,6 +32,7 @@ contains
         integer, intent(in) :: status
         real(wp), intent(in) :: alpha
         character(len=:), allocatable :: s
+        type(hertzdamp_rk45_options), parameter :: max_steps = hertzdamp_rk45_options()
         select case (status)
         case (HD_BAD_ALPHA, HD_OUTSIDE_VALIDITY)
             if (abs(alpha) > hertzdamp_alpha_max) then
@@ -45,6 +47,11 @@ contains
                 ' exceeds --accuracy ' // fmt_short(c%accuracy) // ' (raise '
             if (c%method == HD_METHOD_SERIES) s = s // '--order or '
             s = s // '--accuracy, or ' // instead(c) // ')'
+        case (HD_MAX_STEPS)
+            ! what really happened: the contact outlasted the step budget
+            s = 'alpha = ' // fmt_short(alpha) // ': the reference integrator reached its limit of ' // &
+                itoa(max_steps%max_steps) // ' steps before the contact ended (damping this strong makes the ' // &
+                'contact long and the equation stiff)'
         case default
             s = 'alpha = ' // fmt_short(alpha) // ': ' // hertzdamp_message(status)
         end select
@@ -110,7 +117,7 @@ contains
         type(cli_contact) :: ct
         real(wp), allocatable :: ks(:), ds(:), us(:)
         real(wp) :: k, d, u, alpha, tstar, e, tc, zmax
-        integer :: status, ik, id, iu, kind, n
+        integer :: status, ik, id, iu, kind, n, st
         type(out_table) :: t
         type(row_log) :: rows
         type(progress_reporter) :: p
@@ -148,6 +155,9 @@ contains
                                                c%tol, c%order, c%accuracy, c%law)
                     have_alpha = .true.
                     have_tstar = .true.
+                    ! a failed row has no alpha from the library: the message needs it
+                    if (status /= HD_OK) call hertzdamp_reduce(k, d, ct%mass, u, alpha, tstar, st, law=c%law)
+                    if (status /= HD_OK .and. st /= HD_OK) alpha = 0.0_wp
                     if (status == HD_OUT_OF_RANGE .or. status == HD_BAD_ALPHA) then
                         ! alpha beyond the method (or double precision): with the overlap end that is
                         ! simply no rebound; with the force end, outside the method's range

@@ -86,8 +86,14 @@ contains
 
         if (law < 0) then
             call cal_auto(dat, o, res, chosen)
-            ! no law could be fitted: say why the first one failed
-            if (chosen < 0) call fail(exit_of(res(0)%status), res(0)%message)
+            ! no law could be fitted (say why the first failed), or a law that may fit
+            ! best could not be: choose none
+            if (chosen < 0) then
+                if (all(res(:)%status /= CAL_OK)) call fail(exit_of(res(0)%status), res(0)%message)
+                i = findloc(res(:)%status /= CAL_OK, .true., dim=1) - 1
+                call fail(exit_of(res(i)%status), res(i)%message // '; so --damping auto cannot tell which law ' // &
+                          'the data support (fit one law with --damping LAW)')
+            end if
             order = [chosen, pack([(i, i=0, cal_max_law)], [(i /= chosen, i=0, cal_max_law)])]
         else
             call cal_fit(dat, law, o, res(law))
@@ -124,6 +130,9 @@ contains
         logical :: eof
         character(len=256) :: iom
         character(len=16) :: b
+        ! a directory opens and reads as an empty file: say what it is (FILE/. exists only then)
+        inquire (file=file // '/.', exist=eof)
+        if (eof) call fail(EXIT_USAGE, 'the data file "' // file // '" is a directory')
         open (newunit=u, file=file, status='old', action='read', iostat=ios, iomsg=iom)
         if (ios /= 0) call fail(EXIT_USAGE, 'cannot open the data file "' // file // '": ' // trim(iom))
         allocate (u_(64), e(64), tc(64), se(64), st(64), has(64), lines(64))
@@ -441,7 +450,8 @@ contains
         else if (res(l)%kd_known) then
             call buf%add('# fitted: d, with k = k_phys = ' // g(o%k_known) // ' (no contact times to fit k)')
         else
-            call buf%add('# fitted: c = d k^(-2(1+q)/5) only: without contact times or --k, e cannot tell k')
+            call buf%add('# fitted: c = d k^(-2(1+q)/5) only: without contact times or a known stiffness ' // &
+                         '(--k-phys, or --youngs-modulus and --poisson-ratio), e cannot tell k')
         end if
         if (auto) then
             call buf%add('# criterion: smallest AIC; every law has the same number of parameters (' // &

@@ -14,6 +14,13 @@
  * The functions keep no state and may be called from any number of threads at
  * once.  Units: SI (kg, m, s); k in N m^-3/2, d in kg/s.
  *
+ * Aliasing (the _n calls): a result array may be an input array itself, in place
+ * (k over e or m, d over tc or u, each element over the same element): every input
+ * of a contact is read before its results are written, and the results are those of
+ * separate arrays, bit for bit.  A partial overlap (a result array starting inside an
+ * input array at another element) is not allowed: its results are unspecified
+ * (nothing is written outside the arrays).  test/capi_fuzz checks both.
+ *
  * Every C name starts with hertzdamp_c_ (macros with HERTZDAMP_): the legacy
  * Fortran externals (HERTZDAMP_INVERT ... -> hertzdamp_invert_) never collide
  * with them, not even under -fno-underscoring.

@@ -106,9 +106,39 @@ contains
         if (.not. (present(e) .and. present(tc) .and. present(m) .and. present(u) .and. present(k) .and. &
                    present(d) .and. present(st))) return
         ! vectorised over the arrays; the results of n calls of hertzdamp_c_invert
-        call flat_invert_n(int(n), e, tc, m, u, int(iend), k, d, st)
+        call invert_blocks(int(n), e, tc, m, u, .false., 0, int(iend), k, d, st)
         status = first_failure(st)
     end function hertzdamp_c_invert_n
+
+    !> The array inverse in blocks of `block` contacts through local arrays: every input
+    !> of a block is read before any of its results is written, so a result array may
+    !> be an input array itself (in place, as hertzdamp.h allows: k over e, d over tc,
+    !> ...).  A partial overlap (k starting inside e at another element) is not allowed.
+    !> flat_invert_law_n with `law` when with_law, else flat_invert_n.  Same kernel, the
+    !> same bits per contact as one call over the whole arrays.
+    subroutine invert_blocks(n, e, tc, m, u, with_law, law, iend, k, d, st)
+        integer, intent(in) :: n, law, iend
+        logical, intent(in) :: with_law
+        real(c_double), intent(in) :: e(n), tc(n), m(n), u(n)
+        real(c_double), intent(out) :: k(n), d(n)
+        integer(c_int), intent(out) :: st(n)
+        integer, parameter :: block = 256
+        real(c_double) :: kb(block), db(block)
+        integer :: sb(block), i0, nb
+        do i0 = 1, n, block
+            nb = min(block, n - i0 + 1)
+            if (.not. with_law) then
+                call flat_invert_n(nb, e(i0:i0 + nb - 1), tc(i0:i0 + nb - 1), m(i0:i0 + nb - 1), u(i0:i0 + nb - 1), &
+                                   iend, kb(1:nb), db(1:nb), sb(1:nb))
+            else
+                call flat_invert_law_n(nb, e(i0:i0 + nb - 1), tc(i0:i0 + nb - 1), m(i0:i0 + nb - 1), &
+                                       u(i0:i0 + nb - 1), law, iend, kb(1:nb), db(1:nb), sb(1:nb))
+            end if
+            k(i0:i0 + nb - 1) = kb(1:nb)
+            d(i0:i0 + nb - 1) = db(1:nb)
+            st(i0:i0 + nb - 1) = int(sb(1:nb), c_int)
+        end do
+    end subroutine invert_blocks
 
     !> The first non-zero status of an array, or HD_OK.
     pure integer(c_int) function first_failure(st) result(status)
@@ -202,7 +232,7 @@ contains
         if (.not. (present(e) .and. present(tc) .and. present(m) .and. present(u) .and. present(k) .and. &
                    present(d) .and. present(st))) return
         ! vectorised over the arrays; the results of n calls of hertzdamp_c_invert_law
-        call flat_invert_law_n(int(n), e, tc, m, u, int(law), int(iend), k, d, st)
+        call invert_blocks(int(n), e, tc, m, u, .true., int(law), int(iend), k, d, st)
         status = first_failure(st)
     end function hertzdamp_c_invert_law_n
 

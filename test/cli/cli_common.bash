@@ -2,6 +2,8 @@
 # a `run` wrapper that captures stdout, stderr and the exit code of the CLI.
 set -u
 BIN=${HERTZDAMP_BIN:?HERTZDAMP_BIN must point to the hertzdamp executable}
+# the Python with the modules the tests import (make test: .venv's, see the Makefile)
+PYTHON=${HERTZDAMP_PYTHON:-python3}
 PASSED=0; FAILED=0
 OUT=$(mktemp); ERR=$(mktemp)
 trap 'rm -f "$OUT" "$ERR"' EXIT

@@ -17,6 +17,7 @@ module hertzdamp_cmd_basic
     use hertzdamp_cli_rows, only: row_log, row_kind, row_word, row_has_result
     use hertzdamp_cli_materials, only: cli_contact, parse_contact, require_mass, contact_table, contact_options, contact_flags
     use hertzdamp_cli_progress, only: progress_reporter
+    use hertzdamp_cli_plausible, only: warn_implausible, quiet_flag
     use, intrinsic :: ieee_arithmetic, only: ieee_value, ieee_positive_inf
     implicit none
     private
@@ -125,7 +126,7 @@ contains
         allocate (ks(0), ds(0), us(0))   ! (defined descriptors for the reallocating assignments)
         if (wants_help()) call print_help('forward')
         call parse_args(2, '--k --d --velocity ' // contact_options // ' ' // model_options, &
-                        contact_flags // ' --progress', args)
+                        contact_flags // ' --progress ' // quiet_flag, args)
         call parse_model(args, c, inverse=.false.)
         call parse_contact(args, ct)
         call require_mass(ct)
@@ -139,10 +140,12 @@ contains
         ds = required_sweep(args, '--d')
         us = required_sweep(args, '--velocity')
         call check_combinations([size(ks), size(ds), size(us)], '--k, --d and --velocity')
+        call warn_implausible(args)
         call contact_table(t, c, ct, 'k,d,velocity,mass,radius_eff,k_phys,alpha,t_star,e,t_c,zeta_max,status', &
                            'k, k_phys [N m^-3/2], d [' // damping_unit(c%law) // '], velocity [m/s], mass [kg], ' // &
                            'radius_eff [m], ' // &
-                           't_star [s], t_c [s], zeta_max [m]')
+                           't_star [s], t_c [s], zeta_max [m]', &
+                           'N m^-3/2,' // damping_unit(c%law) // ',m/s,kg,m,N m^-3/2,,s,,s,m,')
         n = 0
         call p%start(real(size(ks) * size(ds) * size(us), wp), 'forward', force=args%has('--progress'))
         do ik = 1, size(ks)

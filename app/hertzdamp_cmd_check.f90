@@ -13,7 +13,7 @@ module hertzdamp_cmd_check
     use hertzdamp_peers_deck, only: peer_materials, peer_read_deck, peer_code, peer_releases
     use hertzdamp_peers_text, only: peer_list, peer_words
     use hertzdamp_peers_scene, only: peer_scene
-    use hertzdamp_peers_check, only: peer_check_options, peer_read_scene, peer_check_scene
+    use hertzdamp_peers_check, only: peer_check_options, peer_read_scene, peer_check_scene, peer_units_si
     use hertzdamp_peers_single, only: peer_single_report
     use hertzdamp_peers_table, only: peer_table_lines, peer_table_report
     use hertzdamp_peers_report, only: peer_report, PEER_CELL_NUM, PEER_CELL_STR
@@ -26,6 +26,7 @@ module hertzdamp_cmd_check
     use hertzdamp_cli_model, only: law_text
     use hertzdamp_cli_rows, only: row_log, row_kind, row_word
     use hertzdamp_cli_progress, only: progress_reporter
+    use hertzdamp_cli_plausible, only: warn_implausible, quiet_flag
     implicit none
     private
     public :: cmd_check
@@ -57,7 +58,7 @@ contains
         integer :: peer
         if (wants_help()) call print_help('check')
         call parse_args(2, '--velocity --e --steps --release --format ' // material_options, &
-                        '--table --wall --progress', args, positionals=words)
+                        '--table --wall --progress ' // quiet_flag, args, positionals=words)
         rq%fmt = parse_choice(args%get('--format', 'text'), format_choices, 'format (--format)')
         if (args%has('--table')) then
             if (size(words) > 0 .or. size(args%opts) > merge(2, 1, args%has('--format'))) then
@@ -141,16 +142,18 @@ contains
             args%has('--density') .or. args%has('--density2')) call fail(EXIT_USAGE, &
             'a deck gives its own sizes, walls and time step: --radius, --radius2, --density, --density2, ' // &
             '--wall and --steps apply to the engine''s words, not to deck files')
-        call peer_read_scene(peer, files, scene, msg)
-        if (len(msg) > 0) call fail(EXIT_USAGE, peer_name(peer) // ': ' // msg)
-        opt%release = rq%release
-        opt%have_e = rq%have_e
-        opt%e_user = rq%e_user
         if (args%has('--velocity')) then
             opt%speeds = speeds(args)
         else
             opt%speeds = [1.0_wp]
         end if
+        call peer_read_scene(peer, files, scene, msg)
+        if (len(msg) > 0) call fail(EXIT_USAGE, peer_name(peer) // ': ' // msg)
+        ! the plausible ranges are SI: a cgs or lj deck's speeds are not compared with them
+        if (peer_units_si(scene%units)) call warn_implausible(args)
+        opt%release = rq%release
+        opt%have_e = rq%have_e
+        opt%e_user = rq%e_user
         call peer_check_scene(scene, opt, rep, st, msg)
         if (st /= HD_OK) call fail(EXIT_USAGE, peer_name(peer) // ': ' // msg)
         if (.not. args%has('--velocity')) call rep%meta('velocity', '1 in the deck''s velocity unit ' // &
@@ -204,6 +207,7 @@ contains
             rq%steps = parse_int(args%get('--steps', ''), '--steps')
             if (rq%steps < 1) call fail(EXIT_USAGE, '--steps must be >= 1')
         end if
+        call warn_implausible(args)
         call peer_read_deck(peer, tokens, mat, rq%release, deck, status, msg)
         if (status /= HD_OK) call fail(EXIT_USAGE, peer_name(peer) // ': ' // msg)
         if (rq%have_e) then
@@ -251,7 +255,7 @@ contains
         integer, intent(in) :: law
         type(out_table), intent(out) :: t
         integer :: i, j
-        call t%set_columns(rep%columns // ',status')
+        call t%set_columns(rep%columns // ',status', rep%units // ',')
         do i = 1, rep%keys%n
             if (rep%keys%item(i)%s == 'law' .and. len(rep%values%item(i)%s) == 0 .and. law >= 0) then
                 call t%meta('law', law_text(law))

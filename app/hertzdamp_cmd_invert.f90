@@ -2,7 +2,7 @@
 !> time) and `timestep` (the time step that resolves the physical contacts).
 module hertzdamp_cmd_invert
     use hertzdamp, only: hertzdamp_rk, hertzdamp_invert, hertzdamp_invert_alpha, hertzdamp_message, &
-                         hertzdamp_reduce, hertzdamp_hertz_time, &
+                         hertzdamp_reduce, hertzdamp_hertz_time, hertzdamp_rayleigh_fraction, &
                          HD_OK, HD_BAD_RESTITUTION, HD_OUTSIDE_VALIDITY, HD_INACCURATE, HD_BAD_TIME, HD_BAD_VELOCITY, &
                          HD_OUT_OF_RANGE, HD_METHOD_ITERATIVE
     use hertzdamp_cli, only: cli_args, parse_args, parse_sweep, required_sweep, check_combinations, fail, EXIT_USAGE
@@ -13,6 +13,8 @@ module hertzdamp_cmd_invert
     use hertzdamp_cli_rows, only: row_log, row_kind, row_word, row_has_result, ROW_OUTSIDE_VALIDITY, ROW_OUT_OF_RANGE
     use hertzdamp_cli_materials, only: cli_contact, parse_contact, require_mass, contact_table, contact_options, contact_flags
     use hertzdamp_cli_progress, only: progress_reporter
+    use hertzdamp_cli_plausible, only: warn_implausible, quiet_flag
+    use hertzdamp_cmd_fixed, only: invert_fixed
     use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
     implicit none
     private
@@ -37,7 +39,7 @@ contains
         allocate (es(0), tcs(0), us(0), tc_dt(0), tc_steps(0))   ! (defined descriptors for the reallocating assignments)
         if (wants_help()) call print_help('invert')
         call parse_args(2, '--e --tc --dt --steps --velocity ' // contact_options // ' ' // model_options, &
-                        contact_flags // ' --progress', args)
+                        contact_flags // ' --progress --fixed ' // quiet_flag, args)
         call parse_model(args, c, inverse=.true.)
         call parse_contact(args, ct)
         es = required_sweep(args, '--e')
@@ -45,9 +47,12 @@ contains
         us = required_sweep(args, '--velocity')
         call require_mass(ct)
         call check_combinations([size(es), size(tcs), size(us)], '--e, the contact times and --velocity')
+        call warn_implausible(args)
+        if (args%has('--fixed')) call invert_fixed(args, c, ct, es, tcs, tc_key, us)
         call contact_table(t, c, ct, 'e,tc,velocity,mass,radius_eff,k_phys,alpha,tau_c,t_star,k,d,bound_active,' // &
                            'tc_actual,status', 'tc, t_star, tc_actual [s], velocity [m/s], mass [kg], radius_eff [m], ' // &
-                           'k, k_phys [N m^-3/2], d [' // damping_unit(c%law) // ']')
+                           'k, k_phys [N m^-3/2], d [' // damping_unit(c%law) // ']', &
+                           ',s,m/s,kg,m,N m^-3/2,,,s,N m^-3/2,' // damping_unit(c%law) // ',,s,')
         n = 0
         call p%start(real(size(es) * size(tcs) * size(us), wp), 'invert', force=args%has('--progress'))
         do ie = 1, size(es)
@@ -191,7 +196,8 @@ contains
 
     !> `timestep`: for materials and a velocity range, the shortest contact of the
     !> physical model (k = k_phys, d from e) and the largest time step that resolves
-    !> it with N steps, next to the elastic Hertz estimate.
+    !> it with N steps, next to the elastic Hertz estimate and the Rayleigh time step
+    !> of the spheres (from the elastic constants and densities).
     subroutine cmd_timestep()
         type(cli_args) :: args
         type(model_opts) :: c
@@ -204,7 +210,8 @@ contains
         type(row_log) :: rows
         allocate (es(0), us(0), steps(0))
         if (wants_help()) call print_help('timestep')
-        call parse_args(2, '--e --velocity --steps ' // contact_options // ' ' // model_options, contact_flags, args)
+        call parse_args(2, '--e --velocity --steps ' // contact_options // ' ' // model_options, &
+                        contact_flags // ' ' // quiet_flag, args)
         call parse_model(args, c, inverse=.true.)
         call parse_contact(args, ct)
         call require_mass(ct)
@@ -214,6 +221,7 @@ contains
         us = required_sweep(args, '--velocity')
         steps = parse_steps(args, 10.0_wp)
         call check_combinations([size(es), size(steps)], '--e and --steps')
+        call warn_implausible(args)
         ! the time unit t* and the elastic Hertz time at every velocity; both fall as u^(-1/5)
         tmin = huge(1.0_wp)
         thertz = huge(1.0_wp)
@@ -231,9 +239,11 @@ contains
         end do
 
         call contact_table(t, c, ct, 'e,steps,velocity_max,mass,radius_eff,k_phys,alpha,tau_c,tc_damped,tc_elastic,' // &
-                           'elastic_excess,dt_max,dt_elastic,status', 'velocity_max [m/s], mass [kg], radius_eff [m], ' // &
-                           'k_phys [N m^-3/2], tc_damped, tc_elastic, dt_max, dt_elastic [s]; ' // &
-                           'elastic_excess = tc_elastic/tc_damped - 1')
+                           'elastic_excess,dt_max,dt_elastic,t_rayleigh,dt_rayleigh,status', 'velocity_max [m/s], ' // &
+                           'mass [kg], radius_eff [m], k_phys [N m^-3/2], tc_damped, tc_elastic, dt_max, dt_elastic, ' // &
+                           't_rayleigh, dt_rayleigh [s]; elastic_excess = tc_elastic/tc_damped - 1; dt_rayleigh = ' // &
+                           fmt_short(hertzdamp_rayleigh_fraction) // ' t_rayleigh', &
+                           ',,m/s,kg,m,N m^-3/2,,,s,s,,s,s,s,s,')
         do ie = 1, size(es)
             call hertzdamp_invert_alpha(es(ie), c%iend, alpha, tau, status, c%method, c%tol, c%accuracy, c%law)
             kind = row_kind(status)
@@ -269,6 +279,8 @@ contains
                 call t%num_or_none(excess, rhave)
                 call t%num_or_none(dtmax, rhave)
                 call t%num_or_none(dt_el, dt_el > 0.0_wp)
+                call t%num_or_none(ct%t_rayleigh, ct%has_rayleigh)
+                call t%num_or_none(hertzdamp_rayleigh_fraction * ct%t_rayleigh, ct%has_rayleigh)
                 call t%str(row_word(rkind))
                 if (rhave) then
                     call rows%add(rkind, '')

@@ -84,7 +84,8 @@ assert j["weighted"] is False and j["k_fixed"] is False and j["damping"] == "aut
 
 run calibrate "$T/etc.csv" --mass $M
 check "text: exit 0" test "$RC" -eq 0
-check "text: the residual table" grep -q '^ *velocity *e *e_fit *residual_e *tc *tc_fit *residual_tc' "$OUT"
+check "text: the residual table, units in its header" \
+  grep -q '^ *velocity \[m/s\] *e *e_fit *residual_e *tc \[s\] *tc_fit \[s\] *residual_tc \[s\]$' "$OUT"
 check "text: the criterion stated" grep -q 'criterion: smallest AIC' "$OUT"
 
 # sigmas: chi2/dof and a p-value

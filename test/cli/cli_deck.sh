@@ -128,9 +128,11 @@ check "liggghts_two_types 1-2: limitForce on: e_model = rk45 force end at sqrt(5
 
 sed 's/^                0.3 0.4 0.5 &$/                0.06 0.4 0.5 \&/' "$D/liggghts_two_types.in" >"$TMP/lig_low.in"
 run check liggghts "$TMP/lig_low.in" --velocity 1
-check "liggghts: a target below what limitForce can reach: corrected empty, the header says why" \
-  bash -c "grep -q '^# corrected: contact 1-1 at u = 1: no value of coefficientRestitution gives e_target' '$OUT' && \
-           grep -q '^ *1-1 .* - *ok$' '$OUT'"
+check "liggghts: a target below what limitForce can reach: the header says why" \
+  grep -q '^# corrected: contact 1-1 at u = 1: no value of coefficientRestitution gives e_target' "$OUT"
+run check liggghts "$TMP/lig_low.in" --velocity 1 --format csv
+check "liggghts: a target below what limitForce can reach: corrected empty, the row ok" \
+  test "$(pcol 1-1 corrected),$(pcol 1-1 status)" = ",ok"
 
 # ------------------------------------------------------------------ MFiX
 run check mfix "$D/mfix_two_phases.dat" --velocity 1 --format csv
@@ -230,4 +232,22 @@ expect_fail 2 "files and words mixed" check lammps "$D/lammps_include.in" dampin
 expect_fail 2 "a MercuryDPM deck file" check mercurydpm "$D/lammps_include.in"
 check "MercuryDPM: key=value words, not files: $(cat "$ERR")" grep -q 'C++ or Python programs' "$ERR"
 expect_fail 2 "deck files with --radius" check lammps "$D/lammps_include.in" --radius 1e-3
+
+# ------------------------------------------------------------------ units of the header, plausible speeds
+run check lammps "$D/lammps_include.in" --velocity 1,2
+check "units si: velocity [m/s] and t_c [s] in the text header" \
+  bash -c "grep -qE '^ *pair +velocity \[m/s\] .* t_c \[s\]' '$OUT' && test ! -s '$ERR'"
+run check lammps "$D/lammps_include.in" --velocity 1,3000
+check "units si, --velocity 3000: one warning, the results all the same (exit $RC)" \
+  test "$RC" -eq 0 -a "$(grep -c '^hertzdamp: warning: --velocity 3000: above 1e3 m/s' "$ERR")" -eq 1 -a -s "$OUT"
+run check lammps "$D/lammps_include.in" --velocity 1,3000 --quiet
+check "--quiet: no warning" test "$RC" -eq 0 -a ! -s "$ERR"
+sed 's/^units           si$/units           cgs/' "$D/lammps_include.in" >"$TMP/cgs.in"
+cp "$D/lammps_materials.in" "$TMP/"
+run check lammps "$TMP/cgs.in" --velocity 1,3000
+check "units cgs: velocity [cm/s], t_c [s]; 3000 cm/s is no warning" \
+  bash -c "grep -qE '^ *pair +velocity \[cm/s\] .* t_c \[s\]' '$OUT' && test ! -s '$ERR'"
+sed 's/^units           si$/units           lj/' "$D/lammps_include.in" >"$TMP/lj.in"
+run check lammps "$TMP/lj.in" --velocity 1,2
+check "units lj: no unit in the header" bash -c "grep -qE '^ *pair +velocity +e_target .* t_c +corrected' '$OUT'"
 finish

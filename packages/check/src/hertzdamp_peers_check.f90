@@ -32,7 +32,7 @@ module hertzdamp_peers_check
     use hertzdamp_peers_single, only: peer_has_result, peer_row_reason, numbered
     use hertzdamp_host, only: hertzdamp_host_mean, hertzdamp_host_alpha_for_e, hertzdamp_host_stats, &
                               hertzdamp_host_name, HD_HOST_NONE
-    use hertzdamp_apps_text, only: itoa, fmt_short, ROUND_TRIP
+    use hertzdamp_apps_text, only: itoa, fmt_short, ROUND_TRIP, lower
     use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
     use, intrinsic :: iso_fortran_env, only: int64
     implicit none
@@ -65,9 +65,33 @@ module hertzdamp_peers_check
         character(len=:), allocatable :: host_why  !! why there is no e_host though the integrator is modeled ('')
     end type check_row
 
-    public :: peer_read_scene, peer_check_scene
+    public :: peer_read_scene, peer_check_scene, peer_units, peer_units_si
 
 contains
+
+    !> A deck's unit of velocity (which = 1) or time (which = 2) for the header, from its
+    !> unit system (LAMMPS's units command, MFiX's UNITS): '' for lj and unknown ones.
+    pure function peer_units(system, which) result(u)
+        character(len=*), intent(in) :: system
+        integer, intent(in) :: which
+        character(len=:), allocatable :: u
+        character(len=*), parameter :: names(4) = [character(len=5) :: 'si', 'cgs', 'micro', 'nano']
+        character(len=*), parameter :: vel(4) = [character(len=8) :: 'm/s', 'cm/s', 'um/us', 'nm/ns']
+        character(len=*), parameter :: time(4) = [character(len=2) :: 's', 's', 'us', 'ns']
+        integer :: i
+        u = ''
+        do i = 1, size(names)
+            if (lower(system) /= trim(names(i))) cycle
+            if (which == 1) u = trim(vel(i))
+            if (which == 2) u = trim(time(i))
+        end do
+    end function peer_units
+
+    !> True when the deck's numbers are SI (its speeds compare with hertzdamp's plausible ranges).
+    pure logical function peer_units_si(system)
+        character(len=*), intent(in) :: system
+        peer_units_si = lower(system) == 'si'
+    end function peer_units_si
 
     !> Read an engine's deck files into a scene (msg: a file that cannot be read, or an
     !> engine whose decks are programs: MercuryDPM, Chrono).
@@ -102,7 +126,8 @@ contains
         integer :: i, nok
         msg = ''
         allocate (decks(scene%ncontacts), ok(scene%ncontacts))
-        call rep%set_columns('pair,velocity,e_target,e_model,e_host,e_spread,steps_per_contact,t_c,dt_verdict,corrected')
+        call rep%set_columns('pair,velocity,e_target,e_model,e_host,e_spread,steps_per_contact,t_c,dt_verdict,corrected', &
+                             ',' // peer_units(scene%units, 1) // ',,,,,,' // peer_units(scene%units, 2) // ',,')
         call resolve_contacts(scene, opt, decks, ok)
         nok = count(ok)
         if (nok == 0) then

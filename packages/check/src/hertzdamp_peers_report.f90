@@ -24,6 +24,7 @@ module hertzdamp_peers_report
     type, public :: peer_report
         type(peer_list) :: keys, values               !! metadata, in order
         character(len=:), allocatable :: columns      !! comma-separated column names
+        character(len=:), allocatable :: units        !! comma-separated units, as many ('' for none)
         integer :: ncol = 0
         type(peer_cell), allocatable :: cells(:, :)   !! (column, row)
         integer :: nrow = 0, col = 0
@@ -41,11 +42,14 @@ module hertzdamp_peers_report
 
 contains
 
-    subroutine report_set_columns(self, names)
+    subroutine report_set_columns(self, names, units)
         class(peer_report), intent(inout) :: self
         character(len=*), intent(in) :: names   !! comma-separated
+        character(len=*), intent(in), optional :: units   !! comma-separated, one per name ('' for none)
         integer :: i
         self%columns = names
+        self%units = ''
+        if (present(units)) self%units = units
         self%ncol = 1
         do i = 1, len(names)
             if (names(i:i) == ',') self%ncol = self%ncol + 1

@@ -50,7 +50,8 @@ contains
         type(peer_report), intent(out) :: t
         integer :: i, nfail, first_fail
         logical :: have
-        call t%set_columns('velocity,alpha,e,e_error,t_c,t_attractive,dt_max,t_hertz,t_peer,corrected,method')
+        call t%set_columns('velocity,alpha,e,e_error,t_c,t_attractive,dt_max,t_hertz,t_peer,corrected,method', &
+                           'm/s,,,,s,s,s,s,s,,')
         nfail = 0
         first_fail = 0
         do i = 1, size(pt)

@@ -125,12 +125,14 @@ bench: build
 
 # ---------------------------------------------------------------- generated fit tables
 # fit-data: run the generator (reference integrator at tol 1e-15 + LAPACK) -> CSV (~20 s).
-# fit-source: CSV -> Fortran module (deterministic; test/docs/cli_sync_fit.sh checks it).
+# fit-source: CSV -> the coefficient module and the evaluation kernels, one named
+# procedure per kernel (deterministic; test/docs/cli_sync_fit.sh checks both).
 fit-data: deps
 	$(FPM) run hertzdamp-gen-fit --flag "$(RELEASE_FLAGS)" -- data/fit_coefficients.csv
 
 fit-source:
 	$(PYTHON) gen/fit_csv_to_f90.py data/fit_coefficients.csv src/hertzdamp_fit_data.f90
+	$(PYTHON) gen/fit_kernels_f90.py data/fit_coefficients.csv src/hertzdamp_fit_kernels.f90
 
 # ---------------------------------------------------------------- install
 # CMake builds and installs the core library (shared and static), its modules, the C
@@ -158,5 +160,5 @@ LAMMPS_CORE := $(CURDIR)/build/lammps/core
 lammps: deps $(LAMMPS_CORE)/lib/libhertzdamp.so
 	@$(MAKE) --no-print-directory -C integrations/lammps HERTZDAMP_PREFIX=$(LAMMPS_CORE)
 
-$(LAMMPS_CORE)/lib/libhertzdamp.so: $(wildcard src/*.f90 src/*.inc) include/hertzdamp.h CMakeLists.txt
+$(LAMMPS_CORE)/lib/libhertzdamp.so: $(wildcard src/*.f90) include/hertzdamp.h CMakeLists.txt
 	@$(MAKE) --no-print-directory install PREFIX=$(LAMMPS_CORE) >/dev/null

@@ -293,8 +293,8 @@ contains
         end if
     end subroutine law_forward
 
-    !> dL/dalpha and dtau_c/dalpha of the linear law's forward kernel (hertzdamp_fit,
-    !> hertzdamp_fit_forward.inc), for an alpha where it succeeded: overlap, alpha <= 0.6:
+    !> dL/dalpha and dtau_c/dalpha of the linear law's forward kernel (hertzdamp_fit_kernels,
+    !> kernel_forward_overlap and kernel_forward_force), for an alpha where it succeeded: overlap, alpha <= 0.6:
     !> L = alpha P(alpha), tau_c = T(alpha); beyond: L = P(w), tau_c = T(w),
     !> w = -ln(1 - alpha/alpha_c), linear in w past the last piece; force: L = alpha P(x),
     !> tau_c = T(x), x = alpha^(1/3).  w and x by the kernel's own -ln and cube root.

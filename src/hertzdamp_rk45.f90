@@ -89,6 +89,28 @@ module hertzdamp_rk45
 
     real(wp), parameter :: sigma_fraction = 0.1_wp  !! start / switch time, in units of min(1, 1/|alpha|) (N = 2)
 
+    !> The state of one integration that the phases of solve_raw pass on.
+    type :: rk45_state
+        type(hertzdamp_local_series_t) :: ser  ! local series at the start
+        integer :: kmax = 0                    ! its highest power (also of the end series)
+        real(wp) :: tscale = 0.0_wp            ! start time, base of the switch time
+        logical :: force = .false.             ! the contact ends at the zero of the force
+        integer :: phase = 1                   ! 1 before the turning point, 2 after
+        integer :: model = HD_MODEL_HERTZ      ! state (z, z') or, near the force end, (z, F)
+        real(wp) :: sigma_sw = 0.0_wp          ! switch to the end series where z/|z'| < sigma_sw
+        real(wp) :: t = 0.0_wp                 ! start of the current step
+        real(wp) :: h = 0.0_wp                 ! its size
+        real(wp) :: hnew = 0.0_wp              ! size of the next step (error control)
+        real(wp) :: hmax = 0.0_wp              ! stiffness bound on the step size
+        real(wp) :: lfacold = 0.0_wp           ! log of the last accepted error (PI controller)
+        real(wp) :: y(2) = 0.0_wp              ! state at t
+        real(wp) :: k1(2) = 0.0_wp             ! its derivative
+        real(wp) :: ynew(2) = 0.0_wp           ! state at the end of the step
+        real(wp) :: k7(2) = 0.0_wp             ! its derivative
+        real(wp) :: cont(2, 5) = 0.0_wp        ! dense output of the step
+        real(wp) :: theta_tp = 0.0_wp          ! turning point in the step (fraction of h), 0 if none
+    end type rk45_state
+
 contains
 
     !> Number of series terms for a tolerance.  At the start and switch times used here
@@ -214,81 +236,26 @@ contains
     end subroutine hertzdamp_rk45_solve
 
     !> The integration itself: the rebound decided by the trajectory (certificate or
-    !> crossing), without the alpha_c rule of hertzdamp_rk45_solve.
+    !> crossing), without the alpha_c rule of hertzdamp_rk45_solve.  Its phases: the
+    !> argument checks, the start from the local series, then per step the Dormand-Prince
+    !> step with its error control, the events of the accepted step (turning point, end of
+    !> contact) and the move to the next step.
     pure subroutine solve_raw(alpha, iend, opts, law, res)
         real(wp), intent(in) :: alpha
         integer, intent(in) :: iend
         type(hertzdamp_rk45_options), intent(in) :: opts
         integer, intent(in) :: law
         type(hertzdamp_collision), intent(out) :: res
-
-        type(hertzdamp_local_series_t) :: ser
-        real(wp) :: t, h, hnew, hmax, y(2), k1(2), ynew(2), k7(2), errv(2), cont(2, 5)
-        real(wp) :: sc(2), err, lerr, lfacold, fac11, fac, tscale, sigma_sw, theta_tp, th_g, th_f
-        real(wp) :: tp(3), yc(2), q
-        integer :: kmax, phase, ntry, status, model
-        logical :: force
+        type(rk45_state) :: s
+        integer :: ntry
+        logical :: accepted, done
 
         res%alpha = alpha
         res%iend = iend
         res%law = law
-        if (hertzdamp_law_status(law) /= HD_OK) then
-            res%status = HD_BAD_LAW
-            return
-        end if
-        if (iend /= HD_END_OVERLAP .and. iend /= HD_END_FORCE) then
-            res%status = HD_BAD_END
-            return
-        end if
-        if (.not. ieee_is_finite(alpha)) then
-            res%status = HD_BAD_ALPHA
-            return
-        end if
-        if (alpha < hertzdamp_alpha_min .or. alpha > hertzdamp_alpha_max .or. &
-            (iend == HD_END_FORCE .and. alpha < 0.0_wp)) then
-            res%status = HD_BAD_ALPHA
-            return
-        end if
-        ! tsuji, alpha <= -sqrt(5): the energy-injecting contact never ends (the anti-damped
-        ! oscillator of doc/damping-laws.md does not return; time reversal of alpha_c)
-        if (law == HD_DAMPING_TSUJI .and. alpha <= -hertzdamp_alpha_c_tsuji) then
-            res%status = HD_BAD_ALPHA
-            return
-        end if
-        if (.not. (opts%rtol > 0.0_wp .and. opts%atol > 0.0_wp)) then
-            res%status = HD_BAD_TOL
-            return
-        end if
-        force = iend == HD_END_FORCE .and. alpha > 0.0_wp
-        q = hertzdamp_law_q(law)
-
-        ! start from the local series
-        kmax = series_terms(opts%rtol, hertzdamp_series_root(law))
-        tscale = start_time(law, alpha)
-        call hertzdamp_local_series(law, alpha, 1.0_wp, kmax, ser)
-        t = tscale
-        y = hertzdamp_series_state(ser, t)
-        k1 = hertzdamp_rhs(HD_MODEL_HERTZ, law, alpha, y)
-        res%stats%rhs_evals = 1
-        h = tscale
-        ! Strong damping makes the problem stiff: keep h |lambda| inside the real stability
-        ! interval of Dormand-Prince (about [-3.3, 0]), lambda = -alpha z^q the fast mode,
-        ! so that it decays instead of being carried at the stability limit at loose
-        ! tolerances.  z <= ((1+q)/alpha)^(1/(1+q)) bounds the overlap (the elastic force
-        ! only shortens the compression), so alpha z^q <= alpha^(1/(1+q)) (1+q)^(q/(1+q)).
-        hmax = huge(1.0_wp)
-        if (alpha > 1.0_wp) then
-            if (law == HD_DAMPING_LINEAR) then
-                hmax = 2.0_wp / alpha
-            else
-                hmax = 2.0_wp / (alpha**(1.0_wp / (1.0_wp + q)) * (1.0_wp + q)**(q / (1.0_wp + q)))
-            end if
-        end if
-        lfacold = log(1.0e-4_wp)
-        phase = 1
-        model = HD_MODEL_HERTZ
-        sigma_sw = tscale
-
+        res%status = arguments_status(alpha, iend, opts, law)
+        if (res%status /= HD_OK) return
+        call series_start(alpha, iend, opts%rtol, law, s, res%stats)
         ntry = 0
         do
             ntry = ntry + 1
@@ -296,134 +263,266 @@ contains
                 res%status = HD_MAX_STEPS
                 return
             end if
-            if (h < 64.0_wp * epsilon(1.0_wp) * t) then
+            if (s%h < 64.0_wp * epsilon(1.0_wp) * s%t) then
                 res%status = HD_STEP_UNDERFLOW
                 return
             end if
-            call hertzdamp_dp_step(model, law, alpha, y, k1, h, ynew, k7, errv, cont)
-            res%stats%rhs_evals = res%stats%rhs_evals + 6
-            sc = opts%atol + opts%rtol * max(abs(y), abs(ynew))
-            err = sqrt(0.5_wp * sum((errv / sc)**2))
-            ! PI controller (Hairer's dopri5): h_new = h / (0.9^-1 err^0.17 / err_old^0.04),
-            ! formed with one log and one exp per step instead of two powers
-            lerr = log(max(err, 1.0e-300_wp))
-            fac11 = exp(0.17_wp * lerr)
-            if (err > 1.0_wp .or. .not. ieee_is_finite(err)) then
-                res%stats%rejected = res%stats%rejected + 1
-                if (.not. ieee_is_finite(err)) then
-                    h = 0.1_wp * h
-                else
-                    h = h / min(5.0_wp, fac11 / 0.9_wp)
-                end if
-                cycle
-            end if
-            res%stats%steps = res%stats%steps + 1
-            fac = exp(0.17_wp * lerr - 0.04_wp * lfacold)
-            fac = max(0.1_wp, min(5.0_wp, fac / 0.9_wp))
-            hnew = h / fac
-            lfacold = max(lerr, log(1.0e-4_wp))
+            call dp_step_controlled(alpha, opts, law, s, res%stats, accepted)
+            if (.not. accepted) cycle
+            call step_events(alpha, iend, law, s, res, done)
+            if (done) return
+            call next_step(alpha, law, s, res%stats)
+        end do
+    end subroutine solve_raw
 
-            ! kuwabara-kono, alpha < 0: once z >= 16/alpha^4 and z' >= 2 z/|alpha| the overlap
-            ! grows without bound (forward-invariant region, doc/damping-laws.md): the contact
-            ! never ends (alpha below -1.3884, the time reversal of alpha -> infinity)
-            if (phase == 1 .and. alpha < 0.0_wp .and. law == HD_DAMPING_KUWABARA_KONO) then
-                if (ynew(1) >= 16.0_wp / alpha**4 .and. ynew(2) >= -2.0_wp * ynew(1) / alpha) then
-                    res%status = HD_BAD_ALPHA
-                    return
-                end if
-            end if
+    !> HD_OK, or why solve_raw cannot start: HD_BAD_LAW, HD_BAD_END, HD_BAD_ALPHA (not
+    !> finite, outside [hertzdamp_alpha_min, hertzdamp_alpha_max], negative at the force
+    !> end, tsuji at or below -sqrt(5)), HD_BAD_TOL (in this order).
+    pure integer function arguments_status(alpha, iend, opts, law) result(status)
+        real(wp), intent(in) :: alpha
+        integer, intent(in) :: iend, law
+        type(hertzdamp_rk45_options), intent(in) :: opts
+        status = HD_OK
+        if (hertzdamp_law_status(law) /= HD_OK) then
+            status = HD_BAD_LAW
+        else if (iend /= HD_END_OVERLAP .and. iend /= HD_END_FORCE) then
+            status = HD_BAD_END
+        else if (.not. ieee_is_finite(alpha)) then
+            status = HD_BAD_ALPHA
+        else if (alpha < hertzdamp_alpha_min .or. alpha > hertzdamp_alpha_max .or. &
+                 (iend == HD_END_FORCE .and. alpha < 0.0_wp)) then
+            status = HD_BAD_ALPHA
+        else if (law == HD_DAMPING_TSUJI .and. alpha <= -hertzdamp_alpha_c_tsuji) then
+            ! tsuji, alpha <= -sqrt(5): the energy-injecting contact never ends (the anti-damped
+            ! oscillator of doc/damping-laws.md does not return; time reversal of alpha_c)
+            status = HD_BAD_ALPHA
+        else if (.not. (opts%rtol > 0.0_wp .and. opts%atol > 0.0_wp)) then
+            status = HD_BAD_TOL
+        end if
+    end function arguments_status
 
-            theta_tp = 0.0_wp
-            if (phase == 1 .and. ynew(2) <= 0.0_wp) then
-                ! turning point inside this step
-                call hertzdamp_locate(HD_EVENT_TURN, model, law, cont, alpha, 0.0_wp, 0.0_wp, 1.0_wp, theta_tp, status)
-                if (status == HD_OK) then
-                    call hertzdamp_polish(HD_EVENT_TURN, model, law, t, y, k1, h, theta_tp, alpha, tp, res%stats, &
-                                          status)
-                end if
+    !> Phase 1 of solve_raw: the state at the start time tscale from the local series, the
+    !> first step size and the bound that stiffness puts on it.
+    pure subroutine series_start(alpha, iend, rtol, law, s, stats)
+        real(wp), intent(in) :: alpha, rtol
+        integer, intent(in) :: iend, law
+        type(rk45_state), intent(out) :: s
+        type(hertzdamp_rk45_stats), intent(inout) :: stats
+        real(wp) :: q
+        s%force = iend == HD_END_FORCE .and. alpha > 0.0_wp
+        q = hertzdamp_law_q(law)
+        s%kmax = series_terms(rtol, hertzdamp_series_root(law))
+        s%tscale = start_time(law, alpha)
+        call hertzdamp_local_series(law, alpha, 1.0_wp, s%kmax, s%ser)
+        s%t = s%tscale
+        s%y = hertzdamp_series_state(s%ser, s%t)
+        s%k1 = hertzdamp_rhs(HD_MODEL_HERTZ, law, alpha, s%y)
+        stats%rhs_evals = 1
+        s%h = s%tscale
+        ! Strong damping makes the problem stiff: keep h |lambda| inside the real stability
+        ! interval of Dormand-Prince (about [-3.3, 0]), lambda = -alpha z^q the fast mode,
+        ! so that it decays instead of being carried at the stability limit at loose
+        ! tolerances.  z <= ((1+q)/alpha)^(1/(1+q)) bounds the overlap (the elastic force
+        ! only shortens the compression), so alpha z^q <= alpha^(1/(1+q)) (1+q)^(q/(1+q)).
+        s%hmax = huge(1.0_wp)
+        if (alpha > 1.0_wp) then
+            if (law == HD_DAMPING_LINEAR) then
+                s%hmax = 2.0_wp / alpha
+            else
+                s%hmax = 2.0_wp / (alpha**(1.0_wp / (1.0_wp + q)) * (1.0_wp + q)**(q / (1.0_wp + q)))
+            end if
+        end if
+        s%lfacold = log(1.0e-4_wp)
+        s%phase = 1
+        s%model = HD_MODEL_HERTZ
+        s%sigma_sw = s%tscale
+    end subroutine series_start
+
+    !> One Dormand-Prince step of size s%h from s%t with its error control.  Accepted: the
+    !> end state, its derivative and the dense output in s, the next step size in s%hnew
+    !> (Hairer's PI controller).  Rejected: s%h reduced.
+    pure subroutine dp_step_controlled(alpha, opts, law, s, stats, accepted)
+        real(wp), intent(in) :: alpha
+        type(hertzdamp_rk45_options), intent(in) :: opts
+        integer, intent(in) :: law
+        type(rk45_state), intent(inout) :: s
+        type(hertzdamp_rk45_stats), intent(inout) :: stats
+        logical, intent(out) :: accepted
+        real(wp) :: errv(2), sc(2), err, lerr, fac11, fac
+        call hertzdamp_dp_step(s%model, law, alpha, s%y, s%k1, s%h, s%ynew, s%k7, errv, s%cont)
+        stats%rhs_evals = stats%rhs_evals + 6
+        sc = opts%atol + opts%rtol * max(abs(s%y), abs(s%ynew))
+        err = sqrt(0.5_wp * sum((errv / sc)**2))
+        ! PI controller (Hairer's dopri5): h_new = h / (0.9^-1 err^0.17 / err_old^0.04),
+        ! formed with one log and one exp per step instead of two powers
+        lerr = log(max(err, 1.0e-300_wp))
+        fac11 = exp(0.17_wp * lerr)
+        accepted = .not. (err > 1.0_wp .or. .not. ieee_is_finite(err))
+        if (.not. accepted) then
+            stats%rejected = stats%rejected + 1
+            if (.not. ieee_is_finite(err)) then
+                s%h = 0.1_wp * s%h
+            else
+                s%h = s%h / min(5.0_wp, fac11 / 0.9_wp)
+            end if
+            return
+        end if
+        stats%steps = stats%steps + 1
+        fac = exp(0.17_wp * lerr - 0.04_wp * s%lfacold)
+        fac = max(0.1_wp, min(5.0_wp, fac / 0.9_wp))
+        s%hnew = s%h / fac
+        s%lfacold = max(lerr, log(1.0e-4_wp))
+    end subroutine dp_step_controlled
+
+    !> The events of an accepted step: the overlap growing without bound (kuwabara-kono,
+    !> alpha < 0), the turning point (phase 1 -> 2), the end of contact (phase 2).  done
+    !> when res is final.
+    pure subroutine step_events(alpha, iend, law, s, res, done)
+        real(wp), intent(in) :: alpha
+        integer, intent(in) :: iend, law
+        type(rk45_state), intent(inout) :: s
+        type(hertzdamp_collision), intent(inout) :: res
+        logical, intent(out) :: done
+        done = .true.
+        ! kuwabara-kono, alpha < 0: once z >= 16/alpha^4 and z' >= 2 z/|alpha| the overlap
+        ! grows without bound (forward-invariant region, doc/damping-laws.md): the contact
+        ! never ends (alpha below -1.3884, the time reversal of alpha -> infinity)
+        if (s%phase == 1 .and. alpha < 0.0_wp .and. law == HD_DAMPING_KUWABARA_KONO) then
+            if (s%ynew(1) >= 16.0_wp / alpha**4 .and. s%ynew(2) >= -2.0_wp * s%ynew(1) / alpha) then
+                res%status = HD_BAD_ALPHA
+                return
+            end if
+        end if
+        s%theta_tp = 0.0_wp
+        if (s%phase == 1 .and. s%ynew(2) <= 0.0_wp) then
+            call turning_point(alpha, law, s, res)
+            if (res%status /= HD_OK) return
+        end if
+        if (s%phase == 2) then
+            call contact_end(alpha, iend, law, s, res, done)
+            return
+        end if
+        done = .false.
+    end subroutine step_events
+
+    !> The turning point z' = 0 inside the accepted step: located on the dense output,
+    !> polished, stored in res (tau_max, z_max); phase 2 begins, with the switch time to
+    !> the end series.
+    pure subroutine turning_point(alpha, law, s, res)
+        real(wp), intent(in) :: alpha
+        integer, intent(in) :: law
+        type(rk45_state), intent(inout) :: s
+        type(hertzdamp_collision), intent(inout) :: res
+        real(wp) :: tp(3)
+        integer :: status
+        call hertzdamp_locate(HD_EVENT_TURN, s%model, law, s%cont, alpha, 0.0_wp, 0.0_wp, 1.0_wp, s%theta_tp, status)
+        if (status == HD_OK) then
+            call hertzdamp_polish(HD_EVENT_TURN, s%model, law, s%t, s%y, s%k1, s%h, s%theta_tp, alpha, tp, res%stats, &
+                                  status)
+        end if
+        if (status /= HD_OK) then
+            res%status = status
+            return
+        end if
+        res%tau_max = tp(1)
+        res%z_max = tp(2)
+        s%phase = 2
+        s%sigma_sw = s%tscale * min(1.0_wp, max(0.8_wp * tp(2)**2.5_wp, 1.0_wp)**(-0.1_wp))
+    end subroutine turning_point
+
+    !> Phase 2, the end of contact in the accepted step: the zero of the total force
+    !> (force end) or the switch to the time-reversed local series, whichever comes first,
+    !> located on the dense output; else (overlap end) the no-rebound certificate.  done
+    !> when res is final.
+    pure subroutine contact_end(alpha, iend, law, s, res, done)
+        real(wp), intent(in) :: alpha
+        integer, intent(in) :: iend, law
+        type(rk45_state), intent(inout) :: s
+        type(hertzdamp_collision), intent(inout) :: res
+        logical, intent(out) :: done
+        real(wp) :: th_g, th_f, yc(2)
+        integer :: status
+        done = .true.
+        th_f = 2.0_wp
+        th_g = 2.0_wp
+        if (s%force) then
+            if (hertzdamp_event_value(HD_EVENT_FORCE, s%model, law, s%ynew, alpha, 0.0_wp) >= 0.0_wp) then
+                call hertzdamp_locate(HD_EVENT_FORCE, s%model, law, s%cont, alpha, 0.0_wp, s%theta_tp, 1.0_wp, &
+                                      th_f, status)
                 if (status /= HD_OK) then
                     res%status = status
                     return
                 end if
-                res%tau_max = tp(1)
-                res%z_max = tp(2)
-                phase = 2
-                sigma_sw = tscale * min(1.0_wp, max(0.8_wp * tp(2)**2.5_wp, 1.0_wp)**(-0.1_wp))
             end if
-
-            if (phase == 2) then
-                th_f = 2.0_wp
-                th_g = 2.0_wp
-                if (force) then
-                    if (hertzdamp_event_value(HD_EVENT_FORCE, model, law, ynew, alpha, 0.0_wp) >= 0.0_wp) then
-                        call hertzdamp_locate(HD_EVENT_FORCE, model, law, cont, alpha, 0.0_wp, theta_tp, 1.0_wp, &
-                                              th_f, status)
-                        if (status /= HD_OK) then
-                            res%status = status
-                            return
-                        end if
-                    end if
-                end if
-                ! (z, F) state: for alpha >= 1 the force vanishes long before the switch
-                ! (at z = sigma_sw |z'| the force is alpha z^(q+1)/sigma_sw - z^(3/2) > 0)
-                if (model == HD_MODEL_HERTZ) then
-                    if (hertzdamp_event_value(HD_EVENT_SWITCH, model, law, ynew, alpha, sigma_sw) <= 0.0_wp) then
-                        call hertzdamp_locate(HD_EVENT_SWITCH, model, law, cont, alpha, sigma_sw, theta_tp, 1.0_wp, &
-                                              th_g, status)
-                        if (status /= HD_OK) then
-                            res%status = status
-                            return
-                        end if
-                    end if
-                end if
-                if (th_f <= th_g .and. th_f <= 1.0_wp) then
-                    call end_at_force(model, law, t, y, k1, h, th_f, alpha, res)
+        end if
+        ! (z, F) state: for alpha >= 1 the force vanishes long before the switch
+        ! (at z = sigma_sw |z'| the force is alpha z^(q+1)/sigma_sw - z^(3/2) > 0)
+        if (s%model == HD_MODEL_HERTZ) then
+            if (hertzdamp_event_value(HD_EVENT_SWITCH, s%model, law, s%ynew, alpha, s%sigma_sw) <= 0.0_wp) then
+                call hertzdamp_locate(HD_EVENT_SWITCH, s%model, law, s%cont, alpha, s%sigma_sw, s%theta_tp, 1.0_wp, &
+                                      th_g, status)
+                if (status /= HD_OK) then
+                    res%status = status
                     return
-                else if (th_g <= 1.0_wp) then
-                    ! switch to the time-reversed local series for the end of contact
-                    call hertzdamp_sub_step(model, law, y, k1, th_g * h, alpha, yc, res%stats)
-                    call finish_from_series(t + th_g * h, yc, alpha, force, kmax, law, res)
-                    ! force event already passed in the matched region: locate it in the step
-                    if (res%status == HD_NO_CONVERGENCE .and. force) then
-                        ! only where the force really changes sign inside the step
-                        if (hertzdamp_event_value(HD_EVENT_FORCE, model, law, ynew, alpha, 0.0_wp) >= 0.0_wp) then
-                            call hertzdamp_locate(HD_EVENT_FORCE, model, law, cont, alpha, 0.0_wp, theta_tp, 1.0_wp, &
-                                                  th_f, status)
-                            if (status == HD_OK) then
-                                call end_at_force(model, law, t, y, k1, h, th_f, alpha, res)
-                            else
-                                res%status = status
-                            end if
-                        end if
-                    end if
-                    return
-                else if (iend == HD_END_OVERLAP .and. alpha > 0.0_wp) then
-                    if (no_rebound_certified(ynew, alpha, law)) then
-                        res%status = HD_NO_REBOUND
-                        res%e = 0.0_wp
-                        res%tau_c = ieee_value(1.0_wp, ieee_positive_inf)
-                        return
+                end if
+            end if
+        end if
+        if (th_f <= th_g .and. th_f <= 1.0_wp) then
+            call end_at_force(s%model, law, s%t, s%y, s%k1, s%h, th_f, alpha, res)
+            return
+        else if (th_g <= 1.0_wp) then
+            ! switch to the time-reversed local series for the end of contact
+            call hertzdamp_sub_step(s%model, law, s%y, s%k1, th_g * s%h, alpha, yc, res%stats)
+            call finish_from_series(s%t + th_g * s%h, yc, alpha, s%force, s%kmax, law, res)
+            ! force event already passed in the matched region: locate it in the step
+            if (res%status == HD_NO_CONVERGENCE .and. s%force) then
+                ! only where the force really changes sign inside the step
+                if (hertzdamp_event_value(HD_EVENT_FORCE, s%model, law, s%ynew, alpha, 0.0_wp) >= 0.0_wp) then
+                    call hertzdamp_locate(HD_EVENT_FORCE, s%model, law, s%cont, alpha, 0.0_wp, s%theta_tp, 1.0_wp, &
+                                          th_f, status)
+                    if (status == HD_OK) then
+                        call end_at_force(s%model, law, s%t, s%y, s%k1, s%h, th_f, alpha, res)
+                    else
+                        res%status = status
                     end if
                 end if
             end if
+            return
+        else if (iend == HD_END_OVERLAP .and. alpha > 0.0_wp) then
+            if (no_rebound_certified(s%ynew, alpha, law)) then
+                res%status = HD_NO_REBOUND
+                res%e = 0.0_wp
+                res%tau_c = ieee_value(1.0_wp, ieee_positive_inf)
+                return
+            end if
+        end if
+        done = .false.
+    end subroutine contact_end
 
-            if (phase == 2 .and. force .and. alpha >= 1.0_wp .and. model == HD_MODEL_HERTZ) then
-                model = HD_MODEL_FORCE
-                ynew(2) = -alpha * hertzdamp_zq(law, ynew(1)) * ynew(2) - ynew(1) * sqrt(ynew(1))
-                k7 = hertzdamp_rhs(model, law, alpha, ynew)
-                res%stats%rhs_evals = res%stats%rhs_evals + 1
-            end if
-            t = t + h
-            y = ynew
-            k1 = k7
-            ! after the turning point z only decreases (alpha > 0): the stiff rate alpha z^q
-            ! at the step start bounds it for the whole step
-            if (phase == 2 .and. alpha > 1.0_wp .and. law /= HD_DAMPING_LINEAR .and. model == HD_MODEL_HERTZ) then
-                hmax = 2.0_wp / (alpha * hertzdamp_zq(law, y(1)))
-            end if
-            h = min(hnew, hmax)
-        end do
-    end subroutine solve_raw
+    !> From the accepted step to the next: the (z, F) model once the force end is near
+    !> (alpha >= 1), the state moved to the end of the step, the stiffness bound after the
+    !> turning point, the step size.
+    pure subroutine next_step(alpha, law, s, stats)
+        real(wp), intent(in) :: alpha
+        integer, intent(in) :: law
+        type(rk45_state), intent(inout) :: s
+        type(hertzdamp_rk45_stats), intent(inout) :: stats
+        if (s%phase == 2 .and. s%force .and. alpha >= 1.0_wp .and. s%model == HD_MODEL_HERTZ) then
+            s%model = HD_MODEL_FORCE
+            s%ynew(2) = -alpha * hertzdamp_zq(law, s%ynew(1)) * s%ynew(2) - s%ynew(1) * sqrt(s%ynew(1))
+            s%k7 = hertzdamp_rhs(s%model, law, alpha, s%ynew)
+            stats%rhs_evals = stats%rhs_evals + 1
+        end if
+        s%t = s%t + s%h
+        s%y = s%ynew
+        s%k1 = s%k7
+        ! after the turning point z only decreases (alpha > 0): the stiff rate alpha z^q
+        ! at the step start bounds it for the whole step
+        if (s%phase == 2 .and. alpha > 1.0_wp .and. law /= HD_DAMPING_LINEAR .and. s%model == HD_MODEL_HERTZ) then
+            s%hmax = 2.0_wp / (alpha * hertzdamp_zq(law, s%y(1)))
+        end if
+        s%h = min(s%hnew, s%hmax)
+    end subroutine next_step
 
     !> Contact end at the zero of the total force, located at theta of the step.
     pure subroutine end_at_force(model, law, t, y, k1, h, theta, alpha, res)

@@ -1,0 +1,19 @@
+# Sourced by tools/core_build_time.sh, tools/fit_bits.sh and tools/fit_speed.sh: a
+# temporary fpm package of the core library alone, for timing and comparing revisions.
+#   core_package DIR SRC [PROGRAM.f90]
+# copies SRC (a core src/ tree) to DIR/src and writes DIR/fpm.toml: no programs, tests
+# or examples, or PROGRAM.f90 (copied to DIR/prog/) as its only executable, named after it.
+core_package() {
+  local dir=$1 src=$2 prog=${3:-}
+  mkdir -p "$dir"
+  cp -r "$src" "$dir/src"
+  {
+    printf 'name = "hertzdamp"\n[build]\nauto-executables = false\nauto-tests = false\nauto-examples = false\n'
+    printf '[fortran]\nimplicit-typing = false\nimplicit-external = false\nsource-form = "free"\n'
+    if [ -n "$prog" ]; then
+      mkdir -p "$dir/prog"
+      cp "$prog" "$dir/prog/"
+      printf '[[executable]]\nname = "%s"\nsource-dir = "prog"\nmain = "%s"\n' "$(basename "$prog" .f90)" "$(basename "$prog")"
+    fi
+  } > "$dir/fpm.toml"
+}

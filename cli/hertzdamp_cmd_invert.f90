@@ -1,7 +1,8 @@
 !> The commands `invert` (stiffness and damping from target restitution and contact
 !> time) and `timestep` (the time step that resolves the physical contacts).
 module hertzdamp_cmd_invert
-    use hertzdamp, only: hertzdamp_rk, hertzdamp_invert, hertzdamp_invert_alpha, hertzdamp_message, &
+    use hertzdamp, only: hertzdamp_rk, hertzdamp_invert, hertzdamp_invert_alpha, hertzdamp_invert_options, &
+                         hertzdamp_message, &
                          hertzdamp_reduce, hertzdamp_hertz_time, &
                          HD_OK, HD_BAD_RESTITUTION, HD_OUTSIDE_VALIDITY, HD_INACCURATE, HD_BAD_TIME, HD_BAD_VELOCITY, &
                          HD_OUT_OF_RANGE, HD_METHOD_ITERATIVE
@@ -62,10 +63,10 @@ contains
                         status = HD_OUT_OF_RANGE
                     else if (ct%has_kphys) then
                         call hertzdamp_invert(e, tc, ct%mass, u, c%iend, k, d, status, alpha, tstar, tau, bound, &
-                                              ct%k_phys, c%method, c%tol, c%accuracy, c%law)
+                                              ct%k_phys, c%law, hertzdamp_invert_options(c%method, c%tol, c%accuracy))
                     else
                         call hertzdamp_invert(e, tc, ct%mass, u, c%iend, k, d, status, alpha, tstar, tau, bound, &
-                                              method=c%method, tol=c%tol, accuracy=c%accuracy, law=c%law)
+                                              law=c%law, options=hertzdamp_invert_options(c%method, c%tol, c%accuracy))
                     end if
                     ! the contact time the returned k and d give (T_c, or longer when k = k_phys)
                     if (status == HD_OK .and. .not. ieee_is_finite(tstar * tau)) status = HD_OUT_OF_RANGE

@@ -16,6 +16,8 @@ module hertzdamp
     use hertzdamp_fit_laws
     use hertzdamp_compact
     use hertzdamp_inverse
+    use hertzdamp_host
+    use hertzdamp_pair
     use hertzdamp_materials
     implicit none
     public

@@ -36,6 +36,7 @@ module hertzdamp_status
     integer, parameter, public :: HD_BAD_HOST = 26         !! host scheme not one of the HD_HOST_* codes
     integer, parameter, public :: HD_BAD_STEPS = 27        !! steps per contact not finite or below the smallest allowed
     integer, parameter, public :: HD_HOST_UNREACHABLE = 28 !! no alpha reaches this e with the host at so few steps
+    integer, parameter, public :: HD_BAD_PAIR = 29         !! pair constants not set by hertzdamp_pair_init, or changed since
 
     !> Contact ends when the overlap returns to zero (default).
     integer, parameter, public :: HD_END_OVERLAP = 0
@@ -51,7 +52,7 @@ module hertzdamp_status
     !> Length of the stored messages (each fits, blank-padded).
     integer, parameter, public :: hertzdamp_message_len = 192
     !> Largest status code with a message of its own.
-    integer, parameter, public :: hertzdamp_max_status = 28
+    integer, parameter, public :: hertzdamp_max_status = 29
     !> The message of every status code 0..hertzdamp_max_status, then that of unknown
     !> codes: the one table behind hertzdamp_message and the C hertzdamp_strerror.
     character(len=hertzdamp_message_len), parameter, public :: &
@@ -90,6 +91,7 @@ module hertzdamp_status
         'invalid host scheme: use 0 (none), 1 (lammps), 2 (mfix-euler), 3 (mfix-ab2), 4 (verlet) or 5 (lammps-phase)', &
         'invalid number of steps per contact: must be finite and large enough for the host scheme', &
         'the host scheme cannot reach this restitution coefficient at so few steps per contact', &
+        'invalid pair: not set by hertzdamp_pair_init (or its failure), or changed since', &
         'unknown status code']
 
     public :: hertzdamp_message, hertzdamp_end_name

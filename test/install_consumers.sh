@@ -113,7 +113,6 @@ check "legacy example: forward gives back e and T_c (1e-12)" \
 cat >"$tmp/checker.f90" <<'F90'
 program checker
     use hertzdamp, only: hertzdamp_rk, hertzdamp_invert
-    use hertzdamp_flat, only: legacy_method
     implicit none
     real(hertzdamp_rk) :: e, tc, m, u, k, d
     integer :: status
@@ -122,7 +121,7 @@ program checker
     call get_command_argument(2, arg); read (arg, *) tc
     call get_command_argument(3, arg); read (arg, *) m
     call get_command_argument(4, arg); read (arg, *) u
-    call hertzdamp_invert(e, tc, m, u, 0, k, d, status, method=legacy_method)
+    call hertzdamp_invert(e, tc, m, u, 0, k, d, status)
     if (status /= 0) error stop 1
     write (*, '(es25.16e3, 1x, es25.16e3)') k, d
 end program checker

@@ -1,0 +1,699 @@
+!> The per-pair API of the inverse problem (doc/theory.md section 6, issue 26), and the
+!> one place where the stiffness k, the damping d, the time unit t* and the physical
+!> stiffness bound of a contact are computed.
+!>
+!> A DEM host stores the constants of a material pair once (`hertzdamp_pair_init`: e, the
+!> damping law, the contact end, the host's time integrator and the steps per contact)
+!> and forms k and d at every contact onset from the contact's target time T_c, effective
+!> mass m and impact speed u (`hertzdamp_pair_kd`).  With r = tau_c / T_c = 1/t*:
+!>
+!>     k = m r^2 (r/u)^(1/2),   d = alpha m r (r/u)^q     (q = 0, 1/4, 1/2 by the law),
+!>
+!> computed as r = tau_c (1/T_c), s = sqrt(tau_c (1/(T_c u))), k = m r^2 s and
+!> d = alpha m r (linear), alpha m r sqrt(s) (tsuji), alpha m r s (kuwabara-kono) when
+!> T_c, m and u lie in [1e-30, 1e30] (no power of them can overflow there), and by
+!> logarithms (hertzdamp_scaling) elsewhere; a result outside double precision gives
+!> HD_OUT_OF_RANGE.
+!>
+!> Physical bound: when the material's own stiffness k_phys <= k, the contact keeps
+!> k = k_phys (it is then longer than T_c) with t* = (m/k_phys)^(2/5) u^(-1/5) and
+!> d = alpha m t*^(-1) (u t*)^(-q) (tsuji: alpha sqrt(m k_phys)).  With a host scheme the
+!> contact then lasts more than N steps: its dimensionless step h' = dt/t* is below the
+!> h_N = tau_N/N the constants were solved for, and alpha_N over-corrects.  The host's
+!> error is first order in h, so
+!>
+!>     alpha_eff = alpha(e) + (alpha_N - alpha(e)) h'/h_N,   h'/h_N = (T_c/tau_N) / t*
+!>
+!> (dt = T_c/N) removes it to O(h'^2); host none keeps alpha (today's bits).
+!>
+!> `hertzdamp_invert` is the one-call form: the constants by any method
+!> (hertzdamp_invert_alpha), then the same k, d and bound code, for one contact
+!> (elemental) or rank-1 arrays (vectorised: the fit's kernel over the array, then the
+!> loop of k and d here), with T_c and m also as scalars broadcast over the arrays.
+!> Every entry point (module, C, legacy) runs this code: the same bits everywhere.
+module hertzdamp_pair
+    use, intrinsic :: iso_c_binding, only: c_double
+    use, intrinsic :: iso_fortran_env, only: int64
+    use hertzdamp_kinds, only: hertzdamp_rk
+    use hertzdamp_status, only: HD_OK, HD_BAD_TIME, HD_BAD_MASS, HD_BAD_VELOCITY, HD_BAD_KPHYS, HD_OUT_OF_RANGE, &
+                                HD_BAD_PAIR
+    use hertzdamp_laws, only: HD_DAMPING_LINEAR, HD_DAMPING_TSUJI, hertzdamp_law_q
+    use hertzdamp_constants, only: direct_lo => hertzdamp_direct_lo, direct_hi => hertzdamp_direct_hi
+    use hertzdamp_scaling, only: hertzdamp_safe_exp, hertzdamp_log_tstar, hertzdamp_log_k, hertzdamp_scale_log_d
+    use hertzdamp_methods, only: HD_METHOD_FIT
+    use hertzdamp_fit, only: hertzdamp_fit_inverse, hertzdamp_fit_inverse_n
+    use hertzdamp_inverse, only: hertzdamp_invert_alpha, hertzdamp_invert_options
+    use hertzdamp_host, only: HD_HOST_NONE, hertzdamp_host_stats, hertzdamp_host_solve
+    implicit none
+    private
+
+    integer, parameter :: wp = hertzdamp_rk
+
+    !> The constants of a material pair: eight doubles, so that it is the C `hertzdamp_pair_t`
+    !> and the legacy `DOUBLE PRECISION PAIR(8)` are the same memory.  Set only by
+    !> hertzdamp_pair_init; hertzdamp_pair_kd refuses (HD_BAD_PAIR) a pair that was not
+    !> set, whose init failed, or that was changed since (the marker no longer matches).
+    type, bind(c), public :: hertzdamp_pair_t
+        real(c_double) :: alpha = 0.0_c_double       !! alpha of the k, d formulas (a host: alpha_N)
+        real(c_double) :: tau_c = 0.0_c_double       !! tau_c of the k, d formulas (a host: tau_N)
+        real(c_double) :: alpha_cont = 0.0_c_double  !! alpha(e) of the continuous model (the bound's)
+        real(c_double) :: steps = 0.0_c_double       !! steps per contact N (as given to init)
+        real(c_double) :: law = 0.0_c_double         !! HD_DAMPING_* of the pair
+        real(c_double) :: iend = 0.0_c_double        !! HD_END_* of the pair
+        real(c_double) :: host = 0.0_c_double        !! HD_HOST_* of the pair
+        real(c_double) :: marker = 0.0_c_double      !! validity marker, a function of the seven others
+    end type hertzdamp_pair_t
+
+    !> Contacts per pass of the array forms (buffers on the stack).
+    integer, parameter :: chunk = 256
+
+    ! The marker: the seven fields' bit patterns rotated and combined, folded, and put
+    ! into the fraction of a number in [1, 2) (always a finite double).
+    integer(int64), parameter :: marker_seed = int(z'2545F4914F6CDD1D', int64)
+    integer(int64), parameter :: fraction_bits = int(z'000FFFFFFFFFFFFF', int64)
+    integer(int64), parameter :: one_bits = transfer(1.0_wp, 0_int64)
+
+    !> k and d of contacts from the constants of a pair: one contact (elemental) or rank-1
+    !> arrays of T_c, m, u (vectorised), T_c and/or m also as scalars.
+    interface hertzdamp_pair_kd
+        module procedure pair_kd_one
+        module procedure pair_kd_array
+        module procedure pair_kd_array_tc
+        module procedure pair_kd_array_m
+        module procedure pair_kd_array_tc_m
+    end interface hertzdamp_pair_kd
+
+    !> k and d such that the collision has restitution e and contact time T_c: one
+    !> contact (elemental: also arrays of any rank), or rank-1 arrays of e and u
+    !> (vectorised) with T_c and m as arrays or scalars.
+    interface hertzdamp_invert
+        module procedure invert_one
+        module procedure invert_array
+        module procedure invert_array_tc
+        module procedure invert_array_m
+        module procedure invert_array_tc_m
+    end interface hertzdamp_invert
+
+    public :: hertzdamp_pair_init, hertzdamp_pair_kd, hertzdamp_invert
+
+contains
+
+    ! ================================================================ the pair
+
+    !> The constants of a material pair for restitution e, the damping law, the contact
+    !> end and the host's time integrator at `steps` steps per contact.
+    !> host = HD_HOST_NONE: alpha(e) and tau_c(alpha(e)) of the fit (the continuous model;
+    !> steps is not used); another host: the host-exact constants (alpha_N, tau_N) of
+    !> hertzdamp_host_solve, which make the phase-averaged e and contact time of the host's
+    !> discrete collision exact at T_c = N dt.  The status names the bad argument (law,
+    !> contact end, e, then host and steps), or HD_HOST_UNREACHABLE when the host cannot
+    !> reach e at so few steps (hertzdamp_host_min_steps tells which N can); on failure the
+    !> pair is invalid (hertzdamp_pair_kd returns HD_BAD_PAIR) and stats are zero.
+    pure elemental subroutine hertzdamp_pair_init(e, law, iend, host, steps, pair, status, stats)
+        real(wp), intent(in) :: e                    !! target restitution coefficient
+        integer, intent(in) :: law                   !! HD_DAMPING_*
+        integer, intent(in) :: iend                  !! HD_END_OVERLAP or HD_END_FORCE
+        integer, intent(in) :: host                  !! HD_HOST_*
+        real(wp), intent(in) :: steps                !! steps per contact N = T_c / dt (not used by host none)
+        type(hertzdamp_pair_t), intent(out) :: pair    !! the pair's constants
+        integer, intent(out) :: status               !! HD_OK or an error code
+        type(hertzdamp_host_stats), intent(out), optional :: stats !! the host's phase statistics of e and
+                                                                   !! the contact time (host none: no spread)
+        type(hertzdamp_host_stats) :: st
+        real(wp) :: a, tau, a_cont, tau_cont
+        call hertzdamp_fit_inverse(e, iend, a_cont, tau_cont, status, law)
+        a = a_cont
+        tau = tau_cont
+        if (status == HD_OK) then
+            if (host == HD_HOST_NONE) then
+                st = hertzdamp_host_stats(e, 0.0_wp, e, e, tau, 0.0_wp, tau, tau)
+            else
+                call hertzdamp_host_solve(e, law, iend, host, steps, a, tau, st, status)
+            end if
+        end if
+        if (status == HD_OK) then
+            call set_pair(a, tau, a_cont, steps, law, iend, host, pair)
+        else
+            st = hertzdamp_host_stats()
+        end if
+        if (present(stats)) stats = st
+    end subroutine hertzdamp_pair_init
+
+    !> A valid pair of the given constants (the caller has checked them).
+    pure subroutine set_pair(a, tau, a_cont, steps, law, iend, host, pair)
+        real(wp), intent(in) :: a, tau, a_cont, steps
+        integer, intent(in) :: law, iend, host
+        type(hertzdamp_pair_t), intent(out) :: pair
+        pair = hertzdamp_pair_t(a, tau, a_cont, steps, real(law, wp), real(iend, wp), real(host, wp), 0.0_wp)
+        pair%marker = transfer(marker_of(pair), 1.0_wp)
+    end subroutine set_pair
+
+    !> The marker that a valid pair with these seven fields carries (bit pattern).
+    pure integer(int64) function marker_of(pair) result(bits)
+        type(hertzdamp_pair_t), intent(in) :: pair
+        integer(int64) :: h
+        h = ieor(ieor(ieor(transfer(pair%alpha, 0_int64), ishftc(transfer(pair%tau_c, 0_int64), 11)), &
+                      ieor(ishftc(transfer(pair%alpha_cont, 0_int64), 22), ishftc(transfer(pair%steps, 0_int64), 33))), &
+                 ieor(ieor(ishftc(transfer(pair%law, 0_int64), 44), ishftc(transfer(pair%iend, 0_int64), 55)), &
+                      ieor(ishftc(transfer(pair%host, 0_int64), 5), marker_seed)))
+        h = ieor(h, shiftr(h, 32))
+        bits = ior(iand(h, fraction_bits), one_bits)
+    end function marker_of
+
+    !> HD_OK for a pair set by hertzdamp_pair_init and not changed since, else HD_BAD_PAIR.
+    pure elemental integer function pair_status(pair) result(status)
+        type(hertzdamp_pair_t), intent(in) :: pair
+        status = HD_BAD_PAIR
+        if (transfer(pair%marker, 0_int64) == marker_of(pair)) status = HD_OK
+    end function pair_status
+
+    ! ================================================================ k, d of one contact
+
+    !> k and d of one contact from the constants of its pair (see the module note).
+    !> The status names the bad argument (checked in this order, the last one wins: T_c,
+    !> m, u, k_phys) or HD_BAD_PAIR; on failure k = d = 0 (tstar = 0, bound_active false).
+    pure elemental subroutine pair_kd_one(pair, tc, m, u, k, d, status, k_phys, bound_active, tstar)
+        type(hertzdamp_pair_t), intent(in) :: pair          !! constants of the material pair
+        real(wp), intent(in) :: tc                        !! target contact time T_c = N dt [s]
+        real(wp), intent(in) :: m                         !! effective mass [kg]
+        real(wp), intent(in) :: u                         !! impact velocity [m s^-1]
+        real(wp), intent(out) :: k                        !! Hertz stiffness [N m^-3/2]
+        real(wp), intent(out) :: d                        !! damping coefficient [kg s^-1 m^-q]
+        integer, intent(out) :: status                    !! HD_OK or an error code
+        real(wp), intent(in), optional :: k_phys          !! physical stiffness bound [N m^-3/2]: finite, > 0
+        logical, intent(out), optional :: bound_active    !! true when k = k_phys was used
+        real(wp), intent(out), optional :: tstar          !! time unit of the returned k [s]
+        real(wp) :: kp, ts
+        logical :: bound
+        integer :: valid, law, host
+        valid = pair_status(pair)
+        law = HD_DAMPING_LINEAR
+        host = HD_HOST_NONE
+        if (valid == HD_OK) then
+            law = int(pair%law)
+            host = int(pair%host)
+        end if
+        kp = 0.0_wp
+        if (present(k_phys)) kp = k_phys
+        call contact_kd(pair%alpha, pair%tau_c, pair%alpha_cont, law, host, valid, tc, m, u, present(k_phys), kp, &
+                        present(tstar), k, d, ts, bound, status)
+        if (present(bound_active)) bound_active = bound
+        if (present(tstar)) tstar = ts
+    end subroutine pair_kd_one
+
+    !> The status of the arguments of one contact: HD_OK or the last bad one of T_c, m, u,
+    !> k_phys (when has_kp).
+    pure elemental integer function argument_status(tc, m, u, has_kp, kp) result(status)
+        real(wp), intent(in) :: tc, m, u, kp
+        logical, intent(in) :: has_kp
+        status = HD_OK
+        if (.not. (tc > 0.0_wp .and. tc <= huge(tc))) status = HD_BAD_TIME
+        if (.not. (m > 0.0_wp .and. m <= huge(m))) status = HD_BAD_MASS
+        if (.not. (u > 0.0_wp .and. u <= huge(u))) status = HD_BAD_VELOCITY
+        if (has_kp) then
+            if (.not. (kp > 0.0_wp .and. kp <= huge(kp))) status = HD_BAD_KPHYS
+        end if
+    end function argument_status
+
+    !> k and d of one contact from the constants (a, tau, a_cont) of its pair: every entry
+    !> point ends here.  `given` is the status of the constants (HD_OK, or why there are
+    !> none: it is reported when the arguments of the contact are valid).
+    pure elemental subroutine contact_kd(a, tau, a_cont, law, host, given, tc, m, u, has_kp, kp, want_ts, k, d, ts, &
+                                         bound, status)
+        real(wp), intent(in) :: a, tau, a_cont   ! alpha, tau_c, continuous alpha(e)
+        integer, intent(in) :: law, host, given
+        real(wp), intent(in) :: tc, m, u, kp
+        logical, intent(in) :: has_kp, want_ts   ! a bound is given; t* is wanted
+        real(wp), intent(out) :: k, d, ts
+        logical, intent(out) :: bound
+        integer, intent(out) :: status
+        k = 0.0_wp
+        d = 0.0_wp
+        ts = 0.0_wp
+        bound = .false.
+        if (tc >= direct_lo .and. tc <= direct_hi .and. m >= direct_lo .and. m <= direct_hi .and. u >= direct_lo &
+            .and. u <= direct_hi) then
+            status = HD_OK
+            if (has_kp) then
+                if (.not. (kp > 0.0_wp .and. kp <= huge(kp))) status = HD_BAD_KPHYS
+            end if
+            if (status == HD_OK) status = given
+            if (status /= HD_OK) return
+            call direct_kd(law, a, tau, tc, m, u, k, d)
+            if (want_ts) ts = tc / tau
+            if (has_kp) then
+                if (kp <= k) call bound_direct(a, tau, a_cont, law, host, tc, m, u, kp, want_ts, k, d, ts, bound, &
+                                               status)
+            end if
+        else
+            status = argument_status(tc, m, u, has_kp, kp)
+            if (status == HD_OK) status = given
+            if (status /= HD_OK) return
+            call log_kd(a, tau, a_cont, law, host, tc, m, u, has_kp, kp, k, d, ts, bound, status)
+        end if
+        if (status /= HD_OK) then
+            k = 0.0_wp
+            d = 0.0_wp
+            ts = 0.0_wp
+            bound = .false.
+        end if
+    end subroutine contact_kd
+
+    !> The direct formulas (T_c, m, u in [1e-30, 1e30]: every intermediate a normal
+    !> double): r = tau_c (1/T_c) = 1/t*, s = (r/u)^(1/2), k = m r^2 s, d = alpha m r (r/u)^q.
+    !> 1/T_c and 1/(T_c u) do not depend on the pair, so that their divisions overlap
+    !> with the rest: only products and square roots follow.
+    pure elemental subroutine direct_kd(law, a, tau, tc, m, u, k, d)
+        integer, intent(in) :: law
+        real(wp), intent(in) :: a, tau, tc, m, u
+        real(wp), intent(out) :: k, d
+        real(wp) :: r, s
+        r = tau * (1.0_wp / tc)
+        s = sqrt(tau * (1.0_wp / (tc * u)))
+        k = m * (r * r) * s
+        if (law == HD_DAMPING_LINEAR) then
+            d = a * m * r
+        else if (law == HD_DAMPING_TSUJI) then
+            d = a * m * r * sqrt(s)
+        else
+            d = a * m * r * s
+        end if
+    end subroutine direct_kd
+
+    !> The bound on the direct path (k_phys <= k): k = k_phys, t* = (m/k_phys)^(2/5) u^(-1/5),
+    !> d = alpha_eff m t*^(-1) (u t*)^(-q) (tsuji: alpha_eff sqrt(m k_phys), which needs no t*
+    !> for host none: t* only when wanted).  alpha_eff: see the module note.
+    pure subroutine bound_direct(a, tau, a_cont, law, host, tc, m, u, kp, want_ts, k, d, ts, bound, status)
+        real(wp), intent(in) :: a, tau, a_cont, tc, m, u, kp
+        integer, intent(in) :: law, host
+        logical, intent(in) :: want_ts
+        real(wp), intent(inout) :: k, d, ts
+        logical, intent(out) :: bound
+        integer, intent(inout) :: status
+        real(wp) :: ae
+        bound = .true.
+        k = kp
+        ae = a
+        if (want_ts .or. law /= HD_DAMPING_TSUJI .or. host /= HD_HOST_NONE) then
+            call hertzdamp_safe_exp(hertzdamp_log_tstar(log(m), log(kp), log(u), .true.), ts, status)
+            if (host /= HD_HOST_NONE) ae = a_cont + (a - a_cont) * ((tc / tau) / ts)
+        end if
+        if (law == HD_DAMPING_TSUJI) then
+            d = ae * (sqrt(m) * sqrt(kp))
+        else if (law == HD_DAMPING_LINEAR) then
+            d = ae * m / ts
+        else
+            d = ae * m / ts / sqrt(u * ts)
+        end if
+    end subroutine bound_direct
+
+    !> k and d by logarithms (T_c, m or u outside the direct range), with the bound.
+    pure subroutine log_kd(a, tau, a_cont, law, host, tc, m, u, has_kp, kp, k, d, ts, bound, status)
+        real(wp), intent(in) :: a, tau, a_cont, tc, m, u, kp
+        integer, intent(in) :: law, host
+        logical, intent(in) :: has_kp
+        real(wp), intent(out) :: k, d, ts
+        logical, intent(out) :: bound
+        integer, intent(inout) :: status
+        real(wp) :: lm, lu, lts, ltsn, ae
+        lm = log(m)
+        lu = log(u)
+        ltsn = log(tc) - log(tau)     ! ln t* of the target T_c
+        lts = ltsn
+        bound = .false.
+        if (has_kp) bound = log(kp) <= hertzdamp_log_k(ltsn, lm, lu)
+        if (bound) lts = hertzdamp_log_tstar(lm, log(kp), lu, .true.)
+        call hertzdamp_safe_exp(lts, ts, status)
+        if (bound) then
+            k = kp            ! exactly the bound, as on the direct path (not exp(log(k_phys)))
+        else
+            call hertzdamp_safe_exp(hertzdamp_log_k(lts, lm, lu), k, status)
+        end if
+        ae = a
+        if (bound .and. host /= HD_HOST_NONE) ae = a_cont + (a - a_cont) * exp(ltsn - lts)
+        call hertzdamp_scale_log_d(lts, lm, lu, ae, hertzdamp_law_q(law), d, status)
+        if (status == HD_OK) then
+            if (.not. (abs(d) < huge(d))) status = HD_OUT_OF_RANGE
+        end if
+    end subroutine log_kd
+
+    ! ================================================================ many contacts
+
+    !> k and d of nc contacts (one pass of the array forms): the direct formulas run
+    !> vectorised over every contact (inputs outside the direct range, or without
+    !> constants, replaced by harmless ones and flagged); the flagged contacts, and those
+    !> that meet the bound, then go one by one through contact_kd (the same bits as one
+    !> call per contact).  Inputs are buffers of the caller (a result may then alias an
+    !> argument of the public call exactly: in place).
+    pure subroutine contacts_kd(nc, law, host, a, tau, a_cont, given, tc, m, u, has_kp, kp, want_ts, k, d, ts, &
+                                bound, status)
+        integer, intent(in) :: nc, law, host
+        real(wp), intent(in) :: a(nc), tau(nc), a_cont(nc), tc(nc), m(nc), u(nc), kp(nc)
+        integer, intent(in) :: given(nc)
+        logical, intent(in) :: has_kp, want_ts
+        real(wp), intent(out) :: k(nc), d(nc), ts(nc)
+        logical, intent(out) :: bound(nc)
+        integer, intent(out) :: status(nc)
+        integer :: redo(nc)
+        logical :: ok
+        integer :: j
+        do j = 1, nc
+            ok = given(j) == HD_OK .and. tc(j) >= direct_lo .and. tc(j) <= direct_hi .and. m(j) >= direct_lo .and. &
+                 m(j) <= direct_hi .and. u(j) >= direct_lo .and. u(j) <= direct_hi
+            call direct_kd(law, a(j), merge(tau(j), 1.0_wp, ok), merge(tc(j), 1.0_wp, ok), merge(m(j), 1.0_wp, ok), &
+                           merge(u(j), 1.0_wp, ok), k(j), d(j))
+            redo(j) = merge(0, 1, ok)
+        end do
+        if (want_ts) then
+            do j = 1, nc
+                ts(j) = tc(j) / merge(tau(j), 1.0_wp, redo(j) == 0)
+            end do
+        end if
+        if (has_kp) then
+            do j = 1, nc
+                if (.not. (kp(j) > 0.0_wp .and. kp(j) <= huge(kp(j)) .and. kp(j) > k(j))) redo(j) = 1
+            end do
+        end if
+        status = HD_OK
+        bound = .false.
+        if (any(redo /= 0)) then
+            do j = 1, nc
+                if (redo(j) /= 0) call contact_kd(a(j), tau(j), a_cont(j), law, host, given(j), tc(j), m(j), u(j), &
+                                                  has_kp, kp(j), want_ts, k(j), d(j), ts(j), bound(j), status(j))
+            end do
+        end if
+    end subroutine contacts_kd
+
+    !> hertzdamp_pair_kd over arrays; tc, m of size 1 are broadcast (the core of the
+    !> array forms: passes of `chunk` contacts through buffers).
+    pure subroutine pair_kd_n(pair, tc, m, u, k, d, status, k_phys, bound_active, tstar)
+        type(hertzdamp_pair_t), intent(in) :: pair
+        real(wp), intent(in) :: tc(:), m(:), u(:)
+        real(wp), intent(out) :: k(:), d(:)
+        integer, intent(out) :: status(:)
+        real(wp), intent(in), optional :: k_phys(:)
+        logical, intent(out), optional :: bound_active(:)
+        real(wp), intent(out), optional :: tstar(:)
+        real(wp) :: ab(chunk), tb(chunk), acb(chunk), tcb(chunk), mb(chunk), ub(chunk), kpb(chunk), tsb(chunk)
+        integer :: gb(chunk)
+        logical :: bb(chunk)
+        integer :: i0, nc, valid, law, host, n
+        n = size(u)
+        valid = pair_status(pair)
+        law = HD_DAMPING_LINEAR
+        host = HD_HOST_NONE
+        if (valid == HD_OK) then
+            law = int(pair%law)
+            host = int(pair%host)
+        end if
+        ab = pair%alpha
+        tb = pair%tau_c
+        acb = pair%alpha_cont
+        gb = valid
+        kpb = 0.0_wp
+        do i0 = 0, n - 1, chunk
+            nc = min(chunk, n - i0)
+            call take(tc, i0, nc, tcb)
+            call take(m, i0, nc, mb)
+            ub(1:nc) = u(i0 + 1:i0 + nc)
+            if (present(k_phys)) kpb(1:nc) = k_phys(i0 + 1:i0 + nc)
+            call contacts_kd(nc, law, host, ab, tb, acb, gb, tcb, mb, ub, present(k_phys), kpb, present(tstar), &
+                             k(i0 + 1:i0 + nc), d(i0 + 1:i0 + nc), tsb, bb, status(i0 + 1:i0 + nc))
+            if (present(bound_active)) bound_active(i0 + 1:i0 + nc) = bb(1:nc)
+            if (present(tstar)) tstar(i0 + 1:i0 + nc) = tsb(1:nc)
+        end do
+    end subroutine pair_kd_n
+
+    !> The values i0 + 1 .. i0 + nc of x into buf, or x(1) nc times when x has one value.
+    pure subroutine take(x, i0, nc, buf)
+        real(wp), intent(in) :: x(:)
+        integer, intent(in) :: i0, nc
+        real(wp), intent(out) :: buf(:)
+        if (size(x) == 1) then
+            buf(1:nc) = x(1)
+        else
+            buf(1:nc) = x(i0 + 1:i0 + nc)
+        end if
+    end subroutine take
+
+    !> hertzdamp_pair_kd for rank-1 arrays of T_c, m, u (all of the size of u).
+    pure subroutine pair_kd_array(pair, tc, m, u, k, d, status, k_phys, bound_active, tstar)
+        type(hertzdamp_pair_t), intent(in) :: pair                        !! constants of the material pair
+        real(wp), intent(in), contiguous :: tc(:)                       !! target contact times [s]
+        real(wp), intent(in), contiguous :: m(:)                        !! effective masses [kg]
+        real(wp), intent(in), contiguous :: u(:)                        !! impact velocities [m s^-1]
+        real(wp), intent(out), contiguous :: k(:)                       !! Hertz stiffnesses [N m^-3/2]
+        real(wp), intent(out), contiguous :: d(:)                       !! damping coefficients [kg s^-1 m^-q]
+        integer, intent(out), contiguous :: status(:)                   !! HD_OK or an error code, per contact
+        real(wp), intent(in), optional, contiguous :: k_phys(:)         !! physical stiffness bounds [N m^-3/2]
+        logical, intent(out), optional, contiguous :: bound_active(:)   !! true where k = k_phys was used
+        real(wp), intent(out), optional, contiguous :: tstar(:)         !! time units of the returned k [s]
+        call pair_kd_n(pair, tc, m, u, k, d, status, k_phys, bound_active, tstar)
+    end subroutine pair_kd_array
+
+    !> hertzdamp_pair_kd for one T_c and rank-1 arrays of m, u.
+    pure subroutine pair_kd_array_tc(pair, tc, m, u, k, d, status, k_phys, bound_active, tstar)
+        type(hertzdamp_pair_t), intent(in) :: pair                        !! constants of the material pair
+        real(wp), intent(in) :: tc                                      !! target contact time of every contact [s]
+        real(wp), intent(in), contiguous :: m(:)                        !! effective masses [kg]
+        real(wp), intent(in), contiguous :: u(:)                        !! impact velocities [m s^-1]
+        real(wp), intent(out), contiguous :: k(:)                       !! Hertz stiffnesses [N m^-3/2]
+        real(wp), intent(out), contiguous :: d(:)                       !! damping coefficients [kg s^-1 m^-q]
+        integer, intent(out), contiguous :: status(:)                   !! HD_OK or an error code, per contact
+        real(wp), intent(in), optional, contiguous :: k_phys(:)         !! physical stiffness bounds [N m^-3/2]
+        logical, intent(out), optional, contiguous :: bound_active(:)   !! true where k = k_phys was used
+        real(wp), intent(out), optional, contiguous :: tstar(:)         !! time units of the returned k [s]
+        call pair_kd_n(pair, [tc], m, u, k, d, status, k_phys, bound_active, tstar)
+    end subroutine pair_kd_array_tc
+
+    !> hertzdamp_pair_kd for one m and rank-1 arrays of T_c, u.
+    pure subroutine pair_kd_array_m(pair, tc, m, u, k, d, status, k_phys, bound_active, tstar)
+        type(hertzdamp_pair_t), intent(in) :: pair                        !! constants of the material pair
+        real(wp), intent(in), contiguous :: tc(:)                       !! target contact times [s]
+        real(wp), intent(in) :: m                                       !! effective mass of every contact [kg]
+        real(wp), intent(in), contiguous :: u(:)                        !! impact velocities [m s^-1]
+        real(wp), intent(out), contiguous :: k(:)                       !! Hertz stiffnesses [N m^-3/2]
+        real(wp), intent(out), contiguous :: d(:)                       !! damping coefficients [kg s^-1 m^-q]
+        integer, intent(out), contiguous :: status(:)                   !! HD_OK or an error code, per contact
+        real(wp), intent(in), optional, contiguous :: k_phys(:)         !! physical stiffness bounds [N m^-3/2]
+        logical, intent(out), optional, contiguous :: bound_active(:)   !! true where k = k_phys was used
+        real(wp), intent(out), optional, contiguous :: tstar(:)         !! time units of the returned k [s]
+        call pair_kd_n(pair, tc, [m], u, k, d, status, k_phys, bound_active, tstar)
+    end subroutine pair_kd_array_m
+
+    !> hertzdamp_pair_kd for one T_c and one m, and a rank-1 array of u.
+    pure subroutine pair_kd_array_tc_m(pair, tc, m, u, k, d, status, k_phys, bound_active, tstar)
+        type(hertzdamp_pair_t), intent(in) :: pair                        !! constants of the material pair
+        real(wp), intent(in) :: tc                                      !! target contact time of every contact [s]
+        real(wp), intent(in) :: m                                       !! effective mass of every contact [kg]
+        real(wp), intent(in), contiguous :: u(:)                        !! impact velocities [m s^-1]
+        real(wp), intent(out), contiguous :: k(:)                       !! Hertz stiffnesses [N m^-3/2]
+        real(wp), intent(out), contiguous :: d(:)                       !! damping coefficients [kg s^-1 m^-q]
+        integer, intent(out), contiguous :: status(:)                   !! HD_OK or an error code, per contact
+        real(wp), intent(in), optional, contiguous :: k_phys(:)         !! physical stiffness bounds [N m^-3/2]
+        logical, intent(out), optional, contiguous :: bound_active(:)   !! true where k = k_phys was used
+        real(wp), intent(out), optional, contiguous :: tstar(:)         !! time units of the returned k [s]
+        call pair_kd_n(pair, [tc], [m], u, k, d, status, k_phys, bound_active, tstar)
+    end subroutine pair_kd_array_tc_m
+
+    ! ================================================================ the one-call inverse
+
+    !> k and d such that the collision has restitution e and contact time tc (doc/theory.md
+    !> section 6): the constants alpha(e), tau_c(alpha(e)) by the method of `options` (the
+    !> fit by default), then k, d and the bound as hertzdamp_pair_kd computes them.  The
+    !> status names the bad argument: T_c, m, u, k_phys (the last bad one), then the law,
+    !> the contact end, e and the method's own (hertzdamp_invert_alpha).  On failure every
+    !> output is 0 (bound_active false).
+    pure elemental subroutine invert_one(e, tc, m, u, iend, k, d, status, alpha, tstar, tau_c, bound_active, &
+                                         k_phys, law, options)
+        real(wp), intent(in) :: e                      !! target restitution coefficient, e_min <= e <= 1
+        real(wp), intent(in) :: tc                     !! target contact time T_c [s]
+        real(wp), intent(in) :: m                      !! effective mass [kg]
+        real(wp), intent(in) :: u                      !! impact velocity u_in [m s^-1]
+        integer, intent(in) :: iend                    !! HD_END_OVERLAP or HD_END_FORCE
+        real(wp), intent(out) :: k                     !! stiffness [N m^-3/2] (0 on error)
+        real(wp), intent(out) :: d                     !! damping coefficient [kg s^-1 m^-q] (0 on error)
+        integer, intent(out) :: status                 !! HD_OK or an error code
+        real(wp), intent(out), optional :: alpha       !! damping parameter alpha(e)
+        real(wp), intent(out), optional :: tstar       !! time unit of the returned k [s] (contact time = tstar tau_c)
+        real(wp), intent(out), optional :: tau_c       !! dimensionless contact duration tau_c(alpha)
+        logical, intent(out), optional :: bound_active !! true when k = k_phys was used
+        real(wp), intent(in), optional :: k_phys       !! physical stiffness bound [N m^-3/2]
+        integer, intent(in), optional :: law           !! HD_DAMPING_* (default linear): damping force d zeta^q zeta'
+        type(hertzdamp_invert_options), intent(in), optional :: options !! method and settings (default: the fit)
+        real(wp) :: a, tau, kp, ts
+        integer :: law_, given
+        logical :: bound
+        law_ = HD_DAMPING_LINEAR
+        if (present(law)) law_ = law
+        kp = 0.0_wp
+        if (present(k_phys)) kp = k_phys
+        call pair_constants(e, iend, law_, options, tc, m, u, present(k_phys), kp, a, tau, given)
+        call contact_kd(a, tau, a, law_, HD_HOST_NONE, given, tc, m, u, present(k_phys), kp, present(tstar), k, d, ts, &
+                        bound, status)
+        if (status /= HD_OK) then
+            a = 0.0_wp
+            tau = 0.0_wp
+        end if
+        if (present(alpha)) alpha = a
+        if (present(tstar)) tstar = ts
+        if (present(tau_c)) tau_c = tau
+        if (present(bound_active)) bound_active = bound
+    end subroutine invert_one
+
+    !> alpha(e), tau_c(alpha(e)) of a contact end and law by the method of options (the
+    !> fit when absent) and their status; a slow method is not run for a contact whose
+    !> arguments (T_c, m, u, k_phys) are invalid anyway.
+    pure elemental subroutine pair_constants(e, iend, law, options, tc, m, u, has_kp, kp, a, tau, status)
+        real(wp), intent(in) :: e, tc, m, u, kp
+        integer, intent(in) :: iend, law
+        type(hertzdamp_invert_options), intent(in), optional :: options
+        logical, intent(in) :: has_kp
+        real(wp), intent(out) :: a, tau
+        integer, intent(out) :: status
+        logical :: fit
+        fit = .true.
+        if (present(options)) fit = options%method == HD_METHOD_FIT
+        if (fit) then
+            call hertzdamp_fit_inverse(e, iend, a, tau, status, law)
+            return
+        end if
+        a = 0.0_wp
+        tau = 0.0_wp
+        status = argument_status(tc, m, u, has_kp, kp)
+        if (status == HD_OK) call hertzdamp_invert_alpha(e, iend, a, tau, status, options%method, options%tol, &
+                                                         options%accuracy, law)
+    end subroutine pair_constants
+
+    !> hertzdamp_invert over arrays; tc, m of size 1 are broadcast (the core of the array
+    !> forms): per pass of `chunk` contacts the fit's vectorised kernel (other methods:
+    !> one contact at a time) gives alpha and tau_c, then contacts_kd k and d.
+    pure subroutine invert_n(e, tc, m, u, iend, k, d, status, alpha, tstar, tau_c, bound_active, k_phys, law, options)
+        real(wp), intent(in) :: e(:), tc(:), m(:), u(:)
+        integer, intent(in) :: iend
+        real(wp), intent(out) :: k(:), d(:)
+        integer, intent(out) :: status(:)
+        real(wp), intent(out), optional :: alpha(:), tstar(:), tau_c(:)
+        logical, intent(out), optional :: bound_active(:)
+        real(wp), intent(in), optional :: k_phys(:)
+        integer, intent(in), optional :: law
+        type(hertzdamp_invert_options), intent(in), optional :: options
+        real(wp) :: ab(chunk), tb(chunk), tcb(chunk), mb(chunk), ub(chunk), kpb(chunk), tsb(chunk)
+        integer :: gb(chunk)
+        logical :: bb(chunk), fit
+        integer :: i0, nc, j, law_, n
+        n = size(e)
+        law_ = HD_DAMPING_LINEAR
+        if (present(law)) law_ = law
+        fit = .true.
+        if (present(options)) fit = options%method == HD_METHOD_FIT
+        kpb = 0.0_wp
+        do i0 = 0, n - 1, chunk
+            nc = min(chunk, n - i0)
+            call take(tc, i0, nc, tcb)
+            call take(m, i0, nc, mb)
+            ub(1:nc) = u(i0 + 1:i0 + nc)
+            if (present(k_phys)) kpb(1:nc) = k_phys(i0 + 1:i0 + nc)
+            if (fit) then
+                call hertzdamp_fit_inverse_n(nc, e(i0 + 1:i0 + nc), iend, ab, tb, gb, law_)
+            else
+                do j = 1, nc
+                    call pair_constants(e(i0 + j), iend, law_, options, tcb(j), mb(j), ub(j), present(k_phys), &
+                                        kpb(j), ab(j), tb(j), gb(j))
+                end do
+            end if
+            call contacts_kd(nc, law_, HD_HOST_NONE, ab, tb, ab, gb, tcb, mb, ub, present(k_phys), kpb, &
+                             present(tstar), k(i0 + 1:i0 + nc), d(i0 + 1:i0 + nc), tsb, bb, status(i0 + 1:i0 + nc))
+            if (present(alpha)) alpha(i0 + 1:i0 + nc) = merge(ab(1:nc), 0.0_wp, status(i0 + 1:i0 + nc) == HD_OK)
+            if (present(tau_c)) tau_c(i0 + 1:i0 + nc) = merge(tb(1:nc), 0.0_wp, status(i0 + 1:i0 + nc) == HD_OK)
+            if (present(tstar)) tstar(i0 + 1:i0 + nc) = tsb(1:nc)
+            if (present(bound_active)) bound_active(i0 + 1:i0 + nc) = bb(1:nc)
+        end do
+    end subroutine invert_n
+
+    !> hertzdamp_invert for rank-1 arrays (all of the size of e): the results of one call
+    !> per contact, bit for bit.
+    pure subroutine invert_array(e, tc, m, u, iend, k, d, status, alpha, tstar, tau_c, bound_active, k_phys, law, &
+                                 options)
+        real(wp), intent(in), contiguous :: e(:)                 !! target restitution coefficients
+        real(wp), intent(in), contiguous :: tc(:)                !! target contact times [s]
+        real(wp), intent(in), contiguous :: m(:)                 !! effective masses [kg]
+        real(wp), intent(in), contiguous :: u(:)                 !! impact velocities [m s^-1]
+        integer, intent(in) :: iend                              !! HD_END_OVERLAP or HD_END_FORCE
+        real(wp), intent(out), contiguous :: k(:)                !! stiffnesses [N m^-3/2] (0 on error)
+        real(wp), intent(out), contiguous :: d(:)                !! damping coefficients [kg s^-1 m^-q] (0 on error)
+        integer, intent(out), contiguous :: status(:)            !! HD_OK or an error code, per contact
+        real(wp), intent(out), optional, contiguous :: alpha(:)  !! damping parameters alpha(e)
+        real(wp), intent(out), optional, contiguous :: tstar(:)  !! time units of the returned k [s]
+        real(wp), intent(out), optional, contiguous :: tau_c(:)  !! dimensionless contact durations
+        logical, intent(out), optional, contiguous :: bound_active(:) !! true where k = k_phys was used
+        real(wp), intent(in), optional, contiguous :: k_phys(:)  !! physical stiffness bounds [N m^-3/2]
+        integer, intent(in), optional :: law                     !! as for one contact
+        type(hertzdamp_invert_options), intent(in), optional :: options !! as for one contact
+        call invert_n(e, tc, m, u, iend, k, d, status, alpha, tstar, tau_c, bound_active, k_phys, law, options)
+    end subroutine invert_array
+
+    !> hertzdamp_invert for one T_c and rank-1 arrays of e, m, u (the vectorised path).
+    pure subroutine invert_array_tc(e, tc, m, u, iend, k, d, status, alpha, tstar, tau_c, bound_active, k_phys, law, &
+                                    options)
+        real(wp), intent(in), contiguous :: e(:)                 !! target restitution coefficients
+        real(wp), intent(in) :: tc                               !! target contact time of every contact [s]
+        real(wp), intent(in), contiguous :: m(:)                 !! effective masses [kg]
+        real(wp), intent(in), contiguous :: u(:)                 !! impact velocities [m s^-1]
+        integer, intent(in) :: iend                              !! HD_END_OVERLAP or HD_END_FORCE
+        real(wp), intent(out), contiguous :: k(:)                !! stiffnesses [N m^-3/2] (0 on error)
+        real(wp), intent(out), contiguous :: d(:)                !! damping coefficients [kg s^-1 m^-q] (0 on error)
+        integer, intent(out), contiguous :: status(:)            !! HD_OK or an error code, per contact
+        real(wp), intent(out), optional, contiguous :: alpha(:)  !! damping parameters alpha(e)
+        real(wp), intent(out), optional, contiguous :: tstar(:)  !! time units of the returned k [s]
+        real(wp), intent(out), optional, contiguous :: tau_c(:)  !! dimensionless contact durations
+        logical, intent(out), optional, contiguous :: bound_active(:) !! true where k = k_phys was used
+        real(wp), intent(in), optional, contiguous :: k_phys(:)  !! physical stiffness bounds [N m^-3/2]
+        integer, intent(in), optional :: law                     !! as for one contact
+        type(hertzdamp_invert_options), intent(in), optional :: options !! as for one contact
+        call invert_n(e, [tc], m, u, iend, k, d, status, alpha, tstar, tau_c, bound_active, k_phys, law, options)
+    end subroutine invert_array_tc
+
+    !> hertzdamp_invert for one m and rank-1 arrays of e, T_c, u (the vectorised path).
+    pure subroutine invert_array_m(e, tc, m, u, iend, k, d, status, alpha, tstar, tau_c, bound_active, k_phys, law, &
+                                   options)
+        real(wp), intent(in), contiguous :: e(:)                 !! target restitution coefficients
+        real(wp), intent(in), contiguous :: tc(:)                !! target contact times [s]
+        real(wp), intent(in) :: m                                !! effective mass of every contact [kg]
+        real(wp), intent(in), contiguous :: u(:)                 !! impact velocities [m s^-1]
+        integer, intent(in) :: iend                              !! HD_END_OVERLAP or HD_END_FORCE
+        real(wp), intent(out), contiguous :: k(:)                !! stiffnesses [N m^-3/2] (0 on error)
+        real(wp), intent(out), contiguous :: d(:)                !! damping coefficients [kg s^-1 m^-q] (0 on error)
+        integer, intent(out), contiguous :: status(:)            !! HD_OK or an error code, per contact
+        real(wp), intent(out), optional, contiguous :: alpha(:)  !! damping parameters alpha(e)
+        real(wp), intent(out), optional, contiguous :: tstar(:)  !! time units of the returned k [s]
+        real(wp), intent(out), optional, contiguous :: tau_c(:)  !! dimensionless contact durations
+        logical, intent(out), optional, contiguous :: bound_active(:) !! true where k = k_phys was used
+        real(wp), intent(in), optional, contiguous :: k_phys(:)  !! physical stiffness bounds [N m^-3/2]
+        integer, intent(in), optional :: law                     !! as for one contact
+        type(hertzdamp_invert_options), intent(in), optional :: options !! as for one contact
+        call invert_n(e, tc, [m], u, iend, k, d, status, alpha, tstar, tau_c, bound_active, k_phys, law, options)
+    end subroutine invert_array_m
+
+    !> hertzdamp_invert for one T_c and one m, and rank-1 arrays of e, u (the vectorised path).
+    pure subroutine invert_array_tc_m(e, tc, m, u, iend, k, d, status, alpha, tstar, tau_c, bound_active, k_phys, law, &
+                                      options)
+        real(wp), intent(in), contiguous :: e(:)                 !! target restitution coefficients
+        real(wp), intent(in) :: tc                               !! target contact time of every contact [s]
+        real(wp), intent(in) :: m                                !! effective mass of every contact [kg]
+        real(wp), intent(in), contiguous :: u(:)                 !! impact velocities [m s^-1]
+        integer, intent(in) :: iend                              !! HD_END_OVERLAP or HD_END_FORCE
+        real(wp), intent(out), contiguous :: k(:)                !! stiffnesses [N m^-3/2] (0 on error)
+        real(wp), intent(out), contiguous :: d(:)                !! damping coefficients [kg s^-1 m^-q] (0 on error)
+        integer, intent(out), contiguous :: status(:)            !! HD_OK or an error code, per contact
+        real(wp), intent(out), optional, contiguous :: alpha(:)  !! damping parameters alpha(e)
+        real(wp), intent(out), optional, contiguous :: tstar(:)  !! time units of the returned k [s]
+        real(wp), intent(out), optional, contiguous :: tau_c(:)  !! dimensionless contact durations
+        logical, intent(out), optional, contiguous :: bound_active(:) !! true where k = k_phys was used
+        real(wp), intent(in), optional, contiguous :: k_phys(:)  !! physical stiffness bounds [N m^-3/2]
+        integer, intent(in), optional :: law                     !! as for one contact
+        type(hertzdamp_invert_options), intent(in), optional :: options !! as for one contact
+        call invert_n(e, [tc], [m], u, iend, k, d, status, alpha, tstar, tau_c, bound_active, k_phys, law, options)
+    end subroutine invert_array_tc_m
+
+end module hertzdamp_pair

@@ -52,6 +52,10 @@ extern "C" {
 #define HERTZDAMP_BAD_MODULUS         23  /* Young's modulus not finite and positive */
 #define HERTZDAMP_BAD_POISSON         24  /* Poisson's ratio outside (-1, 0.5] */
 #define HERTZDAMP_BAD_LAW             25  /* damping law not 0 (linear), 1 (tsuji) or 2 (kuwabara-kono) */
+#define HERTZDAMP_BAD_HOST            26  /* host scheme not one of HERTZDAMP_HOST_* */
+#define HERTZDAMP_BAD_STEPS           27  /* steps per contact not finite or below the smallest allowed */
+#define HERTZDAMP_HOST_UNREACHABLE    28  /* no alpha reaches this e with the host at so few steps */
+#define HERTZDAMP_BAD_PAIR            29  /* pair not set by hertzdamp_c_pair_init, or changed since */
 
 /* Contact-end definitions (argument `end`). */
 #define HERTZDAMP_END_OVERLAP 0  /* contact ends when the overlap returns to zero */
@@ -62,6 +66,47 @@ extern "C" {
 #define HERTZDAMP_DAMPING_LINEAR        0  /* q = 0: constant damping (the default of the other calls) */
 #define HERTZDAMP_DAMPING_TSUJI         1  /* q = 1/4: Tsuji; d = gamma sqrt(m k) gives alpha = gamma */
 #define HERTZDAMP_DAMPING_KUWABARA_KONO 2  /* q = 1/2: Kuwabara-Kono (LAMMPS viscoelastic) */
+
+/* Host time integrators (argument `host` of hertzdamp_c_pair_init; doc/host-schemes.md). */
+#define HERTZDAMP_HOST_NONE         0  /* the continuous model: k, d exact for it */
+#define HERTZDAMP_HOST_LAMMPS       1  /* LAMMPS / LIGGGHTS fix nve/sphere (velocity Verlet) */
+#define HERTZDAMP_HOST_MFIX_EULER   2  /* MFiX DES_INTG_METHOD = 'EULER' */
+#define HERTZDAMP_HOST_MFIX_AB2     3  /* MFiX DES_INTG_METHOD = 'ADAMS_BASHFORTH' */
+#define HERTZDAMP_HOST_VERLET       4  /* the scheme of hertzdamp's own scene engine */
+#define HERTZDAMP_HOST_LAMMPS_PHASE 5  /* lammps with the hertzdamp plugin's onset correction */
+
+/*
+ * The constants of a material pair (set by hertzdamp_c_pair_init, read by
+ * hertzdamp_c_pair_kd): eight doubles, the same memory as the Fortran type
+ * hertzdamp_pair_t and the legacy DOUBLE PRECISION PAIR(8).  Treat it as opaque: a
+ * pair that was not set by hertzdamp_c_pair_init, whose init failed, or that was
+ * changed since, is refused (HERTZDAMP_BAD_PAIR).  Copying it is fine.
+ */
+typedef struct {
+    double v[8];
+} hertzdamp_pair_t;
+
+/*
+ * Per-pair API (the fast path of a DEM host): once per material pair,
+ * hertzdamp_c_pair_init with the target restitution e, the damping law, the contact
+ * end, the host's time integrator (HERTZDAMP_HOST_*) and the steps per contact N
+ * (T_c = N dt; not used by HERTZDAMP_HOST_NONE).  With a host scheme the constants are
+ * those that make the phase-averaged e and contact time of the host's own N-step
+ * collision exact; when no constants reach e at so few steps the status is
+ * HERTZDAMP_HOST_UNREACHABLE (a larger N can).  On failure *p is invalid.
+ */
+int hertzdamp_c_pair_init(double e, int law, int end, int host, double steps, hertzdamp_pair_t *p);
+
+/*
+ * Then at each contact onset: *k [N m^-3/2] and *d [kg s^-1 m^-q] for target contact
+ * time tc = N dt [s], effective mass m [kg] and impact speed u [m/s] > 0, with the
+ * physical-stiffness bound when k_phys > 0 (k_phys <= 0: no bound): where
+ * k_phys <= k the contact keeps *k = k_phys (it then lasts longer than tc).  The same
+ * numbers as hertzdamp_c_invert_law for HERTZDAMP_HOST_NONE, bit for bit.  On failure
+ * *k = *d = 0.
+ */
+int hertzdamp_c_pair_kd(const hertzdamp_pair_t *p, double tc, double m, double u, double k_phys,
+                        double *k, double *d);
 
 /*
  * Inverse problem (adaptive collision time): the Hertz stiffness *k [N m^-3/2] and

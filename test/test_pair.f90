@@ -253,8 +253,9 @@ contains
                 case default
                     call hertzdamp_pair_kd(p, tc_one, m_one, u(1:n), k, d, st, tstar=ts)
                 end select
-                if (any(bits(k) /= bits(k0) .or. bits(d) /= bits(d0) .or. bits(ts) /= bits(ts0) .or. st /= st0)) &
+                if (any(bits(k) /= bits(k0) .or. bits(d) /= bits(d0) .or. bits(ts) /= bits(ts0) .or. st /= st0)) then
                     nbad = nbad + 1
+                end if
                 do i = 1, n
                     call hertzdamp_pair_kd(p, tcs(i), ms(i), u(i), k0(i), d0(i), st0(i), k_phys=kp(i), &
                                            bound_active=b0(i))
@@ -269,8 +270,9 @@ contains
                 case default
                     call hertzdamp_pair_kd(p, tc_one, m_one, u(1:n), k, d, st, k_phys=kp, bound_active=b)
                 end select
-                if (any(bits(k) /= bits(k0) .or. bits(d) /= bits(d0) .or. st /= st0 .or. (b .neqv. b0))) &
+                if (any(bits(k) /= bits(k0) .or. bits(d) /= bits(d0) .or. st /= st0 .or. (b .neqv. b0))) then
                     nbad = nbad + 1
+                end if
             end do
             deallocate (k0, d0, ts0, k, d, ts, kp, st0, st, b0, b)
         end do
@@ -329,8 +331,9 @@ contains
                         call hertzdamp_invert(e(1:n), tc1, m1, u(1:n), HD_END_FORCE, k, d, st, bound_active=b, &
                                               k_phys=kp, law=law, options=o)
                     end select
-                    if (any(bits(k) /= bits(k0) .or. bits(d) /= bits(d0) .or. st /= st0 .or. (b .neqv. b0))) &
+                    if (any(bits(k) /= bits(k0) .or. bits(d) /= bits(d0) .or. st /= st0 .or. (b .neqv. b0))) then
                         nbad = nbad + 1
+                    end if
                     call s%check(count(st0 == HD_OK) > n / 4, 'invert broadcast: a quarter of the contacts ' // &
                                  'succeeds at least (compact: e >= 0.05)')
                 end do

@@ -13,11 +13,11 @@
 !> every law) and the forward map.
 program test_entry_points
     use hertzdamp, only: hertzdamp_rk, hertzdamp_invert, hertzdamp_invert_options, hertzdamp_fit_inverse, &
-                         hertzdamp_fit_inverse_n, &
-                         hertzdamp_fit_invert, hertzdamp_fit_invert_n, hertzdamp_fit_forward, hertzdamp_fit_forward_n, &
+                         hertzdamp_fit_inverse_n, hertzdamp_fit_forward, hertzdamp_fit_forward_n, &
                          hertzdamp_fit_alpha_c, HD_OK, HD_END_OVERLAP, HD_END_FORCE, HD_METHOD_FIT, HD_BAD_LAW, &
                          HD_DAMPING_LINEAR, HD_DAMPING_KUWABARA_KONO, hertzdamp_law_name
     use hertzdamp_pair, only: hertzdamp_pair_t, hertzdamp_pair_init, hertzdamp_pair_kd
+    use hertzdamp_fit, only: hertzdamp_fit_invert, hertzdamp_fit_invert_n
     use hertzdamp_host, only: HD_HOST_NONE
     use hertzdamp_status, only: HD_BAD_PAIR
     use hertzdamp_capi, only: hertzdamp_c_invert, hertzdamp_c_invert_n, hertzdamp_c_invert_bounded, &

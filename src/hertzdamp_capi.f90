@@ -37,12 +37,16 @@
 !> (scalars and explicit-shape arrays by reference) of the externals.  Never `use` a
 !> library module inside a procedure here; test/fpenv_symbols.sh fails if an entry point
 !> calls those routines again.
+!>
+!> One entry point is defined elsewhere and re-exported here: hertzdamp_c_pair_kd, the
+!> per-contact call, lives in hertzdamp_pair so that the k, d code inlines into it (the
+!> bare formula costs a few ns; a call between modules is not inlined without LTO).
 module hertzdamp_capi
     use, intrinsic :: iso_c_binding, only: c_double, c_int, c_char, c_ptr, c_loc, c_null_char
     use hertzdamp_status, only: HD_OK, HD_NO_REBOUND, HD_BAD_ARGUMENT, hertzdamp_message_table, hertzdamp_max_status, &
                                 hertzdamp_message_len
     use hertzdamp_methods, only: hertzdamp_forward_dim, HD_METHOD_FIT
-    use hertzdamp_pair, only: hertzdamp_pair_t, hertzdamp_pair_init, hertzdamp_pair_kd, hertzdamp_invert
+    use hertzdamp_pair, only: hertzdamp_pair_t, hertzdamp_pair_init, hertzdamp_invert, hertzdamp_c_pair_kd
     use hertzdamp_host, only: HD_HOST_NONE
     implicit none
     private
@@ -82,32 +86,6 @@ contains
         call hertzdamp_pair_init(e, int(law), int(iend), int(host), steps, p, st)
         status = int(st, c_int)
     end function hertzdamp_c_pair_init
-
-    !> `int hertzdamp_c_pair_kd(const hertzdamp_pair_t *p, double tc, double m, double u,
-    !> double k_phys, double *k, double *d)`: k and d of one contact (hertzdamp_pair_kd);
-    !> k_phys <= 0: no bound.  On failure *k = *d = 0; NULL gives HD_BAD_ARGUMENT.
-    integer(c_int) function hertzdamp_c_pair_kd(p, tc, m, u, k_phys, k, d) &
-            bind(c, name='hertzdamp_c_pair_kd') result(status)
-        type(hertzdamp_pair_t), intent(in), optional :: p !! the pair's constants (hertzdamp_c_pair_init)
-        real(c_double), value, intent(in) :: tc         !! target contact time N dt [s]
-        real(c_double), value, intent(in) :: m          !! effective mass [kg]
-        real(c_double), value, intent(in) :: u          !! impact velocity [m/s]
-        real(c_double), value, intent(in) :: k_phys     !! physical stiffness bound [N m^-3/2], <= 0 for none
-        real(c_double), intent(out), optional :: k      !! Hertz stiffness [N m^-3/2]
-        real(c_double), intent(out), optional :: d      !! damping coefficient [kg s^-1 m^-q]
-        real(c_double) :: k_, d_
-        integer :: st
-        status = HD_BAD_ARGUMENT
-        if (.not. (present(p) .and. present(k) .and. present(d))) return
-        if (k_phys <= 0.0_c_double) then
-            call hertzdamp_pair_kd(p, tc, m, u, k_, d_, st)
-        else
-            call hertzdamp_pair_kd(p, tc, m, u, k_, d_, st, k_phys=k_phys)
-        end if
-        k = k_
-        d = d_
-        status = int(st, c_int)
-    end function hertzdamp_c_pair_kd
 
     ! ================================================================ C: the one-call inverse
 

@@ -32,11 +32,11 @@
 !> loop of k and d here), with T_c and m also as scalars broadcast over the arrays.
 !> Every entry point (module, C, legacy) runs this code: the same bits everywhere.
 module hertzdamp_pair
-    use, intrinsic :: iso_c_binding, only: c_double
+    use, intrinsic :: iso_c_binding, only: c_double, c_int
     use, intrinsic :: iso_fortran_env, only: int64
     use hertzdamp_kinds, only: hertzdamp_rk
     use hertzdamp_status, only: HD_OK, HD_BAD_TIME, HD_BAD_MASS, HD_BAD_VELOCITY, HD_BAD_KPHYS, HD_OUT_OF_RANGE, &
-                                HD_BAD_PAIR
+                                HD_BAD_PAIR, HD_BAD_ARGUMENT
     use hertzdamp_laws, only: HD_DAMPING_LINEAR, HD_DAMPING_TSUJI, hertzdamp_law_q
     use hertzdamp_constants, only: direct_lo => hertzdamp_direct_lo, direct_hi => hertzdamp_direct_hi
     use hertzdamp_scaling, only: hertzdamp_safe_exp, hertzdamp_log_tstar, hertzdamp_log_k, hertzdamp_scale_log_d
@@ -95,6 +95,8 @@ module hertzdamp_pair
     end interface hertzdamp_invert
 
     public :: hertzdamp_pair_init, hertzdamp_pair_kd, hertzdamp_invert
+    ! the C entry of the per-contact call (see there; hertzdamp_capi re-exports it)
+    public :: hertzdamp_c_pair_kd
 
 contains
 
@@ -201,6 +203,40 @@ contains
         if (present(tstar)) tstar = ts
     end subroutine pair_kd_one
 
+    !> `int hertzdamp_c_pair_kd(const hertzdamp_pair_t *p, double tc, double m, double u,
+    !> double k_phys, double *k, double *d)`: k and d of one contact (hertzdamp_pair_kd);
+    !> k_phys <= 0: no bound.  On failure *k = *d = 0; NULL gives HD_BAD_ARGUMENT.
+    !> Part of the binding layer (hertzdamp_capi re-exports it), but defined here: the
+    !> per-contact call of a DEM host, where the k, d code must inline into the entry point
+    !> itself (a call from another module costs about half the bare formula again).
+    integer(c_int) function hertzdamp_c_pair_kd(p, tc, m, u, k_phys, k, d) &
+            bind(c, name='hertzdamp_c_pair_kd') result(status)
+        type(hertzdamp_pair_t), intent(in), optional :: p !! the pair's constants (hertzdamp_c_pair_init)
+        real(c_double), value, intent(in) :: tc         !! target contact time N dt [s]
+        real(c_double), value, intent(in) :: m          !! effective mass [kg]
+        real(c_double), value, intent(in) :: u          !! impact velocity [m/s]
+        real(c_double), value, intent(in) :: k_phys     !! physical stiffness bound [N m^-3/2], <= 0 for none
+        real(c_double), intent(out), optional :: k      !! Hertz stiffness [N m^-3/2]
+        real(c_double), intent(out), optional :: d      !! damping coefficient [kg s^-1 m^-q]
+        real(wp) :: k_, d_, ts
+        integer :: valid, law, host, st
+        logical :: bound
+        status = HD_BAD_ARGUMENT
+        if (.not. (present(p) .and. present(k) .and. present(d))) return
+        valid = pair_status(p)
+        law = HD_DAMPING_LINEAR
+        host = HD_HOST_NONE
+        if (valid == HD_OK) then
+            law = int(p%law)
+            host = int(p%host)
+        end if
+        call contact_kd(p%alpha, p%tau_c, p%alpha_cont, law, host, valid, tc, m, u, .not. (k_phys <= 0.0_wp), &
+                        k_phys, .false., k_, d_, ts, bound, st)
+        k = k_
+        d = d_
+        status = int(st, c_int)
+    end function hertzdamp_c_pair_kd
+
     !> The status of the arguments of one contact: HD_OK or the last bad one of T_c, m, u,
     !> k_phys (when has_kp).
     pure elemental integer function argument_status(tc, m, u, has_kp, kp) result(status)
@@ -217,13 +253,40 @@ contains
 
     !> k and d of one contact from the constants (a, tau, a_cont) of its pair: every entry
     !> point ends here.  `given` is the status of the constants (HD_OK, or why there are
-    !> none: it is reported when the arguments of the contact are valid).
+    !> none: it is reported when the arguments of the contact are valid).  The usual
+    !> contact (constants, T_c, m, u in the direct range, no bound met) takes the few lines
+    !> below; every other one contact_rest, which gives the same bits for the usual one.
     pure elemental subroutine contact_kd(a, tau, a_cont, law, host, given, tc, m, u, has_kp, kp, want_ts, k, d, ts, &
                                          bound, status)
         real(wp), intent(in) :: a, tau, a_cont   ! alpha, tau_c, continuous alpha(e)
         integer, intent(in) :: law, host, given
         real(wp), intent(in) :: tc, m, u, kp
         logical, intent(in) :: has_kp, want_ts   ! a bound is given; t* is wanted
+        real(wp), intent(out) :: k, d, ts
+        logical, intent(out) :: bound
+        integer, intent(out) :: status
+        if (given == HD_OK .and. tc >= direct_lo .and. tc <= direct_hi .and. m >= direct_lo .and. &
+            m <= direct_hi .and. u >= direct_lo .and. u <= direct_hi) then
+            call direct_kd(law, a, tau, tc, m, u, k, d)
+            ts = 0.0_wp
+            if (want_ts) ts = tc / tau
+            bound = .false.
+            status = HD_OK
+            if (.not. has_kp) return
+            if (kp > 0.0_wp .and. kp <= huge(kp) .and. kp > k) return
+        end if
+        call contact_rest(a, tau, a_cont, law, host, given, tc, m, u, has_kp, kp, want_ts, k, d, ts, bound, status)
+    end subroutine contact_kd
+
+    !> contact_kd for every contact: the argument checks, the bound, the logarithmic path.
+    !> (Called from two places, so that the compiler keeps it out of line and contact_kd,
+    !> the usual contact's few lines, inlines into every entry point.)
+    pure subroutine contact_rest(a, tau, a_cont, law, host, given, tc, m, u, has_kp, kp, want_ts, k, d, ts, bound, &
+                                 status)
+        real(wp), value :: a, tau, a_cont
+        integer, value :: law, host, given
+        real(wp), value :: tc, m, u, kp
+        logical, value :: has_kp, want_ts
         real(wp), intent(out) :: k, d, ts
         logical, intent(out) :: bound
         integer, intent(out) :: status
@@ -257,7 +320,7 @@ contains
             ts = 0.0_wp
             bound = .false.
         end if
-    end subroutine contact_kd
+    end subroutine contact_rest
 
     !> The direct formulas (T_c, m, u in [1e-30, 1e30]: every intermediate a normal
     !> double): r = tau_c (1/T_c) = 1/t*, s = (r/u)^(1/2), k = m r^2 s, d = alpha m r (r/u)^q.
@@ -378,8 +441,8 @@ contains
         bound = .false.
         if (any(redo /= 0)) then
             do j = 1, nc
-                if (redo(j) /= 0) call contact_kd(a(j), tau(j), a_cont(j), law, host, given(j), tc(j), m(j), u(j), &
-                                                  has_kp, kp(j), want_ts, k(j), d(j), ts(j), bound(j), status(j))
+                if (redo(j) /= 0) call contact_rest(a(j), tau(j), a_cont(j), law, host, given(j), tc(j), m(j), u(j), &
+                                                    has_kp, kp(j), want_ts, k(j), d(j), ts(j), bound(j), status(j))
             end do
         end if
     end subroutine contacts_kd

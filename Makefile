@@ -57,9 +57,12 @@ $(VENV)/bin/ford: $(FPM)
 # ---------------------------------------------------------------- build and run
 # fpm 0.12 keeps libhertzdamp.a when a merge adds a source file or recompiles an
 # object without refreshing the archive (seen again with this layout), so programs
-# could link stale code: drop the archives before every build.  A fresh clone is
-# unaffected; `make install` (CMake) does not need this.
-STALE_ARCHIVES = rm -f build/gfortran_*/hertzdamp/libhertzdamp.a
+# could link stale code: drop the archives before every build.  fpm 0.12 puts the
+# objects of every package (src/, packages/*/src/) into the root's libhertzdamp.a;
+# the pattern also drops a per-package archive (libhertzdamp-scene.a, ...) should a
+# later fpm write one.  A fresh clone is unaffected; `make install` (CMake) does not
+# need this.
+STALE_ARCHIVES = rm -f build/gfortran_*/hertzdamp*/libhertzdamp*.a
 
 build: deps
 	@$(STALE_ARCHIVES)
@@ -80,13 +83,13 @@ test: deps
 
 # ---------------------------------------------------------------- generated tables
 # Series coefficients: the generator writes data/*.csv, the converter turns them into
-# Fortran source.  `make test` checks that both are in sync (test/sync_series.sh).
+# Fortran source.  `make test` checks that both are in sync (test/docs/sync_series.sh).
 series-data: deps
 	$(FPM) run hertzdamp-gen-series --flag "$(RELEASE_FLAGS)" -- data
 
 series-source:
-	$(PYTHON) tools/csv_to_f90.py data/series_coefficients.csv src/hertzdamp_series_data.f90 hertzdamp_series_data series
-	$(PYTHON) tools/csv_to_f90.py data/pade_coefficients.csv src/hertzdamp_pade_data.f90 hertzdamp_pade_data pade
+	$(PYTHON) gen/csv_to_f90.py data/series_coefficients.csv src/hertzdamp_series_data.f90 hertzdamp_series_data series
+	$(PYTHON) gen/csv_to_f90.py data/pade_coefficients.csv src/hertzdamp_pade_data.f90 hertzdamp_pade_data pade
 
 # Full work-precision benchmark with the release flags: data/bench/bench.csv (with a
 # '#' header naming machine, compiler, flags, date), bench.png, bench.txt (figures).
@@ -95,12 +98,12 @@ bench: build
 
 # ---------------------------------------------------------------- generated fit tables
 # fit-data: run the generator (reference integrator at tol 1e-15 + LAPACK) -> CSV (~20 s).
-# fit-source: CSV -> Fortran module (deterministic; test/cli_sync_fit.sh checks it).
+# fit-source: CSV -> Fortran module (deterministic; test/docs/cli_sync_fit.sh checks it).
 fit-data: deps
 	$(FPM) run hertzdamp-gen-fit --flag "$(RELEASE_FLAGS)" -- data/fit_coefficients.csv
 
 fit-source:
-	$(PYTHON) tools/fit_csv_to_f90.py data/fit_coefficients.csv src/hertzdamp_fit_data.f90
+	$(PYTHON) gen/fit_csv_to_f90.py data/fit_coefficients.csv src/hertzdamp_fit_data.f90
 
 # ---------------------------------------------------------------- install
 # CMake builds and installs the core library (shared and static), its modules, the C
@@ -114,7 +117,7 @@ docs: deps
 	$(VENV)/bin/ford -q ford.md
 
 lint: deps
-	$(VENV)/bin/fortitude check src cli apps peers test gen example
+	$(VENV)/bin/fortitude check src app packages test gen example
 
 clean:
 	rm -rf build .deps-apt

@@ -3,7 +3,7 @@
 !>
 !>     fpm run --example damping_laws
 !>
-!> test/laws_doc_sync.sh checks that doc/damping-laws.md holds these lines.
+!> test/docs/laws_doc_sync.sh checks that doc/damping-laws.md holds these lines.
 program damping_laws
     use hertzdamp
     implicit none

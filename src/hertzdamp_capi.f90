@@ -35,7 +35,7 @@
 !> procedures whose binding labels (`bind(c, name='hertzdamp_invert_')`, the name gfortran
 !> gives an external HERTZDAMP_INVERT) keep the link names and the calling convention
 !> (scalars and explicit-shape arrays by reference) of the externals.  Never `use` a
-!> library module inside a procedure here; test/fpenv_symbols.sh fails if an entry point
+!> library module inside a procedure here; test/integration/fpenv_symbols.sh fails if an entry point
 !> calls those routines again.
 !>
 !> One entry point is defined elsewhere and re-exported here: hertzdamp_c_pair_kd, the

@@ -24,7 +24,7 @@
 !> also linear in w), status HD_OK but accuracy not 1e-12; alpha >= alpha_c:
 !> HD_NO_REBOUND, e = 0, tau_c = +inf.
 !> Measured max relative error against the reference (tolerance 1e-15): see the
-!> header of data/fit_coefficients.csv, test/test_fit.f90 and test/test_fit_laws.f90
+!> header of data/fit_coefficients.csv, test/unit/test_fit.f90 and test/unit/test_fit_laws.f90
 !> (below 1e-12).
 !>
 !> ## One kernel per map, vectorised, shared by every entry point
@@ -44,11 +44,11 @@
 !> with libmvec (math-vector-fortran.h is pre-included), whose results differ from the
 !> scalar libm in the last bit for about a quarter of the arguments; a vectorised array
 !> call would then disagree with the scalar call.  The kernels here are accurate to
-!> about one unit in the last place (test/test_fit.f90 checks them against quadruple
+!> about one unit in the last place (test/unit/test_fit.f90 checks them against quadruple
 !> precision), far below the 1e-13 of the fits.  (sqrt is correctly rounded in scalar
 !> and vector form alike.)
 !>
-!> To add a fitted map (another damping law, ...): see tools/fit_csv_to_f90.py (its
+!> To add a fitted map (another damping law, ...): see gen/fit_csv_to_f90.py (its
 !> blocks, its family and map index); an inverse map gets a kernel code kern_* below,
 !> chosen by `inverse_kernel` from the contact end and law, its variable and map in
 !> hertzdamp_fit_inverse.inc, its q in hertzdamp_fit_invert_out.inc and a case in

@@ -20,7 +20,7 @@
 !> overlap; alpha >= sqrt(5): HD_NO_REBOUND), 353.5 (tsuji force), 13.88
 !> (kuwabara-kono overlap), 1176 (kuwabara-kono force); beyond them HD_OUTSIDE_VALIDITY
 !> (use rk45).  Measured max relative error against the reference: the header of
-!> data/fit_coefficients.csv and test/test_fit_laws.f90 (below 1e-12).
+!> data/fit_coefficients.csv and test/unit/test_fit_laws.f90 (below 1e-12).
 !>
 !> Derivatives (hertzdamp_fit_forward_deriv): de/dalpha and dtau_c/dalpha of the
 !> functions the forward fit evaluates, for every law and end: each piecewise polynomial

@@ -249,7 +249,7 @@ contains
     !> fallback; a no-rebound trial shrinks it); the second trial is the proportional
     !> step alpha ln e / ln e(alpha) (exact where ln e is linear in alpha).  It stops
     !> when the secant step is below tol/10 alpha or the residual below tol/10 |ln e|.
-    !> Used by the iterative method (rk45) and by the GSL peer (peers/gsl).
+    !> Used by the iterative method (rk45) and by the GSL reference solver (packages/reference).
     pure subroutine hertzdamp_secant_next(state, e_trial, no_rebound, alpha, done, status)
         type(hertzdamp_secant), intent(inout) :: state    !! the iteration's state
         real(wp), intent(in) :: e_trial                   !! e(alpha) of the last trial (ignored without rebound)
@@ -311,7 +311,7 @@ contains
     !> The iterative baseline: hertzdamp_secant over rk45 solves of the law, each at a
     !> tolerance derived from the accuracy asked of alpha: rk45 tol = tol/10 min(1, |ln e|),
     !> since the relative error of alpha is about that of ln e, (delta e / e) / |ln e|
-    !> (test/test_inverse.f90 checks alpha within tol).  A trial without rebound, or with
+    !> (test/unit/test_inverse.f90 checks alpha within tol).  A trial without rebound, or with
     !> e below what rk45 resolves near alpha_c (HD_INACCURATE), shrinks the bracket from
     !> above.  tau_c is that of the last solve: its error is the error of alpha times
     !> d ln tau_c / d ln alpha, which grows towards alpha_c (7 tol at e = 1e-3, overlap);

@@ -1,7 +1,7 @@
 !> Constants generated from data/pade_coefficients.csv.
 !>
 !> Generated from data/pade_coefficients.csv by
-!>   python3 tools/csv_to_f90.py data/pade_coefficients.csv src/hertzdamp_pade_data.f90 \
+!>   python3 gen/csv_to_f90.py data/pade_coefficients.csv src/hertzdamp_pade_data.f90 \
 !>       hertzdamp_pade_data pade
 !> Do not edit by hand: regenerate the CSV, then rerun the command above.
 !> Each array holds one column; element i (0-based) is data row i.

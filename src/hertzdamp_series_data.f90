@@ -1,7 +1,7 @@
 !> Constants generated from data/series_coefficients.csv.
 !>
 !> Generated from data/series_coefficients.csv by
-!>   python3 tools/csv_to_f90.py data/series_coefficients.csv src/hertzdamp_series_data.f90 \
+!>   python3 gen/csv_to_f90.py data/series_coefficients.csv src/hertzdamp_series_data.f90 \
 !>       hertzdamp_series_data series
 !> Do not edit by hand: regenerate the CSV, then rerun the command above.
 !> Each array holds one column; element i (0-based) is data row i.

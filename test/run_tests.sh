@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
-# Runs every test program (fpm's test/ directory) and every other test/*.sh script,
-# adds up their `name: P passed, F failed` lines and ends with the total.
+# Runs every test program (test/unit/, built by fpm) and every script of test/cli/,
+# test/docs/ and test/integration/, adds up their `name: P passed, F failed` lines and
+# ends with the total.
 # A program that crashes or exits non-zero without a summary counts as one failure.
 set -u
 fpm=$1; test_flags=$2; release_flags=$3; test_link=${4:-}
@@ -33,19 +34,31 @@ run_one() {  # name, command...
 }
 
 mapfile -t exes < <("$fpm" test --flag "$test_flags" --link-flag "$test_link" --runner echo 2>/dev/null | grep -v '^\[' )
-# every test program in test/ must have been built and listed
-want=$(grep -l '^ *program ' test/*.f90 | wc -l)
+# every test program of test/unit/ must have been built and listed, and no Fortran
+# source may sit anywhere else under test/ (fpm would build it as a test)
+want=$(grep -l '^ *program ' test/unit/*.f90 | wc -l)
+stray=$(find test -name '*.f90' ! -path 'test/unit/*' | head -n 3)
+echo "run_tests: test/unit: $want programs"
 if [ "${#exes[@]}" -ne "$want" ]; then
-  echo "run_tests: ${#exes[@]} test programs listed by fpm, $want in test/"; failed=$((failed + 1))
+  echo "run_tests: ${#exes[@]} test programs listed by fpm, $want in test/unit/"; failed=$((failed + 1))
 fi
+if [ -n "$stray" ]; then echo "run_tests: Fortran sources outside test/unit/: $stray"; failed=$((failed + 1)); fi
 for exe in "${exes[@]}"; do
   if [ ! -x "$exe" ]; then echo "run_tests: $exe missing"; failed=$((failed + 1)); continue; fi
   run_one "$(basename "$exe")" "$exe"
 done
+for dir in test/cli test/docs test/integration; do
+  scripts=("$dir"/*.sh)
+  echo "run_tests: $dir: ${#scripts[@]} scripts"
+  for script in "${scripts[@]}"; do
+    [ -f "$script" ] || continue
+    run_one "$(basename "$script" .sh)" bash "$script"
+  done
+done
+# a script left directly in test/ (besides this one) would never run
 for script in test/*.sh; do
-  [ -f "$script" ] || continue
   [ "$(basename "$script")" = run_tests.sh ] && continue
-  run_one "$(basename "$script" .sh)" bash "$script"
+  echo "run_tests: $script is outside test/{cli,docs,integration}/"; failed=$((failed + 1))
 done
 echo "$passed passed, $failed failed"
 [ "$failed" -eq 0 ]

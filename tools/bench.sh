@@ -33,7 +33,7 @@ t_nat=$((SECONDS - start))
 
 fc=$(command -v gfortran || true)
 commit=$(git rev-parse --short HEAD 2>/dev/null || echo unknown)
-git diff --quiet HEAD -- src cli apps peers 2>/dev/null || commit="$commit (with uncommitted changes in src/, cli/, apps/ or peers/)"
+git diff --quiet HEAD -- src app packages 2>/dev/null || commit="$commit (with uncommitted changes in src/, app/ or packages/)"
 {
   echo "# hertzdamp bench: full run written by \`make bench\` (tools/bench.sh: hertzdamp bench --format csv --plot bench.png)"
   echo "# date: $(date -u +%Y-%m-%dT%H:%M:%SZ)"

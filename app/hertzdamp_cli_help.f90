@@ -1,0 +1,471 @@
+!> Help texts of the `hertzdamp` program and its commands, and its version.
+!>
+!> Help goes to stdout through the checked writer (a failed write exits 4, e.g.
+!> `hertzdamp --help > /dev/full`).  doc/hertzdamp.1 carries the same commands and
+!> options (test/docs/cli_docs.sh checks it).
+module hertzdamp_cli_help
+    use hertzdamp_cli, only: write_stdout, quit, EXIT_OK
+    implicit none
+    private
+    public :: print_help, wants_help, hertzdamp_version
+
+    !> The program's version: the same as fpm.toml and CMakeLists.txt (test/docs/cli_docs.sh).
+    character(len=*), parameter :: hertzdamp_version = '0.2.0'
+
+    character(len=*), parameter :: nl = new_line('a')
+
+    character(len=*), parameter :: list_syntax = &
+        'LIST: comma-separated values and ranges, e.g. 0.9 or 0.5,0.9 or 0.01:5:20' // nl // &
+        '(20 values from 0.01 to 5, evenly spaced; whole numbers exactly where the' // nl // &
+        'points are whole, 1:23:23) or 0.01:5:log20 (evenly spaced in log); one row per' // nl // &
+        'combination of the lists, at most 10000 rows.  CSV and JSON numbers read back' // nl // &
+        'as the same double (16 significant digits, 17 where needed).'
+
+    character(len=*), parameter :: contact_help = &
+        'Contact (definitions: hertzdamp --help):' // nl // &
+        '  --mass M              effective mass m* [kg]; or from the materials:' // nl // &
+        '  --radius R            sphere 1 radius [m] (gives R*; with --density, m*)' // nl // &
+        '  --density RHO         sphere 1 density [kg m^-3]' // nl // &
+        '  --youngs-modulus E    sphere 1 Young''s modulus [Pa]    with --radius: k_phys' // nl // &
+        '  --poisson-ratio NU    sphere 1 Poisson''s ratio [-]     = (4/3) E* sqrt(R*)' // nl // &
+        '  --radius2 R2  --density2 RHO2  --youngs-modulus2 E2  --poisson-ratio2 NU2' // nl // &
+        '                        sphere 2; each defaults to sphere 1''s (two equal spheres)' // nl // &
+        '  --wall                body 2 is a wall: infinite radius and mass (m* = m,' // nl // &
+        '                        R* = R); its E and NU from --youngs-modulus2 and' // nl // &
+        '                        --poisson-ratio2, by default sphere 1''s' // nl // &
+        '  --k-phys K            physical stiffness [N m^-3/2] instead of E and NU'
+
+    character(len=*), parameter :: status_help = &
+        'Status of a row: ok; no-rebound (a result: the overlap never returns to zero,' // nl // &
+        'e = 0, contact time inf); bad-input (an invalid value, the message names the' // nl // &
+        'option); outside-validity (outside the method''s range); inaccurate (the' // nl // &
+        'method''s own error estimate exceeds --accuracy); out-of-range (not' // nl // &
+        'representable in double precision); failed (the computation failed).  A row' // nl // &
+        'without a result keeps its inputs; its results are empty (csv), null (json)' // nl // &
+        'or - (text), as are quantities a method does not give.' // nl // &
+        'Exit: 0 when every row has a result; 3 when some have none (all rows are' // nl // &
+        'printed, and one line on stderr says how many and why); when none has one,' // nl // &
+        'nothing on stdout, one line on stderr, exit 2 (bad input), 3 or 4 (failed).'
+
+    character(len=*), parameter :: method_help = &
+        '  --damping LAW         damping force d zeta^q zeta'': linear (q = 0, default; d in' // nl // &
+        '                        kg/s), tsuji (q = 1/4, e the same at every speed) or' // nl // &
+        '                        kuwabara-kono (q = 1/2); other laws: methods fit and rk45' // nl // &
+        '                        (inverse: fit, iterative).  doc/damping-laws.md' // nl // &
+        '  --end overlap|force   contact end: the overlap returns to zero (default), or' // nl // &
+        '                        the total contact force does' // nl // &
+        '  --accuracy A          relative accuracy asked of series and pade (default' // nl // &
+        '                        1e-10): beyond it the row is inaccurate' // nl // &
+        '  --format F            text (aligned, default), csv or json' // nl // &
+        '  --progress            progress on stderr (default: on a terminal, after 2 s,' // nl // &
+        '                        one line that an error replaces; into a file or pipe,' // nl // &
+        '                        lines that precede an error, which comes last)' // nl // &
+        '  --help                this text'
+
+    character(len=*), parameter :: forward_methods_help = &
+        '  --method M            rk45 (reference integrator, default), fit (machine-' // nl // &
+        '                        precision approximant, ~1e-13), compact (closed form,' // nl // &
+        '                        ~1e-5), series (Taylor series in alpha, overlap only,' // nl // &
+        '                        |alpha| < 1), pade (Pade summation, overlap only,' // nl // &
+        '                        0 <= alpha <= 0.8)' // nl // &
+        '  --order N             series truncation order, 0..24 (default 13: 1e-12 at' // nl // &
+        '                        alpha <= 0.2)' // nl // &
+        '  --tol T               rk45 tolerance, 1e-15 <= T <= 1e-2 (default 1e-13)'
+
+    character(len=*), parameter :: inverse_methods_help = &
+        '  --method M            fit (default, ~1e-13, e >= 1e-3 overlap, 1e-4 force),' // nl // &
+        '                        compact (closed form, ~1e-5, e >= 0.05), series / pade' // nl // &
+        '                        (Newton on the series / Pade formula, overlap only,' // nl // &
+        '                        series alpha < 1, pade alpha <= 0.8) or iterative' // nl // &
+        '                        (secant over reference-integrator solves)' // nl // &
+        '  --tol T               tolerance of --method iterative, 1e-15 <= T <= 1e-2' // nl // &
+        '                        (default 1e-10)'
+
+    character(len=*), parameter :: top = &
+        'hertzdamp - damped Hertzian normal collision of spheres' // nl // &
+        '' // nl // &
+        'Model: m* zeta'''' = -d zeta'' - k zeta^(3/2), zeta(0) = 0, zeta''(0) = u_in, with' // nl // &
+        'zeta the overlap.  Every collision depends on one parameter' // nl // &
+        '  alpha = d m*^(-3/5) k^(-2/5) u_in^(-1/5),  time unit t* = (m*/(k u_in^(1/2)))^(2/5).' // nl // &
+        '' // nl // &
+        'Usage: hertzdamp COMMAND [options]      hertzdamp COMMAND --help' // nl // &
+        '       hertzdamp --version' // nl // &
+        '' // nl // &
+        'Commands:' // nl // &
+        '  invert     stiffness k and damping d (SI) from target e and contact time' // nl // &
+        '  forward    e, contact time, deepest overlap (SI) from k, d, mass, velocity' // nl // &
+        '  timestep   shortest physical contact and the time step that resolves it' // nl // &
+        '  table      e, tau_c, z_max, tau_max (dimensionless) for a list of alpha' // nl // &
+        '  constants  alpha_c, tau_c(0), z_max(0), e1 as computed by the library' // nl // &
+        '  bench      work-precision report of every method (forward, inverse, throughput)' // nl // &
+        '  scene      run a DEM scene file (namelist), the inverse rule at every contact' // nl // &
+        '  check      what a peer engine''s deck really does: e, contact time, time step, a fix' // nl // &
+        '  calibrate  k, d and the damping law fitted to measured e(u) and T_c(u) (CSV)' // nl // &
+        '' // nl // &
+        'Definitions (SI units; body 1 and body 2 touch):' // nl // &
+        '  effective mass m*     m1 m2 / (m1 + m2); against a wall, or a particle held' // nl // &
+        '                        fixed, the moving particle''s own mass m1.  A sphere:' // nl // &
+        '                        m = (4/3) pi rho R^3.' // nl // &
+        '  effective radius R*   R1 R2 / (R1 + R2); against a flat wall R1.' // nl // &
+        '  effective modulus E*  1/E* = (1 - nu1^2)/E1 + (1 - nu2^2)/E2 (a wall too).' // nl // &
+        '  k_phys                the physical Hertz stiffness (4/3) E* sqrt(R*) [N m^-3/2].' // nl // &
+        '  relative normal impact velocity u_in' // nl // &
+        '                        the speed at which the two surfaces approach along the' // nl // &
+        '                        line of centres when they first touch: (v1 - v2) . n' // nl // &
+        '                        with n the unit vector from body 1 to body 2 [m s^-1].' // nl // &
+        '  e                     restitution: normal separation speed / approach speed.' // nl // &
+        '' // nl // &
+        'Exit codes: 0 success, 2 bad usage, 3 no solution, 4 computation failed.' // nl // &
+        'Errors go to stderr as one line (the last, after the lines --progress writes' // nl // &
+        'into a file or pipe); stdout is then empty, except for commands that print one' // nl // &
+        'row per value, where rows with a result still print (see their --help).' // nl // &
+        'Documentation: man hertzdamp, README.md, doc/theory.md.'
+
+    character(len=*), parameter :: table = &
+        'Usage: hertzdamp table [--alpha LIST] [--alpha-range A0:A1:N] [options]' // nl // &
+        '' // nl // &
+        'One row per alpha (dimensionless damping parameter): alpha, e (restitution),' // nl // &
+        'tau_c (contact duration in units of t*), z_max (deepest overlap in units of' // nl // &
+        'u_in t*), tau_max (time of deepest overlap, units of t*), status.  With' // nl // &
+        'no-rebound e = 0 and tau_c = inf (JSON null).  compact gives no z_max, tau_max.' // nl // &
+        'Without --alpha/--alpha-range: alpha = 0, 0.05, ..., 1.1, 1.12, 1.13.' // nl // &
+        '' // nl // &
+        '  --alpha LIST          alpha values' // nl // &
+        '  --alpha-range A0:A1:N N equally spaced values from A0 to A1 (N >= 1)' // nl // &
+        forward_methods_help // nl // method_help // nl // &
+        '' // nl // list_syntax // nl // nl // status_help
+
+    character(len=*), parameter :: forward = &
+        'Usage: hertzdamp forward --k LIST --d LIST --velocity LIST' // nl // &
+        '                         (--mass M | --radius R --density RHO ...) [options]' // nl // &
+        '' // nl // &
+        'What a stiffness k and damping d give: the restitution and contact time of a' // nl // &
+        'contact with effective mass m* hit at relative normal velocity u_in.' // nl // &
+        '' // nl // &
+        '  --k LIST              Hertz stiffness k [N m^-3/2]; default with the elastic' // nl // &
+        '                        constants: k = k_phys (the physical contact)' // nl // &
+        '  --d LIST              linear damping coefficient d [kg s^-1], >= 0' // nl // &
+        '  --velocity LIST       relative normal impact velocity u_in [m s^-1]' // nl // &
+        contact_help // nl // &
+        'Method:' // nl // forward_methods_help // nl // method_help // nl // &
+        '' // nl // &
+        'Columns: k, d, velocity, mass (m*), radius_eff (R*), k_phys, alpha [-],' // nl // &
+        't_star [s], e [-], t_c (contact time) [s], zeta_max (deepest overlap) [m], status.' // nl // &
+        'A damping so strong that alpha exceeds what the method takes (or double' // nl // &
+        'precision) is no-rebound with the overlap end.' // nl // &
+        '' // nl // list_syntax // nl // nl // status_help
+
+    character(len=*), parameter :: constants = &
+        'Usage: hertzdamp constants [--damping LAW] [--format text|csv|json]' // nl // &
+        '' // nl // &
+        '  alpha_c  critical damping of the overlap definition (no rebound for' // nl // &
+        '           alpha >= alpha_c), by bisection on the integrator''s no-rebound test' // nl // &
+        '           (linear; tsuji: sqrt(5); kuwabara-kono: none, empty)' // nl // &
+        '  tau_c0   elastic contact duration (4/5)(5/4)^(2/5) B(2/5,1/2), units of t*' // nl // &
+        '  z_max0   elastic deepest overlap (5/4)^(2/5), units of u_in t*' // nl // &
+        '  e1       restitution slope: e = 1 - e1 alpha + O(alpha^2) (of the law)' // nl // &
+        '' // nl // &
+        '  --damping LAW  linear (default), tsuji or kuwabara-kono' // nl // &
+        '  --format F   text (aligned, default), csv or json' // nl // &
+        '  --help       this text' // nl // &
+        'CSV columns: name,value.'
+
+    character(len=*), parameter :: invert = &
+        'Usage: hertzdamp invert --e LIST (--tc LIST | --dt LIST --steps LIST)' // nl // &
+        '                        --velocity LIST (--mass M | --radius R --density RHO ...)' // nl // &
+        '                        [--k-phys K | --youngs-modulus E --poisson-ratio NU]' // nl // &
+        '                        [options]' // nl // &
+        '' // nl // &
+        'The inverse rule of the adaptive collision time model: the stiffness k and' // nl // &
+        'damping d that give a contact with effective mass m*, hit at relative normal' // nl // &
+        'velocity u_in, the restitution e and the contact time T_c.  With a physical' // nl // &
+        'stiffness (--k-phys, or k_phys = (4/3) E* sqrt(R*) from the materials) the bound' // nl // &
+        'applies: if k_phys <= k, then k = k_phys and' // nl // &
+        'd = alpha m*^(3/5) k_phys^(2/5) u_in^(1/5) (bound_active true), and the contact' // nl // &
+        'lasts tc_actual > T_c.' // nl // &
+        '' // nl // &
+        'Target:' // nl // &
+        '  --e LIST              restitution coefficients [-]' // nl // &
+        '  --tc LIST             contact times T_c [s]' // nl // &
+        '  --dt LIST             time step of the DEM code [s], with' // nl // &
+        '  --steps LIST          time steps per contact N (whole numbers): T_c = N dt;' // nl // &
+        '                        N dt beyond double precision: out-of-range' // nl // &
+        '  --velocity LIST       relative normal impact velocity u_in [m s^-1]' // nl // &
+        contact_help // nl // &
+        'Method:' // nl // inverse_methods_help // nl // method_help // nl // &
+        '' // nl // &
+        'Columns: e, tc [s], velocity [m s^-1], mass (m*) [kg], radius_eff (R*) [m],' // nl // &
+        'k_phys, alpha [-], tau_c [-], t_star [s] (time unit of the returned k), k' // nl // &
+        '[N m^-3/2], d [kg s^-1], bound_active, tc_actual [s] (the contact time the' // nl // &
+        'returned k and d give: t_star tau_c), status.' // nl // &
+        '' // nl // list_syntax // nl // nl // status_help
+
+    character(len=*), parameter :: timestep = &
+        'Usage: hertzdamp timestep --e LIST --velocity LIST [--steps LIST]' // nl // &
+        '                          (--mass M | --radius R --density RHO ...)' // nl // &
+        '                          (--k-phys K | --youngs-modulus E --poisson-ratio NU)' // nl // &
+        '                          [options]' // nl // &
+        '' // nl // &
+        'The time step a DEM code needs for its physical contacts (k = k_phys, d from' // nl // &
+        'e): the contact time t* tau_c(alpha(e)) falls as u_in^(-1/5), so the shortest' // nl // &
+        'contact is the fastest impact of the velocity LIST.  The largest time step that' // nl // &
+        'resolves it with N steps is dt_max = tc_damped / N.  Next to it, the elastic' // nl // &
+        'Hertz estimate most DEM codes use, T_c = 2.868 (m*^2 / (R* E*^2 u_in))^(1/5) =' // nl // &
+        'tau_c(0) t*: elastic_excess = tc_elastic / tc_damped - 1 says how much longer' // nl // &
+        '(> 0) or shorter (< 0) it is than the damped contact.' // nl // &
+        '' // nl // &
+        '  --e LIST              restitution coefficients of the material pair [-]' // nl // &
+        '  --velocity LIST       relative normal impact velocities u_in [m s^-1]' // nl // &
+        '  --steps LIST          time steps per contact N, whole numbers (default 10)' // nl // &
+        contact_help // nl // &
+        'Method:' // nl // inverse_methods_help // nl // method_help // nl // &
+        '' // nl // &
+        'Columns: e, steps, velocity_max [m s^-1], mass [kg], radius_eff [m], k_phys,' // nl // &
+        'alpha, tau_c [-], tc_damped [s], tc_elastic [s], elastic_excess [-],' // nl // &
+        'dt_max [s], dt_elastic [s] (tc_elastic / N), status.' // nl // &
+        '' // nl // list_syntax // nl // nl // status_help
+
+    character(len=*), parameter :: bench = &
+        'Usage: hertzdamp bench [--quick] [--damping LAW|all] [--format text|csv|json]' // nl // &
+        '                       [--plot FILE.png] [--progress]' // nl // &
+        '' // nl // &
+        'Measures accuracy against time for every method the library provides, all in' // nl // &
+        'one run, for every damping law (methods that report not-supported are left out):' // nl // &
+        '  forward   alpha -> (e, tau_c) for a fixed set of alpha per law and contact end' // nl // &
+        '            (overlap and force, down to e ~ 1e-4): rk45 and GSL rkf45/rk8pd at tol' // nl // &
+        '            1e-4 ... 1e-12 (relative error control), fit; linear law also series' // nl // &
+        '            N = 1, 2, 3, 5, 10, 20 and pade (overlap only), compact; errors against' // nl // &
+        '            rk45 at tol 1e-15 (e relative to max(e, 1e-3))' // nl // &
+        '  inverse   (e, T_c, m, u_in) -> (k, d) for e in [1e-3, 0.999] (overlap): fit,' // nl // &
+        '            iterative (secant over rk45) at tol 1e-6 ... 1e-12; linear law also' // nl // &
+        '            compact, series, pade and gsl-secant (secant over GSL rk8pd); errors of' // nl // &
+        '            alpha, k, d against the iterative inverse at tol 1e-14' // nl // &
+        '  entry     the fit inverse of each law through every entry point (module scalar' // nl // &
+        '            and array calls, C, legacy) over 10^6 random contacts, side by side,' // nl // &
+        '            checked bit for bit against the module scalar call' // nl // &
+        '  closed-form  tsuji: its inverse against alpha = sqrt5 beta(e) of the overlap end' // nl // &
+        'Times are wall clock per call: the median of 5 batches of >= 0.1 s each' // nl // &
+        '(--quick: fewer points, 3 batches of >= 0.01 s; about 10 s).' // nl // &
+        'The text output ends with ''figure:'' lines: ratios measured side by side.' // nl // &
+        '' // nl // &
+        '  --quick         short run (smoke test, rough timings)' // nl // &
+        '  --damping LAW   the rows of one law: linear, tsuji or kuwabara-kono (default all)' // nl // &
+        '  --format F      text (default), csv or json' // nl // &
+        '  --plot FILE     also write a work-precision diagram (PNG, gnuplot): error' // nl // &
+        '                  against ns per call, forward and inverse panels per law.' // nl // &
+        '                  Checked before benchmarking: no gnuplot -> exit 4, unwritable' // nl // &
+        '                  -> exit 2.' // nl // &
+        '  --progress      progress on stderr (default: on a terminal, after 2 s)' // nl // &
+        '  --help          this text' // nl // &
+        '' // nl // &
+        'CSV columns: problem,damping,method,setting,max_rel_err_e,max_rel_err_tau,' // nl // &
+        'max_rel_err_alpha,max_rel_err_k,max_rel_err_d,ns_per_call,rhs_evals (empty where' // nl // &
+        'not applicable; rhs_evals is the mean per collision of the integrators).' // nl // &
+        'problem is forward, inverse, entry or closed-form; setting is the tolerance (1e-10),' // nl // &
+        'the series order (N=10), the number of contacts (n=1000000) or empty.'
+    character(len=*), parameter :: scene = &
+        'Usage: hertzdamp scene FILE [--method M] [--damping LAW] [--format text|csv|json]' // nl // &
+        '                            [--plot FILE.png] [--progress] [--no-compare]' // nl // &
+        '' // nl // &
+        'Runs the DEM scene in FILE (Fortran namelist, see data/scenes/*.nml): spheres and' // nl // &
+        'plane walls, normal forces only (tangential forces, friction and rotation are out' // nl // &
+        'of scope), velocity Verlet at the scene''s dt.  At every contact onset the contact' // nl // &
+        'gets k and d from the inverse rule for its effective mass and impact velocity, so' // nl // &
+        'that it lasts T_c = N dt with the material pair''s restitution e = sqrt(e_a e_b);' // nl // &
+        'the physical Hertz stiffness k_phys = (4/3) E* sqrt(R*) is the bound (k <= k_phys).' // nl // &
+        'With report = ''restitution'' every contact keeps k = k_phys and only alpha(e) and d' // nl // &
+        'are computed.  Contact force k zeta^(3/2) + d zeta^q zeta'', q of the damping law:' // nl // &
+        'linear (q = 0, default), tsuji (q = 1/4: alpha = d/sqrt(m k), e independent of the' // nl // &
+        'impact speed), kuwabara-kono (q = 1/2).' // nl // &
+        '' // nl // &
+        'Groups and keys (all SI units):' // nl // &
+        '  &scene    title, dt, steps_per_contact (N), end_time, gravity (.true./.false.),' // nl // &
+        '            g (3, default 0,0,-9.81), contact_end (''overlap''|''force''),' // nl // &
+        '            damping (''linear''|''tsuji''|''kuwabara-kono'', default linear),' // nl // &
+        '            report (''restitution''|''restitution duration''), accuracy (default 1e-3),' // nl // &
+        '            domain_lo, domain_hi (3 each, optional box), rest_speed (default 1e-3),' // nl // &
+        '            samples (trace points, default 1000)                       once' // nl // &
+        '  &material name, density, youngs_modulus, poisson_ratio, restitution       repeated' // nl // &
+        '  &particle material, radius, position (3), velocity (3, default 0),' // nl // &
+        '            count (default 1), spacing (3): count copies at position + i*spacing' // nl // &
+        '  &wall     material, point (3), normal (3; particles stay on its side)       repeated' // nl // &
+        '' // nl // &
+        '  --method M   auto (default): the cheapest rule whose error, measured against the' // nl // &
+        '               reference integrator at the scene''s target e values (pairs of' // nl // &
+        '               materials that can meet), is within the scene''s accuracy in e and' // nl // &
+        '               in the contact duration tau_c (the report checks both).  Cost' // nl // &
+        '               order: first-order < compact < series < pade < fit < iterative.' // nl // &
+        '               Or one of first-order compact series pade fit iterative.' // nl // &
+        '               compact, series and pade exist for the linear law only (skipped' // nl // &
+        '               by auto, refused when asked for with another law).' // nl // &
+        '  --damping LAW  linear, tsuji or kuwabara-kono: overrides the file''s damping' // nl // &
+        '               key (the report states the law)' // nl // &
+        '  --format F   text (default), csv (sections, each after a "# name" line), json' // nl // &
+        '  --plot P     positions and velocities against time (gnuplot, PNG; never the' // nl // &
+        '               scene file itself: exit 2)' // nl // &
+        '  --progress   percentage and time left of each run on stderr (on a terminal' // nl // &
+        '               without the option, once a run has taken 2 s)' // nl // &
+        '  --no-compare skip the re-run with the iterative rule (no speed-up figures)' // nl // &
+        '' // nl // &
+        'Reports: the method choice; for every binary contact (no other contact on either' // nl // &
+        'body meanwhile) the achieved restitution (separation/impact normal speed) and' // nl // &
+        'contact duration against the targets; momentum (no walls, no gravity), energy,' // nl // &
+        'domain and rest checks; run time, time in the contact rule, and the same scene' // nl // &
+        'run with the iterative rule, with the speed-up.' // nl // &
+        'Invalid scene (also values the engine cannot represent: masses, energies,' // nl // &
+        'step counts, trace sizes): one line naming the line or key on stderr, exit 2,' // nl // &
+        'no output.' // nl // &
+        'A check that fails: the report on stdout, one line naming the failed checks on' // nl // &
+        'stderr, exit 5.'
+
+    character(len=*), parameter :: calibrate = &
+        'Usage: hertzdamp calibrate FILE (--mass M | --radius R --density RHO [--wall])' // nl // &
+        '                 [--k-phys K | --youngs-modulus E --poisson-ratio NU] [--damping D]' // nl // &
+        '                 [options]' // nl // &
+        '' // nl // &
+        'Fits the damped-Hertz model m zeta'''' = -k zeta^(3/2) - d zeta^q zeta'' to measured' // nl // &
+        'restitution coefficients e(u), and contact times T_c(u), at several impact speeds u' // nl // &
+        '(nonlinear least squares, Levenberg-Marquardt with LAPACK, exact derivatives).' // nl // &
+        '' // nl // &
+        'FILE is CSV (RFC 4180: a field may be quoted; UTF-8, a byte-order mark at the' // nl // &
+        'start is skipped; LF or CRLF line ends) with a header line naming the columns' // nl // &
+        '(any order; lines starting with # and blank lines are skipped).  At most 100000' // nl // &
+        'data rows and 4096 characters per line (longer: exit 2).  Columns:' // nl // &
+        '  velocity   impact speed u [m s^-1] > 0                        (required)' // nl // &
+        '  e          restitution coefficient, 0 < e <= 1                (required)' // nl // &
+        '  tc         contact time [s] > 0 (an empty field: not measured)' // nl // &
+        '  sigma_e    standard uncertainty of e' // nl // &
+        '  sigma_tc   standard uncertainty of tc [s] (with sigma_e when tc is given)' // nl // &
+        'At least two different speeds.  With e only the data identify the combination' // nl // &
+        'c = d k^(-2(1+q)/5) (alpha = c m^((2q-3)/5) u^((4q-1)/5)), not k and d apart:' // nl // &
+        'give contact times, or the stiffness (--k-phys or elastic constants), for both.' // nl // &
+        '' // nl // &
+        '  --mass M        effective mass m* [kg], or from the materials as in invert:' // nl // &
+        '  --radius R --density RHO [--radius2 R2 --density2 RHO2 | --wall]' // nl // &
+        '  --k-phys K      the physical stiffness [N m^-3/2], or from the elastic constants' // nl // &
+        '  --youngs-modulus E --poisson-ratio NU [--youngs-modulus2 E2 --poisson-ratio2 NU2]' // nl // &
+        '                  (with --radius): without contact times the fit takes k = k_phys' // nl // &
+        '                  and gives d; with contact times k is fitted, k_phys shown beside' // nl // &
+        '  --damping D     linear (q = 0), tsuji (q = 1/4), kuwabara-kono (q = 1/2) or' // nl // &
+        '                  auto (default): every law, the one with the smallest AIC chosen' // nl // &
+        '                  (AIC = chi2 + 2p with sigmas, n ln(RSS/n) + 2p without; all laws' // nl // &
+        '                  have the same p, so this is the smallest chi2 or RSS)' // nl // &
+        '  --end overlap|force   contact-end definition (default overlap)' // nl // &
+        '  --method M      fit (default: machine-precision maps and their exact derivatives)' // nl // &
+        '                  or rk45 (reference integrator in the loop, for checking; slow)' // nl // &
+        '  --tol T         rk45 tolerance, 1e-15 <= T <= 1e-2 (default 1e-13)' // nl // &
+        '  --format F      text (default: summary and residuals), csv (summary) or json' // nl // &
+        '                  (the settings, every law under "laws", the data with each' // nl // &
+        '                  fitted law''s values under "residuals")' // nl // &
+        '  --plot FILE     the data with error bars and the fitted e(u), T_c(u) of each law' // nl // &
+        '                  (PNG, gnuplot; checked before any work: no gnuplot -> exit 4,' // nl // &
+        '                  not a regular file, not writable, or the data file -> exit 2)' // nl // &
+        '  --help          this text' // nl // &
+        '' // nl // &
+        'Weights: 1/sigma when the sigma columns are given (then chi2/dof and its p-value);' // nl // &
+        'otherwise e residuals absolute and T_c residuals relative, weighted equally, and' // nl // &
+        'the uncertainties scaled by the RMS of the weighted residuals.' // nl // &
+        'Uncertainties: standard (1 sigma), from the Jacobian at the optimum.' // nl // &
+        '' // nl // &
+        'CSV columns: damping,chosen,k,d,k_err,d_err,rms_residual_e,rms_residual_tc,c,c_err,' // nl // &
+        'chi2_dof,p_value,delta_aic,status (one row per law, the chosen first; empty fields' // nl // &
+        'for what the data do not identify).  Units: k [N m^-3/2], d [kg s^-1 m^-q],' // nl // &
+        'rms_residual_tc [s], c [SI].' // nl // &
+        'Exit codes: 2 invalid file or values (NaN, u <= 0, e outside (0, 1], ...), 3 the' // nl // &
+        'data cannot determine the parameters (one speed only, e = 1 everywhere), 4 the fit' // nl // &
+        'did not converge.'
+
+    character(len=*), parameter :: check = &
+        'Usage: hertzdamp check ENGINE DECK... --radius R --density RHO --velocity U [options]' // nl // &
+        '       hertzdamp check --table [--format F]' // nl // &
+        '' // nl // &
+        'What a peer DEM engine does with its Hertz contact parameters: the damping law and' // nl // &
+        'formula it applies (with its source file), the restitution e and contact time t_c it' // nl // &
+        'achieves at each impact speed, the error against the e you want, the time step for' // nl // &
+        'N steps per contact against the elastic Hertz time and the engine''s own estimate,' // nl // &
+        'warnings (no rebound, attractive force before separation) and the value of the' // nl // &
+        'engine''s parameter that gives the e you want.  Formulas: doc/peers.md.' // nl // &
+        '' // nl // &
+        'ENGINE and DECK, in the engine''s own terms (one quoted argument or several words):' // nl // &
+        '  lammps      the arguments of pair_coeff for pair_style granular, e.g.' // nl // &
+        '              "hertz/material 1e8 0.5 0.3 tangential linear_nohistory 0 0 damping tsuji"' // nl // &
+        '              (normal hertz kn eta_n0 | hertz/material E eta_n0 nu; damping velocity |' // nl // &
+        '              mass_velocity | viscoelastic (default) | tsuji | coeff_restitution;' // nl // &
+        '              limit_damping); a leading "pair_coeff I J" is skipped, and' // nl // &
+        '              "fix ID group wall/gran granular ... zplane lo hi" checks a flat wall' // nl // &
+        '  liggghts    model=hertz|hertz/stiffness limitForce=on|off youngsModulus=Y[,Y2]' // nl // &
+        '              poissonsRatio=NU[,NU2] coefficientRestitution=E (hertz) kn= gamman=' // nl // &
+        '              (hertz/stiffness)' // nl // &
+        '  mercurydpm  setEffectiveElasticModulusAndRestitutionCoefficient=E,e | setDissipation=g' // nl // &
+        '              | setEffectiveElasticModulus=E | setDensity=RHO; species=' // nl // &
+        '              HertzianViscoelasticSpecies (Beta 2015): setElasticModulus=E' // nl // &
+        '              setDissipation=d | setStiffnessAndRestitutionCoefficient=E,e,mass' // nl // &
+        '  yade        young=E[,E2] poisson=NU[,NU2] en=e | betan=b density=RHO' // nl // &
+        '              (with --wall: shape=Wall|Facet hertzian=True|False)' // nl // &
+        '  mfix        DES_COLL_MODEL=HERTZIAN E_YOUNG=E[,E2] V_POISSON=NU[,NU2] DES_EN_INPUT=e' // nl // &
+        '              (with --wall: EW_YOUNG VW_POISSON DES_EN_WALL_INPUT) D_P0= RO_S0=' // nl // &
+        '              DTSOLID_FACTOR= (keys case-insensitive, KEY(1)= KEY(2)= accepted)' // nl // &
+        '  chrono      SetYoungModulus=E[,E2] SetPoissonRatio=NU[,NU2] SetRestitution=e[,e2]' // nl // &
+        '              | UseMaterialProperties=false SetKn=kn SetGn=gn;' // nl // &
+        '              SetCollisionSystemType=BULLET|MULTICORE; wallMass=M (with --wall)' // nl // &
+        '' // nl // &
+        '  --radius R       particle radius [m] (body 1)' // nl // &
+        '  --radius2 R2     radius of body 2 [m] (default: R)' // nl // &
+        '  --density RHO    particle density [kg m^-3] (body 1)' // nl // &
+        '  --density2 RHO2  density of body 2 (default: RHO)' // nl // &
+        '  --wall           body 2 is a flat wall (LIGGGHTS, Yade, MFiX, Chrono: its' // nl // &
+        '                   modulus is the second value of the modulus keys)' // nl // &
+        '  --velocity U     impact speeds [m/s]: 0.1,1,5 or A0:A1:N or A0:A1:logN' // nl // &
+        '  --e E            the restitution coefficient you want (default: the one in the' // nl // &
+        '                   deck, where the engine takes one)' // nl // &
+        '  --steps N        time steps per contact for the time-step advice (default 10)' // nl // &
+        '  --release R      LAMMPS formulas of 2021 (29 Sep 2021, Debian 12), 2023' // nl // &
+        '                   (28 Mar 2023 - 29 Aug 2024) or current (default)' // nl // &
+        '  --format F       text (default), csv or json' // nl // &
+        '  --progress       progress on stderr (default: on a terminal, after 2 s)' // nl // &
+        '  --table          the table of every engine''s formula and the e it achieves for' // nl // &
+        '                   the targets 0.1 ... 0.9 (markdown; doc/peers.md)' // nl // &
+        '' // nl // &
+        'Columns: velocity, alpha, e, e_error (e/e_target - 1), t_c [s], t_attractive (overlap' // nl // &
+        'end: when the total force turns attractive) [s], dt_max = t_c/N [s], t_hertz (elastic' // nl // &
+        'Hertz time) [s], t_peer (the engine''s own estimate) [s], corrected (the engine''s' // nl // &
+        'parameter for the target e at this speed), method (fit: the library''s fitted maps;' // nl // &
+        'rk45: the reference integrator, beyond their range), status (ok, no-rebound,' // nl // &
+        'out-of-range, outside-validity, failed).  Empty (text: -): does not apply, or beyond' // nl // &
+        'double precision.  Exit 0 when every speed has a result; else the table, one line on' // nl // &
+        'stderr and exit 3 (4: a computation failed); no speed with a result: exit 3 or 4, no' // nl // &
+        'output.'
+
+contains
+
+    !> Print the help of a command ('' for the program) on stdout and exit 0.
+    subroutine print_help(command)
+        character(len=*), intent(in) :: command
+        select case (command)
+        case ('table'); call write_stdout(table // nl)
+        case ('forward'); call write_stdout(forward // nl)
+        case ('constants'); call write_stdout(constants // nl)
+        case ('invert'); call write_stdout(invert // nl)
+        case ('timestep'); call write_stdout(timestep // nl)
+        case ('bench'); call write_stdout(bench // nl)
+        case ('scene'); call write_stdout(scene // nl)
+        case ('check'); call write_stdout(check // nl)
+        case ('calibrate'); call write_stdout(calibrate // nl)
+        case ('version'); call write_stdout('hertzdamp ' // hertzdamp_version // nl)
+        case default; call write_stdout(top // nl)
+        end select
+        call quit(EXIT_OK)
+    end subroutine print_help
+
+    !> True if any argument after the command is --help or -h.
+    logical function wants_help()
+        integer :: i, l
+        character(len=7) :: a
+        wants_help = .false.
+        do i = 2, command_argument_count()
+            call get_command_argument(i, a, length=l)
+            if (l <= 6 .and. (a == '--help' .or. a == '-h')) wants_help = .true.
+        end do
+    end function wants_help
+
+end module hertzdamp_cli_help

@@ -1,0 +1,161 @@
+#!/usr/bin/env bash
+# The README as written: the figures copied into it are what the programs print today
+# (the series accuracy table), every `$ hertzdamp ...` command prints exactly the
+# output shown under it, every compile and link line (gfortran, cc, pkg-config) builds
+# a program against a fresh `make install` prefix that then runs from another
+# directory (the static lines without libhertzdamp.so), and every relative link in
+# README.md and doc/*.md resolves to a file (and, for a #fragment into a markdown file,
+# to one of its headings).
+cd "$(dirname "$0")/../.."
+root=$PWD
+fpm=${HERTZDAMP_FPM:-.venv/bin/fpm}
+p=0; f=0
+check() { local l=$1; shift; if "$@"; then p=$((p + 1)); else f=$((f + 1)); echo "FAIL readme_sync: $l"; fi; }
+tmp=$(mktemp -d); trap 'rm -rf "$tmp"' EXIT
+
+# ------------------------------------------------------------ the series accuracy table
+rows=$("$fpm" run --example series_accuracy --flag "${HERTZDAMP_RELEASE_FLAGS:-}" 2>/dev/null | grep '^|')
+check "series accuracy table printed" test "$(wc -l <<<"$rows")" -eq 9
+while IFS= read -r row; do
+  check "README has the row: ${row:0:40}" grep -qxF -- "$row" README.md
+done <<<"$rows"
+
+# ------------------------------------------------------------ every `$ hertzdamp` command and its output
+if [ -n "${HERTZDAMP_BIN:-}" ]; then
+  python3 - README.md "$tmp/cmds" <<'PY'
+import os, sys
+lines = open(sys.argv[1], encoding="utf-8").read().splitlines()
+out = sys.argv[2]
+os.makedirs(out)
+n = 0
+i = 0
+while i < len(lines):
+    if lines[i].startswith("    $ hertzdamp "):
+        cmd = lines[i][6:]
+        body = []
+        i += 1
+        while i < len(lines) and lines[i].startswith("    ") and not lines[i].startswith("    $ "):
+            body.append(lines[i][4:])
+            i += 1
+        n += 1
+        open(f"{out}/{n}.cmd", "w").write(cmd)
+        if body and body[-1] == "...":
+            # an excerpt: the lines shown must appear in the output, in this order
+            body.pop()
+            open(f"{out}/{n}.excerpt", "w").write("")
+        open(f"{out}/{n}.want", "w").write("".join(l + "\n" for l in body))
+    else:
+        i += 1
+PY
+  ncmd=$(ls "$tmp/cmds" | grep -c '\.cmd$')
+  check "README shows at least 5 hertzdamp commands with their output ($ncmd)" test "$ncmd" -ge 5
+  bindir=$tmp/bin; mkdir -p "$bindir"; ln -s "$(realpath "$HERTZDAMP_BIN")" "$bindir/hertzdamp"
+  for c in "$tmp"/cmds/*.cmd; do
+    PATH=$bindir:$PATH bash -c "$(cat "$c")" >"${c%.cmd}.got" 2>/dev/null
+    if [ -e "${c%.cmd}.excerpt" ]; then
+      check "README command prints the lines the README shows: $(head -c 90 "$c")" python3 -c '
+import sys
+got = open(sys.argv[1]).read().splitlines(); it = iter(got)
+sys.exit(0 if all(any(g == w for g in it) for w in open(sys.argv[2]).read().splitlines()) else 1)' \
+        "${c%.cmd}.got" "${c%.cmd}.want"
+    else
+      check "README command prints what the README shows: $(head -c 90 "$c")" cmp -s "${c%.cmd}.got" "${c%.cmd}.want"
+    fi
+  done
+  # the glass-bead answer of issue 12 is among them: one invert, one forward
+  check "README answers the glass-bead question with invert from material data" \
+    grep -q '^    \$ hertzdamp invert --radius 1e-3 --density 2500 --youngs-modulus 63e9 --poisson-ratio 0.24 --e 0.9 --dt 1e-6 --steps 10 --velocity 0.01:5' README.md
+  check "README answers the glass-bead question with forward at k = 1e9, d = 0.5, 1 m/s" \
+    grep -q '^    \$ hertzdamp forward --k 1e9 --d 0.5 --radius 1e-3 .*--velocity 1$' README.md
+fi
+
+# ------------------------------------------------------------ compile and link lines, as written
+prefix=$tmp/prefix
+if ! make --no-print-directory install PREFIX="$prefix" >"$tmp/install.log" 2>&1; then
+  tail -n 20 "$tmp/install.log"; check "make install for the compile lines" false
+else
+  work=$tmp/work; mkdir -p "$work" "$tmp/elsewhere"
+  cp example/legacy_dem/dem.f "$work/dem.f"
+  cat >"$work/prog.f90" <<'F90'
+program prog
+    use hertzdamp
+    implicit none
+    real(hertzdamp_rk) :: m, r, es, kp, k, d
+    integer :: st
+    call hertzdamp_pair_contact(1.0e-3_hertzdamp_rk, 2500.0_hertzdamp_rk, 63.0e9_hertzdamp_rk, 0.24_hertzdamp_rk, &
+                                1.0e-3_hertzdamp_rk, 2500.0_hertzdamp_rk, 63.0e9_hertzdamp_rk, 0.24_hertzdamp_rk, &
+                                m, r, es, kp, st)
+    if (st /= HD_OK) error stop 1
+    call hertzdamp_invert(0.9_hertzdamp_rk, 1.0e-5_hertzdamp_rk, m, 1.0_hertzdamp_rk, HD_END_OVERLAP, k, d, st, k_phys=kp)
+    if (st /= HD_OK) error stop 2
+    print '(a,es12.4)', 'k =', k
+end program prog
+F90
+  cat >"$work/prog.c" <<'C'
+#include <stdio.h>
+#include <hertzdamp.h>
+int main(void) {
+    double k, d;
+    int st = hertzdamp_c_invert(0.9, 1e-5, 5.236e-6, 1.0, HERTZDAMP_END_OVERLAP, &k, &d);
+    if (st != HERTZDAMP_OK) { fprintf(stderr, "%s\n", hertzdamp_c_strerror(st)); return 1; }
+    printf("k = %.4e\n", k);
+    return 0;
+}
+C
+  n=0
+  while IFS= read -r line; do
+    cmd=${line#    }
+    cmd=${cmd%%#*}
+    if [[ $cmd == export* ]]; then eval "$cmd"; continue; fi
+    n=$((n + 1))
+    rm -f "$work/a.out"
+    ( cd "$work" && PREFIX=$prefix eval "$cmd" ) >"$tmp/cc.log" 2>&1
+    check "README line builds: $cmd" test -x "$work/a.out"
+    if [ -x "$work/a.out" ]; then
+      mv "$work/a.out" "$tmp/elsewhere/prog$n"
+      ( cd / && "$tmp/elsewhere/prog$n" ) >"$tmp/run.log" 2>&1
+      check "README line's program runs from another directory: $cmd" grep -Eq '^ *(k =|contact)' "$tmp/run.log"
+      if [[ $cmd == *static* || $cmd == *libhertzdamp.a* ]]; then
+        check "static line links the archive (no libhertzdamp.so): $cmd" \
+          bash -c "! ldd '$tmp/elsewhere/prog$n' | grep -q libhertzdamp"
+      fi
+    fi
+  done < <(grep -E '^    (gfortran|cc|export PKG_CONFIG_PATH)[ =]' README.md | sed "s|\\\$PREFIX|$prefix|g")
+  check "README has compile lines for Fortran, legacy Fortran, C shared/static and pkg-config ($n)" test "$n" -ge 7
+fi
+
+# ------------------------------------------------------------ relative links resolve
+python3 - README.md doc/*.md <<'PY' >"$tmp/links" 2>&1
+import os, re, sys
+def slug(h):
+    h = h.strip().lower()
+    h = re.sub(r"[^\w\- ]", "", h)
+    return h.replace(" ", "-")
+def anchors(path):
+    try:
+        text = open(path, encoding="utf-8").read()
+    except OSError:
+        return set()
+    return {slug(m.group(1)) for m in re.finditer(r"^#+ +(.*)$", text, re.M)}
+bad = 0; n = 0
+for md in sys.argv[1:]:
+    text = open(md, encoding="utf-8").read()
+    for m in re.finditer(r"\]\(([^)\s]+)\)", text):
+        target = m.group(1)
+        if re.match(r"^[a-z]+:", target) or target.startswith("#") and False:
+            continue
+        n += 1
+        path, _, frag = target.partition("#")
+        full = os.path.normpath(os.path.join(os.path.dirname(md), path)) if path else md
+        if not os.path.exists(full):
+            print(f"{md}: {target}: no such file"); bad += 1
+        elif frag and full.endswith(".md") and frag not in anchors(full):
+            print(f"{md}: {target}: no such heading"); bad += 1
+print(f"links: {n} checked, {bad} broken")
+sys.exit(1 if bad or n == 0 else 0)
+PY
+rc=$?
+grep -v '^links:' "$tmp/links" | head -n 20
+check "relative links of README.md and doc/*.md resolve ($(tail -n 1 "$tmp/links"))" test "$rc" -eq 0
+echo "readme_sync: $p passed, $f failed"
+[ "$f" -eq 0 ]

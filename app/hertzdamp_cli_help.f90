@@ -244,6 +244,10 @@ module hertzdamp_cli_help
         '            and array calls, C, legacy) over 10^6 random contacts, side by side,' // nl // &
         '            checked bit for bit against the module scalar call' // nl // &
         '  closed-form  tsuji: its inverse against alpha = sqrt5 beta(e) of the overlap end' // nl // &
+        '  pair      linear law: the per-contact call of a DEM host (hertzdamp_c_pair_kd,' // nl // &
+        '            hertzdamp_pair_kd, scalar and array) against the bare formula' // nl // &
+        '            k = m r^(5/2) u^(-1/2), d = alpha m r it replaces (target: C at most' // nl // &
+        '            1.5 x), and hertzdamp_invert with T_c and m the same for every contact' // nl // &
         'Times are wall clock per call: the median of 5 batches of >= 0.1 s each' // nl // &
         '(--quick: fewer points, 3 batches of >= 0.01 s; about 10 s).' // nl // &
         'The text output ends with ''figure:'' lines: ratios measured side by side.' // nl // &
@@ -261,8 +265,8 @@ module hertzdamp_cli_help
         'CSV columns: problem,damping,method,setting,max_rel_err_e,max_rel_err_tau,' // nl // &
         'max_rel_err_alpha,max_rel_err_k,max_rel_err_d,ns_per_call,rhs_evals (empty where' // nl // &
         'not applicable; rhs_evals is the mean per collision of the integrators).' // nl // &
-        'problem is forward, inverse, entry or closed-form; setting is the tolerance (1e-10),' // nl // &
-        'the series order (N=10), the number of contacts (n=1000000) or empty.'
+        'problem is forward, inverse, entry, closed-form or pair; setting is the tolerance' // nl // &
+        '(1e-10), the series order (N=10), the number of contacts (n=1000000) or empty.'
     character(len=*), parameter :: scene = &
         'Usage: hertzdamp scene FILE [--method M] [--damping LAW] [--format text|csv|json]' // nl // &
         '                            [--plot FILE.png] [--progress] [--no-compare]' // nl // &

@@ -37,7 +37,7 @@ module hertzdamp_pair
     use hertzdamp_kinds, only: hertzdamp_rk
     use hertzdamp_status, only: HD_OK, HD_BAD_TIME, HD_BAD_MASS, HD_BAD_VELOCITY, HD_BAD_KPHYS, HD_OUT_OF_RANGE, &
                                 HD_BAD_PAIR, HD_BAD_ARGUMENT
-    use hertzdamp_laws, only: HD_DAMPING_LINEAR, HD_DAMPING_TSUJI, hertzdamp_law_q
+    use hertzdamp_laws, only: HD_DAMPING_LINEAR, HD_DAMPING_TSUJI, HD_DAMPING_KUWABARA_KONO, hertzdamp_law_q
     use hertzdamp_constants, only: direct_lo => hertzdamp_direct_lo, direct_hi => hertzdamp_direct_hi
     use hertzdamp_scaling, only: hertzdamp_safe_exp, hertzdamp_log_tstar, hertzdamp_log_k, hertzdamp_scale_log_d
     use hertzdamp_methods, only: HD_METHOD_FIT
@@ -72,6 +72,9 @@ module hertzdamp_pair
     integer(int64), parameter :: marker_seed = int(z'2545F4914F6CDD1D', int64)
     integer(int64), parameter :: fraction_bits = int(z'000FFFFFFFFFFFFF', int64)
     integer(int64), parameter :: one_bits = transfer(1.0_wp, 0_int64)
+    !> The direct range [1e-30, 1e30] as bit patterns (the masks of the array forms).
+    integer(int64), parameter :: direct_lo_bits = transfer(direct_lo, 0_int64)
+    integer(int64), parameter :: direct_hi_bits = transfer(direct_hi, 0_int64)
 
     !> k and d of contacts from the constants of a pair: one contact (elemental) or rank-1
     !> arrays of T_c, m, u (vectorised), T_c and/or m also as scalars.
@@ -327,7 +330,7 @@ contains
     !> 1/T_c and 1/(T_c u) do not depend on the pair, so that their divisions overlap
     !> with the rest: only products and square roots follow.
     pure elemental subroutine direct_kd(law, a, tau, tc, m, u, k, d)
-        integer, intent(in) :: law
+        integer, value :: law
         real(wp), intent(in) :: a, tau, tc, m, u
         real(wp), intent(out) :: k, d
         real(wp) :: r, s
@@ -417,35 +420,73 @@ contains
         real(wp), intent(out) :: k(nc), d(nc), ts(nc)
         logical, intent(out) :: bound(nc)
         integer, intent(out) :: status(nc)
-        integer :: redo(nc)
-        logical :: ok
+        integer(int64) :: flags(chunk)
         integer :: j
+        ! which contacts the direct formulas serve (flags(j) >= 0; the others get harmless
+        ! inputs and are redone below), in integer arithmetic (an ordered floating-point
+        ! comparison keeps a loop from vectorising under the default -ftrapping-math), then
+        ! one loop per law (the law a constant in each: no branch in the loop body)
         do j = 1, nc
-            ok = given(j) == HD_OK .and. tc(j) >= direct_lo .and. tc(j) <= direct_hi .and. m(j) >= direct_lo .and. &
-                 m(j) <= direct_hi .and. u(j) >= direct_lo .and. u(j) <= direct_hi
-            call direct_kd(law, a(j), merge(tau(j), 1.0_wp, ok), merge(tc(j), 1.0_wp, ok), merge(m(j), 1.0_wp, ok), &
-                           merge(u(j), 1.0_wp, ok), k(j), d(j))
-            redo(j) = merge(0, 1, ok)
+            flags(j) = ior(ior(outside(tc(j)), outside(m(j))), ior(outside(u(j)), -int(given(j), int64)))
         end do
+        select case (law)
+        case (HD_DAMPING_LINEAR)
+            do j = 1, nc
+                call direct_kd(HD_DAMPING_LINEAR, a(j), harmless(tau(j), flags(j)), harmless(tc(j), flags(j)), &
+                               harmless(m(j), flags(j)), harmless(u(j), flags(j)), k(j), d(j))
+            end do
+        case (HD_DAMPING_TSUJI)
+            do j = 1, nc
+                call direct_kd(HD_DAMPING_TSUJI, a(j), harmless(tau(j), flags(j)), harmless(tc(j), flags(j)), &
+                               harmless(m(j), flags(j)), harmless(u(j), flags(j)), k(j), d(j))
+            end do
+        case default
+            do j = 1, nc
+                call direct_kd(HD_DAMPING_KUWABARA_KONO, a(j), harmless(tau(j), flags(j)), harmless(tc(j), flags(j)), &
+                               harmless(m(j), flags(j)), harmless(u(j), flags(j)), k(j), d(j))
+            end do
+        end select
         if (want_ts) then
             do j = 1, nc
-                ts(j) = tc(j) / merge(tau(j), 1.0_wp, redo(j) == 0)
+                ts(j) = harmless(tc(j), flags(j)) / harmless(tau(j), flags(j))
             end do
         end if
         if (has_kp) then
             do j = 1, nc
-                if (.not. (kp(j) > 0.0_wp .and. kp(j) <= huge(kp(j)) .and. kp(j) > k(j))) redo(j) = 1
+                if (.not. (kp(j) > 0.0_wp .and. kp(j) <= huge(kp(j)) .and. kp(j) > k(j))) flags(j) = -1_int64
             end do
         end if
         status = HD_OK
         bound = .false.
-        if (any(redo /= 0)) then
+        if (any(flags(1:nc) < 0_int64)) then
             do j = 1, nc
-                if (redo(j) /= 0) call contact_rest(a(j), tau(j), a_cont(j), law, host, given(j), tc(j), m(j), u(j), &
+                if (flags(j) < 0_int64) call contact_rest(a(j), tau(j), a_cont(j), law, host, given(j), tc(j), m(j), u(j), &
                                                     has_kp, kp(j), want_ts, k(j), d(j), ts(j), bound(j), status(j))
             end do
         end if
     end subroutine contacts_kd
+
+    !> Sign bit set when x is outside the direct range [1e-30, 1e30] (NaN, infinities, zero,
+    !> negatives included), in integer arithmetic: the magnitude's bit pattern minus that
+    !> of the range's low end is negative below it, and (high - low) minus it is negative
+    !> above it; the sign bit of x itself flags negatives.
+    pure elemental integer(int64) function outside(x)
+        real(wp), intent(in) :: x
+        integer(int64) :: ix, dx
+        ix = transfer(x, 0_int64)
+        dx = iand(ix, huge(ix)) - direct_lo_bits
+        outside = ior(ix, ior(dx, (direct_hi_bits - direct_lo_bits) - dx))
+    end function outside
+
+    !> x where the sign bit of flags is clear, else 1 (bitwise, no branch): a harmless input
+    !> for a contact the direct formulas do not serve.
+    pure elemental real(wp) function harmless(x, flags)
+        real(wp), intent(in) :: x
+        integer(int64), intent(in) :: flags
+        integer(int64) :: keep
+        keep = not(shifta(flags, 63))
+        harmless = transfer(ior(iand(transfer(x, 0_int64), keep), iand(one_bits, not(keep))), 1.0_wp)
+    end function harmless
 
     !> hertzdamp_pair_kd over arrays; tc, m of size 1 are broadcast (the core of the
     !> array forms: passes of `chunk` contacts through buffers).

@@ -81,7 +81,7 @@ done
 # (the legacy link names end in gfortran's underscore: their names without it)
 legacy=$( (grep -hoiE '^ *subroutine +hertzdamp_[a-z_]+' src/hertzdamp_legacy.f90 | awk '{print tolower($2)}';
           sed -nE "s/.*bind\(c, name='(hertzdamp_[a-z_]+)_'\).*/\1/p" src/hertzdamp_capi.f90) | sort -u)
-cnames=$(sed -nE "s/.*bind\(c, name='(hertzdamp_c_[a-z_]+)'\).*/\1/p" src/hertzdamp_capi.f90)
+cnames=$(sed -nE "s/.*bind\(c, name='(hertzdamp_c_[a-z_]+)'\).*/\1/p" src/hertzdamp_capi.f90 src/hertzdamp_pair.f90)
 check "the legacy and C names were found" test "$(wc -w <<<"$legacy $cnames")" -ge 24
 check "no C name equals a legacy external's name" bash -c "! grep -Fxq -f <(echo '$legacy') <<<'$cnames'"
 

@@ -12,13 +12,15 @@
 !> they agree bit for bit, and the speed-up against the fastest iterative row at equal
 !> accuracy; for the tsuji law also its inverse against the closed form of its overlap
 !> end; for the linear law the per-pair API (the per-contact call of a DEM host against
-!> the bare formula it replaces) and the one-call inverse with T_c and m broadcast.  Every number is measured in this run; methods the library does not (yet)
-!> provide are left out.  Everything is computed (and the plot written) before anything
-!> is printed: on failure stdout stays empty.
+!> the bare formula it replaces) and the one-call inverse with T_c and m broadcast.
+!> Every number is measured in this run; methods the library does not (yet) provide are
+!> left out.  Everything is computed (and the plot written) before anything is printed:
+!> on failure stdout stays empty.
 !>
 !> One builder per table (hertzdamp_bench_table_forward, _inverse, _entry,
-!> _closed_form, _pair): each appends its rows and adds its header lines and figures.  To add
-!> a table: write its builder module and call it in measure, describe and figures below.
+!> _closed_form, _pair): each appends its rows and adds its header lines and figures.
+!> To add a table: write its builder module and call it in measure, describe and figures
+!> below.
 module hertzdamp_cmd_bench
     use hertzdamp, only: hertzdamp_rk, HD_DAMPING_LINEAR, HD_DAMPING_TSUJI, HD_DAMPING_KUWABARA_KONO, &
                          hertzdamp_law_name

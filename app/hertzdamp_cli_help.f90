@@ -170,11 +170,23 @@ module hertzdamp_cli_help
         '  --help       this text' // nl // &
         'CSV columns: name,value.'
 
+    !> The --host option of invert and timestep.
+    character(len=*), parameter :: host_help = &
+        '  --host NAME           the DEM host''s time integrator: none (default: the' // nl // &
+        '                        continuous model), lammps (LAMMPS/LIGGGHTS velocity' // nl // &
+        '                        Verlet), mfix-euler, mfix-ab2, verlet (the scene engine),' // nl // &
+        '                        lammps-phase (lammps with the plugin''s onset correction):' // nl // &
+        '                        alpha, tau_c make the achieved e and T_c of the host''s' // nl // &
+        '                        N-step collision exact on average over the onset phase;' // nl // &
+        '                        adds e_spread and tc_spread (their standard deviations' // nl // &
+        '                        over the phase, relative).  N too small to reach e: the' // nl // &
+        '                        row is outside-validity and says which N can'
+
     character(len=*), parameter :: invert = &
         'Usage: hertzdamp invert --e LIST (--tc LIST | --dt LIST --steps LIST)' // nl // &
         '                        --velocity LIST (--mass M | --radius R --density RHO ...)' // nl // &
         '                        [--k-phys K | --youngs-modulus E --poisson-ratio NU]' // nl // &
-        '                        [options]' // nl // &
+        '                        [--host NAME] [options]' // nl // &
         '' // nl // &
         'The inverse rule of the adaptive collision time model: the stiffness k and' // nl // &
         'damping d that give a contact with effective mass m*, hit at relative normal' // nl // &
@@ -191,20 +203,22 @@ module hertzdamp_cli_help
         '  --steps LIST          time steps per contact N (whole numbers): T_c = N dt;' // nl // &
         '                        N dt beyond double precision: out-of-range' // nl // &
         '  --velocity LIST       relative normal impact velocity u_in [m s^-1]' // nl // &
+        host_help // nl // &
+        '                        (needs --dt and --steps)' // nl // &
         contact_help // nl // &
         'Method:' // nl // inverse_methods_help // nl // method_help // nl // &
         '' // nl // &
         'Columns: e, tc [s], velocity [m s^-1], mass (m*) [kg], radius_eff (R*) [m],' // nl // &
         'k_phys, alpha [-], tau_c [-], t_star [s] (time unit of the returned k), k' // nl // &
         '[N m^-3/2], d [kg s^-1], bound_active, tc_actual [s] (the contact time the' // nl // &
-        'returned k and d give: t_star tau_c), status.' // nl // &
+        'returned k and d give: t_star tau_c), with --host e_spread and tc_spread, status.' // nl // &
         '' // nl // list_syntax // nl // nl // status_help
 
     character(len=*), parameter :: timestep = &
         'Usage: hertzdamp timestep --e LIST --velocity LIST [--steps LIST]' // nl // &
         '                          (--mass M | --radius R --density RHO ...)' // nl // &
         '                          (--k-phys K | --youngs-modulus E --poisson-ratio NU)' // nl // &
-        '                          [options]' // nl // &
+        '                          [--host NAME] [options]' // nl // &
         '' // nl // &
         'The time step a DEM code needs for its physical contacts (k = k_phys, d from' // nl // &
         'e): the contact time t* tau_c(alpha(e)) falls as u_in^(-1/5), so the shortest' // nl // &
@@ -217,12 +231,15 @@ module hertzdamp_cli_help
         '  --e LIST              restitution coefficients of the material pair [-]' // nl // &
         '  --velocity LIST       relative normal impact velocities u_in [m s^-1]' // nl // &
         '  --steps LIST          time steps per contact N, whole numbers (default 10)' // nl // &
+        host_help // nl // &
+        '                        (needs --steps: the constants depend on N)' // nl // &
         contact_help // nl // &
         'Method:' // nl // inverse_methods_help // nl // method_help // nl // &
         '' // nl // &
         'Columns: e, steps, velocity_max [m s^-1], mass [kg], radius_eff [m], k_phys,' // nl // &
         'alpha, tau_c [-], tc_damped [s], tc_elastic [s], elastic_excess [-],' // nl // &
-        'dt_max [s], dt_elastic [s] (tc_elastic / N), status.' // nl // &
+        'dt_max [s], dt_elastic [s] (tc_elastic / N), with --host e_spread and tc_spread,' // nl // &
+        'status.' // nl // &
         '' // nl // list_syntax // nl // nl // status_help
 
     character(len=*), parameter :: bench = &

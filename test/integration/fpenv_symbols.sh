@@ -4,7 +4,7 @@
 # _gfortran_ieee_procedure_entry / _gfortran_ieee_procedure_exit (about 250 ns a call)
 # into every procedure whose own scope sees a symbol of an IEEE intrinsic module, and
 # a `use` of any library module inside an external subroutine brings such symbols
-# along (src/hertzdamp_legacy.f90 explains).  This builds and installs the core with
+# along (src/hertzdamp_capi.f90 explains).  This builds and installs the core with
 # CMake, as `make install` does, disassembles the installed shared and static
 # libraries, and fails if any function in them calls those routines: the legacy
 # externals (hertzdamp_invert_ ...), the C functions (hertzdamp_c_*) and every module

@@ -1,4 +1,5 @@
-!> The legacy Fortran entry points (src/hertzdamp_legacy.f90) against the module API.
+!> The legacy Fortran entry points (src/hertzdamp_capi.f90, and the external HERTZDAMP_MESSAGE of
+!> src/hertzdamp_legacy.f90) against the module API.
 !>
 !> fpm compiles tests with -Werror=implicit-interface (implicit-external = false), so
 !> this program declares the external subroutines in an interface block written

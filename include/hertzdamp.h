@@ -128,7 +128,10 @@ int hertzdamp_c_invert_bounded(double e, double tc, double m, double u, double k
 
 /*
  * hertzdamp_c_invert for n contacts: status[i] is the status of contact i.  Returns
- * HERTZDAMP_OK when all succeeded, else the first non-zero status.
+ * HERTZDAMP_OK when all succeeded, else the first non-zero status.  A result array
+ * may overlap an input array, in place or shifted (the inputs are then copied first):
+ * the results are those of separate arrays.  The result arrays must not overlap each
+ * other.  (The same for hertzdamp_c_invert_law_n.)
  */
 int hertzdamp_c_invert_n(int n, const double *e, const double *tc, const double *m,
                          const double *u, int end, double *k, double *d, int *status);

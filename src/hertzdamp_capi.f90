@@ -42,7 +42,7 @@
 !> per-contact call, lives in hertzdamp_pair so that the k, d code inlines into it (the
 !> bare formula costs a few ns; a call between modules is not inlined without LTO).
 module hertzdamp_capi
-    use, intrinsic :: iso_c_binding, only: c_double, c_int, c_char, c_ptr, c_loc, c_null_char
+    use, intrinsic :: iso_c_binding, only: c_double, c_int, c_char, c_ptr, c_loc, c_null_char, c_intptr_t
     use hertzdamp_status, only: HD_OK, HD_NO_REBOUND, HD_BAD_ARGUMENT, hertzdamp_message_table, hertzdamp_max_status, &
                                 hertzdamp_message_len
     use hertzdamp_methods, only: hertzdamp_forward_dim, HD_METHOD_FIT
@@ -183,26 +183,51 @@ contains
     !> hertzdamp_c_invert_law without the bound (k_phys = 0) for n contacts, vectorised;
     !> status[i] is each contact's status.  Returns HD_OK when every contact succeeded,
     !> else the first non-zero status (HD_BAD_ARGUMENT, touching nothing, when an array is
-    !> NULL); n <= 0 does nothing.
+    !> NULL); n <= 0 does nothing.  A result array may overlap an input array: in place
+    !> (the same element) the module's passes read a contact's inputs before writing its
+    !> results; any other overlap is detected here and the inputs are copied first.  The
+    !> results are those of separate arrays, bit for bit (the result arrays must not
+    !> overlap each other).
     integer(c_int) function hertzdamp_c_invert_law_n(n, e, tc, m, u, law, iend, k, d, st) &
             bind(c, name='hertzdamp_c_invert_law_n') result(status)
         integer(c_int), value, intent(in) :: n       !! number of contacts
-        real(c_double), intent(in), optional :: e(n) !! target restitution coefficients (n)
-        real(c_double), intent(in), optional :: tc(n) !! target contact times [s] (n)
-        real(c_double), intent(in), optional :: m(n) !! effective masses [kg] (n)
-        real(c_double), intent(in), optional :: u(n) !! impact velocities [m/s] (n)
+        real(c_double), intent(in), optional, target :: e(n) !! target restitution coefficients (n)
+        real(c_double), intent(in), optional, target :: tc(n) !! target contact times [s] (n)
+        real(c_double), intent(in), optional, target :: m(n) !! effective masses [kg] (n)
+        real(c_double), intent(in), optional, target :: u(n) !! impact velocities [m/s] (n)
         integer(c_int), value, intent(in) :: law     !! damping law: 0 linear, 1 tsuji, 2 kuwabara-kono
         integer(c_int), value, intent(in) :: iend    !! contact end: 0 overlap, 1 force
-        real(c_double), intent(out), optional :: k(n) !! Hertz stiffnesses [N m^-3/2] (n)
-        real(c_double), intent(out), optional :: d(n) !! damping coefficients [kg s^-1 m^-q] (n)
-        integer(c_int), intent(out), optional :: st(n) !! status of each contact (n)
-        integer :: i
+        real(c_double), intent(out), optional, target :: k(n) !! Hertz stiffnesses [N m^-3/2] (n)
+        real(c_double), intent(out), optional, target :: d(n) !! damping coefficients [kg s^-1 m^-q] (n)
+        integer(c_int), intent(out), optional, target :: st(n) !! status of each contact (n)
+        real(c_double), allocatable :: copy(:, :)
+        integer(c_intptr_t) :: ins(2, 4), outs(2, 3)
+        integer :: i, j, ierr
         status = HD_OK
         if (n <= 0) return
         status = HD_BAD_ARGUMENT   ! a NULL array
         if (.not. (present(e) .and. present(tc) .and. present(m) .and. present(u) .and. present(k) .and. &
                    present(d) .and. present(st))) return
-        call hertzdamp_invert(e, tc, m, u, int(iend), k, d, st, law=int(law))
+        ! byte ranges [first, last] of the arrays
+        ins(:, 1) = byte_range(c_loc(e), 8 * int(n, c_intptr_t))
+        ins(:, 2) = byte_range(c_loc(tc), 8 * int(n, c_intptr_t))
+        ins(:, 3) = byte_range(c_loc(m), 8 * int(n, c_intptr_t))
+        ins(:, 4) = byte_range(c_loc(u), 8 * int(n, c_intptr_t))
+        outs(:, 1) = byte_range(c_loc(k), 8 * int(n, c_intptr_t))
+        outs(:, 2) = byte_range(c_loc(d), 8 * int(n, c_intptr_t))
+        outs(:, 3) = byte_range(c_loc(st), 4 * int(n, c_intptr_t))
+        if (any([((partial_overlap(outs(:, j), ins(:, i)), i = 1, 4), j = 1, 3)])) then
+            ! a result would overwrite an input of a later contact: work on copies
+            allocate (copy(n, 4), stat=ierr)
+            if (ierr /= 0) return
+            copy(:, 1) = e
+            copy(:, 2) = tc
+            copy(:, 3) = m
+            copy(:, 4) = u
+            call hertzdamp_invert(copy(:, 1), copy(:, 2), copy(:, 3), copy(:, 4), int(iend), k, d, st, law=int(law))
+        else
+            call hertzdamp_invert(e, tc, m, u, int(iend), k, d, st, law=int(law))
+        end if
         status = HD_OK
         do i = 1, n
             if (st(i) /= HD_OK) then
@@ -211,6 +236,22 @@ contains
             end if
         end do
     end function hertzdamp_c_invert_law_n
+
+    !> The first and last byte address of an array of `bytes` bytes at p.
+    pure function byte_range(p, bytes) result(r)
+        type(c_ptr), intent(in) :: p
+        integer(c_intptr_t), intent(in) :: bytes
+        integer(c_intptr_t) :: r(2)
+        r(1) = transfer(p, 0_c_intptr_t)
+        r(2) = r(1) + bytes - 1
+    end function byte_range
+
+    !> True when two byte ranges overlap other than element for element from the same start
+    !> (in place is fine: every pass reads a contact's inputs before writing its results).
+    pure logical function partial_overlap(a, b)
+        integer(c_intptr_t), intent(in) :: a(2), b(2)
+        partial_overlap = a(1) <= b(2) .and. b(1) <= a(2) .and. a(1) /= b(1)
+    end function partial_overlap
 
     !> `int hertzdamp_c_pair(double e, int end, double *alpha, double *tau_c)`: the
     !> constants of a material pair, alpha(e) and tau_c(alpha(e)) (linear law); per contact

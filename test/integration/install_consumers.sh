@@ -319,6 +319,42 @@ check "per-pair: 360 records, successes and failures among them" bash -c \
 check "per-pair: C = module, bit for bit (statuses, PAIR(8), k, d)" cmp "$tmp/pair_c.out" "$tmp/pair_m.out"
 check "per-pair: fixed form through hertzdamp.fi = module, bit for bit" cmp "$tmp/pair_f.out" "$tmp/pair_m.out"
 
+# ------------------------------------------------------------ the _n functions under aliasing
+# A result array over an input array: in place (d over tc) and shifted by -3 .. 3 elements
+# (k over e), three passes of 256 contacts: the results of separate arrays, bit for bit.
+cat >"$tmp/alias.c" <<'C'
+#include <stdio.h>
+#include <string.h>
+#include <hertzdamp.h>
+#define N 700
+int main(void) {
+    static double e[N], tc[N], m[N], u[N], k[N], d[N], buf[2 * N], t2[N];
+    static int st[N], st2[N];
+    int bad = 0;
+    for (int i = 0; i < N; i++) {
+        e[i] = 0.05 + 0.9 * (i % 97) / 97.0; tc[i] = 1e-5 * (1 + i % 7); m[i] = 1e-3 * (1 + i % 5);
+        u[i] = 0.1 * (1 + i % 11);
+    }
+    for (int law = 0; law <= 2; law++) {
+        hertzdamp_c_invert_law_n(N, e, tc, m, u, law, 0, k, d, st);
+        for (int shift = -3; shift <= 3; shift++) {
+            double *E = buf + N / 2, *K = E + shift;
+            memcpy(E, e, sizeof e);
+            memcpy(t2, tc, sizeof tc);
+            hertzdamp_c_invert_law_n(N, E, t2, m, u, law, 0, K, t2, st2);
+            for (int i = 0; i < N; i++)
+                if (memcmp(&K[i], &k[i], 8) || memcmp(&t2[i], &d[i], 8) || st2[i] != st[i]) bad++;
+        }
+    }
+    printf("%d\n", bad);
+    return bad != 0;
+}
+C
+check "aliasing client builds (-fsanitize=address)" cc -std=c99 -Wall -Werror -fsanitize=address "$tmp/alias.c" \
+  -I"$prefix/include" -L"$prefix/lib" -Wl,-rpath,"$prefix/lib" -lhertzdamp -o "$tmp/alias"
+check "_law_n with k over e shifted by -3..3 and d over tc in place: the bits of separate arrays, in bounds" \
+  env ASAN_OPTIONS=detect_leaks=0 "$tmp/alias"
+
 # ------------------------------------------------------------ static archive and pkg-config
 check "C example links the static archive" make --no-print-directory -C "$tmp/c" -B PREFIX="$prefix" \
   LDLIBS="$prefix/lib/libhertzdamp.a -lgfortran -lm"

@@ -75,11 +75,11 @@ contains
     end function host_reason
 
     !> The relative spread over the onset phase (standard deviation / mean; 0 for none).
-    pure real(wp) function spread(sd, mean)
+    pure real(wp) function relative_spread(sd, mean)
         real(wp), intent(in) :: sd, mean
-        spread = 0.0_wp
-        if (mean > 0.0_wp) spread = sd / mean
-    end function spread
+        relative_spread = 0.0_wp
+        if (mean > 0.0_wp) relative_spread = sd / mean
+    end function relative_spread
 
     subroutine cmd_invert()
         type(cli_args) :: args
@@ -173,8 +173,8 @@ contains
                     end if
                     call t%num_or_none(tstar * tau, have)
                     if (h%given) then
-                        call t%num_or_none(spread(stats%e_sd, stats%e_mean), have)
-                        call t%num_or_none(spread(stats%tau_sd, stats%tau_mean), have)
+                        call t%num_or_none(relative_spread(stats%e_sd, stats%e_mean), have)
+                        call t%num_or_none(relative_spread(stats%tau_sd, stats%tau_mean), have)
                     end if
                     call t%str(row_word(kind))
                     if (have) then
@@ -402,8 +402,8 @@ contains
                 call t%num_or_none(dtmax, rhave)
                 call t%num_or_none(dt_el, dt_el > 0.0_wp)
                 if (h%given) then
-                    call t%num_or_none(spread(stats%e_sd, stats%e_mean), rhave)
-                    call t%num_or_none(spread(stats%tau_sd, stats%tau_mean), rhave)
+                    call t%num_or_none(relative_spread(stats%e_sd, stats%e_mean), rhave)
+                    call t%num_or_none(relative_spread(stats%tau_sd, stats%tau_mean), rhave)
                 end if
                 call t%str(row_word(rkind))
                 if (rhave) then

@@ -25,8 +25,8 @@ program test_pair
     use hertzdamp_fit, only: hertzdamp_fit_inverse
     use hertzdamp_inverse, only: hertzdamp_invert_options
     use hertzdamp_pair, only: hertzdamp_pair_t, hertzdamp_pair_init, hertzdamp_pair_kd, hertzdamp_invert
-    use hertzdamp_host, only: HD_HOST_NONE, HD_HOST_LAMMPS, HD_HOST_LAMMPS_PHASE, hertzdamp_host_stats, &
-                              hertzdamp_host_solve, hertzdamp_host_min_steps
+    use hertzdamp_host, only: HD_HOST_NONE, HD_HOST_LAMMPS, HD_HOST_VERLET, HD_HOST_LAMMPS_PHASE, &
+                              hertzdamp_host_stats, hertzdamp_host_solve, hertzdamp_host_min_steps, hertzdamp_host_name
     use hertzdamp_capi, only: hertzdamp_c_pair_init, hertzdamp_c_pair_kd, hertzdamp_c_invert_law
     use hertzdamp_testing, only: test_suite, new_suite, rel_err
     use, intrinsic :: iso_c_binding, only: c_double, c_int
@@ -383,11 +383,20 @@ contains
     end subroutine bindings
 
     !> With a host scheme: without the bound, d = alpha_N m r (r/u)^q with the host's
-    !> constants; with it, alpha_eff = alpha(e) + (alpha_N - alpha(e)) h'/h_N, where
-    !> h' = dt/t*_phys, h_N = tau_N/N, dt = T_c/N, t*_phys = (m/k_phys)^(2/5) u^(-1/5).
+    !> constants; with it, alpha_eff = alpha(e) + (alpha_N - alpha(e)) (h'/h_N)^p, where
+    !> h' = dt/t*_phys, h_N = tau_N/N, dt = T_c/N, t*_phys = (m/k_phys)^(2/5) u^(-1/5), p = 1
+    !> for lammps, 2 for verlet.
     subroutine host_bound(law, iend)
         integer, intent(in) :: law, iend
-        integer, parameter :: host = HD_HOST_LAMMPS
+        integer, parameter :: hosts(2) = [HD_HOST_LAMMPS, HD_HOST_VERLET]
+        integer :: ih
+        do ih = 1, 2
+            call host_bound_of(hosts(ih), ih, law, iend)
+        end do
+    end subroutine host_bound
+
+    subroutine host_bound_of(host, order, law, iend)
+        integer, intent(in) :: host, order, law, iend
         type(hertzdamp_pair_t) :: p
         type(hertzdamp_host_stats) :: stats
         real(wp) :: steps, k, d, q, r, kp, tsp, hp, hn, ae, dref, err, errc, an, taun
@@ -400,7 +409,8 @@ contains
         call hertzdamp_pair_init(0.5_wp, law, iend, host, steps, p, st, stats)
         call hertzdamp_host_solve(0.5_wp, law, iend, host, steps, an, taun, stats, sth)
         call s%check(st == HD_OK .and. sth == HD_OK .and. bits(p%alpha) == bits(an) .and. &
-                     bits(p%tau_c) == bits(taun), 'host lammps: the constants of hertzdamp_host_solve, ' // tag(law, iend))
+                     bits(p%tau_c) == bits(taun), 'host ' // hertzdamp_host_name(host) // ': the constants of ' // &
+                     'hertzdamp_host_solve, ' // tag(law, iend))
         if (st /= HD_OK) return
         do i = 1, size(e)
             call hertzdamp_pair_kd(p, tc(i), m(i), u(i), k, d, st)
@@ -416,19 +426,20 @@ contains
             tsp = (m(i) / kp)**0.4_wp * u(i)**(-0.2_wp)
             hp = (tc(i) / steps) / tsp
             hn = p%tau_c / steps
-            ae = p%alpha_cont + (p%alpha - p%alpha_cont) * (hp / hn)
+            ae = p%alpha_cont + (p%alpha - p%alpha_cont) * (hp / hn)**order
             dref = ae * m(i) / tsp / (u(i) * tsp)**q
             err = max(err, rel_err(d, dref))
         end do
-        call s%check(errc < 1.0e-13_wp, 'host lammps, no bound: d = alpha_N m r (r/u)^q, ' // tag(law, iend))
-        call s%check(err < 1.0e-12_wp, 'host lammps, bound: alpha_eff = alpha(e) + (alpha_N - alpha(e)) h''/h_N, ' // &
-                     tag(law, iend))
+        call s%check(errc < 1.0e-13_wp, 'host ' // hertzdamp_host_name(host) // ', no bound: d = alpha_N m r ' // &
+                     '(r/u)^q, ' // tag(law, iend))
+        call s%check(err < 1.0e-12_wp, 'host ' // hertzdamp_host_name(host) // ', bound: alpha_eff = alpha(e) + ' // &
+                     '(alpha_N - alpha(e)) (h''/h_N)^p, ' // tag(law, iend))
         ! at k_phys = k the contact has N steps: alpha_eff = alpha_N
         call hertzdamp_pair_kd(p, 1.0e-4_wp, 1.0e-3_wp, 1.0_wp, k, d, st)
         call hertzdamp_pair_kd(p, 1.0e-4_wp, 1.0e-3_wp, 1.0_wp, kp, dref, st, k_phys=k, bound_active=b)
         call s%check(b .and. rel_err(dref, d) < 1.0e-14_wp, 'host bound at k_phys = k: the unbounded d, ' // &
                      tag(law, iend))
-    end subroutine host_bound
+    end subroutine host_bound_of
 
     !> Every bad argument of hertzdamp_pair_init: its status, and an invalid pair.
     subroutine bad_init()

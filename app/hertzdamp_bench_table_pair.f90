@@ -49,15 +49,16 @@ contains
         type(entry_result), intent(in) :: ent     !! the linear law's entry points (the array call)
         type(cli_buffer), intent(inout) :: figs
         real(wp) :: rc
-        rc = pr%ns(PW_C) / pr%ns(PW_BARE)
-        call figs%add('pair: ns per contact over ' // itoa(pr%n) // ' contacts: bare formula ' // &
+        rc = pr%c_ratio
+        call figs%add('pair: ns per contact over ' // itoa(pr%n) // ' contacts (medians of ' // itoa(pr%rounds) // &
+                      ' rounds; ratios: the median of the rounds'' ratios): bare formula ' // &
                       ftoa(pr%ns(PW_BARE), '(f6.1)') // ' (one contact per iteration), C hertzdamp_c_pair_kd ' // &
                       ftoa(pr%ns(PW_C), '(f6.1)') // ' (' // fratio(rc) // ' x the bare formula; target at most ' // &
                       fratio(c_target) // ' x: ' // met(rc <= c_target, 'short by ' // fratio(rc / c_target) // ' x') // &
                       '), Fortran hertzdamp_pair_kd ' // ftoa(pr%ns(PW_SCALAR), '(f6.1)') // ' (' // &
                       fratio(pr%ns(PW_SCALAR) / pr%ns(PW_BARE)) // ' x); over arrays: bare (vectorised) ' // &
                       ftoa(pr%ns(PW_BARE_VEC), '(f6.1)') // ', hertzdamp_pair_kd ' // ftoa(pr%ns(PW_ARRAY), '(f6.1)') // &
-                      ' (' // fratio(pr%ns(PW_ARRAY) / pr%ns(PW_BARE_VEC)) // ' x)')
+                      ' (' // fratio(pr%array_ratio) // ' x)')
         call figs%add('pair: hertzdamp_invert with the same T_c and m for every contact: one call per contact ' // &
                       ftoa(pr%ns(PW_INVERT_EACH), '(f6.1)') // ' ns, scalar T_c and m over arrays ' // &
                       ftoa(pr%ns(PW_INVERT_TC_M), '(f6.1)') // ' ns (' // &

@@ -74,6 +74,19 @@ contains
         end if
     end function host_reason
 
+    !> With --host: the spread columns, and what alpha, tau_c and the spreads are (the
+    !> steps `where` as the command defines them) in the units line.
+    subroutine host_columns(h, where, columns, units)
+        type(host_opts), intent(in) :: h
+        character(len=*), intent(in) :: where
+        character(len=:), allocatable, intent(inout) :: columns, units
+        if (.not. h%given) return
+        columns = columns // 'e_spread,tc_spread,'
+        units = units // '; host ' // hertzdamp_host_name(h%host) // ': alpha, tau_c its constants at N steps ' // &
+                where // ', e_spread and tc_spread the standard deviations of the achieved e and T_c over the ' // &
+                'onset phase, relative'
+    end subroutine host_columns
+
     !> The relative spread over the onset phase (standard deviation / mean; 0 for none).
     pure real(wp) function relative_spread(sd, mean)
         real(wp), intent(in) :: sd, mean
@@ -117,12 +130,7 @@ contains
         columns = 'e,tc,velocity,mass,radius_eff,k_phys,alpha,tau_c,t_star,k,d,bound_active,tc_actual,'
         units = 'tc, t_star, tc_actual [s], velocity [m/s], mass [kg], radius_eff [m], k, k_phys [N m^-3/2], d [' // &
                 damping_unit(c%law) // ']'
-        if (h%given) then
-            columns = columns // 'e_spread,tc_spread,'
-            units = units // '; host ' // hertzdamp_host_name(h%host) // ': alpha, tau_c its constants at N steps ' // &
-                    '(T_c = N dt), e_spread and tc_spread the standard deviations of the achieved e and T_c over ' // &
-                    'the onset phase, relative'
-        end if
+        call host_columns(h, '(T_c = N dt)', columns, units)
         call contact_table(t, c, ct, columns // 'status', units)
         n = 0
         call p%start(real(size(es) * size(tcs) * size(us), wp), 'invert', force=args%has('--progress'))
@@ -352,12 +360,7 @@ contains
                   'dt_max,dt_elastic,'
         units = 'velocity_max [m/s], mass [kg], radius_eff [m], k_phys [N m^-3/2], tc_damped, tc_elastic, dt_max, ' // &
                 'dt_elastic [s]; elastic_excess = tc_elastic/tc_damped - 1'
-        if (h%given) then
-            columns = columns // 'e_spread,tc_spread,'
-            units = units // '; host ' // hertzdamp_host_name(h%host) // ': alpha, tau_c its constants at N steps ' // &
-                    '(the fastest contact at dt_max), e_spread and tc_spread the standard deviations of the ' // &
-                    'achieved e and T_c over the onset phase, relative'
-        end if
+        call host_columns(h, '(the fastest contact at dt_max)', columns, units)
         call contact_table(t, c, ct, columns // 'status', units)
         do ie = 1, size(es)
             if (.not. h%given) then

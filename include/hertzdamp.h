@@ -52,9 +52,9 @@ extern "C" {
 #define HERTZDAMP_BAD_MODULUS         23  /* Young's modulus not finite and positive */
 #define HERTZDAMP_BAD_POISSON         24  /* Poisson's ratio outside (-1, 0.5] */
 #define HERTZDAMP_BAD_LAW             25  /* damping law not 0 (linear), 1 (tsuji) or 2 (kuwabara-kono) */
-#define HERTZDAMP_BAD_HOST            26  /* host scheme not one of HERTZDAMP_HOST_* */
-#define HERTZDAMP_BAD_STEPS           27  /* steps per contact not finite or below the smallest allowed */
-#define HERTZDAMP_HOST_UNREACHABLE    28  /* no alpha reaches this e with the host at so few steps */
+#define HERTZDAMP_BAD_HOST            26  /* host scheme not one of the host codes (hertzdamp_host) */
+#define HERTZDAMP_BAD_STEPS           27  /* steps per contact (or step h) not finite or outside the allowed range */
+#define HERTZDAMP_HOST_UNREACHABLE    28  /* no alpha reaches this e with the host at so few steps per contact */
 #define HERTZDAMP_BAD_PAIR            29  /* pair not set by hertzdamp_c_pair_init, or changed since */
 
 /* Contact-end definitions (argument `end`). */

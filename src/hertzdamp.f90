@@ -1,6 +1,6 @@
 !> The umbrella module of hertzdamp, the damped Hertzian normal collision, forward and inverse.
 !>
-!> `use hertzdamp` gives the public API, an explicit list of 127 names, each defined in the
+!> `use hertzdamp` gives the public API, an explicit list of 135 names, each defined in the
 !> module it belongs to: kinds, status codes and messages, contact ends, damping laws,
 !> closed forms, the dimensionless reduction, the reference integrator, series, the
 !> forward problem by any method, the fitted and compact maps, the dimensionless inverse,
@@ -46,8 +46,11 @@ module hertzdamp
                                  hertzdamp_invert_default_tol, hertzdamp_secant, hertzdamp_secant_start, &
                                  hertzdamp_secant_next
     use hertzdamp_host, only: HD_HOST_NONE, HD_HOST_LAMMPS, HD_HOST_MFIX_EULER, HD_HOST_MFIX_AB2, &
-                              HD_HOST_VERLET, HD_HOST_LAMMPS_PHASE, hertzdamp_host_name, hertzdamp_host_stats, &
-                              hertzdamp_host_solve, hertzdamp_host_min_steps, hertzdamp_host_mean
+                              HD_HOST_VERLET, HD_HOST_LAMMPS_PHASE, hertzdamp_max_host, hertzdamp_host_steps_min, &
+                              hertzdamp_host_steps_max, hertzdamp_host_name, hertzdamp_host_code, &
+                              hertzdamp_host_status, hertzdamp_host_stats, hertzdamp_host_collide, &
+                              hertzdamp_host_mean, hertzdamp_host_solve, hertzdamp_host_min_steps, &
+                              hertzdamp_host_alpha_for_e, hertzdamp_host_phase_force
     use hertzdamp_pair, only: hertzdamp_pair_t, hertzdamp_pair_init, hertzdamp_pair_kd, hertzdamp_invert
     use hertzdamp_materials, only: hertzdamp_sphere_mass, hertzdamp_effective_mass, &
                                    hertzdamp_effective_radius, hertzdamp_effective_modulus, &
@@ -102,8 +105,10 @@ module hertzdamp
               hertzdamp_secant, hertzdamp_secant_start, hertzdamp_secant_next
     ! the host schemes (a DEM engine's time integrator) (hertzdamp_host)
     public :: HD_HOST_NONE, HD_HOST_LAMMPS, HD_HOST_MFIX_EULER, HD_HOST_MFIX_AB2, HD_HOST_VERLET, &
-              HD_HOST_LAMMPS_PHASE, hertzdamp_host_name, hertzdamp_host_stats, hertzdamp_host_solve, &
-              hertzdamp_host_min_steps, hertzdamp_host_mean
+              HD_HOST_LAMMPS_PHASE, hertzdamp_max_host, hertzdamp_host_steps_min, hertzdamp_host_steps_max, &
+              hertzdamp_host_name, hertzdamp_host_code, hertzdamp_host_status, hertzdamp_host_stats, &
+              hertzdamp_host_collide, hertzdamp_host_mean, hertzdamp_host_solve, hertzdamp_host_min_steps, &
+              hertzdamp_host_alpha_for_e, hertzdamp_host_phase_force
     ! the per-pair API and the one-call inverse (hertzdamp_pair)
     public :: hertzdamp_pair_t, hertzdamp_pair_init, hertzdamp_pair_kd, hertzdamp_invert
     ! material data to the contact (hertzdamp_materials)

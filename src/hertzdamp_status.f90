@@ -37,9 +37,9 @@ module hertzdamp_status
     integer, parameter, public :: HD_BAD_MODULUS = 23      !! Young's modulus not finite and positive
     integer, parameter, public :: HD_BAD_POISSON = 24      !! Poisson's ratio outside (-1, 0.5]
     integer, parameter, public :: HD_BAD_LAW = 25          !! damping law not 0 (linear), 1 (tsuji) or 2 (kuwabara-kono)
-    integer, parameter, public :: HD_BAD_HOST = 26         !! host scheme not one of the HD_HOST_* codes
-    integer, parameter, public :: HD_BAD_STEPS = 27        !! steps per contact not finite or below the smallest allowed
-    integer, parameter, public :: HD_HOST_UNREACHABLE = 28 !! no alpha reaches this e with the host at so few steps
+    integer, parameter, public :: HD_BAD_HOST = 26         !! host scheme not one of the HD_HOST_* codes (hertzdamp_host)
+    integer, parameter, public :: HD_BAD_STEPS = 27        !! steps per contact (or step h) not finite or outside the allowed range
+    integer, parameter, public :: HD_HOST_UNREACHABLE = 28 !! no alpha reaches this e with the host at so few steps per contact
     integer, parameter, public :: HD_BAD_PAIR = 29         !! pair constants not set by hertzdamp_pair_init, or changed since
 
     !> Length of the stored messages (each fits, blank-padded).
@@ -81,9 +81,11 @@ module hertzdamp_status
         'invalid Young''s modulus: must be finite and positive', &
         'invalid Poisson''s ratio: must lie in (-1, 0.5]', &
         'invalid damping law: use 0 (linear), 1 (tsuji) or 2 (kuwabara-kono)', &
-        'invalid host scheme: use 0 (none), 1 (lammps), 2 (mfix-euler), 3 (mfix-ab2), 4 (verlet) or 5 (lammps-phase)', &
-        'invalid number of steps per contact: must be finite and large enough for the host scheme', &
-        'the host scheme cannot reach this restitution coefficient at so few steps per contact', &
+        'invalid host scheme: use 0 (none), 1 (lammps), 2 (mfix-euler), 3 (mfix-ab2), 4 (verlet) or ' // &
+            '5 (lammps-phase)', &
+        'invalid steps per contact: must be finite with 2 <= N <= 1e5 (dimensionless step h: 1e-5 <= h <= 4)', &
+        'the host cannot reach this restitution coefficient at so few steps per contact: no damping ' // &
+            'alpha >= 0 gives it (hertzdamp_host_min_steps tells which N can)', &
         'invalid pair: not set by hertzdamp_pair_init (or its failure), or changed since', &
         'unknown status code']
 

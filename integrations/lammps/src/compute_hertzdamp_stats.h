@@ -5,8 +5,12 @@
  *   8 contacts with k = k_phys  9 contacts ended  10 e_min  11 e_max
  *   12 log rows not yet written  13 contacts carried through neighbor-list
  *   rebuilds (per rebuild and processor; not a count of contacts)
+ *   14 isolated binary collisions  15 their mean e  16 the spread (standard
+ *   deviation) of their e  17 ended contacts left out of 10, 11, 15, 16
  * u = relative normal approach speed at onset (before the vmin floor); e = speed
- * of separation / u, measured when the overlap ends.  Counts since pair_style.
+ * of separation / u, measured when the overlap ends, over isolated binary collisions
+ * only (no other contact of either bead meanwhile, impact speed not raised to vmin).
+ * Counts since pair_style (or read_restart).
  */
 #ifndef HERTZDAMP_COMPUTE_HERTZDAMP_STATS_H
 #define HERTZDAMP_COMPUTE_HERTZDAMP_STATS_H

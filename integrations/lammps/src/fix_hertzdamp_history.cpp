@@ -7,6 +7,9 @@
 #include "comm.h"
 #include "error.h"
 #include "force.h"
+#include "output.h"
+#include "update.h"
+
 
 #include <cstring>
 
@@ -20,18 +23,24 @@ FixHertzdampHistory::FixHertzdampHistory(LAMMPS *lmp, int narg, char **arg) : Fi
   if (narg != 3) fail_all(lmp, __FILE__, __LINE__, "fix HERTZDAMP/HISTORY is internal to pair granular/hertzdamp");
   maxexchange_dynamic = 1;
   maxexchange = 1;
+  restart_peratom = 1;     // every contact's payload goes into restart files
+  create_attribute = 1;    // atoms inserted during a run start without records
   grow_arrays(atom->nmax);
   atom->add_callback(Atom::GROW);
+  atom->add_callback(Atom::RESTART);
 }
 
 FixHertzdampHistory::~FixHertzdampHistory()
 {
-  if (atom) atom->delete_callback(id, Atom::GROW);
+  if (atom) {
+    atom->delete_callback(id, Atom::GROW);
+    atom->delete_callback(id, Atom::RESTART);
+  }
 }
 
 int FixHertzdampHistory::setmask()
 {
-  return PRE_EXCHANGE | POST_NEIGHBOR | POST_RUN | MIN_PRE_EXCHANGE | MIN_POST_NEIGHBOR;
+  return PRE_EXCHANGE | POST_NEIGHBOR | POST_RUN | END_OF_STEP | MIN_PRE_EXCHANGE | MIN_POST_NEIGHBOR;
 }
 
 void FixHertzdampHistory::init()
@@ -43,7 +52,7 @@ void FixHertzdampHistory::init()
 
 void FixHertzdampHistory::pre_exchange()
 {
-  if (pair) pair->history_to_atoms(this);
+  if (pair) pair->history_to_atoms(this, false);
 }
 
 void FixHertzdampHistory::post_neighbor()
@@ -53,7 +62,50 @@ void FixHertzdampHistory::post_neighbor()
 
 void FixHertzdampHistory::post_run()
 {
-  if (pair) pair->end_of_run();
+  if (pair) pair->end_of_run(this);
+}
+
+// a restart file written at the end of this step (restart N ...): the contacts go to the
+// atoms' records first, where pack_restart finds them; the contacts stay in place
+void FixHertzdampHistory::end_of_step()
+{
+  if (pair && output->restart_flag && output->next_restart == update->ntimestep)
+    pair->history_to_atoms(this, true);
+}
+
+/* restart files: each atom's records (count, then partner ID + payload per contact) */
+
+int FixHertzdampHistory::pack_restart(int i, double *buf)
+{
+  const std::vector<double> &r = rec[i];
+  buf[0] = static_cast<double>(r.size() + 2);
+  buf[1] = static_cast<double>(r.size());
+  if (!r.empty()) std::memcpy(buf + 2, r.data(), r.size() * sizeof(double));
+  return 2 + static_cast<int>(r.size());
+}
+
+void FixHertzdampHistory::unpack_restart(int nlocal, int nth)
+{
+  double **extra = atom->extra;
+  int m = 0;
+  for (int k = 0; k < nth; k++) m += static_cast<int>(extra[nlocal][m]);
+  const int n = static_cast<int>(extra[nlocal][m + 1]);
+  if (n % RECSIZE != 0)
+    fail_one(lmp, __FILE__, __LINE__, "granular/hertzdamp: restart file has contact records of another layout");
+  rec[nlocal].assign(&extra[nlocal][m + 2], &extra[nlocal][m + 2] + n);
+}
+
+int FixHertzdampHistory::size_restart(int i)
+{
+  return 2 + static_cast<int>(rec[i].size());
+}
+
+int FixHertzdampHistory::maxsize_restart()
+{
+  size_t most = 0;
+  for (int i = 0; i < atom->nlocal; i++)
+    if (rec[i].size() > most) most = rec[i].size();
+  return 2 + static_cast<int>(most);
 }
 
 /* ---------------------------------------------------------------------- */

@@ -34,6 +34,12 @@ class FixHertzdampHistory : public LAMMPS_NS::Fix {
   void post_neighbor() override;
   void min_post_neighbor() override { post_neighbor(); }
   void post_run() override;
+  void end_of_step() override;
+
+  int pack_restart(int i, double *buf) override;
+  void unpack_restart(int nlocal, int nth) override;
+  int size_restart(int i) override;
+  int maxsize_restart() override;
 
   void grow_arrays(int nmax) override;
   void copy_arrays(int i, int j, int delflag) override;

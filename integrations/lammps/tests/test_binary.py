@@ -24,6 +24,8 @@ sys.dont_write_bytecode = True
 
 import hdlmp
 
+NAME = "lammps_binary"
+
 DT, U = 1.0e-7, 1.0
 
 
@@ -42,8 +44,7 @@ def run_binary(tmp, e, N, end, phase=0.3, correction="yes"):
                   "ended": float(res[12])}
 
 
-def main():
-    c = hdlmp.Checks("lammps_binary")
+def run(c):
     api = hdlmp.CApi()
     tmp = tempfile.mkdtemp(prefix="hd_lmp_bin_")
     atexit.register(shutil.rmtree, tmp, True)
@@ -146,8 +147,7 @@ def main():
             f.write(box + line + "\n")
         out = hdlmp.lmp(path, {}, tmp, check=False)
         c.check("input error: " + line, ("ERROR: " + msg) in out, out[-300:])
-    c.finish()
 
 
 if __name__ == "__main__":
-    main()
+    hdlmp.main_each_flavor(NAME, run)

@@ -21,6 +21,8 @@ sys.dont_write_bytecode = True
 
 import hdlmp
 
+NAME = "lammps_parallel"
+
 
 def stats_line(path):
     with open(path) as f:
@@ -32,8 +34,7 @@ def sorted_rows(path):
         return sorted(l for l in f if not l.startswith("#"))
 
 
-def main():
-    c = hdlmp.Checks("lammps_parallel")
+def run(c):
     api = hdlmp.CApi()
     tmp = tempfile.mkdtemp(prefix="hd_lmp_par_")
     atexit.register(shutil.rmtree, tmp, True)
@@ -110,8 +111,7 @@ def main():
                     "%s %s" % ([owner.get((on, a)) for a in (1, 2)], [owner.get((off, a)) for a in (1, 2)]))
             print("%s: e %.12f T_c %.6e (at rest %.12f %.6e), carried %s" %
                   (tag, r["e"], r["tc"], rest["e"], rest["tc"], res[14]))
-    c.finish()
 
 
 if __name__ == "__main__":
-    main()
+    hdlmp.main_each_flavor(NAME, run)

@@ -1,0 +1,116 @@
+"""Poured beads: LAMMPS's granular examples in.pour.flatwall and in.pour.drum with
+pair_style granular/hertzdamp swapped in (examples/in.pour, examples/in.drum), shortened,
+and beads that fix deposit drops (examples/in.deposit), under -np 1 and -np 2, on each
+LAMMPS version.
+
+- every bead that fix pour inserts is there at the end (no bead lost);
+- no two beads overlap by more than 25 % of the smaller diameter in the final state (the
+  contacts of the adaptive rule are soft for fast impacts: seen up to 14 % while pouring,
+  1.7 % at rest; before the cutoff covered fix pour's radii the beads passed through
+  each other, 90 %);
+- no bead below the hertzdamp wall by more than 5 % of its radius;
+- the statistics (compute hertzdamp/stats, fix hertzdamp/wall) are finite, with e over
+  isolated binary collisions in [0, 3] and their mean within 0.15 of the target 0.5
+  (flatwall; the drum's stock rotating walls of LAMMPS 2021 inject energy into the bed);
+- tools/analyse_contacts.py reads the per-contact log.
+"""
+import atexit
+import math
+import os
+import subprocess
+import shutil
+import sys
+import tempfile
+
+sys.dont_write_bytecode = True
+
+import hdlmp
+
+NAME = "lammps_pour"
+
+
+def read_final(path):
+    lines = open(path).read().split("\n")
+    n = int(lines[3])
+    return [[float(x) for x in l.split()] for l in lines[9:9 + n]]
+
+
+def worst_overlap(rows, period):
+    """Largest overlap / smaller diameter over all pairs (periodic in x and y)."""
+    worst = -1.0
+    for a in range(len(rows)):
+        ra = rows[a]
+        for b in range(a + 1, len(rows)):
+            rb = rows[b]
+            dx, dy, dz = ra[3] - rb[3], ra[4] - rb[4], ra[5] - rb[5]
+            dx -= period * round(dx / period)
+            dy -= period * round(dy / period)
+            d = math.sqrt(dx * dx + dy * dy + dz * dz)
+            worst = max(worst, (ra[2] + rb[2] - d) / (2 * min(ra[2], rb[2])))
+    return worst
+
+
+def run(c):
+    tmp = tempfile.mkdtemp(prefix="hd_lmp_pour_")
+    atexit.register(shutil.rmtree, tmp, True)
+    for np in (1, 2):
+        # flatwall: 2 x 300 beads, 4000 steps
+        tag = "flatwall np %d" % np
+        hdlmp.lmp(os.path.join(hdlmp.EXAMPLES, "in.pour"), {"npour": 300, "steps": 4000}, tmp, np=np)
+        rows = read_final(os.path.join(tmp, "pour.dump"))
+        ov = worst_overlap(rows, 20.0)
+        below = max((r[2] - r[5]) / r[2] for r in rows)
+        st = open(os.path.join(tmp, "pour_stats.txt")).read().split()
+        pair = [float(x) for x in st[:17]]
+        wall = [float(x) for x in st[18:]]
+        print("%s: %d beads, worst overlap %.4f of the smaller diameter, deepest in the wall %.4f R" %
+              (tag, len(rows), ov, below))
+        print("%s: pair %d contacts, e over %d isolated: mean %.4f spread %.4f, %.4f..%.4f; "
+              "wall %d contacts, e over %d isolated: mean %.4f" %
+              (tag, pair[0], pair[13], pair[14], pair[15], pair[9], pair[10], wall[0], wall[4], wall[5]))
+        c.check(tag + ": all 600 beads inserted and kept", len(rows) == 600, str(len(rows)))
+        c.check(tag + ": no pair overlap beyond 25 % of a diameter", ov <= 0.25, repr(ov))
+        c.check(tag + ": no bead through the wall", below <= 0.05, repr(below))
+        c.check(tag + ": statistics finite", all(math.isfinite(x) for x in pair + wall), " ".join(st))
+        c.check(tag + ": pair collisions, isolated ones among them", pair[0] > 1000 and pair[13] > 100,
+                "%r %r" % (pair[0], pair[13]))
+        c.check(tag + ": pair e of isolated collisions sane",
+                0.0 <= pair[9] <= pair[14] <= pair[10] <= 3.0 and abs(pair[14] - 0.5) <= 0.15,
+                "%r %r %r" % (pair[9], pair[14], pair[10]))
+        c.check(tag + ": wall contacts, e of isolated ones sane",
+                wall[0] > 100 and wall[4] > 10 and abs(wall[5] - 0.5) <= 0.15, "%r %r %r" % (wall[0], wall[4], wall[5]))
+        r = subprocess.run([sys.executable, os.path.join(hdlmp.ROOT, "integrations", "lammps", "tools",
+                                                         "analyse_contacts.py"),
+                            os.path.join(tmp, "pour_contacts.txt"), "--target", "0.5"],
+                           stdout=subprocess.PIPE, stderr=subprocess.STDOUT, universal_newlines=True)
+        c.check(tag + ": analyse_contacts.py reads the log", r.returncode == 0 and "contacts" in r.stdout,
+                r.stdout[-500:])
+
+        # drum: 2 x 200 beads, 2000 steps pouring, 1500 steps turning
+        tag = "drum np %d" % np
+        hdlmp.lmp(os.path.join(hdlmp.EXAMPLES, "in.drum"), {"npour": 200}, tmp, np=np)
+        rows = read_final(os.path.join(tmp, "drum.dump"))
+        ov = worst_overlap(rows, 30.0)
+        st = open(os.path.join(tmp, "drum_stats.txt")).read().split()
+        pair = [float(x) for x in st[:17]]
+        print("%s: %d beads, worst overlap %.4f, %d contacts, e over %d isolated: mean %.4f" %
+              (tag, len(rows), ov, pair[0], pair[13], pair[14]))
+        c.check(tag + ": all 400 beads kept", len(rows) == 400 and st[-1] == "400", str(len(rows)))
+        c.check(tag + ": no pair overlap beyond 25 % of a diameter", ov <= 0.25, repr(ov))
+        c.check(tag + ": statistics finite", all(math.isfinite(x) for x in pair), " ".join(st))
+        c.check(tag + ": collisions, e of isolated ones >= 0", pair[0] > 100 and pair[13] > 10 and pair[9] >= 0.0,
+                " ".join(st))
+
+        # fix deposit: 100 beads dropped one by one
+        tag = "deposit np %d" % np
+        out = hdlmp.lmp(os.path.join(hdlmp.EXAMPLES, "in.deposit"), {}, tmp, np=np)
+        res = [l for l in out.splitlines() if l.startswith("RESULT")][0].split()
+        rows = read_final(os.path.join(tmp, "deposit.dump"))
+        ov = worst_overlap(rows, 10.0)
+        print("%s: %d beads, worst overlap %.4f, %s pair contacts" % (tag, len(rows), ov, res[2]))
+        c.check(tag + ": all 100 beads, pair contacts", len(rows) == 100 and float(res[2]) > 100, " ".join(res))
+        c.check(tag + ": no pair overlap beyond 25 % of a diameter", ov <= 0.25, repr(ov))
+
+
+if __name__ == "__main__":
+    hdlmp.main_each_flavor(NAME, run)

@@ -1,0 +1,1232 @@
+!> What a DEM host's own time integrator makes of the damped Hertz contact, and the
+!> per-pair constants that make the host's phase-averaged e and T_c exact
+!> (doc/host-schemes.md).
+!>
+!> A host integrates  z'' = a(z, z'),  a = -(alpha z^q z' + z^(3/2))  (z > 0, else 0;
+!> force end: a = -max(0, alpha z^q z' + z^(3/2))) with a step h = dt / t* in the
+!> similarity variables of doc/theory.md.  Its discrete collision depends only on alpha,
+!> h, the law q, the contact end, the scheme and the onset phase phi in (0, 1]: the
+!> first step with overlap has z_1 = phi h (approach speed 1), i.e. the touch happened
+!> (1 - phi) h after the step before it.  The schemes (HD_HOST_*, doc/host-schemes.md
+!> with the engine sources they were read from):
+!> - `lammps`, `mfix-euler` (also LIGGGHTS, MercuryDPM, Yade, Chrono's default): the
+!>   force from the position and the velocity that moved the body there, then
+!>   w_(n+1) = w_n + h a(z_n, w_n), z_(n+1) = z_n + h w_(n+1) (velocity Verlet with the
+!>   half-step velocity in the damping = MFiX's EULER = symplectic Euler);
+!> - `mfix-ab2`: v_(n+1) = v_n + h (3 a_n - a_(n-1))/2, z_(n+1) = z_n + h (v_n + v_(n+1))/2,
+!>   a_(n-1) = 0 before the contact, the last contact acceleration acting once more
+!>   after the release;
+!> - `verlet`: the scene engine of this repository (packages/scene/src/hertzdamp_dem_engine.f90):
+!>   velocity Verlet with the extrapolated velocity in the damping and its onset and
+!>   release impulse corrections;
+!> - `lammps-phase`: `lammps` with the onset/release correction of the LAMMPS plugin
+!>   (`phase yes`), hertzdamp_host_phase_force.
+!>
+!> Achieved e: the free-flight separation speed (units of the impact speed) once no
+!> force acts.  Achieved tau_c: from the exact touch to the release; the overlap end
+!> is interpolated linearly in the overlap between the last step with overlap and the
+!> first without, the force end linearly in the unclipped total force between the last
+!> step with a positive force and the first clipped one (the overlap end when the
+!> overlap is gone first); `verlet` keeps the engine's own end instants.
+!>
+!> Phase statistics: e(phi) and tau_c(phi) are smooth between breakpoints where the
+!> release (or the clip) moves to another step, with algebraic endpoint singularities
+!> (powers phi^q, phi^(3/2) of a tiny first or last overlap).  The breakpoints are found
+!> to round-off (bisection on the discrete trajectory's signature: release step, kind,
+!> number of force steps) and each piece is integrated by tanh-sinh quadrature, which
+!> converges double-exponentially despite endpoint singularities.
+!>
+!> Everything is pure, keeps no state and returns a status (hertzdamp_status).
+module hertzdamp_host
+    use hertzdamp_kinds, only: hertzdamp_rk
+    use hertzdamp_status, only: HD_OK, HD_NO_REBOUND, HD_NO_CONVERGENCE, HD_BAD_ALPHA, HD_BAD_END, HD_BAD_ARGUMENT, &
+                                HD_BAD_HOST, HD_BAD_STEPS, HD_HOST_UNREACHABLE
+    use hertzdamp_ends, only: HD_END_OVERLAP, HD_END_FORCE
+    use hertzdamp_constants, only: hertzdamp_pi
+    use hertzdamp_laws, only: hertzdamp_law_status, hertzdamp_law_q, HD_DAMPING_LINEAR, HD_DAMPING_TSUJI, &
+                              HD_DAMPING_KUWABARA_KONO
+    use hertzdamp_fit, only: hertzdamp_fit_inverse
+    use hertzdamp_rk45, only: hertzdamp_rk45_collide, hertzdamp_collision
+    implicit none
+    private
+
+    integer, parameter :: wp = hertzdamp_rk
+
+    !> No host: the continuous model (today's constants, bit-identical to hertzdamp_fit_inverse).
+    integer, parameter, public :: HD_HOST_NONE = 0
+    !> LAMMPS / LIGGGHTS fix nve/sphere (velocity Verlet, damping from the half-step velocity).
+    integer, parameter, public :: HD_HOST_LAMMPS = 1
+    !> MFiX DES_INTG_METHOD = 'EULER' (the same recurrence as HD_HOST_LAMMPS).
+    integer, parameter, public :: HD_HOST_MFIX_EULER = 2
+    !> MFiX DES_INTG_METHOD = 'ADAMS_BASHFORTH'.
+    integer, parameter, public :: HD_HOST_MFIX_AB2 = 3
+    !> The scene engine of this repository (velocity Verlet with onset/release corrections).
+    integer, parameter, public :: HD_HOST_VERLET = 4
+    !> HD_HOST_LAMMPS with the LAMMPS plugin's onset/release phase correction (phase yes).
+    integer, parameter, public :: HD_HOST_LAMMPS_PHASE = 5
+    !> Largest host code.
+    integer, parameter, public :: hertzdamp_max_host = 5
+
+    !> Host names in the order of the codes (the one table of them).
+    character(len=12), parameter :: host_table(0:hertzdamp_max_host) = [character(len=12) :: &
+        'none', 'lammps', 'mfix-euler', 'mfix-ab2', 'verlet', 'lammps-phase']
+
+    !> Smallest and largest number of steps per contact of hertzdamp_host_solve.
+    real(wp), parameter, public :: hertzdamp_host_steps_min = 2.0_wp, hertzdamp_host_steps_max = 1.0e5_wp
+    !> Smallest and largest dimensionless step h = dt / t* of the discrete collision.
+    real(wp), parameter, public :: hertzdamp_host_h_min = 1.0e-5_wp, hertzdamp_host_h_max = 4.0_wp
+    !> Largest damping parameter alpha of the discrete collision.
+    real(wp), parameter, public :: hertzdamp_host_alpha_max = 1.0e4_wp
+
+    !> Phase statistics of a host's discrete collision (dimensionless; sd = standard
+    !> deviation over the onset phase phi uniform on (0, 1]; min and max over phi).
+    type, public :: hertzdamp_host_stats
+        real(wp) :: e_mean = 0.0_wp    !! mean restitution coefficient
+        real(wp) :: e_sd = 0.0_wp      !! its standard deviation over the phase
+        real(wp) :: e_min = 0.0_wp     !! smallest e over the phase
+        real(wp) :: e_max = 0.0_wp     !! largest e over the phase
+        real(wp) :: tau_mean = 0.0_wp  !! mean contact duration (units of t*)
+        real(wp) :: tau_sd = 0.0_wp    !! its standard deviation over the phase
+        real(wp) :: tau_min = 0.0_wp   !! shortest contact over the phase
+        real(wp) :: tau_max = 0.0_wp   !! longest contact over the phase
+    end type hertzdamp_host_stats
+
+    public :: hertzdamp_host_name, hertzdamp_host_code, hertzdamp_host_status
+    public :: hertzdamp_host_collide, hertzdamp_host_mean, hertzdamp_host_solve, hertzdamp_host_min_steps
+    public :: hertzdamp_host_alpha_for_e, hertzdamp_host_phase_force, hertzdamp_host_hurwitz
+
+    !> One discrete collision: e, tau_c, its signature (release step, kind of release:
+    !> 0 overlap, 1 force clip, 2 verlet's force zero past the overlap zero; number of
+    !> steps with a contact force) and a status.
+    type :: run_t
+        real(wp) :: e = 0.0_wp
+        real(wp) :: tau = 0.0_wp
+        integer :: sig(3) = 0
+        integer :: status = HD_OK
+    end type run_t
+
+    !> A piece (a, b) of the phase interval on which the collision has one signature;
+    !> pref is a phase inside it with that signature.
+    type :: piece_t
+        real(wp) :: a = 0.0_wp, b = 1.0_wp, pref = 1.0_wp
+        integer :: sig(3) = 0
+    end type piece_t
+
+    !> The collision whose phase statistics are computed.
+    type :: ctx_t
+        real(wp) :: alpha = 0.0_wp, h = 0.0_wp
+        integer :: law = 0, iend = 0, host = 0
+    end type ctx_t
+
+    !> Running sums of the phase quadrature (integrals over the pieces done so far).
+    type :: sums_t
+        real(wp) :: ie = 0.0_wp, it = 0.0_wp, ie2 = 0.0_wp, it2 = 0.0_wp
+        real(wp) :: e_ref = 0.0_wp, t_ref = 0.0_wp
+        real(wp) :: e_min = huge(1.0_wp), e_max = -huge(1.0_wp), t_min = huge(1.0_wp), t_max = -huge(1.0_wp)
+        integer :: runs = 0
+    end type sums_t
+
+    !> Longest discrete contact followed, in units of t* (beyond it: no rebound; the
+    !> longest continuous contact of the fitted range is 50, kuwabara-kono at e = 1e-4).
+    real(wp), parameter :: contact_time_max = 5.0e2_wp
+    !> Coarse phase samples before the breakpoint search, and the most pieces.
+    integer, parameter :: n_coarse = 8, max_pieces = 256
+    !> Most discrete collisions run for one set of phase statistics (beyond it:
+    !> HD_NO_CONVERGENCE; a regular case takes 200 to 500, the chaotic releases of
+    !> alpha near alpha_c at two steps per contact 30000).
+    integer, parameter :: max_runs = 200000
+    !> The tanh-sinh quadrature takes abscissae t in [-t_max, t_max] (the weight beyond is below 1e-16 of the
+    !> piece), levels of step 2^-l, l = 0 .. level_max; a level l >= level_min whose
+    !> change from level l - 1 is below quad_tol (relative to the piece) ends the
+    !> refinement: the error then falls like the square of that change (measured below
+    !> 1e-14 of e and tau_c, test/unit/test_host.f90 checks the means against its own quadrature).
+    real(wp), parameter :: ts_t_max = 3.2_wp
+    integer, parameter :: level_min = 2, level_max = 7
+    real(wp), parameter :: quad_tol = 1.0e-10_wp
+    !> Relative tolerance of the solves (the means they match), and the most phase
+    !> statistics one solve computes before it gives up (a regular solve takes 6 to 12).
+    real(wp), parameter :: solve_tol = 2.0e-12_wp
+    integer, parameter :: max_means = 60
+    !> Largest N that hertzdamp_host_min_steps tries.
+    integer, parameter :: n_search_max = 1024
+
+contains
+
+    ! ================================================================ names and checks
+
+    !> Name of a host code ('none', 'lammps', 'mfix-euler', 'mfix-ab2', 'verlet',
+    !> 'lammps-phase'; 'unknown' for others).
+    pure function hertzdamp_host_name(host) result(name)
+        integer, intent(in) :: host   !! HD_HOST_*
+        character(len=:), allocatable :: name
+        if (host >= 0 .and. host <= hertzdamp_max_host) then
+            name = trim(host_table(host))
+        else
+            name = 'unknown'
+        end if
+    end function hertzdamp_host_name
+
+    !> Code of a host name (HD_HOST_*), -1 when the name is not a host.
+    pure integer function hertzdamp_host_code(name) result(host)
+        character(len=*), intent(in) :: name   !! a name of hertzdamp_host_name
+        integer :: k
+        host = -1
+        do k = 0, hertzdamp_max_host
+            if (trim(host_table(k)) == name) then
+                host = k
+                return
+            end if
+        end do
+    end function hertzdamp_host_code
+
+    !> HD_OK for a valid host code, else HD_BAD_HOST.
+    pure elemental integer function hertzdamp_host_status(host) result(status)
+        integer, intent(in) :: host   !! HD_HOST_*
+        status = HD_OK
+        if (host < 0 .or. host > hertzdamp_max_host) status = HD_BAD_HOST
+    end function hertzdamp_host_status
+
+    !> Status of the common arguments: host, law, contact end (in this order).
+    pure integer function check_common(law, iend, host) result(status)
+        integer, intent(in) :: law, iend, host
+        status = hertzdamp_host_status(host)
+        if (status == HD_OK) status = hertzdamp_law_status(law)
+        if (status == HD_OK .and. iend /= HD_END_OVERLAP .and. iend /= HD_END_FORCE) status = HD_BAD_END
+    end function check_common
+
+    !> HD_OK for a damping parameter of the discrete collision (finite, 0 <= alpha <= alpha_max).
+    pure integer function check_alpha(alpha) result(status)
+        real(wp), intent(in) :: alpha
+        status = HD_OK
+        if (.not. (alpha >= 0.0_wp .and. alpha <= hertzdamp_host_alpha_max)) status = HD_BAD_ALPHA
+    end function check_alpha
+
+    !> HD_OK for a dimensionless step (finite, h_min <= h <= h_max), else HD_BAD_STEPS.
+    pure integer function check_h(h) result(status)
+        real(wp), intent(in) :: h
+        status = HD_OK
+        if (.not. (h >= hertzdamp_host_h_min .and. h <= hertzdamp_host_h_max)) status = HD_BAD_STEPS
+    end function check_h
+
+    ! ================================================================ the onset/release correction
+
+    !> Hurwitz zeta function zeta(-p, a) = sum_(j >= 0) (a + j)^p (analytically continued)
+    !> for p = 1/4, 1/2, 3/2 (by square roots) or any other 0 < p < 2 (by powers) and
+    !> 0 <= a <= 1: eight terms, then the Euler-Maclaurin tail with six Bernoulli terms
+    !> at a + 8 (truncation below 5e-15; the terms cancel against the tail, so the absolute
+    !> error is below 1e-14 for p <= 1/2 and 1e-13 for p = 3/2, test/unit/test_host.f90).
+    !> zeta(-p, 0) = zeta(-p, 1) = zeta(-p), Riemann's.
+    !> zeta(0, a) = 1/2 - a.  0 for an a outside [0, 1] or a p outside (0, 2).
+    pure elemental real(wp) function hertzdamp_host_hurwitz(p, a) result(z)
+        real(wp), intent(in) :: p   !! exponent, 0 < p < 2
+        real(wp), intent(in) :: a   !! shift, 0 <= a <= 1
+        ! B_(2k) / (2k)!, k = 1 .. 6
+        real(wp), parameter :: b2k(6) = [1.0_wp / 12.0_wp, -1.0_wp / 720.0_wp, 1.0_wp / 30240.0_wp, &
+                                          -1.0_wp / 1209600.0_wp, 1.0_wp / 47900160.0_wp, &
+                                          -691.0_wp / 1307674368000.0_wp]
+        real(wp) :: x, xp, term, coef
+        integer :: j, k
+        z = 0.0_wp
+        if (.not. (a >= 0.0_wp .and. a <= 1.0_wp .and. p > 0.0_wp .and. p < 2.0_wp)) return
+        do j = 0, 7
+            z = z + pow_p(a + real(j, wp))
+        end do
+        x = a + 8.0_wp
+        xp = pow_p(x)
+        z = z - x * xp / (p + 1.0_wp) + 0.5_wp * xp
+        ! B_2k/(2k)! (-p)(1-p)...(2k-2-p) x^(p-2k+1)
+        coef = -p
+        term = xp / x
+        do k = 1, 6
+            z = z + b2k(k) * coef * term
+            coef = coef * (real(2 * k - 1, wp) - p) * (real(2 * k, wp) - p)
+            term = term / (x * x)
+        end do
+    contains
+        pure real(wp) function pow_p(y)
+            real(wp), intent(in) :: y
+            if (p == 0.25_wp) then
+                pow_p = sqrt(sqrt(y))
+            else if (p == 0.5_wp) then
+                pow_p = sqrt(y)
+            else if (p == 1.5_wp) then
+                pow_p = y * sqrt(y)
+            else
+                pow_p = y**p
+            end if
+        end function pow_p
+    end function hertzdamp_host_hurwitz
+
+    !> The onset/release phase correction of HD_HOST_LAMMPS_PHASE (LAMMPS plugin `phase
+    !> yes`), a force to add (repulsive > 0) at the step that detects a contact's onset and,
+    !> overlap end only, at the step that detects its end (doc/host-schemes.md):
+    !>     f = -d zeta' |zeta' dt|^q zeta_H(-q, frac),
+    !> zeta_H the Hurwitz zeta function.  The host applies the force of a step as an
+    !> impulse over a cell of one step centred on it; for a damping force d zeta^q zeta'
+    !> that starts (or ends) a fraction of a step away, the cells' impulse exceeds the true
+    !> one by d |zeta'|^(1+q) dt^(1+q) zeta_H(-q, frac) (Euler-Maclaurin), which f removes.
+    !> Linear law (q = 0): zeta_H(0, frac) = 1/2 - frac, f = d zeta' (frac - 1/2) exactly as
+    !> the plugin computes it (the damping force jumps by d zeta' there); q > 0 (no jump, the
+    !> force rises like s^q) the error is of order dt^(1+q) and the Hurwitz factor replaces
+    !> 1/2 - frac.  Onset: zeta' = approach speed (> 0), frac = fraction of the detecting
+    !> step already in contact; end: zeta' = overlap rate (< 0), frac = fraction of the last
+    !> step still in contact.  frac is clamped to [0, 1] (NaN: 0); an invalid law gives 0.
+    pure elemental real(wp) function hertzdamp_host_phase_force(d, zeta_dot, dt, frac, law) result(f)
+        real(wp), intent(in) :: d          !! damping coefficient of the law (force d zeta^q zeta')
+        real(wp), intent(in) :: zeta_dot   !! overlap rate zeta' at that step (approach > 0)
+        real(wp), intent(in) :: dt         !! time step
+        real(wp), intent(in) :: frac       !! fraction of the step in contact, in [0, 1]
+        integer, intent(in) :: law         !! HD_DAMPING_*
+        real(wp) :: fr, x
+        fr = frac
+        if (.not. (fr > 0.0_wp)) fr = 0.0_wp
+        if (fr > 1.0_wp) fr = 1.0_wp
+        x = abs(zeta_dot) * dt
+        select case (law)
+        case (HD_DAMPING_LINEAR)
+            f = d * zeta_dot * (fr - 0.5_wp)
+        case (HD_DAMPING_TSUJI)
+            f = -(d * zeta_dot) * sqrt(sqrt(x)) * hertzdamp_host_hurwitz(0.25_wp, fr)
+        case (HD_DAMPING_KUWABARA_KONO)
+            f = -(d * zeta_dot) * sqrt(x) * hertzdamp_host_hurwitz(0.5_wp, fr)
+        case default
+            f = 0.0_wp
+        end select
+    end function hertzdamp_host_phase_force
+
+    ! ================================================================ one discrete collision
+
+    !> One discrete collision of a host: the achieved restitution e and contact duration
+    !> tau_c (units of t*) for the onset phase phi (module header).  host = HD_HOST_NONE:
+    !> the continuous model (reference integrator; h and phi are checked, not used).  Status HD_OK,
+    !> HD_NO_REBOUND (the discrete overlap does not return within 2000 t*, or the bodies do
+    !> not separate), or for a bad argument (checked in this order) HD_BAD_HOST, HD_BAD_LAW,
+    !> HD_BAD_END, HD_BAD_ALPHA (not 0 <= alpha <= 1e4), HD_BAD_STEPS (h not in
+    !> [1e-5, 4]), HD_BAD_ARGUMENT (phi not in (0, 1]); e = tau_c = 0 on failure.
+    pure elemental subroutine hertzdamp_host_collide(alpha, h, phi, law, iend, host, e, tau_c, status)
+        real(wp), intent(in) :: alpha    !! damping parameter
+        real(wp), intent(in) :: h        !! dimensionless step dt / t*
+        real(wp), intent(in) :: phi      !! onset phase in (0, 1]: the first overlap is phi h
+        integer, intent(in) :: law       !! HD_DAMPING_*
+        integer, intent(in) :: iend      !! HD_END_OVERLAP or HD_END_FORCE
+        integer, intent(in) :: host      !! HD_HOST_*
+        real(wp), intent(out) :: e       !! achieved restitution coefficient
+        real(wp), intent(out) :: tau_c   !! achieved contact duration (units of t*)
+        integer, intent(out) :: status   !! HD_OK or the failure
+        type(run_t) :: r
+        e = 0.0_wp
+        tau_c = 0.0_wp
+        status = check_common(law, iend, host)
+        if (status == HD_OK) status = check_alpha(alpha)
+        if (status == HD_OK) status = check_h(h)
+        if (status == HD_OK .and. .not. (phi > 0.0_wp .and. phi <= 1.0_wp)) status = HD_BAD_ARGUMENT
+        if (status /= HD_OK) return
+        if (host == HD_HOST_NONE) then
+            call continuous(alpha, law, iend, e, tau_c, status)
+            return
+        end if
+        call run(alpha, h, phi, law, iend, host, r)
+        status = r%status
+        if (status == HD_OK) then
+            e = r%e
+            tau_c = r%tau
+        end if
+    end subroutine hertzdamp_host_collide
+
+    !> The continuous collision (reference integrator at its default tolerance).
+    pure subroutine continuous(alpha, law, iend, e, tau_c, status)
+        real(wp), intent(in) :: alpha
+        integer, intent(in) :: law, iend
+        real(wp), intent(out) :: e, tau_c
+        integer, intent(out) :: status
+        type(hertzdamp_collision) :: c
+        c = hertzdamp_rk45_collide(alpha, iend, law=law)
+        status = c%status
+        e = 0.0_wp
+        tau_c = 0.0_wp
+        if (status == HD_OK) then
+            e = c%e
+            tau_c = c%tau_c
+        end if
+    end subroutine continuous
+
+    !> The discrete collision of a host (arguments checked by the caller).
+    pure subroutine run(alpha, h, phi, law, iend, host, r)
+        real(wp), intent(in) :: alpha, h, phi
+        integer, intent(in) :: law, iend, host
+        type(run_t), intent(out) :: r
+        integer :: nmax
+        nmax = int(contact_time_max / h) + 16
+        select case (host)
+        case (HD_HOST_MFIX_AB2)
+            call run_ab2(alpha, h, phi, law, iend, nmax, r)
+        case (HD_HOST_VERLET)
+            call run_verlet(alpha, h, phi, law, iend, nmax, r)
+        case default
+            call run_symplectic(alpha, h, phi, law, iend, host == HD_HOST_LAMMPS_PHASE, nmax, r)
+        end select
+        if (r%status == HD_OK .and. .not. (r%e > 0.0_wp)) r%status = HD_NO_REBOUND
+        if (r%status /= HD_OK) then
+            r%e = 0.0_wp
+            r%tau = 0.0_wp
+        end if
+    end subroutine run
+
+    !> z^q of the law by square roots (1 for the linear law), z >= 0.
+    pure real(wp) function zq(z, law)
+        real(wp), intent(in) :: z
+        integer, intent(in) :: law
+        select case (law)
+        case (HD_DAMPING_TSUJI)
+            zq = sqrt(sqrt(z))
+        case (HD_DAMPING_KUWABARA_KONO)
+            zq = sqrt(z)
+        case default
+            zq = 1.0_wp
+        end select
+    end function zq
+
+    !> Fill the result of a collision released at step n (kind, fraction frac of the step
+    !> before the release) with separation velocity -w and nf force steps.
+    pure subroutine finish_run(h, phi, n, kind, frac, w, nf, r)
+        real(wp), intent(in) :: h, phi, frac, w
+        integer, intent(in) :: n, kind, nf
+        type(run_t), intent(inout) :: r
+        r%e = -w
+        ! release at t_(n-1) + frac h, touch at t_1 - phi h (t_k = k h)
+        r%tau = h * (real(n - 2, wp) + frac + phi)
+        r%sig = [n, kind, nf]
+    end subroutine finish_run
+
+    !> The lammps, mfix-euler and lammps-phase schemes: at step n the force from z_n and the velocity
+    !> w_n that moved the body there, then w_(n+1) = w_n - h F_n, z_(n+1) = z_n + h w_(n+1).
+    !> phase: the plugin's correction at the onset step and at the step detecting the
+    !> overlap end (hertzdamp_host_phase_force).
+    pure subroutine run_symplectic(alpha, h, phi, law, iend, phase, nmax, r)
+        real(wp), intent(in) :: alpha, h, phi
+        integer, intent(in) :: law, iend, nmax
+        logical, intent(in) :: phase
+        type(run_t), intent(inout) :: r
+        real(wp) :: z, w, f, fa, zp, fp, frac
+        integer :: n
+        z = phi * h
+        w = 1.0_wp
+        zp = 0.0_wp
+        fp = 0.0_wp
+        do n = 1, nmax
+            if (n > 1 .and. .not. (z > 0.0_wp)) then
+                ! overlap gone at step n: no force; the plugin's release correction
+                frac = zp / (zp - z)
+                if (phase .and. iend == HD_END_OVERLAP) w = w - h * hertzdamp_host_phase_force(alpha, w, h, frac, law)
+                call finish_run(h, phi, n, 0, frac, w, n - 1, r)
+                return
+            end if
+            f = z * sqrt(z) + alpha * zq(z, law) * w
+            if (iend == HD_END_FORCE .and. .not. (f > 0.0_wp)) then
+                ! force end (n > 1: the first force is positive): clipped from here on
+                call finish_run(h, phi, n, 1, fp / (fp - f), w, n - 1, r)
+                return
+            end if
+            fa = f
+            if (phase .and. n == 1) fa = f + hertzdamp_host_phase_force(alpha, w, h, phi, law)
+            w = w - h * fa
+            zp = z
+            fp = f
+            z = z + h * w
+        end do
+        r%status = HD_NO_REBOUND
+    end subroutine run_symplectic
+
+    !> The mfix-ab2 scheme: a_n from (z_n, v_n) (clipped at the force end), v_(n+1) = v_n +
+    !> h (3 a_n - a_(n-1))/2, z_(n+1) = z_n + h (v_n + v_(n+1))/2; a_0 = 0 (free flight
+    !> before the contact).  The release is the first step without overlap (or with a
+    !> clipped force); the free-flight speed is final once a_n = a_(n-1) = 0.  An overlap
+    !> that comes back after it was gone (no separation): HD_NO_REBOUND.
+    pure subroutine run_ab2(alpha, h, phi, law, iend, nmax, r)
+        real(wp), intent(in) :: alpha, h, phi
+        integer, intent(in) :: law, iend, nmax
+        type(run_t), intent(inout) :: r
+        real(wp) :: z, v, vn, a, aold, f, fa, zp, fp, frac
+        integer :: n, nrel, kind, nf
+        logical :: released, gone
+        z = phi * h
+        v = 1.0_wp
+        aold = 0.0_wp
+        zp = 0.0_wp
+        fp = 0.0_wp
+        f = 0.0_wp
+        frac = 0.0_wp
+        nrel = 0
+        kind = 0
+        nf = 0
+        released = .false.
+        gone = .false.
+        do n = 1, nmax
+            if (z > 0.0_wp) then
+                if (gone) then
+                    r%status = HD_NO_REBOUND
+                    return
+                end if
+                f = z * sqrt(z) + alpha * zq(z, law) * v
+                fa = f
+                if (iend == HD_END_FORCE) fa = max(f, 0.0_wp)
+                if (.not. released .and. iend == HD_END_FORCE .and. .not. (f > 0.0_wp)) then
+                    released = .true.
+                    nrel = n
+                    kind = 1
+                    frac = fp / (fp - f)
+                end if
+            else
+                fa = 0.0_wp
+                gone = .true.
+                if (.not. released) then
+                    released = .true.
+                    nrel = n
+                    kind = 0
+                    frac = zp / (zp - z)
+                end if
+            end if
+            if (.not. released) then
+                zp = z
+                fp = f
+            end if
+            a = -fa
+            if (fa /= 0.0_wp) nf = nf + 1
+            if (released .and. a == 0.0_wp .and. aold == 0.0_wp) then
+                call finish_run(h, phi, nrel, kind, frac, v, nf, r)
+                return
+            end if
+            vn = v + 0.5_wp * h * (3.0_wp * a - aold)
+            z = z + 0.5_wp * h * (v + vn)
+            v = vn
+            aold = a
+        end do
+        r%status = HD_NO_REBOUND
+    end subroutine run_ab2
+
+    !> The verlet scheme, the scene engine's sequence for one contact (packages/scene/src/hertzdamp_dem_engine.f90,
+    !> doc/host-schemes.md): half kick, drift, the velocity v_pred = v_half + h/2 A +
+    !> h/2 (A - A_prev) in the damping, the force, the closing half kick plus the impulse
+    !> corrections of the onset step (the part of the step in contact, the Hertz and
+    !> damping trapezoid errors g_p), of the overlap end (same, with the last force) and of
+    !> the force end (the force zero on a model of its step).  The engine's end instants.
+    pure subroutine run_verlet(alpha, h, phi, law, iend, nmax, r)
+        real(wp), intent(in) :: alpha, h, phi
+        integer, intent(in) :: law, iend, nmax
+        type(run_t), intent(inout) :: r
+        real(wp) :: q, z, v, vh, vp, acc, acc_prev, f, dv, fh, fd, zl, vl, fl, s, us, jn
+        integer :: n, kind
+        q = hertzdamp_law_q(law)
+        s = 0.0_wp
+        ! step 1 (onset): free flight before it (acc = acc_prev = 0, v = 1), in contact
+        ! for the fraction phi of the step; the impact speed is 1
+        z = phi * h
+        fh = z * sqrt(z)
+        fd = alpha * zq(z, law)
+        jn = (fd * (phi / (1.0_wp + q) - 0.5_wp) + fh * (0.4_wp * phi - 0.5_wp)) * h &
+             - trapezoid_g(1.5_wp, phi) * h * h * sqrt(h)
+        if (q > 0.0_wp) jn = jn - trapezoid_g(q, phi) * alpha * h * zq(h, law)
+        f = fh + fd
+        fl = f
+        zl = z
+        vl = 1.0_wp
+        acc_prev = 0.0_wp
+        acc = -f
+        v = 1.0_wp + 0.5_wp * h * acc - jn
+        do n = 2, nmax
+            vh = v + 0.5_wp * h * acc
+            z = z + h * vh
+            vp = vh + 0.5_wp * h * acc + 0.5_wp * h * (acc - acc_prev)
+            dv = 0.0_wp
+            f = 0.0_wp
+            kind = -1
+            if (.not. (z > 0.0_wp) .and. iend == HD_END_FORCE .and. alpha * vp < 0.0_wp) then
+                ! force end, the step passed the force zero and the overlap zero
+                s = force_zero(alpha, law, zl, vl, z, vp)
+                dv = -fl * (s - 1.0_wp) * 0.5_wp * h
+                kind = 2
+            else if (.not. (z > 0.0_wp)) then
+                ! overlap end: the last force for the part of the step in contact
+                s = overlap_fraction(zl, z)
+                us = max(zl - z, 0.0_wp) / h
+                fh = max(zl, 0.0_wp) * sqrt(max(zl, 0.0_wp))
+                jn = ((fl - fh) * (s / (1.0_wp + q) - 0.5_wp) + fh * (0.4_wp * s - 0.5_wp)) * h &
+                     - trapezoid_g(1.5_wp, s) * us * sqrt(us) * h * h * sqrt(h)
+                if (q > 0.0_wp) jn = jn + trapezoid_g(q, s) * alpha * us * zq(us, law) * h * zq(h, law)
+                dv = -jn
+                kind = 0
+            else
+                f = z * sqrt(z) + alpha * zq(z, law) * vp
+                if (iend == HD_END_FORCE .and. .not. (f > 0.0_wp)) then
+                    s = force_zero(alpha, law, zl, vl, z, vp)
+                    dv = -fl * (s - 1.0_wp) * 0.5_wp * h
+                    f = 0.0_wp
+                    kind = 1
+                else
+                    fl = f
+                    zl = z
+                    vl = vp
+                end if
+            end if
+            acc_prev = acc
+            acc = -f
+            v = vh + 0.5_wp * h * acc + dv
+            if (kind >= 0) then
+                ! the separation speed at the end instant: no force acts after it
+                call finish_run(h, phi, n, kind, s, v, n - 1, r)
+                return
+            end if
+        end do
+        r%status = HD_NO_REBOUND
+    end subroutine run_verlet
+
+    !> The engine's trapezoid error g_p(theta) = zeta_H(-p, theta) + theta^(p+1)/(p+1) -
+    !> theta^p/2 of a force c s^p starting (or ending) a fraction theta of a step away
+    !> (packages/scene/src/hertzdamp_dem_engine.f90: start_error p = 3/2, trapezoid_error p = q).
+    pure real(wp) function trapezoid_g(p, theta) result(g)
+        real(wp), intent(in) :: p, theta
+        real(wp) :: tp
+        if (p == 1.5_wp) then
+            tp = theta * sqrt(theta)
+        else if (p == 0.5_wp) then
+            tp = sqrt(theta)
+        else
+            tp = sqrt(sqrt(theta))
+        end if
+        g = hertzdamp_host_hurwitz(p, theta) + theta * tp / (p + 1.0_wp) - 0.5_wp * tp
+    end function trapezoid_g
+
+    !> The engine's overlap_fraction: the part of the step before the overlap falls from
+    !> zl to 0 at ze, in [0, 1].
+    pure real(wp) function overlap_fraction(zl, ze) result(s)
+        real(wp), intent(in) :: zl, ze
+        s = 0.0_wp
+        if (zl - ze > 0.0_wp) s = min(1.0_wp, max(0.0_wp, zl / (zl - ze)))
+    end function overlap_fraction
+
+    !> The engine's force_zero_model: the zero in s of G(s) = max(z(s), 0)^(3/2 - q) +
+    !> alpha v(s), z and v linear over the step from (zl, vl) to (ze, ve), on [0, 1] or up to
+    !> the overlap zero; G(0) > 0.  Found here to round-off by the Illinois method (the
+    !> engine bisects 60 times: the same zero to 1e-18).
+    pure real(wp) function force_zero(alpha, law, zl, vl, ze, ve) result(s)
+        real(wp), intent(in) :: alpha, zl, vl, ze, ve
+        integer, intent(in) :: law
+        real(wp) :: lo, hi, glo, ghi, gs
+        integer :: it, side
+        lo = 0.0_wp
+        hi = 1.0_wp
+        if (ze <= 0.0_wp .and. zl - ze > 0.0_wp) hi = zl / (zl - ze)
+        ghi = g(hi)
+        s = hi
+        if (ghi > 0.0_wp) return
+        glo = g(lo)
+        side = 0
+        do it = 1, 200
+            s = illinois_point(lo, hi, glo, ghi)
+            gs = g(s)
+            call illinois_update(s, gs, lo, hi, glo, ghi, side)
+            if (hi - lo <= 4.0_wp * spacing(hi) .or. gs == 0.0_wp) exit
+        end do
+    contains
+        pure real(wp) function g(t)
+            real(wp), intent(in) :: t
+            real(wp) :: zz
+            zz = max(zl + t * (ze - zl), 0.0_wp)
+            g = zz * sqrt(zz) / zq(zz, law) + alpha * (vl + t * (ve - vl))
+            if (zz == 0.0_wp) g = alpha * (vl + t * (ve - vl))
+        end function g
+    end function force_zero
+
+    !> The next point of the Illinois method in a bracket (lo, hi) of a function falling
+    !> through zero (glo > 0 >= ghi): the secant's zero, or the middle when the secant
+    !> leaves the bracket.
+    pure real(wp) function illinois_point(lo, hi, glo, ghi) result(s)
+        real(wp), intent(in) :: lo, hi, glo, ghi
+        s = lo + (hi - lo) * glo / (glo - ghi)
+        if (.not. (s > lo .and. s < hi)) s = 0.5_wp * (lo + hi)
+    end function illinois_point
+
+    !> The bracket after the value gs at s: s replaces the end of the same sign; when the
+    !> same end was replaced twice in a row, the other end's value is halved (side: -1 the
+    !> low end was replaced last, 1 the high end, 0 none yet).
+    pure subroutine illinois_update(s, gs, lo, hi, glo, ghi, side)
+        real(wp), intent(in) :: s, gs
+        real(wp), intent(inout) :: lo, hi, glo, ghi
+        integer, intent(inout) :: side
+        if (gs > 0.0_wp) then
+            lo = s
+            glo = gs
+            if (side == -1) ghi = 0.5_wp * ghi
+            side = -1
+        else
+            hi = s
+            ghi = gs
+            if (side == 1) glo = 0.5_wp * glo
+            side = 1
+        end if
+    end subroutine illinois_update
+
+    ! ================================================================ phase statistics
+
+    !> Phase statistics of a host's discrete collision: mean, standard deviation, min and
+    !> max of e and tau_c over the onset phase phi uniform on (0, 1] (module header; the
+    !> means to about 1e-14).  host = HD_HOST_NONE: the continuous e and tau_c with zero
+    !> spread (h checked, not used).  Status as hertzdamp_host_collide (HD_NO_REBOUND when
+    !> some phase does not rebound; HD_NO_CONVERGENCE when the quadrature does not settle:
+    !> more than 200000 collisions or 256 pieces, or a piece whose tanh-sinh levels do not
+    !> agree by level 7, not met in the tested range); zero statistics on failure.
+    pure subroutine hertzdamp_host_mean(alpha, h, law, iend, host, stats, status)
+        real(wp), intent(in) :: alpha                     !! damping parameter
+        real(wp), intent(in) :: h                         !! dimensionless step dt / t*
+        integer, intent(in) :: law                        !! HD_DAMPING_*
+        integer, intent(in) :: iend                       !! HD_END_OVERLAP or HD_END_FORCE
+        integer, intent(in) :: host                       !! HD_HOST_*
+        type(hertzdamp_host_stats), intent(out) :: stats  !! phase statistics
+        integer, intent(out) :: status                    !! HD_OK or the failure
+        real(wp) :: e, tau
+        status = check_common(law, iend, host)
+        if (status == HD_OK) status = check_alpha(alpha)
+        if (status == HD_OK) status = check_h(h)
+        if (status /= HD_OK) return
+        if (host == HD_HOST_NONE) then
+            call continuous(alpha, law, iend, e, tau, status)
+            if (status == HD_OK) stats = point_stats(e, tau)
+            return
+        end if
+        call phase_stats(alpha, h, law, iend, host, stats, status)
+    end subroutine hertzdamp_host_mean
+
+    !> Statistics of a collision without spread.
+    pure type(hertzdamp_host_stats) function point_stats(e, tau) result(s)
+        real(wp), intent(in) :: e, tau
+        s = hertzdamp_host_stats(e, 0.0_wp, e, e, tau, 0.0_wp, tau, tau)
+    end function point_stats
+
+    !> The phase statistics of a host's discrete collision (arguments checked).
+    pure subroutine phase_stats(alpha, h, law, iend, host, stats, status)
+        real(wp), intent(in) :: alpha, h
+        integer, intent(in) :: law, iend, host
+        type(hertzdamp_host_stats), intent(out) :: stats
+        integer, intent(out) :: status
+        type(ctx_t) :: cx
+        type(piece_t) :: pieces(max_pieces), pc
+        type(run_t) :: rs(n_coarse)
+        type(sums_t) :: acc
+        real(wp) :: ps(n_coarse), xbad, b
+        integer :: j, np, sbad(3)
+        logical :: bad
+        cx = ctx_t(alpha, h, law, iend, host)
+        status = HD_OK
+        ! coarse samples phi_j = j / M; the first one's values are the references of the
+        ! variance sums
+        do j = 1, n_coarse
+            ps(j) = real(j, wp) / real(n_coarse, wp)
+            call sample(cx, ps(j), rs(j), acc)
+            if (rs(j)%status /= HD_OK) then
+                status = rs(j)%status
+                return
+            end if
+        end do
+        acc%e_ref = rs(1)%e
+        acc%t_ref = rs(1)%tau
+        ! the pieces between signature changes of the samples (a stack worked from its
+        ! top; each piece knows a phase of its own signature)
+        np = 0
+        pc = piece_t(0.0_wp, 1.0_wp, ps(1), rs(1)%sig)
+        do j = 2, n_coarse
+            if (any(rs(j)%sig /= rs(j - 1)%sig)) then
+                call breakpoint(cx, ps(j - 1), rs(j - 1)%sig, ps(j), b, acc, status)
+                if (status /= HD_OK) return
+                pc%b = b
+                call push(pieces, np, pc, status)
+                pc = piece_t(b, 1.0_wp, ps(j), rs(j)%sig)
+            end if
+        end do
+        call push(pieces, np, pc, status)
+        if (status /= HD_OK) return
+        do while (np > 0)
+            pc = pieces(np)
+            np = np - 1
+            call integrate_piece(cx, pc, acc, bad, xbad, sbad, status)
+            if (status /= HD_OK) return
+            if (bad) then
+                ! a phase inside the piece with another signature: split at the breakpoint
+                ! between it and the piece's own phase, and do both parts again
+                call breakpoint(cx, pc%pref, pc%sig, xbad, b, acc, status)
+                if (status /= HD_OK) return
+                if (xbad > pc%pref) then
+                    call push(pieces, np, piece_t(pc%a, b, pc%pref, pc%sig), status)
+                    call push(pieces, np, piece_t(b, pc%b, xbad, sbad), status)
+                else
+                    call push(pieces, np, piece_t(b, pc%b, pc%pref, pc%sig), status)
+                    call push(pieces, np, piece_t(pc%a, b, xbad, sbad), status)
+                end if
+                if (status /= HD_OK) return
+            end if
+        end do
+        stats%e_mean = acc%ie
+        stats%tau_mean = acc%it
+        stats%e_sd = sqrt(max(acc%ie2 - (acc%ie - acc%e_ref)**2, 0.0_wp))
+        stats%tau_sd = sqrt(max(acc%it2 - (acc%it - acc%t_ref)**2, 0.0_wp))
+        stats%e_min = acc%e_min
+        stats%e_max = acc%e_max
+        stats%tau_min = acc%t_min
+        stats%tau_max = acc%t_max
+        status = HD_OK
+    end subroutine phase_stats
+
+    !> One collision at phase p, its values kept for the min and max.
+    pure subroutine sample(cx, p, r, acc)
+        type(ctx_t), intent(in) :: cx
+        real(wp), intent(in) :: p
+        type(run_t), intent(out) :: r
+        type(sums_t), intent(inout) :: acc
+        acc%runs = acc%runs + 1
+        if (acc%runs > max_runs) then
+            r%status = HD_NO_CONVERGENCE
+            return
+        end if
+        call run(cx%alpha, cx%h, p, cx%law, cx%iend, cx%host, r)
+        if (r%status == HD_OK) then
+            acc%e_min = min(acc%e_min, r%e)
+            acc%e_max = max(acc%e_max, r%e)
+            acc%t_min = min(acc%t_min, r%tau)
+            acc%t_max = max(acc%t_max, r%tau)
+        end if
+    end subroutine sample
+
+    !> Push a piece on the stack; status HD_NO_CONVERGENCE when it is full.
+    pure subroutine push(pieces, np, p, status)
+        type(piece_t), intent(inout) :: pieces(:)
+        integer, intent(inout) :: np
+        type(piece_t), intent(in) :: p
+        integer, intent(inout) :: status
+        if (np < size(pieces)) then
+            np = np + 1
+            pieces(np) = p
+        else
+            status = HD_NO_CONVERGENCE
+        end if
+    end subroutine push
+
+    !> The breakpoint b between the phases p1 (signature s1) and p2 (another signature),
+    !> to round-off: bisection on the signature (whatever differs from s1 counts as the
+    !> other side, so with several breakpoints between them the one found is one of them).
+    pure subroutine breakpoint(cx, p1, s1, p2, b, acc, status)
+        type(ctx_t), intent(in) :: cx
+        real(wp), intent(in) :: p1, p2
+        integer, intent(in) :: s1(3)
+        real(wp), intent(out) :: b
+        type(sums_t), intent(inout) :: acc
+        integer, intent(out) :: status
+        real(wp) :: x1, x2, xm
+        integer :: it
+        type(run_t) :: rm
+        x1 = p1
+        x2 = p2
+        status = HD_OK
+        do it = 1, 200
+            xm = 0.5_wp * (x1 + x2)
+            if (xm == x1 .or. xm == x2) exit
+            call sample(cx, xm, rm, acc)
+            if (rm%status /= HD_OK) then
+                status = rm%status
+                exit
+            end if
+            if (all(rm%sig == s1)) then
+                x1 = xm
+            else
+                x2 = xm
+            end if
+        end do
+        b = 0.5_wp * (x1 + x2)
+    end subroutine breakpoint
+
+    !> tanh-sinh quadrature of e, tau_c, (e - e_ref)^2 and (tau_c - t_ref)^2 over one
+    !> piece, levels of step 2^-l until two successive levels of e and tau_c agree to
+    !> quad_tol (relative); the integrals are added to acc.  A node whose signature is not the
+    !> piece's: bad, with its phase and signature (nothing added).
+    pure subroutine integrate_piece(cx, p, acc, bad, xbad, sbad, status)
+        type(ctx_t), intent(in) :: cx
+        type(piece_t), intent(in) :: p
+        type(sums_t), intent(inout) :: acc
+        logical, intent(out) :: bad
+        real(wp), intent(out) :: xbad
+        integer, intent(out) :: sbad(3)
+        integer, intent(out) :: status
+        real(wp) :: width, t, ht, u, em, dend, wgt, guard, x, s(4), prev(4), cur(4)
+        integer :: level, k, kstep, side
+        type(run_t) :: r
+        bad = .false.
+        xbad = 0.0_wp
+        sbad = 0
+        status = HD_OK
+        width = p%b - p%a
+        if (.not. (width > 0.0_wp)) return
+        ! nodes closer to an end than this are that end (a breakpoint is known to
+        ! round-off): left out, their weight is below 1e-15 of the piece
+        guard = 4.0_wp * spacing(max(abs(p%a), abs(p%b)))
+        s = 0.0_wp
+        prev = 0.0_wp
+        cur = 0.0_wp
+        do level = 0, level_max
+            ht = 2.0_wp**(-level)
+            kstep = merge(1, 2, level == 0)
+            k = merge(0, 1, level == 0)
+            do while (real(k, wp) * ht <= ts_t_max)
+                t = real(k, wp) * ht
+                u = 0.5_wp * hertzdamp_pi * sinh(t)
+                em = exp(-2.0_wp * u)
+                ! distance of the node from the nearer end, and dphi/dt there
+                dend = width * em / (1.0_wp + em)
+                wgt = width * hertzdamp_pi * cosh(t) * em / (1.0_wp + em)**2
+                do side = -1, 1, 2
+                    if (k == 0 .and. side == 1) cycle
+                    if (dend <= guard) cycle
+                    x = merge(p%a + dend, p%b - dend, side == -1)
+                    call sample(cx, x, r, acc)
+                    if (r%status /= HD_OK) then
+                        status = r%status
+                        return
+                    end if
+                    if (any(r%sig /= p%sig)) then
+                        bad = .true.
+                        xbad = x
+                        sbad = r%sig
+                        return
+                    end if
+                    s = s + wgt * [r%e, r%tau, (r%e - acc%e_ref)**2, (r%tau - acc%t_ref)**2]
+                end do
+                k = k + kstep
+            end do
+            cur = s * ht
+            ! converged: the change of the level below quad_tol of the piece, or (pieces a
+            ! few doubles wide) below the weight of the nodes left out next to the ends
+            if (level >= level_min) then
+                if (abs(cur(1) - prev(1)) <= quad_tol * max(width, abs(cur(1))) + 16.0_wp * guard * &
+                    max(1.0_wp, abs(cur(1)) / width) .and. abs(cur(2) - prev(2)) <= quad_tol * max(width, abs(cur(2))) &
+                    + 16.0_wp * guard * max(1.0_wp, abs(cur(2)) / width)) exit
+            end if
+            if (level == level_max) status = HD_NO_CONVERGENCE
+            prev = cur
+        end do
+        acc%ie = acc%ie + cur(1)
+        acc%it = acc%it + cur(2)
+        acc%ie2 = acc%ie2 + cur(3)
+        acc%it2 = acc%it2 + cur(4)
+    end subroutine integrate_piece
+
+    ! ================================================================ per-pair constants
+
+    !> The per-pair constants of a host (doc/host-schemes.md): alpha and tau_c such that
+    !> with h = tau_c / steps the host's phase means are e_mean = e and tau_mean = tau_c,
+    !> each to 1e-10 relative (Newton's method on the phase means in (alpha, h), started from
+    !> the continuous inverse of the law and end).  stats: the phase statistics there.
+    !> host = HD_HOST_NONE: exactly hertzdamp_fit_inverse (alpha(e), tau_c(alpha)) with
+    !> zero spread (steps checked, not used).  steps is real (T_c = N dt need not be whole).  Status HD_OK; for bad
+    !> input (in this order) HD_BAD_HOST, HD_BAD_LAW, HD_BAD_END, HD_BAD_RESTITUTION (e
+    !> outside the fitted inverse's range), HD_BAD_STEPS (not 2 <= steps <= 1e5); HD_HOST_UNREACHABLE
+    !> when no alpha >= 0 reaches e at this many steps (hertzdamp_host_min_steps); zero
+    !> outputs on failure.
+    pure subroutine hertzdamp_host_solve(e, law, iend, host, steps, alpha, tau_c, stats, status)
+        real(wp), intent(in) :: e                         !! target restitution coefficient
+        integer, intent(in) :: law                        !! HD_DAMPING_*
+        integer, intent(in) :: iend                       !! HD_END_OVERLAP or HD_END_FORCE
+        integer, intent(in) :: host                       !! HD_HOST_*
+        real(wp), intent(in) :: steps                     !! steps per contact N = T_c / dt
+        real(wp), intent(out) :: alpha                    !! damping parameter for the host
+        real(wp), intent(out) :: tau_c                    !! contact duration (units of t*): t* = T_c / tau_c
+        type(hertzdamp_host_stats), intent(out) :: stats  !! phase statistics at the solution
+        integer, intent(out) :: status                    !! HD_OK or the failure
+        real(wp) :: a0, t0, x(2), r(2), xt(2), rt(2), jac(2, 2), dx(2), sc(2), det, lam, nrm, nrmt, f
+        type(hertzdamp_host_stats) :: st0, stt
+        integer :: it, ls, sv, nev
+        logical :: fresh, need_jac, ok
+        alpha = 0.0_wp
+        tau_c = 0.0_wp
+        status = check_common(law, iend, host)
+        if (status /= HD_OK) return
+        call hertzdamp_fit_inverse(e, iend, a0, t0, status, law)
+        if (status == HD_OK) then
+            if (.not. (steps >= hertzdamp_host_steps_min .and. steps <= hertzdamp_host_steps_max)) status = HD_BAD_STEPS
+        end if
+        if (status /= HD_OK) return
+        if (host == HD_HOST_NONE) then
+            alpha = a0
+            tau_c = t0
+            stats = point_stats(e, t0)
+            return
+        end if
+        ! Newton in x = (alpha, h) on r = (e_mean - e, tau_mean / (N h) - 1): a forward
+        ! difference Jacobian, Broyden updates while the residual falls fast, a trust
+        ! region (alpha moves by at most half its size, h by at most 40 %) and step halving
+        status = HD_HOST_UNREACHABLE
+        x = [a0, t0 / steps]
+        call residual(x, r, st0, sv)
+        nev = 1
+        if (sv /= HD_OK) return
+        nrm = rnorm(r)
+        need_jac = .true.
+        fresh = .false.
+        jac = 0.0_wp
+        nrmt = nrm
+        do it = 1, 40
+            if (abs(r(1)) <= solve_tol * e .and. abs(r(2)) <= solve_tol) then
+                alpha = x(1)
+                tau_c = steps * x(2)
+                stats = st0
+                status = HD_OK
+                return
+            end if
+            if (nev > max_means) return
+            if (need_jac) then
+                call jacobian(x, r, jac, sv)
+                nev = nev + 2
+                if (sv /= HD_OK) return
+                fresh = .true.
+                need_jac = .false.
+            end if
+            det = jac(1, 1) * jac(2, 2) - jac(1, 2) * jac(2, 1)
+            if (.not. (abs(det) > 0.0_wp)) return
+            dx(1) = -(jac(2, 2) * r(1) - jac(1, 2) * r(2)) / det
+            dx(2) = -(jac(1, 1) * r(2) - jac(2, 1) * r(1)) / det
+            sc = [max(x(1), 0.05_wp), x(2)]
+            f = max(abs(dx(1)) / (0.5_wp * sc(1)), abs(dx(2)) / (0.4_wp * sc(2)), 1.0_wp)
+            dx = dx / f
+            lam = 1.0_wp
+            ok = .false.
+            do ls = 1, 6
+                xt = x + lam * dx
+                xt(1) = max(xt(1), 0.0_wp)
+                call residual(xt, rt, stt, sv)
+                nev = nev + 1
+                if (sv == HD_OK) then
+                    nrmt = rnorm(rt)
+                    ok = nrmt < nrm
+                end if
+                if (ok .or. nev > max_means) exit
+                lam = 0.5_wp * lam
+            end do
+            if (.not. ok) then
+                ! no progress along a fresh Newton direction: no solution near here;
+                ! after Broyden updates, try once more with a new Jacobian
+                if (fresh) return
+                need_jac = .true.
+                cycle
+            end if
+            ! Broyden's update (inner product scaled by sc); a new Jacobian next time when
+            ! the residual fell by less than half
+            dx = xt - x
+            jac = jac + matmul(reshape(rt - r - matmul(jac, dx), [2, 1]), reshape(dx / sc**2, [1, 2])) &
+                  / sum((dx / sc)**2)
+            fresh = .false.
+            need_jac = nrmt > 0.5_wp * nrm
+            x = xt
+            r = rt
+            nrm = nrmt
+            st0 = stt
+        end do
+    contains
+        !> The residual at xx; sv /= HD_OK where the phase statistics fail.
+        pure subroutine residual(xx, rr, ss, sv)
+            real(wp), intent(in) :: xx(2)
+            real(wp), intent(out) :: rr(2)
+            type(hertzdamp_host_stats), intent(out) :: ss
+            integer, intent(out) :: sv
+            rr = huge(1.0_wp)
+            sv = check_alpha(xx(1))
+            if (sv == HD_OK) sv = check_h(xx(2))
+            if (sv /= HD_OK) return
+            call phase_stats(xx(1), xx(2), law, iend, host, ss, sv)
+            if (sv /= HD_OK) return
+            rr(1) = ss%e_mean - e
+            rr(2) = ss%tau_mean / (steps * xx(2)) - 1.0_wp
+        end subroutine residual
+
+        !> Forward-difference Jacobian at xx (residual rr there).
+        pure subroutine jacobian(xx, rr, jj, sv)
+            real(wp), intent(in) :: xx(2), rr(2)
+            real(wp), intent(out) :: jj(2, 2)
+            integer, intent(out) :: sv
+            real(wp) :: d, rd(2)
+            type(hertzdamp_host_stats) :: sd
+            jj = 0.0_wp
+            d = 1.0e-7_wp * max(xx(1), 1.0e-3_wp)
+            call residual([xx(1) + d, xx(2)], rd, sd, sv)
+            jj(:, 1) = (rd - rr) / d
+            if (sv /= HD_OK) return
+            d = 1.0e-7_wp * xx(2)
+            call residual([xx(1), xx(2) + d], rd, sd, sv)
+            jj(:, 2) = (rd - rr) / d
+        end subroutine jacobian
+
+        pure real(wp) function rnorm(rr)
+            real(wp), intent(in) :: rr(2)
+            rnorm = max(abs(rr(1)) / min(e, 1.0_wp), abs(rr(2)))
+        end function rnorm
+    end subroutine hertzdamp_host_solve
+
+    !> The smallest whole number of steps per contact N (>= 2) for which
+    !> hertzdamp_host_solve succeeds: N - 1 fails (or is below 2), N succeeds.  For messages
+    !> such as "N = 3 steps cannot reach e = 0.5 with lammps; N >= 6 can".  host none: 2.
+    !> Every N up to 32 is tried, beyond that the search doubles N up to 1024 and bisects.
+    !> Status HD_OK, a bad-input status of hertzdamp_host_solve, or HD_HOST_UNREACHABLE when
+    !> no N up to 1024 succeeds (n_min = 0).
+    pure subroutine hertzdamp_host_min_steps(e, law, iend, host, n_min, status)
+        real(wp), intent(in) :: e        !! target restitution coefficient
+        integer, intent(in) :: law       !! HD_DAMPING_*
+        integer, intent(in) :: iend      !! HD_END_OVERLAP or HD_END_FORCE
+        integer, intent(in) :: host      !! HD_HOST_*
+        integer, intent(out) :: n_min    !! smallest whole N that the solve reaches
+        integer, intent(out) :: status   !! HD_OK or the failure
+        integer :: n, lo, hi, mid, st
+        n_min = 0
+        ! the bad-input statuses first, at N = 2 (a valid N)
+        call try(2, st)
+        if (st == HD_OK) then
+            n_min = 2
+            status = HD_OK
+            return
+        end if
+        status = st
+        if (st /= HD_HOST_UNREACHABLE) return
+        ! every N up to 32, then doubling up to 1024 and bisection between the last
+        ! failure and the first success
+        do n = 3, 32
+            call try(n, st)
+            if (st == HD_OK) then
+                n_min = n
+                status = HD_OK
+                return
+            end if
+        end do
+        lo = 32
+        hi = 64
+        do
+            call try(hi, st)
+            if (st == HD_OK) exit
+            lo = hi
+            if (hi >= n_search_max) then
+                status = HD_HOST_UNREACHABLE
+                return
+            end if
+            hi = 2 * hi
+        end do
+        do while (hi - lo > 1)
+            mid = (lo + hi) / 2
+            call try(mid, st)
+            if (st == HD_OK) then
+                hi = mid
+            else
+                lo = mid
+            end if
+        end do
+        n_min = hi
+        status = HD_OK
+    contains
+        pure subroutine try(nn, st)
+            integer, intent(in) :: nn
+            integer, intent(out) :: st
+            real(wp) :: a, t
+            type(hertzdamp_host_stats) :: s
+            call hertzdamp_host_solve(e, law, iend, host, real(nn, wp), a, t, s, st)
+        end subroutine try
+    end subroutine hertzdamp_host_min_steps
+
+    !> At a fixed dimensionless step h (a deck's k and dt fix t* and h), the damping alpha >= 0
+    !> whose phase-mean e equals e (to 1e-10 relative), and the phase statistics there: the
+    !> corrected coefficient of a deck.  host none: the continuous alpha(e) of the fit (h
+    !> checked, not used).
+    !> Status HD_OK; bad input as hertzdamp_host_solve (HD_BAD_STEPS for h outside [1e-5, 4]);
+    !> HD_HOST_UNREACHABLE when no alpha >= 0 gives e at this h; zero outputs on failure.
+    pure subroutine hertzdamp_host_alpha_for_e(e, h, law, iend, host, alpha, stats, status)
+        real(wp), intent(in) :: e                         !! target restitution coefficient
+        real(wp), intent(in) :: h                         !! dimensionless step dt / t*
+        integer, intent(in) :: law                        !! HD_DAMPING_*
+        integer, intent(in) :: iend                       !! HD_END_OVERLAP or HD_END_FORCE
+        integer, intent(in) :: host                       !! HD_HOST_*
+        real(wp), intent(out) :: alpha                    !! damping parameter
+        type(hertzdamp_host_stats), intent(out) :: stats  !! phase statistics at alpha
+        integer, intent(out) :: status                    !! HD_OK or the failure
+        real(wp) :: a0, t0, alo, ahi, elo, ehi, glo, ghi, am, em, step
+        type(hertzdamp_host_stats) :: s
+        integer :: it, st, side
+        alpha = 0.0_wp
+        status = check_common(law, iend, host)
+        if (status /= HD_OK) return
+        call hertzdamp_fit_inverse(e, iend, a0, t0, status, law)
+        if (status == HD_OK) status = check_h(h)
+        if (status /= HD_OK) return
+        if (host == HD_HOST_NONE) then
+            alpha = a0
+            stats = point_stats(e, t0)
+            return
+        end if
+        ! bracket: e_mean falls with alpha; from the continuous alpha step outwards
+        call mean_at(a0, em, s, st)
+        if (st /= HD_OK) then
+            status = HD_HOST_UNREACHABLE
+            return
+        end if
+        alo = a0
+        ahi = a0
+        elo = em
+        ehi = em
+        step = max(0.25_wp * a0, 1.0e-3_wp)
+        do it = 1, 200
+            if (elo >= e .and. ehi <= e) exit
+            if (elo < e) then
+                ! too damped: smaller alpha (down to 0)
+                if (alo == 0.0_wp) then
+                    status = HD_HOST_UNREACHABLE
+                    return
+                end if
+                ahi = alo
+                ehi = elo
+                alo = max(alo - step, 0.0_wp)
+                call mean_at(alo, elo, s, st)
+            else
+                alo = ahi
+                elo = ehi
+                ahi = ahi + step
+                call mean_at(ahi, ehi, s, st)
+                if (st == HD_OK .and. ehi >= elo) st = HD_HOST_UNREACHABLE   ! no longer falling
+            end if
+            if (st /= HD_OK) then
+                status = HD_HOST_UNREACHABLE
+                return
+            end if
+            step = 2.0_wp * step
+        end do
+        ! Illinois method in the bracket on g = e_mean - e (g(alo) >= 0 >= g(ahi))
+        glo = elo - e
+        ghi = ehi - e
+        side = 0
+        status = HD_HOST_UNREACHABLE
+        do it = 1, 200
+            am = illinois_point(alo, ahi, glo, ghi)
+            call mean_at(am, em, s, st)
+            if (st /= HD_OK) return
+            if (abs(em - e) <= solve_tol * e .or. ahi - alo <= 4.0_wp * spacing(ahi)) then
+                alpha = am
+                stats = s
+                status = HD_OK
+                return
+            end if
+            call illinois_update(am, em - e, alo, ahi, glo, ghi, side)
+        end do
+    contains
+        pure subroutine mean_at(a, ea, sa, sta)
+            real(wp), intent(in) :: a
+            real(wp), intent(out) :: ea
+            type(hertzdamp_host_stats), intent(out) :: sa
+            integer, intent(out) :: sta
+            sta = check_alpha(a)
+            ea = 0.0_wp
+            if (sta /= HD_OK) return
+            call phase_stats(a, h, law, iend, host, sa, sta)
+            ea = sa%e_mean
+        end subroutine mean_at
+    end subroutine hertzdamp_host_alpha_for_e
+
+end module hertzdamp_host

@@ -46,7 +46,8 @@ module hertzdamp_capi
     use hertzdamp_status, only: HD_OK, HD_NO_REBOUND, HD_BAD_ARGUMENT, hertzdamp_message_table, hertzdamp_max_status, &
                                 hertzdamp_message_len
     use hertzdamp_methods, only: hertzdamp_forward_dim, HD_METHOD_FIT
-    use hertzdamp_pair, only: hertzdamp_pair_t, hertzdamp_pair_init, hertzdamp_invert, hertzdamp_c_pair_kd
+    use hertzdamp_pair, only: hertzdamp_pair_t, hertzdamp_pair_init, hertzdamp_invert, hertzdamp_c_pair_kd, &
+                              hertzdamp_invert_contact
     use hertzdamp_host, only: HD_HOST_NONE
     implicit none
     private
@@ -120,13 +121,11 @@ contains
         real(c_double), intent(out), optional :: k   !! Hertz stiffness [N m^-3/2]
         real(c_double), intent(out), optional :: d   !! damping coefficient [kg/s]
         real(c_double) :: k_, d_
-        integer :: st
         status = HD_BAD_ARGUMENT
         if (.not. (present(k) .and. present(d))) return
-        call hertzdamp_invert(e, tc, m, u, int(iend), k_, d_, st, k_phys=k_phys)
+        status = int(hertzdamp_invert_contact(e, tc, m, u, .true., k_phys, 0, int(iend), k_, d_), c_int)
         k = k_
         d = d_
-        status = int(st, c_int)
     end function hertzdamp_c_invert_bounded
 
     !> `int hertzdamp_c_invert_law(double e, double tc, double m, double u, double k_phys,
@@ -146,17 +145,12 @@ contains
         real(c_double), intent(out), optional :: k   !! Hertz stiffness [N m^-3/2]
         real(c_double), intent(out), optional :: d   !! damping coefficient [kg s^-1 m^-q]
         real(c_double) :: k_, d_
-        integer :: st
         status = HD_BAD_ARGUMENT
         if (.not. (present(k) .and. present(d))) return
-        if (k_phys == 0.0_c_double) then
-            call hertzdamp_invert(e, tc, m, u, int(iend), k_, d_, st, law=int(law))
-        else
-            call hertzdamp_invert(e, tc, m, u, int(iend), k_, d_, st, k_phys=k_phys, law=int(law))
-        end if
+        status = int(hertzdamp_invert_contact(e, tc, m, u, k_phys /= 0.0_c_double, k_phys, int(law), int(iend), k_, &
+                                              d_), c_int)
         k = k_
         d = d_
-        status = int(st, c_int)
     end function hertzdamp_c_invert_law
 
     !> `int hertzdamp_c_invert_n(int n, const double *e, const double *tc, const double *m,

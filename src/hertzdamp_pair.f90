@@ -107,8 +107,9 @@ module hertzdamp_pair
     end interface hertzdamp_invert
 
     public :: hertzdamp_pair_init, hertzdamp_pair_kd, hertzdamp_invert
-    ! the C entry of the per-contact call (see there; hertzdamp_capi re-exports it)
-    public :: hertzdamp_c_pair_kd
+    ! the C entry of the per-contact call (see there; hertzdamp_capi re-exports it), and the
+    ! one-contact inverse without optional arguments that the binding layer calls
+    public :: hertzdamp_c_pair_kd, hertzdamp_invert_contact
 
 contains
 
@@ -666,6 +667,30 @@ contains
         if (present(tau_c)) tau_c = tau
         if (present(bound_active)) bound_active = bound
     end subroutine invert_one
+
+    !> hertzdamp_invert of one contact by the fit, without optional arguments: what the C and
+    !> legacy entry points call (the same bits as hertzdamp_invert).  k_phys is the bound
+    !> when has_kp (then it must be finite and positive).  Through the elemental form with
+    !> its optional arguments the C call cost 1.5 x the module call (the fit's own scalar
+    !> kernel, measured with the branch that generates it); through this one 1.0 x.
+    integer function hertzdamp_invert_contact(e, tc, m, u, has_kp, k_phys, law, iend, k, d) result(status)
+        real(wp), value :: e          !! target restitution coefficient
+        real(wp), value :: tc         !! target contact time [s]
+        real(wp), value :: m          !! effective mass [kg]
+        real(wp), value :: u          !! impact velocity [m s^-1]
+        logical, value :: has_kp      !! whether the bound applies
+        real(wp), value :: k_phys     !! physical stiffness bound [N m^-3/2] (when has_kp)
+        integer, value :: law         !! HD_DAMPING_*
+        integer, value :: iend        !! HD_END_OVERLAP or HD_END_FORCE
+        real(wp), intent(out) :: k    !! Hertz stiffness [N m^-3/2] (0 on error)
+        real(wp), intent(out) :: d    !! damping coefficient [kg s^-1 m^-q] (0 on error)
+        real(wp) :: a, tau, ts
+        integer :: given
+        logical :: bound
+        call hertzdamp_fit_inverse(e, iend, a, tau, given, law)
+        call contact_kd(a, tau, a, law, HD_HOST_NONE, given, tc, m, u, has_kp, k_phys, .false., k, d, ts, bound, &
+                        status)
+    end function hertzdamp_invert_contact
 
     !> alpha(e), tau_c(alpha(e)) of a contact end and law by the method of options (the
     !> fit when absent) and their status; a slow method is not run for a contact whose

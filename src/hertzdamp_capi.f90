@@ -177,11 +177,11 @@ contains
     !> hertzdamp_c_invert_law without the bound (k_phys = 0) for n contacts, vectorised;
     !> status[i] is each contact's status.  Returns HD_OK when every contact succeeded,
     !> else the first non-zero status (HD_BAD_ARGUMENT, touching nothing, when an array is
-    !> NULL); n <= 0 does nothing.  A result array may overlap an input array: in place
-    !> (the same element) the module's passes read a contact's inputs before writing its
-    !> results; any other overlap is detected here and the inputs are copied first.  The
-    !> results are those of separate arrays, bit for bit (the result arrays must not
-    !> overlap each other).
+    !> NULL); n <= 0 does nothing.  A result array may overlap an input array, in place or
+    !> shifted: the overlap is detected here and the inputs are copied first (the module's
+    !> array forms, like any Fortran procedure, take no aliased arguments).  The results are
+    !> those of separate arrays, bit for bit (the result arrays must not overlap each
+    !> other).
     integer(c_int) function hertzdamp_c_invert_law_n(n, e, tc, m, u, law, iend, k, d, st) &
             bind(c, name='hertzdamp_c_invert_law_n') result(status)
         integer(c_int), value, intent(in) :: n       !! number of contacts
@@ -210,8 +210,8 @@ contains
         outs(:, 1) = byte_range(c_loc(k), 8 * int(n, c_intptr_t))
         outs(:, 2) = byte_range(c_loc(d), 8 * int(n, c_intptr_t))
         outs(:, 3) = byte_range(c_loc(st), 4 * int(n, c_intptr_t))
-        if (any([((partial_overlap(outs(:, j), ins(:, i)), i = 1, 4), j = 1, 3)])) then
-            ! a result would overwrite an input of a later contact: work on copies
+        if (any([((overlap(outs(:, j), ins(:, i)), i = 1, 4), j = 1, 3)])) then
+            ! a result would overwrite an input: work on copies
             allocate (copy(n, 4), stat=ierr)
             if (ierr /= 0) return
             copy(:, 1) = e
@@ -240,12 +240,11 @@ contains
         r(2) = r(1) + bytes - 1
     end function byte_range
 
-    !> True when two byte ranges overlap other than element for element from the same start
-    !> (in place is fine: every pass reads a contact's inputs before writing its results).
-    pure logical function partial_overlap(a, b)
+    !> True when two byte ranges [first, last] share a byte.
+    pure logical function overlap(a, b)
         integer(c_intptr_t), intent(in) :: a(2), b(2)
-        partial_overlap = a(1) <= b(2) .and. b(1) <= a(2) .and. a(1) /= b(1)
-    end function partial_overlap
+        overlap = a(1) <= b(2) .and. b(1) <= a(2)
+    end function overlap
 
     !> `int hertzdamp_c_pair(double e, int end, double *alpha, double *tau_c)`: the
     !> constants of a material pair, alpha(e) and tau_c(alpha(e)) (linear law); per contact

@@ -432,8 +432,8 @@ contains
     !> vectorised over every contact (inputs outside the direct range, or without
     !> constants, replaced by harmless ones and flagged); the flagged contacts, and those
     !> that meet the bound, then go one by one through contact_kd (the same bits as one
-    !> call per contact).  Inputs are buffers of the caller (a result may then alias an
-    !> argument of the public call exactly: in place).
+    !> call per contact).  No result may share memory with an input (the C layer copies
+    !> overlapping inputs first).
     pure subroutine contacts_kd(nc, law, host, a, tau, a_cont, given, tc, m, u, has_kp, kp, want_ts, k, d, ts, &
                                 bound, status)
         integer, intent(in) :: nc, law, host
@@ -511,8 +511,9 @@ contains
         harmless = transfer(ior(iand(transfer(x, 0_int64), keep), iand(one_bits, not(keep))), 1.0_wp)
     end function harmless
 
-    !> hertzdamp_pair_kd over arrays; tc, m of size 1 are broadcast (the core of the
-    !> array forms: passes of `chunk` contacts through buffers).
+    !> hertzdamp_pair_kd over arrays (the core of the array forms: passes of `chunk`
+    !> contacts); tc and m hold one value per contact, or `chunk` copies of one value (a
+    !> broadcast, see start).
     pure subroutine pair_kd_n(pair, tc, m, u, k, d, status, k_phys, bound_active, tstar)
         type(hertzdamp_pair_t), intent(in) :: pair
         real(wp), intent(in) :: tc(:), m(:), u(:)
@@ -521,10 +522,10 @@ contains
         real(wp), intent(in), optional :: k_phys(:)
         logical, intent(out), optional :: bound_active(:)
         real(wp), intent(out), optional :: tstar(:)
-        real(wp) :: ab(chunk), tb(chunk), acb(chunk), tcb(chunk), mb(chunk), ub(chunk), kpb(chunk), tsb(chunk)
+        real(wp) :: ab(chunk), tb(chunk), acb(chunk), kpb(chunk), tsb(chunk)
         integer :: gb(chunk)
         logical :: bb(chunk)
-        integer :: i0, nc, valid, law, host, n
+        integer :: i0, nc, valid, law, host, n, jt, jm
         n = size(u)
         valid = pair_status(pair)
         law = HD_DAMPING_LINEAR
@@ -540,28 +541,25 @@ contains
         kpb = 0.0_wp
         do i0 = 0, n - 1, chunk
             nc = min(chunk, n - i0)
-            call take(tc, i0, nc, tcb)
-            call take(m, i0, nc, mb)
-            ub(1:nc) = u(i0 + 1:i0 + nc)
+            jt = start(tc, n, i0)
+            jm = start(m, n, i0)
             if (present(k_phys)) kpb(1:nc) = k_phys(i0 + 1:i0 + nc)
-            call contacts_kd(nc, law, host, ab, tb, acb, gb, tcb, mb, ub, present(k_phys), kpb, present(tstar), &
-                             k(i0 + 1:i0 + nc), d(i0 + 1:i0 + nc), tsb, bb, status(i0 + 1:i0 + nc))
+            call contacts_kd(nc, law, host, ab, tb, acb, gb, tc(jt + 1:jt + nc), m(jm + 1:jm + nc), u(i0 + 1:i0 + nc), &
+                             present(k_phys), kpb, present(tstar), k(i0 + 1:i0 + nc), d(i0 + 1:i0 + nc), tsb, bb, &
+                             status(i0 + 1:i0 + nc))
             if (present(bound_active)) bound_active(i0 + 1:i0 + nc) = bb(1:nc)
             if (present(tstar)) tstar(i0 + 1:i0 + nc) = tsb(1:nc)
         end do
     end subroutine pair_kd_n
 
-    !> The values i0 + 1 .. i0 + nc of x into buf, or x(1) nc times when x has one value.
-    pure subroutine take(x, i0, nc, buf)
+    !> Where the values of the pass from contact i0 + 1 start in x: x holds one value per
+    !> contact (size n), or `chunk` copies of one value (a broadcast: every pass reads the
+    !> first nc, no copy per pass).
+    pure integer function start(x, n, i0)
         real(wp), intent(in) :: x(:)
-        integer, intent(in) :: i0, nc
-        real(wp), intent(out) :: buf(:)
-        if (size(x) == 1) then
-            buf(1:nc) = x(1)
-        else
-            buf(1:nc) = x(i0 + 1:i0 + nc)
-        end if
-    end subroutine take
+        integer, intent(in) :: n, i0
+        start = merge(i0, 0, size(x) == n)
+    end function start
 
     !> hertzdamp_pair_kd for rank-1 arrays of T_c, m, u (all of the size of u).
     pure subroutine pair_kd_array(pair, tc, m, u, k, d, status, k_phys, bound_active, tstar)
@@ -590,7 +588,7 @@ contains
         real(wp), intent(in), optional, contiguous :: k_phys(:)         !! physical stiffness bounds [N m^-3/2]
         logical, intent(out), optional, contiguous :: bound_active(:)   !! true where k = k_phys was used
         real(wp), intent(out), optional, contiguous :: tstar(:)         !! time units of the returned k [s]
-        call pair_kd_n(pair, [tc], m, u, k, d, status, k_phys, bound_active, tstar)
+        call pair_kd_n(pair, spread(tc, 1, chunk), m, u, k, d, status, k_phys, bound_active, tstar)
     end subroutine pair_kd_array_tc
 
     !> hertzdamp_pair_kd for one m and rank-1 arrays of T_c, u.
@@ -605,7 +603,7 @@ contains
         real(wp), intent(in), optional, contiguous :: k_phys(:)         !! physical stiffness bounds [N m^-3/2]
         logical, intent(out), optional, contiguous :: bound_active(:)   !! true where k = k_phys was used
         real(wp), intent(out), optional, contiguous :: tstar(:)         !! time units of the returned k [s]
-        call pair_kd_n(pair, tc, [m], u, k, d, status, k_phys, bound_active, tstar)
+        call pair_kd_n(pair, tc, spread(m, 1, chunk), u, k, d, status, k_phys, bound_active, tstar)
     end subroutine pair_kd_array_m
 
     !> hertzdamp_pair_kd for one T_c and one m, and a rank-1 array of u.
@@ -620,7 +618,7 @@ contains
         real(wp), intent(in), optional, contiguous :: k_phys(:)         !! physical stiffness bounds [N m^-3/2]
         logical, intent(out), optional, contiguous :: bound_active(:)   !! true where k = k_phys was used
         real(wp), intent(out), optional, contiguous :: tstar(:)         !! time units of the returned k [s]
-        call pair_kd_n(pair, [tc], [m], u, k, d, status, k_phys, bound_active, tstar)
+        call pair_kd_n(pair, spread(tc, 1, chunk), spread(m, 1, chunk), u, k, d, status, k_phys, bound_active, tstar)
     end subroutine pair_kd_array_tc_m
 
     ! ================================================================ the one-call inverse
@@ -729,10 +727,10 @@ contains
         real(wp), intent(in), optional :: k_phys(:)
         integer, intent(in), optional :: law
         type(hertzdamp_invert_options), intent(in), optional :: options
-        real(wp) :: ab(chunk), tb(chunk), tcb(chunk), mb(chunk), ub(chunk), kpb(chunk), tsb(chunk)
+        real(wp) :: ab(chunk), tb(chunk), kpb(chunk), tsb(chunk)
         integer :: gb(chunk)
         logical :: bb(chunk), fit
-        integer :: i0, nc, j, law_, n
+        integer :: i0, nc, j, law_, n, jt, jm
         n = size(e)
         law_ = HD_DAMPING_LINEAR
         if (present(law)) law_ = law
@@ -741,20 +739,20 @@ contains
         kpb = 0.0_wp
         do i0 = 0, n - 1, chunk
             nc = min(chunk, n - i0)
-            call take(tc, i0, nc, tcb)
-            call take(m, i0, nc, mb)
-            ub(1:nc) = u(i0 + 1:i0 + nc)
+            jt = start(tc, n, i0)
+            jm = start(m, n, i0)
             if (present(k_phys)) kpb(1:nc) = k_phys(i0 + 1:i0 + nc)
             if (fit) then
                 call hertzdamp_fit_inverse_n(nc, e(i0 + 1:i0 + nc), iend, ab, tb, gb, law_)
             else
                 do j = 1, nc
-                    call pair_constants(e(i0 + j), iend, law_, options, tcb(j), mb(j), ub(j), present(k_phys), &
-                                        kpb(j), ab(j), tb(j), gb(j))
+                    call pair_constants(e(i0 + j), iend, law_, options, tc(jt + j), m(jm + j), u(i0 + j), &
+                                        present(k_phys), kpb(j), ab(j), tb(j), gb(j))
                 end do
             end if
-            call contacts_kd(nc, law_, HD_HOST_NONE, ab, tb, ab, gb, tcb, mb, ub, present(k_phys), kpb, &
-                             present(tstar), k(i0 + 1:i0 + nc), d(i0 + 1:i0 + nc), tsb, bb, status(i0 + 1:i0 + nc))
+            call contacts_kd(nc, law_, HD_HOST_NONE, ab, tb, ab, gb, tc(jt + 1:jt + nc), m(jm + 1:jm + nc), &
+                             u(i0 + 1:i0 + nc), present(k_phys), kpb, present(tstar), k(i0 + 1:i0 + nc), &
+                             d(i0 + 1:i0 + nc), tsb, bb, status(i0 + 1:i0 + nc))
             if (present(alpha)) alpha(i0 + 1:i0 + nc) = merge(ab(1:nc), 0.0_wp, status(i0 + 1:i0 + nc) == HD_OK)
             if (present(tau_c)) tau_c(i0 + 1:i0 + nc) = merge(tb(1:nc), 0.0_wp, status(i0 + 1:i0 + nc) == HD_OK)
             if (present(tstar)) tstar(i0 + 1:i0 + nc) = tsb(1:nc)
@@ -802,7 +800,8 @@ contains
         real(wp), intent(in), optional, contiguous :: k_phys(:)  !! physical stiffness bounds [N m^-3/2]
         integer, intent(in), optional :: law                     !! as for one contact
         type(hertzdamp_invert_options), intent(in), optional :: options !! as for one contact
-        call invert_n(e, [tc], m, u, iend, k, d, status, alpha, tstar, tau_c, bound_active, k_phys, law, options)
+        call invert_n(e, spread(tc, 1, chunk), m, u, iend, k, d, status, alpha, tstar, tau_c, bound_active, k_phys, &
+                      law, options)
     end subroutine invert_array_tc
 
     !> hertzdamp_invert for one m and rank-1 arrays of e, T_c, u (the vectorised path).
@@ -823,7 +822,8 @@ contains
         real(wp), intent(in), optional, contiguous :: k_phys(:)  !! physical stiffness bounds [N m^-3/2]
         integer, intent(in), optional :: law                     !! as for one contact
         type(hertzdamp_invert_options), intent(in), optional :: options !! as for one contact
-        call invert_n(e, tc, [m], u, iend, k, d, status, alpha, tstar, tau_c, bound_active, k_phys, law, options)
+        call invert_n(e, tc, spread(m, 1, chunk), u, iend, k, d, status, alpha, tstar, tau_c, bound_active, k_phys, &
+                      law, options)
     end subroutine invert_array_m
 
     !> hertzdamp_invert for one T_c and one m, and rank-1 arrays of e, u (the vectorised path).
@@ -844,7 +844,8 @@ contains
         real(wp), intent(in), optional, contiguous :: k_phys(:)  !! physical stiffness bounds [N m^-3/2]
         integer, intent(in), optional :: law                     !! as for one contact
         type(hertzdamp_invert_options), intent(in), optional :: options !! as for one contact
-        call invert_n(e, [tc], [m], u, iend, k, d, status, alpha, tstar, tau_c, bound_active, k_phys, law, options)
+        call invert_n(e, spread(tc, 1, chunk), spread(m, 1, chunk), u, iend, k, d, status, alpha, tstar, tau_c, &
+                      bound_active, k_phys, law, options)
     end subroutine invert_array_tc_m
 
 end module hertzdamp_pair

@@ -1,6 +1,7 @@
 # hertzdamp: the two quick-start commands are `make run` and `make test`.
-# Both install what is missing (Debian packages, fpm in a project-local .venv),
-# build, and then print the default table / run every test.
+# Both install what is missing (Debian packages, fpm in a project-local .venv);
+# `make run` builds the program, installs it into build/prefix and shows k and d for
+# the README's glass beads; `make test` builds everything and runs every test.
 
 SHELL := /bin/bash
 PREFIX ?= $(CURDIR)/_install
@@ -24,7 +25,7 @@ TEST_LINK := -fopenmp
 all: build
 
 # ---------------------------------------------------------------- set-up
-deps: .deps-apt $(FPM) $(VENV)/bin/fortitude $(VENV)/bin/ford
+deps: .deps-apt $(FPM) $(VENV)/bin/fortitude $(VENV)/bin/ford $(VENV)/.test-modules
 
 # Install only the Debian packages that are missing; a stamp keeps reruns silent.
 .deps-apt: Makefile
@@ -54,6 +55,14 @@ $(VENV)/bin/ford: $(FPM)
 	$(VENV)/bin/pip install -q ford==7.0.13
 	@touch $@
 
+# Python modules the tests import beyond the standard library (a fresh Debian has
+# none of them; the tests run with .venv's python, HERTZDAMP_PYTHON): PyYAML for
+# test/docs/cli_docs.sh (CITATION.cff).
+TEST_PY_MODULES := PyYAML==6.0.2
+$(VENV)/.test-modules: $(FPM) Makefile
+	$(VENV)/bin/pip install -q $(TEST_PY_MODULES)
+	@touch $@
+
 # ---------------------------------------------------------------- build and run
 # fpm 0.12 keeps libhertzdamp.a when a merge adds a source file or recompiles an
 # object without refreshing the archive (seen again with this layout), so programs
@@ -64,12 +73,30 @@ $(VENV)/bin/ford: $(FPM)
 # need this.
 STALE_ARCHIVES = rm -f build/gfortran_*/hertzdamp*/libhertzdamp*.a
 
-build: deps
+# The program needs the Debian packages and fpm only (fortitude and ford are for
+# lint and docs).
+build: .deps-apt $(FPM)
 	@$(STALE_ARCHIVES)
 	$(FPM) build --flag "$(RELEASE_FLAGS)"
 
+# `make run`: the release build (the one `make test` uses too, so nothing is built
+# twice), the program and its man page installed into build/prefix, then k and d for
+# the README's quick-start glass beads (two 2 mm beads, rho 2500, E 63 GPa, nu 0.24,
+# e 0.9, 10 steps of 1e-6 s, 0.01 to 5 m/s), and the one line that puts the program
+# on PATH.
+RUN_PREFIX := $(CURDIR)/build/prefix
+RUN_EXAMPLE := invert --radius 1e-3 --density 2500 --youngs-modulus 63e9 --poisson-ratio 0.24 --e 0.9 --dt 1e-6 --steps 10 --velocity 0.01:5:log5
 run: build
-	@$(FPM) run hertzdamp --flag "$(RELEASE_FLAGS)" -- table
+	@bin=$$($(FPM) run hertzdamp --flag "$(RELEASE_FLAGS)" --runner echo 2>/dev/null | tail -n 1); \
+	  [ -x "$$bin" ] || { echo "make run: the program was not built" >&2; exit 1; }; \
+	  install -D -m 0755 "$$bin" "$(RUN_PREFIX)/bin/hertzdamp" && \
+	  install -D -m 0644 doc/hertzdamp.1 "$(RUN_PREFIX)/share/man/man1/hertzdamp.1"
+	@echo
+	@echo '$$ hertzdamp $(RUN_EXAMPLE)'
+	@"$(RUN_PREFIX)/bin/hertzdamp" $(RUN_EXAMPLE)
+	@echo
+	@echo "installed: $(RUN_PREFIX)/bin/hertzdamp (and its man page: man -l $(RUN_PREFIX)/share/man/man1/hertzdamp.1)"
+	@echo 'export PATH="$(RUN_PREFIX)/bin:$$PATH"    # this line puts it on PATH: then hertzdamp --help'
 
 # The LAMMPS tests need Debian's lammps, liblammps-dev and openmpi and the plugin:
 # `make lammps` installs and builds them first (check_vs_lammps runs before the
@@ -79,7 +106,7 @@ test: deps
 	@$(FPM) build --tests --flag "$(TEST_FLAGS)" --link-flag "$(TEST_LINK)"
 	@$(FPM) build --flag "$(RELEASE_FLAGS)"
 	@$(MAKE) --no-print-directory lammps
-	@bash test/run_tests.sh "$(FPM)" "$(TEST_FLAGS)" "$(RELEASE_FLAGS)" "$(TEST_LINK)"
+	@HERTZDAMP_PYTHON=$(CURDIR)/$(VENV)/bin/python bash test/run_tests.sh "$(FPM)" "$(TEST_FLAGS)" "$(RELEASE_FLAGS)" "$(TEST_LINK)"
 
 # ---------------------------------------------------------------- generated tables
 # Series coefficients: the generator writes data/*.csv, the converter turns them into

@@ -2,16 +2,16 @@
 !> work-precision diagram (gnuplot).
 module hertzdamp_bench_output
     use hertzdamp, only: hertzdamp_rk, hertzdamp_law_name
-    use hertzdamp_bench_rows, only: bench_row, n_families, fam, plot_floor, ftoa
+    use hertzdamp_bench_rows, only: bench_row, n_families, fam, plot_floor
     use hertzdamp_bench_table_inverse, only: inv_ref_text
     use hertzdamp_cli_plot, only: plot_scratch, plot_temp_name, gp_string
-    use hertzdamp_cli, only: cli_buffer, pad
+    use hertzdamp_cli, only: cli_buffer
     use hertzdamp_cli_output, only: out_table, FORMAT_TEXT, FORMAT_JSON
     use hertzdamp_cli_text, only: itoa
     use, intrinsic :: ieee_arithmetic, only: ieee_value, ieee_quiet_nan
     implicit none
     private
-    public :: build_table, render_text, make_plot
+    public :: build_table, make_plot
 
     integer, parameter :: wp = hertzdamp_rk
 
@@ -68,51 +68,6 @@ contains
         r = s
         if (len(s) == 0 .and. fmt == FORMAT_TEXT) r = '-'
     end function blank_or
-
-    !> Text rendering: the '#' header (metadata without the figures, which go below
-    !> the table) and a compact table with 3 significant digits.
-    subroutine render_text(t, nfig, rows, buf)
-        type(out_table), intent(in) :: t
-        integer, intent(in) :: nfig
-        type(bench_row), intent(in) :: rows(:)
-        type(cli_buffer), intent(inout) :: buf
-        integer :: i, j
-        character(len=:), allocatable :: line
-        do i = 1, size(t%meta_key) - nfig
-            call buf%add('# ' // t%meta_key(i)%s // ': ' // t%meta_val(i)%s)
-        end do
-        call buf%add(pad('problem', 11) // ' ' // pad('damping', 13) // ' ' // pad('method', 14) // ' ' // &
-                     pad('setting', 9) // ' ' // &
-                     pad('points', -7) // ' ' // pad('err_e', -9) // ' ' // pad('err_tau', -9) // ' ' // &
-                     pad('err_alpha', -9) // ' ' // pad('err_k', -9) // ' ' // pad('err_d', -9) // ' ' // &
-                     pad('ns/call', -9) // ' ' // pad('steps', -7) // ' ' // pad('rejected', -8) // ' ' // &
-                     pad('rhs_evals', -9))
-        do i = 1, size(rows)
-            line = pad(rows(i)%problem, 11) // ' ' // pad(hertzdamp_law_name(rows(i)%law), 13) // ' ' // &
-                   pad(rows(i)%method, 14) // ' ' // &
-                   pad(blank_or(rows(i)%setting, FORMAT_TEXT), 9) // ' ' // &
-                   pad(itoa(rows(i)%npts) // '/' // itoa(rows(i)%ntot), -7)
-            do j = 1, 5
-                line = line // ' ' // pad(num_or_dash(rows(i)%err(j), '(es9.2)'), -9)
-            end do
-            line = line // ' ' // pad(num_or_dash(rows(i)%ns, '(es9.2)'), -9) // ' ' // &
-                   pad(num_or_dash(rows(i)%steps, '(f7.1)'), -7) // ' ' // &
-                   pad(num_or_dash(rows(i)%rejected, '(f8.2)'), -8) // ' ' // &
-                   pad(num_or_dash(rows(i)%rhs, '(f9.1)'), -9)
-            call buf%add(line)
-        end do
-    end subroutine render_text
-
-    function num_or_dash(x, f) result(s)
-        real(wp), intent(in) :: x
-        character(len=*), intent(in) :: f
-        character(len=:), allocatable :: s
-        if (x < 0.0_wp) then
-            s = '-'
-        else
-            s = ftoa(x, f)
-        end if
-    end function num_or_dash
 
     !> Work-precision diagram: forward (top) and inverse (bottom) panels, one column per
     !> damping law of the run.  Data and script go to temporary files; the PNG is written

@@ -88,9 +88,10 @@ module hertzdamp_cli
     integer(c_int), parameter :: sigxfsz = 25
 
     public :: get_arg, parse_args, parse_real, parse_real_list, parse_range, parse_sweep, required_sweep, parse_int, parse_choice
-    public :: check_combinations
+    public :: check_combinations, did_you_mean
     public :: exit_code_of, write_failed, write_stdout, error_line, stderr_is_terminal, cli_start
     public :: fail, quit, fmt_csv, fmt_text, fmt_json, fmt_short, json_string, csv_join, pad
+    public :: c_write, c_signal   ! POSIX write(2) and signal(2), for the progress and plot modules
 
 contains
 
@@ -218,10 +219,80 @@ contains
         if (in_list(a, flags)) then
             call fail(EXIT_USAGE, 'option ' // a // ' takes no value')
         else
-            call fail(EXIT_USAGE, 'unknown option ' // a // ' (see --help)')
+            call fail(EXIT_USAGE, 'unknown option ' // a // did_you_mean(a, valued // ' ' // flags) // ' (see --help)')
         end if
-        if (len(valued) < 0) return
     end subroutine unknown
+
+    !> '; did you mean X?' for the word of the space-separated `candidates` closest to
+    !> `word`, '' when none is close: a candidate that `word` begins (the shortest such,
+    !> `--youngs` -> --youngs-modulus), else one within an edit distance (insertions,
+    !> deletions, substitutions, swaps of neighbours) of a third of its length, at least
+    !> 1 and at most 3 (`--radus` -> --radius, `inverse` -> invert).  Ties are all named.
+    function did_you_mean(word, candidates) result(s)
+        character(len=*), intent(in) :: word         !! what was typed (an option, a command, a choice)
+        character(len=*), intent(in) :: candidates   !! the words it could have meant, space-separated
+        character(len=:), allocatable :: s
+        character(len=:), allocatable :: best, c
+        integer :: i, j, d, dbest, n
+        s = ''
+        best = ''
+        n = 0
+        dbest = huge(1)
+        ! stems shorter than 3 characters (after any leading dashes) suggest nothing
+        if (len(word) - (verify(word, '-') - 1) < 3 .or. verify(word, '-') == 0) return
+        i = 1
+        do while (i <= len(candidates))
+            j = index(candidates(i:) // ' ', ' ') + i - 1
+            c = candidates(i:j - 1)
+            i = j + 1
+            if (len(c) == 0 .or. c == word) cycle
+            if (len(c) > len(word)) then
+                if (c(1:len(word)) == word) then
+                    d = -huge(1) + len(c)   ! a completion: before any edit, the shortest first
+                else
+                    d = edit_distance(word, c)
+                end if
+            else
+                d = edit_distance(word, c)
+            end if
+            if (d > 0 .and. d > max(1, min(3, len(word) / 3))) cycle
+            if (d < dbest) then
+                dbest = d
+                best = c
+                n = 1
+            else if (d == dbest .and. n < 3) then
+                best = best // ' or ' // c
+                n = n + 1
+            end if
+        end do
+        if (n > 0) s = '; did you mean ' // best // '?'
+    end function did_you_mean
+
+    !> Optimal string alignment distance: the fewest insertions, deletions, substitutions
+    !> and swaps of neighbouring characters that turn `a` into `b`.
+    pure integer function edit_distance(a, b) result(d)
+        character(len=*), intent(in) :: a, b
+        integer :: t(0:len(a), 0:len(b)), i, j, i1, j1, cost
+        do i = 0, len(a)
+            t(i, 0) = i
+        end do
+        do j = 0, len(b)
+            t(0, j) = j
+        end do
+        do j = 1, len(b)
+            do i = 1, len(a)
+                cost = merge(0, 1, a(i:i) == b(j:j))
+                t(i, j) = min(t(i - 1, j) + 1, t(i, j - 1) + 1, t(i - 1, j - 1) + cost)
+                ! a swap of neighbours (i, j >= 2; max() keeps the indices in range for the compiler)
+                if (i > 1 .and. j > 1) then
+                    i1 = max(i - 1, 1)
+                    j1 = max(j - 1, 1)
+                    if (a(i:i) == b(j1:j1) .and. a(i1:i1) == b(j:j)) t(i, j) = min(t(i, j), t(i1 - 1, j1 - 1) + 1)
+                end if
+            end do
+        end do
+        d = t(len(a), len(b))
+    end function edit_distance
 
     !> Argument i of the command line, whole.
     function get_arg(i) result(a)
@@ -265,9 +336,18 @@ contains
     function parse_real(text, what) result(x)
         character(len=*), intent(in) :: text, what
         real(wp) :: x
+        logical :: ok
+        call read_real(text, x, ok)
+        if (.not. ok) call fail(EXIT_USAGE, 'malformed number "' // text // '" for ' // what)
+    end function parse_real
+
+    !> The strict decimal number of parse_real; ok false (x = 0) when `text` is none.
+    subroutine read_real(text, x, ok)
+        character(len=*), intent(in) :: text
+        real(wp), intent(out) :: x
+        logical, intent(out) :: ok
         integer :: i, n, nd, k, ios
         character(len=:), allocatable :: s
-        logical :: ok
         s = trim(adjustl(text))
         n = len(s)
         i = 1
@@ -300,8 +380,37 @@ contains
             read (s, *, iostat=ios) x
             ok = ios == 0 .and. ieee_is_finite(x)
         end if
-        if (.not. ok) call fail(EXIT_USAGE, 'malformed number "' // text // '" for ' // what)
-    end function parse_real
+        if (.not. ok) x = 0.0_wp
+    end subroutine read_real
+
+    !> When `text` looks like a range written otherwise than A0:A1:N (a dash between
+    !> two numbers, 0.05-3 but not 1e-3; '..'; '~'), the same range as A0:A1:20;
+    !> '' otherwise.
+    pure function range_written_otherwise(text) result(r)
+        character(len=*), intent(in) :: text
+        character(len=:), allocatable :: r
+        integer :: i, k, w
+        k = 0
+        w = 0
+        if (index(text, '..') > 1) then
+            k = index(text, '..')
+            w = 2
+        else if (index(text, '~') > 1) then
+            k = index(text, '~')
+            w = 1
+        end if
+        do i = 2, len(text) - 1
+            if (k > 0) exit
+            if (text(i:i) /= '-') cycle
+            if ((is_digit(text(i + 1:i + 1)) .or. text(i + 1:i + 1) == '.') .and. &
+                (is_digit(text(i - 1:i - 1)) .or. text(i - 1:i - 1) == '.')) then
+                k = i
+                w = 1
+            end if
+        end do
+        r = ''
+        if (k > 0) r = text(1:k - 1) // ':' // text(k + w:) // ':20'
+    end function range_written_otherwise
 
     !> Advance i over the decimal digits of s from position i; nd = how many.
     pure subroutine skip_digits(s, i, nd)
@@ -439,6 +548,9 @@ contains
             if (index(text(j:i - 1), ':') > 0) then
                 part = parse_range(text(j:i - 1), what)
             else
+                if (len(range_written_otherwise(text(j:i - 1))) > 0) call fail(EXIT_USAGE, 'malformed number "' // &
+                    text(j:i - 1) // '" for ' // what // ': a range is A0:A1:N (N values from A0 to A1) or ' // &
+                    'A0:A1:logN, e.g. ' // range_written_otherwise(text(j:i - 1)))
                 part = [parse_real(text(j:i - 1), what)]
             end if
             n = size(x) + size(part)
@@ -484,7 +596,7 @@ contains
             end if
         end do
         if (k == 0 .or. len(text) == 0) call fail(EXIT_USAGE, 'invalid ' // what // ' "' // text // &
-                                                   '": choose one of ' // choices)
+                                                   '": choose one of ' // choices // did_you_mean(text, choices))
     end function parse_choice
 
     subroutine buffer_add(self, line)

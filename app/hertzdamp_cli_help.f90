@@ -21,6 +21,13 @@ module hertzdamp_cli_help
         'combination of the lists, at most 10000 rows.  CSV and JSON numbers read back' // nl // &
         'as the same double (16 significant digits, 17 where needed).'
 
+    character(len=*), parameter :: quiet_help = &
+        '  --quiet               no warnings on stderr about values outside what granular' // nl // &
+        '                        materials have, most often a unit slip: E outside 1e5 to' // nl // &
+        '                        1e13 Pa, R outside 1e-7 to 1 m, RHO outside 10 to 3e4' // nl // &
+        '                        kg m^-3, impact speeds above 1e3 m s^-1 (the results are' // nl // &
+        '                        printed all the same)'
+
     character(len=*), parameter :: contact_help = &
         'Contact (definitions: hertzdamp --help):' // nl // &
         '  --mass M              effective mass m* [kg]; or from the materials:' // nl // &
@@ -33,7 +40,8 @@ module hertzdamp_cli_help
         '  --wall                body 2 is a wall: infinite radius and mass (m* = m,' // nl // &
         '                        R* = R); its E and NU from --youngs-modulus2 and' // nl // &
         '                        --poisson-ratio2, by default sphere 1''s' // nl // &
-        '  --k-phys K            physical stiffness [N m^-3/2] instead of E and NU'
+        '  --k-phys K            physical stiffness [N m^-3/2] instead of E and NU' // nl // &
+        quiet_help
 
     character(len=*), parameter :: status_help = &
         'Status of a row: ok; no-rebound (a result: the overlap never returns to zero,' // nl // &
@@ -44,8 +52,9 @@ module hertzdamp_cli_help
         'without a result keeps its inputs; its results are empty (csv), null (json)' // nl // &
         'or - (text), as are quantities a method does not give.' // nl // &
         'Exit: 0 when every row has a result; 3 when some have none (all rows are' // nl // &
-        'printed, and one line on stderr says how many and why); when none has one,' // nl // &
-        'nothing on stdout, one line on stderr, exit 2 (bad input), 3 or 4 (failed).'
+        'printed, and one line on stderr says how many and why), 4 if a computation of' // nl // &
+        'one of them failed; when none has one, nothing on stdout, one line on stderr,' // nl // &
+        'exit 2 (bad input), 3 or 4 (failed).'
 
     character(len=*), parameter :: method_help = &
         '  --damping LAW         damping force d zeta^q zeta'': linear (q = 0, default; d in' // nl // &
@@ -56,7 +65,9 @@ module hertzdamp_cli_help
         '                        the total contact force does' // nl // &
         '  --accuracy A          relative accuracy asked of series and pade (default' // nl // &
         '                        1e-10): beyond it the row is inaccurate' // nl // &
-        '  --format F            text (aligned, default), csv or json' // nl // &
+        '  --format F            text (default; for people: units in the header, 7' // nl // &
+        '                        digits, what every row shares once above the table),' // nl // &
+        '                        csv or json' // nl // &
         '  --progress            progress on stderr (default: on a terminal, after 2 s,' // nl // &
         '                        one line that an error replaces; into a file or pipe,' // nl // &
         '                        lines that precede an error, which comes last)' // nl // &
@@ -115,7 +126,8 @@ module hertzdamp_cli_help
         '                        with n the unit vector from body 1 to body 2 [m s^-1].' // nl // &
         '  e                     restitution: normal separation speed / approach speed.' // nl // &
         '' // nl // &
-        'Exit codes: 0 success, 2 bad usage, 3 no solution, 4 computation failed.' // nl // &
+        'Exit codes: 0 success, 2 bad usage, 3 no solution, 4 computation failed (also' // nl // &
+        'when some rows of a table have a result and the computation of another failed).' // nl // &
         'Errors go to stderr as one line (the last, after the lines --progress writes' // nl // &
         'into a file or pipe); stdout is then empty, except for commands that print one' // nl // &
         'row per value, where rows with a result still print (see their --help).' // nl // &
@@ -186,7 +198,7 @@ module hertzdamp_cli_help
         'Usage: hertzdamp invert --e LIST (--tc LIST | --dt LIST --steps LIST)' // nl // &
         '                        --velocity LIST (--mass M | --radius R --density RHO ...)' // nl // &
         '                        [--k-phys K | --youngs-modulus E --poisson-ratio NU]' // nl // &
-        '                        [--host NAME] [options]' // nl // &
+        '                        [--host NAME] [--fixed] [options]' // nl // &
         '' // nl // &
         'The inverse rule of the adaptive collision time model: the stiffness k and' // nl // &
         'damping d that give a contact with effective mass m*, hit at relative normal' // nl // &
@@ -204,7 +216,19 @@ module hertzdamp_cli_help
         '                        N dt beyond double precision: out-of-range' // nl // &
         '  --velocity LIST       relative normal impact velocity u_in [m s^-1]' // nl // &
         host_help // nl // &
-        '                        (needs --dt and --steps)' // nl // &
+        '                        (needs --dt and --steps; not with --fixed)' // nl // &
+        '  --fixed               one k and d for every contact, for engines that cannot set' // nl // &
+        '                        them per contact: over the range of the --velocity list' // nl // &
+        '                        the worst |e_fixed/e - 1| as small as one pair makes it' // nl // &
+        '                        (equal and opposite at the slowest and fastest impact),' // nl // &
+        '                        and the shortest contact of the range lasting T_c (every' // nl // &
+        '                        contact then takes at least --steps steps of --dt); with' // nl // &
+        '                        k_phys below that k, k = k_phys.  Uses the fitted forward' // nl // &
+        '                        maps (rk45 beyond them): no --method, --tol, --accuracy.' // nl // &
+        '                        Columns: e, tc, velocity, mass, radius_eff, k_phys, k, d,' // nl // &
+        '                        bound_active, alpha, e_fixed, e_error (e_fixed/e - 1),' // nl // &
+        '                        tc_fixed [s] (what the pair gives at that speed),' // nl // &
+        '                        worst_e_error, status' // nl // &
         contact_help // nl // &
         'Method:' // nl // inverse_methods_help // nl // method_help // nl // &
         '' // nl // &
@@ -226,7 +250,13 @@ module hertzdamp_cli_help
         'resolves it with N steps is dt_max = tc_damped / N.  Next to it, the elastic' // nl // &
         'Hertz estimate most DEM codes use, T_c = 2.868 (m*^2 / (R* E*^2 u_in))^(1/5) =' // nl // &
         'tau_c(0) t*: elastic_excess = tc_elastic / tc_damped - 1 says how much longer' // nl // &
-        '(> 0) or shorter (< 0) it is than the damped contact.' // nl // &
+        '(> 0) or shorter (< 0) it is than the damped contact.  With the spheres'' radii,' // nl // &
+        'densities and elastic constants, also the Rayleigh time step of codes that do' // nl // &
+        'not look at the impact speed (EDEM; LIGGGHTS fix check/timestep/gran):' // nl // &
+        't_rayleigh = pi R / v_R, v_R = (0.1631 nu + 0.8766) sqrt(G/rho), G = E/(2(1+nu))' // nl // &
+        '(the usual fit of the Rayleigh wave speed, within 0.3 % for 0 <= nu <= 0.5;' // nl // &
+        'the smaller sphere''s), and dt_rayleigh = 0.2 t_rayleigh, the usual fraction' // nl // &
+        '(EDEM: 20 %, range 10 to 40 %).' // nl // &
         '' // nl // &
         '  --e LIST              restitution coefficients of the material pair [-]' // nl // &
         '  --velocity LIST       relative normal impact velocities u_in [m s^-1]' // nl // &
@@ -238,8 +268,8 @@ module hertzdamp_cli_help
         '' // nl // &
         'Columns: e, steps, velocity_max [m s^-1], mass [kg], radius_eff [m], k_phys,' // nl // &
         'alpha, tau_c [-], tc_damped [s], tc_elastic [s], elastic_excess [-],' // nl // &
-        'dt_max [s], dt_elastic [s] (tc_elastic / N), with --host e_spread and tc_spread,' // nl // &
-        'status.' // nl // &
+        'dt_max [s], dt_elastic [s] (tc_elastic / N), t_rayleigh [s], dt_rayleigh [s]' // nl // &
+        '(empty without the materials), with --host e_spread and tc_spread, status.' // nl // &
         '' // nl // list_syntax // nl // nl // status_help
 
     character(len=*), parameter :: bench = &
@@ -370,9 +400,12 @@ module hertzdamp_cli_help
         '  --damping D     linear (q = 0), tsuji (q = 1/4), kuwabara-kono (q = 1/2) or' // nl // &
         '                  auto (default): every law, the one with the smallest AIC chosen' // nl // &
         '                  (AIC = chi2 + 2p with sigmas, n ln(RSS/n) + 2p without; all laws' // nl // &
-        '                  have the same p, so this is the smallest chi2 or RSS)' // nl // &
+        '                  have the same p, so this is the smallest chi2 or RSS); a law' // nl // &
+        '                  whose fit failed is passed over only where it already fits worse,' // nl // &
+        '                  else none is chosen (exit 4)' // nl // &
         '  --end overlap|force   contact-end definition (default overlap)' // nl // &
-        '  --method M      fit (default: machine-precision maps and their exact derivatives)' // nl // &
+        '  --method M      fit (default: machine-precision maps and their exact derivatives;' // nl // &
+        '                  the reference integrator for measurements beyond the maps, e < 1e-5)' // nl // &
         '                  or rk45 (reference integrator in the loop, for checking; slow)' // nl // &
         '  --tol T         rk45 tolerance, 1e-15 <= T <= 1e-2 (default 1e-13)' // nl // &
         '  --format F      text (default: summary and residuals), csv (summary) or json' // nl // &
@@ -381,6 +414,7 @@ module hertzdamp_cli_help
         '  --plot FILE     the data with error bars and the fitted e(u), T_c(u) of each law' // nl // &
         '                  (PNG, gnuplot; checked before any work: no gnuplot -> exit 4,' // nl // &
         '                  not a regular file, not writable, or the data file -> exit 2)' // nl // &
+        '  --quiet         no warnings about implausible R, RHO, E or file speeds (as invert)' // nl // &
         '  --help          this text' // nl // &
         '' // nl // &
         'Weights: 1/sigma when the sigma columns are given (then chi2/dof and its p-value);' // nl // &
@@ -394,7 +428,8 @@ module hertzdamp_cli_help
         'rms_residual_tc [s], c [SI].' // nl // &
         'Exit codes: 2 invalid file or values (NaN, u <= 0, e outside (0, 1], ...), 3 the' // nl // &
         'data cannot determine the parameters (one speed only, e = 1 everywhere), 4 the fit' // nl // &
-        'did not converge.'
+        'did not converge (without sigmas: Gauss-Newton correction above 1e-10) or the model' // nl // &
+        'cannot be evaluated at the start (the message names why).'
 
     character(len=*), parameter :: check = &
         'Usage: hertzdamp check ENGINE DECK... --radius R --density RHO --velocity U [options]' // nl // &
@@ -444,6 +479,7 @@ module hertzdamp_cli_help
         '                   (28 Mar 2023 - 29 Aug 2024) or current (default)' // nl // &
         '  --format F       text (default), csv or json' // nl // &
         '  --progress       progress on stderr (default: on a terminal, after 2 s)' // nl // &
+        '  --quiet          no warnings about implausible R, RHO or U (as invert --help)' // nl // &
         '  --table          the table of every engine''s formula and the e it achieves for' // nl // &
         '                   the targets 0.1 ... 0.9 (markdown; doc/peers.md)' // nl // &
         '' // nl // &

@@ -15,15 +15,16 @@
 !> Interface: list `contact_options` among the command's valued options and
 !> `contact_flags` among its flags (parse_args), then `call parse_contact(args, ct)`.
 !> A command that needs the mass then calls `require_mass(ct)`.
-!> `ct%has_mass`, `ct%has_radius`, `ct%has_kphys` say which of `ct%mass`,
-!> `ct%radius`, `ct%k_phys` (and `ct%e_star` with has_kphys from materials) are
-!> known.  Every bad value exits 2 with one line naming the option; a mass or
+!> `ct%has_mass`, `ct%has_radius`, `ct%has_kphys`, `ct%has_rayleigh` say which of
+!> `ct%mass`, `ct%radius`, `ct%k_phys` (and `ct%e_star` with has_kphys from
+!> materials), `ct%t_rayleigh` are known.  Every bad value exits 2 with one line naming the option; a mass or
 !> stiffness that double precision cannot hold (a radius of 1e200 m) too.  The
 !> numbers come from the library module hertzdamp_materials.
 module hertzdamp_cli_materials
     use hertzdamp, only: hertzdamp_rk, hertzdamp_sphere_mass, hertzdamp_effective_mass, hertzdamp_effective_radius, &
                          hertzdamp_plane_strain_modulus, hertzdamp_effective_modulus, hertzdamp_hertz_stiffness, &
-                         hertzdamp_message, hertzdamp_end_name, HD_OK, HD_OUT_OF_RANGE, HD_BAD_DENSITY, HD_BAD_POISSON
+                         hertzdamp_rayleigh_time, hertzdamp_message, hertzdamp_end_name, HD_OK, HD_OUT_OF_RANGE, &
+                         HD_BAD_DENSITY, HD_BAD_POISSON
     use hertzdamp_cli, only: cli_args, parse_real, fail, EXIT_USAGE
     use hertzdamp_cli_output, only: out_table
     use hertzdamp_cli_model, only: model_opts
@@ -49,6 +50,8 @@ module hertzdamp_cli_materials
         real(wp) :: radius = 0.0_wp         !! effective radius R* [m]
         real(wp) :: e_star = 0.0_wp         !! effective modulus E* [Pa] (0 when k_phys was given)
         real(wp) :: k_phys = 0.0_wp         !! physical stiffness (4/3) E* sqrt(R*) [N m^-3/2]
+        logical :: has_rayleigh = .false.   !! t_rayleigh known (radii, densities and elastic constants)
+        real(wp) :: t_rayleigh = 0.0_wp     !! the shorter Rayleigh time of the spheres (not of a wall) [s]
         character(len=:), allocatable :: description   !! e.g. 'two spheres', 'sphere and wall'
     end type cli_contact
 
@@ -153,24 +156,46 @@ contains
             call check(args, st, '--youngs-modulus' // sfx, '--radius', ' stiffness k_phys = (4/3) E* sqrt(R*)')
             ct%has_kphys = .true.
             ct%from_materials = .true.
+            if (args%has('--density')) call rayleigh(args, ct, ym1, nu1, ym2, nu2)
         end if
         if (.not. (ct%wall .or. ct%has_radius)) ct%description = 'effective mass given'
     end subroutine parse_contact
 
-    !> Start a table of a command on a contact: its columns, and as metadata the
-    !> contact end, the method, the kind of contact and the units.
-    subroutine contact_table(t, c, ct, columns, units)
+    !> The Rayleigh time of the contact: the shorter of the spheres' (a wall has none).
+    !> Not representable (a radius of 1e300 m): left unknown, the row says nothing.
+    subroutine rayleigh(args, ct, ym1, nu1, ym2, nu2)
+        type(cli_args), intent(in) :: args
+        type(cli_contact), intent(inout) :: ct
+        real(wp), intent(in) :: ym1, nu1, ym2, nu2   !! the elastic constants of the bodies
+        real(wp) :: r1, t1, t2
+        integer :: st1, st2
+        r1 = value(args, '--radius')
+        call hertzdamp_rayleigh_time(r1, value(args, '--density'), ym1, nu1, t1, st1)
+        t2 = t1
+        st2 = st1
+        if (.not. ct%wall) call hertzdamp_rayleigh_time(value(args, '--radius2', r1), &
+                                                        value(args, '--density2', value(args, '--density')), &
+                                                        ym2, nu2, t2, st2)
+        ct%has_rayleigh = st1 == HD_OK .and. st2 == HD_OK
+        if (ct%has_rayleigh) ct%t_rayleigh = min(t1, t2)
+    end subroutine rayleigh
+
+    !> Start a table of a command on a contact: its columns with their units (the
+    !> text header), and as metadata the contact end, the method, the kind of contact
+    !> and the units (JSON; the text output has them in its header).
+    subroutine contact_table(t, c, ct, columns, units, column_units)
         type(out_table), intent(inout) :: t
         type(model_opts), intent(in) :: c
         type(cli_contact), intent(in) :: ct
-        character(len=*), intent(in) :: columns   !! comma-separated column names
-        character(len=*), intent(in) :: units     !! the units of the columns, one line
-        call t%set_columns(columns)
+        character(len=*), intent(in) :: columns        !! comma-separated column names
+        character(len=*), intent(in) :: units          !! the units of the columns, one line (JSON)
+        character(len=*), intent(in) :: column_units   !! comma-separated, one per column ('' for none)
+        call t%set_columns(columns, column_units)
         call t%meta('damping', c%law_name)
         call t%meta('end', hertzdamp_end_name(c%iend))
         call t%meta('method', c%method_name)
         call t%meta('contact', ct%description)
-        call t%meta('units', units)
+        call t%meta('units', units, text='')
     end subroutine contact_table
 
     !> True when body a's compliance (1 - nu^2)/E exceeds body b's (compared in logs:

@@ -9,13 +9,23 @@
 !> escaped too), CSV fields are quoted where needed, JSON strings escaped.
 !>
 !> Metadata pairs are strings (`meta`), numbers (`meta_num`) or logicals (`meta_bool`):
-!> `# key: value` lines in text, members of the JSON object, not in CSV.  A JSON
+!> `# key: value` lines in text, members of the JSON object, not in CSV.  A string pair
+!> may read differently in text (`meta`'s `text`; empty: not shown in text).  A JSON
 !> document may carry further tables (render's `more`): each as an array of row
 !> objects under its own name (`rows_key`, default "rows").
+!>
+!> The text output is for people, with the number formats of hertzdamp_apps_text (the
+!> one place of them): each column's unit in its header (`set_columns`' `units`);
+!> numbers with 7 significant digits and a two-digit exponent (9.965498e+08), whole
+!> numbers as integers; a column that has the same value in every row printed once
+!> above the table, in the short form of a single value (`# e = 0.9`,
+!> `# mass [kg] = 5.235988e-06`); a table of one row as one `name [unit] = value` line
+!> per column.  CSV and JSON do not depend on any of this.
 module hertzdamp_cli_output
     use hertzdamp_kinds, only: hertzdamp_rk
     use hertzdamp_cli, only: cli_buffer, cli_line
-    use hertzdamp_cli_text, only: fmt_csv, fmt_text, fmt_json, json_string, csv_field, one_line, itoa
+    use hertzdamp_cli_text, only: fmt_csv, fmt_text, fmt_text_short, fmt_json, json_string, csv_field, &
+                                  one_line, itoa
     implicit none
     private
 
@@ -39,14 +49,17 @@ module hertzdamp_cli_output
     !> A table with named columns and metadata (key = value pairs).
     type, public :: out_table
         type(cli_line), allocatable :: head(:)
+        type(cli_line), allocatable :: units(:)      !! unit of each column ('' for none), text header only
         type(cli_line), allocatable :: meta_key(:)
         type(cell), allocatable :: meta_val(:)
+        type(cli_line), allocatable :: meta_txt(:)   !! the value in text (when meta_alt)
+        logical, allocatable :: meta_alt(:)          !! the text output shows meta_txt instead
         type(cell), allocatable :: cells(:, :)
         integer :: nrow = 0
         integer :: col = 0
         character(len=:), allocatable :: rows_key   !! JSON name of the rows array ('rows' when unset)
     contains
-        procedure :: set_columns   !! comma-separated column names (call first)
+        procedure :: set_columns   !! comma-separated column names and, optionally, their units (call first)
         procedure :: meta          !! a metadata pair: '# key: value' in text, a member in JSON, not in CSV
         procedure :: meta_num      !! a metadata number (JSON: a number, null when not finite)
         procedure :: meta_bool     !! a metadata logical (JSON: true/false)
@@ -61,34 +74,54 @@ module hertzdamp_cli_output
 
 contains
 
-    subroutine set_columns(self, names)
+    subroutine set_columns(self, names, units)
         class(out_table), intent(inout) :: self
-        character(len=*), intent(in) :: names  !! comma-separated column names
-        integer :: i, j, n
-        n = 1
-        do i = 1, len(names)
-            if (names(i:i) == ',') n = n + 1
-        end do
-        allocate (self%head(n), self%cells(n, 16), self%meta_key(0), self%meta_val(0))
-        j = 1
-        n = 0
-        do i = 1, len(names) + 1
-            if (i > len(names)) then
-                n = n + 1
-                self%head(n)%s = names(j:)
-            else if (names(i:i) == ',') then
-                n = n + 1
-                self%head(n)%s = names(j:i - 1)
-                j = i + 1
+        character(len=*), intent(in) :: names            !! comma-separated column names
+        character(len=*), intent(in), optional :: units  !! comma-separated units, as many ('' for none): text header
+        type(cli_line), allocatable :: u(:)
+        integer :: j
+        self%head = split_commas(names)
+        allocate (self%units(size(self%head)), u(0))
+        if (present(units)) u = split_commas(units)
+        do j = 1, size(self%head)
+            self%units(j)%s = ''
+            if (present(units)) then
+                if (j <= size(u)) self%units(j)%s = u(j)%s
             end if
         end do
+        allocate (self%cells(size(self%head), 16), self%meta_key(0), self%meta_val(0), self%meta_txt(0), &
+                  self%meta_alt(0))
     end subroutine set_columns
 
-    !> Add a metadata pair (printed as a comment in text, a member in JSON, omitted in CSV).
-    subroutine meta(self, key, val)
+    !> The comma-separated fields of `text`, in order (empty fields kept).
+    pure function split_commas(text) result(parts)
+        character(len=*), intent(in) :: text
+        type(cli_line), allocatable :: parts(:)
+        integer :: i, j, n
+        allocate (parts(count([(text(i:i) == ',', i=1, len(text))]) + 1))
+        j = 1
+        n = 0
+        do i = 1, len(text) + 1
+            if (i <= len(text)) then
+                if (text(i:i) /= ',') cycle
+            end if
+            n = n + 1
+            parts(n)%s = text(j:i - 1)
+            j = i + 1
+        end do
+    end function split_commas
+
+    !> Add a metadata pair (printed as a comment in text, a member in JSON, omitted in
+    !> CSV); `text`: the value as the text output shows it (empty: not shown in text).
+    subroutine meta(self, key, val, text)
         class(out_table), intent(inout) :: self
         character(len=*), intent(in) :: key, val
+        character(len=*), intent(in), optional :: text
         call add_meta(self, key, cell(kind=CELL_STR, s=val))
+        if (present(text)) then
+            self%meta_txt(size(self%meta_txt)) = cli_line(text)
+            self%meta_alt(size(self%meta_alt)) = .true.
+        end if
     end subroutine meta
 
     !> A metadata number; `have` false: no value (null in JSON, - in text).
@@ -121,6 +154,8 @@ contains
         type(cell), intent(in) :: val
         self%meta_key = [self%meta_key, cli_line(key)]
         self%meta_val = [self%meta_val, val]
+        self%meta_txt = [self%meta_txt, cli_line('')]
+        self%meta_alt = [self%meta_alt, .false.]
     end subroutine add_meta
 
     !> Move to the next cell, starting a new row after the last column; the cell array
@@ -206,7 +241,7 @@ contains
             select case (fmt)
             case (FORMAT_CSV); s = fmt_csv(c%x)
             case (FORMAT_JSON); s = fmt_json(c%x)
-            case default; s = trim(adjustl(fmt_text(c%x)))
+            case default; s = fmt_text(c%x)
             end select
         case (CELL_STR)
             select case (fmt)
@@ -246,8 +281,6 @@ contains
         type(cli_buffer), intent(inout) :: buf
         type(out_table), intent(in), optional :: more(:)
         character(len=:), allocatable :: line
-        type(cli_line), allocatable :: txt(:, :)
-        integer, allocatable :: width(:)
         integer :: i, j, nc, nmore
         nc = size(self%head)
         select case (fmt)
@@ -277,34 +310,79 @@ contains
             end do
             call buf%add('}')
         case default
-            do j = 1, size(self%meta_key)
-                call buf%add('# ' // one_line(self%meta_key(j)%s) // ': ' // cell_text(self%meta_val(j), fmt))
-            end do
-            ! every cell formatted once, the widths in the same pass
-            allocate (txt(nc, self%nrow), width(nc))
-            do j = 1, nc
-                width(j) = display_width(one_line(self%head(j)%s))
-            end do
-            do i = 1, self%nrow
-                do j = 1, nc
-                    txt(j, i)%s = cell_text(self%cells(j, i), fmt)
-                    width(j) = max(width(j), display_width(txt(j, i)%s))
-                end do
-            end do
-            line = ''
-            do j = 1, nc
-                line = line // ' ' // right(one_line(self%head(j)%s), width(j))
-            end do
-            call buf%add(line(2:))
-            do i = 1, self%nrow
-                line = ''
-                do j = 1, nc
-                    line = line // ' ' // right(txt(j, i)%s, width(j))
-                end do
-                call buf%add(line(2:))
-            end do
+            call render_text(self, buf)
         end select
     end subroutine render
+
+    !> The text rendering (see the module header): metadata, the columns that never
+    !> change, the table with the units in its header; one row as a list.
+    subroutine render_text(self, buf)
+        class(out_table), intent(in) :: self
+        type(cli_buffer), intent(inout) :: buf
+        type(cli_line), allocatable :: txt(:, :), head(:)
+        integer, allocatable :: width(:)
+        logical, allocatable :: const(:)
+        character(len=:), allocatable :: line, value
+        character(len=*), parameter :: comment = '# '
+        integer :: i, j, nc, wname
+        nc = size(self%head)
+        do j = 1, size(self%meta_key)
+            if (.not. self%meta_alt(j)) then
+                call buf%add('# ' // one_line(self%meta_key(j)%s) // ': ' // cell_text(self%meta_val(j), FORMAT_TEXT))
+            else if (len(self%meta_txt(j)%s) > 0) then
+                call buf%add('# ' // one_line(self%meta_key(j)%s) // ': ' // one_line(self%meta_txt(j)%s))
+            end if
+        end do
+        ! every cell formatted once
+        allocate (txt(nc, self%nrow), head(nc), width(nc), const(nc))
+        do j = 1, nc
+            do i = 1, self%nrow
+                txt(j, i)%s = cell_text(self%cells(j, i), FORMAT_TEXT)
+            end do
+            const(j) = self%nrow >= 1
+            do i = 2, self%nrow
+                if (const(j)) const(j) = txt(j, i)%s == txt(j, 1)%s
+            end do
+            head(j)%s = one_line(self%head(j)%s)
+        end do
+        ! the units in the header: 'name [unit]'
+        do j = 1, nc
+            if (len(self%units(j)%s) > 0) head(j)%s = head(j)%s // ' [' // one_line(self%units(j)%s) // ']'
+        end do
+        ! two rows or more: the columns that never change go above the table, unless
+        ! every column does (then the table stays whole); one row: a list
+        if (self%nrow >= 2 .and. all(const)) const = .false.
+        wname = 0
+        do j = 1, nc
+            if (const(j)) wname = max(wname, display_width(head(j)%s))
+        end do
+        do j = 1, nc
+            if (.not. const(j)) cycle
+            ! the value once, in the short form of a single number
+            value = txt(j, 1)%s
+            if (self%cells(j, 1)%kind == CELL_NUM) value = fmt_text_short(self%cells(j, 1)%x)
+            call buf%add(comment(1:merge(2, 0, self%nrow >= 2)) // pad_right(head(j)%s, wname) // ' = ' // value)
+        end do
+        if (self%nrow == 1) return
+        do j = 1, nc
+            width(j) = display_width(head(j)%s)
+            do i = 1, self%nrow
+                width(j) = max(width(j), display_width(txt(j, i)%s))
+            end do
+        end do
+        line = ''
+        do j = 1, nc
+            if (.not. const(j)) line = line // ' ' // right(head(j)%s, width(j))
+        end do
+        call buf%add(line(2:))
+        do i = 1, self%nrow
+            line = ''
+            do j = 1, nc
+                if (.not. const(j)) line = line // ' ' // right(txt(j, i)%s, width(j))
+            end do
+            call buf%add(line(2:))
+        end do
+    end subroutine render_text
 
     !> The rows of a table as a JSON member: "rows_key": [ {...}, ... ] (a comma after
     !> it when `comma`).
@@ -330,6 +408,14 @@ contains
         end do
         call buf%add(trim(merge('  ],', '  ] ', comma)))
     end subroutine json_rows
+
+    !> `s` left-justified in `width` display columns.
+    function pad_right(s, width) result(r)
+        character(len=*), intent(in) :: s
+        integer, intent(in) :: width
+        character(len=:), allocatable :: r
+        r = s // repeat(' ', max(0, width - display_width(s)))
+    end function pad_right
 
     !> `s` right-justified in `width` display columns.
     function right(s, width) result(r)

@@ -22,9 +22,19 @@
 !>
 !> On any failure: one line on stderr, exit 4, and every temporary file removed, so
 !> nothing is left behind: neither a half-written target nor a stray file.
+!>
+!> Signals: from the first scratch file on, SIGINT, SIGTERM and SIGHUP (unless they
+!> were ignored when the program started) remove every temporary file of the plot
+!> (scratch files, gnuplot's PNG and error stream, the copy next to the target; never
+!> the target), stop gnuplot (it runs in a process group of its own, which gets
+!> SIGTERM) and end the program by that signal (exit 130, 143, 129 in a shell).
+!> gnuplot is started with fork and exec, not system(), so that SIGINT is not ignored
+!> while it runs.  The handler calls only async-signal-safe functions (kill, unlink,
+!> signal, raise) on paths stored beforehand.
 module hertzdamp_cli_plot
-    use, intrinsic :: iso_c_binding, only: c_char, c_int, c_null_char
-    use hertzdamp_cli, only: fail, cli_line, EXIT_USAGE, EXIT_FAILURE
+    use, intrinsic :: iso_c_binding, only: c_char, c_int, c_null_char, c_funptr, c_funloc, c_ptr, c_loc, &
+                                           c_null_ptr, c_intptr_t, c_long
+    use hertzdamp_cli, only: fail, cli_line, EXIT_USAGE, EXIT_FAILURE, c_signal
     use hertzdamp_cli_text, only: itoa
     use, intrinsic :: iso_fortran_env, only: int64
     implicit none
@@ -66,7 +76,80 @@ module hertzdamp_cli_plot
             implicit none
             integer(c_int) :: pid
         end function c_getpid
+        function c_fork() bind(C, name='fork') result(pid)
+            import :: c_int
+            implicit none
+            integer(c_int) :: pid
+        end function c_fork
+        function c_execv(path, argv) bind(C, name='execv') result(rc)
+            import :: c_char, c_ptr, c_int
+            implicit none
+            character(kind=c_char), intent(in) :: path(*)
+            type(c_ptr), intent(in) :: argv(*)
+            integer(c_int) :: rc
+        end function c_execv
+        subroutine c_exit_child(status) bind(C, name='_exit')
+            import :: c_int
+            implicit none
+            integer(c_int), value :: status
+        end subroutine c_exit_child
+        function c_waitpid(pid, status, options) bind(C, name='waitpid') result(rc)
+            import :: c_int
+            implicit none
+            integer(c_int), value :: pid, options
+            integer(c_int), intent(out) :: status
+            integer(c_int) :: rc
+        end function c_waitpid
+        function c_setpgid(pid, pgid) bind(C, name='setpgid') result(rc)
+            import :: c_int
+            implicit none
+            integer(c_int), value :: pid, pgid
+            integer(c_int) :: rc
+        end function c_setpgid
+        function c_kill(pid, sig) bind(C, name='kill') result(rc)
+            import :: c_int
+            implicit none
+            integer(c_int), value :: pid, sig
+            integer(c_int) :: rc
+        end function c_kill
+        function c_unlink(path) bind(C, name='unlink') result(rc)
+            import :: c_char, c_int
+            implicit none
+            character(kind=c_char), intent(in) :: path(*)
+            integer(c_int) :: rc
+        end function c_unlink
+        function c_raise(sig) bind(C, name='raise') result(rc)
+            import :: c_int
+            implicit none
+            integer(c_int), value :: sig
+            integer(c_int) :: rc
+        end function c_raise
+        function c_sigfillset(set) bind(C, name='sigfillset') result(rc)
+            import :: c_long, c_int
+            implicit none
+            integer(c_long), intent(out) :: set(16)
+            integer(c_int) :: rc
+        end function c_sigfillset
+        function c_sigprocmask(how, set, old) bind(C, name='sigprocmask') result(rc)
+            import :: c_long, c_int
+            implicit none
+            integer(c_int), value :: how
+            integer(c_long), intent(in) :: set(16)
+            integer(c_long), intent(out) :: old(16)
+            integer(c_int) :: rc
+        end function c_sigprocmask
     end interface
+
+    !> Linux signal numbers and sigprocmask operations (sigset_t: 128 bytes in glibc).
+    integer(c_int), parameter :: sighup = 1, sigint = 2, sigterm = 15, sig_block = 0, sig_setmask = 2
+    !> The temporary files a signal removes: NUL-terminated paths, stored before each
+    !> file is created; guard_n of them are valid (volatile: read by the handler).
+    integer, parameter :: guard_len = 4352, guard_max = 16
+    character(kind=c_char) :: guard_paths(guard_len, guard_max)
+    integer, volatile :: guard_n = 0
+    !> Process group of the running gnuplot (0: none), stopped by the handler.
+    integer(c_int), volatile :: guard_child = 0
+    logical :: guard_installed = .false.
 
     !> The last 12 bytes of every complete PNG: the empty IEND chunk with its CRC.
     character(len=*), parameter :: png_end = achar(0) // achar(0) // achar(0) // achar(0) // 'IEND' // &
@@ -191,9 +274,10 @@ contains
         integer :: es, cs, i
         character(len=:), allocatable :: errfile, why, png
         errfile = png_tmp // '.err'
-        es = -1
-        call execute_command_line('gnuplot ' // sh_quote(script) // ' >/dev/null 2>' // sh_quote(errfile), &
-                                  exitstat=es, cmdstat=cs)
+        call guard(errfile)
+        call guard(png_tmp)
+        call guard(dir_temp_name(target))
+        call run_gnuplot(script, errfile, es, cs)
         call remove_file(script)
         do i = 1, size(scratch)
             call remove_file(trim(scratch(i)))
@@ -314,11 +398,15 @@ contains
         integer, intent(out) :: unit
         character(len=:), allocatable, intent(out) :: name
         integer :: try, ios
+        logical :: taken
         if (.not. allocated(self%names)) allocate (self%names(0), self%units(0), self%bytes(0))
         ios = 1
         do try = 1, 100
             name = scratch_dir() // '/hertzdamp_' // tag // '_' // itoa(int(c_getpid())) // '_' // itoa(try) // &
                    '.' // ext
+            inquire (file=name, exist=taken)
+            if (taken) cycle   ! someone else's: never guarded, never removed
+            call guard(name)
             open (newunit=unit, file=name, status='new', action='write', iostat=ios)
             if (ios == 0) exit
         end do
@@ -405,6 +493,112 @@ contains
         end do
         call plot_run(script, plot_temp_name(), target, others)
     end subroutine draw_with
+
+    !> Remember a temporary file for the signal handler (before it is created), and
+    !> install the handler with the first one.  A name that does not fit a slot, or
+    !> beyond guard_max of them, is not guarded (none is: at most 6 per plot).
+    subroutine guard(path)
+        character(len=*), intent(in) :: path
+        integer :: i
+        if (len(path) >= guard_len .or. guard_n >= guard_max) return
+        do i = 1, guard_n
+            if (same_c_path(guard_paths(:, i), path)) return
+        end do
+        do i = 1, len(path)
+            guard_paths(i, guard_n + 1) = path(i:i)
+        end do
+        guard_paths(len(path) + 1, guard_n + 1) = c_null_char
+        guard_n = guard_n + 1   ! only now does the handler see the slot
+        if (.not. guard_installed) then
+            call catch(sigint)
+            call catch(sigterm)
+            call catch(sighup)
+            guard_installed = .true.
+        end if
+    end subroutine guard
+
+    !> True when the NUL-terminated `c` holds `path`.
+    pure logical function same_c_path(c, path)
+        character(kind=c_char), intent(in) :: c(:)
+        character(len=*), intent(in) :: path
+        integer :: i
+        same_c_path = .false.
+        if (len(path) + 1 > size(c)) return
+        do i = 1, len(path)
+            if (c(i) /= path(i:i)) return
+        end do
+        same_c_path = c(len(path) + 1) == c_null_char
+    end function same_c_path
+
+    !> Catch `sig` with on_signal, unless it was ignored (a background job's SIGINT).
+    subroutine catch(sig)
+        integer(c_int), intent(in) :: sig
+        type(c_funptr) :: previous, ignored
+        previous = c_signal(sig, c_funloc(on_signal))
+        if (transfer(previous, 0_c_intptr_t) == 1_c_intptr_t) ignored = c_signal(sig, previous)   ! SIG_IGN stays
+    end subroutine catch
+
+    !> The handler: stop gnuplot's process group, remove the guarded files, and end the
+    !> program by the same signal (default action).  Async-signal-safe calls only.
+    subroutine on_signal(sig) bind(C)
+        integer(c_int), value :: sig
+        integer(c_int) :: rc
+        type(c_funptr) :: previous
+        integer :: i
+        if (guard_child > 0) rc = c_kill(-guard_child, sigterm)
+        do i = 1, guard_n
+            rc = c_unlink(guard_paths(:, i))
+        end do
+        previous = c_signal(sig, transfer(0_c_intptr_t, previous))   ! SIG_DFL
+        rc = c_raise(sig)
+    end subroutine on_signal
+
+    !> gnuplot SCRIPT with stdout to /dev/null and stderr to ERRFILE, in a process group
+    !> of its own (the handler stops it there), waited for.  es: its exit status (-1 if
+    !> it ended by a signal), cs: 0, or 1 when it could not be started.  Signals are
+    !> blocked from fork until the child's process group is recorded; the child only
+    !> unblocks them, sets its group and executes /bin/sh (no Fortran runtime there).
+    subroutine run_gnuplot(script, errfile, es, cs)
+        character(len=*), intent(in) :: script, errfile
+        integer, intent(out) :: es, cs
+        character(kind=c_char), allocatable, target :: sh(:), a0(:), a1(:), a2(:), a3(:), a4(:)
+        type(c_ptr) :: argv(7)
+        integer(c_long) :: all_signals(16), old_mask(16)
+        integer(c_int) :: pid, rc, status
+        allocate (sh, source=c_str('/bin/sh'))
+        allocate (a0, source=c_str('sh'))
+        allocate (a1, source=c_str('-c'))
+        allocate (a2, source=c_str('exec gnuplot "$1" >/dev/null 2>"$2"'))
+        allocate (a3, source=c_str(script))
+        allocate (a4, source=c_str(errfile))
+        ! sh -c CMD sh SCRIPT ERRFILE: the names are $1 and $2, no quoting needed
+        argv = [c_loc(a0), c_loc(a1), c_loc(a2), c_loc(a0), c_loc(a3), c_loc(a4), c_null_ptr]
+        es = -1
+        cs = 1
+        rc = c_sigfillset(all_signals)
+        rc = c_sigprocmask(sig_block, all_signals, old_mask)
+        pid = c_fork()
+        if (pid == 0) then
+            rc = c_sigprocmask(sig_setmask, old_mask, all_signals)
+            rc = c_setpgid(0_c_int, 0_c_int)
+            rc = c_execv(sh, argv)
+            call c_exit_child(127_c_int)
+        end if
+        if (pid > 0) then
+            rc = c_setpgid(pid, pid)
+            guard_child = pid
+        end if
+        rc = c_sigprocmask(sig_setmask, old_mask, all_signals)
+        if (pid < 0) return
+        do
+            rc = c_waitpid(pid, status, 0_c_int)
+            if (rc == pid .or. rc /= -1) exit
+        end do
+        guard_child = 0
+        if (rc /= pid) return
+        cs = 0
+        if (iand(status, 127_c_int) == 0) es = iand(ishft(status, -8), 255_c_int)
+    end subroutine run_gnuplot
 
     function c_str(s) result(c)
         character(len=*), intent(in) :: s

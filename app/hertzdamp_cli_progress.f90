@@ -25,14 +25,28 @@
 !>
 !> `total` and `done` are in any unit of work (steps, runs, simulated seconds); the time
 !> left is elapsed * (total - done) / done.  A second phase is a second start/finish.
+!>
+!> A progress write that fails (stderr a pipe nobody reads any more) is dropped, and so
+!> is every later report of the run: SIGPIPE is ignored while a report is written, so
+!> that such a write fails instead of killing the program before its results reach
+!> stdout, and stays ignored after a failed one (the runtime would retry the write).
 module hertzdamp_cli_progress
     use hertzdamp_kinds, only: hertzdamp_rk
     use, intrinsic :: iso_fortran_env, only: error_unit, int64
-    use hertzdamp_cli, only: stderr_is_terminal
+    use, intrinsic :: iso_c_binding, only: c_int, c_funptr, c_intptr_t, c_size_t, c_long
+    ! write(2): a report goes to stderr unbuffered, and a failed write is seen (the
+    ! Fortran runtime does not report EPIPE on the error unit, and retries it)
+    use hertzdamp_cli, only: stderr_is_terminal, c_write, c_signal
     implicit none
     private
 
     integer, parameter :: wp = hertzdamp_rk
+
+    !> SIGPIPE on Linux.
+    integer(c_int), parameter :: sigpipe = 13
+
+    !> Set once a report could not be written: no more reports in this run.
+    logical :: stderr_broken = .false.
 
     !> A progress line on stderr.
     type, public :: progress_reporter
@@ -93,25 +107,54 @@ contains
             write (line, '(a)') ': starting'
         end if
         if (self%tty) then
-            write (error_unit, '(a)', advance='no') achar(13) // 'hertzdamp: ' // self%label // trim(line) // &
-                achar(27) // '[K'
+            call report(self, achar(13) // 'hertzdamp: ' // self%label // trim(line) // achar(27) // '[K', .false.)
         else
-            write (error_unit, '(a)') 'hertzdamp: ' // self%label // trim(line)
+            call report(self, 'hertzdamp: ' // self%label // trim(line), .true.)
         end if
-        flush (error_unit)
         self%shown = .true.
     end subroutine progress_update
 
     !> End the work: erase the progress line on a terminal.
     subroutine progress_finish(self)
         class(progress_reporter), intent(inout) :: self
-        if (self%active .and. self%shown .and. self%tty) then
-            write (error_unit, '(a)', advance='no') achar(13) // achar(27) // '[K'
-            flush (error_unit)
-        end if
+        if (self%active .and. self%shown .and. self%tty) call report(self, achar(13) // achar(27) // '[K', .false.)
         self%active = .false.
         self%shown = .false.
     end subroutine progress_finish
+
+    !> Write one report to stderr (a whole line, or a part of one) with write(2) and
+    !> SIGPIPE ignored meanwhile; if that fails, stop reporting, silently.
+    subroutine report(self, text, whole_line)
+        class(progress_reporter), intent(inout) :: self
+        character(len=*), intent(in) :: text
+        logical, intent(in) :: whole_line
+        character(len=:), allocatable :: bytes
+        type(c_funptr) :: previous, ignored
+        integer(c_long) :: n
+        integer :: done
+        if (stderr_broken) then
+            self%active = .false.
+            return
+        end if
+        bytes = text
+        if (whole_line) bytes = bytes // achar(10)
+        flush (error_unit)   ! anything the runtime holds for stderr goes first
+        previous = c_signal(sigpipe, transfer(1_c_intptr_t, previous))   ! 1 = SIG_IGN
+        done = 0
+        do while (done < len(bytes))
+            n = c_write(2_c_int, bytes(done + 1:), int(len(bytes) - done, c_size_t))
+            if (n <= 0) exit
+            done = done + int(n)
+        end do
+        if (done < len(bytes)) then
+            ! stderr is gone: SIGPIPE stays ignored, so that a later message on stderr
+            ! fails as well instead of killing the program
+            stderr_broken = .true.
+            self%active = .false.
+        else
+            ignored = c_signal(sigpipe, previous)
+        end if
+    end subroutine report
 
     !> A duration for people: 42 s, 3 min 5 s, 2 h 10 min.
     function duration(t) result(s)

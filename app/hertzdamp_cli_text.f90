@@ -1,10 +1,10 @@
 !> Text for the output contract of the `hertzdamp` program: valid UTF-8 everywhere
 !> (invalid bytes replaced), one-line messages (control characters escaped), and the
-!> number formats of the text, CSV and JSON outputs (fmt_short, for messages, is the
-!> applications' own, hertzdamp_apps_text).
+!> number formats of the CSV and JSON outputs (fmt_short, for messages, and fmt_text,
+!> fmt_text_short, for the text output, are the applications' own, hertzdamp_apps_text).
 module hertzdamp_cli_text
     use hertzdamp_kinds, only: hertzdamp_rk
-    use hertzdamp_apps_text, only: fmt_short, itoa, ROUND_TRIP
+    use hertzdamp_apps_text, only: fmt_short, itoa, ROUND_TRIP, fmt_text, fmt_text_short, is_whole_text
     use, intrinsic :: ieee_arithmetic, only: ieee_is_finite, ieee_is_nan
     implicit none
     private
@@ -13,9 +13,9 @@ module hertzdamp_cli_text
     !> U+FFFD REPLACEMENT CHARACTER, in UTF-8.
     character(len=*), parameter :: replacement = char(239) // char(191) // char(189)
 
-    public :: utf8_clean, one_line, json_string, csv_field, fmt_csv, fmt_json, fmt_text
-    !> The short number format and itoa of the applications, for the commands.
-    public :: fmt_short, itoa, ROUND_TRIP
+    public :: utf8_clean, one_line, json_string, csv_field, fmt_csv, fmt_json
+    !> The number formats and itoa of the applications, for the commands.
+    public :: fmt_short, itoa, ROUND_TRIP, fmt_text, fmt_text_short, is_whole_text
 
 contains
 
@@ -213,19 +213,5 @@ contains
             s = fmt_csv(x)
         end if
     end function fmt_json
-
-    !> A number for aligned text (people): 7 significant digits, e.g. 5.235988E-006;
-    !> 'inf', '-inf' or 'nan' if not finite.  CSV and JSON carry 16 or 17 (round trip).
-    function fmt_text(x) result(s)
-        real(wp), intent(in) :: x
-        character(len=:), allocatable :: s
-        character(len=24) :: buf
-        if (.not. ieee_is_finite(x)) then
-            s = fmt_csv(x)
-        else
-            write (buf, '(es16.6e3)') x
-            s = trim(adjustl(buf))
-        end if
-    end function fmt_text
 
 end module hertzdamp_cli_text

@@ -6,8 +6,9 @@ module hertzdamp_cmd_basic
                          hertzdamp_law_has_alpha_c, hertzdamp_law_alpha_c, hertzdamp_law_code, &
                          HD_OK, HD_NO_REBOUND, HD_END_OVERLAP, HD_METHOD_RK45, HD_METHOD_SERIES, HD_METHOD_PADE, &
                          HD_BAD_ALPHA, HD_BAD_STIFFNESS, HD_BAD_DAMPING, HD_BAD_VELOCITY, HD_BAD_MASS, &
-                         HD_OUT_OF_RANGE, HD_OUTSIDE_VALIDITY, HD_INACCURATE
+                         HD_OUT_OF_RANGE, HD_OUTSIDE_VALIDITY, HD_INACCURATE, HD_MAX_STEPS, hertzdamp_reduce
     use hertzdamp_scaling, only: hertzdamp_safe_exp, hertzdamp_log_tstar
+    use hertzdamp_rk45, only: hertzdamp_rk45_options
     use hertzdamp_cli, only: cli_args, cli_buffer, parse_args, parse_choice, parse_sweep, parse_range, fail, quit, &
                              required_sweep, check_combinations, EXIT_USAGE, EXIT_OK, EXIT_FAILURE, max_list_length
     use hertzdamp_cli_text, only: fmt_short, itoa
@@ -17,6 +18,7 @@ module hertzdamp_cmd_basic
     use hertzdamp_cli_rows, only: row_log, row_kind, row_word, row_has_result
     use hertzdamp_cli_materials, only: cli_contact, parse_contact, require_mass, contact_table, contact_options, contact_flags
     use hertzdamp_cli_progress, only: progress_reporter
+    use hertzdamp_cli_plausible, only: warn_implausible, quiet_flag
     use, intrinsic :: ieee_arithmetic, only: ieee_value, ieee_positive_inf
     implicit none
     private
@@ -32,6 +34,7 @@ contains
         integer, intent(in) :: status
         real(wp), intent(in) :: alpha
         character(len=:), allocatable :: s
+        type(hertzdamp_rk45_options), parameter :: max_steps = hertzdamp_rk45_options()
         select case (status)
         case (HD_BAD_ALPHA, HD_OUTSIDE_VALIDITY)
             if (abs(alpha) > hertzdamp_alpha_max) then
@@ -46,6 +49,11 @@ contains
                 ' exceeds --accuracy ' // fmt_short(c%accuracy) // ' (raise '
             if (c%method == HD_METHOD_SERIES) s = s // '--order or '
             s = s // '--accuracy, or ' // instead(c) // ')'
+        case (HD_MAX_STEPS)
+            ! what really happened: the contact outlasted the step budget
+            s = 'alpha = ' // fmt_short(alpha) // ': the reference integrator reached its limit of ' // &
+                itoa(max_steps%max_steps) // ' steps before the contact ended (damping this strong makes the ' // &
+                'contact long and the equation stiff)'
         case default
             s = 'alpha = ' // fmt_short(alpha) // ': ' // hertzdamp_message(status)
         end select
@@ -111,7 +119,7 @@ contains
         type(cli_contact) :: ct
         real(wp), allocatable :: ks(:), ds(:), us(:)
         real(wp) :: k, d, u, alpha, tstar, e, tc, zmax
-        integer :: status, ik, id, iu, kind, n
+        integer :: status, ik, id, iu, kind, n, st
         type(out_table) :: t
         type(row_log) :: rows
         type(progress_reporter) :: p
@@ -119,7 +127,7 @@ contains
         allocate (ks(0), ds(0), us(0))   ! (defined descriptors for the reallocating assignments)
         if (wants_help()) call print_help('forward')
         call parse_args(2, '--k --d --velocity ' // contact_options // ' ' // model_options, &
-                        contact_flags // ' --progress', args)
+                        contact_flags // ' --progress ' // quiet_flag, args)
         call parse_model(args, c, inverse=.false.)
         call parse_contact(args, ct)
         call require_mass(ct)
@@ -133,10 +141,12 @@ contains
         ds = required_sweep(args, '--d')
         us = required_sweep(args, '--velocity')
         call check_combinations([size(ks), size(ds), size(us)], '--k, --d and --velocity')
+        call warn_implausible(args)
         call contact_table(t, c, ct, 'k,d,velocity,mass,radius_eff,k_phys,alpha,t_star,e,t_c,zeta_max,status', &
                            'k, k_phys [N m^-3/2], d [' // damping_unit(c%law) // '], velocity [m/s], mass [kg], ' // &
                            'radius_eff [m], ' // &
-                           't_star [s], t_c [s], zeta_max [m]')
+                           't_star [s], t_c [s], zeta_max [m]', &
+                           'N m^-3/2,' // damping_unit(c%law) // ',m/s,kg,m,N m^-3/2,,s,,s,m,')
         n = 0
         call p%start(real(size(ks) * size(ds) * size(us), wp), 'forward', force=args%has('--progress'))
         do ik = 1, size(ks)
@@ -149,6 +159,9 @@ contains
                                                c%tol, c%order, c%accuracy, c%law)
                     have_alpha = .true.
                     have_tstar = .true.
+                    ! a failed row has no alpha from the library: the message needs it
+                    if (status /= HD_OK) call hertzdamp_reduce(k, d, ct%mass, u, alpha, tstar, st, law=c%law)
+                    if (status /= HD_OK .and. st /= HD_OK) alpha = 0.0_wp
                     if (status == HD_OUT_OF_RANGE .or. status == HD_BAD_ALPHA) then
                         ! alpha beyond the method (or double precision): with the overlap end that is
                         ! simply no rebound; with the force end, outside the method's range

@@ -34,7 +34,7 @@ module hertzdamp_cmd_bench
     use hertzdamp_bench_table_closed_form, only: closed_form_rows, closed_form_meta, closed_form_figures
     use hertzdamp_bench_pair, only: pair_result, pair_measure
     use hertzdamp_bench_table_pair, only: pair_rows, pair_meta, pair_figures
-    use hertzdamp_bench_output, only: build_table, render_text, make_plot
+    use hertzdamp_bench_output, only: build_table, make_plot
     use hertzdamp_bench_timer, only: wall_seconds
     use hertzdamp_cli_plot, only: plot_check_target
     use hertzdamp_cli_progress, only: progress_reporter
@@ -89,7 +89,7 @@ contains
         call build_table(run%rows, o%fmt, t)
         if (o%fmt /= FORMAT_CSV) call describe(o, run, figs, t)
         if (o%fmt == FORMAT_TEXT) then
-            call render_text(t, figs%n, run%rows, buf)
+            call t%render(FORMAT_TEXT, buf)
             do i = 1, figs%n
                 call buf%add('figure: ' // figs%lines(i)%s)
             end do
@@ -230,7 +230,7 @@ contains
         call t%meta('omitted', 'methods that report not-supported, and points whose status is not ok ' // &
                     '(column points = used/total)')
         do i = 1, figs%n
-            call t%meta('figure' // itoa(i), figs%lines(i)%s)
+            call t%meta('figure' // itoa(i), figs%lines(i)%s, text='')   ! text: below the table
         end do
     end subroutine describe
 

@@ -12,8 +12,10 @@ module hertzdamp_cmd_calibrate
     use hertzdamp_cli_output, only: out_table, format_choices, FORMAT_TEXT, FORMAT_CSV, FORMAT_JSON
     use hertzdamp_cli_plot, only: plot_check_target, plot_scratch, plot_temp_name, gp_string
     use hertzdamp_cli_help, only: print_help, wants_help
-    use hertzdamp_cli_text, only: g => fmt_short, itoa, one_line
+    use hertzdamp_cli_text, only: g => fmt_text_short, itoa, one_line
     use hertzdamp_cli_materials, only: cli_contact, parse_contact, require_mass, contact_options, contact_flags
+    use hertzdamp_cli_model, only: damping_unit
+    use hertzdamp_cli_plausible, only: warn_implausible, warn_value, quiet_flag
     implicit none
     private
     public :: cmd_calibrate
@@ -54,8 +56,8 @@ contains
         integer, allocatable :: order(:)
         type(cli_buffer) :: buf
         if (wants_help()) call print_help('calibrate')
-        call parse_args(2, '--damping --end --method --tol --format --plot ' // contact_options, contact_flags, args, &
-                        allow_positional=.true.)
+        call parse_args(2, '--damping --end --method --tol --format --plot ' // contact_options, &
+                        contact_flags // ' ' // quiet_flag, args, allow_positional=.true.)
         if (.not. allocated(args%positional)) call fail(EXIT_USAGE, 'missing data file (see --help)')
         file = args%positional
         call parse_contact(args, ct)
@@ -83,11 +85,20 @@ contains
         if (ct%has_kphys .and. .not. any(dat%has_tc)) o%k_known = ct%k_phys
         call cal_check(dat, o, st, msg)
         if (st /= CAL_OK) call fail(exit_of(st), file // ': ' // msg)
+        call warn_implausible(args)
+        call warn_value('--velocity', maxval(dat%u), g(maxval(dat%u)), args%has(quiet_flag), typed=.false., &
+                        name=file // ': velocity')
 
         if (law < 0) then
             call cal_auto(dat, o, res, chosen)
-            ! no law could be fitted: say why the first one failed
-            if (chosen < 0) call fail(exit_of(res(0)%status), res(0)%message)
+            ! no law could be fitted (say why the first failed), or a law that may fit
+            ! best could not be: choose none
+            if (chosen < 0) then
+                if (all(res(:)%status /= CAL_OK)) call fail(exit_of(res(0)%status), res(0)%message)
+                i = findloc(res(:)%status /= CAL_OK, .true., dim=1) - 1
+                call fail(exit_of(res(i)%status), res(i)%message // '; so --damping auto cannot tell which law ' // &
+                          'the data support (fit one law with --damping LAW)')
+            end if
             order = [chosen, pack([(i, i=0, cal_max_law)], [(i /= chosen, i=0, cal_max_law)])]
         else
             call cal_fit(dat, law, o, res(law))
@@ -124,6 +135,9 @@ contains
         logical :: eof
         character(len=256) :: iom
         character(len=16) :: b
+        ! a directory opens and reads as an empty file: say what it is (FILE/. exists only then)
+        inquire (file=file // '/.', exist=eof)
+        if (eof) call fail(EXIT_USAGE, 'the data file "' // file // '" is a directory')
         open (newunit=u, file=file, status='old', action='read', iostat=ios, iomsg=iom)
         if (ios /= 0) call fail(EXIT_USAGE, 'cannot open the data file "' // file // '": ' // trim(iom))
         allocate (u_(64), e(64), tc(64), se(64), st(64), has(64), lines(64))
@@ -364,22 +378,6 @@ contains
         end select
     end function status_name
 
-    !> A number (6 significant digits in text, 16 in CSV and JSON), or an empty field
-    !> when `ok` is false.
-    subroutine maybe(t, x, ok, fmt)
-        type(out_table), intent(inout) :: t
-        real(wp), intent(in) :: x
-        logical, intent(in) :: ok
-        integer, intent(in) :: fmt
-        if (.not. ok) then
-            call t%str('')
-        else if (fmt == FORMAT_TEXT) then
-            call t%str(g(x))
-        else
-            call t%num(x)
-        end if
-    end subroutine maybe
-
     !> The summary: one row per law in `order`.
     subroutine summary_table(res, order, chosen, auto, wtd, fmt, buf)
         type(cal_result), intent(in) :: res(0:)
@@ -390,24 +388,27 @@ contains
         type(out_table) :: t
         integer :: i, l
         logical :: ok
+        character(len=:), allocatable :: du
+        du = 'kg s^-1 m^-q'   ! d zeta^q zeta' with q of each law, or the unit of the one law shown
+        if (size(order) == 1) du = damping_unit(order(1))
         call t%set_columns('damping,chosen,k,d,k_err,d_err,rms_residual_e,rms_residual_tc,c,c_err,chi2_dof,' // &
-                           'p_value,delta_aic,status')
+                           'p_value,delta_aic,status', ',,N m^-3/2,' // du // ',N m^-3/2,' // du // ',,s,SI,SI,,,,')
         do i = 1, size(order)
             l = order(i)
             ok = res(l)%status == CAL_OK
             call t%str(cal_law_name(l))
             call t%str(trim(merge('true ', 'false', l == chosen)))
-            call maybe(t, res(l)%k, ok .and. res(l)%kd_known, fmt)
-            call maybe(t, res(l)%d, ok .and. res(l)%kd_known, fmt)
-            call maybe(t, res(l)%k_err, ok .and. res(l)%k_fitted, fmt)
-            call maybe(t, res(l)%d_err, ok .and. res(l)%kd_known, fmt)
-            call maybe(t, res(l)%rms_e, ok, fmt)
-            call maybe(t, res(l)%rms_tc, ok .and. res(l)%n_tc > 0, fmt)
-            call maybe(t, res(l)%c, ok, fmt)
-            call maybe(t, res(l)%c_err, ok, fmt)
-            call maybe(t, res(l)%chi2 / max(res(l)%dof, 1), ok .and. wtd, fmt)
-            call maybe(t, res(l)%p_value, ok .and. wtd, fmt)
-            call maybe(t, res(l)%delta_aic, ok .and. auto, fmt)
+            call t%num_or_none(res(l)%k, ok .and. res(l)%kd_known)
+            call t%num_or_none(res(l)%d, ok .and. res(l)%kd_known)
+            call t%num_or_none(res(l)%k_err, ok .and. res(l)%k_fitted)
+            call t%num_or_none(res(l)%d_err, ok .and. res(l)%kd_known)
+            call t%num_or_none(res(l)%rms_e, ok)
+            call t%num_or_none(res(l)%rms_tc, ok .and. res(l)%n_tc > 0)
+            call t%num_or_none(res(l)%c, ok)
+            call t%num_or_none(res(l)%c_err, ok)
+            call t%num_or_none(res(l)%chi2 / max(res(l)%dof, 1), ok .and. wtd)
+            call t%num_or_none(res(l)%p_value, ok .and. wtd)
+            call t%num_or_none(res(l)%delta_aic, ok .and. auto)
             call t%str(status_name(res(l)))
         end do
         call t%render(fmt, buf)
@@ -441,15 +442,15 @@ contains
         else if (res(l)%kd_known) then
             call buf%add('# fitted: d, with k = k_phys = ' // g(o%k_known) // ' (no contact times to fit k)')
         else
-            call buf%add('# fitted: c = d k^(-2(1+q)/5) only: without contact times or --k, e cannot tell k')
+            call buf%add('# fitted: c = d k^(-2(1+q)/5) only: without contact times or a known stiffness ' // &
+                         '(--k-phys, or --youngs-modulus and --poisson-ratio), e cannot tell k')
         end if
         if (auto) then
             call buf%add('# criterion: smallest AIC; every law has the same number of parameters (' // &
                          itoa(res(l)%n_par) // ') here, so the smallest ' // trim(merge('chi2', 'RSS ', dat%weighted)) // &
                          ' (BIC agrees)')
         end if
-        call buf%add('# uncertainties: standard (1 sigma); units: k [N m^-3/2], d [kg s^-1 m^-q], ' // &
-                     'rms_residual_tc [s]')
+        call buf%add('# uncertainties: standard (1 sigma); q of each law: 0 linear, 1/4 tsuji, 1/2 kuwabara-kono')
         call summary_table(res, order, chosen, auto, dat%weighted, FORMAT_TEXT, buf)
         do i = 1, size(order)
             if (res(order(i))%status /= CAL_OK) then
@@ -486,19 +487,19 @@ contains
         logical :: tcs
         tcs = r%n_tc > 0
         if (any(dat%has_tc)) then
-            call t%set_columns('velocity,e,e_fit,residual_e,tc,tc_fit,residual_tc')
+            call t%set_columns('velocity,e,e_fit,residual_e,tc,tc_fit,residual_tc', 'm/s,,,,s,s,s')
         else
-            call t%set_columns('velocity,e,e_fit,residual_e')
+            call t%set_columns('velocity,e,e_fit,residual_e', 'm/s,,,')
         end if
         do i = 1, size(dat%u)
-            call t%str(g(dat%u(i)))
-            call t%str(g(dat%e(i)))
-            call t%str(g(r%e_fit(i)))
-            call t%str(g(dat%e(i) - r%e_fit(i)))
+            call t%num(dat%u(i))
+            call t%num(dat%e(i))
+            call t%num(r%e_fit(i))
+            call t%num(dat%e(i) - r%e_fit(i))
             if (.not. any(dat%has_tc)) cycle
-            call maybe(t, dat%tc(i), dat%has_tc(i), FORMAT_TEXT)
-            call maybe(t, r%tc_fit(i), r%kd_known .and. tcs, FORMAT_TEXT)
-            call maybe(t, dat%tc(i) - r%tc_fit(i), dat%has_tc(i) .and. tcs, FORMAT_TEXT)
+            call t%num_or_none(dat%tc(i), dat%has_tc(i))
+            call t%num_or_none(r%tc_fit(i), r%kd_known .and. tcs)
+            call t%num_or_none(dat%tc(i) - r%tc_fit(i), dat%has_tc(i) .and. tcs)
         end do
     end subroutine residual_table
 

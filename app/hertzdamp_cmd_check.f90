@@ -22,6 +22,7 @@ module hertzdamp_cmd_check
                                COEF_GAMMA_SQRT5_BETA, COEF_GAMMA_2BETA, COEF_GAMMA_SQRT6, COEF_GAMMA_SQRT5_BETA_EPS
     use hertzdamp_peers_deck, only: peer_materials, peer_read_deck, peer_code, peer_parameter_problem, &
                                     LAMMPS_2021, LAMMPS_2023, LAMMPS_CURRENT, lammps_releases
+    use hertzdamp_cli_plausible, only: warn_implausible, quiet_flag
     use hertzdamp_cli, only: cli_args, cli_line, cli_buffer, parse_args, parse_real, parse_int, parse_choice, &
                              required_sweep, fail, quit, EXIT_USAGE, EXIT_OK
     use hertzdamp_cli_text, only: itoa, fmt_short, ROUND_TRIP
@@ -71,7 +72,7 @@ contains
         integer :: i, peer
         if (wants_help()) call print_help('check')
         call parse_args(2, '--velocity --e --steps --release --format ' // material_options, &
-                        '--table --wall --progress', args, positionals=words)
+                        '--table --wall --progress ' // quiet_flag, args, positionals=words)
         rq%fmt = parse_choice(args%get('--format', 'text'), format_choices, 'format (--format)')
         if (args%has('--table')) then
             if (size(words) > 0 .or. size(args%opts) > merge(2, 1, args%has('--format'))) then
@@ -118,6 +119,7 @@ contains
             if (rq%steps < 1) call fail(EXIT_USAGE, '--steps must be >= 1')
         end if
         rq%progress = args%has('--progress')
+        call warn_implausible(args)
         call run_check(peer, tokens, mat, rq)
     contains
         !> The value of a material option, 0 when absent (parse_contact has checked it).
@@ -162,7 +164,8 @@ contains
             call progress%update(real(i, wp))
         end do
         call progress%finish()
-        call t%set_columns('velocity,alpha,e,e_error,t_c,t_attractive,dt_max,t_hertz,t_peer,corrected,method,status')
+        call t%set_columns('velocity,alpha,e,e_error,t_c,t_attractive,dt_max,t_hertz,t_peer,corrected,method,status', &
+                           'm/s,,,,s,s,s,s,s,,,')
         nfail = 0
         first_fail = 0
         do i = 1, size(pt)

@@ -2,8 +2,7 @@
 !> time) and `timestep` (the time step that resolves the physical contacts).
 module hertzdamp_cmd_invert
     use hertzdamp, only: hertzdamp_rk, hertzdamp_invert, hertzdamp_invert_alpha, hertzdamp_invert_options, &
-                         hertzdamp_message, &
-                         hertzdamp_reduce, hertzdamp_hertz_time, &
+                         hertzdamp_message, hertzdamp_reduce, hertzdamp_hertz_time, hertzdamp_rayleigh_fraction, &
                          HD_OK, HD_BAD_RESTITUTION, HD_OUTSIDE_VALIDITY, HD_INACCURATE, HD_BAD_TIME, HD_BAD_VELOCITY, &
                          HD_OUT_OF_RANGE, HD_METHOD_ITERATIVE, HD_METHOD_FIT, HD_HOST_UNREACHABLE, HD_HOST_NONE, HD_BAD_PAIR, &
                          hertzdamp_pair_t, hertzdamp_pair_init, hertzdamp_pair_kd, hertzdamp_host_stats, &
@@ -18,6 +17,8 @@ module hertzdamp_cmd_invert
     use hertzdamp_cli_rows, only: row_log, row_kind, row_word, row_has_result, ROW_OUTSIDE_VALIDITY, ROW_OUT_OF_RANGE
     use hertzdamp_cli_materials, only: cli_contact, parse_contact, require_mass, contact_table, contact_options, contact_flags
     use hertzdamp_cli_progress, only: progress_reporter
+    use hertzdamp_cli_plausible, only: warn_implausible, quiet_flag
+    use hertzdamp_cmd_fixed, only: invert_fixed
     use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
     implicit none
     private
@@ -76,12 +77,13 @@ contains
 
     !> With --host: the spread columns, and what alpha, tau_c and the spreads are (the
     !> steps `where` as the command defines them) in the units line.
-    subroutine host_columns(h, where, columns, units)
+    subroutine host_columns(h, where, columns, units, column_units)
         type(host_opts), intent(in) :: h
         character(len=*), intent(in) :: where
-        character(len=:), allocatable, intent(inout) :: columns, units
+        character(len=:), allocatable, intent(inout) :: columns, units, column_units
         if (.not. h%given) return
         columns = columns // 'e_spread,tc_spread,'
+        column_units = column_units // ',,'
         units = units // '; host ' // hertzdamp_host_name(h%host) // ': alpha, tau_c its constants at N steps ' // &
                 where // ', e_spread and tc_spread the standard deviations of the achieved e and T_c over the ' // &
                 'onset phase, relative'
@@ -110,11 +112,11 @@ contains
         type(hertzdamp_pair_t) :: pair
         type(hertzdamp_host_stats) :: stats
         integer :: st_pair
-        character(len=:), allocatable :: columns, units
+        character(len=:), allocatable :: columns, units, column_units
         allocate (es(0), tcs(0), us(0), tc_dt(0), tc_steps(0))   ! (defined descriptors for the reallocating assignments)
         if (wants_help()) call print_help('invert')
         call parse_args(2, '--e --tc --dt --steps --velocity --host ' // contact_options // ' ' // model_options, &
-                        contact_flags // ' --progress', args)
+                        contact_flags // ' --progress --fixed ' // quiet_flag, args)
         call parse_model(args, c, inverse=.true.)
         call parse_host(args, c, h)
         if (h%given .and. .not. (args%has('--dt') .and. args%has('--steps') .and. .not. args%has('--tc'))) then
@@ -127,11 +129,17 @@ contains
         us = required_sweep(args, '--velocity')
         call require_mass(ct)
         call check_combinations([size(es), size(tcs), size(us)], '--e, the contact times and --velocity')
+        call warn_implausible(args)
+        if (args%has('--fixed')) then
+            if (h%given) call fail(EXIT_USAGE, '--fixed takes no --host (one k and d for every contact)')
+            call invert_fixed(args, c, ct, es, tcs, tc_key, us)
+        end if
         columns = 'e,tc,velocity,mass,radius_eff,k_phys,alpha,tau_c,t_star,k,d,bound_active,tc_actual,'
         units = 'tc, t_star, tc_actual [s], velocity [m/s], mass [kg], radius_eff [m], k, k_phys [N m^-3/2], d [' // &
                 damping_unit(c%law) // ']'
-        call host_columns(h, '(T_c = N dt)', columns, units)
-        call contact_table(t, c, ct, columns // 'status', units)
+        column_units = ',s,m/s,kg,m,N m^-3/2,,,s,N m^-3/2,' // damping_unit(c%law) // ',,s,'
+        call host_columns(h, '(T_c = N dt)', columns, units, column_units)
+        call contact_table(t, c, ct, columns // 'status', units, column_units)
         n = 0
         call p%start(real(size(es) * size(tcs) * size(us), wp), 'invert', force=args%has('--progress'))
         do ie = 1, size(es)
@@ -307,7 +315,8 @@ contains
 
     !> `timestep`: for materials and a velocity range, the shortest contact of the
     !> physical model (k = k_phys, d from e) and the largest time step that resolves
-    !> it with N steps, next to the elastic Hertz estimate.
+    !> it with N steps, next to the elastic Hertz estimate and the Rayleigh time step
+    !> of the spheres (from the elastic constants and densities).
     subroutine cmd_timestep()
         type(cli_args) :: args
         type(model_opts) :: c
@@ -321,11 +330,11 @@ contains
         type(host_opts) :: h
         type(hertzdamp_pair_t) :: pair
         type(hertzdamp_host_stats) :: stats
-        character(len=:), allocatable :: columns, units
+        character(len=:), allocatable :: columns, units, column_units
         allocate (es(0), us(0), steps(0))
         if (wants_help()) call print_help('timestep')
-        call parse_args(2, '--e --velocity --steps --host ' // contact_options // ' ' // model_options, contact_flags, &
-                        args)
+        call parse_args(2, '--e --velocity --steps --host ' // contact_options // ' ' // model_options, &
+                        contact_flags // ' ' // quiet_flag, args)
         call parse_model(args, c, inverse=.true.)
         call parse_host(args, c, h)
         if (h%given .and. .not. args%has('--steps')) then
@@ -340,6 +349,7 @@ contains
         us = required_sweep(args, '--velocity')
         steps = parse_steps(args, 10.0_wp)
         call check_combinations([size(es), size(steps)], '--e and --steps')
+        call warn_implausible(args)
         ! the time unit t* and the elastic Hertz time at every velocity; both fall as u^(-1/5)
         tmin = huge(1.0_wp)
         thertz = huge(1.0_wp)
@@ -357,11 +367,13 @@ contains
         end do
 
         columns = 'e,steps,velocity_max,mass,radius_eff,k_phys,alpha,tau_c,tc_damped,tc_elastic,elastic_excess,' // &
-                  'dt_max,dt_elastic,'
+                  'dt_max,dt_elastic,t_rayleigh,dt_rayleigh,'
         units = 'velocity_max [m/s], mass [kg], radius_eff [m], k_phys [N m^-3/2], tc_damped, tc_elastic, dt_max, ' // &
-                'dt_elastic [s]; elastic_excess = tc_elastic/tc_damped - 1'
-        call host_columns(h, '(the fastest contact at dt_max)', columns, units)
-        call contact_table(t, c, ct, columns // 'status', units)
+                'dt_elastic, t_rayleigh, dt_rayleigh [s]; elastic_excess = tc_elastic/tc_damped - 1; dt_rayleigh = ' // &
+                fmt_short(hertzdamp_rayleigh_fraction) // ' t_rayleigh'
+        column_units = ',,m/s,kg,m,N m^-3/2,,,s,s,,s,s,s,s,'
+        call host_columns(h, '(the fastest contact at dt_max)', columns, units, column_units)
+        call contact_table(t, c, ct, columns // 'status', units, column_units)
         do ie = 1, size(es)
             if (.not. h%given) then
                 call hertzdamp_invert_alpha(es(ie), c%iend, alpha, tau, status, c%method, c%tol, c%accuracy, c%law)
@@ -404,6 +416,8 @@ contains
                 call t%num_or_none(excess, rhave)
                 call t%num_or_none(dtmax, rhave)
                 call t%num_or_none(dt_el, dt_el > 0.0_wp)
+                call t%num_or_none(ct%t_rayleigh, ct%has_rayleigh)
+                call t%num_or_none(hertzdamp_rayleigh_fraction * ct%t_rayleigh, ct%has_rayleigh)
                 if (h%given) then
                     call t%num_or_none(relative_spread(stats%e_sd, stats%e_mean), rhave)
                     call t%num_or_none(relative_spread(stats%tau_sd, stats%tau_mean), rhave)

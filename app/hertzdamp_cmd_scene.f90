@@ -16,11 +16,11 @@ module hertzdamp_cmd_scene
     use hertzdamp_scene_io, only: hertzdamp_scene_read
     use hertzdamp_cli, only: cli_args, cli_buffer, parse_args, parse_choice, fail, quit, fmt_csv, &
                              EXIT_USAGE, EXIT_OK, EXIT_FAILURE, EXIT_NO_SOLUTION
-    use hertzdamp_cli_output, only: out_table, format_choices, FORMAT_JSON, FORMAT_CSV
+    use hertzdamp_cli_output, only: out_table, format_choices, FORMAT_JSON, FORMAT_CSV, FORMAT_TEXT
     use hertzdamp_cli_help, only: print_help, wants_help
     use hertzdamp_cli_model, only: law_choices, damping_unit, law_text
     use hertzdamp_cli_plot, only: plot_check_target, plot_scratch, plot_temp_name, gp_string
-    use hertzdamp_cli_text, only: itoa
+    use hertzdamp_cli_text, only: itoa, fmt_text_short
     use hertzdamp_cli_progress, only: progress_reporter
     use, intrinsic :: iso_fortran_env, only: int64
     implicit none
@@ -103,14 +103,14 @@ contains
             method = chosen
             c = findloc(hertzdamp_dem_cost_order, method, dim=1)
             reason = 'auto: cheapest rule (cost order first-order < compact < series < pade < fit < iterative) ' // &
-                     'whose measured error in e and tau_c ' // trim(fmt_csv(err(c))) // ' <= accuracy ' // &
-                     trim(fmt_csv(sc%accuracy))
+                     'whose measured error in e and tau_c ' // number(err(c), fmt) // ' <= accuracy ' // &
+                     number(sc%accuracy, fmt)
         else
             method = method_code(mchoice)
             c = findloc(hertzdamp_dem_cost_order, method, dim=1)
             if (.not. avail(c)) call fail(EXIT_USAGE, 'method ' // hertzdamp_method_name(method) // &
                                           ' is not available in this build of the library')
-            reason = 'requested; measured error in e and tau_c ' // trim(fmt_csv(err(c)))
+            reason = 'requested; measured error in e and tau_c ' // number(err(c), fmt)
         end if
         tol_it = min(1.0e-2_wp, max(1.0e-10_wp, 0.1_wp * sc%accuracy))
         compare = compare .and. method /= HD_METHOD_ITERATIVE
@@ -276,15 +276,15 @@ contains
         if (sc%want_duration) then
             write (b, '(i0)') sc%steps_per_contact
             call t%meta('wanted', 'restitution and contact duration T_c = N dt, N = ' // trim(b) // ', T_c = ' // &
-                        trim(fmt_csv(sc%steps_per_contact * sc%dt)) // ' s (physical stiffness bound)')
+                        number(sc%steps_per_contact * sc%dt, fmt) // ' s (physical stiffness bound)')
         else
             call t%meta('wanted', 'restitution only (k = k_phys, contact duration physical)')
         end if
-        call t%meta('accuracy', trim(fmt_csv(sc%accuracy)))
-        call t%meta('dt', trim(fmt_csv(sc%dt)) // ' s')
+        call t%meta('accuracy', number(sc%accuracy, fmt))
+        call t%meta('dt', number(sc%dt, fmt) // ' s')
         call t%meta('method', hertzdamp_method_name(method))
         call t%meta('why', reason)
-        call t%meta('selection_time', trim(fmt_csv(t_select)) // ' s (one reference solve per candidate and target e)')
+        call t%meta('selection_time', number(t_select, fmt) // ' s (one reference solve per candidate and target e)')
         do c = 1, 6
             write (b, '(i0)') c
             call t%str(trim(b))
@@ -307,6 +307,19 @@ contains
         end do
         call add_section('method', t, fmt, buf, nsec)
     end subroutine report_method
+
+    !> A number in a sentence of the report: the text output's short form for people,
+    !> the CSV form (it reads back as the same double) in CSV and JSON.
+    function number(x, fmt) result(s)
+        real(wp), intent(in) :: x
+        integer, intent(in) :: fmt   !! FORMAT_*
+        character(len=:), allocatable :: s
+        if (fmt == FORMAT_TEXT) then
+            s = fmt_text_short(x)
+        else
+            s = trim(fmt_csv(x))
+        end if
+    end function number
 
     !> Name of the bodies of a contact: 'p3-p4' or 'p1-wall1'.
     function bodies(i, j) result(s)
@@ -332,12 +345,14 @@ contains
         real(wp) :: e_ach, q
         logical :: ok
         character(len=64) :: b
-        call t%set_columns('contact,bodies,u_in,k,d,stiffness,e_target,e,e_rel_err,tc_target,tc,tc_rel_err')
+        call t%set_columns('contact,bodies,u_in,k,d,stiffness,e_target,e,e_rel_err,tc_target,tc,tc_rel_err', &
+                           ',,m/s,N m^-3/2,' // damping_unit(sc%law) // ',,,,,s,s,')
         nbin = count(res%contacts%binary .and. res%contacts%t_end >= 0.0_wp)
         write (b, '(i0,a,i0,a)') res%ncontacts, ' contacts, ', nbin, ' binary and ended'
         call t%meta('contacts', trim(b))
         call t%meta('units', 'u_in [m/s], k [N m^-3/2], d [' // damping_unit(sc%law) // '], tc [s]; e = separation/' // &
-                    'impact normal speed (- where u_in <= 0)')
+                    'impact normal speed (- where u_in <= 0)', &
+                    text='in the column headers; e = separation/impact normal speed (- where u_in <= 0)')
         if (.not. sc%want_duration) call t%meta('tc_target', 'physical contact time t*(k_phys) tau_c(alpha)')
         if (sc%gravity) call t%meta('gravity', 'acts during contacts too: e and tc differ from the ' // &
                                     'targets by O(g tc / u_in)')

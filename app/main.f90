@@ -1,7 +1,7 @@
 !> `hertzdamp`: the command-line front end.  Parsing and printing only; every number
 !> comes from the library.  One dispatch line per command.
 program main
-    use hertzdamp_cli, only: fail, cli_start, EXIT_USAGE
+    use hertzdamp_cli, only: fail, cli_start, did_you_mean, EXIT_USAGE
     use hertzdamp_cli_help, only: print_help
     use hertzdamp_cmd_basic, only: cmd_table, cmd_forward, cmd_constants
     use hertzdamp_cmd_invert, only: cmd_invert, cmd_timestep
@@ -31,6 +31,8 @@ program main
     case ('check'); call cmd_check()
     case ('calibrate'); call cmd_calibrate()
     case default
-        call fail(EXIT_USAGE, 'unknown command "' // command // '" (see hertzdamp --help)')
+        call fail(EXIT_USAGE, 'unknown command "' // command // '"' // did_you_mean(command, 'invert forward ' // &
+                  'timestep table constants bench scene check calibrate help version --help --version') // &
+                  ' (see hertzdamp --help)')
     end select
 end program main

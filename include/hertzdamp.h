@@ -14,6 +14,13 @@
  * The functions keep no state and may be called from any number of threads at
  * once.  Units: SI (kg, m, s); k in N m^-3/2, d in kg/s.
  *
+ * Aliasing (the _n calls): a result array may overlap an input array, in place (k
+ * over e or m, d over tc or u, each element over the same element) or shifted (a
+ * result array starting inside an input array at another element): the overlap is
+ * detected and the inputs are copied first, so that the results are those of
+ * separate arrays, bit for bit.  The result arrays must not overlap each other.
+ * test/integration/capi_fuzz.sh and install_consumers.sh (alias.c) check both.
+ *
  * Every C name starts with hertzdamp_c_ (macros with HERTZDAMP_): the legacy
  * Fortran externals (HERTZDAMP_INVERT ... -> hertzdamp_invert_) never collide
  * with them, not even under -fno-underscoring.
@@ -128,10 +135,8 @@ int hertzdamp_c_invert_bounded(double e, double tc, double m, double u, double k
 
 /*
  * hertzdamp_c_invert for n contacts: status[i] is the status of contact i.  Returns
- * HERTZDAMP_OK when all succeeded, else the first non-zero status.  A result array
- * may overlap an input array, in place or shifted (the inputs are then copied first):
- * the results are those of separate arrays.  The result arrays must not overlap each
- * other.  (The same for hertzdamp_c_invert_law_n.)
+ * HERTZDAMP_OK when all succeeded, else the first non-zero status.  Aliasing: see
+ * the top of this file.  (The same for hertzdamp_c_invert_law_n.)
  */
 int hertzdamp_c_invert_n(int n, const double *e, const double *tc, const double *m,
                          const double *u, int end, double *k, double *d, int *status);

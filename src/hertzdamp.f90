@@ -55,7 +55,8 @@ module hertzdamp
     use hertzdamp_materials, only: hertzdamp_sphere_mass, hertzdamp_effective_mass, &
                                    hertzdamp_effective_radius, hertzdamp_effective_modulus, &
                                    hertzdamp_plane_strain_modulus, hertzdamp_hertz_stiffness, &
-                                   hertzdamp_hertz_time, hertzdamp_pair_contact, hertzdamp_wall_contact
+                                   hertzdamp_hertz_time, hertzdamp_pair_contact, hertzdamp_wall_contact, &
+                                   hertzdamp_rayleigh_time, hertzdamp_rayleigh_fraction
     implicit none
     private
 
@@ -114,5 +115,6 @@ module hertzdamp
     ! material data to the contact (hertzdamp_materials)
     public :: hertzdamp_sphere_mass, hertzdamp_effective_mass, hertzdamp_effective_radius, &
               hertzdamp_effective_modulus, hertzdamp_plane_strain_modulus, hertzdamp_hertz_stiffness, &
-              hertzdamp_hertz_time, hertzdamp_pair_contact, hertzdamp_wall_contact
+              hertzdamp_hertz_time, hertzdamp_pair_contact, hertzdamp_wall_contact, hertzdamp_rayleigh_time, &
+              hertzdamp_rayleigh_fraction
 end module hertzdamp

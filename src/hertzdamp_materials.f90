@@ -9,6 +9,7 @@
 !>     1/E* = (1 - nu1^2)/E1 + (1 - nu2^2)/E2        both bodies, a wall too
 !>     k_phys = (4/3) E* sqrt(R*)
 !>     T_Hertz = tau_c(0) (m* / (k_phys u^(1/2)))^(2/5) = 2.868 (m*^2 / (R* E*^2 u))^(1/5)
+!>     T_Rayleigh = pi R / v_R, v_R = (0.1631 nu + 0.8766) sqrt(G/rho), G = E/(2 (1 + nu))
 !>
 !> Everything is `pure elemental` with a status (0 = success): a bad input gives the
 !> status naming it (HD_BAD_RADIUS, HD_BAD_DENSITY, HD_BAD_MODULUS, HD_BAD_POISSON,
@@ -32,9 +33,13 @@ module hertzdamp_materials
 
     integer, parameter :: wp = hertzdamp_rk
 
+    !> The fraction of the Rayleigh time DEM codes usually take as their time step
+    !> (EDEM: 20 %, within 10 to 40 %; LIGGGHTS's example checks 10 %).
+    real(wp), parameter, public :: hertzdamp_rayleigh_fraction = 0.2_wp
+
     public :: hertzdamp_sphere_mass, hertzdamp_effective_mass, hertzdamp_effective_radius, &
               hertzdamp_plane_strain_modulus, hertzdamp_effective_modulus, hertzdamp_hertz_stiffness, &
-              hertzdamp_hertz_time, hertzdamp_pair_contact, hertzdamp_wall_contact
+              hertzdamp_hertz_time, hertzdamp_pair_contact, hertzdamp_wall_contact, hertzdamp_rayleigh_time
 
 contains
 
@@ -147,6 +152,38 @@ contains
             call hertzdamp_safe_exp(log(hertzdamp_tau_c0()) + 0.4_wp * (log(mass) - log(k)) - 0.2_wp * log(u), tc, status)
         end if
     end subroutine hertzdamp_hertz_time
+
+    !> Rayleigh time of one sphere, T_R = pi R / v_R [s]: the time a Rayleigh surface
+    !> wave takes to travel half way round it, the time-step criterion of DEM codes
+    !> that do not look at the impact speed (EDEM, LIGGGHTS fix check/timestep/gran).
+    !> v_R = (0.1631 nu + 0.8766) sqrt(G/rho) with G = E/(2 (1 + nu)) is the usual
+    !> linear approximation of the root of the Rayleigh equation, within 0.3 % of it
+    !> for 0 <= nu <= 0.5 (3.6 % as nu -> -1; test/unit/test_materials.f90 solves the
+    !> equation).  DEM codes take a fraction of T_R as their time step: 0.2 T_R is the
+    !> usual choice, 0.1 to 0.4 its range (hertzdamp_rayleigh_fraction).
+    pure elemental subroutine hertzdamp_rayleigh_time(radius, density, youngs, poisson, t_r, status)
+        real(wp), intent(in) :: radius    !! sphere radius R [m]
+        real(wp), intent(in) :: density   !! density rho [kg m^-3]
+        real(wp), intent(in) :: youngs    !! Young's modulus E [Pa]
+        real(wp), intent(in) :: poisson   !! Poisson's ratio nu, -1 < nu <= 0.5
+        real(wp), intent(out) :: t_r      !! Rayleigh time [s] (0 on failure)
+        integer, intent(out) :: status    !! HD_OK, HD_BAD_RADIUS, HD_BAD_DENSITY, HD_BAD_MODULUS, HD_BAD_POISSON
+                                          !! or HD_OUT_OF_RANGE
+        real(wp) :: c
+        t_r = 0.0_wp
+        status = hertzdamp_check_positive(radius, HD_BAD_RADIUS)
+        if (status == HD_OK) status = hertzdamp_check_positive(density, HD_BAD_DENSITY)
+        if (status == HD_OK) status = check_elastic(youngs, poisson)
+        if (status /= HD_OK) return
+        c = 0.1631_wp * poisson + 0.8766_wp   ! v_R / v_S, 0.7135 to 0.95815
+        ! rho / G = 2 (1 + nu) rho / E
+        if (ordinary(radius) .and. ordinary(density) .and. ordinary(youngs)) then
+            t_r = pi * radius * sqrt(2.0_wp * (1.0_wp + poisson) * density / youngs) / c
+        else
+            call hertzdamp_safe_exp(log(pi) + log(radius) + 0.5_wp * (log(2.0_wp * (1.0_wp + poisson)) + &
+                                    log(density) - log(youngs)) - log(c), t_r, status)
+        end if
+    end subroutine hertzdamp_rayleigh_time
 
     !> Contact of two spheres from their material data: effective mass, effective
     !> radius, E* and k_phys.

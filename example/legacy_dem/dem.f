@@ -11,9 +11,12 @@ C     rebound to impact speed, plus E and TC that HERTZDAMP_FORWARD
 C     predicts for K, D (gravity and time stepping are not in it).
 C
 C     Build against an installed prefix:  make PREFIX=/path/to/prefix
-C     The library routines are called through implicit interfaces.
+C     INCLUDE 'hertzdamp.fi' (from PREFIX/include) declares the library
+C     routines: an argument of the wrong type or kind is then a compile
+C     error, not garbage.
       PROGRAM DEM
       IMPLICIT NONE
+      INCLUDE 'hertzdamp.fi'
       DOUBLE PRECISION AM, G, DT, ETARG, H0, X, V, VH, A, F, Z, ZDOT
       DOUBLE PRECISION AK, D, UIN, TC, EPRED, TCPRED, T, TON
       INTEGER NSTEP, NCONT, MAXCON, IERR, ISTEP, IEND

@@ -84,7 +84,8 @@ assert j["weighted"] is False and j["k_fixed"] is False and j["damping"] == "aut
 
 run calibrate "$T/etc.csv" --mass $M
 check "text: exit 0" test "$RC" -eq 0
-check "text: the residual table" grep -q '^ *velocity *e *e_fit *residual_e *tc *tc_fit *residual_tc' "$OUT"
+check "text: the residual table, units in its header" \
+  grep -q '^ *velocity \[m/s\] *e *e_fit *residual_e *tc \[s\] *tc_fit \[s\] *residual_tc \[s\]$' "$OUT"
 check "text: the criterion stated" grep -q 'criterion: smallest AIC' "$OUT"
 
 # sigmas: chi2/dof and a p-value
@@ -208,6 +209,52 @@ if command -v gnuplot >/dev/null 2>&1; then
   expect_fail 2 "plot into a directory" calibrate "$T/sig.csv" --mass $M --plot "$T"
   expect_fail 2 "plot into a missing directory" calibrate "$T/sig.csv" --mass $M --plot "$T/no/such/dir.png"
 fi
+
+# issue 21: exact kuwabara-kono data (k = 1e6, d = 2512, m = 1e-3, rk45) with e from
+# 5.2e-5 down to 5.2e-6, beyond the fitted maps (e >= 1e-5): auto picks kuwabara-kono
+# and recovers k and d (before: tsuji, with kuwabara-kono `no-convergence`)
+"$BIN" forward --damping kuwabara-kono --method rk45 --k 1e6 --d 2512 --mass 1e-3 --velocity 1:10:log5 \
+  --format csv | awk -F, 'NR == 1 { print "velocity,e,tc" } NR > 1 { print $3 "," $9 "," $10 }' >"$T/kk.csv"
+run calibrate "$T/kk.csv" --mass 1e-3 --format csv
+check "kk beyond the maps: exit 0" test "$RC" -eq 0
+check "kk beyond the maps: auto picks kuwabara-kono ($(col damping 2))" test "$(col damping 2)" = kuwabara-kono
+check "kk beyond the maps: k to 1e-8 ($(col k 2))" close_to "$(col k 2)" 1e6 1e-8
+check "kk beyond the maps: d to 1e-8 ($(col d 2))" close_to "$(col d 2)" 2512 1e-8
+# the explicit law on 0.01 to 10 m/s, m = 1e-4 (e down to 5e-8): before k = 1978, d = 11.6, exit 0
+"$BIN" forward --damping kuwabara-kono --method rk45 --k 1e6 --d 2512 --mass 1e-4 --velocity 0.01:10:log7 \
+  --format csv | awk -F, 'NR == 1 { print "velocity,e,tc" } NR > 1 { print $3 "," $9 "," $10 }' >"$T/kk3.csv"
+run calibrate "$T/kk3.csv" --mass 1e-4 --damping kuwabara-kono --format csv
+check "kk explicit, e to 5e-8: k to 1e-8 ($(col k 2))" close_to "$(col k 2)" 1e6 1e-8
+check "kk explicit, e to 5e-8: d to 1e-8 ($(col d 2))" close_to "$(col d 2)" 2512 1e-8
+# a law that cannot reproduce these data has no result without sigmas (before: exit 0)
+expect_fail 4 "tsuji on kuwabara-kono data" calibrate "$T/kk.csv" --mass 1e-3 --damping tsuji
+check "tsuji on kuwabara-kono data: says it did not converge" grep -q 'did not converge' "$ERR"
+
+# uncertainties that fit a double are printed, whatever the sigmas (before: inf / null)
+printf 'velocity,e,sigma_e\n0.5,0.62,1e300\n1,0.66,1e300\n2,0.7,1e300\n' >"$T/bigsig.csv"
+run calibrate "$T/bigsig.csv" --mass 1e-3 --damping linear --format csv
+check "sigma_e = 1e300: exit 0" test "$RC" -eq 0
+check "sigma_e = 1e300: c_err finite, ~1e297 ($(col c_err 2))" \
+  awk -v x="$(col c_err 2)" 'BEGIN { exit !(x + 0 > 1e290 && x + 0 < 1e305 && x !~ /[iI]nf/) }'
+run calibrate "$T/bigsig.csv" --mass 1e-3 --damping linear --format json
+check "sigma_e = 1e300: c_err a number in JSON" "$PYTHON" -c '
+import json, sys
+law = json.load(open(sys.argv[1]))["laws"][0]
+assert isinstance(law["c_err"], float) and 1e290 < law["c_err"] < 1e305, law["c_err"]' "$OUT"
+
+# messages that name the real cause (issue 21, item 8)
+printf 'velocity,e,tc\n0.5,0.62,1e300\n1,0.66,1e300\n' >"$T/tcbig.csv"
+expect_fail 4 "tc = 1e300" calibrate "$T/tcbig.csv" --mass 1e-3 --damping linear
+check "tc = 1e300: names the stiffness and the unit" \
+  grep -q 'contact times give a stiffness k = 10^.*are the contact times in seconds' "$ERR"
+printf 'velocity,e,sigma_e\n0.5,0.62,1e-310\n1,0.66,0.01\n' >"$T/sigtiny.csv"
+expect_fail 2 "sigma_e = 1e-310" calibrate "$T/sigtiny.csv" --mass 1e-3
+check "sigma_e = 1e-310: names sigma_e and the line" grep -q 'line 2: sigma_e = 1e-310 is too small' "$ERR"
+expect_fail 2 "a directory as data file" calibrate "$T" --mass 1e-3
+check "a directory: says so" grep -q 'is a directory' "$ERR"
+run calibrate "$T/e.csv" --mass $M --damping linear
+check "e only, no stiffness: the text suggests --k-phys, not --k" \
+  bash -c "grep -q -- '--k-phys' '$OUT' && ! grep -q -- '--k,' '$OUT'"
 
 # the shipped example (README "Calibrating from measured restitution")
 if [ -f data/calibrate/example.csv ]; then

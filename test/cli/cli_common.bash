@@ -2,7 +2,11 @@
 # a `run` wrapper that captures stdout, stderr and the exit code of the CLI.
 set -u
 BIN=${HERTZDAMP_BIN:?HERTZDAMP_BIN must point to the hertzdamp executable}
+# the Python with the modules the tests import (make test: .venv's, see the Makefile)
+PYTHON=${HERTZDAMP_PYTHON:-python3}
 PASSED=0; FAILED=0
+# hertzdamp_text.py (beside this file) reads the text output back: `import hertzdamp_text`
+export PYTHONPATH="$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)${PYTHONPATH:+:$PYTHONPATH}"
 OUT=$(mktemp); ERR=$(mktemp)
 trap 'rm -f "$OUT" "$ERR"' EXIT
 

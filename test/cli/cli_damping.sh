@@ -99,4 +99,14 @@ expect_fail 2 "series with tsuji" table --damping tsuji --method series
 check "series with tsuji: says linear only" grep -q 'linear only' "$ERR"
 expect_fail 2 "compact invert with kuwabara-kono" invert --damping kuwabara-kono --method compact --e 0.5 --tc 1e-5 \
   --mass 1e-3 --velocity 1
+
+# issue 21: a row beyond every method says what happened, with its alpha (before:
+# "alpha = 0: integrator reached its maximum number of steps")
+expect_fail 4 "forward kuwabara-kono, alpha = 5.2e4, rk45" forward --damping kuwabara-kono --k 1 --d 5.2e4 \
+  --mass 1 --velocity 1 --method rk45
+check "... names alpha = 52000 and the step limit before the contact ended" \
+  grep -q 'alpha = 52000: the reference integrator reached its limit of 100000 steps before the contact ended' "$ERR"
+expect_fail 3 "forward kuwabara-kono, alpha = 5.2e4, fit" forward --damping kuwabara-kono --k 1 --d 5.2e4 \
+  --mass 1 --velocity 1 --method fit
+check "... names alpha = 52000 (not 0) outside the fit" grep -q 'alpha = 52000 is outside the range of --method fit' "$ERR"
 finish

@@ -2,6 +2,9 @@
 reproduces) and assert the output contract:
 
 - the exit code is 0, 2, 3 or 4; nothing crashes or hangs;
+- warnings (implausible magnitudes, app/hertzdamp_cli_plausible.f90) are whole lines
+  "hertzdamp: warning: ... (--quiet silences this)" and come first; the rules below
+  hold for the rest of stderr;
 - exit 0: stderr empty (unless --progress was asked for), stdout not empty, no NaN
   anywhere in it, every row's status a result (ok, no-rebound);
 - exit 2: stdout empty;
@@ -13,6 +16,7 @@ reproduces) and assert the output contract:
 Prints `cli_fuzz: P passed, F failed`."""
 import json
 import os
+import hertzdamp_text
 import random
 import re
 import subprocess
@@ -28,7 +32,7 @@ OPTIONS = ["--alpha", "--alpha-range", "--end", "--method", "--tol", "--format",
            "--k", "--d", "--mass", "--velocity", "--e", "--tc", "--dt", "--steps", "--k-phys",
            "--radius", "--density", "--youngs-modulus", "--poisson-ratio", "--radius2", "--density2",
            "--youngs-modulus2", "--poisson-ratio2", "--wall", "--progress",
-           "--plot", "--quick", "--help", "--frob", "-x", "--"]
+           "--plot", "--quick", "--help", "--frob", "-x", "--", "--quiet"]
 WORDS = ["overlap", "force", "rk45", "series", "pade", "compact", "fit", "iterative", "text",
          "csv", "json", "xml", "", " ", "1e", "abc", "1,,2", "0x10", "nan", "inf", "-inf",
          "1e999", "-1e999", "1e-400", "0", "-0", "1", "-1", "0.5", "1.2", "1e-300", "1e300",
@@ -101,7 +105,7 @@ def statuses(out, fmt):
             head = lines[0].split(",")
             k = head.index("status")
             return [l.split(",")[k] for l in lines[1:]]
-        return [l.split()[-1] for l in lines[1:]]
+        return [r["status"] for r in hertzdamp_text.rows(out)]
     except (ValueError, KeyError, IndexError, TypeError):
         return None
 
@@ -124,6 +128,14 @@ for i in range(N):
         if a == b"--format":
             fmt = args[j + 1].decode("utf-8", "replace")
     check(rc in (0, 2, 3, 4), f"exit code {rc} for {args!r}: {err.strip()[:200]}")
+    lines = err.splitlines(keepends=True)
+    nwarn = 0
+    while nwarn < len(lines) and lines[nwarn].startswith("hertzdamp: warning: "):
+        nwarn += 1
+    check(all(l.endswith(" (--quiet silences this)\n") for l in lines[:nwarn]),
+          f"a warning that is not one line ending in the --quiet hint for {args!r}: {err[:200]!r}")
+    check(nwarn == 0 or b"--quiet" not in args, f"a warning despite --quiet for {args!r}: {err[:200]!r}")
+    err = "".join(lines[nwarn:])
     if rc == 0:
         if b"--progress" not in args:
             check(err == "", f"stderr not empty on success for {args!r}: {err[:200]!r}")

@@ -180,7 +180,7 @@ run timestep $GLASS --e 0.9 --velocity 1 --format csv
 check "timestep overlap end: the damped contact is longer than the elastic estimate" \
   python3 -c 'import sys; r = open(sys.argv[1]).read().splitlines()[1].split(","); assert float(r[10]) < 0' "$OUT"
 run timestep $GLASS --e 0.9,0.0001 --velocity 1 --format csv
-check "timestep: a bad e is its own row (exit $RC)" test "$RC" -eq 3 -a "$(tail -n 1 "$OUT" | cut -d, -f14)" = "outside-validity"
+check "timestep: a bad e is its own row (exit $RC)" test "$RC" -eq 3 -a "$(tail -n 1 "$OUT" | cut -d, -f16)" = "outside-validity"
 # ranges of whole numbers are exact (A0 + (k (A1 - A0))/(N - 1)), and --steps takes a
 # value within 4 ulp of a whole number (a logarithmic range) as it
 run timestep --mass 1e-3 --k-phys 1e9 --e 0.5 --velocity 1 --steps 1:23:23,3:999:333 --format csv
@@ -205,7 +205,7 @@ check "--dt 1e308 --steps 10: the message names both" grep -q -- '--dt 1e308 x -
 # timestep: a damped contact beyond double precision is out-of-range, with the reason
 run timestep --e 1e-4,0.5 --damping kuwabara-kono --velocity 1e-300 --mass 1e300 --k-phys 1e-318 --format csv
 check "timestep, tc_damped beyond double precision: exit 3, that row out-of-range (exit $RC)" \
-  test "$RC" -eq 3 -a "$(sed -n 2p "$OUT" | cut -d, -f9,14)" = ",out-of-range"
+  test "$RC" -eq 3 -a "$(sed -n 2p "$OUT" | cut -d, -f9,16)" = ",out-of-range"
 check "timestep, tc_damped beyond double precision: the message says so" grep -q 'outside the double-precision range' "$ERR"
 # E* out of range: the more compliant body is named, with its defaults shown
 run invert --e 0.5 --tc 1e-5 --velocity 1 --radius 1e-3 --density 2500 --youngs-modulus 1e9 --poisson-ratio 0.3 \
@@ -256,11 +256,36 @@ expect_fail 2 "--host bogus" invert --e 0.5 --dt 1e-6 --steps 10 --mass 1e-3 --v
 check "--host bogus: lists the hosts" grep -q 'none lammps mfix-euler mfix-ab2 verlet lammps-phase' "$ERR"
 run timestep $GLASS --e 0.5 --velocity 0.1,5 --steps 10,20 --host mfix-ab2 --format csv
 check "timestep --host mfix-ab2: exit 0, spread columns (exit $RC)" test "$RC" -eq 0 -a \
-  "$(head -n 1 "$OUT")" = "e,steps,velocity_max,mass,radius_eff,k_phys,alpha,tau_c,tc_damped,tc_elastic,elastic_excess,dt_max,dt_elastic,e_spread,tc_spread,status"
+  "$(head -n 1 "$OUT")" = "e,steps,velocity_max,mass,radius_eff,k_phys,alpha,tau_c,tc_damped,tc_elastic,elastic_excess,dt_max,dt_elastic,t_rayleigh,dt_rayleigh,e_spread,tc_spread,status"
 check "timestep --host: dt_max = tc_damped / N with the host's tau_c" python3 -c '
 import csv, sys
 for r in csv.DictReader(open(sys.argv[1])):
     assert abs(float(r["dt_max"]) * float(r["steps"]) / float(r["tc_damped"]) - 1) < 1e-14, r
 ' "$OUT"
 expect_fail 2 "timestep --host without --steps" timestep $GLASS --e 0.5 --velocity 1 --host lammps
+expect_fail 2 "--host with --fixed" invert --e 0.5 --dt 1e-6 --steps 10 --mass 1e-3 --velocity 0.5,2 --host lammps --fixed
+check "--host with --fixed: says so" grep -q -- '--fixed takes no --host' "$ERR"
+
+# timestep: the Rayleigh step pi R sqrt(rho/G)/(0.1631 nu + 0.8766), G = E/(2(1+nu)), of
+# the smaller sphere (a wall has none), and dt_rayleigh = 0.2 of it; none without the
+# materials (the formula's fit of the Rayleigh root: test/unit/test_materials.f90)
+rayleigh() {  # R rho E nu -> t_R
+  python3 -c 'import math, sys; r, rho, e, nu = map(float, sys.argv[1:]); print(repr(math.pi * r * math.sqrt(rho * 2 * (1 + nu) / e) / (0.1631 * nu + 0.8766)))' "$@"
+}
+col() { python3 -c 'import csv, sys; r = list(csv.DictReader(open(sys.argv[1]))); print(r[int(sys.argv[3]) - 1][sys.argv[2]])' "$OUT" "$1" "${2:-1}"; }
+close() { python3 -c 'import sys; a, b, t = map(float, sys.argv[1:]); sys.exit(0 if abs(a - b) <= t * abs(b) else 1)' "$@"; }
+run timestep $GLASS --e 0.9,0.5 --velocity 1 --format csv
+tr=$(rayleigh 1e-3 2500 63e9 0.24)
+check "rayleigh: glass beads, t_rayleigh = pi R sqrt(rho/G)/(0.1631 nu + 0.8766) ($(col t_rayleigh) vs $tr)" close "$(col t_rayleigh)" "$tr" 1e-15
+check "rayleigh: dt_rayleigh = 0.2 t_rayleigh" close "$(col dt_rayleigh 2)" "$(python3 -c "print(0.2 * $tr)")" 1e-15
+check "rayleigh: the same in every row" test "$(col t_rayleigh 1)" = "$(col t_rayleigh 2)"
+run timestep $GLASS --radius2 0.5e-3 --density2 7800 --youngs-modulus2 2e11 --poisson-ratio2 0.3 --e 0.9 --velocity 1 --format csv
+want=$(python3 -c "print(min($(rayleigh 1e-3 2500 63e9 0.24), $(rayleigh 0.5e-3 7800 2e11 0.3)))")
+check "rayleigh: two materials, the shorter time ($(col t_rayleigh) vs $want)" close "$(col t_rayleigh)" "$want" 1e-15
+run timestep $GLASS --wall --youngs-modulus2 1e6 --poisson-ratio2 0.45 --e 0.9 --velocity 1 --format csv
+check "rayleigh: a wall has none, the sphere's" close "$(col t_rayleigh)" "$tr" 1e-15
+run timestep --mass 1e-3 --k-phys 1e9 --e 0.9 --velocity 1 --format csv
+check "rayleigh: without the materials, empty (status ok)" test "$(col t_rayleigh),$(col dt_rayleigh),$(col status)" = ",,ok"
+run timestep --radius 1e-3 --mass 1e-3 --k-phys 1e9 --e 0.9 --velocity 1 --format json
+check "rayleigh: JSON null without the materials" python3 -c 'import json, sys; r = json.load(open(sys.argv[1]))["rows"][0]; assert r["t_rayleigh"] is None and r["dt_rayleigh"] is None' "$OUT"
 finish

@@ -161,6 +161,30 @@ check "--progress, a failing row: the error names the row" grep -q '^hertzdamp: 
 run invert --e 2 --tc 1e-5 --mass 1 --velocity 1 --progress
 check "--progress, no result: exit 2, stdout empty" test "$RC" -eq 2 -a ! -s "$OUT"
 check "--progress, no result: progress lines, then the error as the last line" prog_then_error
+# --progress with stderr a pipe nobody reads (issue 21): the progress writes fail
+# silently, the results still reach stdout with the command's own exit code (before:
+# killed by SIGPIPE, exit 141, nothing on stdout)
+broken_stderr() {  # stdout file, command...: stderr a pipe whose read end is closed
+  "$PYTHON" -c '
+import os, subprocess, sys
+r, w = os.pipe(); os.close(r)
+with open(sys.argv[1], "w") as out:
+    sys.exit(subprocess.run(sys.argv[2:], stdout=out, stderr=w).returncode % 256)' "$@"
+}
+run invert --e 0.5 --tc 1e-5 --mass 1e-3 --velocity 1:2:4 --format csv
+cp "$OUT" "$T/plain.csv"
+broken_stderr "$T/bp.csv" "$BIN" invert --e 0.5 --tc 1e-5 --mass 1e-3 --velocity 1:2:4 --progress --format csv
+check "invert --progress, stderr a closed pipe: exit 0 (got $?)" test "$?" -eq 0
+check "invert --progress, stderr a closed pipe: the results on stdout" cmp -s "$T/bp.csv" "$T/plain.csv"
+broken_stderr "$T/bp3.csv" "$BIN" invert --e 0.5,2 --tc 1e-5 --mass 1e-3 --velocity 1 --progress --format csv
+check "invert --progress, stderr a closed pipe, a failing row: exit 3 (got $?)" test "$?" -eq 3
+check "... and the table" test "$(wc -l <"$T/bp3.csv")" -eq 3
+broken_stderr "$T/bps.csv" "$BIN" scene data/scenes/drop.nml --progress --format csv
+check "scene --progress, stderr a closed pipe: exit 0 (got $?)" test "$?" -eq 0
+run scene data/scenes/drop.nml --format csv
+check "scene --progress, stderr a closed pipe: the whole report on stdout" \
+  test "$(wc -l <"$T/bps.csv")" -eq "$(wc -l <"$OUT")" -a "$(head -n 3 "$T/bps.csv")" = "$(head -n 3 "$OUT")"
+
 if command -v script >/dev/null 2>&1; then
   # on a terminal (script(1) gives one), progress appears without --progress once the
   # work takes longer than 2 s, on one line rewritten in place and erased at the end;

@@ -5,7 +5,8 @@
 # directory), and so is the command's own input file under any name; a full disk (a
 # small tmpfs) or a file size limit (ulimit -f) gives exit 4 and leaves nothing behind,
 # also for a path with a newline and when gnuplot's own scratch directory is full; a
-# complete PNG otherwise.
+# complete PNG otherwise; SIGTERM and SIGINT while gnuplot draws leave nothing behind
+# and stop gnuplot.
 # Tests that need mount or mknod print SKIPPED (not counted) where they cannot run.
 SUITE=cli_plot
 source "$(dirname "$0")/cli_common.bash"
@@ -143,6 +144,78 @@ expect_fail 2 "calibrate --plot its data file as ./path" calibrate "$T/in.csv" -
   --plot "$T/./in.csv"
 check "the inputs are unchanged" bash -c "cmp -s $SCENE '$T/in.nml' && cmp -s data/calibrate/example.csv '$T/in.csv'"
 check "refused inputs: no scratch left" no_scratch_left
+
+# SIGTERM and SIGINT while gnuplot draws (issue 21): every temporary file removed (in
+# $TMPDIR and next to the target), gnuplot stopped before it writes anything, no
+# target, and the program ends by that signal (before: leftovers, gnuplot went on and
+# wrote its PNG, SIGINT was ignored while it ran).  A stand-in gnuplot answers the
+# program's checks at once and draws only after a pause, in which the signal comes.
+REAL_GNUPLOT=$(command -v gnuplot)
+mkdir -p "$T/slow"
+cat >"$T/slow/gnuplot" <<STANDIN
+#!/bin/sh
+case "\$1" in -e) exec "$REAL_GNUPLOT" "\$@" ;; esac
+echo \$\$ >"$T/slow/pid.tmp" && mv "$T/slow/pid.tmp" "$T/slow/pid"
+sleep 30
+exec "$REAL_GNUPLOT" "\$@"
+STANDIN
+chmod +x "$T/slow/gnuplot"
+# SIG command...: run it with the stand-in first in PATH, send SIG once the stand-in
+# waits; prints "<how the program ended> <stand-in alive 2 s later: yes|no>"
+signal_during_plot() {
+  local sig=$1; shift
+  rm -f "$T/slow/pid"
+  PATH="$T/slow:$PATH" "$PYTHON" - "$sig" "$T/slow/pid" "$@" <<'PY'
+import os, signal, subprocess, sys, time
+sig, pidfile, cmd = getattr(signal, "SIG" + sys.argv[1]), sys.argv[2], sys.argv[3:]
+p = subprocess.Popen(cmd, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
+for _ in range(600):                      # up to 60 s for the work before the plot
+    if os.path.exists(pidfile) or p.poll() is not None:
+        break
+    time.sleep(0.1)
+if not os.path.exists(pidfile):
+    if p.poll() is None:
+        p.kill()
+    p.wait()
+    print("no-plot-started unknown")
+    sys.exit()
+gp = int(open(pidfile).read())
+p.send_signal(sig)
+try:
+    rc = p.wait(timeout=20)
+except subprocess.TimeoutExpired:
+    p.kill(); p.wait(); rc = "hung"
+time.sleep(2)
+try:
+    os.kill(gp, 0)
+    alive = "yes"
+except ProcessLookupError:
+    alive = "no"
+if alive == "yes":                        # do not leave it behind ourselves
+    for kill in (lambda: os.killpg(gp, signal.SIGKILL), lambda: os.kill(gp, signal.SIGKILL)):
+        try:
+            kill()
+        except ProcessLookupError:
+            pass
+ended = ("killed-by-" + signal.Signals(-rc).name) if isinstance(rc, int) and rc < 0 else "exit-%s" % rc
+print(ended, alive)
+PY
+}
+for sig in TERM INT; do
+  for cmd in "calibrate data/calibrate/example.csv --radius 1e-3 --density 7800 --wall" "scene $SCENE" \
+             "bench --quick"; do
+    [ "${cmd%% *}" = bench ] && [ $sig = TERM ] && continue   # bench works for seconds first: SIGINT only
+    rm -f "$T/sig.png"
+    # shellcheck disable=SC2086
+    got=$(signal_during_plot $sig "$BIN" $cmd --plot "$T/sig.png")
+    check "${cmd%% *} --plot, SIG$sig while gnuplot draws: the program ends by it ($got)" \
+      test "${got% *}" = "killed-by-SIG$sig"
+    check "${cmd%% *} --plot, SIG$sig while gnuplot draws: gnuplot stopped ($got)" test "${got#* }" = no
+    check "${cmd%% *} --plot, SIG$sig: no scratch file left ($(ls -A "$TMPDIR" | head -c 200))" no_scratch_left
+    check "${cmd%% *} --plot, SIG$sig: no target, no temporary copy" \
+      test ! -e "$T/sig.png" -a ! -e "$T/sig.png.hertzdamp-tmp"
+  done
+done
 
 echo "$SUITE: $skipped test groups skipped"
 finish

@@ -1,9 +1,10 @@
 #!/usr/bin/env bash
 # Per-row statuses and the exit codes they decide (app/hertzdamp_cli_rows.f90), for every
-# status word, including `failed`, which the library's bounded integrators do not
-# produce on any input we know: a small driver program is compiled with the real CLI
-# modules and emits tables of rows of chosen kinds.  Then each status word is checked
-# once more through the program itself where an input produces it.
+# status word: a small driver program is compiled with the real CLI modules and emits
+# tables of rows of chosen kinds.  Then each status word is checked once more through
+# the program itself where an input produces it (`failed`: kuwabara-kono at alpha =
+# 5.2e4, beyond the integrator's step limit), and the exit code of a partial table
+# with a failed row (4, issue 21) in the program, its help, the man page and the README.
 SUITE=cli_rows
 source "$(dirname "$0")/cli_common.bash"
 cd "$(dirname "$0")/../.."
@@ -80,4 +81,20 @@ word bad-input forward --k 1e9 --d 1 --mass 1 --velocity 1,-1
 word outside-validity table --method pade --alpha 0.5,0.9
 word inaccurate table --method series --alpha 0.1,0.99
 word out-of-range invert --e 0.5 --tc 1e-4,1e-300 --mass 1e10 --velocity 1
+word failed forward --damping kuwabara-kono --k 1 --d 1,5.2e4 --mass 1 --velocity 1 --method rk45
+
+# a partial table with a failed row: every row printed, exit 4 (not 3: a failed
+# computation is never "no solution"), one line on stderr; said so in every document
+run forward --damping kuwabara-kono --k 1 --d 1,5.2e4 --mass 1 --velocity 1 --method rk45 --format csv
+check "partial with a failed row: exit 4 (got $RC)" test "$RC" -eq 4
+check "partial with a failed row: both rows printed" test "$(cut -d, -f12 "$OUT" | tr '\n' ' ')" = "status ok failed "
+check "partial with a failed row: one line on stderr naming it" \
+  grep -q '^hertzdamp: 1 of 2 rows have no result (1 failed); first: ' "$ERR"
+run forward --help
+check "forward --help: 4 when a computation of one of the rows failed" \
+  bash -c "tr '\n' ' ' <'$OUT' | grep -q '4 if a computation of one of them failed'"
+check "README: 4 instead of 3 when a row's computation failed" \
+  bash -c "tr '\n' ' ' <README.md | grep -q '4 instead of 3 when the computation of one of those rows failed'"
+check "man page: 4 also when other rows have a result" \
+  bash -c "tr '\n' ' ' <doc/hertzdamp.1 | grep -q 'a computation failed (also when other rows of the table have a result'"
 finish

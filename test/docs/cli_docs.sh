@@ -41,7 +41,7 @@ check "man page renders without warnings" bash -c "[ -z \"\$(groff -man -Tutf8 -
 # license and citation
 check "LICENSE is the MIT license" grep -q '^MIT License$' LICENSE
 check "fpm.toml says MIT" grep -q '^license = "MIT"' fpm.toml
-check "CITATION.cff: valid YAML with the required fields" python3 -c '
+check "CITATION.cff: valid YAML with the required fields" "$PYTHON" -c '
 import sys, yaml
 c = yaml.safe_load(open("CITATION.cff", encoding="utf-8"))
 assert c["cff-version"].startswith("1.2") and c["message"] and c["title"] and c["authors"]

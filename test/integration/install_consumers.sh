@@ -4,7 +4,9 @@
 # (shared with rpath, static archive), CMake find_package (modern Fortran, C with the
 # archive, a fixed-form host built the MFiX way: host archive first, --as-needed),
 # CMake pkg_check_modules, the legacy include file (and the type errors it must
-# catch), and an fpm path dependency.  Checks the layout, that the core holds no
+# catch), an fpm path dependency; and the MFiX layout (issue 21): the calls in a
+# static library of a subdirectory under an old cmake_minimum_required, the host
+# installed, with the README's CMP0079 and rpath settings (and without them).  Checks the layout, that the core holds no
 # application or peer code and needs only the Fortran runtime, the header constants,
 # and the numbers of every route against the module API (bit for bit).
 # A failing install leaves the prefix untouched.
@@ -101,6 +103,9 @@ check "hertzdamp.h compiles as C99 and C++ with -Wall -Werror" bash -c \
 # ------------------------------------------------------------ examples with their documented link lines
 cp -r example/legacy_dem example/c "$tmp/"
 check "legacy example builds (make PREFIX=...)" make --no-print-directory -C "$tmp/legacy_dem" PREFIX="$prefix"
+check "legacy example: its Makefile passes include/ (hertzdamp.fi), not the module directory" \
+  bash -c "make -n -B -C '$tmp/legacy_dem' PREFIX=/P | grep -q -- '-I/P/include dem.f' && \
+           ! make -n -B -C '$tmp/legacy_dem' PREFIX=/P | grep -q -- '-I/P/include/hertzdamp'"
 check "C example builds (make PREFIX=...)" make --no-print-directory -C "$tmp/c" PREFIX="$prefix"
 "$tmp/legacy_dem/dem" >"$tmp/legacy.out" 2>&1; check "legacy example runs" test $? -eq 0
 "$tmp/c/dem_c" >"$tmp/c.out" 2>&1; check "C example runs" test $? -eq 0
@@ -377,7 +382,7 @@ check "pkg-config (static): the archive is linked (no libhertzdamp.so needed)" \
   bash -c "! ldd '$tmp/dem_pcs' | grep -q libhertzdamp && '$tmp/dem_pcs' | grep -q '^contact'"
 # shellcheck disable=SC2046
 check "pkg-config (shared): fixed-form legacy example builds and runs" bash -c \
-  "gfortran '$tmp/legacy_dem/dem.f' $(pkg-config --libs hertzdamp) -o '$tmp/dem_f_pc' && '$tmp/dem_f_pc' | grep -q '^contact'"
+  "gfortran '$tmp/legacy_dem/dem.f' $(pkg-config --cflags --libs hertzdamp) -o '$tmp/dem_f_pc' && '$tmp/dem_f_pc' | grep -q '^contact'"
 
 # ------------------------------------------------------------ the legacy include file
 cat >"$tmp/inc_ok.f" <<'F'
@@ -487,6 +492,61 @@ target_link_libraries(inc_ok PRIVATE hertzdamp::hertzdamp)
 CM
 check "CMake: fixed-form client with INCLUDE 'hertzdamp.fi' builds" cmake_consumer "$tmp/cm_inc"
 check "CMake: include-file client runs" bash -c "'$tmp/cm_inc/build/inc_ok' | grep -qx ok"
+# (g) the MFiX layout (issue 21): the calls in a static library of a subdirectory, an
+#     old cmake_minimum_required (3.10 < 3.13: policy CMP0079 off), the library linked
+#     to hertzdamp from the top level, the program installed.  The README's recipe:
+#     CMP0079 NEW, and CMAKE_INSTALL_RPATH_USE_LINK_PATH or the static target.
+mkdir -p "$tmp/cm_sub/model"
+cp "$tmp/cm_mfix/host.f" "$tmp/cm_mfix/main.f" "$tmp/cm_sub/"
+mv "$tmp/cm_sub/host.f" "$tmp/cm_sub/model/host.f"
+cat >"$tmp/cm_sub/CMakeLists.txt" <<'CM'
+cmake_minimum_required(VERSION 3.10)
+project(subhost LANGUAGES Fortran)
+set(CMAKE_EXE_LINKER_FLAGS "${CMAKE_EXE_LINKER_FLAGS} -Wl,--as-needed")
+if(HOST_RPATH)
+  set(CMAKE_INSTALL_RPATH_USE_LINK_PATH ON)
+endif()
+find_package(hertzdamp 0.2 CONFIG REQUIRED)
+add_subdirectory(model)
+add_executable(subhost main.f)
+target_link_libraries(subhost PRIVATE dem_core)
+if(HOST_POLICY)
+  cmake_policy(SET CMP0079 NEW)
+endif()
+target_link_libraries(dem_core PUBLIC ${HOST_TARGET})
+install(TARGETS subhost DESTINATION bin)
+CM
+echo 'add_library(dem_core STATIC host.f)' >"$tmp/cm_sub/model/CMakeLists.txt"
+check "hosts' sources: the legacy example uses INCLUDE 'hertzdamp.fi'" grep -q "^      INCLUDE 'hertzdamp.fi'" \
+  "$tmp/cm_sub/model/host.f"
+sub_host() {  # build dir, target, policy ON|OFF, rpath ON|OFF: configure, build, install into <dir>/inst
+  local b=$tmp/cm_sub/$1
+  cmake -S "$tmp/cm_sub" -B "$b" -DCMAKE_PREFIX_PATH="$prefix" -DCMAKE_INSTALL_PREFIX="$b/inst" \
+    -DHOST_TARGET="$2" -DHOST_POLICY="$3" -DHOST_RPATH="$4" >"$b.configure.log" 2>&1 &&
+    cmake --build "$b" >"$b.build.log" 2>&1 && cmake --install "$b" >"$b.install.log" 2>&1 ||
+    { cat "$b.configure.log" "$b.build.log" 2>/dev/null; return 1; }
+}
+runs_installed() {  # installed program: from /, no LD_LIBRARY_PATH, 5 contacts
+  bash -c "cd / && [ \$(env -u LD_LIBRARY_PATH '$1' | grep -c '^contact') -eq 5 ]"
+}
+check "CMake, calls in a subdirectory's static library, minimum 3.10, CMP0079 NEW, rpath: builds and installs" \
+  sub_host b_shared hertzdamp::hertzdamp ON ON
+check "... the program runs in the build tree" \
+  bash -c "[ \$('$tmp/cm_sub/b_shared/subhost' | grep -c '^contact') -eq 5 ]"
+check "... the installed program runs (CMAKE_INSTALL_RPATH_USE_LINK_PATH)" runs_installed "$tmp/cm_sub/b_shared/inst/bin/subhost"
+check "... the same host with hertzdamp::hertzdamp_static and no rpath setting: installed, it runs" \
+  bash -c "$(declare -f sub_host); tmp='$tmp' prefix='$prefix' sub_host b_static hertzdamp::hertzdamp_static ON OFF"
+check "... the static host needs no libhertzdamp.so" \
+  bash -c "! ldd '$tmp/cm_sub/b_static/inst/bin/subhost' | grep -q libhertzdamp && \
+           cd / && [ \$('$tmp/cm_sub/b_static/inst/bin/subhost' | grep -c '^contact') -eq 5 ]"
+# what the recipe prevents: without CMP0079 the old minimum refuses the link; without
+# the rpath setting the installed program does not find libhertzdamp.so
+sub_host b_nopolicy hertzdamp::hertzdamp OFF ON >/dev/null 2>&1
+check "without CMP0079 NEW (minimum 3.10) CMake refuses to link the subdirectory's library" \
+  grep -q 'not built in this directory' "$tmp/cm_sub/b_nopolicy.configure.log"
+sub_host b_norpath hertzdamp::hertzdamp ON OFF >/dev/null 2>&1
+check "without CMAKE_INSTALL_RPATH_USE_LINK_PATH the installed program misses libhertzdamp.so" \
+  bash -c "env -u LD_LIBRARY_PATH ldd '$tmp/cm_sub/b_norpath/inst/bin/subhost' | grep -q 'libhertzdamp.so.0 => not found'"
 # (f) the version check refuses an incompatible request
 mkdir -p "$tmp/cm_ver"
 printf 'cmake_minimum_required(VERSION 3.18)\nproject(v LANGUAGES NONE)\nfind_package(hertzdamp 9.0 CONFIG REQUIRED)\n' \

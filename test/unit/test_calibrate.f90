@@ -42,6 +42,10 @@ program test_calibrate
     call test_unidentifiable_k()
     call test_ill_posed()
     call test_far_from_law()
+    call test_beyond_maps()
+    call test_exact_sweep()
+    call test_huge_sigmas()
+    call test_start_messages()
     call s%finish()
 
 contains
@@ -168,8 +172,11 @@ contains
         if (law /= CAL_LAW_LINEAR) return
         call cal_forward(CAL_LAW_LINEAR, HD_END_OVERLAP, HD_METHOD_FIT, 1.2_wp, e, tau, de, dtau, st)
         call s%check(st == HD_NO_REBOUND .and. e == 0.0_wp .and. tau == 0.0_wp, 'alpha > alpha_c: no rebound, zeros')
+        ! beyond the fitted maps: the reference integrator, as with --method rk45
         call cal_forward(CAL_LAW_LINEAR, HD_END_FORCE, HD_METHOD_FIT, 60.0_wp, e, tau, de, dtau, st)
-        call s%check(st /= HD_OK .and. e == 0.0_wp, 'force alpha beyond the fit: failure, zeros')
+        call cal_forward(CAL_LAW_LINEAR, HD_END_FORCE, HD_METHOD_RK45, 60.0_wp, e2, t2, de2, dt2, st2)
+        call s%check(st == HD_OK .and. st2 == HD_OK .and. e == e2 .and. tau == t2 .and. de == de2 .and. dtau == dt2 &
+                     .and. e > 0.0_wp, 'force alpha beyond the fit: the values and differences of rk45')
         call cal_forward(CAL_LAW_LINEAR, HD_END_OVERLAP, HD_METHOD_FIT, 0.0_wp, e, tau, de, dtau, st)
         call s%check(st == HD_BAD_ALPHA, 'alpha = 0: HD_BAD_ALPHA (the fit works in ln alpha)')
     end subroutine test_derivatives
@@ -395,5 +402,176 @@ contains
                      r%note)
         call s%check(r%rms_e > 0.1_wp .and. allocated(r%e_fit), 'far from the law: the residuals are reported')
     end subroutine test_far_from_law
+
+    ! ------------------------------------------------------------------ issue 21
+
+    !> n speeds from u0 to u1, evenly spaced in log.
+    pure function log_speeds(u0, u1, n) result(u)
+        real(wp), intent(in) :: u0, u1
+        integer, intent(in) :: n
+        real(wp) :: u(n)
+        integer :: i
+        do i = 1, n
+            u(i) = u0 * (u1 / u0)**(real(i - 1, wp) / (n - 1))
+        end do
+    end function log_speeds
+
+    !> Exact data (rk45) beyond the fitted maps, the datasets of issue 21: e below
+    !> 1e-5 (kuwabara-kono, overlap, k = 1e6, d = 2512) and force-end alpha beyond 52.5
+    !> (linear).  Before: `auto` chose tsuji with kuwabara-kono `no-convergence`, and
+    !> the explicit kuwabara-kono fit ended at k = 1978, d = 11.6 with status ok.
+    subroutine test_beyond_maps()
+        real(wp), parameter :: k = 1.0e6_wp, d = 2512.0_wp
+        real(wp) :: ua(5), ub(7), uc(6), ea(5), ta(5), eb(7), tb(7), ec(6), tc(6), dl, worst
+        type(cal_options) :: o
+        type(cal_result) :: r, all(0:cal_max_law)
+        integer :: chosen
+        ! item 2: m = 1e-3, 1 to 10 m/s: e = 5.2e-5 down to 5.2e-6
+        ua = log_speeds(1.0_wp, 10.0_wp, 5)
+        call rk45_data(CAL_LAW_KUWABARA_KONO, HD_END_OVERLAP, k, d, 1.0e-3_wp, ua, ea, ta)
+        call s%check(minval(ea) < 5.2e-6_wp .and. maxval(ea) > 5.1e-5_wp, 'beyond the maps: e from 5.2e-5 to 5.2e-6')
+        o%mass = 1.0e-3_wp
+        call cal_auto(cal_make_data(ua, ea, ta), o, all, chosen)
+        call s%check(chosen == CAL_LAW_KUWABARA_KONO, 'beyond the maps (e, tc): auto picks kuwabara-kono')
+        if (chosen >= 0) then
+            call s%check_close(all(chosen)%k, k, 1.0e-8_wp, 'beyond the maps (e, tc), auto: k to 1e-8')
+            call s%check_close(all(chosen)%d, d, 1.0e-8_wp, 'beyond the maps (e, tc), auto: d to 1e-8')
+        end if
+        call cal_auto(cal_make_data(ua, ea), o, all, chosen)
+        call s%check(chosen == CAL_LAW_KUWABARA_KONO, 'beyond the maps (e only): auto picks kuwabara-kono')
+        if (chosen >= 0) call s%check_close(all(chosen)%c, d * k**(-0.6_wp), 1.0e-8_wp, &
+                                            'beyond the maps (e only), auto: c to 1e-8')
+        ! item 3: m = 1e-4, 0.01 to 10 m/s: e = 5.2e-5 down to 5.2e-8, explicit law
+        ub = log_speeds(0.01_wp, 10.0_wp, 7)
+        call rk45_data(CAL_LAW_KUWABARA_KONO, HD_END_OVERLAP, k, d, 1.0e-4_wp, ub, eb, tb)
+        o%mass = 1.0e-4_wp
+        call cal_fit(cal_make_data(ub, eb, tb), CAL_LAW_KUWABARA_KONO, o, r)
+        call s%check(r%status == CAL_OK, 'beyond the maps, explicit kuwabara-kono: converges ' // r%message)
+        call s%check_close(r%k, k, 1.0e-8_wp, 'beyond the maps, explicit kuwabara-kono: k to 1e-8')
+        call s%check_close(r%d, d, 1.0e-8_wp, 'beyond the maps, explicit kuwabara-kono: d to 1e-8')
+        call s%check(maxval(abs(r%e_fit - eb) / eb) < 1.0e-8_wp, 'beyond the maps: every e reproduced to 1e-8')
+        worst = maxval(abs(r%e_fit - eb) / eb)
+        ! linear, force end, alpha = 126 ... 50 (the fitted force map ends at 52.5)
+        uc = log_speeds(0.1_wp, 10.0_wp, 6)
+        dl = d_for(CAL_LAW_LINEAR, 80.0_wp, 1.0e9_wp, 2.0e-3_wp)
+        call rk45_data(CAL_LAW_LINEAR, HD_END_FORCE, 1.0e9_wp, dl, 2.0e-3_wp, uc, ec, tc)
+        o%mass = 2.0e-3_wp
+        o%iend = HD_END_FORCE
+        call cal_auto(cal_make_data(uc, ec, tc), o, all, chosen)
+        call s%check(chosen == CAL_LAW_LINEAR, 'force alpha beyond 52.5 (e, tc): auto picks linear')
+        if (chosen >= 0) then
+            call s%check_close(all(chosen)%k, 1.0e9_wp, 1.0e-8_wp, 'force alpha beyond 52.5: k to 1e-8')
+            call s%check_close(all(chosen)%d, dl, 1.0e-8_wp, 'force alpha beyond 52.5: d to 1e-8')
+        end if
+        print '(a,es10.2)', 'beyond the maps: worst relative e residual (0.01-10 m/s, e down to 5e-8): ', worst
+    end subroutine test_beyond_maps
+
+    !> Exact data of every law and end over a range of damping (alpha at 1 m/s from
+    !> 0.05 to 0.9 alpha_c, 20 for kuwabara-kono (e to 4e-7), 150 with the force end,
+    !> beyond the linear law's fitted 52.5), speeds 0.05 to 20 m/s:
+    !> the true law recovers k and d to 1e-8, auto picks it, and every fit reported ok
+    !> without sigmas has its last Gauss-Newton correction below the tolerance (never a
+    !> fit that stopped short of it: before, the tolerance grew with the residuals).
+    subroutine test_exact_sweep()
+        integer, parameter :: nu = 6
+        real(wp), parameter :: k = 2.0e8_wp, m = 5.0e-4_wp
+        real(wp) :: u(nu), e(nu), tc(nu), d, alpha1, amax
+        type(cal_options) :: o
+        type(cal_result) :: r, all(0:cal_max_law)
+        integer :: law, iend, j, chosen, l, nfit, nok, nrec, npick, nhonest, nall
+        u = log_speeds(0.05_wp, 20.0_wp, nu)
+        nfit = 0
+        nok = 0
+        nrec = 0
+        npick = 0
+        nhonest = 0
+        nall = 0
+        o%mass = m
+        do law = 0, cal_max_law
+            do iend = HD_END_OVERLAP, HD_END_FORCE
+                o%iend = iend
+                amax = merge(0.9_wp * hertzdamp_law_alpha_c(law), 150.0_wp, iend == HD_END_OVERLAP)
+                if (law == CAL_LAW_KUWABARA_KONO .and. iend == HD_END_OVERLAP) amax = 20.0_wp
+                do j = 0, 5
+                    alpha1 = 0.05_wp * (amax / 0.05_wp)**(real(j, wp) / 5.0_wp)
+                    ! the overlap end of linear and tsuji: alpha at the slowest speed below alpha_c
+                    if (iend == HD_END_OVERLAP .and. law /= CAL_LAW_KUWABARA_KONO) then
+                        alpha1 = min(alpha1, amax * minval(u)**(-cal_law_speed_exponent(law)) * 0.999_wp)
+                    end if
+                    d = d_for(law, alpha1, k, m)
+                    call rk45_data(law, iend, k, d, m, u, e, tc)
+                    call cal_fit(cal_make_data(u, e, tc), law, o, r)
+                    nfit = nfit + 1
+                    if (r%status == CAL_OK) nok = nok + 1
+                    if (rel_err(r%k, k) < 1.0e-8_wp .and. rel_err(r%d, d) < 1.0e-8_wp) nrec = nrec + 1
+                    if (.not. (r%status == CAL_OK .and. rel_err(r%k, k) < 1.0e-8_wp .and. rel_err(r%d, d) < 1.0e-8_wp)) then
+                        print '(a,i0,a,i0,a,es10.3,a,2es12.4,1x,a)', 'exact sweep: law ', law, ' end ', iend, &
+                            ' alpha1 ', alpha1, ': k, d ', r%k, r%d, r%message
+                    end if
+                    call cal_auto(cal_make_data(u, e, tc), o, all, chosen)
+                    if (chosen == law) npick = npick + 1
+                    do l = 0, cal_max_law
+                        if (all(l)%status /= CAL_OK) cycle
+                        nall = nall + 1
+                        if (all(l)%gn_step <= 1.0e-10_wp) nhonest = nhonest + 1
+                    end do
+                end do
+            end do
+        end do
+        print '(a,6(i0,1x))', 'exact sweep: fits, ok, recovered, auto right, ok fits, honest: ', nfit, nok, nrec, &
+            npick, nall, nhonest
+        call s%check(nok == nfit, 'exact sweep: every fit of the true law converges')
+        call s%check(nrec == nfit, 'exact sweep: every fit recovers k and d to 1e-8')
+        call s%check(npick == nfit, 'exact sweep: auto picks the true law every time')
+        call s%check(nhonest == nall, 'exact sweep: every ok fit without sigmas has J+r <= 1e-10')
+    end subroutine test_exact_sweep
+
+    !> Standard uncertainties whose value fits a double are computed, however large the
+    !> sigmas: they scale with them (sigma 1e300: uncertainties ~1e297, before inf).
+    subroutine test_huge_sigmas()
+        real(wp), parameter :: u(5) = [0.3_wp, 0.7_wp, 1.5_wp, 3.0_wp, 6.0_wp], m = 1.0e-3_wp, k = 1.0e9_wp
+        real(wp) :: e(5), tc(5), d, one(5)
+        type(cal_options) :: o
+        type(cal_result) :: r1, rb, r1t, rbt
+        d = d_for(CAL_LAW_LINEAR, 0.2_wp, k, m)
+        call rk45_data(CAL_LAW_LINEAR, HD_END_OVERLAP, k, d, m, u, e, tc)
+        o%mass = m
+        one = 1.0_wp
+        call cal_fit(cal_make_data(u, e, sigma_e=one), CAL_LAW_LINEAR, o, r1)
+        call cal_fit(cal_make_data(u, e, sigma_e=1.0e300_wp * one), CAL_LAW_LINEAR, o, rb)
+        call s%check(r1%status == CAL_OK .and. rb%status == CAL_OK, 'sigma_e = 1e300: the fit is ok')
+        call s%check_close(rb%c_err, 1.0e300_wp * r1%c_err, 1.0e-8_wp, 'sigma_e = 1e300: c_err = 1e300 c_err(sigma_e = 1)')
+        call s%check_close(rb%a_err, 1.0e300_wp * r1%a_err, 1.0e-8_wp, 'sigma_e = 1e300: a_err scales too')
+        call cal_fit(cal_make_data(u, e, tc, one, 1.0e-3_wp * tc), CAL_LAW_LINEAR, o, r1t)
+        call cal_fit(cal_make_data(u, e, tc, 1.0e300_wp * one, 1.0e297_wp * tc), CAL_LAW_LINEAR, o, rbt)
+        call s%check(r1t%status == CAL_OK .and. rbt%status == CAL_OK, 'sigmas 1e300 with tc: the fit is ok')
+        call s%check_close(rbt%k_err, 1.0e300_wp * r1t%k_err, 1.0e-8_wp, 'sigmas 1e300: k_err scales')
+        call s%check_close(rbt%d_err, 1.0e300_wp * r1t%d_err, 1.0e-8_wp, 'sigmas 1e300: d_err scales')
+        call s%check_close(rbt%c_err, 1.0e300_wp * r1t%c_err, 1.0e-8_wp, 'sigmas 1e300: c_err scales')
+        call s%check(abs(rbt%corr_kd - r1t%corr_kd) < 1.0e-8_wp .and. abs(r1t%corr_kd) <= 1.0_wp, &
+                     'sigmas 1e300: the same correlation of k and d')
+        print '(a,3es12.4)', 'sigma 1e300: c_err, k_err, d_err: ', rbt%c_err, rbt%k_err, rbt%d_err
+    end subroutine test_huge_sigmas
+
+    !> The messages name the real cause: contact times in the wrong unit (k far beyond
+    !> every double-precision stiffness at the start), sigmas too small for the weighted
+    !> residuals to fit a double.
+    subroutine test_start_messages()
+        real(wp), parameter :: u(3) = [0.5_wp, 1.0_wp, 2.0_wp]
+        real(wp), parameter :: e(3) = [0.8_wp, 0.82_wp, 0.84_wp]
+        type(cal_options) :: o
+        type(cal_result) :: r
+        o%mass = 1.0e-3_wp
+        call cal_fit(cal_make_data(u, e, [1.0e300_wp, 1.0e300_wp, 1.0e300_wp]), CAL_LAW_LINEAR, o, r)
+        call s%check(r%status == CAL_FAILED .and. index(r%message, 'stiffness k = 10^-7') > 0 .and. &
+                     index(r%message, 'seconds') > 0, 'tc = 1e300: the message names the stiffness: ' // r%message)
+        call cal_fit(cal_make_data(u, e, sigma_e=[1.0e-310_wp, 0.01_wp, 0.01_wp]), CAL_LAW_LINEAR, o, r)
+        call s%check(r%status == CAL_BAD_DATA .and. index(r%message, 'row 1: sigma_e = 1e-310 is too small') > 0, &
+                     'sigma_e = 1e-310: the message names it: ' // r%message)
+        call cal_fit(cal_make_data(u, e, [1.0e-4_wp, 1.0e-4_wp, 1.0e-4_wp], [0.01_wp, 0.01_wp, 0.01_wp], &
+                                   [1.0e-4_wp, 1.0e-320_wp, 1.0e-4_wp]), CAL_LAW_LINEAR, o, r)
+        call s%check(r%status == CAL_BAD_DATA .and. index(r%message, 'row 2: sigma_tc') > 0 .and. &
+                     index(r%message, 'too small') > 0, 'sigma_tc = 1e-320: the message names it: ' // r%message)
+    end subroutine test_start_messages
 
 end program test_calibrate

@@ -6,7 +6,9 @@
 writes integrations/lammps/results/:
   e_vs_u.dat, e_vs_u.png   achieved e per contact against the impact speed, with
                            per-contact k and d (granular/hertzdamp steps 20) and with
-                           the best single fixed (k, d) (granular/hertzdamp fixed K D)
+                           the best single fixed (k, d) (granular/hertzdamp fixed K D),
+                           which `hertzdamp invert --fixed` gives for the speed range
+                           of the per-contact run (the program `make run` installs)
   speed.txt                cost per time step of granular/hertzdamp against stock
                            pair_style granular hertz ... damping velocity with that
                            fixed (k, d): medians of R runs measured side by side
@@ -14,6 +16,8 @@ writes integrations/lammps/results/:
 Run `make lammps` first.
 """
 import argparse
+import csv
+import io
 import math
 import os
 import re
@@ -31,38 +35,23 @@ GAS = os.path.join(hdlmp.EXAMPLES, "in.gas")
 E, NSTEP, DT = 0.5, 20, 1.0e-6
 
 
-def e_of_alpha(api, alpha):
-    # k = m = u = 1: alpha = d
-    return api.forward(1.0, alpha, 1.0, 1.0, "overlap")[0]
+def hertzdamp_bin():
+    """The hertzdamp program: $HERTZDAMP_BIN, else the one `make run` installs."""
+    b = os.environ.get("HERTZDAMP_BIN") or os.path.join(hdlmp.ROOT, "build", "prefix", "bin", "hertzdamp")
+    if not os.access(b, os.X_OK):
+        sys.exit("figures.py: no hertzdamp program at %s: run `make run` (or set HERTZDAMP_BIN)" % b)
+    return b
 
 
-def best_fixed(api, u, m):
-    """alpha0 at the median speed minimising sum (e(alpha0 (u/u_ref)^-1/5) - E)^2."""
-    u_ref = statistics.median(u)
-    grid = [0.02 * i for i in range(1, 56)]      # alpha in (0, 1.1]
-    table = [(a, e_of_alpha(api, a)) for a in grid]
-
-    def e_at(alpha):
-        for (a0, e0), (a1, e1) in zip(table, table[1:]):
-            if a0 <= alpha <= a1:
-                return e0 + (e1 - e0) * (alpha - a0) / (a1 - a0)
-        return table[0][1] if alpha < table[0][0] else 0.0
-
-    def cost(a0):
-        return sum((e_at(a0 * (x / u_ref) ** -0.2) - E) ** 2 for x in u)
-
-    lo, hi = 0.05, 1.0
-    for _ in range(60):                            # golden section
-        a = hi - 0.618 * (hi - lo)
-        b = lo + 0.618 * (hi - lo)
-        if cost(a) < cost(b):
-            hi = b
-        else:
-            lo = a
-    a0 = 0.5 * (lo + hi)
-    e0 = e_of_alpha(api, a0)
-    k, d = api.invert(e0, NSTEP * DT, m, u_ref, "overlap")
-    return k, d, a0, e0, u_ref
+def best_fixed(u, m):
+    """The best single fixed (k, d) over the impact speeds u, as `hertzdamp invert
+    --fixed` defines it: the worst relative error of e over [min u, max u] as small as
+    one pair makes it, the shortest contact of that range NSTEP steps of DT long."""
+    cmd = [hertzdamp_bin(), "invert", "--fixed", "--mass", repr(m), "--e", repr(E), "--dt", repr(DT),
+           "--steps", str(NSTEP), "--velocity", "%r,%r" % (min(u), max(u)), "--format", "csv", "--quiet"]
+    rows = list(csv.DictReader(io.StringIO(subprocess.run(cmd, capture_output=True, text=True,
+                                                          check=True).stdout)))
+    return float(rows[0]["k"]), float(rows[0]["d"]), float(rows[0]["worst_e_error"]), " ".join(cmd[1:])
 
 
 def timing(out):
@@ -96,7 +85,7 @@ def main():
     hdlmp.lmp(GAS, dict(base, usedata=1, log="adaptive.log", stats="a.stats"), tmp)
     ad = [r for r in hdlmp.read_log(os.path.join(tmp, "adaptive.log"))]
     m = ad[0]["m"]
-    k, d, a0, e0, u_ref = best_fixed(api, [r["u_in"] for r in ad], m)
+    k, d, worst, fixed_cmd = best_fixed([r["u_in"] for r in ad], m)
     hdlmp.lmp(GAS, dict(base, usedata=1, rule="fixed", K=repr(k), D=repr(d), log="fixed.log",
                         stats="f.stats"), tmp)
     fx = hdlmp.read_log(os.path.join(tmp, "fixed.log"))
@@ -109,7 +98,7 @@ def main():
     ba, bf = bins(ad, edges), bins(fx, edges)
     with open(os.path.join(RESULTS, "e_vs_u.dat"), "w") as f:
         f.write("# gas: 2925 beads, %d steps, N = %d, target e = %g (overlap end)\n" % (args.steps, NSTEP, E))
-        f.write("# best fixed pair: k %.6e d %.6e (alpha %.4f at the median impact speed %.4f m/s)\n" % (k, d, a0, u_ref))
+        f.write("# best fixed pair: k %.6e d %.6e (hertzdamp %s: worst |e/%g - 1| %.4f)\n" % (k, d, fixed_cmd, E, worst))
         f.write("# rule u_mid count e_median e_p10 e_p90   (rule 1 = per-contact k, d; 2 = fixed k, d)\n")
         for tag, b in ((1, ba), (2, bf)):
             for row in b:
@@ -157,7 +146,8 @@ plot '%s' index 0 u ($1==1?$2:NaN):4:5:6 with yerrorlines lw 2 title 'per-contac
         f.write("median %.4e %.4e %.4e %.4e %.4f %.4f\n" % (med(t_hd), med(t_st), med(p_hd), med(p_st), med(ratio), med(pratio)))
     with open(os.path.join(RESULTS, "summary.txt"), "w") as f:
         f.write("command: python3 integrations/lammps/tools/figures.py --steps %d --repeats %d\n" % (args.steps, args.repeats))
-        f.write("best fixed pair: k %.6e N/m^1.5, d %.6e kg/s (alpha %.4f at u = %.4f m/s, e %.4f there)\n" % (k, d, a0, u_ref, e0))
+        f.write("best fixed pair: k %.6e N/m^1.5, d %.6e kg/s, worst |e/%g - 1| %.4f over the speeds of the per-contact run "
+                "(hertzdamp %s)\n" % (k, d, E, worst, fixed_cmd))
         f.write("impact speeds: %.4g .. %.4g m/s\n" % (umin, umax))
         for name, s in (("per-contact k, d", sa), ("fixed k, d", sf)):
             f.write("%-17s contacts %d, e median %.4f, 10%%..90%% %.4f..%.4f, rms(e - %.1f) %.4f\n" % ((name, s[4], s[0], s[1], s[2], E, s[3])))

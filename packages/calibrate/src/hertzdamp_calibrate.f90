@@ -16,24 +16,32 @@
 !> residuals relative, (T_c - T_model)/T_c, weighted equally, and one scale s is
 !> estimated from the residuals.  Levenberg-Marquardt with Marquardt's column scaling:
 !> each step solves the damped problem from the SVD of the scaled Jacobian (LAPACK
-!> dgesvd); the Jacobian is exact (hertzdamp_calibrate_maps).  Converged when the
-!> Gauss-Newton correction J^+ r (the linearised distance to the optimum) is below
-!> xtol in every ln-parameter, i.e. the parameters are known to xtol relative (1e-10
-!> with the fit), or below 1e-4 of each parameter's standard uncertainty (noisy data:
-!> near the optimum the sum of squares cannot tell two points apart in double precision,
-!> least of all with the reference integrator in the loop); that last correction is
-!> then applied as well.
+!> dgesvd); the Jacobian is exact (hertzdamp_calibrate_maps; beyond the fitted maps
+!> the reference integrator and its differences).  Converged when the Gauss-Newton
+!> correction J^+ r (the linearised distance to the optimum) is below xtol in every
+!> ln-parameter, i.e. the parameters are known to xtol relative (1e-10 with the fit),
+!> or, with the sigmas given, below 1e-4 of each parameter's standard uncertainty
+!> (noisy data: near the optimum the sum of squares cannot tell two points apart in
+!> double precision); that last correction is then applied as well.  Without sigmas
+!> that uncertainty comes from the residuals and grows with a poor fit, so only xtol
+!> counts; when no damped step lowers the sum of squares any more (its rounding, or
+!> the reference integrator's noise), plain Gauss-Newton corrections below 1e-3, each
+!> at most half the last, continue to xtol.  A fit that stops short is CAL_NO_CONVERGENCE.
 !>
 !> Uncertainties: covariance (J^T J)^(-1) of theta at the optimum, times s^2 = chi2/dof
-!> when no sigmas were given; first-order propagation to k, d and c.  Goodness of fit:
+!> when no sigmas were given; first-order propagation to k, d and c (in logarithms
+!> where a product would over- or underflow: an uncertainty that fits a double is
+!> computed, whatever the sigmas).  Goodness of fit:
 !> chi2/dof and its p-value Q(dof/2, chi2/2) with sigmas, RMS residuals always.  Law
 !> choice: the smallest AIC (chi2 + 2p with sigmas, n ln(chi2/n) + 2p without); every
-!> law has the same p for the same data, so this is the smallest chi2 (BIC agrees).
+!> law has the same p for the same data, so this is the smallest chi2 (BIC agrees);
+!> never over a law whose fit failed where it might fit better (cal_auto).
 !>
 !> Nothing is printed and nothing stops: a status (CAL_*) and a one-line message.
 module hertzdamp_calibrate
     use hertzdamp_kinds, only: hertzdamp_rk
-    use hertzdamp_status, only: HD_OK, HD_END_OVERLAP, HD_END_FORCE
+    use hertzdamp_status, only: HD_OK, HD_END_OVERLAP, HD_END_FORCE, HD_OUTSIDE_VALIDITY
+    use hertzdamp_fit_laws, only: hertzdamp_fit_forward_deriv
     use hertzdamp_methods, only: HD_METHOD_FIT, HD_METHOD_RK45
     use hertzdamp_rk45, only: hertzdamp_rk45_default_tol
     use hertzdamp_inverse, only: hertzdamp_invert_alpha
@@ -61,6 +69,12 @@ module hertzdamp_calibrate
     !> Convergence relative to the statistics: the Gauss-Newton correction below this
     !> fraction of each parameter's standard uncertainty (then applied once more).
     real(wp), parameter :: stat_tol = 1.0e-4_wp
+    !> Largest Gauss-Newton correction (in ln-parameters) applied without a decrease
+    !> of the sum of squares, when no damped step decreases it any more.
+    real(wp), parameter :: polish_max = 1.0e-3_wp
+    !> Smallest sigma_e, and sigma_tc relative to tc: the squares of the weighted
+    !> residuals of up to 1e5 rows stay below huge (a residual of e is at most 1).
+    real(wp), parameter :: sigma_min = 1.0e-150_wp
 
     !> Measurements: one row per impact.
     type, public :: cal_data
@@ -266,7 +280,18 @@ contains
             if (len(message) > 0) return
             message = not_positive(dat, i, 'sigma_e', dat%sigma_e(i), dat%weighted)
             if (len(message) > 0) return
+            if (dat%weighted .and. dat%sigma_e(i) < sigma_min) then
+                message = at_row(dat, i) // ': sigma_e = ' // fmt_short(dat%sigma_e(i)) // ' is too small: the ' // &
+                          'weighted residuals (e - e_fit)/sigma_e would overflow double precision (sigma_e >= ' // &
+                          fmt_short(sigma_min) // ')'
+                return
+            end if
             message = not_positive(dat, i, 'sigma_tc', dat%sigma_tc(i), dat%weighted .and. dat%has_tc(i))
+            if (len(message) == 0 .and. dat%weighted .and. dat%has_tc(i)) then
+                if (dat%sigma_tc(i) < sigma_min * dat%tc(i)) message = at_row(dat, i) // ': sigma_tc = ' // &
+                    fmt_short(dat%sigma_tc(i)) // ' is too small: the weighted residuals (tc - tc_fit)/sigma_tc ' // &
+                    'would overflow double precision (sigma_tc >= ' // fmt_short(sigma_min) // ' tc)'
+            end if
             if (len(message) > 0) return
         end do
         status = CAL_NOT_IDENTIFIED
@@ -297,11 +322,13 @@ contains
 
     !> Residuals and Jacobian at theta = (ln A[, ln k]).  Rows: e of every
     !> measurement, then tc of the rows that have one (when k is known or fitted).
-    pure subroutine evaluate(dat, law, opts, use_tc, theta, lnk_fixed, we, wt, r, jac, alpha, efit, tcfit, status)
+    pure subroutine evaluate(dat, law, opts, use_tc, beyond, theta, lnk_fixed, we, wt, r, jac, alpha, efit, tcfit, &
+                             status)
         type(cal_data), intent(in) :: dat
         integer, intent(in) :: law
         type(cal_options), intent(in) :: opts
         logical, intent(in) :: use_tc
+        logical, intent(in) :: beyond(:)   !! per row: the reference integrator beyond the fitted maps
         real(wp), intent(in) :: theta(:), lnk_fixed, we(:), wt(:)
         real(wp), intent(out) :: r(:), jac(:, :), alpha(:), efit(:), tcfit(:)
         integer, intent(out) :: status
@@ -323,7 +350,7 @@ contains
             la = theta(1) + s * log(dat%u(i))
             if (abs(la) > ln_limit) return
             alpha(i) = exp(la)
-            call cal_forward(law, opts%iend, opts%method, alpha(i), e, tau, de, dtau, st, opts%tol)
+            call cal_forward(law, opts%iend, opts%method, alpha(i), e, tau, de, dtau, st, opts%tol, beyond(i))
             if (st /= HD_OK) return
             efit(i) = e
             r(i) = (dat%e(i) - e) * we(i)
@@ -395,26 +422,88 @@ contains
         end function above
     end function alpha_of_e
 
+    !> True when alpha, or up to twice it, lies beyond the fitted forward maps of the
+    !> law and end (e < 1e-5, the force end beyond the fit's alpha): a measurement whose
+    !> own alpha is there needs the reference integrator in the model.
+    pure logical function beyond_maps(law, iend, alpha) result(beyond)
+        integer, intent(in) :: law, iend
+        real(wp), intent(in) :: alpha
+        real(wp) :: e, tau, de, dtau
+        integer :: j, st
+        beyond = .false.
+        if (.not. (alpha > 0.0_wp)) return
+        do j = 0, 2
+            call hertzdamp_fit_forward_deriv(alpha * (1.0_wp + 0.5_wp * j), iend, law, e, tau, de, dtau, st)
+            beyond = beyond .or. st == HD_OUTSIDE_VALIDITY
+        end do
+    end function beyond_maps
+
+    !> Why the model cannot be evaluated at the starting point theta: a parameter
+    !> beyond what the fit accepts (|ln| <= ln_limit; the contact times set k, so
+    !> contact times in the wrong unit show here), alpha beyond it at a measured speed,
+    !> or residuals that are not finite.
+    pure function start_failure(dat, law, theta, fit_k) result(message)
+        type(cal_data), intent(in) :: dat
+        integer, intent(in) :: law
+        real(wp), intent(in) :: theta(:)
+        logical, intent(in) :: fit_k
+        character(len=:), allocatable :: message
+        character(len=:), allocatable :: range
+        real(wp) :: la(size(dat%u))
+        integer :: i
+        la = theta(1) + cal_law_speed_exponent(law) * log(dat%u)
+        i = maxloc(abs(la), dim=1)
+        range = fmt_short(ln_limit / log(10.0_wp))
+        range = '(10^-' // range // ' < X < 10^' // range // ')'
+        message = 'the model cannot be evaluated at the starting point'
+        if (fit_k) then
+            if (abs(theta(2)) > ln_limit) then
+                message = 'the contact times give a stiffness k = 10^' // fmt_short(theta(2) / log(10.0_wp)) // &
+                          ' N m^-3/2 at the start, beyond what the fit accepts ' // replace_x(range, 'k') // &
+                          ': are the contact times in seconds?'
+                return
+            end if
+        end if
+        if (abs(la(i)) > ln_limit) message = 'the measured e give alpha = 10^' // fmt_short(la(i) / log(10.0_wp)) // &
+            ' at ' // fmt_short(dat%u(i)) // ' m/s (' // at_row(dat, i) // '), beyond what the fit accepts ' // &
+            replace_x(range, 'alpha') // ': are the speeds in m/s?'
+    contains
+        pure function replace_x(text, name) result(r)
+            character(len=*), intent(in) :: text, name
+            character(len=:), allocatable :: r
+            integer :: j
+            j = index(text, 'X')
+            r = text(1:j - 1) // name // text(j + 1:)
+        end function replace_x
+    end function start_failure
+
     !> The starting point: ln A from the mean of ln(alpha_i u_i^-s) over the rows with
     !> e < 1 (alpha_i inverts e_i), ln k from the mean of the k that gives each contact
     !> time with that A (the algebraic inverse of hertzdamp invert).
-    pure subroutine start_point(dat, law, opts, use_tc, fit_k, theta, status)
+    pure subroutine start_point(dat, law, opts, use_tc, fit_k, theta, beyond, status, message)
         type(cal_data), intent(in) :: dat
         integer, intent(in) :: law
         type(cal_options), intent(in) :: opts
         logical, intent(in) :: use_tc, fit_k
         real(wp), intent(out) :: theta(:)
+        !> per row: the row's own alpha (or up to twice it) lies beyond the fitted maps, so
+        !> the model uses the reference integrator there (method fit)
+        logical, intent(out) :: beyond(:)
         integer, intent(out) :: status
+        character(len=:), allocatable, intent(out) :: message  !! why there is none ('' with one)
         real(wp) :: s, sum_a, sum_k, a, e, tau, de, dtau, tstar
         integer :: i, na, nk, st, it
         logical :: ok
         s = cal_law_speed_exponent(law)
         theta = 0.0_wp
         status = CAL_FAILED
+        message = 'no measured e that the law reaches'
         sum_a = 0.0_wp
         na = 0
+        beyond = .false.
         do i = 1, size(dat%u)
             a = alpha_of_e(law, opts, dat%e(i))
+            beyond(i) = beyond_maps(law, opts%iend, a)
             if (a > 0.0_wp) then
                 sum_a = sum_a + log(a) - s * log(dat%u(i))
                 na = na + 1
@@ -428,13 +517,15 @@ contains
             ok = .true.
             do i = 1, size(dat%u)
                 call cal_forward(law, opts%iend, opts%method, exp(theta(1) + s * log(dat%u(i))), e, tau, de, dtau, &
-                                 st, opts%tol)
+                                 st, opts%tol, beyond(i))
                 ok = ok .and. st == HD_OK
             end do
             if (ok) exit
             theta(1) = theta(1) - 0.5_wp
         end do
+        message = 'no starting point where the model rebounds at every measured speed'
         if (.not. ok) return
+        message = ''
         if (use_tc .and. fit_k .and. opts%k_start > 0.0_wp) then
             theta(2) = log(opts%k_start)
         else if (use_tc .and. fit_k) then
@@ -443,7 +534,7 @@ contains
             do i = 1, size(dat%u)
                 if (.not. dat%has_tc(i)) cycle
                 call cal_forward(law, opts%iend, opts%method, exp(theta(1) + s * log(dat%u(i))), e, tau, de, dtau, &
-                                 st, opts%tol)
+                                 st, opts%tol, beyond(i))
                 tstar = dat%tc(i) / tau
                 ! k = m t*^(-5/2) u^(-1/2)
                 sum_k = sum_k + log(opts%mass) - 2.5_wp * log(tstar) - 0.5_wp * log(dat%u(i))
@@ -453,6 +544,35 @@ contains
         end if
         status = CAL_OK
     end subroutine start_point
+
+    !> ln of the standard deviation of g^T theta, with cov(theta) = W W^T,
+    !> W = scale diag(1/colnorm) V diag(1/sv) (first np of each), and the unit vector
+    !> along W^T g (correlations are dot products of these).  Summed in logarithms:
+    !> no intermediate overflows or underflows where the result itself fits a double.
+    !> ln_sd = -huge and dir = 0 when the deviation is zero.
+    pure subroutine log_sd(g, vt, sv, colnorm, np, scale, ln_sd, dir)
+        real(wp), intent(in) :: g(:), vt(:, :), sv(:), colnorm(:), scale
+        integer, intent(in) :: np
+        real(wp), intent(out) :: ln_sd, dir(:)
+        real(wp) :: lc(np), lmax, w(np), nw
+        integer :: i
+        ln_sd = -huge(1.0_wp)
+        dir = 0.0_wp
+        if (.not. (scale > 0.0_wp)) return
+        lc = -huge(1.0_wp)
+        do i = 1, np
+            if (g(i) /= 0.0_wp) lc(i) = log(abs(g(i))) - log(colnorm(i))
+        end do
+        lmax = maxval(lc)
+        w = 0.0_wp
+        do i = 1, np
+            if (g(i) /= 0.0_wp) w = w + sign(exp(lc(i) - lmax), g(i)) * vt(1:np, i) / sv(1:np)
+        end do
+        nw = norm2(w)
+        if (.not. (nw > 0.0_wp)) return
+        dir(1:np) = w / nw
+        ln_sd = log(nw) + lmax + log(scale)
+    end subroutine log_sd
 
     !> SVD of the column-scaled Jacobian: jac = U diag(sv) V^T diag(colnorm).
     subroutine scaled_svd(jac, colnorm, u, sv, vt, info)
@@ -484,9 +604,10 @@ contains
         real(wp), allocatable :: we(:), wt(:), r(:), jac(:, :), rn(:), jn(:, :), u(:, :), alpha(:), efit(:), tcfit(:)
         real(wp), allocatable :: an(:), en(:), tn(:), theta(:), tn_(:), g(:), step(:), gn(:), pred_r(:)
         real(wp) :: sv(2), vt(2, 2), colnorm(2), lambda, nu, cost, cost_new, pred, rho, lnk_fixed, cov(2, 2)
-        real(wp) :: q, bm, bk, var_lnd, stepmax, sd(2)
+        real(wp) :: q, bm, bk, stepmax, sd(2), gn_last, ln_sd(3), dir(2, 3), var_lnd
         integer :: n, nobs, np, st, info, it, inner, i, j
-        logical :: use_tc, fit_k, accepted
+        logical :: use_tc, fit_k, accepted, polishing, full_rank, stalled
+        logical, allocatable :: beyond(:)
         character(len=:), allocatable :: msg
         character(len=32) :: b
 
@@ -523,22 +644,27 @@ contains
         res%dof = nobs - np
         res%k_fitted = fit_k
         res%kd_known = fit_k .or. o%k_known > 0.0_wp
-        allocate (we(n), wt(n), r(nobs), jac(nobs, np), rn(nobs), jn(nobs, np), u(nobs, np), alpha(n), efit(n), &
+        allocate (beyond(n), we(n), wt(n), r(nobs), jac(nobs, np), rn(nobs), jn(nobs, np), u(nobs, np), alpha(n), efit(n), &
                   tcfit(n), an(n), en(n), tn(n), theta(np), tn_(np), g(np), step(np), gn(np), pred_r(nobs))
         call weights(dat, we, wt)
 
-        call start_point(dat, law, o, use_tc, fit_k, theta, st)
-        if (st == CAL_OK) call evaluate(dat, law, o, use_tc, theta, lnk_fixed, we, wt, r, jac, alpha, efit, tcfit, st)
+        call start_point(dat, law, o, use_tc, fit_k, theta, beyond, st, msg)
+        if (st == CAL_OK) then
+            call evaluate(dat, law, o, use_tc, beyond, theta, lnk_fixed, we, wt, r, jac, alpha, efit, tcfit, st)
+            if (st /= CAL_OK) msg = start_failure(dat, law, theta, fit_k)
+        end if
         if (st /= CAL_OK) then
             res%status = CAL_FAILED
-            res%message = 'the ' // cal_law_name(law) // ' law: no starting point where the model rebounds at ' // &
-                          'every measured speed'
+            res%message = 'the ' // cal_law_name(law) // ' law: ' // msg
             return
         end if
         cost = sum(r**2)
         lambda = 1.0e-3_wp
         nu = 2.0_wp
         res%status = CAL_NO_CONVERGENCE
+        polishing = .false.
+        stalled = .false.
+        gn_last = huge(1.0_wp)
         do it = 1, o%max_iter
             res%iterations = it
             call scaled_svd(jac, colnorm(1:np), u, sv(1:np), vt(1:np, 1:np), info)
@@ -548,31 +674,28 @@ contains
                 return
             end if
             g = matmul(transpose(u), r)   ! U^T r
+            full_rank = sv(np) > rank_tol * sv(1)
             ! Gauss-Newton correction J^+ r (ln-parameters): the distance to the optimum.
-            ! Converged when it is below xtol, or below stat_tol of the standard
-            ! uncertainty of every parameter (then the cost can no longer resolve it:
-            ! its relative change is ~ stat_tol^2 chi2... below the rounding of chi2)
-            if (sv(np) > rank_tol * sv(1)) then
+            ! Converged when it is below xtol; with the given sigmas also when it is below
+            ! stat_tol of every parameter's standard uncertainty (then the sum of squares
+            ! cannot resolve it: its relative change is ~ stat_tol^2 / dof), and that last
+            ! correction is applied as well.  Without sigmas that uncertainty is itself
+            ! estimated from the residuals, so it grows with a poor fit: there only xtol.
+            if (full_rank) then
                 gn = matmul(transpose(vt(1:np, 1:np)), g / sv(1:np)) / colnorm(1:np)
                 res%gn_step = maxval(abs(gn))
                 do j = 1, np
                     sd(j) = sqrt(sum((vt(1:np, j) / sv(1:np))**2)) / colnorm(j)
                 end do
-                if (.not. dat%weighted) sd(1:np) = sd(1:np) * sqrt(cost / (nobs - np))
-                if (res%gn_step <= o%xtol .or. all(abs(gn) <= stat_tol * sd(1:np))) then
+                if (res%gn_step <= o%xtol .or. (dat%weighted .and. all(abs(gn) <= stat_tol * sd(1:np)))) then
                     ! converged: apply the last Gauss-Newton correction too (the sum of
                     ! squares may no longer resolve it, the correction itself is exact)
                     tn_ = theta - gn
-                    call evaluate(dat, law, o, use_tc, tn_, lnk_fixed, we, wt, rn, jn, an, en, tn, st)
+                    call evaluate(dat, law, o, use_tc, beyond, tn_, lnk_fixed, we, wt, rn, jn, an, en, tn, st)
                     if (st == CAL_OK) then
                         call scaled_svd(jn, colnorm(1:np), u, sv(1:np), vt(1:np, 1:np), info)
                         if (info == 0) then
-                            theta = tn_
-                            r = rn
-                            jac = jn
-                            alpha = an
-                            efit = en
-                            tcfit = tn
+                            call take_trial()
                             cost = sum(r**2)
                         else
                             call scaled_svd(jac, colnorm(1:np), u, sv(1:np), vt(1:np, 1:np), info)
@@ -583,46 +706,70 @@ contains
                 end if
             end if
             accepted = .false.
-            do inner = 1, 80
-                ! damped step in the scaled variables: -V diag(sv/(sv^2 + lambda)) U^T r
-                step = -matmul(transpose(vt(1:np, 1:np)), g * sv(1:np) / (sv(1:np)**2 + lambda)) / colnorm(1:np)
-                stepmax = maxval(abs(step))
-                if (stepmax > 2.0_wp) step = step * (2.0_wp / stepmax)   ! at most a factor e^2 per step
-                tn_ = theta + step
-                pred_r = r + matmul(jac, step)
-                pred = cost - sum(pred_r**2)
-                call evaluate(dat, law, o, use_tc, tn_, lnk_fixed, we, wt, rn, jn, an, en, tn, st)
-                rho = -1.0_wp
-                if (st == CAL_OK .and. pred > 0.0_wp) then
-                    cost_new = sum(rn**2)
-                    rho = (cost - cost_new) / pred
+            if (.not. polishing) then
+                do inner = 1, 80
+                    ! damped step in the scaled variables: -V diag(sv/(sv^2 + lambda)) U^T r
+                    step = -matmul(transpose(vt(1:np, 1:np)), g * sv(1:np) / (sv(1:np)**2 + lambda)) / colnorm(1:np)
+                    stepmax = maxval(abs(step))
+                    if (stepmax > 2.0_wp) step = step * (2.0_wp / stepmax)   ! at most a factor e^2 per step
+                    tn_ = theta + step
+                    pred_r = r + matmul(jac, step)
+                    pred = cost - sum(pred_r**2)
+                    call evaluate(dat, law, o, use_tc, beyond, tn_, lnk_fixed, we, wt, rn, jn, an, en, tn, st)
+                    rho = -1.0_wp
+                    if (st == CAL_OK .and. pred > 0.0_wp) then
+                        cost_new = sum(rn**2)
+                        rho = (cost - cost_new) / pred
+                    end if
+                    if (rho > 1.0e-4_wp) then
+                        accepted = .true.
+                        lambda = lambda * max(1.0_wp / 3.0_wp, 1.0_wp - (2.0_wp * rho - 1.0_wp)**3)
+                        nu = 2.0_wp
+                        exit
+                    end if
+                    lambda = lambda * nu
+                    nu = 2.0_wp * nu
+                    if (lambda > 1.0e30_wp) exit
+                end do
+            end if
+            ! No step lowers the sum of squares any more, though the Gauss-Newton correction
+            ! is above xtol.  Close to the optimum (a correction below polish_max) that is
+            ! the rounding of the sum of squares, or the noise of the reference integrator in
+            ! the model, not the optimum: continue with plain Gauss-Newton corrections,
+            ! computed from J and r alone, as long as each is at most half the one before
+            ! (then they converge to xtol, or the fit stops here, not converged).
+            if (.not. accepted .and. full_rank) then
+                if (res%gn_step < 0.5_wp * gn_last .and. res%gn_step <= polish_max) then
+                    tn_ = theta - gn
+                    call evaluate(dat, law, o, use_tc, beyond, tn_, lnk_fixed, we, wt, rn, jn, an, en, tn, st)
+                    accepted = st == CAL_OK
+                    if (accepted) cost_new = sum(rn**2)
+                    polishing = accepted
+                    gn_last = res%gn_step
                 end if
-                if (rho > 1.0e-4_wp) then
-                    theta = tn_
-                    r = rn
-                    jac = jn
-                    alpha = an
-                    efit = en
-                    tcfit = tn
-                    cost = cost_new
-                    lambda = lambda * max(1.0_wp / 3.0_wp, 1.0_wp - (2.0_wp * rho - 1.0_wp)**3)
-                    nu = 2.0_wp
-                    accepted = .true.
-                    exit
-                end if
-                lambda = lambda * nu
-                nu = 2.0_wp * nu
-                if (lambda > 1.0e30_wp) exit
-            end do
-            if (.not. accepted) exit
+            end if
+            stalled = .not. accepted
+            if (stalled) exit
+            call take_trial()
+            cost = cost_new
         end do
         res%alpha = alpha
         res%e_fit = efit
         res%tc_fit = tcfit
+        ! the sum of squares reached and its AIC, also when the fit failed (cal_auto)
+        res%chi2 = cost
+        if (dat%weighted) then
+            res%aic = cost + 2.0_wp * np
+        else
+            res%aic = nobs * log(max(cost, tiny(1.0_wp)) / nobs) + 2.0_wp * np
+        end if
         if (res%status /= CAL_OK) then
             write (b, '(i0)') res%iterations
             res%message = 'the fit of the ' // cal_law_name(law) // ' law did not converge after ' // trim(b) // &
                           ' iterations (Gauss-Newton correction ' // fmt_short(res%gn_step) // ' > ' // fmt_short(o%xtol) // ')'
+            if (stalled) res%message = res%message // ': no step lowers the sum of squares (RMS residual of e ' // &
+                                       fmt_short(sqrt(sum((dat%e - efit)**2) / n)) // '), yet the Gauss-Newton ' // &
+                                       'correction does not vanish: the law does not reproduce these data'
             return
         end if
         ! identifiability: the scaled Jacobian must have full rank
@@ -633,29 +780,26 @@ contains
             return
         end if
 
-        ! covariance of theta: (J^T J)^-1 = D^-1 V diag(1/sv^2) V^T D^-1
+        if (dat%weighted) then
+            res%scale = 1.0_wp
+            res%p_value = cal_gamma_q(0.5_wp * res%dof, 0.5_wp * cost)
+        else
+            res%scale = sqrt(cost / res%dof)
+            res%p_value = 0.0_wp
+        end if
+        ! covariance of theta: (J^T J)^-1 = D^-1 V diag(1/sv^2) V^T D^-1, times s^2
         cov = 0.0_wp
         do i = 1, np
             do j = 1, np
                 cov(i, j) = sum(vt(1:np, i) * vt(1:np, j) / sv(1:np)**2) / (colnorm(i) * colnorm(j))
             end do
         end do
-        res%chi2 = cost
-        if (dat%weighted) then
-            res%scale = 1.0_wp
-            res%p_value = cal_gamma_q(0.5_wp * res%dof, 0.5_wp * cost)
-            res%aic = cost + 2.0_wp * np
-        else
-            res%scale = sqrt(cost / res%dof)
-            res%p_value = 0.0_wp
-            res%aic = nobs * log(max(cost, tiny(1.0_wp)) / nobs) + 2.0_wp * np
-        end if
         cov(1:np, 1:np) = cov(1:np, 1:np) * res%scale**2
-
         res%a = exp(theta(1))
         res%a_err = res%a * sqrt(cov(1, 1))
         res%c = exp(theta(1) + bm * log(o%mass))
         res%c_err = res%c * sqrt(cov(1, 1))
+        var_lnd = cov(1, 1)
         if (res%kd_known) then
             if (fit_k) then
                 res%k = exp(theta(2))
@@ -667,10 +811,30 @@ contains
             else
                 res%k = o%k_known
                 res%k_err = 0.0_wp
-                var_lnd = cov(1, 1)
             end if
             res%d = exp(theta(1) + bm * log(o%mass) + bk * log(res%k))
             res%d_err = res%d * sqrt(max(var_lnd, 0.0_wp))
+        end if
+        ! Where a product above over- or underflowed (sigmas of 1e300: J ~ 1e-300 and
+        ! (J^T J)^-1 ~ 1e600), the same uncertainties in logarithms, s^2 (J^T J)^-1 = W W^T
+        ! with W = s D^-1 V diag(1/sv): each exp(ln value + ln sd), finite whenever the
+        ! uncertainty itself fits a double.
+        if (.not. (all(ieee_is_finite(cov(1:np, 1:np))) .and. cov(1, 1) > 0.0_wp .and. ieee_is_finite(res%a_err) &
+                   .and. ieee_is_finite(res%c_err) .and. ieee_is_finite(res%k_err) .and. ieee_is_finite(res%d_err) &
+                   .and. res%scale > 0.0_wp)) then
+            call log_sd([1.0_wp, 0.0_wp], vt, sv, colnorm, np, res%scale, ln_sd(1), dir(:, 1))
+            res%a_err = exp(theta(1) + ln_sd(1))
+            res%c_err = exp(theta(1) + bm * log(o%mass) + ln_sd(1))
+            if (res%kd_known) then
+                ln_sd(3) = ln_sd(1)
+                if (fit_k) then
+                    call log_sd([0.0_wp, 1.0_wp], vt, sv, colnorm, np, res%scale, ln_sd(2), dir(:, 2))
+                    call log_sd([1.0_wp, bk], vt, sv, colnorm, np, res%scale, ln_sd(3), dir(:, 3))
+                    res%k_err = exp(theta(2) + ln_sd(2))
+                    res%corr_kd = dot_product(dir(1:np, 2), dir(1:np, 3))
+                end if
+                res%d_err = exp(theta(1) + bm * log(o%mass) + bk * log(res%k) + ln_sd(3))
+            end if
         end if
         res%rms_e = sqrt(sum((dat%e - efit)**2) / n)
         if (use_tc) res%rms_tc = sqrt(sum(merge((dat%tc - tcfit)**2, 0.0_wp, dat%has_tc)) / res%n_tc)
@@ -679,11 +843,25 @@ contains
                        ': the data are far from the ' // cal_law_name(law) // ' law (see the residuals)')
         end if
         res%status = CAL_OK
+    contains
+        !> The trial point (tn_ and what evaluate gave there) becomes the current one.
+        subroutine take_trial()
+            theta = tn_
+            r = rn
+            jac = jn
+            alpha = an
+            efit = en
+            tcfit = tn
+        end subroutine take_trial
     end subroutine cal_fit
 
-    !> Fit every law and choose the one with the smallest AIC.  res(law) holds each
-    !> fit; chosen = the law, or -1 when no law could be fitted (each res(law)%message
-    !> tells why).
+    !> Fit every law and choose the one with the smallest AIC among the fits that
+    !> converged.  A law whose fit failed is passed over only when the sum of squares
+    !> it reached is already worse than the chosen law's optimum (its iteration
+    !> stopped where the law fits the data worse, e.g. on the edge of its range where
+    !> it no longer rebounds); otherwise, or when it could not be evaluated at all,
+    !> no law is preferred to it: chosen = -1.  res(law) holds each fit (its message
+    !> tells why one failed); chosen = the law, or -1.
     subroutine cal_auto(dat, opts, res, chosen)
         type(cal_data), intent(in) :: dat                 !! measurements
         type(cal_options), intent(in) :: opts             !! settings
@@ -702,6 +880,16 @@ contains
             end if
         end do
         if (chosen < 0) return
+        do law = 0, cal_max_law
+            if (res(law)%status == CAL_OK) cycle
+            if (res(law)%iterations == 0 .or. .not. (res(law)%chi2 > res(chosen)%chi2)) then
+                chosen = -1
+                return
+            end if
+            call add_note(res(chosen), 'the ' // cal_law_name(law) // ' law is not compared: its fit failed ' // &
+                          'where it fits the data worse (sum of squares ' // fmt_short(res(law)%chi2) // ' > ' // &
+                          fmt_short(res(chosen)%chi2) // ')')
+        end do
         amin = res(chosen)%aic
         wsum = 0.0_wp
         second = -1

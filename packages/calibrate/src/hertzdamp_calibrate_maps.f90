@@ -11,7 +11,8 @@
 !> - method `fit`: the exact derivative of the library's machine-precision approximant,
 !>   from the core (hertzdamp_fit_forward_deriv: its piecewise polynomials differentiated
 !>   and composed with the change of variable of each map, the tsuji closed forms
-!>   differentiated analytically); value and derivative belong to one function;
+!>   differentiated analytically); value and derivative belong to one function; beyond
+!>   the fitted maps (e < 1e-5, the force end beyond the fit's alpha) as with `rk45`;
 !> - method `rk45` (for checking): differences of the reference integrator, central
 !>   with steps h = 1e-4 max(alpha, 1e-2) and h/2 and Richardson extrapolation
 !>   (one-sided near a limit of the law); the optimum of a fit does not depend on
@@ -21,7 +22,7 @@
 module hertzdamp_calibrate_maps
     use hertzdamp_kinds, only: hertzdamp_rk
     use hertzdamp_status, only: HD_OK, HD_NO_REBOUND, HD_BAD_END, HD_BAD_ALPHA, &
-                                HD_END_OVERLAP, HD_END_FORCE, HD_BAD_ARGUMENT
+                                HD_END_OVERLAP, HD_END_FORCE, HD_BAD_ARGUMENT, HD_OUTSIDE_VALIDITY
     use hertzdamp_methods, only: HD_METHOD_FIT, HD_METHOD_RK45, hertzdamp_forward_alpha
     use hertzdamp_rk45, only: hertzdamp_collision, hertzdamp_rk45_default_tol
     use hertzdamp_laws, only: CAL_LAW_LINEAR => HD_DAMPING_LINEAR, CAL_LAW_TSUJI => HD_DAMPING_TSUJI, &
@@ -56,10 +57,13 @@ contains
     end function cal_law_supported
 
     !> e, tau_c and their derivatives in alpha for one law, contact end and method.
-    !> status HD_OK; HD_NO_REBOUND (overlap, alpha >= alpha_c of the law), the fit's
-    !> HD_OUTSIDE_VALIDITY (e < 1e-5) and every other failure give zero outputs.
-    !> tol: rk45 tolerance (default 1e-13).
-    pure elemental subroutine cal_forward(law, iend, method, alpha, e, tau_c, de, dtau, status, tol)
+    !> With method fit, alpha beyond the fitted maps (e < 1e-5, or the force end beyond
+    !> the fit's alpha) is computed as with method rk45, unless `beyond` is false (then
+    !> HD_OUTSIDE_VALIDITY: a fit keeps its measurements that lie inside the maps there,
+    !> and does not pay for integrations where no measurement is).  status HD_OK;
+    !> HD_NO_REBOUND (overlap, alpha >= alpha_c of the law) and every other failure (the
+    !> reference integrator's too) give zero outputs.  tol: rk45 tolerance (default 1e-13).
+    pure elemental subroutine cal_forward(law, iend, method, alpha, e, tau_c, de, dtau, status, tol, beyond)
         integer, intent(in) :: law            !! CAL_LAW_*
         integer, intent(in) :: iend           !! HD_END_OVERLAP or HD_END_FORCE
         integer, intent(in) :: method         !! HD_METHOD_FIT or HD_METHOD_RK45
@@ -70,7 +74,9 @@ contains
         real(wp), intent(out) :: dtau         !! dtau_c/dalpha
         integer, intent(out) :: status        !! HD_OK or the failure
         real(wp), intent(in), optional :: tol !! rk45 tolerance
+        logical, intent(in), optional :: beyond !! method fit: rk45 beyond the fitted maps (default true)
         real(wp) :: tol_
+        logical :: beyond_
         e = 0.0_wp
         tau_c = 0.0_wp
         de = 0.0_wp
@@ -87,8 +93,15 @@ contains
         end if
         tol_ = hertzdamp_rk45_default_tol
         if (present(tol)) tol_ = tol
+        beyond_ = .true.
+        if (present(beyond)) beyond_ = beyond
         if (method == HD_METHOD_FIT) then
             call hertzdamp_fit_forward_deriv(alpha, iend, law, e, tau_c, de, dtau, status)
+            ! beyond the fitted maps (e < 1e-5, force alpha beyond the fit's range): the
+            ! reference integrator, so that data there are fitted as well, not avoided
+            if (status == HD_OUTSIDE_VALIDITY .and. beyond_) then
+                call rk45_differences(law, alpha, iend, tol_, e, tau_c, de, dtau, status)
+            end if
         else
             call rk45_differences(law, alpha, iend, tol_, e, tau_c, de, dtau, status)
         end if

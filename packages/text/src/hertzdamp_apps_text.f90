@@ -1,6 +1,8 @@
 !> Text helpers shared by the applications (the deck reader of `check`, the scene
 !> reader, the calibration) and the command-line program: ASCII case conversion, an
-!> integer as text, and the one short number format of messages and figures for people.
+!> integer as text, the one short number format of messages (fmt_short) and the
+!> number formats of every text output for people (fmt_text in tables, fmt_text_short
+!> for single values and prose), in this one place.
 module hertzdamp_apps_text
     use hertzdamp_kinds, only: hertzdamp_rk
     use, intrinsic :: ieee_arithmetic, only: ieee_is_finite, ieee_is_nan
@@ -11,7 +13,7 @@ module hertzdamp_apps_text
     !> `digits` of fmt_short that always read back as the same double (the shortest such form).
     integer, parameter, public :: ROUND_TRIP = 17
 
-    public :: lower, upper, itoa, fmt_short
+    public :: lower, upper, itoa, fmt_short, fmt_text, fmt_text_short, is_whole_text
 
 contains
 
@@ -79,6 +81,74 @@ contains
         s = trim(adjustl(buf))
         call tidy(s)
     end function fmt_short
+
+    !> A number in a table of the text output: a whole number below 1e7 as an integer
+    !> (is_whole_text: 20, 0, -3), otherwise 7 significant digits with a lower-case
+    !> exponent with sign and two digits (three beyond 1e99 and below 1e-99):
+    !> 9.965498e+08, -1.080782e-02; 'inf', '-inf' or 'nan' if not finite.
+    pure function fmt_text(x) result(s)
+        real(wp), intent(in) :: x   !! the number
+        character(len=:), allocatable :: s
+        character(len=24) :: buf
+        integer :: n
+        if (.not. ieee_is_finite(x)) then
+            s = fmt_short(x)
+            return
+        else if (is_whole_text(x)) then
+            s = itoa(nint(x))
+            return
+        end if
+        write (buf, '(es16.6e3)') x
+        s = trim(adjustl(buf))
+        n = len(s)
+        ! d.ddddddE+0dd -> d.dddddde+dd
+        if (s(n - 2:n - 2) == '0') s = s(1:n - 3) // s(n - 1:n)
+        s = lower_e(s)
+    end function fmt_text
+
+    !> A single number for people (a column that never changes, a value in a
+    !> sentence of the text output): a whole number below 1e7 as an integer (20, not
+    !> 2.000000E+001), otherwise the shortest decimal of at most `digits` (default 7)
+    !> significant digits that reads back as `x` or its rounding: plain from 1e-4 to
+    !> below 1e6 (0.9, 0.0005), else with the exponent of fmt_text (9.965498e+08,
+    !> 1e-05).  'inf', '-inf' or 'nan' if not finite.
+    pure function fmt_text_short(x, digits) result(s)
+        real(wp), intent(in) :: x                !! the number
+        integer, intent(in), optional :: digits  !! at most this many significant digits (default 7)
+        character(len=:), allocatable :: s
+        integer :: ie, ex, ios, d
+        d = 7
+        if (present(digits)) d = digits
+        if (is_whole_text(x)) then
+            s = itoa(nint(x))
+            return
+        end if
+        s = fmt_short(x, d)
+        ie = index(s, 'e')
+        if (ie == 0) return
+        read (s(ie + 1:), *, iostat=ios) ex
+        if (ios /= 0) return
+        s = s(1:ie) // merge('-', '+', ex < 0) // repeat('0', merge(1, 0, abs(ex) < 10)) // itoa(abs(ex))
+    end function fmt_text_short
+
+    !> True when the text output writes `x` as an integer: a whole number below 1e7 in
+    !> magnitude (at most 7 digits, as the other numbers of the text output).
+    pure logical function is_whole_text(x)
+        real(wp), intent(in) :: x   !! the number
+        is_whole_text = .false.
+        if (.not. ieee_is_finite(x)) return
+        is_whole_text = abs(x) < 1.0e7_wp .and. x == aint(x)
+    end function is_whole_text
+
+    !> 'E' -> 'e' (the exponent letter of a number).
+    pure function lower_e(s) result(r)
+        character(len=*), intent(in) :: s
+        character(len=len(s)) :: r
+        integer :: i
+        r = s
+        i = index(r, 'E')
+        if (i > 0) r(i:i) = 'e'
+    end function lower_e
 
     !> 1.500e+000 -> 1.5, 2.000e+011 -> 2e11, 5.000e-001 -> 0.5.
     pure subroutine tidy(s)

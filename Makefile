@@ -8,7 +8,7 @@ PREFIX ?= $(CURDIR)/_install
 VENV := .venv
 FPM := $(VENV)/bin/fpm
 PYTHON ?= python3
-APT_PKGS := gfortran liblapack-dev libblas-dev libgsl-dev gnuplot-nox cmake pkg-config
+APT_PKGS := gfortran liblapack-dev libblas-dev libgsl-dev gnuplot-nox cmake pkg-config lammps-examples liggghts-doc
 SUDO := $(shell [ "$$(id -u)" = 0 ] || echo sudo)
 
 # Optimised build of the library and the program (what users run and benchmark).

@@ -169,14 +169,17 @@ contains
         type(cli_args), intent(out) :: args
         logical, intent(in), optional :: allow_positional
         type(cli_line), allocatable, intent(out), optional :: positionals(:)
-        integer :: i, n, j
+        integer :: i, n, j, np
         character(len=:), allocatable :: a, v
+        type(cli_line), allocatable :: pos(:)
         logical :: pos_ok
         pos_ok = .false.
         if (present(allow_positional)) pos_ok = allow_positional
         allocate (args%opts(0))
-        if (present(positionals)) allocate (positionals(0))
         n = command_argument_count()
+        ! positionals collected in an array of the argument count (linear in the arguments)
+        allocate (pos(max(0, n - first + 1)))
+        np = 0
         i = first
         do while (i <= n)
             a = get_arg(i)
@@ -204,7 +207,8 @@ contains
                 end if
             end if
             if (present(positionals)) then
-                positionals = [positionals, cli_line(a)]
+                np = np + 1
+                pos(np)%s = a
             else if (pos_ok .and. .not. allocated(args%positional)) then
                 args%positional = a
             else
@@ -212,6 +216,7 @@ contains
             end if
             i = i + 1
         end do
+        if (present(positionals)) positionals = pos(1:np)
     end subroutine parse_args
 
     subroutine unknown(a, valued, flags)

@@ -432,23 +432,33 @@ module hertzdamp_cli_help
         'cannot be evaluated at the start (the message names why).'
 
     character(len=*), parameter :: check = &
-        'Usage: hertzdamp check ENGINE DECK... --radius R --density RHO --velocity U [options]' // nl // &
+        'Usage: hertzdamp check ENGINE FILE... [--velocity U] [--e E] [--release R] [--format F]' // nl // &
+        '       hertzdamp check ENGINE DECK... --radius R --density RHO --velocity U [options]' // nl // &
         '       hertzdamp check --table [--format F]' // nl // &
         '' // nl // &
         'What a peer DEM engine does with its Hertz contact parameters: the damping law and' // nl // &
         'formula it applies (with its source file), the restitution e and contact time t_c it' // nl // &
-        'achieves at each impact speed, the error against the e you want, the time step for' // nl // &
-        'N steps per contact against the elastic Hertz time and the engine''s own estimate,' // nl // &
-        'warnings (no rebound, attractive force before separation) and the value of the' // nl // &
-        'engine''s parameter that gives the e you want.  Formulas: doc/peers.md.' // nl // &
+        'achieves at each impact speed, what its own integrator gives at the deck''s time step,' // nl // &
+        'and the value of the engine''s parameter that gives the e you want.  doc/peers.md.' // nl // &
         '' // nl // &
-        'ENGINE and DECK, in the engine''s own terms (one quoted argument or several words):' // nl // &
+        'FILE...: a whole deck (lammps, liggghts: input scripts with include, variables, $x,' // nl // &
+        '${name}, $(expr) and & continuation; mfix: mfix.dat or .mfx; yade: a Python script),' // nl // &
+        'read the way the engine reads it.  Every type pair and every type against every wall' // nl // &
+        'is a row per speed; what cannot be interpreted is listed with file:line.  Columns:' // nl // &
+        'pair, velocity, e_target (the deck''s restitution input, or --e), e_model (the' // nl // &
+        'continuous model), e_host and e_spread (mean and standard deviation over the onset' // nl // &
+        'phase with the engine''s integrator at its time step), steps_per_contact (t_c/dt),' // nl // &
+        't_c, dt_verdict (ok, coarse, unresolved, unchecked), corrected (the parameter that' // nl // &
+        'makes e_host equal e_target), status.  Speeds in the deck''s own units (default 1).' // nl // &
+        '' // nl // &
+        'DECK...: one contact in the engine''s own terms (one quoted argument or several words):' // nl // &
         '  lammps      the arguments of pair_coeff for pair_style granular, e.g.' // nl // &
         '              "hertz/material 1e8 0.5 0.3 tangential linear_nohistory 0 0 damping tsuji"' // nl // &
         '              (normal hertz kn eta_n0 | hertz/material E eta_n0 nu; damping velocity |' // nl // &
         '              mass_velocity | viscoelastic (default) | tsuji | coeff_restitution;' // nl // &
-        '              limit_damping); a leading "pair_coeff I J" is skipped, and' // nl // &
-        '              "fix ID group wall/gran granular ... zplane lo hi" checks a flat wall' // nl // &
+        '              limit_damping); a leading "pair_coeff I J" is skipped;' // nl // &
+        '              "fix ID group wall/gran granular ... zplane lo hi" checks a flat wall;' // nl // &
+        '              "gran/hertz/history Kn Kt gamma_n gamma_t xmu dampflag" the classic style' // nl // &
         '  liggghts    model=hertz|hertz/stiffness limitForce=on|off youngsModulus=Y[,Y2]' // nl // &
         '              poissonsRatio=NU[,NU2] coefficientRestitution=E (hertz) kn= gamman=' // nl // &
         '              (hertz/stiffness)' // nl // &
@@ -456,42 +466,47 @@ module hertzdamp_cli_help
         '              | setEffectiveElasticModulus=E | setDensity=RHO; species=' // nl // &
         '              HertzianViscoelasticSpecies (Beta 2015): setElasticModulus=E' // nl // &
         '              setDissipation=d | setStiffnessAndRestitutionCoefficient=E,e,mass' // nl // &
-        '  yade        young=E[,E2] poisson=NU[,NU2] en=e | betan=b density=RHO' // nl // &
-        '              (with --wall: shape=Wall|Facet hertzian=True|False)' // nl // &
+        '  yade        young=E[,E2] poisson=NU[,NU2] en=e [vn=v] | betan=b density=RHO' // nl // &
+        '              (with --wall: shape=Wall|Facet|Box hertzian=True|False)' // nl // &
         '  mfix        DES_COLL_MODEL=HERTZIAN E_YOUNG=E[,E2] V_POISSON=NU[,NU2] DES_EN_INPUT=e' // nl // &
         '              (with --wall: EW_YOUNG VW_POISSON DES_EN_WALL_INPUT) D_P0= RO_S0=' // nl // &
-        '              DTSOLID_FACTOR= (keys case-insensitive, KEY(1)= KEY(2)= accepted)' // nl // &
+        '              DTSOLID_FACTOR= (keys case-insensitive; KEY(1)= KEY(2)= per phase,' // nl // &
+        '              DES_EN_INPUT(k) in MFiX''s pair order 1-1, 1-2, 2-2)' // nl // &
         '  chrono      SetYoungModulus=E[,E2] SetPoissonRatio=NU[,NU2] SetRestitution=e[,e2]' // nl // &
         '              | UseMaterialProperties=false SetKn=kn SetGn=gn;' // nl // &
         '              SetCollisionSystemType=BULLET|MULTICORE; wallMass=M (with --wall)' // nl // &
         '' // nl // &
-        '  --radius R       particle radius [m] (body 1)' // nl // &
+        '  --radius R       particle radius [m] (body 1; DECK only)' // nl // &
         '  --radius2 R2     radius of body 2 [m] (default: R)' // nl // &
         '  --density RHO    particle density [kg m^-3] (body 1)' // nl // &
         '  --density2 RHO2  density of body 2 (default: RHO)' // nl // &
         '  --wall           body 2 is a flat wall (LIGGGHTS, Yade, MFiX, Chrono: its' // nl // &
         '                   modulus is the second value of the modulus keys)' // nl // &
-        '  --velocity U     impact speeds [m/s]: 0.1,1,5 or A0:A1:N or A0:A1:logN' // nl // &
+        '  --velocity U     impact speeds: 0.1,1,5 or A0:A1:N or A0:A1:logN ([m/s]; a deck: its' // nl // &
+        '                   own velocity unit, default 1)' // nl // &
         '  --e E            the restitution coefficient you want (default: the one in the' // nl // &
         '                   deck, where the engine takes one)' // nl // &
-        '  --steps N        time steps per contact for the time-step advice (default 10)' // nl // &
+        '  --steps N        time steps per contact for the time-step advice (default 10; DECK)' // nl // &
         '  --release R      LAMMPS formulas of 2021 (29 Sep 2021, Debian 12), 2023' // nl // &
-        '                   (28 Mar 2023 - 29 Aug 2024) or current (default)' // nl // &
+        '                   (28 Mar 2023 - 29 Aug 2024) or current (default); Yade 2022' // nl // &
+        '                   (2020.01a - 2022.01a), 2023 (2023.02a, Debian 12) or current' // nl // &
+        '                   (2024.02a and later, default)' // nl // &
         '  --format F       text (default), csv or json' // nl // &
         '  --progress       progress on stderr (default: on a terminal, after 2 s)' // nl // &
-        '  --quiet          no warnings about implausible R, RHO or U (as invert --help)' // nl // &
+        '  --quiet          no warnings about implausible R, RHO or U (as invert --help;' // nl // &
+        '                   deck files: U only, and only for a deck in SI units)' // nl // &
         '  --table          the table of every engine''s formula and the e it achieves for' // nl // &
         '                   the targets 0.1 ... 0.9 (markdown; doc/peers.md)' // nl // &
         '' // nl // &
-        'Columns: velocity, alpha, e, e_error (e/e_target - 1), t_c [s], t_attractive (overlap' // nl // &
-        'end: when the total force turns attractive) [s], dt_max = t_c/N [s], t_hertz (elastic' // nl // &
-        'Hertz time) [s], t_peer (the engine''s own estimate) [s], corrected (the engine''s' // nl // &
-        'parameter for the target e at this speed), method (fit: the library''s fitted maps;' // nl // &
-        'rk45: the reference integrator, beyond their range), status (ok, no-rebound,' // nl // &
-        'out-of-range, outside-validity, failed).  Empty (text: -): does not apply, or beyond' // nl // &
-        'double precision.  Exit 0 when every speed has a result; else the table, one line on' // nl // &
-        'stderr and exit 3 (4: a computation failed); no speed with a result: exit 3 or 4, no' // nl // &
-        'output.'
+        'DECK columns: velocity, alpha, e, e_error (e/e_target - 1), t_c [s], t_attractive' // nl // &
+        '(overlap end: when the total force turns attractive) [s], dt_max = t_c/N [s], t_hertz' // nl // &
+        '(elastic Hertz time) [s], t_peer (the engine''s own estimate) [s], corrected (the' // nl // &
+        'engine''s parameter for the target e at this speed), method (fit: the library''s' // nl // &
+        'fitted maps; rk45: the reference integrator, beyond their range), status (ok,' // nl // &
+        'no-rebound, out-of-range, outside-validity, failed).  Empty (text: -): does not' // nl // &
+        'apply, or beyond double precision.  Exit 0 when every row has a result; else the' // nl // &
+        'table, one line on stderr and exit 3 (4: a computation failed); no row with a' // nl // &
+        'result: exit 3 or 4, no output.  A deck whose contacts cannot be read: exit 2.'
 
 contains
 

@@ -8,7 +8,7 @@
 !>     power   := primary [ "^" unary ]          (right-associative)
 !>     primary := number | name | func "(" expr { "," expr } ")" | "(" expr ")"
 !>
-!> with the functions sqrt, ln, abs, max, min, beta, P6, the constants pi and eps_d,
+!> with the functions sqrt, ln, abs, max, min, beta, P6, thornton, Vstar, the constants pi and eps_d,
 !> the derived name tstar = (m/(k*sqrt(u)))^(2/5) and any names bound by the caller.
 module hertzdamp_test_expr
     use hertzdamp_kinds, only: hertzdamp_rk
@@ -270,10 +270,64 @@ contains
             x = x * a(1) + 11.087_wp
             x = x * a(1) - 4.2783_wp
             x = x * a(1) + 1.2728_wp
+        case ('thornton')
+            ! sqrt(1/(1 - (1+e)^2 exp(a)) - 1), a = sum_i h_i e^i (Thornton et al. 2013, (B6)-(B7);
+            ! doc/peers.md section 0), written as a plain power sum
+            x = thornton(a(1))
+        case ('Vstar')
+            ! the V >= 0 with Pade(V) = e (doc/peers.md section 0): Newton from V = 0.5 as Yade's
+            ! getVstar, on a power-sum Pade and its quotient-rule derivative
+            x = vstar(a(1))
         case default
             call bad(p, 'unknown function ' // name)
         end select
     end function call_function
+
+    real(wp) function thornton(e) result(x)
+        real(wp), intent(in) :: e
+        real(wp), parameter :: h(10) = [-6.918798_wp, -16.41105_wp, 146.8049_wp, -796.4559_wp, 2928.711_wp, &
+                                        -7206.864_wp, 11494.29_wp, -11342.18_wp, 6276.757_wp, -1489.915_wp]
+        real(wp) :: a
+        integer :: i
+        if (e == 1.0_wp) then
+            x = 0.0_wp
+            return
+        end if
+        a = 0.0_wp
+        do i = 1, 10
+            a = a + h(i) * e**i
+        end do
+        x = sqrt(1.0_wp / (1.0_wp - (1.0_wp + e)**2 * exp(a)) - 1.0_wp)
+    end function thornton
+
+    real(wp) function vstar(e) result(v)
+        real(wp), intent(in) :: e
+        real(wp), parameter :: ca(0:3) = [1.0_wp, 1.07232_wp, 0.574198_wp, 0.141552_wp]
+        real(wp), parameter :: cb(0:6) = [1.0_wp, 1.07232_wp, 1.72765_wp, 1.37842_wp, 1.19449_wp, 0.467273_wp, &
+                                          0.235585_wp]
+        real(wp) :: pa, pb, da, db, step
+        integer :: it, i
+        v = 0.0_wp
+        if (e == 1.0_wp) return
+        v = 0.5_wp
+        do it = 1, 200
+            pa = 0.0_wp
+            da = 0.0_wp
+            do i = 0, 3
+                pa = pa + ca(i) * v**i
+                if (i > 0) da = da + i * ca(i) * v**(i - 1)
+            end do
+            pb = 0.0_wp
+            db = 0.0_wp
+            do i = 0, 6
+                pb = pb + cb(i) * v**i
+                if (i > 0) db = db + i * cb(i) * v**(i - 1)
+            end do
+            step = (pa / pb - e) / ((da * pb - pa * db) / pb**2)
+            v = v - step
+            if (abs(step) <= 1.0e-15_wp * max(1.0_wp, abs(v))) exit
+        end do
+    end function vstar
 
     recursive function lookup(p, name, v) result(x)
         type(parser), intent(inout) :: p

@@ -42,6 +42,12 @@ program test_peers
         character(len=:), allocatable :: label
     end type case_t
 
+    !> What a random case draws: bodies, materials and the speed.
+    type :: draw
+        real(wp) :: r1, r2, m1, m, r, u, ymod, nu, y2, nu2
+        logical :: wall, limit
+    end type draw
+
     type(test_suite) :: s
     integer :: seed = 12345
     logical :: reached(64)
@@ -58,6 +64,7 @@ program test_peers
     call test_overdamped()
     call test_extremes()
     call test_bad_decks()
+    call test_yade_pade()
     call s%finish()
 
 contains
@@ -141,9 +148,9 @@ contains
         character(len=*), intent(in) :: id
         type(case_t), intent(out) :: c
         real(wp), intent(in), optional :: coef
-        real(wp) :: r1, r2, rho1, rho2, m1, m2, m, r, u, ymod, nu, y2, nu2, es, kn, x, x2, ref, mw
-        logical :: wall, hertz, limit
-        character(len=:), allocatable :: rel, damp
+        real(wp) :: r1, r2, rho1, rho2, m1, m2, m, r, u, ymod, nu, y2, nu2
+        logical :: wall, limit
+        type(draw) :: d
         allocate (c%tok(0))
         c%label = id
         r1 = log_uniform(1.0e-4_wp, 1.0e-1_wp)
@@ -170,193 +177,367 @@ contains
             r = r1 * r2 / (r1 + r2)
         end if
         call c%vars%set('u', u)
-        if (index(id, 'lammps-') == 1) then
-            ! doc/peers.md section 1: k = kn sqrt(R); hertz/material kn = (4/3) E/(2(1-nu^2)),
-            ! the 2021 wall (4/3) E/(2(1-nu))
-            c%peer = PEER_LAMMPS
-            c%mat%wall = .false.
-            rel = id(8:index(id(8:), '-') + 6)
-            damp = id(9 + len(rel):index(id, '-', back=.true.) - 1)
-            select case (rel)
-            case ('2021'); c%release = LAMMPS_2021
-            case ('2023')
-                x = rnd()
-                c%release = merge(LAMMPS_2023, LAMMPS_CURRENT, x < 0.5_wp .or. damp == 'tsuji')
-            case ('2024'); c%release = merge(LAMMPS_2023, LAMMPS_CURRENT, rnd() < 0.5_wp)
-            case default; c%release = LAMMPS_CURRENT
-            end select
-            if (damp == 'tsuji' .or. damp == 'coeff_restitution') then
-                x = 0.01_wp + 0.99_wp * rnd()
-                if (present(coef)) x = coef
-                call c%vars%set('e', x)
-            else
-                x = log_uniform(1.0e-6_wp, 1.0e3_wp)
-                if (present(coef)) x = coef
-                call c%vars%set('eta_n0', x)
-            end if
-            hertz = rnd() < 0.5_wp
-            if (wall) call add(c, 'fix 1 all wall/gran granular')
-            x2 = rnd()
-            if (.not. wall .and. x2 < 0.5_wp) call add(c, 'pair_coeff * *')
-            if (hertz) then
-                kn = log_uniform(1.0e5_wp, 1.0e11_wp)
-                call add(c, 'hertz ' // num(kn) // ' ' // num(x))
-                c%k = kn * sqrt(r)
-            else
-                call add(c, 'hertz/material ' // num(ymod) // ' ' // num(x) // ' ' // num(nu))
-                if (wall .and. c%release == LAMMPS_2021) then
-                    c%k = (4.0_wp / 3.0_wp) * ymod / (2.0_wp * (1.0_wp - nu)) * sqrt(r)
-                else
-                    c%k = (4.0_wp / 3.0_wp) * ymod / (2.0_wp * (1.0_wp - nu**2)) * sqrt(r)
-                end if
-            end if
-            if (rnd() < 0.7_wp) call add(c, 'tangential linear_nohistory 0 0.5')
-            if (rnd() < 0.3_wp) call add(c, 'rolling sds 1e3 10 0.1 twisting marshall')
-            x2 = rnd()
-            if (damp /= 'viscoelastic' .or. x2 < 0.5_wp) call add(c, 'damping ' // damp)
-            if (limit) call add(c, 'limit_damping')
-            if (wall) call add(c, 'zplane 0 NULL')
+        d = draw(r1, r2, m1, m, r, u, ymod, nu, y2, nu2, wall, limit)
+        if (index(id, 'lammps-hertz_history-') == 1) then
+            call case_lammps_classic(d, c, coef)
+        else if (index(id, 'lammps-') == 1) then
+            call case_lammps(id, d, c, coef)
         else if (index(id, 'liggghts-') == 1) then
-            ! section 2: k = (4/3) Y* sqrt(R); hertz/stiffness k = kn sqrt(R)
-            c%peer = PEER_LIGGGHTS
-            call add(c, 'limitForce=' // merge('on ', 'off', limit))
-            if (index(id, 'stiffness') > 0) then
-                kn = log_uniform(1.0e5_wp, 1.0e11_wp)
-                x = log_uniform(1.0e-3_wp, 1.0e6_wp)
-                if (present(coef)) x = coef
-                call add(c, 'model=hertz/stiffness kn=' // num(kn) // ' gamman=' // num(x))
-                call c%vars%set('gamma_n', x)
-                c%k = kn * sqrt(r)
-            else
-                x = 0.06_wp + 0.94_wp * rnd()
-                if (present(coef)) x = coef
-                if (rnd() < 0.5_wp) call add(c, 'model=hertz')
-                call add(c, 'youngsModulus=' // num(ymod) // ',' // num(y2) // ' poissonsRatio=' // num(nu) // ',' // &
-                         num(nu2) // ' coefficientRestitution=' // num(x) // ' tangential=history')
-                call c%vars%set('e', x)
-                es = 1.0_wp / ((1.0_wp - nu**2) / ymod + (1.0_wp - nu2**2) / y2)
-                c%k = (4.0_wp / 3.0_wp) * es * sqrt(r)
-            end if
+            call case_liggghts(id, d, c, coef)
         else if (index(id, 'mercurydpm-') == 1) then
-            ! section 3a: k = (4/3) E_eff sqrt(R)
-            c%peer = PEER_MERCURYDPM
-            c%k = (4.0_wp / 3.0_wp) * ymod * sqrt(r)
-            if (index(id, 'restitution') > 0) then
-                x = rnd()
-                if (present(coef)) x = coef
-                call add(c, 'setEffectiveElasticModulusAndRestitutionCoefficient=' // num(ymod) // ',' // num(x))
-                call c%vars%set('e', x)
-            else
-                x = 3.0_wp * rnd()
-                if (present(coef)) x = coef
-                call add(c, 'setEffectiveElasticModulus=' // num(ymod) // ' setDissipation=' // num(x))
-                call c%vars%set('g', x)
-            end if
+            call case_mercury(id, d, c, coef)
         else if (index(id, 'mercurydpm2015-') == 1) then
-            ! section 3b: k = (4/3) sqrt(2) E sqrt(R)
-            c%peer = PEER_MERCURYDPM
-            c%k = (4.0_wp / 3.0_wp) * sqrt(2.0_wp) * ymod * sqrt(r)
-            call add(c, 'species=HertzianViscoelasticSpecies')
-            if (index(id, 'stiffness') > 0) then
-                x = 0.01_wp + 0.99_wp * rnd()
-                if (present(coef)) x = coef
-                call add(c, 'setStiffnessAndRestitutionCoefficient=' // num(ymod) // ',' // num(x) // ',' // num(m1))
-                call c%vars%set('e', x)
-                call c%vars%set('mass_arg', m1)
-                call c%vars%set('E', ymod)
-            else
-                x = log_uniform(1.0e-8_wp, 1.0e2_wp)
-                if (present(coef)) x = coef
-                call add(c, 'setElasticModulus=' // num(ymod) // ' setDissipation=' // num(x))
-                call c%vars%set('d', x)
-            end if
-        else if (index(id, 'yade-') == 1) then
-            ! section 4: k = (4/3) E* sqrt(R); walls: R = refR1 r/(refR1 + r), refR1 = r (Wall),
-            ! 2r (Facet), 1e8 r (hertzian=True)
-            c%peer = PEER_YADE
-            call add(c, 'young=' // num(ymod) // ',' // num(y2) // ' poisson=' // num(nu) // ',' // num(nu2))
-            es = 1.0_wp / ((1.0_wp - nu**2) / ymod + (1.0_wp - nu2**2) / y2)
-            if (wall) then
-                x = rnd()
-                if (x < 0.33_wp) then
-                    ref = r1
-                    call add(c, 'shape=Wall')
-                else if (x < 0.66_wp) then
-                    ref = 2.0_wp * r1
-                    call add(c, 'shape=Facet')
-                else
-                    ref = 1.0e8_wp * r1
-                    call add(c, 'hertzian=True')
-                end if
-                r = ref * r1 / (ref + r1)
-            end if
-            c%k = (4.0_wp / 3.0_wp) * es * sqrt(r)
-            if (index(id, 'betan') > 0) then
-                x = rnd()
-                if (present(coef)) x = coef
-                call add(c, 'betan=' // num(x))
-                call c%vars%set('betan', x)
-            else
-                x = 0.001_wp + 0.999_wp * rnd()
-                if (present(coef)) x = coef
-                call add(c, 'en=' // num(x))
-                call c%vars%set('e', x)
-            end if
+            call case_mercury2015(id, d, c, coef)
+        else if (index(id, 'yade') == 1) then
+            call case_yade(id, d, c, coef)
         else if (index(id, 'mfix-') == 1) then
-            ! section 5: k = HERT_KN = (4/3) sqrt(R) E*
-            c%peer = PEER_MFIX
-            x = rnd()
-            if (rnd() < 0.1_wp) x = 0.0_wp
-            if (present(coef)) x = coef
-            call add(c, 'des_coll_model=''HERTZIAN'' E_YOUNG(1)=' // num(ymod) // ' V_POISSON=' // num(nu))
-            if (wall) then
-                call add(c, 'EW_YOUNG=' // num(y2) // ' VW_POISSON=' // num(nu2) // ' DES_EN_WALL_INPUT=' // num(x))
-            else
-                call add(c, 'E_YOUNG(2)=' // num(y2) // ' DES_EN_INPUT=' // num(x))
-                nu2 = nu
-            end if
-            es = 1.0_wp / ((1.0_wp - nu**2) / ymod + (1.0_wp - nu2**2) / y2)
-            c%k = (4.0_wp / 3.0_wp) * sqrt(r) * es
-            call c%vars%set('e', x)
+            call case_mfix(d, c, coef)
         else if (index(id, 'chrono-') == 1) then
-            ! section 6: material k = (4/3) E* sqrt(R) (E*, e single precision), kn/gn: k = kn R;
-            ! BULLET: R = 0.1; wall body of mass M_w: gamma times sqrt(M_w/(m + M_w))
-            c%peer = PEER_CHRONO
-            if (rnd() < 0.5_wp) then
-                call add(c, 'SetCollisionSystemType=MULTICORE')
+            call case_chrono(id, d, c, coef)
+        end if
+    end subroutine make_case
+    subroutine case_lammps_classic(d, c, coef)
+        type(draw), intent(in) :: d
+        type(case_t), intent(inout) :: c
+        real(wp), intent(in), optional :: coef
+        real(wp) :: m, r, kn, x
+        logical :: wall, limit
+        m = d%m
+        r = d%r
+        wall = d%wall
+        limit = d%limit
+        ! section 1, classic style: k = Kn sqrt(R), d = gamma_n m sqrt(R)
+        c%peer = PEER_LAMMPS
+        c%mat%wall = .false.
+        c%release = LAMMPS_2021 + int(2.999_wp * rnd())   ! 2021, 2023 or current
+        kn = log_uniform(1.0e5_wp, 1.0e11_wp)
+        x = log_uniform(1.0e-6_wp, 1.0e3_wp)
+        if (present(coef)) x = coef
+        call c%vars%set('gamma_n', x)
+        if (wall) then
+            call add(c, 'fix 1 all wall/gran hertz/history ' // num(kn) // ' NULL ' // num(x) // ' NULL 0.5 1')
+            if (limit) call add(c, 'limit_damping')
+            call add(c, 'zplane 0 NULL')
+        else
+            call add(c, 'gran/hertz/history ' // num(kn) // ' NULL ' // num(x) // ' 0.5 0.4 1')
+            if (limit) call add(c, 'limit_damping')
+        end if
+        c%k = kn * sqrt(r)
+        call c%vars%set('m', m)
+        call c%vars%set('R', r)
+        call c%vars%set('k', c%k)
+    end subroutine case_lammps_classic
+
+    subroutine case_lammps(id, d, c, coef)
+        character(len=*), intent(in) :: id
+        type(draw), intent(in) :: d
+        type(case_t), intent(inout) :: c
+        real(wp), intent(in), optional :: coef
+        real(wp) :: m, r, ymod, nu, kn, x, x2
+        logical :: wall, hertz, limit
+        character(len=:), allocatable :: rel, damp
+        m = d%m
+        r = d%r
+        ymod = d%ymod
+        nu = d%nu
+        wall = d%wall
+        limit = d%limit
+        ! doc/peers.md section 1: k = kn sqrt(R); hertz/material kn = (4/3) E/(2(1-nu^2)),
+        ! the 2021 wall (4/3) E/(2(1-nu))
+        c%peer = PEER_LAMMPS
+        c%mat%wall = .false.
+        rel = id(8:index(id(8:), '-') + 6)
+        damp = id(9 + len(rel):index(id, '-', back=.true.) - 1)
+        select case (rel)
+        case ('2021'); c%release = LAMMPS_2021
+        case ('2023')
+            x = rnd()
+            c%release = merge(LAMMPS_2023, LAMMPS_CURRENT, x < 0.5_wp .or. damp == 'tsuji')
+        case ('2024'); c%release = merge(LAMMPS_2023, LAMMPS_CURRENT, rnd() < 0.5_wp)
+        case default; c%release = LAMMPS_CURRENT
+        end select
+        if (damp == 'tsuji' .or. damp == 'coeff_restitution') then
+            x = 0.01_wp + 0.99_wp * rnd()
+            if (present(coef)) x = coef
+            call c%vars%set('e', x)
+        else
+            x = log_uniform(1.0e-6_wp, 1.0e3_wp)
+            if (present(coef)) x = coef
+            call c%vars%set('eta_n0', x)
+        end if
+        hertz = rnd() < 0.5_wp
+        if (wall) call add(c, 'fix 1 all wall/gran granular')
+        x2 = rnd()
+        if (.not. wall .and. x2 < 0.5_wp) call add(c, 'pair_coeff * *')
+        if (hertz) then
+            kn = log_uniform(1.0e5_wp, 1.0e11_wp)
+            call add(c, 'hertz ' // num(kn) // ' ' // num(x))
+            c%k = kn * sqrt(r)
+        else
+            call add(c, 'hertz/material ' // num(ymod) // ' ' // num(x) // ' ' // num(nu))
+            if (wall .and. c%release == LAMMPS_2021) then
+                c%k = (4.0_wp / 3.0_wp) * ymod / (2.0_wp * (1.0_wp - nu)) * sqrt(r)
             else
-                call add(c, 'SetCollisionSystemType=BULLET')
-                r = 0.1_wp
+                c%k = (4.0_wp / 3.0_wp) * ymod / (2.0_wp * (1.0_wp - nu**2)) * sqrt(r)
             end if
-            if (wall) then
-                mw = log_uniform(1.0e-3_wp, 1.0e3_wp)
-                call add(c, 'wallMass=' // num(mw))
-                c%gfac = sqrt(mw / (m + mw))
-            end if
-            if (index(id, 'kn_gn') > 0) then
-                kn = log_uniform(1.0e5_wp, 1.0e11_wp)
-                x = log_uniform(1.0e-3_wp, 1.0e6_wp)
-                if (present(coef)) x = coef
-                call add(c, 'UseMaterialProperties=false SetKn=' // num(kn) // ' SetGn=' // num(x))
-                c%k = real(real(kn, real32), wp) * r   ! Chrono stores kn as a float
-                call c%vars%set('gn', real(real(x, real32), wp))
-                c%gfac = 1.0_wp
-                if (wall) c%gfac = mw / (m + mw)   ! d = gn m_damp R, m_damp = m M_w/(m + M_w)
+        end if
+        if (rnd() < 0.7_wp) call add(c, 'tangential linear_nohistory 0 0.5')
+        if (rnd() < 0.3_wp) call add(c, 'rolling sds 1e3 10 0.1 twisting marshall')
+        x2 = rnd()
+        if (damp /= 'viscoelastic' .or. x2 < 0.5_wp) call add(c, 'damping ' // damp)
+        if (limit) call add(c, 'limit_damping')
+        if (wall) call add(c, 'zplane 0 NULL')
+        call c%vars%set('m', m)
+        call c%vars%set('R', r)
+        call c%vars%set('k', c%k)
+    end subroutine case_lammps
+
+    subroutine case_liggghts(id, d, c, coef)
+        character(len=*), intent(in) :: id
+        type(draw), intent(in) :: d
+        type(case_t), intent(inout) :: c
+        real(wp), intent(in), optional :: coef
+        real(wp) :: m, r, ymod, nu, y2, nu2, es, kn, x
+        logical :: limit
+        m = d%m
+        r = d%r
+        ymod = d%ymod
+        nu = d%nu
+        y2 = d%y2
+        nu2 = d%nu2
+        limit = d%limit
+        ! section 2: k = (4/3) Y* sqrt(R); hertz/stiffness k = kn sqrt(R)
+        c%peer = PEER_LIGGGHTS
+        call add(c, 'limitForce=' // merge('on ', 'off', limit))
+        if (index(id, 'stiffness') > 0) then
+            kn = log_uniform(1.0e5_wp, 1.0e11_wp)
+            x = log_uniform(1.0e-3_wp, 1.0e6_wp)
+            if (present(coef)) x = coef
+            call add(c, 'model=hertz/stiffness kn=' // num(kn) // ' gamman=' // num(x))
+            call c%vars%set('gamma_n', x)
+            c%k = kn * sqrt(r)
+        else
+            x = 0.06_wp + 0.94_wp * rnd()
+            if (present(coef)) x = coef
+            if (rnd() < 0.5_wp) call add(c, 'model=hertz')
+            call add(c, 'youngsModulus=' // num(ymod) // ',' // num(y2) // ' poissonsRatio=' // num(nu) // ',' // &
+                     num(nu2) // ' coefficientRestitution=' // num(x) // ' tangential=history')
+            call c%vars%set('e', x)
+            es = 1.0_wp / ((1.0_wp - nu**2) / ymod + (1.0_wp - nu2**2) / y2)
+            c%k = (4.0_wp / 3.0_wp) * es * sqrt(r)
+        end if
+        call c%vars%set('m', m)
+        call c%vars%set('R', r)
+        call c%vars%set('k', c%k)
+    end subroutine case_liggghts
+
+    subroutine case_mercury(id, d, c, coef)
+        character(len=*), intent(in) :: id
+        type(draw), intent(in) :: d
+        type(case_t), intent(inout) :: c
+        real(wp), intent(in), optional :: coef
+        real(wp) :: m, r, ymod, x
+        m = d%m
+        r = d%r
+        ymod = d%ymod
+        ! section 3a: k = (4/3) E_eff sqrt(R)
+        c%peer = PEER_MERCURYDPM
+        c%k = (4.0_wp / 3.0_wp) * ymod * sqrt(r)
+        if (index(id, 'restitution') > 0) then
+            x = rnd()
+            if (present(coef)) x = coef
+            call add(c, 'setEffectiveElasticModulusAndRestitutionCoefficient=' // num(ymod) // ',' // num(x))
+            call c%vars%set('e', x)
+        else
+            x = 3.0_wp * rnd()
+            if (present(coef)) x = coef
+            call add(c, 'setEffectiveElasticModulus=' // num(ymod) // ' setDissipation=' // num(x))
+            call c%vars%set('g', x)
+        end if
+        call c%vars%set('m', m)
+        call c%vars%set('R', r)
+        call c%vars%set('k', c%k)
+    end subroutine case_mercury
+
+    subroutine case_mercury2015(id, d, c, coef)
+        character(len=*), intent(in) :: id
+        type(draw), intent(in) :: d
+        type(case_t), intent(inout) :: c
+        real(wp), intent(in), optional :: coef
+        real(wp) :: m1, m, r, ymod, x
+        m1 = d%m1
+        m = d%m
+        r = d%r
+        ymod = d%ymod
+        ! section 3b: k = (4/3) sqrt(2) E sqrt(R)
+        c%peer = PEER_MERCURYDPM
+        c%k = (4.0_wp / 3.0_wp) * sqrt(2.0_wp) * ymod * sqrt(r)
+        call add(c, 'species=HertzianViscoelasticSpecies')
+        if (index(id, 'stiffness') > 0) then
+            x = 0.01_wp + 0.99_wp * rnd()
+            if (present(coef)) x = coef
+            call add(c, 'setStiffnessAndRestitutionCoefficient=' // num(ymod) // ',' // num(x) // ',' // num(m1))
+            call c%vars%set('e', x)
+            call c%vars%set('mass_arg', m1)
+            call c%vars%set('E', ymod)
+        else
+            x = log_uniform(1.0e-8_wp, 1.0e2_wp)
+            if (present(coef)) x = coef
+            call add(c, 'setElasticModulus=' // num(ymod) // ' setDissipation=' // num(x))
+            call c%vars%set('d', x)
+        end if
+        call c%vars%set('m', m)
+        call c%vars%set('R', r)
+        call c%vars%set('k', c%k)
+    end subroutine case_mercury2015
+
+    subroutine case_yade(id, d, c, coef)
+        character(len=*), intent(in) :: id
+        type(draw), intent(in) :: d
+        type(case_t), intent(inout) :: c
+        real(wp), intent(in), optional :: coef
+        real(wp) :: r1, m, r, ymod, nu, y2, nu2, es, x, x2, ref
+        logical :: wall
+        r1 = d%r1
+        m = d%m
+        r = d%r
+        ymod = d%ymod
+        nu = d%nu
+        y2 = d%y2
+        nu2 = d%nu2
+        wall = d%wall
+        ! section 4: k = (4/3) E* sqrt(R); walls: R = refR1 r/(refR1 + r), refR1 = r (Wall),
+        ! 2r (Facet), 1e8 r (hertzian=True); en by release: yade-en up to 2022.01a,
+        ! yade2023-en (Thornton) from 2023.02a, yade2024-vn (en with vn) from 2024.02a
+        c%peer = PEER_YADE
+        select case (id)
+        case ('yade-en-force'); c%release = YADE_2022
+        case ('yade2023-en-force'); c%release = merge(YADE_2023, YADE_CURRENT, rnd() < 0.5_wp)
+        case ('yade2024-vn-force'); c%release = YADE_CURRENT
+        case default; c%release = YADE_2022 + int(2.999_wp * rnd())   ! 2022, 2023 or current
+        end select
+        call add(c, 'young=' // num(ymod) // ',' // num(y2) // ' poisson=' // num(nu) // ',' // num(nu2))
+        es = 1.0_wp / ((1.0_wp - nu**2) / ymod + (1.0_wp - nu2**2) / y2)
+        if (wall) then
+            x = rnd()
+            if (x < 0.33_wp) then
+                ref = r1
+                call add(c, 'shape=Wall')
+            else if (x < 0.66_wp) then
+                ref = 2.0_wp * r1
+                call add(c, 'shape=Facet')
             else
-                x = rnd()
-                if (present(coef)) x = coef
-                call add(c, 'SetYoungModulus=' // num(ymod) // ',' // num(y2) // ' SetPoissonRatio=' // num(nu) // &
-                         ',' // num(nu2) // ' SetRestitution=' // num(x))
-                es = 1.0_wp / ((1.0_wp - nu**2) / ymod + (1.0_wp - nu2**2) / y2)
-                c%k = (4.0_wp / 3.0_wp) * es * sqrt(r)
-                c%ktol = 1.0e-6_wp
-                call c%vars%set('e', real(real(x, real32), wp))
+                ref = 1.0e8_wp * r1
+                call add(c, 'hertzian=True')
+            end if
+            r = ref * r1 / (ref + r1)
+        end if
+        c%k = (4.0_wp / 3.0_wp) * es * sqrt(r)
+        if (index(id, 'betan') > 0) then
+            x = rnd()
+            if (present(coef)) x = coef
+            call add(c, 'betan=' // num(x))
+            call c%vars%set('betan', x)
+        else
+            x = 0.001_wp + 0.999_wp * rnd()
+            if (present(coef)) x = coef
+            call add(c, 'en=' // num(x))
+            call c%vars%set('e', x)
+            if (index(id, '-vn-') > 0) then
+                x2 = log_uniform(1.0e-2_wp, 1.0e2_wp)
+                call add(c, 'vn=' // num(x2))
+                call c%vars%set('vn', x2)
             end if
         end if
         call c%vars%set('m', m)
         call c%vars%set('R', r)
         call c%vars%set('k', c%k)
-    end subroutine make_case
+    end subroutine case_yade
+
+    subroutine case_mfix(d, c, coef)
+        type(draw), intent(in) :: d
+        type(case_t), intent(inout) :: c
+        real(wp), intent(in), optional :: coef
+        real(wp) :: m, r, ymod, nu, y2, nu2, es, x
+        logical :: wall
+        m = d%m
+        r = d%r
+        ymod = d%ymod
+        nu = d%nu
+        y2 = d%y2
+        nu2 = d%nu2
+        wall = d%wall
+        ! section 5: k = HERT_KN = (4/3) sqrt(R) E*
+        c%peer = PEER_MFIX
+        x = rnd()
+        if (rnd() < 0.1_wp) x = 0.0_wp
+        if (present(coef)) x = coef
+        call add(c, 'des_coll_model=''HERTZIAN'' E_YOUNG(1)=' // num(ymod) // ' V_POISSON=' // num(nu))
+        if (wall) then
+            call add(c, 'EW_YOUNG=' // num(y2) // ' VW_POISSON=' // num(nu2) // ' DES_EN_WALL_INPUT=' // num(x))
+        else
+            call add(c, 'E_YOUNG(2)=' // num(y2) // ' DES_EN_INPUT=' // num(x))
+            nu2 = nu
+        end if
+        es = 1.0_wp / ((1.0_wp - nu**2) / ymod + (1.0_wp - nu2**2) / y2)
+        c%k = (4.0_wp / 3.0_wp) * sqrt(r) * es
+        call c%vars%set('e', x)
+        call c%vars%set('m', m)
+        call c%vars%set('R', r)
+        call c%vars%set('k', c%k)
+    end subroutine case_mfix
+
+    subroutine case_chrono(id, d, c, coef)
+        character(len=*), intent(in) :: id
+        type(draw), intent(in) :: d
+        type(case_t), intent(inout) :: c
+        real(wp), intent(in), optional :: coef
+        real(wp) :: m, r, ymod, nu, y2, nu2, es, kn, x, mw
+        logical :: wall
+        m = d%m
+        r = d%r
+        ymod = d%ymod
+        nu = d%nu
+        y2 = d%y2
+        nu2 = d%nu2
+        wall = d%wall
+        ! section 6: material k = (4/3) E* sqrt(R) (E*, e single precision), kn/gn: k = kn R;
+        ! BULLET: R = 0.1; wall body of mass M_w: gamma times sqrt(M_w/(m + M_w))
+        c%peer = PEER_CHRONO
+        if (rnd() < 0.5_wp) then
+            call add(c, 'SetCollisionSystemType=MULTICORE')
+        else
+            call add(c, 'SetCollisionSystemType=BULLET')
+            r = 0.1_wp
+        end if
+        if (wall) then
+            mw = log_uniform(1.0e-3_wp, 1.0e3_wp)
+            call add(c, 'wallMass=' // num(mw))
+            c%gfac = sqrt(mw / (m + mw))
+        end if
+        if (index(id, 'kn_gn') > 0) then
+            kn = log_uniform(1.0e5_wp, 1.0e11_wp)
+            x = log_uniform(1.0e-3_wp, 1.0e6_wp)
+            if (present(coef)) x = coef
+            call add(c, 'UseMaterialProperties=false SetKn=' // num(kn) // ' SetGn=' // num(x))
+            c%k = real(real(kn, real32), wp) * r   ! Chrono stores kn as a float
+            call c%vars%set('gn', real(real(x, real32), wp))
+            c%gfac = 1.0_wp
+            if (wall) c%gfac = mw / (m + mw)   ! d = gn m_damp R, m_damp = m M_w/(m + M_w)
+        else
+            x = rnd()
+            if (present(coef)) x = coef
+            call add(c, 'SetYoungModulus=' // num(ymod) // ',' // num(y2) // ' SetPoissonRatio=' // num(nu) // &
+                     ',' // num(nu2) // ' SetRestitution=' // num(x))
+            es = 1.0_wp / ((1.0_wp - nu**2) / ymod + (1.0_wp - nu2**2) / y2)
+            c%k = (4.0_wp / 3.0_wp) * es * sqrt(r)
+            c%ktol = 1.0e-6_wp
+            call c%vars%set('e', real(real(x, real32), wp))
+        end if
+        call c%vars%set('m', m)
+        call c%vars%set('R', r)
+        call c%vars%set('k', c%k)
+    end subroutine case_chrono
 
     subroutine read_case(c, deck, st, msg)
         type(case_t), intent(in) :: c
@@ -885,10 +1066,80 @@ contains
         call expect_error(PEER_MFIX, 'DES_COLL_MODEL=HERTZIAN KN=1e5 DES_EN_INPUT=0.9', 'KN', 'MFiX KN')
         call expect_error(PEER_MFIX, 'DES_COLL_MODEL=HERTZIAN E_YOUNG=1e9 V_POISSON=0.3 DES_EN_INPUT=0.9', &
                           'EW_YOUNG', 'MFiX wall without EW_YOUNG', wall=.true.)
+        ! issue 21 item 5: three values of a two-body key are refused before anything is written
+        ! (this test ran into -fcheck=bounds before the fix)
+        call expect_error(PEER_MFIX, 'DES_COLL_MODEL=HERTZIAN E_YOUNG=1e9 V_POISSON=0.3 DES_EN_INPUT=0.9 RO_S0=1,2,3', &
+                          'RO_S0: at most 2 values', 'MFiX RO_S0 with three values')
+        call expect_error(PEER_MFIX, 'DES_COLL_MODEL=HERTZIAN E_YOUNG=1e9 V_POISSON=0.3 DES_EN_INPUT=0.9 D_P0=1,2,3', &
+                          'D_P0: at most 2 values', 'MFiX D_P0 with three values')
+        ! issue 21 item 8: DES_EN_INPUT(k) is the pair k in MFiX's order 1-1, 1-2, 2-2
+        call expect_error(PEER_MFIX, 'DES_COLL_MODEL=HERTZIAN E_YOUNG=1e9,2e9 V_POISSON=0.3 DES_EN_INPUT(1)=0.9', &
+                          'DES_EN_INPUT(2)', 'MFiX two phases: the 1-2 pair is DES_EN_INPUT(2)')
+        call expect_error(PEER_YADE, 'young=1e9 poisson=0.3 en=0.5 vn=1', 'vn', 'Yade vn before 2024.02a', &
+                          release=YADE_2023)
+        call expect_error(PEER_YADE, 'young=1e9 poisson=0.3 vn=1', 'vn needs en', 'Yade vn without en')
+        call expect_error(PEER_LAMMPS, 'gran/hertz/history 1e5 NULL', 'gran/hertz/history', 'classic style too short')
+        call expect_error(PEER_LAMMPS, 'gran/hooke/history 1e5 NULL 10 NULL 0.5 1', 'linear spring', 'classic hooke')
+        call mfix_indexed()
         call expect_error(PEER_CHRONO, 'SetYoungModulus=1e9 SetPoissonRatio=0.3 SetRestitution=0.5 SetKn=1e5', &
                           'SetKn', 'Chrono keys of the other mode')
         call expect_error(PEER_CHRONO, 'SetYoungModulus=1e9 SetPoissonRatio=0.3 SetRestitution=0.5 SetYoungModulus=2e9', &
                           'SetYoungModulus', 'repeated key')
     end subroutine test_bad_decks
+
+    !> Yade's vn: alpha = V*^2 (u/vn)^(1/5), so at u = vn the force-end Kuwabara-Kono e of
+    !> the reference integrator at alpha = V*^2 must be the Mueller-Poeschel Pade of V*, to
+    !> the accuracy of their fit (measured: 6.4e-4 at most for 0.05 <= V* <= 3).
+    subroutine test_yade_pade()
+        type(hertzdamp_collision) :: r
+        real(wp) :: v, worst
+        integer :: i
+        worst = 0.0_wp
+        do i = 1, 60
+            v = 0.05_wp * i
+            r = hertzdamp_forward_alpha(v * v, HD_END_FORCE, HD_METHOD_RK45, law=HD_DAMPING_KUWABARA_KONO)
+            worst = max(worst, abs(r%e - peer_pade_mp(v)))
+            call s%check(r%status == HD_OK, 'Yade vn: rk45 at alpha = V*^2')
+        end do
+        call s%check(worst < 1.0e-3_wp, 'Yade vn: Pade(V*) = force-end Kuwabara-Kono e(V*^2) within 1e-3')
+        print '(a, es10.2)', 'Yade vn: worst |Pade(V*) - e_force(V*^2)| ', worst
+        call s%check(abs(peer_pade_mp(peer_pade_mp_inverse(0.37_wp)) - 0.37_wp) < 1.0e-14_wp, &
+                     'Yade vn: the Pade inverse')
+        call s%check(abs(peer_thornton(peer_thornton_inverse_e(0.8_wp)) - 0.8_wp) < 1.0e-12_wp, &
+                     'Yade en: the Thornton inverse')
+    end subroutine test_yade_pade
+
+    real(wp) function peer_thornton_inverse_e(b) result(e)
+        real(wp), intent(in) :: b
+        integer :: st
+        call peer_thornton_inverse(b, e, st)
+    end function peer_thornton_inverse_e
+
+    !> issue 21 item 8: `check mfix DES_EN_INPUT(1)=0.5` reads the 1-1 pair (it said
+    !> DES_EN_INPUT is missing); DES_EN_INPUT(2) the 1-2 pair of two phases; the wall
+    !> DES_EN_WALL_INPUT(1).
+    subroutine mfix_indexed()
+        type(case_t) :: c
+        type(peer_deck) :: deck
+        integer :: st
+        character(len=:), allocatable :: msg
+        allocate (c%tok(0))
+        c%peer = PEER_MFIX
+        c%mat%radius = [1.0e-3_wp, 0.0_wp]
+        c%mat%density = [2500.0_wp, 0.0_wp]
+        call add(c, 'DES_COLL_MODEL=HERTZIAN E_YOUNG=1e9 V_POISSON=0.3 DES_EN_INPUT(1)=0.5')
+        call read_case(c, deck, st, msg)
+        call s%check(st == HD_OK .and. deck%e_deck == 0.5_wp, 'MFiX DES_EN_INPUT(1)=0.5: the 1-1 pair''s e (' // msg // ')')
+        c%tok = c%tok(1:0)
+        call add(c, 'DES_COLL_MODEL=HERTZIAN E_YOUNG=1e9,2e9 V_POISSON=0.3 DES_EN_INPUT(2)=0.6')
+        call read_case(c, deck, st, msg)
+        call s%check(st == HD_OK .and. deck%e_deck == 0.6_wp, 'MFiX two phases DES_EN_INPUT(2)=0.6: the 1-2 pair (' // &
+                     msg // ')')
+        c%tok = c%tok(1:0)
+        c%mat%wall = .true.
+        call add(c, 'DES_COLL_MODEL=HERTZIAN E_YOUNG=1e9 V_POISSON=0.3 EW_YOUNG=2e9 VW_POISSON=0.3 DES_EN_WALL_INPUT(1)=0.7')
+        call read_case(c, deck, st, msg)
+        call s%check(st == HD_OK .and. deck%e_deck == 0.7_wp, 'MFiX DES_EN_WALL_INPUT(1)=0.7 (' // msg // ')')
+    end subroutine mfix_indexed
 
 end program test_peers

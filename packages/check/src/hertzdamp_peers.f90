@@ -60,6 +60,11 @@ module hertzdamp_peers
     integer, parameter, public :: COEF_GAMMA_2BETA = 10    !! gamma = 2 beta(p)
     integer, parameter, public :: COEF_GAMMA_SQRT6 = 11    !! gamma = sqrt(6) p
     integer, parameter, public :: COEF_GAMMA_SQRT5_BETA_EPS = 12 !! gamma = sqrt(5) beta(max(p, eps_d))
+    integer, parameter, public :: COEF_GAMMA_SQRT6_THORNTON = 13 !! gamma = sqrt(6) betan_T(p), Thornton et al. 2013
+    integer, parameter, public :: COEF_D_YADE_VN = 14      !! d = V*(p)^2 vn^(-1/5) k^(3/5) m^(2/5), Pade(V*) = p
+
+    !> The decreasing functions bisect_decreasing inverts.
+    integer, parameter :: FN_P6 = 1, FN_THORNTON = 2, FN_PADE = 3
 
     !> The engines' own contact-time estimates (doc/peers.md).
     integer, parameter, public :: TSTEP_NONE = 0
@@ -84,6 +89,7 @@ module hertzdamp_peers
         character(len=:), allocatable :: p_template !! the deck's damping input with {} for the value
         real(wp) :: mass_arg = 0.0_wp       !! COEF_D_BETA_MASSARG: the mass argument
         real(wp) :: modulus_arg = 0.0_wp    !! COEF_D_BETA_MASSARG: the modulus passed as a stiffness
+        real(wp) :: vn = 0.0_wp             !! COEF_D_YADE_VN: Yade's vn, the speed at which e = en
         real(wp) :: e_deck = -1.0_wp        !! restitution coefficient written in the deck (< 0: none)
         real(wp) :: m = 0.0_wp              !! effective mass of the dynamics [kg]
         real(wp) :: m_damp = 0.0_wp         !! effective mass the damping formula uses [kg] (Chrono wall)
@@ -126,7 +132,8 @@ module hertzdamp_peers
     end type peer_point
 
     public :: peer_law_forward, peer_law_inverse
-    public :: peer_beta, peer_beta_inverse, peer_p6, peer_p6_inverse
+    public :: peer_beta, peer_beta_inverse, peer_p6, peer_p6_inverse, peer_thornton, peer_thornton_inverse
+    public :: peer_pade_mp, peer_pade_mp_inverse
     public :: peer_damping, peer_parameter, peer_alpha, peer_evaluate, peer_time_estimate
     public :: peer_row_law, peer_row_end, peer_row_coef, peer_nan, peer_float, peer_name
     public :: peer_spec_field, peer_spec_row, peer_spec_count
@@ -169,7 +176,8 @@ contains
               'lammps-2023-mass_velocity-overlap', 'lammps-2023-mass_velocity-force')
             coef = COEF_D_MASS
         case ('lammps-2021-viscoelastic-overlap', 'lammps-2021-viscoelastic-force', 'lammps-2023-viscoelastic-overlap', &
-              'lammps-2023-viscoelastic-force', 'liggghts-hertz_stiffness-overlap', 'liggghts-hertz_stiffness-force')
+              'lammps-2023-viscoelastic-force', 'liggghts-hertz_stiffness-overlap', 'liggghts-hertz_stiffness-force', &
+              'lammps-hertz_history-overlap', 'lammps-hertz_history-force')
             coef = COEF_D_MASS_SQRT_R
         case ('chrono-kn_gn-force')
             coef = COEF_D_MASS_R
@@ -191,6 +199,10 @@ contains
             coef = COEF_GAMMA_SQRT6
         case ('chrono-material-force')
             coef = COEF_GAMMA_SQRT5_BETA_EPS
+        case ('yade2023-en-force')
+            coef = COEF_GAMMA_SQRT6_THORNTON
+        case ('yade2024-vn-force')
+            coef = COEF_D_YADE_VN
         case default
             coef = 0
         end select
@@ -301,27 +313,121 @@ contains
         real(wp), intent(in) :: g       !! value of the polynomial
         real(wp), intent(out) :: e      !! its root in [0, 1]
         integer, intent(out) :: status  !! HD_OK or HD_OUTSIDE_VALIDITY
-        real(wp) :: lo, hi, mid
-        integer :: i
         e = 0.0_wp
         status = HD_OK
         if (.not. (g <= peer_p6(0.0_wp) .and. g >= peer_p6(1.0_wp))) then
             status = HD_OUTSIDE_VALIDITY
             return
         end if
-        lo = 0.0_wp
-        hi = 1.0_wp
-        do i = 1, 200
+        e = bisect_decreasing(FN_P6, g, 0.0_wp, 1.0_wp)
+    end subroutine peer_p6_inverse
+
+    !> The x in [lo, hi] where a decreasing function (FN_*) equals y, by bisection to
+    !> the last bit.
+    pure real(wp) function bisect_decreasing(fn, y, lo0, hi0) result(x)
+        integer, intent(in) :: fn         !! FN_P6, FN_THORNTON or FN_PADE
+        real(wp), intent(in) :: y, lo0, hi0
+        real(wp) :: lo, hi, mid, f
+        integer :: i
+        lo = lo0
+        hi = hi0
+        do i = 1, 400
             mid = 0.5_wp * (lo + hi)
             if (mid <= lo .or. mid >= hi) exit
-            if (peer_p6(mid) > g) then
+            select case (fn)
+            case (FN_P6); f = peer_p6(mid)
+            case (FN_THORNTON); f = peer_thornton(mid)
+            case default; f = peer_pade_mp(mid)
+            end select
+            if (f > y) then
                 lo = mid
             else
                 hi = mid
             end if
         end do
-        e = 0.5_wp * (lo + hi)
-    end subroutine peer_p6_inverse
+        x = 0.5_wp * (lo + hi)
+    end function bisect_decreasing
+
+    !> Yade's betan from en since 2023.02a: Thornton et al. (2013), eq. (B6) with the fit
+    !> (B7) of their Table 2 (HertzMindlin.cpp, Ip2_FrictMat_FrictMat_MindlinPhys::go):
+    !> betan = sqrt(1/(1 - (1+e)^2 exp(a)) - 1), a = e (h1 + e (h2 + ... + e h10));
+    !> betan(1) = 0.  Defined for 0 < e <= 1 (+huge where the radicand's denominator is 0).
+    pure elemental real(wp) function peer_thornton(e) result(b)
+        real(wp), intent(in) :: e   !! restitution coefficient, 0 < e <= 1
+        real(wp), parameter :: h(10) = [-6.918798_wp, -16.41105_wp, 146.8049_wp, -796.4559_wp, 2928.711_wp, &
+                                        -7206.864_wp, 11494.29_wp, -11342.18_wp, 6276.757_wp, -1489.915_wp]
+        real(wp) :: a, w
+        integer :: i
+        if (e >= 1.0_wp) then
+            b = 0.0_wp
+            return
+        end if
+        a = h(10)
+        do i = 9, 1, -1
+            a = h(i) + e * a
+        end do
+        a = e * a
+        w = 1.0_wp - (1.0_wp + e)**2 * exp(a)
+        if (w > 0.0_wp) then
+            b = sqrt(max(0.0_wp, 1.0_wp / w - 1.0_wp))
+        else
+            b = huge(1.0_wp)
+        end if
+    end function peer_thornton
+
+    !> The e in (0, 1] with peer_thornton(e) = b, by bisection (betan falls from +inf at
+    !> e -> 0 to 0 at e = 1); HD_OUTSIDE_VALIDITY for b < 0.
+    pure subroutine peer_thornton_inverse(b, e, status)
+        real(wp), intent(in) :: b       !! betan, >= 0
+        real(wp), intent(out) :: e      !! en
+        integer, intent(out) :: status  !! HD_OK or HD_OUTSIDE_VALIDITY
+        e = 1.0_wp
+        status = HD_OK
+        if (.not. b >= 0.0_wp) then
+            status = HD_OUTSIDE_VALIDITY
+            return
+        end if
+        if (b == 0.0_wp) return
+        e = bisect_decreasing(FN_THORNTON, b, 0.0_wp, 1.0_wp)
+        if (.not. e > 0.0_wp) status = HD_OUTSIDE_VALIDITY
+    end subroutine peer_thornton_inverse
+
+    !> The Mueller-Poeschel (2011) [3/6] Pade of the restitution coefficient of
+    !> viscoelastic (Kuwabara-Kono) spheres, as Yade codes it (HertzMindlin.cpp,
+    !> restitutionCoefficient): e = A(v)/B(v) with v = V* (u/vn)^(1/10).
+    pure elemental real(wp) function peer_pade_mp(v) result(e)
+        real(wp), intent(in) :: v   !! the normalised speed V*, >= 0
+        real(wp), parameter :: a(0:3) = [1.0_wp, 1.07232_wp, 0.574198_wp, 0.141552_wp]
+        real(wp), parameter :: b(0:6) = [1.0_wp, 1.07232_wp, 1.72765_wp, 1.37842_wp, 1.19449_wp, 0.467273_wp, &
+                                         0.235585_wp]
+        real(wp) :: pa, pb
+        integer :: i
+        pa = a(3)
+        do i = 2, 0, -1
+            pa = a(i) + v * pa
+        end do
+        pb = b(6)
+        do i = 5, 0, -1
+            pb = b(i) + v * pb
+        end do
+        e = pa / pb
+    end function peer_pade_mp
+
+    !> The V* >= 0 with peer_pade_mp(V*) = e (Yade's getVstar solves the same equation by
+    !> Newton's method), by bisection on the decreasing Pade; 0 for e >= 1, +huge for e <= 0.
+    pure elemental real(wp) function peer_pade_mp_inverse(e) result(v)
+        real(wp), intent(in) :: e   !! restitution coefficient
+        real(wp) :: hi
+        v = 0.0_wp
+        if (e >= 1.0_wp) return
+        v = huge(1.0_wp)
+        if (.not. e > 0.0_wp) return
+        hi = 1.0_wp
+        do while (peer_pade_mp(hi) > e .and. hi < 1.0e100_wp)
+            hi = 2.0_wp * hi
+        end do
+        v = bisect_decreasing(FN_PADE, e, 0.0_wp, hi)
+    end function peer_pade_mp_inverse
 
     !> A value as an engine that stores it in single precision (C++ float) sees it.
     pure elemental real(wp) function peer_float(x) result(y)
@@ -384,6 +490,15 @@ contains
         case (COEF_GAMMA_SQRT5_BETA_EPS)
             ! Chrono: e < DBL_EPSILON -> ln(DBL_EPSILON); gn = -2 sqrt(5/6) beta sqrt(Sn m) (ChContactSMC.cpp:94-104)
             c = sqrt(5.0_wp) * peer_beta(max(p, epsilon(1.0_wp))) * sqrt(deck%m_damp / deck%m)
+        case (COEF_GAMMA_SQRT6_THORNTON)
+            ! Yade 2023.02a+ en: betan = Thornton (2013) eq. (B6)-(B7), cn = 2 betan sqrt(m (3/2) Kno delta^(1/2))
+            ! (HertzMindlin.cpp, Ip2_FrictMat_FrictMat_MindlinPhys::go and Law2_ScGeom_MindlinPhys_Mindlin::go)
+            c = sqrt(6.0_wp) * peer_thornton(p) * sqrt(deck%m_damp / deck%m)
+        case (COEF_D_YADE_VN)
+            ! Yade 2024.02a+ en with vn: beta = V*^2 vn^(-1/5), cn = (2/3) beta (Kno/m)^(-2/5) kn with
+            ! kn = (3/2) Kno delta^(1/2): d = beta Kno^(3/5) m^(2/5) on delta^(1/2) delta' (HertzMindlin.cpp)
+            c = peer_pade_mp_inverse(p)**2 * exp(-0.2_wp * log(deck%vn) + 0.6_wp * log(deck%k) + &
+                                                 0.4_wp * log(deck%m_damp))
         case default
             c = 0.0_wp
         end select
@@ -426,6 +541,11 @@ contains
             call beta_root(g / 2.0_wp, p, status)
         case (COEF_GAMMA_SQRT6)
             p = g / sqrt(6.0_wp)
+        case (COEF_GAMMA_SQRT6_THORNTON)
+            call peer_thornton_inverse(g / sqrt(6.0_wp), p, status)
+        case (COEF_D_YADE_VN)
+            p = peer_pade_mp(sqrt(c * exp(0.2_wp * log(deck%vn) - 0.6_wp * log(deck%k) - 0.4_wp * log(deck%m_damp))))
+            if (.not. p > 0.0_wp) status = HD_OUTSIDE_VALIDITY
         case default
             status = HD_BAD_ARGUMENT
         end select

@@ -9,13 +9,13 @@ module hertzdamp_peers_data
     private
 
     !> Number of rows of the specification.
-    integer, parameter, public :: peer_spec_count = 33
+    integer, parameter, public :: peer_spec_count = 37
     !> Column names, comma-separated, in CSV order.
     character(len=*), parameter, public :: peer_spec_columns = &
         'id,engine,version,option,input_params,q,end,alpha_expr,source_path,source_lines,' // &
         'notes'
 
-    character(len=44), parameter :: spec_id(33) = [character(len=44) :: &
+    character(len=44), parameter :: spec_id(37) = [character(len=44) :: &
         'lammps-2021-velocity-overlap', &
         'lammps-2021-mass_velocity-overlap', &
         'lammps-2021-viscoelastic-overlap', &
@@ -36,6 +36,8 @@ module hertzdamp_peers_data
         'lammps-current-tsuji-force', &
         'lammps-2024-coeff_restitution-overlap', &
         'lammps-2024-coeff_restitution-force', &
+        'lammps-hertz_history-overlap', &
+        'lammps-hertz_history-force', &
         'liggghts-hertz-overlap', &
         'liggghts-hertz-force', &
         'liggghts-hertz_stiffness-overlap', &
@@ -46,10 +48,14 @@ module hertzdamp_peers_data
         'mercurydpm2015-stiffness_restitution-overlap', &
         'yade-en-force', &
         'yade-betan-force', &
+        'yade2023-en-force', &
+        'yade2024-vn-force', &
         'mfix-hertzian-overlap', &
         'chrono-material-force', &
         'chrono-kn_gn-force']
-    character(len=10), parameter :: spec_engine(33) = [character(len=10) :: &
+    character(len=10), parameter :: spec_engine(37) = [character(len=10) :: &
+        'LAMMPS', &
+        'LAMMPS', &
         'LAMMPS', &
         'LAMMPS', &
         'LAMMPS', &
@@ -78,12 +84,14 @@ module hertzdamp_peers_data
         'MercuryDPM', &
         'MercuryDPM', &
         'MercuryDPM', &
+        'Yade', &
+        'Yade', &
         'Yade', &
         'Yade', &
         'MFiX', &
         'Chrono', &
         'Chrono']
-    character(len=225), parameter :: spec_version(33) = [character(len=225) :: &
+    character(len=275), parameter :: spec_version(37) = [character(len=275) :: &
         'LAMMPS stable_29Sep2021_update2 (Debian 12 source lammps 20220106.git7586adbb6a+' // &
         'ds1-2; version.h ''29 Sep 2021'' ''Update 2'')', &
         'LAMMPS stable_29Sep2021_update2 (Debian 12 source lammps 20220106.git7586adbb6a+' // &
@@ -132,6 +140,12 @@ module hertzdamp_peers_data
         'clemm/lammps ec2fece8 and lammps/lammps index 07b704ca', &
         'LAMMPS 27Jun2024+ (coeff_restitution, PR #4068 merged 2024-05-13); checked at jt' // &
         'clemm/lammps ec2fece8 and lammps/lammps index 07b704ca', &
+        'LAMMPS 29 Sep 2021 update 2 (Debian 12) and later: pair_gran_hertz_history.cpp u' // &
+        'nchanged by the 2023 granular refactor (read at lammps/lammps index commit 01200' // &
+        '3c6; run with Debian 12 lmp)', &
+        'LAMMPS 29 Sep 2021 update 2 (Debian 12) and later: pair_gran_hertz_history.cpp u' // &
+        'nchanged by the 2023 granular refactor (read at lammps/lammps index commit 01200' // &
+        '3c6; run with Debian 12 lmp)', &
         'LIGGGHTS-PUBLIC 3.8.0 (CFDEMproject/LIGGGHTS-PUBLIC 3d5c00f2, 2024-06-07; model ' // &
         'code unchanged since the 3.8.0 release 2017-11-29)', &
         'LIGGGHTS-PUBLIC 3.8.0 (CFDEMproject/LIGGGHTS-PUBLIC 3d5c00f2, 2024-06-07; model ' // &
@@ -151,9 +165,19 @@ module hertzdamp_peers_data
         'MercuryDPM Beta 2015 (SVN Beta r1292 as mirrored in gladk/MercuryDPM 10c8e008, 2' // &
         '015-03-10)', &
         'Yade trunk 2021.01a-489 (GuoJingjie/yade_code a376aa8a, 2022-11-07); identical f' // &
-        'ormulas in 2020.01a-806 (Togekey/yade_trunk e627a44d)', &
+        'ormulas in 2020.01a-806 (Togekey/yade_trunk e627a44d); replaced by yade2023-en-f' // &
+        'orce from Yade 2023.02a', &
         'Yade trunk 2021.01a-489 (GuoJingjie/yade_code a376aa8a, 2022-11-07); identical f' // &
-        'ormulas in 2020.01a-806 (Togekey/yade_trunk e627a44d)', &
+        'ormulas in 2020.01a-806 (Togekey/yade_trunk e627a44d); unchanged in 2023.02a (De' // &
+        'bian 12) and 2025.2.0 (c61292558/yade4deepin f1486c0f, HertzMindlin.cpp 215-216,' // &
+        ' 459-462)', &
+        'Yade 2023.02a (Debian 12 package yade 2023.02a-1: libpkg_dem.so attribute docume' // &
+        'ntation names formula (B6) of [Thornton2013] for en) to 2025.2.0 (c61292558/yade' // &
+        '4deepin f1486c0f, ChangeLog yade-2025.2.0); MR !919 ''Update Hertz-Mindlin model' // &
+        ' and docs'' in the 2023.02a ChangeLog', &
+        'Yade 2024.02a (MR !977 ''Add viscous damping model of [Brilliantov1996] and [Mue' // &
+        'ller2011] for velocity-dependent CoR in the Hertz-Mindlin contact model'', Chang' // &
+        'eLog yade-2024.02a) to 2025.2.0 (c61292558/yade4deepin f1486c0f)', &
         'MFiX 21.3.2 (soufiane92/MFiX-21.3.2 e8a0d92f, 2021-12-03; mfixgui/VERSION 21.3.2' // &
         ')', &
         'Project Chrono 9.0.1 (tag 9.0.1, 2617649b: src/chrono/physics/ChContactSMC.h) an' // &
@@ -162,7 +186,7 @@ module hertzdamp_peers_data
         'Project Chrono 9.0.1 (tag 9.0.1, 2617649b: src/chrono/physics/ChContactSMC.h) an' // &
         'd main 7689fbc0 (2026-08-18: code moved to ChContactSMC.cpp 2025-07-25); formula' // &
         ' unchanged since dd0f8bad (2016-05-14)']
-    character(len=97), parameter :: spec_option(33) = [character(len=97) :: &
+    character(len=110), parameter :: spec_option(37) = [character(len=110) :: &
         'pair_style granular (normal hertz, hertz/material, dmt, jkr), damping velocity', &
         'pair_style granular, damping mass_velocity', &
         'pair_style granular, damping viscoelastic (default)', &
@@ -186,6 +210,9 @@ module hertzdamp_peers_data
         'pair_style granular, damping coeff_restitution (normal hertz, hertz/material)', &
         'pair_style granular, damping coeff_restitution (normal hertz, hertz/material) + ' // &
         'limit_damping', &
+        'pair_style gran/hertz/history (and fix wall/gran hertz/history)', &
+        'pair_style gran/hertz/history ... limit_damping (and fix wall/gran hertz/history' // &
+        ' ... limit_damping)', &
         'pair gran model hertz (limitForce off, default)', &
         'pair gran model hertz limitForce on', &
         'pair gran model hertz/stiffness', &
@@ -198,11 +225,15 @@ module hertzdamp_peers_data
         'Ip2_FrictMat_FrictMat_MindlinPhys(en=e) + Law2_ScGeom_MindlinPhys_Mindlin (inclu' // &
         'deAdhesion=False)', &
         'Ip2_FrictMat_FrictMat_MindlinPhys(betan=b) + Law2_ScGeom_MindlinPhys_Mindlin', &
+        'Ip2_FrictMat_FrictMat_MindlinPhys(en=e) (without vn) + Law2_ScGeom_MindlinPhys_M' // &
+        'indlin (includeAdhesion=False)', &
+        'Ip2_FrictMat_FrictMat_MindlinPhys(en=e, vn=v) + Law2_ScGeom_MindlinPhys_Mindlin ' // &
+        '(includeAdhesion=False)', &
         'DES_COLL_MODEL = ''HERTZIAN'' (particle-particle DES_EN_INPUT; particle-wall DES' // &
         '_EN_WALL_INPUT)', &
         'ChSystemSMC ContactForceModel::Hertz, UseMaterialProperties(true) (defaults)', &
         'ChSystemSMC ContactForceModel::Hertz, UseMaterialProperties(false)']
-    character(len=114), parameter :: spec_input_params(33) = [character(len=114) :: &
+    character(len=130), parameter :: spec_input_params(37) = [character(len=130) :: &
         'eta_n0 = damping coefficient in the normal-model slot [mass/time]', &
         'eta_n0 [1/time]', &
         'eta_n0 [1/(time*distance)]', &
@@ -229,6 +260,10 @@ module hertzdamp_peers_data
         'ck)', &
         'e = restitution coefficient in the normal-model damping slot', &
         'e = restitution coefficient in the normal-model damping slot', &
+        'Kn [force/area], Kt, gamma_n [1/(time*distance)], gamma_t, xmu, dampflag (pair_s' // &
+        'tyle settings or fix wall/gran hertz/history args)', &
+        'Kn [force/area], Kt, gamma_n [1/(time*distance)], gamma_t, xmu, dampflag (pair_s' // &
+        'tyle settings or fix wall/gran hertz/history args)', &
         'youngsModulus Y_i, poissonsRatio nu_i (per type), coefficientRestitution e (per ' // &
         'type pair, 0.05 < e <= 1 enforced)', &
         'youngsModulus Y_i, poissonsRatio nu_i (per type), coefficientRestitution e (per ' // &
@@ -244,12 +279,14 @@ module hertzdamp_peers_data
         'cle mass of two identical partners)', &
         'young E_i, poisson nu_i (FrictMat), en = MatchMaker (e)', &
         'betan = ''normal damping ratio'' b', &
+        'young E_i, poisson nu_i (FrictMat), en = MatchMaker (e)', &
+        'young E_i, poisson nu_i, en = e at the impact speed vn, vn [velocity]', &
         'E_YOUNG, V_POISSON (per phase), Ew_YOUNG, Vw_POISSON (wall), DES_EN_INPUT / DES_' // &
         'EN_WALL_INPUT = e in [0,1]', &
         'SetYoungModulus E_i, SetPoissonRatio nu_i, SetRestitution e_i (float); cr_eff = ' // &
         'min(e_1, e_2) by default', &
         'SetKn kn, SetGn gn (material, float)']
-    character(len=3), parameter :: spec_q(33) = [character(len=3) :: &
+    character(len=3), parameter :: spec_q(37) = [character(len=3) :: &
         '0', &
         '0', &
         '1/2', &
@@ -270,6 +307,8 @@ module hertzdamp_peers_data
         '1/4', &
         '1/4', &
         '1/4', &
+        '1/2', &
+        '1/2', &
         '1/4', &
         '1/4', &
         '1/2', &
@@ -280,10 +319,12 @@ module hertzdamp_peers_data
         '0', &
         '1/4', &
         '1/4', &
+        '1/4', &
+        '1/2', &
         '1/4', &
         '1/4', &
         '1/2']
-    character(len=7), parameter :: spec_end(33) = [character(len=7) :: &
+    character(len=7), parameter :: spec_end(37) = [character(len=7) :: &
         'overlap', &
         'overlap', &
         'overlap', &
@@ -309,15 +350,19 @@ module hertzdamp_peers_data
         'overlap', &
         'force', &
         'overlap', &
+        'force', &
         'overlap', &
         'overlap', &
         'overlap', &
+        'overlap', &
+        'force', &
+        'force', &
         'force', &
         'force', &
         'overlap', &
         'force', &
         'force']
-    character(len=35), parameter :: spec_alpha_expr(33) = [character(len=35) :: &
+    character(len=35), parameter :: spec_alpha_expr(37) = [character(len=35) :: &
         'eta_n0*tstar/m', &
         'eta_n0*tstar', &
         'eta_n0*sqrt(R)*tstar^(3/2)*sqrt(u)', &
@@ -338,6 +383,8 @@ module hertzdamp_peers_data
         'sqrt(2)*P6(e)', &
         'sqrt(5)*beta(e)', &
         'sqrt(5)*beta(e)', &
+        'gamma_n*sqrt(R)*tstar^(3/2)*sqrt(u)', &
+        'gamma_n*sqrt(R)*tstar^(3/2)*sqrt(u)', &
         'sqrt(5)*beta(e)', &
         'sqrt(5)*beta(e)', &
         'gamma_n*sqrt(R)*tstar^(3/2)*sqrt(u)', &
@@ -348,10 +395,12 @@ module hertzdamp_peers_data
         'beta(e)*sqrt(2*mass_arg*E)*tstar/m', &
         'sqrt(5)*beta(e)', &
         'sqrt(6)*betan', &
+        'sqrt(6)*thornton(e)', &
+        'Vstar(e)^2*(u/vn)^(1/5)', &
         '2*beta(e)', &
         'sqrt(5)*beta(max(e,eps_d))', &
         'gn*R*tstar^(3/2)*sqrt(u)']
-    character(len=211), parameter :: spec_source_path(33) = [character(len=211) :: &
+    character(len=211), parameter :: spec_source_path(37) = [character(len=211) :: &
         'src/GRANULAR/pair_granular.cpp (PairGranular::compute, PairGranular::coeff); src' // &
         '/GRANULAR/fix_wall_gran.cpp (FixWallGran::granular)', &
         'src/GRANULAR/pair_granular.cpp (PairGranular::compute, PairGranular::coeff); src' // &
@@ -404,6 +453,10 @@ module hertzdamp_peers_data
         'src/GRANULAR/gran_sub_mod_damping.cpp; src/GRANULAR/gran_sub_mod_damping_kernel.' // &
         'h; src/GRANULAR/granular_model.cpp (GranularModel::calculate_forces); src/GRANUL' // &
         'AR/gran_sub_mod_normal.cpp', &
+        'src/GRANULAR/pair_gran_hertz_history.cpp (PairGranHertzHistory::compute, ::setti' // &
+        'ngs); src/GRANULAR/fix_wall_gran.cpp (FixWallGran::hertz_history)', &
+        'src/GRANULAR/pair_gran_hertz_history.cpp (PairGranHertzHistory::compute, ::setti' // &
+        'ngs); src/GRANULAR/fix_wall_gran.cpp (FixWallGran::hertz_history)', &
         'src/normal_model_hertz.h (NormalModel<HERTZ>::surfacesIntersect); src/global_pro' // &
         'perties.cpp (createYeff, createCoeffRest, createBetaEff)', &
         'src/normal_model_hertz.h (NormalModel<HERTZ>::surfacesIntersect); src/global_pro' // &
@@ -421,12 +474,17 @@ module hertzdamp_peers_data
         'pkg/dem/HertzMindlin.cpp (Ip2_FrictMat_FrictMat_MindlinPhys::go, Law2_ScGeom_Min' // &
         'dlinPhys_Mindlin::go); pkg/dem/Ig2_Facet_Sphere_ScGeom.cpp', &
         'pkg/dem/HertzMindlin.cpp', &
+        'pkg/dem/HertzMindlin.cpp (Ip2_FrictMat_FrictMat_MindlinPhys::go, Law2_ScGeom_Min' // &
+        'dlinPhys_Mindlin::go)', &
+        'pkg/dem/HertzMindlin.cpp (restitutionCoefficient, getVstar, Ip2_FrictMat_FrictMa' // &
+        't_MindlinPhys::go, Law2_ScGeom_MindlinPhys_Mindlin::go); pkg/dem/HertzMindlin.hp' // &
+        'p (vn)', &
         'model/check_data/check_solids_dem.f (CHECK_SOLIDS_DEM_COLL_HERTZ); model/des/cal' // &
         'c_force_dem.f; model/des/calc_collision_wall_mod.f', &
         'src/chrono/physics/ChContactSMC.cpp (ChDefaultContactForceTorqueSMC::CalculateFo' // &
         'rceTorque); src/chrono/physics/ChContactMaterialSMC.cpp (composite)', &
         'src/chrono/physics/ChContactSMC.cpp (CalculateForceTorque)']
-    character(len=294), parameter :: spec_source_lines(33) = [character(len=294) :: &
+    character(len=294), parameter :: spec_source_lines(37) = [character(len=294) :: &
         'pair_granular.cpp:363-364,373-374 (damp_normal=1; Fdamp=-eta_n0*vnnr)', &
         'pair_granular.cpp:365-366,373-374', &
         'pair_granular.cpp:351,367-368,373-374 (a=sqrt(dR)); default model line 798', &
@@ -473,6 +531,11 @@ module hertzdamp_peers_data
         '72 init (damp = -sqrt(3/2)*2*sqrt(5/6)*ln(e)/sqrt(pi^2+ln(e)^2)), 175-183 prefac' // &
         'tor damp*sqrt(meff*Fnormal/delta); @07b704ca init lines 170-184; granular_model.' // &
         'cpp:436', &
+        'pair_gran_hertz_history.cpp compute: damp = meff*gamman*vnnr*rsqinv; ccel = kn*(' // &
+        'radsum-r)*rinv - damp; ccel *= polyhertz (polyhertz = sqrt((radsum-r)*radi*radj/' // &
+        'radsum))', &
+        'pair_gran_hertz_history.cpp compute: as the overlap row, then ''if (limit_dampin' // &
+        'g && (ccel < 0.0)) ccel = 0.0''; settings: optional 7th argument limit_damping', &
         'normal_model_hertz.h:211,217,221,231-237,253-261 (limitForce 258-261; default of' // &
         'f line 70); global_properties.cpp:432 (Yeff), 488 (e range), 539 (betaeff = ln(e' // &
         ')/sqrt(ln^2 e + pi^2))', &
@@ -495,6 +558,13 @@ module hertzdamp_peers_data
         '), 379-392 (total normal force set to zero if attractive)', &
         'HertzMindlin.cpp:82-85, 309 (kn = 3/2*kno*uN^(1/2)), 323-336 (cn = 2*sqrt(mbar*k' // &
         'n)*betan), 379-392', &
+        'HertzMindlin.cpp (2025.2.0): 153-155 (R, Kno), 184-207 (h1..h10 of Thornton et a' // &
+        'l. 2013 Table 2; alphan eq. (B7); betan eq. (B6)), 438 (kn = 3/2*kno*uN^0.5), 45' // &
+        '9-462 (cn = 2*sqrt(mbar*kn)*betan), 508 (total normal force set to zero if attra' // &
+        'ctive)', &
+        'HertzMindlin.cpp (2025.2.0): 23-45 (Pade [3/6] coefficients), 88-117 (getVstar: ' // &
+        'Newton on Pade(V*) = en), 180-182 (beta = V*^2*vn^(-1/5)), 469-470 (A = 2*beta*(' // &
+        'kno/mbar)^(-2/5)/3, cn = A*kn), 508 (clip)', &
         'check_solids_dem.f:884 (MASS_EFF), 888 (R_EFF), 889-891 (E_EFF), 897 (HERT_KN), ' // &
         '904-911 (DES_ETAN = 2*sqrt(HERT_KN*MASS_EFF)*|ln e|/sqrt(pi^2+ln^2 e); e = 0 -> ' // &
         '2*sqrt(k*m)), 955-978 (wall); calc_force_dem.f:224-242 (ETAN_DES = DES_ETAN*over' // &
@@ -503,7 +573,7 @@ module hertzdamp_peers_data
         '= 2/3*Sn, gn = -2*sqrt(5/6)*beta*sqrt(Sn*m)), 170-177 (forceN clipped at 0); ChC' // &
         'ontactSMC.h@9.0.1:80,116-125,192-198; ChContactMaterialSMC.cpp:110-121', &
         'ChContactSMC.cpp@7689fbc0:105-111,170-177']
-    character(len=589), parameter :: spec_notes(33) = [character(len=589) :: &
+    character(len=589), parameter :: spec_notes(37) = [character(len=589) :: &
         'k := kn*sqrt(R) for ''hertz kn eta''; k := (4/3)*E_star*sqrt(R) with E_star = E/' // &
         '(2*(1-nu^2)) for ''hertz/material E eta nu'' pairs (same E,nu both sides); fix w' // &
         'all/gran 2021 hertz/material/dmt/jkr use k := (4/3)*E/(2*(1-nu))*sqrt(R) (1-nu, ' // &
@@ -620,6 +690,16 @@ module hertzdamp_peers_data
         'rt(3/2)*2*sqrt(5/6) = sqrt(5). Normal hooke uses 2*beta(e) instead (linear). e =' // &
         ' 0 gives ln(0): not guarded. Cohesive normal models rejected since 1a310f57 (202' // &
         '4-06-11, issue #4180).', &
+        'k := Kn*sqrt(R) (Kn/nktv2p, nktv2p = 1 in si, cgs, lj); polyhertz = sqrt(delta*R' // &
+        '); ccel = polyhertz*(Kn*delta - meff*gamma_n*vn)/r so d = gamma_n*m*sqrt(R) on z' // &
+        'eta^(1/2)*zeta'' (the same law as granular damping viscoelastic); m := meff (fro' // &
+        'zen partner: other mass; wall: particle mass); R := R_i*R_j/(R_i+R_j) (flat wall' // &
+        ': particle radius).', &
+        'k := Kn*sqrt(R) (Kn/nktv2p, nktv2p = 1 in si, cgs, lj); polyhertz = sqrt(delta*R' // &
+        '); ccel = polyhertz*(Kn*delta - meff*gamma_n*vn)/r so d = gamma_n*m*sqrt(R) on z' // &
+        'eta^(1/2)*zeta'' (the same law as granular damping viscoelastic); m := meff (fro' // &
+        'zen partner: other mass; wall: particle mass); R := R_i*R_j/(R_i+R_j) (flat wall' // &
+        ': particle radius).', &
         'k := (4/3)*Y_star*sqrt(R), Y_star = 1/((1-nu_i^2)/Y_i + (1-nu_j^2)/Y_j) (wall: m' // &
         'esh type''s Y,nu); m := meff (wall: particle mass); R := reff (wall: particle ra' // &
         'dius). gamman = -2*sqrt(5/6)*betaeff*sqrt(Sn*meff), Sn = 2*Y_star*sqrt(R*delta) ' // &
@@ -654,6 +734,16 @@ module hertzdamp_peers_data
         'k := Kno as above. cn = 2*betan*sqrt(m*(3/2)*k)*delta^(1/4): the tangent stiffne' // &
         'ss makes this Tsuji-type, gamma = sqrt(6)*betan (not a linear critical-damping f' // &
         'raction).', &
+        'k := Kno = (4/3)*E_star*sqrt(R); m := mbar; R as yade-en-force (Wall R = r/2, Fa' // &
+        'cet 2r/3, Box r/2 unless hertzian). thornton(e) := sqrt(1/(1-(1+e)^2*exp(a)) - 1' // &
+        '), a = e*(h1 + e*(h2 + ... + e*h10)), thornton(1) = 0. gamma = 2*sqrt(3/2)*betan' // &
+        ' = sqrt(6)*betan. en = 0 divides by zero.', &
+        'k := Kno; m := mbar. cn*vn = beta*Kno^(3/5)*mbar^(2/5)*delta^(1/2)*vn, so d = be' // &
+        'ta*k^(3/5)*m^(2/5) and alpha = beta*u^(1/5) = Vstar^2*(u/vn)^(1/5). Vstar(e) := ' // &
+        'the V >= 0 with Pade(V) = e, Pade(V) = (1 + 1.07232 V + 0.574198 V^2 + 0.141552 ' // &
+        'V^3)/(1 + 1.07232 V + 1.72765 V^2 + 1.37842 V^3 + 1.19449 V^4 + 0.467273 V^5 + 0' // &
+        '.235585 V^6) (Mueller and Poeschel 2011, delayed-recovery contact: force end). e' // &
+        ' changes with u by design.', &
         'k := HERT_KN = (4/3)*sqrt(R)*E_star (wall: E_star with Ew_YOUNG, Vw_POISSON; R =' // &
         ' particle radius); m := MASS_EFF from the phase reference masses (wall: particle' // &
         ' mass). gamma = 2*beta(e) (e = 0: gamma = 2).', &

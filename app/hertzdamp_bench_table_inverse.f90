@@ -8,7 +8,8 @@ module hertzdamp_bench_table_inverse
     use hertzdamp, only: hertzdamp_rk, hertzdamp_message, hertzdamp_law_name, HD_OK, HD_END_OVERLAP, &
                          HD_METHOD_SERIES, HD_METHOD_PADE, HD_METHOD_COMPACT, HD_METHOD_FIT, HD_METHOD_ITERATIVE, &
                          HD_DAMPING_LINEAR, HD_DAMPING_TSUJI, hertzdamp_tsuji_alpha
-    use hertzdamp_inverse, only: hertzdamp_invert
+    use hertzdamp_pair, only: hertzdamp_invert
+    use hertzdamp_inverse, only: hertzdamp_invert_options
     use hertzdamp_gsl_secant, only: hertzdamp_gsl_secant_invert
     use hertzdamp_bench_timer, only: bench_case, bench_measure
     use hertzdamp_bench_entry, only: entry_result, n_ways, way_name
@@ -61,7 +62,8 @@ contains
         do i = 1, size(self%e)
             call hertzdamp_invert(self%e(i), self%tc(i), self%m(i), self%u(i), HD_END_OVERLAP, self%k(i), self%d(i), &
                                   self%status(i), alpha=self%alpha(i), tstar=self%tstar(i), tau_c=self%tau(i), &
-                                  bound_active=self%bound(i), method=self%method, tol=self%tol, law=self%law)
+                                  bound_active=self%bound(i), law=self%law, &
+                                  options=hertzdamp_invert_options(method=self%method, tol=self%tol))
         end do
     end subroutine inv_run
 

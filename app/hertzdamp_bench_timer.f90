@@ -35,7 +35,7 @@ module hertzdamp_bench_timer
         class(bench_case), allocatable :: c
     end type bench_slot
 
-    public :: wall_seconds, median, bench_measure, bench_measure_all
+    public :: wall_seconds, median, bench_measure, bench_measure_all, bench_rounds_all
 
 contains
 
@@ -101,6 +101,21 @@ contains
         integer, intent(in) :: repeats
         real(wp) :: t_run(size(slots))
         real(wp) :: t(max(repeats, 1), size(slots))
+        integer :: j
+        t = bench_rounds_all(slots, min_time, repeats)
+        do j = 1, size(slots)
+            t_run(j) = median(t(:, j))
+        end do
+    end function bench_measure_all
+
+    !> The wall time of one `run` of each case [s] in every round (rounds x cases), as
+    !> bench_measure_all takes them: for ratios taken round by round (the cases of one
+    !> round run under the same load), whose median is steadier than the ratio of medians.
+    function bench_rounds_all(slots, min_time, repeats) result(t)
+        type(bench_slot), intent(inout) :: slots(:)
+        real(wp), intent(in) :: min_time
+        integer, intent(in) :: repeats
+        real(wp) :: t(max(repeats, 1), size(slots))
         integer :: n(size(slots)), r, j
         do j = 1, size(slots)
             n(j) = calibrate(slots(j)%c, min_time)
@@ -110,10 +125,7 @@ contains
                 t(r, j) = time_batch(slots(j)%c, n(j))
             end do
         end do
-        do j = 1, size(slots)
-            t_run(j) = median(t(:, j))
-        end do
-    end function bench_measure_all
+    end function bench_rounds_all
 
     !> Runs per batch: the first count 1, 8, 64, ... (refined near the end) whose batch
     !> takes at least min_time (capped at 2^28 runs).

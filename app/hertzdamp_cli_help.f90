@@ -182,11 +182,23 @@ module hertzdamp_cli_help
         '  --help       this text' // nl // &
         'CSV columns: name,value.'
 
+    !> The --host option of invert and timestep.
+    character(len=*), parameter :: host_help = &
+        '  --host NAME           the DEM host''s time integrator: none (default: the' // nl // &
+        '                        continuous model), lammps (LAMMPS/LIGGGHTS velocity' // nl // &
+        '                        Verlet), mfix-euler, mfix-ab2, verlet (the scene engine),' // nl // &
+        '                        lammps-phase (lammps with the plugin''s onset correction):' // nl // &
+        '                        alpha, tau_c make the achieved e and T_c of the host''s' // nl // &
+        '                        N-step collision exact on average over the onset phase;' // nl // &
+        '                        adds e_spread and tc_spread (their standard deviations' // nl // &
+        '                        over the phase, relative).  N too small to reach e: the' // nl // &
+        '                        row is outside-validity and says which N can'
+
     character(len=*), parameter :: invert = &
         'Usage: hertzdamp invert --e LIST (--tc LIST | --dt LIST --steps LIST)' // nl // &
         '                        --velocity LIST (--mass M | --radius R --density RHO ...)' // nl // &
         '                        [--k-phys K | --youngs-modulus E --poisson-ratio NU]' // nl // &
-        '                        [--fixed] [options]' // nl // &
+        '                        [--host NAME] [--fixed] [options]' // nl // &
         '' // nl // &
         'The inverse rule of the adaptive collision time model: the stiffness k and' // nl // &
         'damping d that give a contact with effective mass m*, hit at relative normal' // nl // &
@@ -203,6 +215,8 @@ module hertzdamp_cli_help
         '  --steps LIST          time steps per contact N (whole numbers): T_c = N dt;' // nl // &
         '                        N dt beyond double precision: out-of-range' // nl // &
         '  --velocity LIST       relative normal impact velocity u_in [m s^-1]' // nl // &
+        host_help // nl // &
+        '                        (needs --dt and --steps; not with --fixed)' // nl // &
         '  --fixed               one k and d for every contact, for engines that cannot set' // nl // &
         '                        them per contact: over the range of the --velocity list' // nl // &
         '                        the worst |e_fixed/e - 1| as small as one pair makes it' // nl // &
@@ -221,14 +235,14 @@ module hertzdamp_cli_help
         'Columns: e, tc [s], velocity [m s^-1], mass (m*) [kg], radius_eff (R*) [m],' // nl // &
         'k_phys, alpha [-], tau_c [-], t_star [s] (time unit of the returned k), k' // nl // &
         '[N m^-3/2], d [kg s^-1], bound_active, tc_actual [s] (the contact time the' // nl // &
-        'returned k and d give: t_star tau_c), status.' // nl // &
+        'returned k and d give: t_star tau_c), with --host e_spread and tc_spread, status.' // nl // &
         '' // nl // list_syntax // nl // nl // status_help
 
     character(len=*), parameter :: timestep = &
         'Usage: hertzdamp timestep --e LIST --velocity LIST [--steps LIST]' // nl // &
         '                          (--mass M | --radius R --density RHO ...)' // nl // &
         '                          (--k-phys K | --youngs-modulus E --poisson-ratio NU)' // nl // &
-        '                          [options]' // nl // &
+        '                          [--host NAME] [options]' // nl // &
         '' // nl // &
         'The time step a DEM code needs for its physical contacts (k = k_phys, d from' // nl // &
         'e): the contact time t* tau_c(alpha(e)) falls as u_in^(-1/5), so the shortest' // nl // &
@@ -247,13 +261,15 @@ module hertzdamp_cli_help
         '  --e LIST              restitution coefficients of the material pair [-]' // nl // &
         '  --velocity LIST       relative normal impact velocities u_in [m s^-1]' // nl // &
         '  --steps LIST          time steps per contact N, whole numbers (default 10)' // nl // &
+        host_help // nl // &
+        '                        (needs --steps: the constants depend on N)' // nl // &
         contact_help // nl // &
         'Method:' // nl // inverse_methods_help // nl // method_help // nl // &
         '' // nl // &
         'Columns: e, steps, velocity_max [m s^-1], mass [kg], radius_eff [m], k_phys,' // nl // &
         'alpha, tau_c [-], tc_damped [s], tc_elastic [s], elastic_excess [-],' // nl // &
         'dt_max [s], dt_elastic [s] (tc_elastic / N), t_rayleigh [s], dt_rayleigh [s]' // nl // &
-        '(empty without the materials), status.' // nl // &
+        '(empty without the materials), with --host e_spread and tc_spread, status.' // nl // &
         '' // nl // list_syntax // nl // nl // status_help
 
     character(len=*), parameter :: bench = &
@@ -275,6 +291,10 @@ module hertzdamp_cli_help
         '            and array calls, C, legacy) over 10^6 random contacts, side by side,' // nl // &
         '            checked bit for bit against the module scalar call' // nl // &
         '  closed-form  tsuji: its inverse against alpha = sqrt5 beta(e) of the overlap end' // nl // &
+        '  pair      linear law: the per-contact call of a DEM host (hertzdamp_c_pair_kd,' // nl // &
+        '            hertzdamp_pair_kd, scalar and array) against the bare formula' // nl // &
+        '            k = m r^(5/2) u^(-1/2), d = alpha m r it replaces (target: C at most' // nl // &
+        '            1.5 x), and hertzdamp_invert with T_c and m the same for every contact' // nl // &
         'Times are wall clock per call: the median of 5 batches of >= 0.1 s each' // nl // &
         '(--quick: fewer points, 3 batches of >= 0.01 s; about 10 s).' // nl // &
         'The text output ends with ''figure:'' lines: ratios measured side by side.' // nl // &
@@ -292,8 +312,8 @@ module hertzdamp_cli_help
         'CSV columns: problem,damping,method,setting,max_rel_err_e,max_rel_err_tau,' // nl // &
         'max_rel_err_alpha,max_rel_err_k,max_rel_err_d,ns_per_call,rhs_evals (empty where' // nl // &
         'not applicable; rhs_evals is the mean per collision of the integrators).' // nl // &
-        'problem is forward, inverse, entry or closed-form; setting is the tolerance (1e-10),' // nl // &
-        'the series order (N=10), the number of contacts (n=1000000) or empty.'
+        'problem is forward, inverse, entry, closed-form or pair; setting is the tolerance' // nl // &
+        '(1e-10), the series order (N=10), the number of contacts (n=1000000) or empty.'
     character(len=*), parameter :: scene = &
         'Usage: hertzdamp scene FILE [--method M] [--damping LAW] [--format text|csv|json]' // nl // &
         '                            [--plot FILE.png] [--progress] [--no-compare]' // nl // &

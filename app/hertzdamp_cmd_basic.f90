@@ -2,12 +2,13 @@
 module hertzdamp_cmd_basic
     use hertzdamp, only: hertzdamp_rk, hertzdamp_collision, hertzdamp_forward_alpha, hertzdamp_forward_dim, &
                          hertzdamp_message, hertzdamp_alpha_c, hertzdamp_tau_c0, hertzdamp_z_max0, hertzdamp_e1, &
-                         hertzdamp_end_name, hertzdamp_safe_exp, hertzdamp_alpha_max, hertzdamp_law_q, &
+                         hertzdamp_end_name, hertzdamp_alpha_max, hertzdamp_law_q, &
                          hertzdamp_law_has_alpha_c, hertzdamp_law_alpha_c, hertzdamp_law_code, &
                          HD_OK, HD_NO_REBOUND, HD_END_OVERLAP, HD_METHOD_RK45, HD_METHOD_SERIES, HD_METHOD_PADE, &
                          HD_BAD_ALPHA, HD_BAD_STIFFNESS, HD_BAD_DAMPING, HD_BAD_VELOCITY, HD_BAD_MASS, &
-                         HD_OUT_OF_RANGE, HD_OUTSIDE_VALIDITY, HD_INACCURATE, HD_MAX_STEPS, hertzdamp_reduce, &
-                         hertzdamp_rk45_options
+                         HD_OUT_OF_RANGE, HD_OUTSIDE_VALIDITY, HD_INACCURATE, HD_MAX_STEPS, hertzdamp_reduce
+    use hertzdamp_scaling, only: hertzdamp_safe_exp, hertzdamp_log_tstar
+    use hertzdamp_rk45, only: hertzdamp_rk45_options
     use hertzdamp_cli, only: cli_args, cli_buffer, parse_args, parse_choice, parse_sweep, parse_range, fail, quit, &
                              required_sweep, check_combinations, EXIT_USAGE, EXIT_OK, EXIT_FAILURE, max_list_length
     use hertzdamp_cli_text, only: fmt_short, itoa
@@ -215,7 +216,7 @@ contains
         have_alpha = .false.
         have_tstar = .false.
         if (.not. (k > 0.0_wp .and. d > 0.0_wp .and. m > 0.0_wp .and. u > 0.0_wp)) return
-        lt = 0.4_wp * (log(m) - log(k)) - 0.2_wp * log(u)
+        lt = hertzdamp_log_tstar(log(m), log(k), log(u), .true.)
         la = log(d) + lt - log(m) + hertzdamp_law_q(c%law) * (log(u) + lt)
         ! a law without alpha_c (kuwabara-kono) always rebounds: the library's status stands
         if (.not. hertzdamp_law_has_alpha_c(c%law)) return

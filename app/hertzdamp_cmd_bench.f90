@@ -11,13 +11,16 @@
 !> the same 10^6 contacts, with their ratios to the module scalar call, a check that
 !> they agree bit for bit, and the speed-up against the fastest iterative row at equal
 !> accuracy; for the tsuji law also its inverse against the closed form of its overlap
-!> end.  Every number is measured in this run; methods the library does not (yet)
-!> provide are left out.  Everything is computed (and the plot written) before anything
-!> is printed: on failure stdout stays empty.
+!> end; for the linear law the per-pair API (the per-contact call of a DEM host against
+!> the bare formula it replaces) and the one-call inverse with T_c and m broadcast.
+!> Every number is measured in this run; methods the library does not (yet) provide are
+!> left out.  Everything is computed (and the plot written) before anything is printed:
+!> on failure stdout stays empty.
 !>
 !> One builder per table (hertzdamp_bench_table_forward, _inverse, _entry,
-!> _closed_form): each appends its rows and adds its header lines and figures.  To add
-!> a table: write its builder module and call it in measure, describe and figures below.
+!> _closed_form, _pair): each appends its rows and adds its header lines and figures.
+!> To add a table: write its builder module and call it in measure, describe and figures
+!> below.
 module hertzdamp_cmd_bench
     use hertzdamp, only: hertzdamp_rk, HD_DAMPING_LINEAR, HD_DAMPING_TSUJI, HD_DAMPING_KUWABARA_KONO, &
                          hertzdamp_law_name
@@ -29,6 +32,8 @@ module hertzdamp_cmd_bench
     use hertzdamp_bench_table_inverse, only: inverse_set_of, inverse_table, inverse_meta, inverse_figures
     use hertzdamp_bench_table_entry, only: entry_rows, entry_meta, entry_figures
     use hertzdamp_bench_table_closed_form, only: closed_form_rows, closed_form_meta, closed_form_figures
+    use hertzdamp_bench_pair, only: pair_result, pair_measure
+    use hertzdamp_bench_table_pair, only: pair_rows, pair_meta, pair_figures
     use hertzdamp_bench_output, only: build_table, make_plot
     use hertzdamp_bench_timer, only: wall_seconds
     use hertzdamp_cli_plot, only: plot_check_target
@@ -62,6 +67,7 @@ module hertzdamp_cmd_bench
         integer :: n_e = 0
         type(entry_result) :: ent(n_laws)
         type(tsuji_result) :: ts
+        type(pair_result) :: pr
     end type bench_run
 
 contains
@@ -170,6 +176,10 @@ contains
             call tsuji_measure(dat, o%min_time, o%repeats, run%ts)
             call closed_form_rows(run%ts, run%rows)
         end if
+        if (any(o%laws == HD_DAMPING_LINEAR)) then
+            call pair_measure(dat, o%min_time, o%repeats, run%pr)
+            call pair_rows(run%pr, run%rows)
+        end if
         call prog%finish()
     contains
         subroutine step_done()
@@ -191,6 +201,7 @@ contains
             call forward_figures(run%rows, run%ent(il)%law, figs)
         end do
         if (run%ts%n > 0) call closed_form_figures(run%ts, figs)
+        if (run%pr%n > 0) call pair_figures(run%pr, run%ent(1), figs)
     end subroutine figures
 
     !> The header (text and JSON): what was run, each table's lines, the figures.
@@ -213,6 +224,7 @@ contains
         call inverse_meta(t, run%n_e)
         call entry_meta(t, o%n_entry)
         if (any(o%laws == HD_DAMPING_TSUJI)) call closed_form_meta(t)
+        if (any(o%laws == HD_DAMPING_LINEAR)) call pair_meta(t)
         call t%meta('tolerances', 'rk45 and GSL (rkf45, rk8pd) with relative error control: absolute ' // &
                     'tolerance 1e-30 tol; rhs_evals, steps, rejected are means per collision (GSL: rejected n/a)')
         call t%meta('omitted', 'methods that report not-supported, and points whose status is not ok ' // &

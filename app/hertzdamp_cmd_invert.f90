@@ -1,11 +1,15 @@
 !> The commands `invert` (stiffness and damping from target restitution and contact
 !> time) and `timestep` (the time step that resolves the physical contacts).
 module hertzdamp_cmd_invert
-    use hertzdamp, only: hertzdamp_rk, hertzdamp_invert, hertzdamp_invert_alpha, hertzdamp_message, &
-                         hertzdamp_reduce, hertzdamp_hertz_time, hertzdamp_rayleigh_fraction, &
+    use hertzdamp, only: hertzdamp_rk, hertzdamp_invert, hertzdamp_invert_alpha, hertzdamp_invert_options, &
+                         hertzdamp_message, hertzdamp_reduce, hertzdamp_hertz_time, hertzdamp_rayleigh_fraction, &
                          HD_OK, HD_BAD_RESTITUTION, HD_OUTSIDE_VALIDITY, HD_INACCURATE, HD_BAD_TIME, HD_BAD_VELOCITY, &
-                         HD_OUT_OF_RANGE, HD_METHOD_ITERATIVE
-    use hertzdamp_cli, only: cli_args, parse_args, parse_sweep, required_sweep, check_combinations, fail, EXIT_USAGE
+                         HD_OUT_OF_RANGE, HD_METHOD_ITERATIVE, HD_METHOD_FIT, HD_HOST_UNREACHABLE, HD_HOST_NONE, HD_BAD_PAIR, &
+                         hertzdamp_pair_t, hertzdamp_pair_init, hertzdamp_pair_kd, hertzdamp_host_stats, &
+                         hertzdamp_host_name, hertzdamp_host_min_steps
+    use hertzdamp_cli, only: cli_args, parse_args, parse_sweep, parse_choice, required_sweep, check_combinations, fail, &
+                             EXIT_USAGE
+    use hertzdamp_cli_text, only: itoa
     use hertzdamp_cli_text, only: fmt_short
     use hertzdamp_cli_output, only: out_table
     use hertzdamp_cli_help, only: print_help, wants_help
@@ -22,7 +26,75 @@ module hertzdamp_cmd_invert
 
     integer, parameter :: wp = hertzdamp_rk
 
+    !> The host schemes of --host, in the order of their codes (HD_HOST_* = 0, 1, ...).
+    character(len=*), parameter :: host_choices = 'none lammps mfix-euler mfix-ab2 verlet lammps-phase'
+
+    !> The --host of a command: the scheme and whether it was given.
+    type :: host_opts
+        logical :: given = .false.
+        integer :: host = HD_HOST_NONE
+    end type host_opts
+
 contains
+
+    !> --host: the host scheme (absent: none, no spread columns).  With --host the
+    !> constants are those of hertzdamp_pair_init at N steps, so the steps are required;
+    !> for a host other than none they come from the fit (no --method).
+    subroutine parse_host(args, c, h)
+        type(cli_args), intent(in) :: args
+        type(model_opts), intent(in) :: c
+        type(host_opts), intent(out) :: h
+        h%given = args%has('--host')
+        if (.not. h%given) return
+        h%host = parse_choice(args%get('--host', ''), host_choices, 'host scheme (--host)') - 1
+        if (h%host /= HD_HOST_NONE .and. c%method /= HD_METHOD_FIT) then
+            call fail(EXIT_USAGE, '--host ' // hertzdamp_host_name(h%host) // ': the host-exact constants come ' // &
+                      'from the fit; --method applies to --host none')
+        end if
+    end subroutine parse_host
+
+    !> Why a row of a host has no constants: the steps that cannot reach e, and the fewest
+    !> that can (hertzdamp_host_min_steps), or the library's message.
+    function host_reason(c, h, status, e, steps) result(s)
+        type(model_opts), intent(in) :: c
+        type(host_opts), intent(in) :: h
+        integer, intent(in) :: status
+        real(wp), intent(in) :: e, steps
+        character(len=:), allocatable :: s
+        integer :: nmin, st
+        s = 'e = ' // fmt_short(e) // ', --steps ' // fmt_short(steps) // ' with --host ' // &
+            hertzdamp_host_name(h%host) // ': ' // hertzdamp_message(status)
+        if (status /= HD_HOST_UNREACHABLE) return
+        call hertzdamp_host_min_steps(e, c%law, c%iend, h%host, nmin, st)
+        s = 'N = ' // fmt_short(steps) // ' steps cannot reach e = ' // fmt_short(e) // ' with ' // &
+            hertzdamp_host_name(h%host)
+        if (st == HD_OK) then
+            s = s // '; N >= ' // itoa(nmin) // ' can'
+        else
+            s = s // ' (' // hertzdamp_message(st) // ')'
+        end if
+    end function host_reason
+
+    !> With --host: the spread columns, and what alpha, tau_c and the spreads are (the
+    !> steps `where` as the command defines them) in the units line.
+    subroutine host_columns(h, where, columns, units, column_units)
+        type(host_opts), intent(in) :: h
+        character(len=*), intent(in) :: where
+        character(len=:), allocatable, intent(inout) :: columns, units, column_units
+        if (.not. h%given) return
+        columns = columns // 'e_spread,tc_spread,'
+        column_units = column_units // ',,'
+        units = units // '; host ' // hertzdamp_host_name(h%host) // ': alpha, tau_c its constants at N steps ' // &
+                where // ', e_spread and tc_spread the standard deviations of the achieved e and T_c over the ' // &
+                'onset phase, relative'
+    end subroutine host_columns
+
+    !> The relative spread over the onset phase (standard deviation / mean; 0 for none).
+    pure real(wp) function relative_spread(sd, mean)
+        real(wp), intent(in) :: sd, mean
+        relative_spread = 0.0_wp
+        if (mean > 0.0_wp) relative_spread = sd / mean
+    end function relative_spread
 
     subroutine cmd_invert()
         type(cli_args) :: args
@@ -36,11 +108,21 @@ contains
         type(out_table) :: t
         type(row_log) :: rows
         type(progress_reporter) :: p
+        type(host_opts) :: h
+        type(hertzdamp_pair_t) :: pair
+        type(hertzdamp_host_stats) :: stats
+        integer :: st_pair
+        character(len=:), allocatable :: columns, units, column_units
         allocate (es(0), tcs(0), us(0), tc_dt(0), tc_steps(0))   ! (defined descriptors for the reallocating assignments)
         if (wants_help()) call print_help('invert')
-        call parse_args(2, '--e --tc --dt --steps --velocity ' // contact_options // ' ' // model_options, &
+        call parse_args(2, '--e --tc --dt --steps --velocity --host ' // contact_options // ' ' // model_options, &
                         contact_flags // ' --progress --fixed ' // quiet_flag, args)
         call parse_model(args, c, inverse=.true.)
+        call parse_host(args, c, h)
+        if (h%given .and. .not. (args%has('--dt') .and. args%has('--steps') .and. .not. args%has('--tc'))) then
+            call fail(EXIT_USAGE, '--host needs --dt and --steps (the time step of the host and the steps per ' // &
+                      'contact N it integrates with, T_c = N dt), not --tc')
+        end if
         call parse_contact(args, ct)
         es = required_sweep(args, '--e')
         call contact_times(args, tcs, tc_key, tc_dt, tc_steps)
@@ -48,15 +130,22 @@ contains
         call require_mass(ct)
         call check_combinations([size(es), size(tcs), size(us)], '--e, the contact times and --velocity')
         call warn_implausible(args)
-        if (args%has('--fixed')) call invert_fixed(args, c, ct, es, tcs, tc_key, us)
-        call contact_table(t, c, ct, 'e,tc,velocity,mass,radius_eff,k_phys,alpha,tau_c,t_star,k,d,bound_active,' // &
-                           'tc_actual,status', 'tc, t_star, tc_actual [s], velocity [m/s], mass [kg], radius_eff [m], ' // &
-                           'k, k_phys [N m^-3/2], d [' // damping_unit(c%law) // ']', &
-                           ',s,m/s,kg,m,N m^-3/2,,,s,N m^-3/2,' // damping_unit(c%law) // ',,s,')
+        if (args%has('--fixed')) then
+            if (h%given) call fail(EXIT_USAGE, '--fixed takes no --host (one k and d for every contact)')
+            call invert_fixed(args, c, ct, es, tcs, tc_key, us)
+        end if
+        columns = 'e,tc,velocity,mass,radius_eff,k_phys,alpha,tau_c,t_star,k,d,bound_active,tc_actual,'
+        units = 'tc, t_star, tc_actual [s], velocity [m/s], mass [kg], radius_eff [m], k, k_phys [N m^-3/2], d [' // &
+                damping_unit(c%law) // ']'
+        column_units = ',s,m/s,kg,m,N m^-3/2,,,s,N m^-3/2,' // damping_unit(c%law) // ',,s,'
+        call host_columns(h, '(T_c = N dt)', columns, units, column_units)
+        call contact_table(t, c, ct, columns // 'status', units, column_units)
         n = 0
         call p%start(real(size(es) * size(tcs) * size(us), wp), 'invert', force=args%has('--progress'))
         do ie = 1, size(es)
             do it = 1, size(tcs)
+                ! a host: the pair's constants at these steps, once for every velocity
+                if (h%given) call hertzdamp_pair_init(es(ie), c%law, c%iend, h%host, tc_steps(it), pair, st_pair, stats)
                 do iu = 1, size(us)
                     e = es(ie)
                     tc = tcs(it)
@@ -65,17 +154,22 @@ contains
                     tc_ok = ieee_is_finite(tc)
                     if (.not. tc_ok) then
                         status = HD_OUT_OF_RANGE
+                    else if (h%given) then
+                        call host_kd(pair, st_pair, tc, ct, u, k, d, status, tstar, bound)
+                        alpha = pair%alpha
+                        tau = pair%tau_c
                     else if (ct%has_kphys) then
                         call hertzdamp_invert(e, tc, ct%mass, u, c%iend, k, d, status, alpha, tstar, tau, bound, &
-                                              ct%k_phys, c%method, c%tol, c%accuracy, c%law)
+                                              ct%k_phys, c%law, hertzdamp_invert_options(c%method, c%tol, c%accuracy))
                     else
                         call hertzdamp_invert(e, tc, ct%mass, u, c%iend, k, d, status, alpha, tstar, tau, bound, &
-                                              method=c%method, tol=c%tol, accuracy=c%accuracy, law=c%law)
+                                              law=c%law, options=hertzdamp_invert_options(c%method, c%tol, c%accuracy))
                     end if
                     ! the contact time the returned k and d give (T_c, or longer when k = k_phys)
                     if (status == HD_OK .and. .not. ieee_is_finite(tstar * tau)) status = HD_OUT_OF_RANGE
                     kind = row_kind(status)
                     if (status == HD_BAD_RESTITUTION .and. e >= 0.0_wp .and. e <= 1.0_wp) kind = ROW_OUTSIDE_VALIDITY
+                    if (status == HD_HOST_UNREACHABLE) kind = ROW_OUTSIDE_VALIDITY
                     have = row_has_result(kind)
                     call t%num(e)
                     call t%num_or_none(tc, tc_ok)
@@ -94,9 +188,15 @@ contains
                         call t%none()
                     end if
                     call t%num_or_none(tstar * tau, have)
+                    if (h%given) then
+                        call t%num_or_none(relative_spread(stats%e_sd, stats%e_mean), have)
+                        call t%num_or_none(relative_spread(stats%tau_sd, stats%tau_mean), have)
+                    end if
                     call t%str(row_word(kind))
                     if (have) then
                         call rows%add(kind, '')
+                    else if (h%given .and. tc_ok .and. st_pair /= HD_OK) then
+                        call rows%add(kind, host_reason(c, h, st_pair, e, tc_steps(it)))
                     else if (.not. tc_ok) then
                         call rows%add(kind, '--dt ' // fmt_short(tc_dt(it)) // ' x --steps ' // &
                                       fmt_short(tc_steps(it)) // ': the contact time is outside the ' // &
@@ -112,6 +212,25 @@ contains
         call p%finish()
         call rows%emit(t, c%fmt)
     end subroutine cmd_invert
+
+    !> k and d of one contact from a host's pair (st_pair: its init's status, reported
+    !> when the contact's arguments are valid), with the bound when the contact has one.
+    subroutine host_kd(pair, st_pair, tc, ct, u, k, d, status, tstar, bound)
+        type(hertzdamp_pair_t), intent(in) :: pair
+        integer, intent(in) :: st_pair
+        real(wp), intent(in) :: tc, u
+        type(cli_contact), intent(in) :: ct
+        real(wp), intent(out) :: k, d, tstar
+        integer, intent(out) :: status
+        logical, intent(out) :: bound
+        if (ct%has_kphys) then
+            call hertzdamp_pair_kd(pair, tc, ct%mass, u, k, d, status, k_phys=ct%k_phys, bound_active=bound, &
+                                   tstar=tstar)
+        else
+            call hertzdamp_pair_kd(pair, tc, ct%mass, u, k, d, status, bound_active=bound, tstar=tstar)
+        end if
+        if (status == HD_BAD_PAIR) status = st_pair
+    end subroutine host_kd
 
     !> The target contact times: --tc LIST, or every --dt times every --steps (a
     !> product beyond double precision is inf: that row is out-of-range).
@@ -208,11 +327,20 @@ contains
         logical :: have, rhave
         type(out_table) :: t
         type(row_log) :: rows
+        type(host_opts) :: h
+        type(hertzdamp_pair_t) :: pair
+        type(hertzdamp_host_stats) :: stats
+        character(len=:), allocatable :: columns, units, column_units
         allocate (es(0), us(0), steps(0))
         if (wants_help()) call print_help('timestep')
-        call parse_args(2, '--e --velocity --steps ' // contact_options // ' ' // model_options, &
+        call parse_args(2, '--e --velocity --steps --host ' // contact_options // ' ' // model_options, &
                         contact_flags // ' ' // quiet_flag, args)
         call parse_model(args, c, inverse=.true.)
+        call parse_host(args, c, h)
+        if (h%given .and. .not. args%has('--steps')) then
+            call fail(EXIT_USAGE, '--host needs --steps (the steps per contact N the host integrates with; ' // &
+                      'timestep gives the time step dt_max for them)')
+        end if
         call parse_contact(args, ct)
         call require_mass(ct)
         if (.not. ct%has_kphys) call fail(EXIT_USAGE, 'missing option --k-phys (or --radius with --youngs-modulus ' // &
@@ -238,18 +366,27 @@ contains
             thertz = min(thertz, th)
         end do
 
-        call contact_table(t, c, ct, 'e,steps,velocity_max,mass,radius_eff,k_phys,alpha,tau_c,tc_damped,tc_elastic,' // &
-                           'elastic_excess,dt_max,dt_elastic,t_rayleigh,dt_rayleigh,status', 'velocity_max [m/s], ' // &
-                           'mass [kg], radius_eff [m], k_phys [N m^-3/2], tc_damped, tc_elastic, dt_max, dt_elastic, ' // &
-                           't_rayleigh, dt_rayleigh [s]; elastic_excess = tc_elastic/tc_damped - 1; dt_rayleigh = ' // &
-                           fmt_short(hertzdamp_rayleigh_fraction) // ' t_rayleigh', &
-                           ',,m/s,kg,m,N m^-3/2,,,s,s,,s,s,s,s,')
+        columns = 'e,steps,velocity_max,mass,radius_eff,k_phys,alpha,tau_c,tc_damped,tc_elastic,elastic_excess,' // &
+                  'dt_max,dt_elastic,t_rayleigh,dt_rayleigh,'
+        units = 'velocity_max [m/s], mass [kg], radius_eff [m], k_phys [N m^-3/2], tc_damped, tc_elastic, dt_max, ' // &
+                'dt_elastic, t_rayleigh, dt_rayleigh [s]; elastic_excess = tc_elastic/tc_damped - 1; dt_rayleigh = ' // &
+                fmt_short(hertzdamp_rayleigh_fraction) // ' t_rayleigh'
+        column_units = ',,m/s,kg,m,N m^-3/2,,,s,s,,s,s,s,s,'
+        call host_columns(h, '(the fastest contact at dt_max)', columns, units, column_units)
+        call contact_table(t, c, ct, columns // 'status', units, column_units)
         do ie = 1, size(es)
-            call hertzdamp_invert_alpha(es(ie), c%iend, alpha, tau, status, c%method, c%tol, c%accuracy, c%law)
-            kind = row_kind(status)
-            if (status == HD_BAD_RESTITUTION .and. es(ie) >= 0.0_wp .and. es(ie) <= 1.0_wp) kind = ROW_OUTSIDE_VALIDITY
-            have = row_has_result(kind)
+            if (.not. h%given) then
+                call hertzdamp_invert_alpha(es(ie), c%iend, alpha, tau, status, c%method, c%tol, c%accuracy, c%law)
+                call row_of(status)
+            end if
             do is = 1, size(steps)
+                if (h%given) then
+                    ! the host's constants depend on the steps
+                    call hertzdamp_pair_init(es(ie), c%law, c%iend, h%host, steps(is), pair, status, stats)
+                    alpha = pair%alpha
+                    tau = pair%tau_c
+                    call row_of(status)
+                end if
                 ! the damped contact, its time steps and the elastic ones: every number
                 ! the row prints must be finite and the time steps positive
                 tcd = tmin * tau
@@ -281,9 +418,15 @@ contains
                 call t%num_or_none(dt_el, dt_el > 0.0_wp)
                 call t%num_or_none(ct%t_rayleigh, ct%has_rayleigh)
                 call t%num_or_none(hertzdamp_rayleigh_fraction * ct%t_rayleigh, ct%has_rayleigh)
+                if (h%given) then
+                    call t%num_or_none(relative_spread(stats%e_sd, stats%e_mean), rhave)
+                    call t%num_or_none(relative_spread(stats%tau_sd, stats%tau_mean), rhave)
+                end if
                 call t%str(row_word(rkind))
                 if (rhave) then
                     call rows%add(rkind, '')
+                else if (h%given .and. status /= HD_OK) then
+                    call rows%add(rkind, host_reason(c, h, status, es(ie), steps(is)))
                 else if (have .or. .not. dt_el > 0.0_wp) then
                     call rows%add(rkind, '--e ' // fmt_short(es(ie)) // ' with --steps ' // fmt_short(steps(is)) // &
                                   ': the damped contact time t* tau_c (t* = ' // fmt_short(tmin) // ' s, tau_c = ' // &
@@ -294,6 +437,15 @@ contains
             end do
         end do
         call rows%emit(t, c%fmt)
+    contains
+        !> The row kind of the constants' status.
+        subroutine row_of(st)
+            integer, intent(in) :: st
+            kind = row_kind(st)
+            if (st == HD_BAD_RESTITUTION .and. es(ie) >= 0.0_wp .and. es(ie) <= 1.0_wp) kind = ROW_OUTSIDE_VALIDITY
+            if (st == HD_HOST_UNREACHABLE) kind = ROW_OUTSIDE_VALIDITY
+            have = row_has_result(kind)
+        end subroutine row_of
     end subroutine cmd_timestep
 
 end module hertzdamp_cmd_invert

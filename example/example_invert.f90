@@ -2,8 +2,8 @@
 !> whole array of contacts in one elemental call (doc/theory.md section 6), checked by the
 !> forward problem.  Run with `fpm run --example example_invert`.
 program example_invert
-    use hertzdamp, only: hertzdamp_rk, hertzdamp_invert, hertzdamp_forward_dim, hertzdamp_message, &
-                         HD_OK, HD_END_OVERLAP, HD_METHOD_FIT
+    use hertzdamp, only: hertzdamp_rk, hertzdamp_invert, hertzdamp_invert_options, hertzdamp_forward_dim, &
+                         hertzdamp_message, HD_OK, HD_END_OVERLAP, HD_METHOD_FIT
     implicit none
     integer, parameter :: wp = hertzdamp_rk
     integer, parameter :: n = 5
@@ -21,7 +21,7 @@ program example_invert
     u = [0.01_wp, 1.0_wp, 0.1_wp, 5.0_wp, 2.0_wp]                 ! impact speeds [m/s]
 
     call hertzdamp_invert(e_target, tc, m, u, HD_END_OVERLAP, k, d, status, alpha=alpha, &
-                          bound_active=bound, k_phys=k_phys, method=method)
+                          bound_active=bound, k_phys=k_phys, options=hertzdamp_invert_options(method=method))
     call hertzdamp_forward_dim(k, d, m, u, HD_END_OVERLAP, method, a2, ts, e, t, zm, status_f)
 
     write (*, '(a)') '        m [kg]      u [m/s]     k [N/m^1.5]    d [kg/s]       alpha   k_phys?' // &

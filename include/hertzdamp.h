@@ -14,12 +14,12 @@
  * The functions keep no state and may be called from any number of threads at
  * once.  Units: SI (kg, m, s); k in N m^-3/2, d in kg/s.
  *
- * Aliasing (the _n calls): a result array may be an input array itself, in place
- * (k over e or m, d over tc or u, each element over the same element): every input
- * of a contact is read before its results are written, and the results are those of
- * separate arrays, bit for bit.  A partial overlap (a result array starting inside an
- * input array at another element) is not allowed: its results are unspecified
- * (nothing is written outside the arrays).  test/capi_fuzz checks both.
+ * Aliasing (the _n calls): a result array may overlap an input array, in place (k
+ * over e or m, d over tc or u, each element over the same element) or shifted (a
+ * result array starting inside an input array at another element): the overlap is
+ * detected and the inputs are copied first, so that the results are those of
+ * separate arrays, bit for bit.  The result arrays must not overlap each other.
+ * test/integration/capi_fuzz.sh and install_consumers.sh (alias.c) check both.
  *
  * Every C name starts with hertzdamp_c_ (macros with HERTZDAMP_): the legacy
  * Fortran externals (HERTZDAMP_INVERT ... -> hertzdamp_invert_) never collide
@@ -62,6 +62,7 @@ extern "C" {
 #define HERTZDAMP_BAD_HOST            26  /* host scheme not one of the host codes (hertzdamp_host) */
 #define HERTZDAMP_BAD_STEPS           27  /* steps per contact (or step h) not finite or outside the allowed range */
 #define HERTZDAMP_HOST_UNREACHABLE    28  /* no alpha reaches this e with the host at so few steps per contact */
+#define HERTZDAMP_BAD_PAIR            29  /* pair not set by hertzdamp_c_pair_init, or changed since */
 
 /* Contact-end definitions (argument `end`). */
 #define HERTZDAMP_END_OVERLAP 0  /* contact ends when the overlap returns to zero */
@@ -72,6 +73,47 @@ extern "C" {
 #define HERTZDAMP_DAMPING_LINEAR        0  /* q = 0: constant damping (the default of the other calls) */
 #define HERTZDAMP_DAMPING_TSUJI         1  /* q = 1/4: Tsuji; d = gamma sqrt(m k) gives alpha = gamma */
 #define HERTZDAMP_DAMPING_KUWABARA_KONO 2  /* q = 1/2: Kuwabara-Kono (LAMMPS viscoelastic) */
+
+/* Host time integrators (argument `host` of hertzdamp_c_pair_init; doc/host-schemes.md). */
+#define HERTZDAMP_HOST_NONE         0  /* the continuous model: k, d exact for it */
+#define HERTZDAMP_HOST_LAMMPS       1  /* LAMMPS / LIGGGHTS fix nve/sphere (velocity Verlet) */
+#define HERTZDAMP_HOST_MFIX_EULER   2  /* MFiX DES_INTG_METHOD = 'EULER' */
+#define HERTZDAMP_HOST_MFIX_AB2     3  /* MFiX DES_INTG_METHOD = 'ADAMS_BASHFORTH' */
+#define HERTZDAMP_HOST_VERLET       4  /* the scheme of hertzdamp's own scene engine */
+#define HERTZDAMP_HOST_LAMMPS_PHASE 5  /* lammps with the hertzdamp plugin's onset correction */
+
+/*
+ * The constants of a material pair (set by hertzdamp_c_pair_init, read by
+ * hertzdamp_c_pair_kd): eight doubles, the same memory as the Fortran type
+ * hertzdamp_pair_t and the legacy DOUBLE PRECISION PAIR(8).  Treat it as opaque: a
+ * pair that was not set by hertzdamp_c_pair_init, whose init failed, or that was
+ * changed since, is refused (HERTZDAMP_BAD_PAIR).  Copying it is fine.
+ */
+typedef struct {
+    double v[8];
+} hertzdamp_pair_t;
+
+/*
+ * Per-pair API (the fast path of a DEM host): once per material pair,
+ * hertzdamp_c_pair_init with the target restitution e, the damping law, the contact
+ * end, the host's time integrator (HERTZDAMP_HOST_*) and the steps per contact N
+ * (T_c = N dt; not used by HERTZDAMP_HOST_NONE).  With a host scheme the constants are
+ * those that make the phase-averaged e and contact time of the host's own N-step
+ * collision exact; when no constants reach e at so few steps the status is
+ * HERTZDAMP_HOST_UNREACHABLE (a larger N can).  On failure *p is invalid.
+ */
+int hertzdamp_c_pair_init(double e, int law, int end, int host, double steps, hertzdamp_pair_t *p);
+
+/*
+ * Then at each contact onset: *k [N m^-3/2] and *d [kg s^-1 m^-q] for target contact
+ * time tc = N dt [s], effective mass m [kg] and impact speed u [m/s] > 0, with the
+ * physical-stiffness bound when k_phys > 0 (k_phys <= 0: no bound): where
+ * k_phys <= k the contact keeps *k = k_phys (it then lasts longer than tc).  The same
+ * numbers as hertzdamp_c_invert_law for HERTZDAMP_HOST_NONE, bit for bit.  On failure
+ * *k = *d = 0.
+ */
+int hertzdamp_c_pair_kd(const hertzdamp_pair_t *p, double tc, double m, double u, double k_phys,
+                        double *k, double *d);
 
 /*
  * Inverse problem (adaptive collision time): the Hertz stiffness *k [N m^-3/2] and
@@ -93,7 +135,8 @@ int hertzdamp_c_invert_bounded(double e, double tc, double m, double u, double k
 
 /*
  * hertzdamp_c_invert for n contacts: status[i] is the status of contact i.  Returns
- * HERTZDAMP_OK when all succeeded, else the first non-zero status.
+ * HERTZDAMP_OK when all succeeded, else the first non-zero status.  Aliasing: see
+ * the top of this file.  (The same for hertzdamp_c_invert_law_n.)
  */
 int hertzdamp_c_invert_n(int n, const double *e, const double *tc, const double *m,
                          const double *u, int end, double *k, double *d, int *status);

@@ -1,30 +1,61 @@
-!> C entry points, declared in `include/hertzdamp.h`.
+!> The C and legacy Fortran entry points: one binding layer, thin over the module API
+!> (hertzdamp_pair for every inverse, hertzdamp_forward_dim for the forward problem), so
+!> that every way in gives the module's numbers, bit for bit.  Both use the fit and need
+!> only the Fortran runtime: `cc ... -lhertzdamp -lgfortran -lm`.
 !>
-!> Every C name carries the prefix `hertzdamp_c_`, so that it never collides with
-!> the legacy Fortran externals (`hertzdamp_invert_` ...), not even when a host
-!> compiles with -fno-underscoring.
+!> **C** (`include/hertzdamp.h`): every name carries the prefix `hertzdamp_c_`, so that it
+!> never collides with a legacy external (`hertzdamp_invert_` ...), not even when a host
+!> compiles with -fno-underscoring.  Scalars by value, results through pointers, an `int`
+!> status returned (0 = success; the codes of `hertzdamp_status`, mirrored as `#define`s
+!> in the header); a NULL result pointer gives HD_BAD_ARGUMENT.  No callbacks cross the
+!> boundary and there is no mutable state: safe from any number of threads.
 !>
-!> Scalars are passed by value, results through pointers, and every function
-!> returns an `int` status (0 = success; the codes of `hertzdamp_status`, mirrored
-!> as `#define`s in the header).  No callbacks cross the boundary and there is no
-!> mutable state: the functions are safe to call from any number of threads.  They
-!> use the same method as the legacy Fortran entry points (`legacy_method` in
-!> `hertzdamp_flat`), give the same numbers as the module API, bit for bit, and need
-!> only the Fortran runtime.  Like every procedure of a module, they pay no save and
-!> restore of the floating-point environment (see hertzdamp_legacy.f90):
-!> `cc ... -lhertzdamp -lgfortran -lm`.
+!> **Legacy Fortran** (fixed form, implicit interfaces; `include/hertzdamp.fi` declares
+!> them): every argument by reference, reals DOUBLE PRECISION, integers default INTEGER,
+!> the status in the last argument.  Their names and argument lists are stable across
+!> versions.  Each is the C function of the same name with the status as an argument.
+!>
+!>       DOUBLE PRECISION E, TC, M, U, K, D
+!>       INTEGER IEND, IERR
+!>       CHARACTER*80 TEXT
+!>       CALL HERTZDAMP_INVERT(E, TC, M, U, IEND, K, D, IERR)
+!>       IF (IERR .NE. 0) CALL HERTZDAMP_MESSAGE(IERR, TEXT)
+!>
+!> (HERTZDAMP_MESSAGE, whose character argument has no binding-label form, is the
+!> external subroutine of hertzdamp_legacy.f90.)
+!>
+!> Why module procedures with binding labels, and not external subroutines: gfortran
+!> saves and restores the floating-point environment (`_gfortran_ieee_procedure_entry/exit`,
+!> about 250 ns per call) around every procedure whose own scope sees a symbol of an
+!> IEEE intrinsic module.  A `use` of any module of the library inside an external
+!> subroutine brings such symbols along (every .mod that uses ieee_arithmetic, even with
+!> `only:`, carries its derived types, and they travel through every module that uses
+!> it), so external subroutines that used the library paid it on each call.  Here every
+!> `use` is at module level, where it does not count for the procedures: they are module
+!> procedures whose binding labels (`bind(c, name='hertzdamp_invert_')`, the name gfortran
+!> gives an external HERTZDAMP_INVERT) keep the link names and the calling convention
+!> (scalars and explicit-shape arrays by reference) of the externals.  Never `use` a
+!> library module inside a procedure here; test/integration/fpenv_symbols.sh fails if an entry point
+!> calls those routines again.
+!>
+!> One entry point is defined elsewhere and re-exported here: hertzdamp_c_pair_kd, the
+!> per-contact call, lives in hertzdamp_pair so that the k, d code inlines into it (the
+!> bare formula costs a few ns; a call between modules is not inlined without LTO).
 module hertzdamp_capi
-    use, intrinsic :: iso_c_binding, only: c_double, c_int, c_char, c_ptr, c_loc, c_null_char
-    use hertzdamp_status, only: HD_OK, HD_BAD_ARGUMENT, hertzdamp_message_table, hertzdamp_max_status, &
+    use, intrinsic :: iso_c_binding, only: c_double, c_int, c_char, c_ptr, c_loc, c_null_char, c_intptr_t
+    use hertzdamp_status, only: HD_OK, HD_NO_REBOUND, HD_BAD_ARGUMENT, hertzdamp_message_table, hertzdamp_max_status, &
                                 hertzdamp_message_len
-    use hertzdamp_flat, only: flat_invert, flat_invert_n, flat_invert_bounded, flat_invert_law, flat_invert_law_n, &
-                              flat_pair_law, flat_forward_law
+    use hertzdamp_methods, only: hertzdamp_forward_dim, HD_METHOD_FIT
+    use hertzdamp_pair, only: hertzdamp_pair_t, hertzdamp_pair_init, hertzdamp_invert, hertzdamp_c_pair_kd, &
+                              hertzdamp_invert_contact
+    use hertzdamp_host, only: HD_HOST_NONE
     implicit none
     private
 
     public :: hertzdamp_c_invert, hertzdamp_c_invert_bounded, hertzdamp_c_invert_n, hertzdamp_c_pair, &
               hertzdamp_c_forward, hertzdamp_c_strerror
     public :: hertzdamp_c_invert_law, hertzdamp_c_invert_law_n, hertzdamp_c_pair_law, hertzdamp_c_forward_law
+    public :: hertzdamp_c_pair_init, hertzdamp_c_pair_kd
 
     integer, private :: i_   ! implied-do index of the initialisation below (never used at run time)
     !> The NUL-terminated messages of hertzdamp_message_table (the one table behind
@@ -36,6 +67,28 @@ module hertzdamp_capi
          i_=0, hertzdamp_max_status + 1)]
 
 contains
+
+    ! ================================================================ C: the per-pair API
+
+    !> `int hertzdamp_c_pair_init(double e, int law, int end, int host, double steps,
+    !> hertzdamp_pair_t *p)`: the constants of a material pair (hertzdamp_pair_init); on
+    !> failure *p is invalid (hertzdamp_c_pair_kd refuses it); NULL p gives HD_BAD_ARGUMENT.
+    integer(c_int) function hertzdamp_c_pair_init(e, law, iend, host, steps, p) &
+            bind(c, name='hertzdamp_c_pair_init') result(status)
+        real(c_double), value, intent(in) :: e          !! target restitution
+        integer(c_int), value, intent(in) :: law        !! damping law: 0 linear, 1 tsuji, 2 kuwabara-kono
+        integer(c_int), value, intent(in) :: iend       !! contact end: 0 overlap, 1 force
+        integer(c_int), value, intent(in) :: host       !! host scheme (HERTZDAMP_HOST_*)
+        real(c_double), value, intent(in) :: steps      !! steps per contact N (not used by host none)
+        type(hertzdamp_pair_t), intent(out), optional :: p !! the pair's constants
+        integer :: st
+        status = HD_BAD_ARGUMENT
+        if (.not. present(p)) return
+        call hertzdamp_pair_init(e, int(law), int(iend), int(host), steps, p, st)
+        status = int(st, c_int)
+    end function hertzdamp_c_pair_init
+
+    ! ================================================================ C: the one-call inverse
 
     !> `int hertzdamp_c_invert(double e, double tc, double m, double u, int end,
     !> double *k, double *d)`: stiffness and damping for restitution e and contact
@@ -50,20 +103,13 @@ contains
         integer(c_int), value, intent(in) :: iend    !! contact end: 0 overlap, 1 force
         real(c_double), intent(out), optional :: k   !! Hertz stiffness [N m^-3/2]
         real(c_double), intent(out), optional :: d   !! damping coefficient [kg/s]
-        real(c_double) :: k_, d_
-        integer :: st
-        status = HD_BAD_ARGUMENT
-        if (.not. (present(k) .and. present(d))) return
-        call flat_invert(e, tc, m, u, int(iend), k_, d_, st)
-        k = k_
-        d = d_
-        status = int(st, c_int)
+        status = hertzdamp_c_invert_law(e, tc, m, u, 0.0_c_double, 0_c_int, iend, k, d)
     end function hertzdamp_c_invert
 
     !> `int hertzdamp_c_invert_bounded(double e, double tc, double m, double u,
     !> double k_phys, int end, double *k, double *d)`: hertzdamp_c_invert with the
-    !> physical-stiffness bound (k = k_phys where k_phys <= k).  On failure
-    !> *k = *d = 0; a NULL k or d gives HD_BAD_ARGUMENT.
+    !> physical-stiffness bound (k = k_phys where k_phys <= k; k_phys must be finite and
+    !> positive).  On failure *k = *d = 0; a NULL k or d gives HD_BAD_ARGUMENT.
     integer(c_int) function hertzdamp_c_invert_bounded(e, tc, m, u, k_phys, iend, k, d) &
             bind(c, name='hertzdamp_c_invert_bounded') result(status)
         real(c_double), value, intent(in) :: e       !! target restitution
@@ -75,19 +121,42 @@ contains
         real(c_double), intent(out), optional :: k   !! Hertz stiffness [N m^-3/2]
         real(c_double), intent(out), optional :: d   !! damping coefficient [kg/s]
         real(c_double) :: k_, d_
-        integer :: st
         status = HD_BAD_ARGUMENT
         if (.not. (present(k) .and. present(d))) return
-        call flat_invert_bounded(e, tc, m, u, k_phys, int(iend), k_, d_, st)
+        status = int(hertzdamp_invert_contact(e, tc, m, u, .true., k_phys, 0, int(iend), k_, d_), c_int)
         k = k_
         d = d_
-        status = int(st, c_int)
     end function hertzdamp_c_invert_bounded
+
+    !> `int hertzdamp_c_invert_law(double e, double tc, double m, double u, double k_phys,
+    !> int law, int end, double *k, double *d)`: hertzdamp_c_invert for the damping law
+    !> `law` (HERTZDAMP_DAMPING_*; d in kg s^-1 m^-q), with the physical-stiffness bound
+    !> when k_phys /= 0 (k_phys = 0: none; negative or not finite: HD_BAD_KPHYS).  On
+    !> failure *k = *d = 0; a NULL k or d gives HD_BAD_ARGUMENT.
+    integer(c_int) function hertzdamp_c_invert_law(e, tc, m, u, k_phys, law, iend, k, d) &
+            bind(c, name='hertzdamp_c_invert_law') result(status)
+        real(c_double), value, intent(in) :: e       !! target restitution
+        real(c_double), value, intent(in) :: tc      !! target contact time [s]
+        real(c_double), value, intent(in) :: m       !! effective mass [kg]
+        real(c_double), value, intent(in) :: u       !! impact velocity [m/s]
+        real(c_double), value, intent(in) :: k_phys  !! physical stiffness bound [N m^-3/2], 0 for none
+        integer(c_int), value, intent(in) :: law     !! damping law: 0 linear, 1 tsuji, 2 kuwabara-kono
+        integer(c_int), value, intent(in) :: iend    !! contact end: 0 overlap, 1 force
+        real(c_double), intent(out), optional :: k   !! Hertz stiffness [N m^-3/2]
+        real(c_double), intent(out), optional :: d   !! damping coefficient [kg s^-1 m^-q]
+        real(c_double) :: k_, d_
+        status = HD_BAD_ARGUMENT
+        if (.not. (present(k) .and. present(d))) return
+        status = int(hertzdamp_invert_contact(e, tc, m, u, k_phys /= 0.0_c_double, k_phys, int(law), int(iend), k_, &
+                                              d_), c_int)
+        k = k_
+        d = d_
+    end function hertzdamp_c_invert_law
 
     !> `int hertzdamp_c_invert_n(int n, const double *e, const double *tc, const double *m,
     !> const double *u, int end, double *k, double *d, int *status)`: hertzdamp_c_invert
-    !> for n contacts; status[i] is each contact's status.  Returns HD_OK when every
-    !> contact succeeded, else the first non-zero status (HD_BAD_ARGUMENT, touching
+    !> for n contacts, vectorised; status[i] is each contact's status.  Returns HD_OK when
+    !> every contact succeeded, else the first non-zero status (HD_BAD_ARGUMENT, touching
     !> nothing, when an array is NULL); n <= 0 does nothing.
     integer(c_int) function hertzdamp_c_invert_n(n, e, tc, m, u, iend, k, d, st) &
             bind(c, name='hertzdamp_c_invert_n') result(status)
@@ -100,61 +169,85 @@ contains
         real(c_double), intent(out), optional :: k(n) !! Hertz stiffnesses [N m^-3/2] (n)
         real(c_double), intent(out), optional :: d(n) !! damping coefficients [kg/s] (n)
         integer(c_int), intent(out), optional :: st(n) !! status of each contact (n)
+        status = hertzdamp_c_invert_law_n(n, e, tc, m, u, 0_c_int, iend, k, d, st)
+    end function hertzdamp_c_invert_n
+
+    !> `int hertzdamp_c_invert_law_n(int n, const double *e, const double *tc, const double *m,
+    !> const double *u, int law, int end, double *k, double *d, int *status)`:
+    !> hertzdamp_c_invert_law without the bound (k_phys = 0) for n contacts, vectorised;
+    !> status[i] is each contact's status.  Returns HD_OK when every contact succeeded,
+    !> else the first non-zero status (HD_BAD_ARGUMENT, touching nothing, when an array is
+    !> NULL); n <= 0 does nothing.  A result array may overlap an input array, in place or
+    !> shifted: the overlap is detected here and the inputs are copied first (the module's
+    !> array forms, like any Fortran procedure, take no aliased arguments).  The results are
+    !> those of separate arrays, bit for bit (the result arrays must not overlap each
+    !> other).
+    integer(c_int) function hertzdamp_c_invert_law_n(n, e, tc, m, u, law, iend, k, d, st) &
+            bind(c, name='hertzdamp_c_invert_law_n') result(status)
+        integer(c_int), value, intent(in) :: n       !! number of contacts
+        real(c_double), intent(in), optional, target :: e(n) !! target restitution coefficients (n)
+        real(c_double), intent(in), optional, target :: tc(n) !! target contact times [s] (n)
+        real(c_double), intent(in), optional, target :: m(n) !! effective masses [kg] (n)
+        real(c_double), intent(in), optional, target :: u(n) !! impact velocities [m/s] (n)
+        integer(c_int), value, intent(in) :: law     !! damping law: 0 linear, 1 tsuji, 2 kuwabara-kono
+        integer(c_int), value, intent(in) :: iend    !! contact end: 0 overlap, 1 force
+        real(c_double), intent(out), optional, target :: k(n) !! Hertz stiffnesses [N m^-3/2] (n)
+        real(c_double), intent(out), optional, target :: d(n) !! damping coefficients [kg s^-1 m^-q] (n)
+        integer(c_int), intent(out), optional, target :: st(n) !! status of each contact (n)
+        real(c_double), allocatable :: copy(:, :)
+        integer(c_intptr_t) :: ins(2, 4), outs(2, 3)
+        integer :: i, j, ierr
         status = HD_OK
         if (n <= 0) return
         status = HD_BAD_ARGUMENT   ! a NULL array
         if (.not. (present(e) .and. present(tc) .and. present(m) .and. present(u) .and. present(k) .and. &
                    present(d) .and. present(st))) return
-        ! vectorised over the arrays; the results of n calls of hertzdamp_c_invert
-        call invert_blocks(int(n), e, tc, m, u, .false., 0, int(iend), k, d, st)
-        status = first_failure(st)
-    end function hertzdamp_c_invert_n
-
-    !> The array inverse in blocks of `block` contacts through local arrays: every input
-    !> of a block is read before any of its results is written, so a result array may
-    !> be an input array itself (in place, as hertzdamp.h allows: k over e, d over tc,
-    !> ...).  A partial overlap (k starting inside e at another element) is not allowed.
-    !> flat_invert_law_n with `law` when with_law, else flat_invert_n.  Same kernel, the
-    !> same bits per contact as one call over the whole arrays.
-    subroutine invert_blocks(n, e, tc, m, u, with_law, law, iend, k, d, st)
-        integer, intent(in) :: n, law, iend
-        logical, intent(in) :: with_law
-        real(c_double), intent(in) :: e(n), tc(n), m(n), u(n)
-        real(c_double), intent(out) :: k(n), d(n)
-        integer(c_int), intent(out) :: st(n)
-        integer, parameter :: block = 256
-        real(c_double) :: kb(block), db(block)
-        integer :: sb(block), i0, nb
-        do i0 = 1, n, block
-            nb = min(block, n - i0 + 1)
-            if (.not. with_law) then
-                call flat_invert_n(nb, e(i0:i0 + nb - 1), tc(i0:i0 + nb - 1), m(i0:i0 + nb - 1), u(i0:i0 + nb - 1), &
-                                   iend, kb(1:nb), db(1:nb), sb(1:nb))
-            else
-                call flat_invert_law_n(nb, e(i0:i0 + nb - 1), tc(i0:i0 + nb - 1), m(i0:i0 + nb - 1), &
-                                       u(i0:i0 + nb - 1), law, iend, kb(1:nb), db(1:nb), sb(1:nb))
-            end if
-            k(i0:i0 + nb - 1) = kb(1:nb)
-            d(i0:i0 + nb - 1) = db(1:nb)
-            st(i0:i0 + nb - 1) = int(sb(1:nb), c_int)
-        end do
-    end subroutine invert_blocks
-
-    !> The first non-zero status of an array, or HD_OK.
-    pure integer(c_int) function first_failure(st) result(status)
-        integer(c_int), intent(in) :: st(:)
-        integer :: i
+        ! byte ranges [first, last] of the arrays
+        ins(:, 1) = byte_range(c_loc(e), 8 * int(n, c_intptr_t))
+        ins(:, 2) = byte_range(c_loc(tc), 8 * int(n, c_intptr_t))
+        ins(:, 3) = byte_range(c_loc(m), 8 * int(n, c_intptr_t))
+        ins(:, 4) = byte_range(c_loc(u), 8 * int(n, c_intptr_t))
+        outs(:, 1) = byte_range(c_loc(k), 8 * int(n, c_intptr_t))
+        outs(:, 2) = byte_range(c_loc(d), 8 * int(n, c_intptr_t))
+        outs(:, 3) = byte_range(c_loc(st), 4 * int(n, c_intptr_t))
+        if (any([((overlap(outs(:, j), ins(:, i)), i = 1, 4), j = 1, 3)])) then
+            ! a result would overwrite an input: work on copies
+            allocate (copy(n, 4), stat=ierr)
+            if (ierr /= 0) return
+            copy(:, 1) = e
+            copy(:, 2) = tc
+            copy(:, 3) = m
+            copy(:, 4) = u
+            call hertzdamp_invert(copy(:, 1), copy(:, 2), copy(:, 3), copy(:, 4), int(iend), k, d, st, law=int(law))
+        else
+            call hertzdamp_invert(e, tc, m, u, int(iend), k, d, st, law=int(law))
+        end if
         status = HD_OK
-        do i = 1, size(st)
+        do i = 1, n
             if (st(i) /= HD_OK) then
                 status = st(i)
                 return
             end if
         end do
-    end function first_failure
+    end function hertzdamp_c_invert_law_n
+
+    !> The first and last byte address of an array of `bytes` bytes at p.
+    pure function byte_range(p, bytes) result(r)
+        type(c_ptr), intent(in) :: p
+        integer(c_intptr_t), intent(in) :: bytes
+        integer(c_intptr_t) :: r(2)
+        r(1) = transfer(p, 0_c_intptr_t)
+        r(2) = r(1) + bytes - 1
+    end function byte_range
+
+    !> True when two byte ranges [first, last] share a byte.
+    pure logical function overlap(a, b)
+        integer(c_intptr_t), intent(in) :: a(2), b(2)
+        overlap = a(1) <= b(2) .and. b(1) <= a(2)
+    end function overlap
 
     !> `int hertzdamp_c_pair(double e, int end, double *alpha, double *tau_c)`: the
-    !> constants of a material pair, alpha(e) and tau_c(alpha(e)); per contact
+    !> constants of a material pair, alpha(e) and tau_c(alpha(e)) (linear law); per contact
     !> k = m (tau_c/T_c)^{5/2} u^{-1/2} and d = alpha m tau_c/T_c.  On failure
     !> *alpha = *tau_c = 0; a NULL pointer gives HD_BAD_ARGUMENT.
     integer(c_int) function hertzdamp_c_pair(e, iend, alpha, tau_c) &
@@ -165,6 +258,29 @@ contains
         real(c_double), intent(out), optional :: tau_c  !! dimensionless contact duration
         status = hertzdamp_c_pair_law(e, 0_c_int, iend, alpha, tau_c)
     end function hertzdamp_c_pair
+
+    !> `int hertzdamp_c_pair_law(double e, int law, int end, double *alpha, double *tau_c)`:
+    !> the constants of a material pair (hertzdamp_pair_init, host none) of the damping law
+    !> `law`; per contact t* = T_c/tau_c, k = m t*^{-5/2} u^{-1/2}, d = alpha m t*^{-1}
+    !> (u t*)^{-q}.  On failure *alpha = *tau_c = 0; a NULL pointer gives HD_BAD_ARGUMENT.
+    integer(c_int) function hertzdamp_c_pair_law(e, law, iend, alpha, tau_c) &
+            bind(c, name='hertzdamp_c_pair_law') result(status)
+        real(c_double), value, intent(in) :: e          !! target restitution
+        integer(c_int), value, intent(in) :: law        !! damping law: 0 linear, 1 tsuji, 2 kuwabara-kono
+        integer(c_int), value, intent(in) :: iend       !! contact end: 0 overlap, 1 force
+        real(c_double), intent(out), optional :: alpha  !! damping parameter alpha(e)
+        real(c_double), intent(out), optional :: tau_c  !! dimensionless contact duration
+        type(hertzdamp_pair_t) :: p
+        integer :: st
+        status = HD_BAD_ARGUMENT
+        if (.not. (present(alpha) .and. present(tau_c))) return
+        call hertzdamp_pair_init(e, int(law), int(iend), HD_HOST_NONE, 0.0_c_double, p, st)
+        alpha = p%alpha
+        tau_c = p%tau_c
+        status = int(st, c_int)
+    end function hertzdamp_c_pair_law
+
+    ! ================================================================ C: forward, messages
 
     !> `int hertzdamp_c_forward(double k, double d, double m, double u, int end,
     !> double *e, double *tc)`: restitution and contact time of a contact.  Without
@@ -182,85 +298,11 @@ contains
         status = hertzdamp_c_forward_law(k, d, m, u, 0_c_int, iend, e, tc)
     end function hertzdamp_c_forward
 
-    !> `int hertzdamp_c_invert_law(double e, double tc, double m, double u, double k_phys,
-    !> int law, int end, double *k, double *d)`: hertzdamp_c_invert for the damping law
-    !> `law` (HERTZDAMP_DAMPING_*; d in kg s^-1 m^-q), with the physical-stiffness bound
-    !> when k_phys > 0 (k_phys = 0: none).  On failure *k = *d = 0; a NULL k or d gives
-    !> HD_BAD_ARGUMENT.
-    integer(c_int) function hertzdamp_c_invert_law(e, tc, m, u, k_phys, law, iend, k, d) &
-            bind(c, name='hertzdamp_c_invert_law') result(status)
-        real(c_double), value, intent(in) :: e       !! target restitution
-        real(c_double), value, intent(in) :: tc      !! target contact time [s]
-        real(c_double), value, intent(in) :: m       !! effective mass [kg]
-        real(c_double), value, intent(in) :: u       !! impact velocity [m/s]
-        real(c_double), value, intent(in) :: k_phys  !! physical stiffness bound [N m^-3/2], 0 for none
-        integer(c_int), value, intent(in) :: law     !! damping law: 0 linear, 1 tsuji, 2 kuwabara-kono
-        integer(c_int), value, intent(in) :: iend    !! contact end: 0 overlap, 1 force
-        real(c_double), intent(out), optional :: k   !! Hertz stiffness [N m^-3/2]
-        real(c_double), intent(out), optional :: d   !! damping coefficient [kg s^-1 m^-q]
-        real(c_double) :: k_, d_
-        integer :: st
-        status = HD_BAD_ARGUMENT
-        if (.not. (present(k) .and. present(d))) return
-        call flat_invert_law(e, tc, m, u, k_phys, int(law), int(iend), k_, d_, st)
-        k = k_
-        d = d_
-        status = int(st, c_int)
-    end function hertzdamp_c_invert_law
-
-    !> `int hertzdamp_c_invert_law_n(int n, const double *e, const double *tc, const double *m,
-    !> const double *u, int law, int end, double *k, double *d, int *status)`:
-    !> hertzdamp_c_invert_law without the bound (k_phys = 0) for n contacts; status[i] is
-    !> each contact's status.  Returns HD_OK when every contact succeeded, else the first
-    !> non-zero status (HD_BAD_ARGUMENT, touching nothing, when an array is NULL); n <= 0
-    !> does nothing.
-    integer(c_int) function hertzdamp_c_invert_law_n(n, e, tc, m, u, law, iend, k, d, st) &
-            bind(c, name='hertzdamp_c_invert_law_n') result(status)
-        integer(c_int), value, intent(in) :: n       !! number of contacts
-        real(c_double), intent(in), optional :: e(n) !! target restitution coefficients (n)
-        real(c_double), intent(in), optional :: tc(n) !! target contact times [s] (n)
-        real(c_double), intent(in), optional :: m(n) !! effective masses [kg] (n)
-        real(c_double), intent(in), optional :: u(n) !! impact velocities [m/s] (n)
-        integer(c_int), value, intent(in) :: law     !! damping law: 0 linear, 1 tsuji, 2 kuwabara-kono
-        integer(c_int), value, intent(in) :: iend    !! contact end: 0 overlap, 1 force
-        real(c_double), intent(out), optional :: k(n) !! Hertz stiffnesses [N m^-3/2] (n)
-        real(c_double), intent(out), optional :: d(n) !! damping coefficients [kg s^-1 m^-q] (n)
-        integer(c_int), intent(out), optional :: st(n) !! status of each contact (n)
-        status = HD_OK
-        if (n <= 0) return
-        status = HD_BAD_ARGUMENT   ! a NULL array
-        if (.not. (present(e) .and. present(tc) .and. present(m) .and. present(u) .and. present(k) .and. &
-                   present(d) .and. present(st))) return
-        ! vectorised over the arrays; the results of n calls of hertzdamp_c_invert_law
-        call invert_blocks(int(n), e, tc, m, u, .true., int(law), int(iend), k, d, st)
-        status = first_failure(st)
-    end function hertzdamp_c_invert_law_n
-
-    !> `int hertzdamp_c_pair_law(double e, int law, int end, double *alpha, double *tau_c)`:
-    !> the material-pair constants of the damping law `law`; per contact t* = T_c/tau_c,
-    !> k = m t*^{-5/2} u^{-1/2}, d = alpha m t*^{-1} (u t*)^{-q}.  On failure
-    !> *alpha = *tau_c = 0; a NULL pointer gives HD_BAD_ARGUMENT.
-    integer(c_int) function hertzdamp_c_pair_law(e, law, iend, alpha, tau_c) &
-            bind(c, name='hertzdamp_c_pair_law') result(status)
-        real(c_double), value, intent(in) :: e          !! target restitution
-        integer(c_int), value, intent(in) :: law        !! damping law: 0 linear, 1 tsuji, 2 kuwabara-kono
-        integer(c_int), value, intent(in) :: iend       !! contact end: 0 overlap, 1 force
-        real(c_double), intent(out), optional :: alpha  !! damping parameter alpha(e)
-        real(c_double), intent(out), optional :: tau_c  !! dimensionless contact duration
-        real(c_double) :: a_, t_
-        integer :: st
-        status = HD_BAD_ARGUMENT
-        if (.not. (present(alpha) .and. present(tau_c))) return
-        call flat_pair_law(e, int(law), int(iend), a_, t_, st)
-        alpha = a_
-        tau_c = t_
-        status = int(st, c_int)
-    end function hertzdamp_c_pair_law
-
     !> `int hertzdamp_c_forward_law(double k, double d, double m, double u, int law,
     !> int end, double *e, double *tc)`: hertzdamp_c_forward for the damping law `law`
-    !> (d in kg s^-1 m^-q).  Without rebound *e = 0, *tc = DBL_MAX, status
-    !> HD_NO_REBOUND; on other failures *e = *tc = 0; NULL gives HD_BAD_ARGUMENT.
+    !> (d in kg s^-1 m^-q; the fit, as hertzdamp_forward_dim with HD_METHOD_FIT).  Without
+    !> rebound *e = 0, *tc = DBL_MAX, status HD_NO_REBOUND; on other failures
+    !> *e = *tc = 0; NULL gives HD_BAD_ARGUMENT.
     integer(c_int) function hertzdamp_c_forward_law(k, d, m, u, law, iend, e, tc) &
             bind(c, name='hertzdamp_c_forward_law') result(status)
         real(c_double), value, intent(in) :: k       !! Hertz stiffness [N m^-3/2]
@@ -271,11 +313,21 @@ contains
         integer(c_int), value, intent(in) :: iend    !! contact end: 0 overlap, 1 force
         real(c_double), intent(out), optional :: e   !! restitution coefficient
         real(c_double), intent(out), optional :: tc  !! contact time [s]
-        real(c_double) :: e_, tc_
+        real(c_double) :: e_, tc_, alpha, tstar
         integer :: st
         status = HD_BAD_ARGUMENT
         if (.not. (present(e) .and. present(tc))) return
-        call flat_forward_law(k, d, m, u, int(law), int(iend), e_, tc_, st)
+        ! without zeta_max: the fit skips the turning point (the same e, tc and status)
+        call hertzdamp_forward_dim(k, d, m, u, int(iend), HD_METHOD_FIT, alpha, tstar, e_, tc_, status=st, law=int(law))
+        select case (st)
+        case (HD_OK)
+        case (HD_NO_REBOUND)
+            e_ = 0.0_c_double
+            tc_ = huge(1.0_c_double)
+        case default
+            e_ = 0.0_c_double
+            tc_ = 0.0_c_double
+        end select
         e = e_
         tc = tc_
         status = int(st, c_int)
@@ -290,5 +342,183 @@ contains
         if (status >= 0 .and. status <= hertzdamp_max_status) i = int(status)
         msg = c_loc(c_messages(i))
     end function hertzdamp_c_strerror
+
+    ! ================================================================ legacy Fortran
+
+    !> HERTZDAMP_INVERT(E, TC, M, U, IEND, K, D, IERR): stiffness k and damping d that give
+    !> restitution e and contact time tc to a contact of effective mass m hit at speed u.
+    !> On failure k = d = 0, ierr /= 0.
+    subroutine legacy_invert(e, tc, m, u, iend, k, d, ierr) bind(c, name='hertzdamp_invert_')
+        real(c_double), intent(in) :: e     !! target restitution coefficient: 1e-3 <= e <= 1 (overlap), 1e-4 <= e <= 1 (force)
+        real(c_double), intent(in) :: tc    !! target contact time [s]
+        real(c_double), intent(in) :: m     !! effective mass [kg]
+        real(c_double), intent(in) :: u     !! impact velocity [m/s]
+        integer(c_int), intent(in) :: iend  !! contact end: 0 overlap, 1 force
+        real(c_double), intent(out) :: k    !! Hertz stiffness [N m^-3/2]
+        real(c_double), intent(out) :: d    !! linear damping coefficient [kg/s]
+        integer(c_int), intent(out) :: ierr !! 0 on success, else a status code
+        ierr = hertzdamp_c_invert(e, tc, m, u, iend, k, d)
+    end subroutine legacy_invert
+
+    !> HERTZDAMP_INVERT_BOUNDED(E, TC, M, U, KPHYS, IEND, K, D, IERR): HERTZDAMP_INVERT with
+    !> the physical-stiffness bound kphys = (4/3) E* sqrt(R*): where kphys <= k the contact
+    !> keeps k = kphys and d = alpha m^(3/5) kphys^(2/5) u^(1/5) (it is then longer than
+    !> tc, and the material's own stiffness is recovered once the time step is small
+    !> enough).  On failure k = d = 0, ierr /= 0.
+    subroutine legacy_invert_bounded(e, tc, m, u, kphys, iend, k, d, ierr) bind(c, name='hertzdamp_invert_bounded_')
+        real(c_double), intent(in) :: e     !! target restitution coefficient
+        real(c_double), intent(in) :: tc    !! target contact time [s]
+        real(c_double), intent(in) :: m     !! effective mass [kg]
+        real(c_double), intent(in) :: u     !! impact velocity [m/s]
+        real(c_double), intent(in) :: kphys !! physical stiffness bound [N m^-3/2]
+        integer(c_int), intent(in) :: iend  !! contact end: 0 overlap, 1 force
+        real(c_double), intent(out) :: k    !! Hertz stiffness [N m^-3/2]
+        real(c_double), intent(out) :: d    !! linear damping coefficient [kg/s]
+        integer(c_int), intent(out) :: ierr !! 0 on success, else a status code
+        ierr = hertzdamp_c_invert_bounded(e, tc, m, u, kphys, iend, k, d)
+    end subroutine legacy_invert_bounded
+
+    !> HERTZDAMP_INVERT_N(N, E, TC, M, U, IEND, K, D, IERR): HERTZDAMP_INVERT for n contacts
+    !> at once (one contact-end definition for all), vectorised; the same results, bit for
+    !> bit.  n <= 0 does nothing.
+    subroutine legacy_invert_n(n, e, tc, m, u, iend, k, d, ierr) bind(c, name='hertzdamp_invert_n_')
+        integer(c_int), intent(in) :: n           !! number of contacts
+        real(c_double), intent(in) :: e(n)        !! target restitution coefficients (n)
+        real(c_double), intent(in) :: tc(n)       !! target contact times [s] (n)
+        real(c_double), intent(in) :: m(n)        !! effective masses [kg] (n)
+        real(c_double), intent(in) :: u(n)        !! impact velocities [m/s] (n)
+        integer(c_int), intent(in) :: iend        !! contact end: 0 overlap, 1 force
+        real(c_double), intent(out) :: k(n)       !! Hertz stiffnesses [N m^-3/2] (n)
+        real(c_double), intent(out) :: d(n)       !! damping coefficients [kg/s] (n)
+        integer(c_int), intent(out) :: ierr(n)    !! status of each contact (n)
+        integer(c_int) :: first
+        first = hertzdamp_c_invert_law_n(n, e, tc, m, u, 0_c_int, iend, k, d, ierr)
+    end subroutine legacy_invert_n
+
+    !> HERTZDAMP_PAIR(E, IEND, ALPHA, TAUC, IERR): the constants of a material pair,
+    !> alpha(e) and tau_c(alpha(e)), which depend on e and the contact end only.  Per
+    !> contact (mass m, impact speed u, contact time tc):
+    !>     k = m (tauc/tc)**2.5 / sqrt(u),   d = alpha m tauc/tc
+    !> (d is the same for every contact of the pair with the same tc).  On failure
+    !> alpha = tauc = 0, ierr /= 0.
+    subroutine legacy_pair(e, iend, alpha, tauc, ierr) bind(c, name='hertzdamp_pair_')
+        real(c_double), intent(in) :: e      !! target restitution coefficient
+        integer(c_int), intent(in) :: iend   !! contact end: 0 overlap, 1 force
+        real(c_double), intent(out) :: alpha !! damping parameter alpha(e)
+        real(c_double), intent(out) :: tauc  !! dimensionless contact duration tau_c(alpha)
+        integer(c_int), intent(out) :: ierr  !! 0 on success, else a status code
+        ierr = hertzdamp_c_pair_law(e, 0_c_int, iend, alpha, tauc)
+    end subroutine legacy_pair
+
+    !> HERTZDAMP_FORWARD(K, D, M, U, IEND, E, TC, IERR): restitution e and contact time tc
+    !> of the contact (k, d, m, u).  Without rebound e = 0, tc = huge(1d0) and ierr = 1
+    !> (HD_NO_REBOUND); on other failures e = tc = 0.
+    subroutine legacy_forward(k, d, m, u, iend, e, tc, ierr) bind(c, name='hertzdamp_forward_')
+        real(c_double), intent(in) :: k     !! Hertz stiffness [N m^-3/2]
+        real(c_double), intent(in) :: d     !! linear damping coefficient [kg/s]
+        real(c_double), intent(in) :: m     !! effective mass [kg]
+        real(c_double), intent(in) :: u     !! impact velocity [m/s]
+        integer(c_int), intent(in) :: iend  !! contact end: 0 overlap, 1 force
+        real(c_double), intent(out) :: e    !! restitution coefficient
+        real(c_double), intent(out) :: tc   !! contact time [s]
+        integer(c_int), intent(out) :: ierr !! 0 on success, 1 no rebound, else a status code
+        ierr = hertzdamp_c_forward_law(k, d, m, u, 0_c_int, iend, e, tc)
+    end subroutine legacy_forward
+
+    !> HERTZDAMP_INVERT_LAW(E, TC, M, U, KPHYS, ILAW, IEND, K, D, IERR): HERTZDAMP_INVERT for
+    !> the damping law ilaw (0 linear, 1 tsuji, 2 kuwabara-kono: damping force
+    !> d zeta^q zeta', q = 0, 1/4, 1/2, d in kg s^-1 m^-q), with the physical-stiffness
+    !> bound kphys when kphys /= 0 (kphys = 0: no bound).  On failure k = d = 0, ierr /= 0.
+    subroutine legacy_invert_law(e, tc, m, u, kphys, ilaw, iend, k, d, ierr) bind(c, name='hertzdamp_invert_law_')
+        real(c_double), intent(in) :: e     !! target restitution coefficient
+        real(c_double), intent(in) :: tc    !! target contact time [s]
+        real(c_double), intent(in) :: m     !! effective mass [kg]
+        real(c_double), intent(in) :: u     !! impact velocity [m/s]
+        real(c_double), intent(in) :: kphys !! physical stiffness bound [N m^-3/2], 0 for none
+        integer(c_int), intent(in) :: ilaw  !! damping law: 0 linear, 1 tsuji, 2 kuwabara-kono
+        integer(c_int), intent(in) :: iend  !! contact end: 0 overlap, 1 force
+        real(c_double), intent(out) :: k    !! Hertz stiffness [N m^-3/2]
+        real(c_double), intent(out) :: d    !! damping coefficient [kg s^-1 m^-q]
+        integer(c_int), intent(out) :: ierr !! 0 on success, else a status code
+        ierr = hertzdamp_c_invert_law(e, tc, m, u, kphys, ilaw, iend, k, d)
+    end subroutine legacy_invert_law
+
+    !> HERTZDAMP_INVERT_LAW_N(N, E, TC, M, U, ILAW, IEND, K, D, IERR): HERTZDAMP_INVERT_LAW
+    !> without the bound (KPHYS = 0) for n contacts at once (one damping law and contact
+    !> end for all), vectorised; the same results, bit for bit.  n <= 0 does nothing.
+    subroutine legacy_invert_law_n(n, e, tc, m, u, ilaw, iend, k, d, ierr) bind(c, name='hertzdamp_invert_law_n_')
+        integer(c_int), intent(in) :: n           !! number of contacts
+        real(c_double), intent(in) :: e(n)        !! target restitution coefficients (n)
+        real(c_double), intent(in) :: tc(n)       !! target contact times [s] (n)
+        real(c_double), intent(in) :: m(n)        !! effective masses [kg] (n)
+        real(c_double), intent(in) :: u(n)        !! impact velocities [m/s] (n)
+        integer(c_int), intent(in) :: ilaw        !! damping law: 0 linear, 1 tsuji, 2 kuwabara-kono
+        integer(c_int), intent(in) :: iend        !! contact end: 0 overlap, 1 force
+        real(c_double), intent(out) :: k(n)       !! Hertz stiffnesses [N m^-3/2] (n)
+        real(c_double), intent(out) :: d(n)       !! damping coefficients [kg s^-1 m^-q] (n)
+        integer(c_int), intent(out) :: ierr(n)    !! status of each contact (n)
+        integer(c_int) :: first
+        first = hertzdamp_c_invert_law_n(n, e, tc, m, u, ilaw, iend, k, d, ierr)
+    end subroutine legacy_invert_law_n
+
+    !> HERTZDAMP_PAIR_LAW(E, ILAW, IEND, ALPHA, TAUC, IERR): the material-pair constants of
+    !> the damping law ilaw; per contact
+    !>     tstar = tc/tauc,  k = m tstar**(-2.5) / sqrt(u),  d = alpha m / tstar / (u tstar)**q.
+    subroutine legacy_pair_law(e, ilaw, iend, alpha, tauc, ierr) bind(c, name='hertzdamp_pair_law_')
+        real(c_double), intent(in) :: e      !! target restitution coefficient
+        integer(c_int), intent(in) :: ilaw   !! damping law: 0 linear, 1 tsuji, 2 kuwabara-kono
+        integer(c_int), intent(in) :: iend   !! contact end: 0 overlap, 1 force
+        real(c_double), intent(out) :: alpha !! damping parameter alpha(e)
+        real(c_double), intent(out) :: tauc  !! dimensionless contact duration tau_c(alpha)
+        integer(c_int), intent(out) :: ierr  !! 0 on success, else a status code
+        ierr = hertzdamp_c_pair_law(e, ilaw, iend, alpha, tauc)
+    end subroutine legacy_pair_law
+
+    !> HERTZDAMP_FORWARD_LAW(K, D, M, U, ILAW, IEND, E, TC, IERR): HERTZDAMP_FORWARD for the
+    !> damping law ilaw (d in kg s^-1 m^-q).
+    subroutine legacy_forward_law(k, d, m, u, ilaw, iend, e, tc, ierr) bind(c, name='hertzdamp_forward_law_')
+        real(c_double), intent(in) :: k     !! Hertz stiffness [N m^-3/2]
+        real(c_double), intent(in) :: d     !! damping coefficient [kg s^-1 m^-q]
+        real(c_double), intent(in) :: m     !! effective mass [kg]
+        real(c_double), intent(in) :: u     !! impact velocity [m/s]
+        integer(c_int), intent(in) :: ilaw  !! damping law: 0 linear, 1 tsuji, 2 kuwabara-kono
+        integer(c_int), intent(in) :: iend  !! contact end: 0 overlap, 1 force
+        real(c_double), intent(out) :: e    !! restitution coefficient
+        real(c_double), intent(out) :: tc   !! contact time [s]
+        integer(c_int), intent(out) :: ierr !! 0 on success, 1 no rebound, else a status code
+        ierr = hertzdamp_c_forward_law(k, d, m, u, ilaw, iend, e, tc)
+    end subroutine legacy_forward_law
+
+    !> HERTZDAMP_PAIR_INIT(E, ILAW, IEND, IHOST, STEPS, PAIR, IERR): the constants of a
+    !> material pair into DOUBLE PRECISION PAIR(8) (hertzdamp_pair_init): ihost = 0 the
+    !> continuous model, else the host scheme's exact constants at steps = T_c/dt steps per
+    !> contact.  On failure PAIR is invalid (HERTZDAMP_PAIR_KD refuses it), ierr /= 0.
+    subroutine legacy_pair_init(e, ilaw, iend, ihost, steps, pair, ierr) bind(c, name='hertzdamp_pair_init_')
+        real(c_double), intent(in) :: e              !! target restitution coefficient
+        integer(c_int), intent(in) :: ilaw           !! damping law: 0 linear, 1 tsuji, 2 kuwabara-kono
+        integer(c_int), intent(in) :: iend           !! contact end: 0 overlap, 1 force
+        integer(c_int), intent(in) :: ihost          !! host scheme: 0 none, 1 lammps, 2 mfix-euler, 3 mfix-ab2,
+                                                     !! 4 verlet, 5 lammps-phase
+        real(c_double), intent(in) :: steps          !! steps per contact N (not used by ihost = 0)
+        type(hertzdamp_pair_t), intent(out) :: pair    !! DOUBLE PRECISION PAIR(8): the pair's constants
+        integer(c_int), intent(out) :: ierr          !! 0 on success, else a status code
+        ierr = hertzdamp_c_pair_init(e, ilaw, iend, ihost, steps, pair)
+    end subroutine legacy_pair_init
+
+    !> HERTZDAMP_PAIR_KD(PAIR, TC, M, U, KPHYS, K, D, IERR): k and d of one contact from the
+    !> constants of HERTZDAMP_PAIR_INIT: tc = N dt its target contact time, m its effective
+    !> mass, u its impact speed; kphys > 0 the physical stiffness bound (<= 0: none).  On
+    !> failure k = d = 0, ierr /= 0.
+    subroutine legacy_pair_kd(pair, tc, m, u, kphys, k, d, ierr) bind(c, name='hertzdamp_pair_kd_')
+        type(hertzdamp_pair_t), intent(in) :: pair     !! DOUBLE PRECISION PAIR(8) of HERTZDAMP_PAIR_INIT
+        real(c_double), intent(in) :: tc             !! target contact time [s]
+        real(c_double), intent(in) :: m              !! effective mass [kg]
+        real(c_double), intent(in) :: u              !! impact velocity [m/s]
+        real(c_double), intent(in) :: kphys          !! physical stiffness bound [N m^-3/2], <= 0 for none
+        real(c_double), intent(out) :: k             !! Hertz stiffness [N m^-3/2]
+        real(c_double), intent(out) :: d             !! damping coefficient [kg s^-1 m^-q]
+        integer(c_int), intent(out) :: ierr          !! 0 on success, else a status code
+        ierr = hertzdamp_c_pair_kd(pair, tc, m, u, kphys, k, d)
+    end subroutine legacy_pair_kd
 
 end module hertzdamp_capi

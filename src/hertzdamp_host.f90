@@ -40,10 +40,11 @@
 module hertzdamp_host
     use hertzdamp_kinds, only: hertzdamp_rk
     use hertzdamp_status, only: HD_OK, HD_NO_REBOUND, HD_NO_CONVERGENCE, HD_BAD_ALPHA, HD_BAD_END, HD_BAD_ARGUMENT, &
-                                HD_BAD_HOST, HD_BAD_STEPS, HD_HOST_UNREACHABLE, HD_END_OVERLAP, HD_END_FORCE, &
-                                HD_DAMPING_LINEAR, HD_DAMPING_TSUJI, HD_DAMPING_KUWABARA_KONO
+                                HD_BAD_HOST, HD_BAD_STEPS, HD_HOST_UNREACHABLE
+    use hertzdamp_ends, only: HD_END_OVERLAP, HD_END_FORCE
     use hertzdamp_constants, only: hertzdamp_pi
-    use hertzdamp_laws, only: hertzdamp_law_status, hertzdamp_law_q
+    use hertzdamp_laws, only: hertzdamp_law_status, hertzdamp_law_q, HD_DAMPING_LINEAR, HD_DAMPING_TSUJI, &
+                              HD_DAMPING_KUWABARA_KONO
     use hertzdamp_fit, only: hertzdamp_fit_inverse
     use hertzdamp_rk45, only: hertzdamp_rk45_collide, hertzdamp_collision
     implicit none

@@ -4,8 +4,8 @@
 module hertzdamp_methods
     use hertzdamp_kinds, only: hertzdamp_rk
     use hertzdamp_status, only: HD_OK, HD_NO_REBOUND, HD_NOT_SUPPORTED, HD_BAD_ARGUMENT, HD_OUT_OF_RANGE, &
-                                HD_END_OVERLAP, HD_END_FORCE, HD_OUTSIDE_VALIDITY, HD_BAD_ORDER, HD_BAD_END, &
-                                HD_INACCURATE
+                                HD_OUTSIDE_VALIDITY, HD_BAD_ORDER, HD_BAD_END, HD_INACCURATE
+    use hertzdamp_ends, only: HD_END_OVERLAP, HD_END_FORCE
     use hertzdamp_laws, only: HD_DAMPING_LINEAR, hertzdamp_law_status
     use hertzdamp_series, only: hertzdamp_series_eval, hertzdamp_pade_eval
     use hertzdamp_scaling, only: hertzdamp_reduce

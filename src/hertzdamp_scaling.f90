@@ -8,6 +8,13 @@
 !> overflows or underflows over the many decades DEM codes use (m down to 1e-20 kg,
 !> k up to 1e15 N m^-3/2, ...); a result outside double precision gives
 !> HD_OUT_OF_RANGE, never Inf or NaN.
+!>
+!> The logarithmic forms of t* (hertzdamp_log_tstar), of k (hertzdamp_log_k) and of d
+!> (hertzdamp_scale_log_d) are written here once: hertzdamp_reduce and hertzdamp_expand
+!> use them, and so does the per-pair API (hertzdamp_pair) for inputs outside the direct
+!> range and for the stiffness bound.  (They sit here, below hertzdamp_pair, because the
+!> forward maps that use hertzdamp_reduce sit below the host schemes that the pair
+!> module calls.)
 module hertzdamp_scaling
     use hertzdamp_kinds, only: hertzdamp_rk
     use hertzdamp_status, only: HD_OK, HD_BAD_MASS, HD_BAD_VELOCITY, HD_BAD_STIFFNESS, &
@@ -24,6 +31,7 @@ module hertzdamp_scaling
 
     public :: hertzdamp_reduce, hertzdamp_expand, hertzdamp_check_positive, hertzdamp_safe_exp, &
               hertzdamp_safe_exp_or_zero
+    public :: hertzdamp_log_tstar, hertzdamp_log_k, hertzdamp_scale_log_d
 
 contains
 
@@ -65,6 +73,45 @@ contains
         call hertzdamp_safe_exp(x, y, status)
     end subroutine hertzdamp_safe_exp_or_zero
 
+    !> ln t* of a contact of mass m, stiffness k and impact speed u from their logarithms:
+    !> t* = m^(2/5) k^(-2/5) u^(-1/5).  Two roundings of the one formula, each kept
+    !> because public results depend on it bit for bit: grouped = .false.
+    !> 0.4 ln m - 0.4 ln k - 0.2 ln u (hertzdamp_reduce, the forward maps); grouped = .true.
+    !> 0.4 (ln m - ln k) - 0.2 ln u (the stiffness bound of the inverse).
+    pure elemental real(wp) function hertzdamp_log_tstar(lm, lk, lu, grouped) result(lts)
+        real(wp), intent(in) :: lm       !! ln m
+        real(wp), intent(in) :: lk       !! ln k
+        real(wp), intent(in) :: lu       !! ln u
+        logical, intent(in) :: grouped   !! which rounding (see above)
+        if (grouped) then
+            lts = 0.4_wp * (lm - lk) - 0.2_wp * lu
+        else
+            lts = 0.4_wp * lm - 0.4_wp * lk - 0.2_wp * lu
+        end if
+    end function hertzdamp_log_tstar
+
+    !> ln k = ln m - (5/2) ln t* - (1/2) ln u: the stiffness whose time unit is t*.
+    pure elemental real(wp) function hertzdamp_log_k(lts, lm, lu) result(lk)
+        real(wp), intent(in) :: lts   !! ln t*
+        real(wp), intent(in) :: lm    !! ln m
+        real(wp), intent(in) :: lu    !! ln u
+        lk = lm - 2.5_wp * lts - 0.5_wp * lu
+    end function hertzdamp_log_k
+
+    !> d = alpha m t*^(-1) (u t*)^(-q) by logarithms (0 for alpha = 0 and on underflow;
+    !> HD_OUT_OF_RANGE on overflow; nothing is done when status is already set).
+    pure elemental subroutine hertzdamp_scale_log_d(lts, lm, lu, alpha, q, d, status)
+        real(wp), intent(in) :: lts      !! ln t*
+        real(wp), intent(in) :: lm       !! ln m
+        real(wp), intent(in) :: lu       !! ln u
+        real(wp), intent(in) :: alpha    !! damping parameter, >= 0
+        real(wp), intent(in) :: q        !! exponent of the law
+        real(wp), intent(out) :: d       !! damping coefficient [kg s^-1 m^-q]
+        integer, intent(inout) :: status !! HD_OK, or HD_OUT_OF_RANGE
+        d = 0.0_wp
+        if (alpha > 0.0_wp) call hertzdamp_safe_exp_or_zero(log(alpha) + lm - lts - q * (lu + lts), d, status)
+    end subroutine hertzdamp_scale_log_d
+
     !> Exponent q of an optional law argument (0 when absent), or HD_BAD_LAW.
     pure subroutine law_exponent(law, q, status)
         integer, intent(in), optional :: law
@@ -103,7 +150,7 @@ contains
             end if
         end if
         if (status /= HD_OK) return
-        ltstar = 0.4_wp * log(m) - 0.4_wp * log(k) - 0.2_wp * log(u)
+        ltstar = hertzdamp_log_tstar(log(m), log(k), log(u), .false.)
         call hertzdamp_safe_exp(ltstar, tstar, status)
         if (d > 0.0_wp) then
             if (q == 0.0_wp) then
@@ -144,15 +191,8 @@ contains
             end if
         end if
         if (status /= HD_OK) return
-        call hertzdamp_safe_exp(log(m) - 2.5_wp * log(tstar) - 0.5_wp * log(u), k, status)
-        if (alpha > 0.0_wp) then
-            if (q == 0.0_wp) then
-                call hertzdamp_safe_exp_or_zero(log(alpha) + log(m) - log(tstar), d, status)
-            else
-                call hertzdamp_safe_exp_or_zero(log(alpha) + log(m) - log(tstar) - q * (log(u) + log(tstar)), d, &
-                                                status)
-            end if
-        end if
+        call hertzdamp_safe_exp(hertzdamp_log_k(log(tstar), log(m), log(u)), k, status)
+        call hertzdamp_scale_log_d(log(tstar), log(m), log(u), alpha, q, d, status)
         if (status /= HD_OK) then
             k = 0.0_wp
             d = 0.0_wp

@@ -4,8 +4,12 @@
 !> these codes and `hertzdamp_message` explains it.  The values are stable across
 !> versions (the C and legacy Fortran entry points return them too).
 module hertzdamp_status
+    ! The contact-end codes live in hertzdamp_ends; they are re-exported here only for the
+    ! modules that still take them from this one (to be dropped when none does).
+    use hertzdamp_ends, only: HD_END_OVERLAP, HD_END_FORCE, hertzdamp_end_name
     implicit none
     private
+    public :: HD_END_OVERLAP, HD_END_FORCE, hertzdamp_end_name
 
     integer, parameter, public :: HD_OK = 0                !! success
     integer, parameter, public :: HD_NO_REBOUND = 1        !! overlap end with alpha >= alpha_c: e = 0, tau_c = +inf
@@ -36,22 +40,12 @@ module hertzdamp_status
     integer, parameter, public :: HD_BAD_HOST = 26         !! host scheme not one of the HD_HOST_* codes (hertzdamp_host)
     integer, parameter, public :: HD_BAD_STEPS = 27        !! steps per contact (or step h) not finite or outside the allowed range
     integer, parameter, public :: HD_HOST_UNREACHABLE = 28 !! no alpha reaches this e with the host at so few steps per contact
-
-    !> Contact ends when the overlap returns to zero (default).
-    integer, parameter, public :: HD_END_OVERLAP = 0
-    !> Contact ends when the total contact force returns to zero.
-    integer, parameter, public :: HD_END_FORCE = 1
-
-    !> Damping laws (hertzdamp_laws, doc/damping-laws.md): force d zeta^q zeta' with
-    !> q = 0 (linear, the default), 1/4 (tsuji), 1/2 (kuwabara-kono).
-    integer, parameter, public :: HD_DAMPING_LINEAR = 0
-    integer, parameter, public :: HD_DAMPING_TSUJI = 1
-    integer, parameter, public :: HD_DAMPING_KUWABARA_KONO = 2
+    integer, parameter, public :: HD_BAD_PAIR = 29         !! pair constants not set by hertzdamp_pair_init, or changed since
 
     !> Length of the stored messages (each fits, blank-padded).
     integer, parameter, public :: hertzdamp_message_len = 192
     !> Largest status code with a message of its own.
-    integer, parameter, public :: hertzdamp_max_status = 28
+    integer, parameter, public :: hertzdamp_max_status = 29
     !> The message of every status code 0..hertzdamp_max_status, then that of unknown
     !> codes: the one table behind hertzdamp_message and the C hertzdamp_strerror.
     character(len=hertzdamp_message_len), parameter, public :: &
@@ -92,9 +86,10 @@ module hertzdamp_status
         'invalid steps per contact: must be finite with 2 <= N <= 1e5 (dimensionless step h: 1e-5 <= h <= 4)', &
         'the host cannot reach this restitution coefficient at so few steps per contact: no damping ' // &
             'alpha >= 0 gives it (hertzdamp_host_min_steps tells which N can)', &
+        'invalid pair: not set by hertzdamp_pair_init (or its failure), or changed since', &
         'unknown status code']
 
-    public :: hertzdamp_message, hertzdamp_end_name
+    public :: hertzdamp_message
 
 contains
 
@@ -108,16 +103,5 @@ contains
             msg = trim(hertzdamp_message_table(hertzdamp_max_status + 1))
         end if
     end function hertzdamp_message
-
-    !> Name of a contact-end definition: 'overlap' or 'force'.
-    pure function hertzdamp_end_name(iend) result(name)
-        integer, intent(in) :: iend   !! HD_END_OVERLAP or HD_END_FORCE
-        character(len=:), allocatable :: name
-        select case (iend)
-        case (HD_END_OVERLAP); name = 'overlap'
-        case (HD_END_FORCE); name = 'force'
-        case default; name = 'unknown'
-        end select
-    end function hertzdamp_end_name
 
 end module hertzdamp_status

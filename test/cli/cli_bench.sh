@@ -2,8 +2,9 @@
 # Checks of `hertzdamp bench`: the quick CSV run (header, finite non-negative numbers,
 # for every damping law: accuracy of rk45 at tol 1e-10, of the fit and of the iterative
 # baselines at the accuracy they are asked for, every entry point present; the tsuji
-# rows against the closed form), --damping, the figures (every entry point of every law
-# bit-identical to the module scalar call; speed is reported, never asserted) and bad
+# rows against the closed form; the per-pair rows), --damping, the figures (every entry
+# point of every law bit-identical to the module scalar call, the per-pair rows
+# bit-identical; speed is reported, never asserted) and bad
 # usage (exit code, empty stdout, no file left behind).
 # $HERTZDAMP_BIN is the program.
 set -u
@@ -31,7 +32,7 @@ check "CSV has rows" $([ "$(wc -l <"$tmp/out.csv")" -gt 1 ]; echo $?)
 # every row: 11 fields, known problem and law, numbers finite and >= 0 (or empty), ns_per_call present
 bad=$(awk -F, 'NR > 1 {
     if (NF != 11) { print "line " NR ": " NF " fields"; next }
-    if ($1 != "forward" && $1 != "inverse" && $1 != "entry" && $1 != "closed-form") print "line " NR ": problem " $1
+    if ($1 != "forward" && $1 != "inverse" && $1 != "entry" && $1 != "closed-form" && $1 != "pair") print "line " NR ": problem " $1
     if ($2 != "linear" && $2 != "tsuji" && $2 != "kuwabara-kono") print "line " NR ": damping " $2
     if ($3 == "") print "line " NR ": empty method"
     if ($10 == "") print "line " NR ": empty ns_per_call"
@@ -123,6 +124,13 @@ r=$(awk -F, '$1 == "closed-form" && $3 == "bound-d"' "$tmp/out.csv")
 IFS=, read -r _ _ _ _ _ _ _ _ ed _ _ <<<"$r"
 below "$ed" 1e-14; check "closed-form: bounded d within $ed < 1e-14 of alpha sqrt(m k)" $?
 
+# the per-pair rows (linear law): the bare formula, the C and Fortran pair_kd, the arrays,
+# the broadcast inverse (timed, never asserted)
+for w in bare c-pair-kd pair-kd bare-vec pair-kd-array invert-each-tc-m invert-tc-m invert-tc; do
+  check "pair $w row present" \
+    $([ -n "$(awk -F, -v w=$w '$1 == "pair" && $2 == "linear" && $3 == w && $10 != ""' "$tmp/out.csv")" ]; echo $?)
+done
+
 # --damping: the rows of one law
 timeout 120 "$bin" bench --quick --damping kuwabara-kono --format csv --progress >"$tmp/kk.csv" 2>"$tmp/err.txt"
 check "bench --quick --damping kuwabara-kono --progress exits 0 ($(head -c 300 "$tmp/err.txt"))" $?
@@ -131,7 +139,7 @@ check "bench --progress: progress lines on stderr" $(grep -q '^hertzdamp: bench:
 check "bench --progress: the CSV on stdout has no progress text" $(! grep -q 'hertzdamp: bench' "$tmp/kk.csv"; echo $?)
 check "--damping kuwabara-kono: every row of that law, forward, inverse and entry ones" \
   $(awk -F, 'NR > 1 { n++; if ($2 != "kuwabara-kono") bad = 1; p[$1] = 1 }
-             END { exit !(n > 20 && !bad && p["forward"] && p["inverse"] && p["entry"] && !p["closed-form"]) }' \
+             END { exit !(n > 20 && !bad && p["forward"] && p["inverse"] && p["entry"] && !p["closed-form"] && !p["pair"]) }' \
       "$tmp/kk.csv"; echo $?)
 
 # ------------------------------------------------------------ the plot
@@ -149,6 +157,10 @@ if command -v gnuplot >/dev/null 2>&1; then
     check "figure: every entry point bit-identical to the module scalar call ($law)" \
       $(python3 -c 'import json,sys; d=json.load(open(sys.argv[1])); assert any(v.startswith(sys.argv[2] + ": entry points: k, d and status bit-identical") for k, v in d.items() if k.startswith("figure"))' "$tmp/out.json" $law 2>/dev/null; echo $?)
   done
+  check "figure: the per-pair rows bit-identical (C, scalar, array pair_kd; broadcast inverse)" \
+    $(python3 -c 'import json,sys; d=json.load(open(sys.argv[1])); assert any(v.startswith("pair: C, scalar and array pair_kd bit-identical") and "(0 results not ok)" in v for k, v in d.items() if k.startswith("figure"))' "$tmp/out.json" 2>/dev/null; echo $?)
+  check "figure: the per-contact C call against the bare formula, with its target" \
+    $(python3 -c 'import json,sys; d=json.load(open(sys.argv[1])); assert any(v.startswith("pair: ns per contact") and "target at most 1.50 x" in v for k, v in d.items() if k.startswith("figure"))' "$tmp/out.json" 2>/dev/null; echo $?)
   check "figure: tsuji array calls identical to one-contact calls, bound active everywhere" \
     $(python3 -c 'import json,sys; d=json.load(open(sys.argv[1])); assert any(v.startswith("tsuji: the fit") and "0 library results not ok, 0 contacts with the bound inactive, 0 contacts where an array call differs" in v for k, v in d.items() if k.startswith("figure"))' "$tmp/out.json" 2>/dev/null; echo $?)
 fi

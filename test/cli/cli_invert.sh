@@ -217,6 +217,54 @@ run invert --e 0.5 --tc 1e-5 --velocity 1 --radius 1e-3 --density 2500 --youngs-
 check "E* from body 1's modulus: names --youngs-modulus" grep -q -- '^hertzdamp: --youngs-modulus 1e-320 with' "$ERR"
 expect_fail 2 "timestep without a stiffness" timestep --mass 1 --e 0.9 --velocity 1
 expect_fail 2 "timestep bad velocity" timestep $GLASS --e 0.9 --velocity 0
+# --host: the constants of the host's N-step collision (hertzdamp_pair_init); the rows add
+# e_spread and tc_spread.  host none is the continuous model: the row of no --host.
+HHEAD="e,tc,velocity,mass,radius_eff,k_phys,alpha,tau_c,t_star,k,d,bound_active,tc_actual,e_spread,tc_spread,status"
+a=$("$BIN" invert --e 0.5 --dt 1e-6 --steps 10 --mass 1e-3 --velocity 1 --format csv | tail -n 1)
+run invert --e 0.5 --dt 1e-6 --steps 10 --mass 1e-3 --velocity 1 --host none --format csv
+check "--host none: exit 0, header with the spreads (exit $RC)" test "$RC" -eq 0 -a "$(head -n 1 "$OUT")" = "$HHEAD"
+check "--host none: the row of no --host, spreads 0" test "$(tail -n 1 "$OUT" | cut -d, -f1-13,16)" = "$(cut -d, -f1-14 <<<"$a")" \
+  -a "$(tail -n 1 "$OUT" | cut -d, -f14,15)" = "0.000000000000000E+000,0.000000000000000E+000"
+run invert --e 0.2,0.5,0.9 --dt 1e-6 --steps 20 --mass 1e-3 --velocity 0.1,2 --host lammps --format csv
+check "--host lammps: exit 0, six rows (exit $RC: $(cat "$ERR"))" test "$RC" -eq 0 -a "$(wc -l <"$OUT")" -eq 7
+# each row: k = m (tau_c/T_c)^(5/2) u^(-1/2) and d = alpha m tau_c/T_c with its own alpha,
+# tau_c; tc_actual = T_c (no bound); spreads finite and >= 0
+check "--host lammps: k, d from the row's alpha, tau_c; tc_actual = T_c; spreads >= 0" python3 -c '
+import csv, sys
+rows = list(csv.DictReader(open(sys.argv[1])))
+for r in rows:
+    tc, m, u, a, tau = (float(r[x]) for x in ("tc", "mass", "velocity", "alpha", "tau_c"))
+    k, d = float(r["k"]), float(r["d"])
+    assert abs(k / (m * (tau / tc) ** 2.5 / u ** 0.5) - 1) < 1e-12, r
+    assert abs(d / (a * m * tau / tc) - 1) < 1e-12, r
+    assert abs(float(r["tc_actual"]) / tc - 1) < 1e-14 and r["bound_active"] == "false", r
+    assert float(r["e_spread"]) >= 0 and float(r["tc_spread"]) >= 0 and r["status"] == "ok", r
+' "$OUT"
+run invert --e 0.5 --dt 1e-6 --steps 2,20 --mass 1e-3 --velocity 1 --host lammps --format csv
+check "--host lammps, N = 2 beside N = 20: exit 3, both rows (exit $RC)" test "$RC" -eq 3 -a "$(wc -l <"$OUT")" -eq 3
+check "--host lammps, N = 2: the row is outside-validity, N = 20 ok" \
+  test "$(sed -n 2p "$OUT" | cut -d, -f7,16)" = ",outside-validity" -a "$(sed -n 3p "$OUT" | cut -d, -f16)" = "ok"
+check "--host lammps, N = 2: says which N can ($(cat "$ERR"))" \
+  grep -qE 'N = 2 steps cannot reach e = 0.5 with lammps; N >= [0-9]+ can' "$ERR"
+expect_fail 2 "--host with --tc" invert --e 0.5 --tc 1e-5 --mass 1e-3 --velocity 1 --host lammps
+check "--host with --tc: asks for --dt and --steps" grep -q -- '--host needs --dt and --steps' "$ERR"
+expect_fail 2 "--host without --steps" invert --e 0.5 --dt 1e-6 --mass 1e-3 --velocity 1 --host mfix-euler
+expect_fail 2 "--host lammps --method compact" invert --e 0.5 --dt 1e-6 --steps 10 --mass 1e-3 --velocity 1 \
+  --host lammps --method compact
+check "--host with another method: says so" grep -q -- '--method applies to --host none' "$ERR"
+expect_fail 2 "--host bogus" invert --e 0.5 --dt 1e-6 --steps 10 --mass 1e-3 --velocity 1 --host bogus
+check "--host bogus: lists the hosts" grep -q 'none lammps mfix-euler mfix-ab2 verlet lammps-phase' "$ERR"
+run timestep $GLASS --e 0.5 --velocity 0.1,5 --steps 10,20 --host mfix-ab2 --format csv
+check "timestep --host mfix-ab2: exit 0, spread columns (exit $RC)" test "$RC" -eq 0 -a \
+  "$(head -n 1 "$OUT")" = "e,steps,velocity_max,mass,radius_eff,k_phys,alpha,tau_c,tc_damped,tc_elastic,elastic_excess,dt_max,dt_elastic,t_rayleigh,dt_rayleigh,e_spread,tc_spread,status"
+check "timestep --host: dt_max = tc_damped / N with the host's tau_c" python3 -c '
+import csv, sys
+for r in csv.DictReader(open(sys.argv[1])):
+    assert abs(float(r["dt_max"]) * float(r["steps"]) / float(r["tc_damped"]) - 1) < 1e-14, r
+' "$OUT"
+expect_fail 2 "timestep --host without --steps" timestep $GLASS --e 0.5 --velocity 1 --host lammps
+expect_fail 2 "--host with --fixed" invert --e 0.5 --dt 1e-6 --steps 10 --mass 1e-3 --velocity 0.5,2 --host lammps --fixed
+check "--host with --fixed: says so" grep -q -- '--fixed takes no --host' "$ERR"
 
 # timestep: the Rayleigh step pi R sqrt(rho/G)/(0.1631 nu + 0.8766), G = E/(2(1+nu)), of
 # the smaller sphere (a wall has none), and dt_rayleigh = 0.2 of it; none without the

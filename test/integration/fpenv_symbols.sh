@@ -4,7 +4,7 @@
 # _gfortran_ieee_procedure_entry / _gfortran_ieee_procedure_exit (about 250 ns a call)
 # into every procedure whose own scope sees a symbol of an IEEE intrinsic module, and
 # a `use` of any library module inside an external subroutine brings such symbols
-# along (src/hertzdamp_legacy.f90 explains).  This builds and installs the core with
+# along (src/hertzdamp_capi.f90 explains).  This builds and installs the core with
 # CMake, as `make install` does, disassembles the installed shared and static
 # libraries, and fails if any function in them calls those routines: the legacy
 # externals (hertzdamp_invert_ ...), the C functions (hertzdamp_c_*) and every module
@@ -66,6 +66,7 @@ if [ -n "$so" ] && [ -n "$ar" ]; then
   for name in hertzdamp_invert_ hertzdamp_invert_bounded_ hertzdamp_pair_ hertzdamp_forward_ hertzdamp_invert_n_ \
               hertzdamp_invert_law_ hertzdamp_pair_law_ hertzdamp_forward_law_ hertzdamp_c_invert_law \
               hertzdamp_c_pair_law hertzdamp_c_forward_law hertzdamp_c_invert_law_n hertzdamp_invert_law_n_ \
+              hertzdamp_c_pair_init hertzdamp_c_pair_kd hertzdamp_pair_init_ hertzdamp_pair_kd_ \
               hertzdamp_message_ hertzdamp_c_invert hertzdamp_c_invert_bounded hertzdamp_c_invert_n \
               hertzdamp_c_pair hertzdamp_c_forward hertzdamp_c_strerror; do
     check "entry point $name exported" $(grep -qx "$name" <<<"$exported"; echo $?)

@@ -76,18 +76,24 @@ for sym in hertzdamp_c_invert hertzdamp_c_invert_bounded hertzdamp_c_invert_n he
            hertzdamp_c_strerror hertzdamp_invert_ hertzdamp_invert_bounded_ hertzdamp_pair_ hertzdamp_forward_ \
            hertzdamp_invert_n_ hertzdamp_message_ hertzdamp_c_invert_law hertzdamp_c_pair_law hertzdamp_c_forward_law \
            hertzdamp_invert_law_ hertzdamp_pair_law_ hertzdamp_forward_law_ hertzdamp_c_invert_law_n \
-           hertzdamp_invert_law_n_; do
+           hertzdamp_invert_law_n_ hertzdamp_c_pair_init hertzdamp_c_pair_kd hertzdamp_pair_init_ hertzdamp_pair_kd_; do
   check "shared library exports $sym" grep -qx "$sym" <<<"$defined_so"
 done
 # the C names never equal a legacy name without gfortran's underscore (-fno-underscoring)
-legacy=$(grep -hoiE '^ *subroutine +hertzdamp_[a-z_]+' src/hertzdamp_legacy.f90 | awk '{print tolower($2)}')
-cnames=$(sed -nE "s/.*bind\(c, name='([a-z_]+)'\).*/\1/p" src/hertzdamp_capi.f90)
+# (the legacy link names end in gfortran's underscore: their names without it)
+legacy=$( (grep -hoiE '^ *subroutine +hertzdamp_[a-z_]+' src/hertzdamp_legacy.f90 | awk '{print tolower($2)}';
+          sed -nE "s/.*bind\(c, name='(hertzdamp_[a-z_]+)_'\).*/\1/p" src/hertzdamp_capi.f90) | sort -u)
+cnames=$(sed -nE "s/.*bind\(c, name='(hertzdamp_c_[a-z_]+)'\).*/\1/p" src/hertzdamp_capi.f90 src/hertzdamp_pair.f90)
+check "the legacy and C names were found" test "$(wc -w <<<"$legacy $cnames")" -ge 24
 check "no C name equals a legacy external's name" bash -c "! grep -Fxq -f <(echo '$legacy') <<<'$cnames'"
 
 # ------------------------------------------------------------ header constants = Fortran constants
 hdr=$(sed -nE 's/^#define HERTZDAMP_([A-Z_]+) +([0-9]+).*/\1=\2/p' include/hertzdamp.h | sort)
-fortran=$(sed -nE 's/.*integer, parameter, public :: HD_([A-Z_]+) = ([0-9]+).*/\1=\2/p' src/hertzdamp_status.f90 | sort)
-check "hertzdamp.h HERTZDAMP_* equal hertzdamp_status HD_*" test "$hdr" = "$fortran"
+# (every code a C caller passes or gets: statuses, contact ends, laws, hosts; not the
+# Fortran-only method and integrator codes)
+fortran=$(sed -nE 's/.*integer, parameter, public :: HD_([A-Z_]+) = ([0-9]+).*/\1=\2/p' src/*.f90 |
+          grep -Ev '^(METHOD|MODEL|EVENT)_' | sort -u)
+check "hertzdamp.h HERTZDAMP_* equal the library's HD_* codes (status, end, law, host)" test "$hdr" = "$fortran"
 check "hertzdamp.h has the status codes" test "$(wc -l <<<"$hdr")" -ge 20
 check "hertzdamp.h: no unprefixed macro" bash -c "! grep -E '^#define ' include/hertzdamp.h | grep -Ev '^#define HERTZDAMP_'"
 check "hertzdamp.h compiles as C99 and C++ with -Wall -Werror" bash -c \
@@ -118,7 +124,6 @@ check "legacy example: forward gives back e and T_c (1e-12)" \
 cat >"$tmp/checker.f90" <<'F90'
 program checker
     use hertzdamp, only: hertzdamp_rk, hertzdamp_invert
-    use hertzdamp_flat, only: legacy_method
     implicit none
     real(hertzdamp_rk) :: e, tc, m, u, k, d
     integer :: status
@@ -127,7 +132,7 @@ program checker
     call get_command_argument(2, arg); read (arg, *) tc
     call get_command_argument(3, arg); read (arg, *) m
     call get_command_argument(4, arg); read (arg, *) u
-    call hertzdamp_invert(e, tc, m, u, 0, k, d, status, method=legacy_method)
+    call hertzdamp_invert(e, tc, m, u, 0, k, d, status)
     if (status /= 0) error stop 1
     write (*, '(es25.16e3, 1x, es25.16e3)') k, d
 end program checker
@@ -209,6 +214,151 @@ C
 check "C program using the new entry points builds (C99, -Wall -Werror)" cc -std=c99 -Wall -Wextra -Werror \
   "$tmp/capi.c" -I"$prefix/include" -L"$prefix/lib" -Wl,-rpath,"$prefix/lib" -lhertzdamp -lm -o "$tmp/capi"
 check "C: pair formulas, bounded, array and damping-law entry points agree with hertzdamp_c_invert" "$tmp/capi"
+
+# ------------------------------------------------------------ the per-pair API three ways, bit for bit
+# The same grid (laws, contact ends, hosts none and lammps, e, contacts with and without
+# the bound, a bad speed) through C (hertzdamp_c_pair_init/_kd), a fixed-form caller through
+# hertzdamp.fi (HERTZDAMP_PAIR_INIT/_KD with DOUBLE PRECISION PAIR(8)) and the module
+# API (hertzdamp_pair_init/_kd): every status, the eight doubles of the pair, k and d
+# printed as bit patterns, and the three outputs compared byte for byte.
+cat >"$tmp/pair.c" <<'C'
+#include <stdio.h>
+#include <string.h>
+#include <hertzdamp.h>
+static void hex(double x) { unsigned long long b; memcpy(&b, &x, sizeof b); printf(" %016llX", b); }
+int main(void) {
+    const double es[3] = {0.9, 0.5, 0.1}, tcs[3] = {1e-5, 1e-40, 3e-4}, ms[3] = {2e-6, 1.0, 1e35},
+                 us[3] = {0.5, 3.0, -1e-3}, kps[3] = {0.0, 1e3, -1.0};
+    for (int host = HERTZDAMP_HOST_NONE; host <= HERTZDAMP_HOST_LAMMPS; host++)
+        for (int law = 0; law <= 2; law++)
+            for (int end = 0; end <= 1; end++)
+                for (int i = 0; i < 3; i++) {
+                    hertzdamp_pair_t p;
+                    int st = hertzdamp_c_pair_init(es[i], law, end, host, 20.0, &p);
+                    printf("%d", st);
+                    for (int j = 0; j < 8; j++) hex(p.v[j]);
+                    printf("\n");
+                    for (int c = 0; c < 3; c++)
+                        for (int b = 0; b < 3; b++) {
+                            double k, d;
+                            st = hertzdamp_c_pair_kd(&p, tcs[c], ms[c], us[c], kps[b], &k, &d);
+                            printf("%d", st); hex(k); hex(d); printf("\n");
+                        }
+                }
+    return 0;
+}
+C
+cat >"$tmp/pair.f" <<'F'
+      PROGRAM PAIRF
+      IMPLICIT NONE
+      INCLUDE 'hertzdamp.fi'
+      DOUBLE PRECISION ES(3), TCS(3), MS(3), US(3), KPS(3)
+      DOUBLE PRECISION PAIR(8), K, D
+      INTEGER IHOST, ILAW, IEND, I, C, B, IERR
+      DATA ES /0.9D0, 0.5D0, 0.1D0/, TCS /1D-5, 1D-40, 3D-4/
+      DATA MS /2D-6, 1D0, 1D35/, US /0.5D0, 3D0, -1D-3/
+      DATA KPS /0D0, 1D3, -1D0/
+      DO IHOST = 0, 1
+      DO ILAW = 0, 2
+      DO IEND = 0, 1
+      DO I = 1, 3
+        CALL HERTZDAMP_PAIR_INIT(ES(I), ILAW, IEND, IHOST, 20D0, PAIR,
+     &                           IERR)
+        WRITE (*, '(I0,8(1X,Z16.16))') IERR, PAIR
+        DO C = 1, 3
+        DO B = 1, 3
+          CALL HERTZDAMP_PAIR_KD(PAIR, TCS(C), MS(C), US(C), KPS(B),
+     &                           K, D, IERR)
+          WRITE (*, '(I0,2(1X,Z16.16))') IERR, K, D
+        END DO
+        END DO
+      END DO
+      END DO
+      END DO
+      END DO
+      END
+F
+cat >"$tmp/pairm.f90" <<'F90'
+program pairm
+    use hertzdamp, only: hertzdamp_rk, hertzdamp_pair_t, hertzdamp_pair_init, hertzdamp_pair_kd
+    implicit none
+    integer, parameter :: wp = hertzdamp_rk
+    real(wp), parameter :: es(3) = [0.9_wp, 0.5_wp, 0.1_wp], tcs(3) = [1e-5_wp, 1e-40_wp, 3e-4_wp], &
+                           ms(3) = [2e-6_wp, 1.0_wp, 1e35_wp], us(3) = [0.5_wp, 3.0_wp, -1e-3_wp], &
+                           kps(3) = [0.0_wp, 1e3_wp, -1.0_wp]
+    type(hertzdamp_pair_t) :: p
+    real(wp) :: k, d
+    integer :: host, law, iend, i, c, b, st
+    do host = 0, 1
+        do law = 0, 2
+            do iend = 0, 1
+                do i = 1, 3
+                    call hertzdamp_pair_init(es(i), law, iend, host, 20.0_wp, p, st)
+                    write (*, '(i0,8(1x,z16.16))') st, p%alpha, p%tau_c, p%alpha_cont, p%steps, p%law, p%iend, &
+                        p%host, p%marker
+                    do c = 1, 3
+                        do b = 1, 3
+                            if (kps(b) > 0.0_wp) then
+                                call hertzdamp_pair_kd(p, tcs(c), ms(c), us(c), k, d, st, k_phys=kps(b))
+                            else
+                                call hertzdamp_pair_kd(p, tcs(c), ms(c), us(c), k, d, st)
+                            end if
+                            write (*, '(i0,2(1x,z16.16))') st, k, d
+                        end do
+                    end do
+                end do
+            end do
+        end do
+    end do
+end program pairm
+F90
+check "per-pair C client builds (C99, -Wall -Werror)" cc -std=c99 -Wall -Wextra -Werror "$tmp/pair.c" \
+  -I"$prefix/include" -L"$prefix/lib" -Wl,-rpath,"$prefix/lib" -lhertzdamp -o "$tmp/pair_c"
+check "per-pair fixed-form client builds through hertzdamp.fi (-Wall -Werror)" gfortran -Wall -Werror \
+  -I"$prefix/include" "$tmp/pair.f" -L"$prefix/lib" -Wl,-rpath,"$prefix/lib" -lhertzdamp -o "$tmp/pair_f"
+check "per-pair module client builds" gfortran -I"$prefix/include/hertzdamp" "$tmp/pairm.f90" -L"$prefix/lib" \
+  -Wl,-rpath,"$prefix/lib" -lhertzdamp -o "$tmp/pair_m"
+"$tmp/pair_c" >"$tmp/pair_c.out" 2>&1; "$tmp/pair_f" >"$tmp/pair_f.out" 2>&1; "$tmp/pair_m" >"$tmp/pair_m.out" 2>&1
+check "per-pair: 360 records, successes and failures among them" bash -c \
+  "test \$(wc -l <'$tmp/pair_m.out') -eq 360 && grep -q '^0 ' '$tmp/pair_m.out' && grep -qv '^0 ' '$tmp/pair_m.out'"
+check "per-pair: C = module, bit for bit (statuses, PAIR(8), k, d)" cmp "$tmp/pair_c.out" "$tmp/pair_m.out"
+check "per-pair: fixed form through hertzdamp.fi = module, bit for bit" cmp "$tmp/pair_f.out" "$tmp/pair_m.out"
+
+# ------------------------------------------------------------ the _n functions under aliasing
+# A result array over an input array: in place (d over tc) and shifted by -3 .. 3 elements
+# (k over e), three passes of 256 contacts: the results of separate arrays, bit for bit.
+cat >"$tmp/alias.c" <<'C'
+#include <stdio.h>
+#include <string.h>
+#include <hertzdamp.h>
+#define N 700
+int main(void) {
+    static double e[N], tc[N], m[N], u[N], k[N], d[N], buf[2 * N], t2[N];
+    static int st[N], st2[N];
+    int bad = 0;
+    for (int i = 0; i < N; i++) {
+        e[i] = 0.05 + 0.9 * (i % 97) / 97.0; tc[i] = 1e-5 * (1 + i % 7); m[i] = 1e-3 * (1 + i % 5);
+        u[i] = 0.1 * (1 + i % 11);
+    }
+    for (int law = 0; law <= 2; law++) {
+        hertzdamp_c_invert_law_n(N, e, tc, m, u, law, 0, k, d, st);
+        for (int shift = -3; shift <= 3; shift++) {
+            double *E = buf + N / 2, *K = E + shift;
+            memcpy(E, e, sizeof e);
+            memcpy(t2, tc, sizeof tc);
+            hertzdamp_c_invert_law_n(N, E, t2, m, u, law, 0, K, t2, st2);
+            for (int i = 0; i < N; i++)
+                if (memcmp(&K[i], &k[i], 8) || memcmp(&t2[i], &d[i], 8) || st2[i] != st[i]) bad++;
+        }
+    }
+    printf("%d\n", bad);
+    return bad != 0;
+}
+C
+check "aliasing client builds (-fsanitize=address)" cc -std=c99 -Wall -Werror -fsanitize=address "$tmp/alias.c" \
+  -I"$prefix/include" -L"$prefix/lib" -Wl,-rpath,"$prefix/lib" -lhertzdamp -o "$tmp/alias"
+check "_law_n with k over e shifted by -3..3 and d over tc in place: the bits of separate arrays, in bounds" \
+  env ASAN_OPTIONS=detect_leaks=0 "$tmp/alias"
 
 # ------------------------------------------------------------ static archive and pkg-config
 check "C example links the static archive" make --no-print-directory -C "$tmp/c" -B PREFIX="$prefix" \

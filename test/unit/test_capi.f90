@@ -6,8 +6,7 @@ program test_capi
                                            c_null_char
     use hertzdamp, only: hertzdamp_rk, hertzdamp_invert, hertzdamp_forward_dim, hertzdamp_message, &
                          HD_OK, HD_NO_REBOUND, HD_BAD_ARGUMENT, HD_BAD_RESTITUTION, HD_BAD_END, &
-                         HD_END_OVERLAP, HD_END_FORCE, HD_BAD_LAW, HD_BAD_KPHYS, hertzdamp_law_q
-    use hertzdamp_flat, only: legacy_method
+                         HD_END_OVERLAP, HD_END_FORCE, HD_BAD_LAW, HD_BAD_KPHYS, hertzdamp_law_q, HD_METHOD_FIT
     use hertzdamp_capi, only: hertzdamp_c_invert, hertzdamp_c_forward, hertzdamp_c_strerror, hertzdamp_c_invert_law, &
                               hertzdamp_c_pair_law, hertzdamp_c_forward_law
     use hertzdamp_testing, only: test_suite, new_suite
@@ -28,12 +27,12 @@ program test_capi
     do iend = HD_END_OVERLAP, HD_END_FORCE
         do i = 1, 3
             st = hertzdamp_c_invert(es(i), 1.0e-4_wp, ms(i), us(i), int(iend, c_int), k, d)
-            call hertzdamp_invert(es(i), 1.0e-4_wp, ms(i), us(i), iend, km, dm, stm, method=legacy_method)
+            call hertzdamp_invert(es(i), 1.0e-4_wp, ms(i), us(i), iend, km, dm, stm)
             call suite%check(st == HD_OK .and. stm == HD_OK, 'invert status')
             call suite%check(.not. (abs(k - km) > 0.0_wp .or. abs(d - dm) > 0.0_wp), &
                              'invert bit-identical to the module API')
             st = hertzdamp_c_forward(k, d, ms(i), us(i), int(iend, c_int), e, tc)
-            call hertzdamp_forward_dim(km, dm, ms(i), us(i), iend, legacy_method, alpha, tstar, em, tcm, zmax, stm)
+            call hertzdamp_forward_dim(km, dm, ms(i), us(i), iend, HD_METHOD_FIT, alpha, tstar, em, tcm, zmax, stm)
             call suite%check(st == HD_OK .and. .not. (abs(e - em) > 0.0_wp .or. abs(tc - tcm) > 0.0_wp), &
                              'forward bit-identical to the module API')
             ! the fit's stated round-trip accuracy (README: e 8.8e-13, T_c 1.7e-13 at worst)
@@ -83,7 +82,7 @@ contains
                 do j = 1, 3
                     st = hertzdamp_c_invert_law(es(j), 1.0e-4_wp, ms(j), us(j), 0.0_wp, int(law, c_int), &
                                                 int(iend, c_int), kl, dl)
-                    call hertzdamp_invert(es(j), 1.0e-4_wp, ms(j), us(j), iend, kmm, dmm, stmm, method=legacy_method, &
+                    call hertzdamp_invert(es(j), 1.0e-4_wp, ms(j), us(j), iend, kmm, dmm, stmm, &
                                           law=law)
                     call suite%check(st == HD_OK .and. stmm == HD_OK .and. .not. (abs(kl - kmm) > 0.0_wp .or. &
                                      abs(dl - dmm) > 0.0_wp), 'invert_law bit-identical to the module API' // trim(lab))

@@ -119,7 +119,7 @@ contains
                 do i = 1, size(targets)
                     write (lab, '(a,i0,a,i0,a,es10.2)') ' end=', iend, ' method=', methods(im), ' e=', targets(i)
                     call hertzdamp_invert(targets(i), 1.0e-4_wp, 1.0e-3_wp, 1.0_wp, iend, k, d, st, alpha=a, &
-                                          method=methods(im))
+                                          options=hertzdamp_invert_options(method=methods(im)))
                     call seen(2, [k, d, a])
                     if (st == HD_OK) then
                         call s%check(k > 0.0_wp .and. d >= 0.0_wp .and. ieee_is_finite(k) .and. ieee_is_finite(d), &

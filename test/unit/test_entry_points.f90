@@ -1,7 +1,8 @@
 !> Every way of calling the fit inverse gives the same bits (issue 11), for every damping
 !> law (issue 15): the module's scalar call, its elemental call on a rank-2 array, its
-!> rank-1 (vectorised) call, the flat layer, the C functions (hertzdamp_c_invert,
-!> hertzdamp_c_invert_n, hertzdamp_c_invert_bounded; hertzdamp_c_invert_law,
+!> rank-1 (vectorised) call, the per-pair API (hertzdamp_pair_init + hertzdamp_pair_kd),
+!> the C functions (hertzdamp_c_invert, hertzdamp_c_invert_n, hertzdamp_c_invert_bounded;
+!> hertzdamp_c_invert_law,
 !> hertzdamp_c_invert_law_n) through their bind(C) names, and the legacy externals
 !> (HERTZDAMP_INVERT, HERTZDAMP_INVERT_N, HERTZDAMP_INVERT_BOUNDED; HERTZDAMP_INVERT_LAW,
 !> HERTZDAMP_INVERT_LAW_N), on a grid that takes each argument through its edge cases
@@ -11,11 +12,14 @@
 !> bits of the linear ones.  Also the dimensionless kernels (scalar against n at once,
 !> every law) and the forward map.
 program test_entry_points
-    use hertzdamp, only: hertzdamp_rk, hertzdamp_invert, hertzdamp_fit_inverse, hertzdamp_fit_inverse_n, &
-                         hertzdamp_fit_invert, hertzdamp_fit_invert_n, hertzdamp_fit_forward, hertzdamp_fit_forward_n, &
+    use hertzdamp, only: hertzdamp_rk, hertzdamp_invert, hertzdamp_invert_options, hertzdamp_fit_inverse, &
+                         hertzdamp_fit_inverse_n, hertzdamp_fit_forward, hertzdamp_fit_forward_n, &
                          hertzdamp_fit_alpha_c, HD_OK, HD_END_OVERLAP, HD_END_FORCE, HD_METHOD_FIT, HD_BAD_LAW, &
                          HD_DAMPING_LINEAR, HD_DAMPING_KUWABARA_KONO, hertzdamp_law_name
-    use hertzdamp_flat, only: flat_invert, flat_invert_n, flat_invert_bounded, flat_invert_law, flat_invert_law_n
+    use hertzdamp_pair, only: hertzdamp_pair_t, hertzdamp_pair_init, hertzdamp_pair_kd
+    use hertzdamp_fit, only: hertzdamp_fit_invert, hertzdamp_fit_invert_n
+    use hertzdamp_host, only: HD_HOST_NONE
+    use hertzdamp_status, only: HD_BAD_PAIR
     use hertzdamp_capi, only: hertzdamp_c_invert, hertzdamp_c_invert_n, hertzdamp_c_invert_bounded, &
                               hertzdamp_c_invert_law, hertzdamp_c_invert_law_n
     use hertzdamp_testing, only: test_suite, new_suite
@@ -194,13 +198,14 @@ contains
         nbad(2) = count(bits(reshape(k2, [2 * (n / 2)])) /= bits(k0(1:2 * (n / 2))) .or. &
                         bits(reshape(d2, [2 * (n / 2)])) /= bits(d0(1:2 * (n / 2))) .or. &
                         reshape(st2, [2 * (n / 2)]) /= st0(1:2 * (n / 2)))
-        ! the flat layer, scalar and n at once
+        ! the per-pair API: one pair per contact, then its k and d (one call per contact, and
+        ! elemental over arrays of pairs)
         do i = 1, n
-            call flat_invert(e(i), tc(i), m(i), u(i), iend, k(i), d(i), st(i))
+            call via_pair(e(i), tc(i), m(i), u(i), iend, HD_DAMPING_LINEAR, k(i), d(i), st(i))
         end do
         nbad(3) = count(bits(k) /= bits(k0) .or. bits(d) /= bits(d0) .or. st /= st0)
-        call flat_invert_n(n, e, tc, m, u, iend, k, d, st)
-        nbad(4) = count(bits(k) /= bits(k0) .or. bits(d) /= bits(d0) .or. st /= st0)
+        call via_pairs(e, tc, m, u, iend, HD_DAMPING_LINEAR, k, d, st, a, t, ts)
+        nbad(4) = count(bits(k) /= bits(k0) .or. bits(d) /= bits(d0) .or. st /= st0 .or. bits(ts) /= bits(s0))
         ! C: one contact per call, and n at once
         do i = 1, n
             stc(i) = hertzdamp_c_invert(e(i), tc(i), m(i), u(i), int(iend, c_int), k(i), d(i))
@@ -218,8 +223,9 @@ contains
         nbad(8) = count(bits(k) /= bits(k0) .or. bits(d) /= bits(d0) .or. stc /= st0)
         call s%check(nbad(1) == 0, 'rank-1 call (with alpha, tau_c, tstar) = scalar calls, bit for bit, end ' // cend)
         call s%check(nbad(2) == 0, 'elemental rank-2 call = scalar calls, end ' // cend)
-        call s%check(nbad(3) == 0, 'flat_invert = module, end ' // cend)
-        call s%check(nbad(4) == 0, 'flat_invert_n = module, end ' // cend)
+        call s%check(nbad(3) == 0, 'hertzdamp_pair_init + hertzdamp_pair_kd = module, end ' // cend)
+        call s%check(nbad(4) == 0, 'pair_init + pair_kd elemental over arrays of pairs (with tstar) = module, end ' // &
+                     cend)
         call s%check(nbad(5) == 0, 'hertzdamp_c_invert = module, end ' // cend)
         call s%check(nbad(6) == 0, 'hertzdamp_c_invert_n = module, end ' // cend)
         call s%check(nbad(7) == 0, 'HERTZDAMP_INVERT = module, end ' // cend)
@@ -256,14 +262,14 @@ contains
         n = size(e)
         do i = 1, n
             call hertzdamp_invert(e(i), tc(i), m(i), u(i), iend, k0(i), d0(i), st0(i), bound_active=b0(i), &
-                                  k_phys=kp(i), method=HD_METHOD_FIT)
+                                  k_phys=kp(i), options=hertzdamp_invert_options(method=HD_METHOD_FIT))
         end do
         call hertzdamp_invert(e, tc, m, u, iend, k, d, st, bound_active=b, k_phys=kp)
         nbad(1) = count(bits(k) /= bits(k0) .or. bits(d) /= bits(d0) .or. st /= st0 .or. (b .neqv. b0))
         do i = 1, n
-            call flat_invert_bounded(e(i), tc(i), m(i), u(i), kp(i), iend, k(i), d(i), st(i))
+            call via_pair(e(i), tc(i), m(i), u(i), iend, HD_DAMPING_LINEAR, k(i), d(i), st(i), kp(i), b(i))
         end do
-        nbad(2) = count(bits(k) /= bits(k0) .or. bits(d) /= bits(d0) .or. st /= st0)
+        nbad(2) = count(bits(k) /= bits(k0) .or. bits(d) /= bits(d0) .or. st /= st0 .or. (b .neqv. b0))
         do i = 1, n
             stc(i) = hertzdamp_c_invert_bounded(e(i), tc(i), m(i), u(i), kp(i), int(iend, c_int), k(i), d(i))
         end do
@@ -273,7 +279,7 @@ contains
         end do
         nbad(4) = count(bits(k) /= bits(k0) .or. bits(d) /= bits(d0) .or. stc /= st0)
         call s%check(nbad(1) == 0, 'bounded: rank-1 call = scalar calls, end ' // cend)
-        call s%check(nbad(2) == 0, 'bounded: flat = module, end ' // cend)
+        call s%check(nbad(2) == 0, 'bounded: pair_init + pair_kd with k_phys = module, end ' // cend)
         call s%check(nbad(3) == 0, 'bounded: hertzdamp_c_invert_bounded = module, end ' // cend)
         call s%check(nbad(4) == 0, 'bounded: HERTZDAMP_INVERT_BOUNDED = module, end ' // cend)
         if (iend == HD_END_OVERLAP) call s%check(count(b0) > 300 .and. count(.not. b0 .and. st0 == HD_OK) > 300, &
@@ -327,11 +333,11 @@ contains
                         bits(reshape(d2, [2 * (n / 2)])) /= bits(d0(1:2 * (n / 2))) .or. &
                         reshape(st2, [2 * (n / 2)]) /= st0(1:2 * (n / 2)))
         do i = 1, n
-            call flat_invert_law(e(i), tc(i), m(i), u(i), 0.0_wp, law, iend, k(i), d(i), st(i))
+            call via_pair(e(i), tc(i), m(i), u(i), iend, law, k(i), d(i), st(i))
         end do
         nbad(3) = count(bits(k) /= bits(k0) .or. bits(d) /= bits(d0) .or. st /= st0)
-        call flat_invert_law_n(n, e, tc, m, u, law, iend, k, d, st)
-        nbad(4) = count(bits(k) /= bits(k0) .or. bits(d) /= bits(d0) .or. st /= st0)
+        call via_pairs(e, tc, m, u, iend, law, k, d, st, a, t, ts)
+        nbad(4) = count(bits(k) /= bits(k0) .or. bits(d) /= bits(d0) .or. st /= st0 .or. bits(ts) /= bits(s0))
         do i = 1, n
             stc(i) = hertzdamp_c_invert_law(e(i), tc(i), m(i), u(i), 0.0_wp, int(law, c_int), int(iend, c_int), &
                                             k(i), d(i))
@@ -356,8 +362,8 @@ contains
         end if
         call s%check(nbad(1) == 0, 'rank-1 call (with alpha, tau_c, tstar) = scalar calls, ' // tag)
         call s%check(nbad(2) == 0, 'elemental rank-2 call = scalar calls, ' // tag)
-        call s%check(nbad(3) == 0, 'flat_invert_law = module, ' // tag)
-        call s%check(nbad(4) == 0, 'flat_invert_law_n = module, ' // tag)
+        call s%check(nbad(3) == 0, 'hertzdamp_pair_init + hertzdamp_pair_kd = module, ' // tag)
+        call s%check(nbad(4) == 0, 'pair_init + pair_kd elemental over arrays of pairs (with tstar) = module, ' // tag)
         call s%check(nbad(5) == 0, 'hertzdamp_c_invert_law = module, ' // tag)
         call s%check(nbad(6) == 0, 'hertzdamp_c_invert_law_n = module, ' // tag)
         call s%check(nbad(7) == 0, 'HERTZDAMP_INVERT_LAW = module, ' // tag)
@@ -374,8 +380,9 @@ contains
     end subroutine compare_law
 
     !> The inverse of a damping law with the physical bound: the module's calls with
-    !> k_phys and `law` against the law entry points of the flat layer, C and legacy,
-    !> whose k_phys = 0 means no bound (there: against the unbounded module call).
+    !> k_phys and `law` against the per-pair API (k_phys as given) and the law entry points
+    !> of C and legacy, whose k_phys = 0 means no bound (there: against the unbounded
+    !> module call).
     subroutine compare_law_bounded(iend, law)
         integer, intent(in) :: iend, law
         real(wp), dimension(size(e)) :: k0, d0, k, d, ku, du
@@ -388,22 +395,22 @@ contains
         n = size(e)
         do i = 1, n
             call hertzdamp_invert(e(i), tc(i), m(i), u(i), iend, k0(i), d0(i), st0(i), bound_active=b0(i), &
-                                  k_phys=kp(i), method=HD_METHOD_FIT, law=law)
+                                  k_phys=kp(i), law=law, options=hertzdamp_invert_options(method=HD_METHOD_FIT))
             call hertzdamp_invert(e(i), tc(i), m(i), u(i), iend, ku(i), du(i), stu(i), law=law)
         end do
         call hertzdamp_invert(e, tc, m, u, iend, k, d, st, bound_active=b, k_phys=kp, law=law)
         nbad(1) = count(bits(k) /= bits(k0) .or. bits(d) /= bits(d0) .or. st /= st0 .or. (b .neqv. b0))
-        ! the law entry points: k_phys = 0 is no bound
+        do i = 1, n
+            call via_pair(e(i), tc(i), m(i), u(i), iend, law, k(i), d(i), st(i), kp(i), b(i))
+        end do
+        nbad(2) = count(bits(k) /= bits(k0) .or. bits(d) /= bits(d0) .or. st /= st0 .or. (b .neqv. b0))
+        ! the C and legacy law entry points: k_phys = 0 is no bound
         none = kp == 0.0_wp
         where (none)
             k0 = ku
             d0 = du
             st0 = stu
         end where
-        do i = 1, n
-            call flat_invert_law(e(i), tc(i), m(i), u(i), kp(i), law, iend, k(i), d(i), st(i))
-        end do
-        nbad(2) = count(bits(k) /= bits(k0) .or. bits(d) /= bits(d0) .or. st /= st0)
         do i = 1, n
             stc(i) = hertzdamp_c_invert_law(e(i), tc(i), m(i), u(i), kp(i), int(law, c_int), int(iend, c_int), &
                                             k(i), d(i))
@@ -415,7 +422,7 @@ contains
         end do
         nbad(4) = count(bits(k) /= bits(k0) .or. bits(d) /= bits(d0) .or. stc /= st0)
         call s%check(nbad(1) == 0, 'bounded: rank-1 call = scalar calls, ' // tag)
-        call s%check(nbad(2) == 0, 'bounded: flat_invert_law = module, ' // tag)
+        call s%check(nbad(2) == 0, 'bounded: pair_init + pair_kd with k_phys = module, ' // tag)
         call s%check(nbad(3) == 0, 'bounded: hertzdamp_c_invert_law = module, ' // tag)
         call s%check(nbad(4) == 0, 'bounded: HERTZDAMP_INVERT_LAW = module, ' // tag)
         if (any(nbad /= 0)) print '(a, 4i6)', 'bounded mismatches per entry point (' // tag // '): ', nbad
@@ -424,6 +431,39 @@ contains
                          'bounded: the bound is active on part of the grid, not all, ' // tag)
         end if
     end subroutine compare_law_bounded
+
+    !> k and d of one contact through the per-pair API (host none): hertzdamp_pair_init, then
+    !> hertzdamp_pair_kd; where the init failed, kd reports HD_BAD_PAIR unless an argument
+    !> of the contact is bad, and hertzdamp_invert reports the init's reason instead.
+    subroutine via_pair(e, tc, m, u, iend, law, k, d, st, kp, bound)
+        real(wp), intent(in) :: e, tc, m, u
+        integer, intent(in) :: iend, law
+        real(wp), intent(out) :: k, d
+        integer, intent(out) :: st
+        real(wp), intent(in), optional :: kp
+        logical, intent(out), optional :: bound
+        type(hertzdamp_pair_t) :: p
+        integer :: st_init
+        call hertzdamp_pair_init(e, law, iend, HD_HOST_NONE, 0.0_wp, p, st_init)
+        call hertzdamp_pair_kd(p, tc, m, u, k, d, st, k_phys=kp, bound_active=bound)
+        if (st == HD_BAD_PAIR) st = st_init
+    end subroutine via_pair
+
+    !> via_pair for every contact at once: elemental init over the arrays (one pair per
+    !> contact), elemental kd over the pairs (with t*).
+    subroutine via_pairs(e, tc, m, u, iend, law, k, d, st, a, tau, ts)
+        real(wp), intent(in) :: e(:), tc(:), m(:), u(:)
+        integer, intent(in) :: iend, law
+        real(wp), intent(out) :: k(:), d(:), a(:), tau(:), ts(:)
+        integer, intent(out) :: st(:)
+        type(hertzdamp_pair_t) :: p(size(e))
+        integer :: st_init(size(e))
+        call hertzdamp_pair_init(e, law, iend, HD_HOST_NONE, 0.0_wp, p, st_init)
+        call hertzdamp_pair_kd(p, tc, m, u, k, d, st, tstar=ts)
+        where (st == HD_BAD_PAIR) st = st_init
+        a = p%alpha
+        tau = p%tau_c
+    end subroutine via_pairs
 
     !> The dimensionless kernels and the forward map: one value per call against n at once.
     subroutine compare_kernels()

@@ -2,6 +2,8 @@
 !> (hertzdamp_compact) against the reference integrator at tolerance 1e-15.
 program test_fit
     use hertzdamp
+    use hertzdamp_fit, only: hertzdamp_fit_alpha, hertzdamp_fit_cbrt, hertzdamp_fit_exp_neg, hertzdamp_fit_neg_log, &
+                             hertzdamp_fit_root5
     use hertzdamp_testing, only: test_suite, new_suite, rel_err
     use, intrinsic :: ieee_arithmetic, only: ieee_is_finite, ieee_value, ieee_quiet_nan
     implicit none

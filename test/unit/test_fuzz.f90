@@ -186,11 +186,13 @@ contains
         call random_number(u)
         if (u < 0.5_wp) then
             call hertzdamp_invert(random_e(), adversarial(), adversarial(), adversarial(), iend, k, d, st, &
-                                  alpha=a, tstar=ts, tau_c=tau, bound_active=bound, method=meth)
+                                  alpha=a, tstar=ts, tau_c=tau, bound_active=bound, &
+                                  options=hertzdamp_invert_options(method=meth))
         else
             kp = adversarial()
             call hertzdamp_invert(random_e(), adversarial(), adversarial(), adversarial(), iend, k, d, st, &
-                                  alpha=a, tstar=ts, tau_c=tau, bound_active=bound, k_phys=kp, method=meth)
+                                  alpha=a, tstar=ts, tau_c=tau, bound_active=bound, k_phys=kp, &
+                                  options=hertzdamp_invert_options(method=meth))
         end if
         call account(st, [k, d, a, ts, tau])
         if (st == HD_OK) then
@@ -205,7 +207,7 @@ contains
         call random_number(u)
         iend = int(2 * u)
         call hertzdamp_invert(random_e(), 10.0_wp**(-9 * u), 10.0_wp**(12 * u - 9), 10.0_wp**(4 * u - 3), iend, &
-                              k, d, st, method=HD_METHOD_ITERATIVE, tol=1.0e-8_wp)
+                              k, d, st, options=hertzdamp_invert_options(method=HD_METHOD_ITERATIVE, tol=1.0e-8_wp))
         call account(st, [k, d])
     end subroutine fuzz_iterative
 

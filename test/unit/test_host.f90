@@ -19,6 +19,7 @@
 !>   (the plugin's formula bit for bit for the linear law), and every bad argument.
 program test_host
     use hertzdamp
+    use hertzdamp_host, only: hertzdamp_host_hurwitz
     use hertzdamp_dem, only: hertzdamp_dem_scene, hertzdamp_dem_result, hertzdamp_dem_material, hertzdamp_dem_wall, &
                              hertzdamp_dem_check, hertzdamp_dem_run
     use hertzdamp_testing, only: test_suite, new_suite, rel_err

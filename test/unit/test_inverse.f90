@@ -43,7 +43,7 @@ program test_inverse
             e = merge(1.0e-3_wp, 1.0e-4_wp, iend == HD_END_OVERLAP)**((real(i, wp) - 0.5_wp) / 200.0_wp)
             call hertzdamp_invert(e, 1.0e-4_wp, 1.0e-3_wp, 1.0_wp, iend, k, d, st, alpha=a, tau_c=tau)
             call hertzdamp_invert(e, 1.0e-4_wp, 1.0e-3_wp, 1.0_wp, iend, k2, d2, j, alpha=a3, tau_c=tau3, &
-                                  method=HD_METHOD_ITERATIVE, tol=1.0e-13_wp)
+                                  options=hertzdamp_invert_options(method=HD_METHOD_ITERATIVE, tol=1.0e-13_wp))
             emax(1) = max(emax(1), abs(a3 - a) / (a + 1.0e-2_wp), rel_err(tau3, tau))
             emax(2) = max(emax(2), rel_err(k2, k), abs(d2 - d) / (d + 1.0e-2_wp * d / max(a, 1.0e-300_wp)))
             call hertzdamp_forward_dim(k, d, 1.0e-3_wp, 1.0_wp, iend, HD_METHOD_RK45, al2, ts2, e2, tc2, zm, st, &
@@ -90,9 +90,10 @@ program test_inverse
     call s%check(st == HD_BAD_KPHYS, 'k_phys < 0: HD_BAD_KPHYS')
     call hertzdamp_invert(0.5_wp, 1.0e-4_wp, 1.0_wp, 1.0_wp, 2, k, d, st)
     call s%check(st == HD_BAD_END, 'iend = 2: HD_BAD_END')
-    call hertzdamp_invert(0.5_wp, 1.0e-4_wp, 1.0_wp, 1.0_wp, 0, k, d, st, method=99)
+    call hertzdamp_invert(0.5_wp, 1.0e-4_wp, 1.0_wp, 1.0_wp, 0, k, d, st, options=hertzdamp_invert_options(method=99))
     call s%check(st == HD_BAD_ARGUMENT, 'unknown method: HD_BAD_ARGUMENT')
-    call hertzdamp_invert(0.5_wp, 1.0e-4_wp, 1.0_wp, 1.0_wp, 0, k, d, st, method=HD_METHOD_ITERATIVE, tol=0.5_wp)
+    call hertzdamp_invert(0.5_wp, 1.0e-4_wp, 1.0_wp, 1.0_wp, 0, k, d, st, &
+                          options=hertzdamp_invert_options(method=HD_METHOD_ITERATIVE, tol=0.5_wp))
     call s%check(st == HD_BAD_TOL, 'iterative tol 0.5: HD_BAD_TOL')
     call hertzdamp_invert(0.5_wp, 1.0e-300_wp, 1.0e300_wp, 1.0_wp, 0, k, d, st)
     call s%check(st == HD_OUT_OF_RANGE .and. same(k, 0.0_wp) .and. same(d, 0.0_wp), 'overflowing k: HD_OUT_OF_RANGE')
@@ -118,7 +119,8 @@ program test_inverse
     call s%check_close(ts * tau, tc2, 1.0e-11_wp, 'bound: tstar is the time unit of the returned k')
 
     ! compact method
-    call hertzdamp_invert(0.5_wp, 1.0e-4_wp, 1.0e-3_wp, 1.0_wp, 0, k2, d2, st, method=HD_METHOD_COMPACT)
+    call hertzdamp_invert(0.5_wp, 1.0e-4_wp, 1.0e-3_wp, 1.0_wp, 0, k2, d2, st, &
+                          options=hertzdamp_invert_options(method=HD_METHOD_COMPACT))
     call s%check(st == HD_OK .and. rel_err(k2, k) < 3.0e-5_wp .and. rel_err(d2, d) < 3.0e-5_wp, &
                  'compact method: k, d within 3e-5')
     call series_inverse_checks()

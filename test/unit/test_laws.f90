@@ -6,6 +6,7 @@
 !> alpha_c, and the law-aware dimensional reduction.
 program test_laws
     use hertzdamp
+    use hertzdamp_rk45, only: hertzdamp_rk45_band, hertzdamp_rk45_e_floor_tsuji
     use hertzdamp_testing, only: test_suite, new_suite, rel_err
     implicit none
     integer, parameter :: wp = hertzdamp_rk

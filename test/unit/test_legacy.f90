@@ -1,4 +1,5 @@
-!> The legacy Fortran entry points (src/hertzdamp_legacy.f90) against the module API.
+!> The legacy Fortran entry points (src/hertzdamp_capi.f90, and the external HERTZDAMP_MESSAGE of
+!> src/hertzdamp_legacy.f90) against the module API.
 !>
 !> fpm compiles tests with -Werror=implicit-interface (implicit-external = false), so
 !> this program declares the external subroutines in an interface block written
@@ -10,8 +11,8 @@ program test_legacy
     use hertzdamp, only: hertzdamp_rk, mod_invert => hertzdamp_invert, hertzdamp_forward_dim, hertzdamp_invert_alpha, &
                          mod_message => hertzdamp_message, HD_OK, HD_NO_REBOUND, HD_BAD_RESTITUTION, &
                          HD_BAD_MASS, HD_BAD_END, HD_BAD_TIME, HD_BAD_VELOCITY, HD_BAD_STIFFNESS, &
-                         HD_BAD_DAMPING, HD_BAD_KPHYS, HD_END_OVERLAP, HD_END_FORCE, HD_BAD_LAW, hertzdamp_law_q
-    use hertzdamp_flat, only: legacy_method
+                         HD_BAD_DAMPING, HD_BAD_KPHYS, HD_END_OVERLAP, HD_END_FORCE, HD_BAD_LAW, hertzdamp_law_q, &
+                         HD_METHOD_FIT
     use hertzdamp_testing, only: test_suite, new_suite
     use, intrinsic :: ieee_arithmetic, only: ieee_value, ieee_quiet_nan
     implicit none
@@ -102,7 +103,7 @@ program test_legacy
         write (cend, '(i0)') iend
         do i = 1, nc
             call hertzdamp_invert(es(i), tcs(i), ms(i), us(i), iend, k, d, ierr)
-            call mod_invert(es(i), tcs(i), ms(i), us(i), iend, km, dm, st, method=legacy_method)
+            call mod_invert(es(i), tcs(i), ms(i), us(i), iend, km, dm, st)
             call suite%check(ierr == HD_OK .and. st == HD_OK, 'invert status, end ' // cend)
             call suite%check(.not. (abs(k - km) > 0.0_wp .or. abs(d - dm) > 0.0_wp), &
                              'invert k, d bit-identical to the module API, end ' // cend)
@@ -112,16 +113,16 @@ program test_legacy
             ! the fit's stated round-trip accuracy (README: e 8.8e-13, T_c 1.7e-13 at worst)
             call suite%check_close(e, es(i), 1.0e-12_wp, 'round trip e, end ' // cend)
             call suite%check_close(tc, tcs(i), 1.0e-12_wp, 'round trip tc, end ' // cend)
-            call hertzdamp_forward_dim(k, d, ms(i), us(i), iend, legacy_method, alpha, tstar, em, tcm, zmax, st)
+            call hertzdamp_forward_dim(k, d, ms(i), us(i), iend, HD_METHOD_FIT, alpha, tstar, em, tcm, zmax, st)
             call suite%check(.not. (abs(e - em) > 0.0_wp .or. abs(tc - tcm) > 0.0_wp), &
                              'forward e, tc bit-identical to the module API, end ' // cend)
         end do
 
         ! the pair constants and the bounded entry point
         do i = 1, nc
-            call mod_invert(es(i), tcs(i), ms(i), us(i), iend, km, dm, st, method=legacy_method)
+            call mod_invert(es(i), tcs(i), ms(i), us(i), iend, km, dm, st)
             call hertzdamp_pair(es(i), iend, alpha, tauc, ierr)
-            call hertzdamp_invert_alpha(es(i), iend, am, taum, st, method=legacy_method)
+            call hertzdamp_invert_alpha(es(i), iend, am, taum, st)
             call suite%check(ierr == HD_OK .and. .not. (abs(alpha - am) > 0.0_wp .or. abs(tauc - taum) > 0.0_wp), &
                              'pair: alpha, tau_c bit-identical to the module API, end ' // cend)
             ! the two documented per-contact formulas reproduce HERTZDAMP_INVERT
@@ -132,7 +133,7 @@ program test_legacy
             ! bounded: a soft k_phys is kept, with d = alpha m^(3/5) k_phys^(2/5) u^(1/5)
             kp = 0.25_wp * km
             call hertzdamp_invert_bounded(es(i), tcs(i), ms(i), us(i), kp, iend, kb, db, ierr)
-            call mod_invert(es(i), tcs(i), ms(i), us(i), iend, k, d, st, k_phys=kp, method=legacy_method)
+            call mod_invert(es(i), tcs(i), ms(i), us(i), iend, k, d, st, k_phys=kp)
             call suite%check(ierr == HD_OK .and. .not. (abs(kb - k) > 0.0_wp .or. abs(db - d) > 0.0_wp), &
                              'bounded: bit-identical to the module API with k_phys, end ' // cend)
             call suite%check(.not. (abs(kb - kp) > 0.0_wp), 'bounded: k = k_phys when k_phys < k, end ' // cend)
@@ -154,7 +155,7 @@ program test_legacy
         call hertzdamp_invert_n(nc + 1, [es, 1.5_wp], [tcs, 1.0e-4_wp], [ms, 1.0_wp], [us, 1.0_wp], &
                                 iend, kn, dn, ierrn)
         do i = 1, nc
-            call mod_invert(es(i), tcs(i), ms(i), us(i), iend, km, dm, st, method=legacy_method)
+            call mod_invert(es(i), tcs(i), ms(i), us(i), iend, km, dm, st)
             call suite%check(ierrn(i) == HD_OK .and. .not. (abs(kn(i) - km) > 0.0_wp .or. &
                              abs(dn(i) - dm) > 0.0_wp), 'invert_n element equals the module API, end ' // cend)
         end do
@@ -227,7 +228,7 @@ contains
                 write (lab, '(a,i0,a,i0)') ' law ', law, ' end ', iend
                 do j = 2, nc
                     call hertzdamp_invert_law(es(j), tcs(j), ms(j), us(j), 0.0_wp, law, iend, k, d, ierr)
-                    call mod_invert(es(j), tcs(j), ms(j), us(j), iend, km, dm, st, method=legacy_method, law=law)
+                    call mod_invert(es(j), tcs(j), ms(j), us(j), iend, km, dm, st, law=law)
                     call suite%check(ierr == HD_OK .and. st == HD_OK .and. .not. (k /= km .or. d /= dm), &
                                      'invert_law bit-identical to the module API' // trim(lab))
                     call hertzdamp_forward_law(k, d, ms(j), us(j), law, iend, e, tc, ierr)

@@ -2,12 +2,14 @@
 !> the choice of the rule for a scene (`--method auto`).
 module hertzdamp_dem_rules
     use hertzdamp_kinds, only: hertzdamp_rk
-    use hertzdamp_status, only: HD_OK, HD_NO_REBOUND, HD_DAMPING_LINEAR
+    use hertzdamp_status, only: HD_OK, HD_NO_REBOUND
+    use hertzdamp_laws, only: HD_DAMPING_LINEAR
     use hertzdamp_scaling, only: hertzdamp_expand, hertzdamp_reduce
     use hertzdamp_rk45, only: hertzdamp_collision, hertzdamp_rk45_collide
     use hertzdamp_methods, only: HD_METHOD_SERIES, HD_METHOD_PADE, HD_METHOD_COMPACT, HD_METHOD_FIT, &
                                  HD_METHOD_ITERATIVE, HD_METHOD_FIRST_ORDER
-    use hertzdamp_inverse, only: hertzdamp_invert, hertzdamp_invert_alpha
+    use hertzdamp_inverse, only: hertzdamp_invert_alpha, hertzdamp_invert_options
+    use hertzdamp_pair, only: hertzdamp_invert
     use hertzdamp_dem_types, only: hertzdamp_dem_scene, hertzdamp_dem_pairs_met, hertzdamp_dem_pair_e
     implicit none
     private
@@ -53,7 +55,8 @@ contains
         if (want_duration) then
             ! (tol matters to the iterative rule only)
             call hertzdamp_invert(e, tc, m, u, iend, k, d, status, alpha=alpha, tau_c=tau, &
-                                  bound_active=bound, k_phys=kp, method=method, tol=tol, law=law)
+                                  bound_active=bound, k_phys=kp, law=law, &
+                                  options=hertzdamp_invert_options(method=method, tol=tol))
             if (status /= HD_OK) return
             tc_expected = tc
         else

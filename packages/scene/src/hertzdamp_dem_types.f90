@@ -5,7 +5,9 @@
 !> (hertzdamp_materials).  No procedure here changes anything but its own result.
 module hertzdamp_dem_types
     use hertzdamp_kinds, only: hertzdamp_rk
-    use hertzdamp_status, only: HD_OK, HD_END_OVERLAP, HD_DAMPING_LINEAR
+    use hertzdamp_status, only: HD_OK
+    use hertzdamp_ends, only: HD_END_OVERLAP
+    use hertzdamp_laws, only: HD_DAMPING_LINEAR
     use hertzdamp_methods, only: HD_METHOD_FIT
     implicit none
     private

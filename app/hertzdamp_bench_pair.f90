@@ -1,0 +1,213 @@
+!> The per-pair measurements of `hertzdamp bench`: what the per-contact call of a DEM host
+!> costs against the bare formula it replaces, and what the one-call inverse costs when
+!> every contact has the same T_c and m (the broadcast forms).
+!>
+!> Over the entry contacts (T_c, m, u of hertzdamp_bench_entry), one material pair (linear
+!> law, overlap end, e = 0.5, host none), timed side by side:
+!> - bare: k = m r^(5/2) u^(-1/2), d = alpha m r with r = tau_c / T_c from the stored
+!>   alpha, tau_c, written as a host writes it in its contact loop: one contact per
+!>   iteration (no vector code: NOVECTOR), no checks;
+!> - c-pair-kd: hertzdamp_c_pair_kd through its bind(C) name, one contact per call;
+!> - pair-kd: hertzdamp_pair_kd, one contact per call;
+!> - bare-vec: the bare formula over the arrays, vectorised by the compiler;
+!> - pair-kd-array: hertzdamp_pair_kd on the rank-1 arrays;
+!> - invert-each-tc-m: hertzdamp_invert, one contact per call, every contact with the same
+!>   T_c and m (what an elemental call with scalar T_c, m did before its broadcast forms);
+!> - invert-tc-m: hertzdamp_invert with scalar T_c and m over rank-1 arrays of e and u;
+!> - invert-tc: hertzdamp_invert with a scalar T_c over rank-1 arrays of e, m and u.
+!> The library's rows are compared bit for bit: C and array against the scalar pair-kd,
+!> the broadcast forms against one call per contact.
+module hertzdamp_bench_pair
+    use hertzdamp, only: hertzdamp_rk, hertzdamp_pair_t, hertzdamp_pair_init, hertzdamp_pair_kd, hertzdamp_invert, &
+                         HD_OK, HD_END_OVERLAP, HD_DAMPING_LINEAR, HD_HOST_NONE
+    use hertzdamp_capi, only: hertzdamp_c_pair_kd
+    use hertzdamp_bench_entry, only: entry_data
+    use hertzdamp_bench_timer, only: bench_case, bench_slot, bench_rounds_all, median
+    use, intrinsic :: iso_fortran_env, only: int64
+    implicit none
+    private
+
+    integer, parameter :: wp = hertzdamp_rk
+
+    !> The rows, in order.
+    integer, parameter, public :: n_pw = 8
+    integer, parameter, public :: PW_BARE = 1, PW_C = 2, PW_SCALAR = 3, PW_BARE_VEC = 4, PW_ARRAY = 5, &
+                                  PW_INVERT_EACH = 6, PW_INVERT_TC_M = 7, PW_INVERT_TC = 8
+    character(len=*), parameter, public :: pw_name(n_pw) = [character(len=16) :: 'bare', 'c-pair-kd', 'pair-kd', &
+        'bare-vec', 'pair-kd-array', 'invert-each-tc-m', 'invert-tc-m', 'invert-tc']
+    character(len=*), parameter, public :: pw_label(n_pw) = [character(len=84) :: &
+        'k = m r^(5/2) u^(-1/2), d = alpha m r, one contact per iteration (no vector code)', &
+        'C hertzdamp_c_pair_kd, one contact per call', &
+        'hertzdamp_pair_kd, one contact per call', &
+        'the bare formula over the arrays (vectorised)', &
+        'hertzdamp_pair_kd on rank-1 arrays', &
+        'hertzdamp_invert, one contact per call, the same T_c and m for all', &
+        'hertzdamp_invert, scalar T_c and m over rank-1 e, u', &
+        'hertzdamp_invert, scalar T_c over rank-1 e, m, u']
+    !> The restitution of the pair, and the T_c and m of the broadcast rows.
+    real(wp), parameter, public :: pair_e = 0.5_wp, bcast_tc = 1.0e-5_wp, bcast_m = 1.0e-3_wp
+
+    !> One row over every contact.
+    type, extends(bench_case) :: pair_case
+        integer :: way = PW_BARE
+        type(entry_data), pointer :: in => null()
+        type(hertzdamp_pair_t) :: p
+        real(wp), allocatable :: k(:), d(:)
+        integer, allocatable :: status(:)
+    contains
+        procedure :: run => pair_run
+    end type pair_case
+
+    !> What the per-pair rows found.
+    type, public :: pair_result
+        integer :: n = 0                       !! contacts
+        real(wp) :: ns(n_pw) = -1.0_wp         !! ns per contact of each row (median over the rounds)
+        real(wp) :: c_ratio = -1.0_wp          !! C over bare: the median of the rounds' ratios
+        real(wp) :: array_ratio = -1.0_wp      !! pair-kd-array over bare-vec, the same way
+        integer :: rounds = 0                  !! rounds timed
+        integer :: mismatches = 0              !! contacts whose library results differ between rows that must agree
+        integer :: failed = 0                  !! contacts whose status is not ok (library rows)
+    end type pair_result
+
+    public :: pair_measure
+
+contains
+
+    !> The bare formula, one contact per iteration, as a host's contact loop computes it.
+    pure subroutine bare_each(n, alpha, tau, tc, m, u, k, d)
+        integer, intent(in) :: n
+        real(wp), intent(in) :: alpha, tau, tc(n), m(n), u(n)
+        real(wp), intent(out) :: k(n), d(n)
+        real(wp) :: r
+        integer :: i
+        !GCC$ NOVECTOR
+        do i = 1, n
+            r = tau / tc(i)
+            k(i) = m(i) * r * r * sqrt(r / u(i))
+            d(i) = alpha * m(i) * r
+        end do
+    end subroutine bare_each
+
+    !> The bare formula over the arrays (the compiler vectorises this loop).
+    pure subroutine bare_vec(n, alpha, tau, tc, m, u, k, d)
+        integer, intent(in) :: n
+        real(wp), intent(in) :: alpha, tau, tc(n), m(n), u(n)
+        real(wp), intent(out) :: k(n), d(n)
+        real(wp) :: r
+        integer :: i
+        do i = 1, n
+            r = tau / tc(i)
+            k(i) = m(i) * r * r * sqrt(r / u(i))
+            d(i) = alpha * m(i) * r
+        end do
+    end subroutine bare_vec
+
+    !> Every contact once through one row's way.
+    subroutine pair_run(self)
+        class(pair_case), intent(inout) :: self
+        integer :: i, n
+        n = size(self%in%tc)
+        associate (tc => self%in%tc, m => self%in%m, u => self%in%u, e => self%in%e)
+            select case (self%way)
+            case (PW_BARE)
+                call bare_each(n, self%p%alpha, self%p%tau_c, tc, m, u, self%k, self%d)
+            case (PW_C)
+                do i = 1, n
+                    self%status(i) = int(hertzdamp_c_pair_kd(self%p, tc(i), m(i), u(i), 0.0_wp, self%k(i), self%d(i)))
+                end do
+            case (PW_SCALAR)
+                do i = 1, n
+                    call hertzdamp_pair_kd(self%p, tc(i), m(i), u(i), self%k(i), self%d(i), self%status(i))
+                end do
+            case (PW_BARE_VEC)
+                call bare_vec(n, self%p%alpha, self%p%tau_c, tc, m, u, self%k, self%d)
+            case (PW_ARRAY)
+                call hertzdamp_pair_kd(self%p, tc, m, u, self%k, self%d, self%status)
+            case (PW_INVERT_EACH)
+                do i = 1, n
+                    call hertzdamp_invert(e(i), bcast_tc, bcast_m, u(i), HD_END_OVERLAP, self%k(i), self%d(i), &
+                                          self%status(i))
+                end do
+            case (PW_INVERT_TC_M)
+                call hertzdamp_invert(e, bcast_tc, bcast_m, u, HD_END_OVERLAP, self%k, self%d, self%status)
+            case default
+                call hertzdamp_invert(e, bcast_tc, m, u, HD_END_OVERLAP, self%k, self%d, self%status)
+            end select
+        end associate
+    end subroutine pair_run
+
+    !> Contacts whose k, d (bit patterns) or status differ between two results.
+    pure integer function count_differ(k1, d1, s1, k2, d2, s2)
+        real(wp), intent(in) :: k1(:), d1(:), k2(:), d2(:)
+        integer, intent(in) :: s1(:), s2(:)
+        count_differ = count(transfer(k1, 0_int64, size(k1)) /= transfer(k2, 0_int64, size(k2)) .or. &
+                             transfer(d1, 0_int64, size(d1)) /= transfer(d2, 0_int64, size(d2)) .or. s1 /= s2)
+    end function count_differ
+
+    !> Every row over the contacts of dat, timed side by side; then the library's rows
+    !> compared bit for bit.
+    subroutine pair_measure(dat, min_time, repeats, res)
+        type(entry_data), target, intent(in) :: dat
+        real(wp), intent(in) :: min_time
+        integer, intent(in) :: repeats
+        type(pair_result), intent(out) :: res
+        type(bench_slot) :: slots(n_pw)
+        type(hertzdamp_pair_t) :: p
+        real(wp) :: k(size(dat%e)), d(size(dat%e))
+        real(wp), allocatable :: t(:, :)
+        integer :: w, n, st, i, sti(size(dat%e))
+        n = size(dat%e)
+        call hertzdamp_pair_init(pair_e, HD_DAMPING_LINEAR, HD_END_OVERLAP, HD_HOST_NONE, 0.0_wp, p, st)
+        do w = 1, n_pw
+            allocate (slots(w)%c, source=pair_case(way=w, in=dat, p=p))
+            select type (c => slots(w)%c)
+            type is (pair_case)
+                allocate (c%k(n), c%d(n), c%status(n))
+                c%status = HD_OK
+                call c%run()
+            end select
+        end do
+        ! three times the rounds of the other tables: the ratio to the bare formula is the
+        ! figure with a target, and the machines are shared
+        t = bench_rounds_all(slots, min_time, 3 * repeats)
+        res%n = n
+        res%rounds = size(t, 1)
+        do w = 1, n_pw
+            res%ns(w) = 1.0e9_wp * median(t(:, w)) / n
+        end do
+        res%c_ratio = median(t(:, PW_C) / t(:, PW_BARE))
+        res%array_ratio = median(t(:, PW_ARRAY) / t(:, PW_BARE_VEC))
+        res%failed = merge(0, n, st == HD_OK)
+        ! the pair's rows against its scalar call; the broadcast forms against one call per contact
+        res%mismatches = differ(PW_C, PW_SCALAR) + differ(PW_ARRAY, PW_SCALAR) + &
+                         differ(PW_INVERT_TC_M, PW_INVERT_EACH)
+        do i = 1, n
+            call hertzdamp_invert(dat%e(i), bcast_tc, dat%m(i), dat%u(i), HD_END_OVERLAP, k(i), d(i), sti(i))
+        end do
+        select type (c => slots(PW_INVERT_TC)%c)
+        type is (pair_case)
+            res%mismatches = res%mismatches + count_differ(c%k, c%d, c%status, k, d, sti)
+        end select
+        do w = PW_C, n_pw
+            if (w == PW_BARE_VEC) cycle
+            select type (c => slots(w)%c)
+            type is (pair_case)
+                res%failed = res%failed + count(c%status /= HD_OK)
+            end select
+        end do
+    contains
+        !> Contacts whose k, d or status differ between two rows.
+        integer function differ(w1, w2)
+            integer, intent(in) :: w1, w2
+            differ = 0
+            select type (c1 => slots(w1)%c)
+            type is (pair_case)
+                select type (c2 => slots(w2)%c)
+                type is (pair_case)
+                    differ = count_differ(c1%k, c1%d, c1%status, c2%k, c2%d, c2%status)
+                end select
+            end select
+        end function differ
+    end subroutine pair_measure
+
+end module hertzdamp_bench_pair

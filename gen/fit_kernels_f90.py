@@ -14,7 +14,6 @@ are written once here, as Fortran text:
   ARITHMETIC          -ln x, x^(1/3), x^(1/5), exp(-x) in plain arithmetic (no libm),
   estrin_expr()       a polynomial of the fit's degree by Estrin's scheme,
   inverse_body()      the inverse e -> (alpha, tau_c) of one contact end and damping law,
-  DIMENSIONAL_FORMULA k and d from alpha, tau_c, T_c, m, u (the dimensional inverse),
   forward_body()      the forward map alpha -> (e, tau_c, z_max, tau_max) of one end,
 and expanded into the instances below, each a named procedure that a reader can follow
 from top to bottom (before, 14 fragments included into each other six deep expanded to
@@ -23,12 +22,12 @@ tools/fit_bits.sh).
 
 Instances (the fewer, the faster the build; each choice keeps the bits):
 - one masked loop per inverse kernel (INVERSE_KERNELS: linear, tsuji, kuwabara-kono x
-  overlap, force), run with n = 1 by the scalar entry points; no unmasked twin and no
-  scalar copy (the dimensionless inverse is as fast as before or faster without them).
-- k and d of the dimensional inverse apart from the kernels (kernel_dimensional, one masked
-  loop for every damping law, and kernel_dimensional_one): the one block that goes when the
-  dimensional fit inverse goes.  Apart, k and d cost more than inside the kernel's loop,
-  whose work hid their divisions and square root (tools/fit_speed.sh measures it).
+  overlap, force) for the array calls, and the same body for one value (kernel_inverse_one)
+  for the scalar calls: through the loop with n = 1 (a call more, the loop's set-up, the
+  kernel chosen twice) a scalar inverse cost 14 % more than with the fused scalar code of
+  f991267 (doc/performance.md); with its own instance it costs no more.  The two instances
+  are the same text (inverse_body), so they give the same bits (test_entry_points).
+  k and d are not here: hertzdamp_pair computes them for every entry point.
 - one procedure per contact end for one value of the forward map, which skips the
   logarithm of w where alpha <= 0.6 and the turning point unless asked for; the array
   form calls it per value (not vectorised: its two loops were a quarter of the build).
@@ -182,8 +181,8 @@ HEADER_DOC = '''\
 !> - hertzdamp_fit_neg_log, _cbrt, _root5, _exp_neg: the arithmetic kernels alone;
 !> - kernel_inverse_<law>_<end>(n, e, alpha, tau_c, status): the inverse e -> (alpha,
 !>   tau_c), and kernel_inverse, which runs one by its code (kern_*);
-!> - kernel_dimensional, kernel_dimensional_one: k and d of the dimensional inverse from
-!>   the results of an inverse kernel;
+!> - kernel_inverse_<law>_<end>_one(e, alpha, tau_c, status) and kernel_inverse_one: the
+!>   same for one value (the same body text: the same bits), for the scalar calls;
 !> - kernel_forward_<end>(alpha, turning, e, tau_c, status, z_max, tau_max): the forward
 !>   map for one value.'''
 
@@ -293,15 +292,16 @@ def locate(fam, m, v):
 
 
 # ------------------------------------------------------------------ inverse
-def inverse_body(kernel, degs):
-    """The loop body of an inverse kernel, e(i) -> alpha(i), tau_c(i), status(i)."""
+def inverse_body(kernel, degs, sub='(i)'):
+    """The body of an inverse kernel, e(i) -> alpha(i), tau_c(i), status(i) in the loop of
+    the array form (sub '(i)'), e -> alpha, tau_c, status in the one-value form (sub '')."""
     code, name, law, end, emin, kind, maps = kernel
     out = ['! keep: all ones where e is valid (e_min <= e <= 1; NaN is not); an invalid e is',
            '! replaced by 0.5, its outputs by 0.  elastic: all ones at e = 1 exactly, where tau_c(0)',
            '! is returned (not the polynomial\'s value)',
-           'keep = keep_mask(outside(e(i), emin_bits, one_bits))',
-           'elastic = -shiftr(iand(ieor(transfer(e(i), 0_int64), one_bits), huge(keep)) - 1_int64, 63)',
-           'x = blend(keep, e(i), 0.5_wp)',
+           'keep = keep_mask(outside(e{i}, emin_bits, one_bits))',
+           'elastic = -shiftr(iand(ieor(transfer(e{i}, 0_int64), one_bits), huge(keep)) - 1_int64, 63)',
+           'x = blend(keep, e{i}, 0.5_wp)',
            arithmetic('neg_log', 'x', 'l')]
     if kind == 'two':
         fam, m, var = maps
@@ -335,13 +335,15 @@ def inverse_body(kernel, degs):
         out.append(polynomial(ft, degs[ft], 1, ['p2'], 'tau_c'))
     else:
         raise SystemExit('unknown kernel kind ' + kind)
-    out += ['alpha(i) = blend(keep, l * a, 0.0_wp)',
-            'tau_c(i) = blend(keep, blend(elastic, tau0, p2), 0.0_wp)',
-            'status(i) = int(iand(not(keep), int(HD_BAD_RESTITUTION, int64)))']
-    return '\n'.join(out)
+    out += ['alpha{i} = blend(keep, l * a, 0.0_wp)',
+            'tau_c{i} = blend(keep, blend(elastic, tau_c0, p2), 0.0_wp)',
+            'status{i} = int(iand(not(keep), int(HD_BAD_RESTITUTION, int64)))']
+    return '\n'.join(out).replace('{i}', sub)
 
 
-def inverse_procedure(kernel, degs):
+def inverse_procedure(kernel, degs, one=False):
+    """The array form of an inverse kernel (a loop over n values), or with `one` its form
+    for one value: the same body text (inverse_body), so the same operations and bits."""
     code, name, law, end, emin, kind, maps = kernel
     if kind == 'split':
         what = 'alpha/L of L, tau_c of L^(1/5)'
@@ -349,7 +351,24 @@ def inverse_procedure(kernel, degs):
         what = 'alpha exact, tau_c of L'
     else:
         what = 'alpha/L and tau_c of %s' % VAR_TEXT[maps[2]]
-    head = '''\
+    local = 'x, l, v, t, a, p2' if kind != 'exact' else 'x, l, t, a, p2'
+    if one:
+        head = '''\
+!> Inverse kernel %d for one value (kernel_inverse_%s's body, the same bits).
+pure elemental subroutine kernel_inverse_%s_one(e, alpha, tau_c, status)
+    real(wp), intent(in) :: e           !! restitution coefficient
+    real(wp), intent(out) :: alpha      !! damping parameter
+    real(wp), intent(out) :: tau_c      !! dimensionless contact duration
+    integer, intent(out) :: status      !! HD_OK or HD_BAD_RESTITUTION
+    integer(int64), parameter :: emin_bits = transfer(%s, 0_int64)
+    real(wp) :: %s
+    integer(int64) :: keep, elastic
+    integer :: ip
+''' % (code, name, name, emin, local)
+        body = inverse_body(kernel, degs, '')
+        tail = '\nend subroutine kernel_inverse_%s_one' % name
+    else:
+        head = '''\
 !> Inverse kernel %d: the %s law, %s end (%s; L = -ln e), for n
 !> restitution coefficients: alpha, tau_c and HD_OK where %s <= e <= 1, else 0, 0 and
 !> HD_BAD_RESTITUTION.
@@ -363,129 +382,46 @@ pure subroutine kernel_inverse_%s(n, e, alpha, tau_c, status)
     real(wp) :: %s
     integer(int64) :: keep, elastic
     integer :: i, ip
-    tau0 = hertzdamp_tau_c0()
-''' % (code, law, end, what, emin, name, emin, 'tau0, x, l, v, t, a, p2' if kind != 'exact' else 'tau0, x, l, t, a, p2')
+''' % (code, law, end, what, emin, name, emin, local)
+        body = 'do i = 1, n\n%s\nend do' % indent(inverse_body(kernel, degs), 4)
+        tail = '\nend subroutine kernel_inverse_%s' % name
     fams = sorted({maps[0]} if kind != 'split' else {maps[0][0], maps[1][0]})
-    loop = 'do i = 1, n\n%s\nend do' % indent(inverse_body(kernel, degs), 4)
-    return head + indent(associated(loop, fams), 4) + '\nend subroutine kernel_inverse_%s' % name
+    return head + indent(associated(body, fams), 4) + tail
 
 
-def inverse_dispatch():
-    lines = ['!> The inverse kernel of code ikern (kern_*; HD_BAD_END and zero outputs for another code).',
-             'pure subroutine kernel_inverse(ikern, n, e, alpha, tau_c, status)',
-             '    integer, intent(in) :: ikern        !! kernel code, kern_*',
-             '    integer, intent(in) :: n            !! number of values',
-             '    real(wp), intent(in) :: e(n)        !! restitution coefficients',
-             '    real(wp), intent(out) :: alpha(n)   !! damping parameters',
-             '    real(wp), intent(out) :: tau_c(n)   !! dimensionless contact durations',
-             '    integer, intent(out) :: status(n)   !! HD_OK or HD_BAD_RESTITUTION',
-             '    select case (ikern)']
+def inverse_dispatch(one=False):
+    """kernel_inverse (n values) or kernel_inverse_one (one value): the kernel of a code."""
+    if one:
+        lines = ['!> The inverse kernel of code ikern for one value (kern_*; HD_BAD_END and zero outputs',
+                 '!> for another code): the scalar calls\' entry, the same bits as kernel_inverse.',
+                 'pure elemental subroutine kernel_inverse_one(ikern, e, alpha, tau_c, status)',
+                 '    integer, intent(in) :: ikern        !! kernel code, kern_*',
+                 '    real(wp), intent(in) :: e           !! restitution coefficient',
+                 '    real(wp), intent(out) :: alpha      !! damping parameter',
+                 '    real(wp), intent(out) :: tau_c      !! dimensionless contact duration',
+                 '    integer, intent(out) :: status      !! HD_OK or HD_BAD_RESTITUTION']
+        args, suffix, what = 'e, alpha, tau_c, status', '_one', 'kernel_inverse_one'
+    else:
+        lines = ['!> The inverse kernel of code ikern (kern_*; HD_BAD_END and zero outputs for another code).',
+                 'pure subroutine kernel_inverse(ikern, n, e, alpha, tau_c, status)',
+                 '    integer, intent(in) :: ikern        !! kernel code, kern_*',
+                 '    integer, intent(in) :: n            !! number of values',
+                 '    real(wp), intent(in) :: e(n)        !! restitution coefficients',
+                 '    real(wp), intent(out) :: alpha(n)   !! damping parameters',
+                 '    real(wp), intent(out) :: tau_c(n)   !! dimensionless contact durations',
+                 '    integer, intent(out) :: status(n)   !! HD_OK or HD_BAD_RESTITUTION']
+        args, suffix, what = 'n, e, alpha, tau_c, status', '', 'kernel_inverse'
+    lines.append('    select case (ikern)')
     for code, name, *_ in INVERSE_KERNELS:
         lines.append('    case (kern_%s)' % name)
-        lines.append('        call kernel_inverse_%s(n, e, alpha, tau_c, status)' % name)
+        lines.append('        call kernel_inverse_%s%s(%s)' % (name, suffix, args))
     lines += ['    case default',
               '        alpha = 0.0_wp',
               '        tau_c = 0.0_wp',
               '        status = HD_BAD_END',
               '    end select',
-              'end subroutine kernel_inverse']
+              'end subroutine %s' % what]
     return '\n'.join(lines)
-
-
-# ------------------------------------------------------------------ dimensional inverse
-# k and d of the dimensional inverse from the results of an inverse kernel, written once
-# (DIMENSIONAL_FORMULA, its names in braces) for the array and the one-contact procedure:
-# with r = tau_c / T_c = 1/t* and s = (r/u)^(1/2),  k = m r^2 s,  d = alpha m r (r/u)^q.
-DIMENSIONAL_FORMULA = '''\
-r = {tau} * (1.0_wp / {tc})
-s = sqrt({tau} * (1.0_wp / ({tc} * {u})))
-{k} = {ok}{m} * (r * r) * s{end}
-{d} = {ok}{alpha} * {m} * r{q}{end}'''
-LAW_Q = [('HD_DAMPING_TSUJI', ' * sqrt(s)', 'tsuji, q = 1/4: alpha m r s^(1/2)'),
-         ('HD_DAMPING_KUWABARA_KONO', ' * s', 'kuwabara-kono, q = 1/2: alpha m r s'),
-         ('default', '', 'linear, q = 0: alpha m r')]
-
-DIMENSIONAL = '''\
-!> k and d of the dimensional inverse (doc/theory.md section 6, doc/damping-laws.md
-!> section 8) from the results of an inverse kernel, for n contacts of one damping law:
-!> with r = tau_c / T_c = 1/t* and s = (r/u)^(1/2),  k = m r^2 s  and, for the damping
-!> force d zeta^q zeta' (alpha = d t* (u t*)^q / m),  d = alpha m r (r/u)^q,
-!> where T_c, m, u lie in the direct range [1e-30, 1e30] (others are replaced by 1 and
-!> flagged: status HD_OUT_OF_RANGE, k = d = 0).  Where the kernel's status is not HD_OK
-!> (e invalid) it stays, and k = d = 0.
-!> (With kernel_dimensional_one, the dimensional fit: it goes when hertzdamp_fit_invert(_n) goes.)
-pure subroutine kernel_dimensional(law, n, tc, m, u, alpha, tau_c, status, k, d)
-    integer, intent(in) :: law           !! HD_DAMPING_*
-    integer, intent(in) :: n             !! number of contacts
-    real(wp), intent(in) :: tc(n)        !! target contact times [s]
-    real(wp), intent(in) :: m(n)         !! effective masses [kg]
-    real(wp), intent(in) :: u(n)         !! impact velocities [m s^-1]
-    real(wp), intent(in) :: alpha(n)     !! alpha of the inverse kernel
-    real(wp), intent(in) :: tau_c(n)     !! tau_c of the inverse kernel
-    integer, intent(inout) :: status(n)  !! in: the kernel's; out: also HD_OUT_OF_RANGE
-    real(wp), intent(out) :: k(n)        !! Hertz stiffnesses [N m^-3/2] (0 where status /= HD_OK)
-    real(wp), intent(out) :: d(n)        !! damping coefficients [kg s^-1 m^-q] (0 where status /= HD_OK)
-    real(wp) :: tcs, ms, us, r, s
-    integer(int64) :: keep, direct, tsuji, kk
-    integer :: i
-    ! all ones for the law's factor (r/u)^q of d: s^(1/2) (tsuji), s (kuwabara-kono), else 1
-    tsuji = -int(merge(1, 0, law == HD_DAMPING_TSUJI), int64)
-    kk = -int(merge(1, 0, law == HD_DAMPING_KUWABARA_KONO), int64)
-{cases}
-end subroutine kernel_dimensional
-
-!> kernel_dimensional for one contact (the same bits), with a branch instead of masks.
-pure subroutine kernel_dimensional_one(law, tc, m, u, alpha, tau_c, status, k, d)
-    integer, intent(in) :: law           !! HD_DAMPING_*
-    real(wp), intent(in) :: tc           !! target contact time [s]
-    real(wp), intent(in) :: m            !! effective mass [kg]
-    real(wp), intent(in) :: u            !! impact velocity [m s^-1]
-    real(wp), intent(in) :: alpha        !! alpha of the inverse kernel
-    real(wp), intent(in) :: tau_c        !! tau_c of the inverse kernel
-    integer, intent(inout) :: status     !! in: the kernel's; out: also HD_OUT_OF_RANGE
-    real(wp), intent(out) :: k           !! Hertz stiffness [N m^-3/2] (0 where status /= HD_OK)
-    real(wp), intent(out) :: d           !! damping coefficient [kg s^-1 m^-q] (0 where status /= HD_OK)
-    real(wp) :: r, s
-    if (status == HD_OK .and. tc >= hertzdamp_direct_lo .and. tc <= hertzdamp_direct_hi .and. &
-        m >= hertzdamp_direct_lo .and. m <= hertzdamp_direct_hi .and. &
-        u >= hertzdamp_direct_lo .and. u <= hertzdamp_direct_hi) then
-        select case (law)
-{one_cases}
-        end select
-    else
-        k = 0.0_wp
-        d = 0.0_wp
-        if (status == HD_OK) status = HD_OUT_OF_RANGE
-    end if
-end subroutine kernel_dimensional_one'''
-
-DIMENSIONAL_LOOP = '''\
-do i = 1, n
-    keep = shifta(int(status(i), int64) - 1_int64, 63)      ! all ones where the kernel's status is HD_OK (0)
-    direct = iand(keep, keep_mask(ior(outside(tc(i), direct_lo_bits, direct_hi_bits), &
-                                      ior(outside(m(i), direct_lo_bits, direct_hi_bits), &
-                                          outside(u(i), direct_lo_bits, direct_hi_bits)))))
-    tcs = blend(direct, tc(i), 1.0_wp)
-    ms = blend(direct, m(i), 1.0_wp)
-    us = blend(direct, u(i), 1.0_wp)
-{formula}
-    status(i) = int(iblend(keep, iand(not(direct), int(HD_OUT_OF_RANGE, int64)), int(status(i), int64)))
-end do'''
-
-
-def dimensional():
-    one_cases = []
-    for law, q, text in LAW_Q:
-        label = 'case default' if law == 'default' else 'case (%s)' % law
-        one = DIMENSIONAL_FORMULA.format(tau='tau_c', tc='tc', u='u', m='m', alpha='alpha', k='k', d='d', ok='',
-                                         end='', q=q)
-        one_cases += ['        %s' % label, indent(one, 12)]
-    # one loop for every law: (r/u)^q = 1, s^(1/2), s chosen by loop-invariant masks (x 1 is exact)
-    loop = DIMENSIONAL_FORMULA.format(tau='tau_c(i)', tc='tcs', u='us', m='ms', alpha='alpha(i)', k='k(i)',
-                                      d='d(i)', ok='blend(direct, ', end=', 0.0_wp)',
-                                      q=' * blend(tsuji, sqrt(s), blend(kk, s, 1.0_wp))')
-    return DIMENSIONAL.replace('{cases}', indent(DIMENSIONAL_LOOP.replace('{formula}', indent(loop, 4)), 4)) \
-        .replace('{one_cases}', '\n'.join(one_cases))
 
 
 # ------------------------------------------------------------------ forward
@@ -623,9 +559,6 @@ integer(int64), parameter :: two52_bits = transfer(two52, 0_int64)
 real(wp), parameter :: shifter = 1.5_wp * two52   ! x + shifter - shifter rounds x to an integer
 integer(int64), parameter :: shifter_bits = transfer(shifter, 0_int64)
 real(wp), parameter :: pos_inf = transfer(inf_bits, 1.0_wp)
-!> T_c, m, u in [direct_lo, direct_hi]: the direct path of the dimensional inverse.
-integer(int64), parameter :: direct_lo_bits = transfer(hertzdamp_direct_lo, 0_int64)
-integer(int64), parameter :: direct_hi_bits = transfer(hertzdamp_direct_hi, 0_int64)
 
 ! ---- ln 2 in two parts: ln2_hi has 32 significant bits, so k ln2_hi is exact for |k| < 2^21
 real(wp), parameter :: ln2 = log(2.0_wp)
@@ -778,16 +711,16 @@ def main(argv):
            '! Regenerate with `make fit-source`; test/docs/cli_sync_fit.sh checks that this file is what it writes.',
            '! Settings: polynomials by Estrin\'s scheme, degrees %s; instances: one masked loop per' % (
                ', '.join('%s %d' % (f, degs[f]) for f in sorted(degs))),
-           '! inverse kernel (%d), one masked loop for k and d of every damping law and its one-contact form, one' % (
+           '! inverse kernel (%d) and its form for one value, one procedure per contact end for one value of the' % (
                len(INVERSE_KERNELS)),
-           '! procedure per contact end for one value of the forward map.',
+           '! forward map.',
            '',
            HEADER_DOC,
            'module hertzdamp_fit_kernels',
            '    use hertzdamp_kinds, only: hertzdamp_rk',
-           '    use hertzdamp_status, only: HD_OK, HD_BAD_END, HD_BAD_ALPHA, HD_BAD_RESTITUTION, HD_OUT_OF_RANGE, &',
-           '                                HD_OUTSIDE_VALIDITY, HD_NO_REBOUND',
-           '    use hertzdamp_constants, only: hertzdamp_tau_c0, hertzdamp_pi, hertzdamp_direct_lo, hertzdamp_direct_hi',
+           '    use hertzdamp_status, only: HD_OK, HD_BAD_END, HD_BAD_ALPHA, HD_BAD_RESTITUTION, HD_OUTSIDE_VALIDITY, &',
+           '                                HD_NO_REBOUND',
+           '    use hertzdamp_constants, only: tau_c0 => hertzdamp_tau_c0_value, hertzdamp_pi',
            '    use hertzdamp_laws, only: HD_DAMPING_TSUJI, HD_DAMPING_KUWABARA_KONO, hertzdamp_alpha_c_tsuji',
            '    use hertzdamp_fit_data',
            '    use, intrinsic :: iso_fortran_env, only: int64, real128',
@@ -799,7 +732,7 @@ def main(argv):
            indent(CONSTANTS.replace('{codes}', codes), 4),
            '',
            '    public :: hertzdamp_fit_neg_log, hertzdamp_fit_cbrt, hertzdamp_fit_root5, hertzdamp_fit_exp_neg',
-           '    public :: kernel_inverse, kernel_dimensional, kernel_dimensional_one, kernel_forward_overlap, kernel_forward_force',
+           '    public :: kernel_inverse, kernel_inverse_one, kernel_forward_overlap, kernel_forward_force',
            '',
            'contains',
            '',
@@ -814,10 +747,12 @@ def main(argv):
         out.append('')
     out.append(indent(inverse_dispatch(), 4))
     out.append('')
-    out.append('    ! ================================================================ dimensional inverse')
-    out.append('    ! (it goes when hertzdamp_fit_invert(_n) goes)')
+    out.append('    ! ================================================================ inverse kernels for one value')
     out.append('')
-    out.append(indent(dimensional(), 4))
+    for k in INVERSE_KERNELS:
+        out.append(indent(inverse_procedure(k, degs, one=True), 4))
+        out.append('')
+    out.append(indent(inverse_dispatch(one=True), 4))
     out.append('')
     out.append('    ! ================================================================ forward kernels')
     for end in ('overlap', 'force'):

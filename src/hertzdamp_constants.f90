@@ -20,6 +20,9 @@ module hertzdamp_constants
     ! constant expressions), so that the functions below cost nothing in hot loops.
     real(wp), parameter :: z_max0 = 1.25_wp**0.4_wp
     real(wp), parameter :: tau_c0 = 0.8_wp * z_max0 * exp(log_gamma(0.4_wp) + log_gamma(0.5_wp) - log_gamma(0.9_wp))
+    !> tau_c(0) as a named constant (hertzdamp_tau_c0 as a function): for the fit kernels,
+    !> where a call per contact would cost time.
+    real(wp), parameter, public :: hertzdamp_tau_c0_value = tau_c0
     real(wp), parameter :: e1 = 0.8_wp * z_max0 * exp(log_gamma(0.4_wp) + log_gamma(1.5_wp) - log_gamma(1.9_wp))
     ! First-order slopes of the laws q = 0, 1/4, 1/2 (doc/damping-laws.md):
     ! e1(q) = (4/5) z_max0^(1+q) B(2(1+q)/5, 3/2).  Index = law code; q = 0 is e1 above.

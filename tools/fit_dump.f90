@@ -1,5 +1,5 @@
 !> Bit dump of every public result of the fit (tools/fit_bits.sh compiles it against two
-!> trees and compares the dumps): hertzdamp_fit_inverse(_n), hertzdamp_fit_invert(_n),
+!> trees and compares the dumps): hertzdamp_fit_inverse(_n),
 !> hertzdamp_fit_forward(_n), hertzdamp_fit_e, _tau_c, _alpha, _tau_c_of_e, the arithmetic
 !> kernels and the maps of hertzdamp_fit_laws, for every law and contact end (and invalid
 !> ones), scalar and array, on dense grids with the edges: piece boundaries and the ends
@@ -10,9 +10,9 @@
 !> Writes to the file named by its first argument.
 program fit_dump
     use hertzdamp_kinds, only: hertzdamp_rk
-    use hertzdamp_status, only: HD_END_OVERLAP, HD_END_FORCE
-    use hertzdamp_fit, only: hertzdamp_fit_inverse, hertzdamp_fit_inverse_n, hertzdamp_fit_invert, &
-                             hertzdamp_fit_invert_n, hertzdamp_fit_forward, hertzdamp_fit_forward_n, hertzdamp_fit_e, &
+    use hertzdamp_ends, only: HD_END_OVERLAP, HD_END_FORCE
+    use hertzdamp_fit, only: hertzdamp_fit_inverse, hertzdamp_fit_inverse_n, &
+                             hertzdamp_fit_forward, hertzdamp_fit_forward_n, hertzdamp_fit_e, &
                              hertzdamp_fit_tau_c, hertzdamp_fit_alpha, hertzdamp_fit_tau_c_of_e, hertzdamp_fit_neg_log, &
                              hertzdamp_fit_cbrt, hertzdamp_fit_exp_neg, hertzdamp_fit_root5, hertzdamp_fit_alpha_c, &
                              hertzdamp_fit_alpha_max_force, hertzdamp_fit_e_min_overlap, hertzdamp_fit_e_min_force, &
@@ -29,7 +29,7 @@ program fit_dump
     implicit none
     integer, parameter :: wp = hertzdamp_rk
     integer, parameter :: ends(3) = [HD_END_OVERLAP, HD_END_FORCE, 7], laws(5) = [0, 1, 2, -1, 3]
-    real(wp), allocatable :: es(:), as(:), xs(:), tcs(:), ms(:), us(:)
+    real(wp), allocatable :: es(:), as(:), xs(:)
     real(wp) :: nan, inf, specials(18)
     character(len=4096) :: path
     integer :: out, ie, il
@@ -45,7 +45,6 @@ program fit_dump
     call build_e_grid(es)
     call build_alpha_grid(as)
     call build_x_grid(xs)
-    call build_dimensional(tcs, ms, us)
 
     call dump_arithmetic(xs)
     ! valid ends and laws on the whole grids, invalid ones on every 41st value
@@ -53,11 +52,9 @@ program fit_dump
         do il = 1, size(laws)
             if (ie <= 2 .and. il <= 3) then
                 call dump_inverse(es, ends(ie), laws(il))
-                call dump_invert(es, tcs, ms, us, ends(ie), laws(il))
                 call dump_law_forward(as, ends(ie), laws(il))
             else
                 call dump_inverse(es(::41), ends(ie), laws(il))
-                call dump_invert(es(::41), tcs(::41), ms(::41), us(::41), ends(ie), laws(il))
                 call dump_law_forward(as(::41), ends(ie), laws(il))
             end if
         end do
@@ -168,35 +165,6 @@ contains
             call add_ulps(v, 2.0_wp**i)
         end do
     end subroutine build_x_grid
-
-    !> T_c, m, u of the dimensional inverse: a deterministic log-uniform scatter over the
-    !> direct range [1e-30, 1e30] and past it, every few values an edge (the ends of the
-    !> range and one ulp past them, 0, -0, negative, NaN, +-inf, subnormal, huge).
-    subroutine build_dimensional(tc, m, u)
-        real(wp), allocatable, intent(out) :: tc(:), m(:), u(:)
-        real(wp) :: edges(12)
-        integer :: i
-        edges = [1.0e-30_wp, nearest(1.0e-30_wp, -1.0_wp), 1.0e30_wp, nearest(1.0e30_wp, 1.0_wp), 0.0_wp, -0.0_wp, &
-                 -1.0_wp, nan, inf, -inf, 1.0e-310_wp, huge(1.0_wp)]
-        allocate (tc(size(es)), m(size(es)), u(size(es)))
-        do i = 1, size(es)
-            tc(i) = scatter(i, 1)
-            m(i) = scatter(i, 2)
-            u(i) = scatter(i, 3)
-            if (mod(i, 17) == 0) tc(i) = edges(1 + mod(i / 17, size(edges)))
-            if (mod(i, 19) == 0) m(i) = edges(1 + mod(i / 19, size(edges)))
-            if (mod(i, 23) == 0) u(i) = edges(1 + mod(i / 23, size(edges)))
-        end do
-    end subroutine build_dimensional
-
-    !> 10^(-32 .. 32), from a fixed integer hash of (i, k).
-    real(wp) function scatter(i, k)
-        integer, intent(in) :: i, k
-        integer(int64) :: h
-        h = int(i, int64) * 2654435761_int64 + int(k, int64) * 40503_int64
-        h = iand(ieor(h, shiftr(h, 13)) * 1274126177_int64, int(z'7FFFFFFF', int64))
-        scatter = 10.0_wp**(-32.0_wp + 64.0_wp * real(h, wp) / 2147483647.0_wp)
-    end function scatter
 
     real(wp) function piece_end(x0, x1, np, i)
         real(wp), intent(in) :: x0, x1
@@ -315,46 +283,6 @@ contains
         end do
         call put(trim(tag) // '_short_n', 0, [av, tv], sv)
     end subroutine dump_inverse
-
-    !> The dimensional inverse of a law: scalar calls, the array call over everything
-    !> (mixed), over the contacts of the direct range with a valid e (whole chunks valid)
-    !> and in short pieces.
-    subroutine dump_invert(e, tc, m, u, iend, law)
-        real(wp), intent(in) :: e(:), tc(:), m(:), u(:)
-        integer, intent(in) :: iend, law
-        real(wp), dimension(size(e)) :: k, d, a, t
-        integer :: s(size(e)), i, nv
-        logical :: ok(size(e))
-        real(wp), allocatable :: ev(:), tv(:), mv(:), uv(:), kv(:), dv(:), av(:), xv(:)
-        integer, allocatable :: sv(:)
-        character(len=24) :: tag
-        write (tag, '(a, i0, a, i0)') 'invert_end', iend, '_law', law
-        do i = 1, size(e)
-            call hertzdamp_fit_invert(e(i), tc(i), m(i), u(i), iend, k(i), d(i), a(i), t(i), s(i), law)
-            call put(trim(tag), i, [k(i), d(i), a(i), t(i)], [s(i)])
-        end do
-        call hertzdamp_fit_invert_n(size(e), e, tc, m, u, iend, k, d, a, t, s, law)
-        call put(trim(tag) // '_n', 0, [k, d, a, t], s)
-        ! the same e with T_c, m, u inside the direct range: whole chunks valid
-        ok = e >= 1.0e-3_wp .and. e <= 1.0_wp
-        nv = count(ok)
-        ev = pack(e, ok)
-        tv = pack([(scatter(i, 4) * 1.0e-3_wp, i = 1, size(e))], ok)
-        mv = pack([(scatter(i, 5), i = 1, size(e))], ok)
-        uv = pack([(scatter(i, 6), i = 1, size(e))], ok)
-        allocate (kv(nv), dv(nv), av(nv), xv(nv), sv(nv))
-        call hertzdamp_fit_invert_n(nv, ev, tv, mv, uv, iend, kv, dv, av, xv, sv, law)
-        call put(trim(tag) // '_valid_n', 0, [kv, dv, av, xv], sv)
-        do i = 1, nv, 3
-            call hertzdamp_fit_invert(ev(i), tv(i), mv(i), uv(i), iend, kv(i), dv(i), av(i), xv(i), sv(i), law)
-            call put(trim(tag) // '_valid', i, [kv(i), dv(i), av(i), xv(i)], [sv(i)])
-        end do
-        do i = 1, nv, 97
-            call hertzdamp_fit_invert_n(min(5, nv - i + 1), ev(i:), tv(i:), mv(i:), uv(i:), iend, kv(i:), dv(i:), &
-                                        av(i:), xv(i:), sv(i:), law)
-        end do
-        call put(trim(tag) // '_short_n', 0, [kv, dv, av, xv], sv)
-    end subroutine dump_invert
 
     !> The linear forward map: scalar calls with each set of optional outputs, the array
     !> call with each set, the elemental e and tau_c, the status helper.

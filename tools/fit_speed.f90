@@ -1,6 +1,6 @@
 !> Nanoseconds per value of the fit's entry points (tools/fit_speed.sh runs it for two
-!> trees side by side): the inverse (dimensionless and dimensional, one value per call and
-!> over arrays) for every law at the overlap end, and the forward map of both ends (one
+!> trees side by side): the inverse (the fit's alpha, tau_c and hertzdamp_invert's k, d, one
+!> value per call and over arrays) for every law at the overlap end, and the forward map of both ends (one
 !> value per call with and without the turning point, and over arrays).  Each figure is the
 !> shortest of `rounds` batches (the least disturbed by other jobs on a shared machine)
 !> over the same 100000 values (e uniform in [0.05, 0.99]; alpha uniform in [0, 1.1]
@@ -8,15 +8,16 @@
 !> Prints one line per entry point: its name and ns per value.
 program fit_speed
     use hertzdamp_kinds, only: hertzdamp_rk
-    use hertzdamp_status, only: HD_END_OVERLAP, HD_END_FORCE
-    use hertzdamp_fit, only: hertzdamp_fit_inverse, hertzdamp_fit_inverse_n, hertzdamp_fit_invert, &
-                             hertzdamp_fit_invert_n, hertzdamp_fit_forward, hertzdamp_fit_forward_n
+    use hertzdamp_ends, only: HD_END_OVERLAP, HD_END_FORCE
+    use hertzdamp_fit, only: hertzdamp_fit_inverse, hertzdamp_fit_inverse_n, hertzdamp_fit_forward, &
+                             hertzdamp_fit_forward_n
+    use hertzdamp_pair, only: hertzdamp_invert
     use, intrinsic :: iso_fortran_env, only: int64
     implicit none
     integer, parameter :: wp = hertzdamp_rk, n = 100000, rounds = 15
     !> the entry points, in the order printed
     character(len=*), parameter :: names(8) = [character(len=24) :: 'inverse scalar law', 'inverse_n law', &
-        'invert scalar law', 'invert_n law', 'forward scalar', 'forward scalar turning', 'forward_n', &
+        'invert scalar law', 'invert array law', 'forward scalar', 'forward scalar turning', 'forward_n', &
         'forward_n turning']
     real(wp), allocatable :: e(:), tc(:), m(:), u(:), ao(:), af(:)
     real(wp), allocatable :: k(:), d(:), a(:), t(:), z(:), x(:)
@@ -78,10 +79,10 @@ contains
             call hertzdamp_fit_inverse_n(n, e, iend, a, t, s, law)
         case (3)
             do i = 1, n
-                call hertzdamp_fit_invert(e(i), tc(i), m(i), u(i), iend, k(i), d(i), a(i), t(i), s(i), law)
+                call hertzdamp_invert(e(i), tc(i), m(i), u(i), iend, k(i), d(i), s(i), law=law)
             end do
         case (4)
-            call hertzdamp_fit_invert_n(n, e, tc, m, u, iend, k, d, a, t, s, law)
+            call hertzdamp_invert(e, tc, m, u, iend, k, d, s, law=law)
         case (5)
             do i = 1, n
                 call hertzdamp_fit_forward(al(i), iend, a(i), t(i), s(i))

@@ -17,7 +17,6 @@ program test_entry_points
                          hertzdamp_fit_alpha_c, HD_OK, HD_END_OVERLAP, HD_END_FORCE, HD_METHOD_FIT, HD_BAD_LAW, &
                          HD_DAMPING_LINEAR, HD_DAMPING_KUWABARA_KONO, hertzdamp_law_name
     use hertzdamp_pair, only: hertzdamp_pair_t, hertzdamp_pair_init, hertzdamp_pair_kd
-    use hertzdamp_fit, only: hertzdamp_fit_invert, hertzdamp_fit_invert_n
     use hertzdamp_host, only: HD_HOST_NONE
     use hertzdamp_status, only: HD_BAD_PAIR
     use hertzdamp_capi, only: hertzdamp_c_invert, hertzdamp_c_invert_n, hertzdamp_c_invert_bounded, &
@@ -504,12 +503,16 @@ contains
         allocate (a(n), t(n), a1(n), t1(n), k(n), d(n), k1(n), d1(n), st(n), st1(n))
         do iend = -1, 2
             do law = -1, HD_DAMPING_KUWABARA_KONO + 1
-                call hertzdamp_fit_invert_n(n, e, tc, m, u, iend, k, d, a, t, st, law)
+                ! (the dimensional fit hertzdamp_fit_invert(_n) is gone: its k and d are
+                ! hertzdamp_invert's, whose array form runs the fit's loop and the scalar form
+                ! its form for one value)
+                call hertzdamp_invert(e, tc, m, u, iend, k, d, st, alpha=a, tau_c=t, law=law)
                 do i = 1, n
-                    call hertzdamp_fit_invert(e(i), tc(i), m(i), u(i), iend, k1(i), d1(i), a1(i), t1(i), st1(i), law)
+                    call hertzdamp_invert(e(i), tc(i), m(i), u(i), iend, k1(i), d1(i), st1(i), alpha=a1(i), &
+                                          tau_c=t1(i), law=law)
                 end do
                 call s%check(all(bits(k) == bits(k1) .and. bits(d) == bits(d1) .and. bits(a) == bits(a1) .and. &
-                                 bits(t) == bits(t1) .and. st == st1), 'fit invert kernel: n at once = one at a time, ' &
+                                 bits(t) == bits(t1) .and. st == st1), 'fit invert: n at once = one at a time, ' &
                              // law_tag(iend, law))
             end do
         end do

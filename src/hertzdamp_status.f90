@@ -4,12 +4,8 @@
 !> these codes and `hertzdamp_message` explains it.  The values are stable across
 !> versions (the C and legacy Fortran entry points return them too).
 module hertzdamp_status
-    ! The contact-end codes live in hertzdamp_ends; they are re-exported here only for the
-    ! modules that still take them from this one (to be dropped when none does).
-    use hertzdamp_ends, only: HD_END_OVERLAP, HD_END_FORCE, hertzdamp_end_name
     implicit none
     private
-    public :: HD_END_OVERLAP, HD_END_FORCE, hertzdamp_end_name
 
     integer, parameter, public :: HD_OK = 0                !! success
     integer, parameter, public :: HD_NO_REBOUND = 1        !! overlap end with alpha >= alpha_c: e = 0, tau_c = +inf

@@ -73,7 +73,8 @@
 !> back as a status (hertzdamp_status codes) and a message.
 module hertzdamp_dem_engine
     use hertzdamp_kinds, only: hertzdamp_rk
-    use hertzdamp_status, only: HD_OK, HD_END_FORCE, HD_OUT_OF_RANGE, hertzdamp_message
+    use hertzdamp_status, only: HD_OK, HD_OUT_OF_RANGE, hertzdamp_message
+    use hertzdamp_ends, only: HD_END_FORCE
     use hertzdamp_laws, only: hertzdamp_law_q
     use hertzdamp_materials, only: hertzdamp_sphere_mass, hertzdamp_effective_mass, hertzdamp_effective_radius, &
                                    hertzdamp_effective_modulus, hertzdamp_hertz_stiffness

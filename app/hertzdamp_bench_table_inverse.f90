@@ -9,6 +9,7 @@ module hertzdamp_bench_table_inverse
                          HD_METHOD_SERIES, HD_METHOD_PADE, HD_METHOD_COMPACT, HD_METHOD_FIT, HD_METHOD_ITERATIVE, &
                          HD_DAMPING_LINEAR, HD_DAMPING_TSUJI, hertzdamp_tsuji_alpha
     use hertzdamp_pair, only: hertzdamp_invert
+    use hertzdamp_scaling, only: hertzdamp_expand
     use hertzdamp_inverse, only: hertzdamp_invert_options
     use hertzdamp_gsl_secant, only: hertzdamp_gsl_secant_invert
     use hertzdamp_bench_timer, only: bench_case, bench_measure
@@ -69,15 +70,13 @@ contains
 
     subroutine gsl_inv_run(self)
         class(gsl_inv_case), intent(inout) :: self
-        integer :: i
-        real(wp) :: r
+        integer :: i, st
         do i = 1, size(self%e)
             call hertzdamp_gsl_secant_invert(self%e(i), HD_END_OVERLAP, self%tol, self%alpha(i), self%tau(i), &
                                              self%status(i), self%solves(i), self%rhs(i))
-            ! the direct formulas of the library (r = tau_c / T_c = 1/t*)
-            r = self%tau(i) * (1.0_wp / self%tc(i))
-            self%k(i) = self%m(i) * (r * r) * sqrt(self%tau(i) * (1.0_wp / (self%tc(i) * self%u(i))))
-            self%d(i) = self%alpha(i) * self%m(i) * r
+            ! k and d of the library's scaling from alpha and t* = T_c / tau_c (no copy of its formulas)
+            call hertzdamp_expand(self%alpha(i), self%tc(i) / self%tau(i), self%m(i), self%u(i), self%k(i), self%d(i), st)
+            if (self%status(i) == HD_OK) self%status(i) = st
         end do
     end subroutine gsl_inv_run
 

@@ -26,7 +26,7 @@ module hertzdamp_materials
     use hertzdamp_kinds, only: hertzdamp_rk
     use hertzdamp_status, only: HD_OK, HD_BAD_RADIUS, HD_BAD_DENSITY, HD_BAD_MODULUS, HD_BAD_POISSON, &
                                 HD_BAD_MASS, HD_BAD_VELOCITY, HD_BAD_STIFFNESS, HD_OUT_OF_RANGE
-    use hertzdamp_scaling, only: hertzdamp_safe_exp, hertzdamp_check_positive
+    use hertzdamp_scaling, only: hertzdamp_safe_exp, hertzdamp_check_positive, hertzdamp_tstar_direct, hertzdamp_log_tstar
     use hertzdamp_constants, only: hertzdamp_tau_c0, pi => hertzdamp_pi, hertzdamp_direct_lo, hertzdamp_direct_hi
     implicit none
     private
@@ -147,9 +147,11 @@ contains
         if (status == HD_OK) status = hertzdamp_check_positive(u, HD_BAD_VELOCITY)
         if (status /= HD_OK) return
         if (ordinary(mass) .and. ordinary(k) .and. ordinary(u)) then
-            tc = hertzdamp_tau_c0() * (mass / (k * sqrt(u)))**0.4_wp
+            tc = hertzdamp_tau_c0() * hertzdamp_tstar_direct(mass, k, u)
         else
-            call hertzdamp_safe_exp(log(hertzdamp_tau_c0()) + 0.4_wp * (log(mass) - log(k)) - 0.2_wp * log(u), tc, status)
+            ! t* by the one formula of its logarithm (the stiffness bound's, hertzdamp_pair)
+            call hertzdamp_safe_exp(log(hertzdamp_tau_c0()) + hertzdamp_log_tstar(log(mass), log(k), log(u), .true.), tc, &
+                                    status)
         end if
     end subroutine hertzdamp_hertz_time
 

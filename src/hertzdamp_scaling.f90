@@ -31,7 +31,7 @@ module hertzdamp_scaling
 
     public :: hertzdamp_reduce, hertzdamp_expand, hertzdamp_check_positive, hertzdamp_safe_exp, &
               hertzdamp_safe_exp_or_zero
-    public :: hertzdamp_log_tstar, hertzdamp_log_k, hertzdamp_scale_log_d
+    public :: hertzdamp_log_tstar, hertzdamp_tstar_direct, hertzdamp_log_k, hertzdamp_scale_log_d
 
 contains
 
@@ -89,6 +89,16 @@ contains
             lts = 0.4_wp * lm - 0.4_wp * lk - 0.2_wp * lu
         end if
     end function hertzdamp_log_tstar
+
+    !> t* = (m / (k u^(1/2)))^(2/5) of a contact of mass m, stiffness k and impact speed u
+    !> by the power, for m, k, u in the direct range [1e-30, 1e30] (no overflow there; the
+    !> other magnitudes take hertzdamp_log_tstar): the Hertz time of hertzdamp_hertz_time.
+    pure elemental real(wp) function hertzdamp_tstar_direct(m, k, u) result(ts)
+        real(wp), intent(in) :: m    !! effective mass [kg]
+        real(wp), intent(in) :: k    !! Hertz stiffness [N m^-3/2]
+        real(wp), intent(in) :: u    !! impact speed [m s^-1]
+        ts = (m / (k * sqrt(u)))**0.4_wp
+    end function hertzdamp_tstar_direct
 
     !> ln k = ln m - (5/2) ln t* - (1/2) ln u: the stiffness whose time unit is t*.
     pure elemental real(wp) function hertzdamp_log_k(lts, lm, lu) result(lk)

@@ -103,7 +103,15 @@ contains
         integer(c_int), value, intent(in) :: iend    !! contact end: 0 overlap, 1 force
         real(c_double), intent(out), optional :: k   !! Hertz stiffness [N m^-3/2]
         real(c_double), intent(out), optional :: d   !! damping coefficient [kg/s]
-        status = hertzdamp_c_invert_law(e, tc, m, u, 0.0_c_double, 0_c_int, iend, k, d)
+        real(c_double) :: k_, d_
+        ! hertzdamp_invert_contact directly, not through hertzdamp_c_invert_law: with -fPIC a
+        ! bind(C) function is not inlined into another (it could be interposed), and each
+        ! layer of call costs a few per cent of a scalar inverse
+        status = HD_BAD_ARGUMENT
+        if (.not. (present(k) .and. present(d))) return
+        status = int(hertzdamp_invert_contact(e, tc, m, u, .false., 0.0_c_double, 0, int(iend), k_, d_), c_int)
+        k = k_
+        d = d_
     end function hertzdamp_c_invert
 
     !> `int hertzdamp_c_invert_bounded(double e, double tc, double m, double u,
@@ -357,7 +365,7 @@ contains
         real(c_double), intent(out) :: k    !! Hertz stiffness [N m^-3/2]
         real(c_double), intent(out) :: d    !! linear damping coefficient [kg/s]
         integer(c_int), intent(out) :: ierr !! 0 on success, else a status code
-        ierr = hertzdamp_c_invert(e, tc, m, u, iend, k, d)
+        ierr = int(hertzdamp_invert_contact(e, tc, m, u, .false., 0.0_c_double, 0, int(iend), k, d), c_int)
     end subroutine legacy_invert
 
     !> HERTZDAMP_INVERT_BOUNDED(E, TC, M, U, KPHYS, IEND, K, D, IERR): HERTZDAMP_INVERT with
@@ -375,7 +383,7 @@ contains
         real(c_double), intent(out) :: k    !! Hertz stiffness [N m^-3/2]
         real(c_double), intent(out) :: d    !! linear damping coefficient [kg/s]
         integer(c_int), intent(out) :: ierr !! 0 on success, else a status code
-        ierr = hertzdamp_c_invert_bounded(e, tc, m, u, kphys, iend, k, d)
+        ierr = int(hertzdamp_invert_contact(e, tc, m, u, .true., kphys, 0, int(iend), k, d), c_int)
     end subroutine legacy_invert_bounded
 
     !> HERTZDAMP_INVERT_N(N, E, TC, M, U, IEND, K, D, IERR): HERTZDAMP_INVERT for n contacts
@@ -440,7 +448,8 @@ contains
         real(c_double), intent(out) :: k    !! Hertz stiffness [N m^-3/2]
         real(c_double), intent(out) :: d    !! damping coefficient [kg s^-1 m^-q]
         integer(c_int), intent(out) :: ierr !! 0 on success, else a status code
-        ierr = hertzdamp_c_invert_law(e, tc, m, u, kphys, ilaw, iend, k, d)
+        ierr = int(hertzdamp_invert_contact(e, tc, m, u, kphys /= 0.0_c_double, kphys, int(ilaw), int(iend), k, d), &
+                   c_int)
     end subroutine legacy_invert_law
 
     !> HERTZDAMP_INVERT_LAW_N(N, E, TC, M, U, ILAW, IEND, K, D, IERR): HERTZDAMP_INVERT_LAW

@@ -231,11 +231,31 @@ contains
         real(c_double), value, intent(in) :: k_phys     !! physical stiffness bound [N m^-3/2], <= 0 for none
         real(c_double), intent(out), optional :: k      !! Hertz stiffness [N m^-3/2]
         real(c_double), intent(out), optional :: d      !! damping coefficient [kg s^-1 m^-q]
-        real(wp) :: k_, d_, ts
-        integer :: valid, law, host, st
-        logical :: bound
+        real(wp) :: k_, d_
         status = HD_BAD_ARGUMENT
         if (.not. (present(p) .and. present(k) .and. present(d))) return
+        ! the usual contact (a valid pair, T_c, m, u in the direct range, no bound met) here,
+        ! every other one out of line: the entry point keeps no stack frame for the rest
+        if (pair_status(p) == HD_OK .and. direct(tc, m, u)) then
+            call direct_kd(int(p%law), p%alpha, p%tau_c, tc, m, u, k_, d_)
+            if (k_phys <= 0.0_wp .or. (k_phys <= huge(k_phys) .and. k_phys > k_)) then
+                k = k_
+                d = d_
+                status = HD_OK
+                return
+            end if
+        end if
+        status = int(c_pair_kd_rest(p, tc, m, u, k_phys, k, d), c_int)
+    end function hertzdamp_c_pair_kd
+
+    !> hertzdamp_c_pair_kd for every contact (contact_kd), out of line.
+    integer function c_pair_kd_rest(p, tc, m, u, k_phys, k, d) result(status)
+        type(hertzdamp_pair_t), intent(in) :: p
+        real(wp), value :: tc, m, u, k_phys
+        real(wp), intent(out) :: k, d
+        real(wp) :: ts
+        integer :: valid, law, host
+        logical :: bound
         valid = pair_status(p)
         law = HD_DAMPING_LINEAR
         host = HD_HOST_NONE
@@ -244,11 +264,15 @@ contains
             host = int(p%host)
         end if
         call contact_kd(p%alpha, p%tau_c, p%alpha_cont, law, host, valid, tc, m, u, .not. (k_phys <= 0.0_wp), &
-                        k_phys, .false., k_, d_, ts, bound, st)
-        k = k_
-        d = d_
-        status = int(st, c_int)
-    end function hertzdamp_c_pair_kd
+                        k_phys, .false., k, d, ts, bound, status)
+    end function c_pair_kd_rest
+
+    !> Whether T_c, m and u all lie in the direct range [1e-30, 1e30] (the usual contact).
+    pure logical function direct(tc, m, u)
+        real(wp), intent(in) :: tc, m, u
+        direct = tc >= direct_lo .and. tc <= direct_hi .and. m >= direct_lo .and. m <= direct_hi .and. &
+                 u >= direct_lo .and. u <= direct_hi
+    end function direct
 
     !> The status of the arguments of one contact: HD_OK or the last bad one of T_c, m, u,
     !> k_phys (when has_kp).
@@ -278,8 +302,7 @@ contains
         real(wp), intent(out) :: k, d, ts
         logical, intent(out) :: bound
         integer, intent(out) :: status
-        if (given == HD_OK .and. tc >= direct_lo .and. tc <= direct_hi .and. m >= direct_lo .and. &
-            m <= direct_hi .and. u >= direct_lo .and. u <= direct_hi) then
+        if (given == HD_OK .and. direct(tc, m, u)) then
             call direct_kd(law, a, tau, tc, m, u, k, d)
             ts = 0.0_wp
             if (want_ts) ts = tc / tau
@@ -307,8 +330,7 @@ contains
         d = 0.0_wp
         ts = 0.0_wp
         bound = .false.
-        if (tc >= direct_lo .and. tc <= direct_hi .and. m >= direct_lo .and. m <= direct_hi .and. u >= direct_lo &
-            .and. u <= direct_hi) then
+        if (direct(tc, m, u)) then
             status = HD_OK
             if (has_kp) then
                 if (.not. (kp > 0.0_wp .and. kp <= huge(kp))) status = HD_BAD_KPHYS

@@ -8,7 +8,8 @@ source of the reference.  The script runs `BIN --help` for the list of commands 
 `BIN COMMAND --help` for each, and writes, between the lines
 `<!-- BEGIN cli reference -->` and `<!-- END cli reference -->` of FILE (default
 doc/cli.md), a table of the commands with their options and then the help text of
-each command, verbatim.  FILE `-` prints the block to stdout instead.  The output
+each command, verbatim (under the command line that prints it, without the `$ ` of
+the worked examples: test/docs/readme_sync.sh runs those).  FILE `-` prints the block to stdout instead.  The output
 depends on the help texts only (no date, no path): test/docs/cli_reference_sync.sh
 regenerates it and fails when doc/cli.md differs.
 """
@@ -63,7 +64,7 @@ def block(binary):
         anchor = title.replace(" --help", "")
         lines.append(f"### {anchor}")
         lines.append("")
-        lines.append(f"    $ {title}")
+        lines.append(f"    {title}")
         lines.extend(("    " + t).rstrip() for t in text.splitlines())
         lines.append("")
     lines.append(END)

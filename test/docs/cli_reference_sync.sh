@@ -5,7 +5,8 @@
 # today, so a changed help text fails here until `python3 gen/cli_reference.py BIN`
 # is rerun.  The man page (doc/hertzdamp.1), written by hand, agrees with the help
 # texts both ways: the same commands (SYNOPSIS and COMMANDS) and the same options
-# (test/docs/cli_docs.sh checks help -> man; this checks man -> help too).
+# (test/docs/cli_docs.sh checks help -> man; this checks man -> help too), and each
+# command's SYNOPSIS names only options of that command's help.
 SUITE=cli_reference_sync
 source "$(dirname "$0")/../cli/cli_common.bash"
 cd "$(dirname "$0")/../.."
@@ -46,4 +47,13 @@ extra=$(comm -23 <(echo "$man_opts") <(echo "$help_opts") | tr '\n' ' ')
 check "man page names no option the help texts lack${extra:+: $extra}" test -z "$extra"
 check "man page and help texts name the same options ($(wc -w <<<"$man_opts") and $(wc -w <<<"$help_opts"))" \
   test "$man_opts" = "$help_opts"
+# each command's SYNOPSIS in the man page names only options that its own help names
+for c in $cmds; do
+  syn=$(sed -n '/^\.SH SYNOPSIS/,/^\.SH /p' <<<"$man_text" | awk -v c="$c" '
+    /^\.br$/ { on = 0 } $0 ~ "^\\.B hertzdamp " c "( |$)" { on = 1 } on' | grep -oE -- '--[a-z0-9][a-z0-9-]*' | sort -u)
+  own=$("$BIN" "$c" --help | grep -oE -- '--[a-z0-9][a-z0-9-]*' | sort -u)
+  extra=$(comm -23 <(echo "$syn") <(echo "$own") | tr '\n' ' ')
+  check "man page SYNOPSIS of $c: only options of hertzdamp $c --help ($(wc -w <<<"$syn"))${extra:+; not in its help: $extra}" \
+    test -n "$syn" -a -z "$extra"
+done
 finish

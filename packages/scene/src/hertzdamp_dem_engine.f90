@@ -405,17 +405,14 @@ contains
                     ! a host scheme: no impulse corrections; the end instants interpolated
                     ! linearly in the overlap or in the force between the last two steps
                     if (zeta <= 0.0_wp) then
-                        ct%t_end = t + overlap_fraction(ct%zeta_last, zeta, 0.0_wp) * dt
-                        ct%state = HD_CONTACT_CLOSED
-                        call push(st%ended, st%nended, c)
+                        call mark_ended(st, ct, c, t + overlap_fraction(ct%zeta_last, zeta, 0.0_wp) * dt, &
+                                        HD_CONTACT_CLOSED)
                         call close_contact(st, res, kk)
                         cycle
                     end if
                     fn = ct%k * zeta * sqrt(zeta) + ct%d * law_power(zeta, st%q) * zdot
                     if (sc%iend == HD_END_FORCE .and. fn <= 0.0_wp) then
-                        ct%t_end = t + ct%f_last / (ct%f_last - fn) * dt
-                        ct%state = HD_CONTACT_RELEASED
-                        call push(st%ended, st%nended, c)
+                        call mark_ended(st, ct, c, t + ct%f_last / (ct%f_last - fn) * dt, HD_CONTACT_RELEASED)
                         kk = kk + 1
                         cycle
                     end if
@@ -445,9 +442,7 @@ contains
                     ! the damping force -d (us s)^q us, s the time left to the end
                     if (st%q > 0.0_wp) call add_impulse(st, ct%i, ct%j, trapezoid_error(st%q, phi) * ct%d &
                                                         * us * law_power(us, st%q) * dt * law_power(dt, st%q), ct%n_last)
-                    ct%t_end = t + phi * dt
-                    ct%state = HD_CONTACT_CLOSED
-                    call push(st%ended, st%nended, c)
+                    call mark_ended(st, ct, c, t + phi * dt, HD_CONTACT_CLOSED)
                     call close_contact(st, res, kk)
                     cycle
                 end if
@@ -522,10 +517,20 @@ contains
         integer, intent(in) :: c, new_state
         real(wp), intent(in) :: phi, t
         call add_impulse(st, ct%i, ct%j, ct%f_last * (phi - 1.0_wp) * 0.5_wp * st%dt, ct%n_last)
-        ct%t_end = t + phi * st%dt
+        call mark_ended(st, ct, c, t + phi * st%dt, new_state)
+    end subroutine end_at_force_zero
+
+    !> Contact c ended at t_end: it goes to new_state and into the list of contacts ended
+    !> in the step (their separation speeds are taken by the closing kick).
+    pure subroutine mark_ended(st, ct, c, t_end, new_state)
+        type(hertzdamp_dem_state), intent(inout) :: st
+        type(hertzdamp_dem_contact), intent(inout) :: ct
+        integer, intent(in) :: c, new_state
+        real(wp), intent(in) :: t_end
+        ct%t_end = t_end
         ct%state = new_state
         call push(st%ended, st%nended, c)
-    end subroutine end_at_force_zero
+    end subroutine mark_ended
 
     !> New contacts of particles with walls.
     pure subroutine wall_onsets(sc, st, res, t)

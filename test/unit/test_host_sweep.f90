@@ -55,7 +55,7 @@ contains
         integer :: ih, il, ie, i, k, st, nmiss, met, unreach, nmin, st2
         character(len=:), allocatable :: lab, missed
         missed = ''
-        print '(a)', '<!-- BEGIN host_sweep ' // merge('full  ', 'coarse', full) // ' -->'
+        print '(a)', '<!-- BEGIN host_sweep ' // trim(merge('full  ', 'coarse', full)) // ' -->'
         print '(a)', '| host | targets met | unreachable | host constants: max err e, T_c | ' // &
             'continuous constants: max err e, T_c |'
         print '(a)', '|---|---|---|---|---|'
@@ -108,7 +108,7 @@ contains
             call s%check(maxval(wc) > 1.0e-3_wp, hertzdamp_host_name(hosts(ih)) // ': the continuous constants miss by ' // &
                          'more than 1e-3 somewhere on the grid')
         end do
-        print '(a)', '<!-- END host_sweep ' // merge('full  ', 'coarse', full) // ' -->'
+        print '(a)', '<!-- END host_sweep ' // trim(merge('full  ', 'coarse', full)) // ' -->'
         if (len(missed) > 0) print '(a)', 'unreachable:' // missed
     end subroutine sweep
 

@@ -17,7 +17,7 @@
 program test_scene_host
     use hertzdamp, only: hertzdamp_rk, HD_OK, HD_END_OVERLAP, HD_END_FORCE, HD_METHOD_FIT, HD_DAMPING_LINEAR, &
                          HD_DAMPING_TSUJI, HD_HOST_NONE, HD_HOST_LAMMPS, HD_HOST_MFIX_EULER, HD_HOST_MFIX_AB2, &
-                         HD_HOST_VERLET, hertzdamp_host_name, hertzdamp_law_name, hertzdamp_end_name
+                         HD_HOST_VERLET, HD_HOST_LAMMPS_PHASE, hertzdamp_host_name, hertzdamp_law_name, hertzdamp_end_name
     use hertzdamp_dem, only: hertzdamp_dem_scene, hertzdamp_dem_result, hertzdamp_dem_material, hertzdamp_dem_wall, &
                              hertzdamp_dem_check, hertzdamp_dem_run, hertzdamp_dem_check_row, hertzdamp_dem_checks_of, &
                              HD_CHECK_PASS
@@ -45,9 +45,29 @@ program test_scene_host
         call compare(schemes(j), 0.5_wp, 10, HD_DAMPING_TSUJI, HD_END_OVERLAP)
         call compare(schemes(j), 0.5_wp, 10, HD_DAMPING_LINEAR, HD_END_FORCE)
     end do
+    call invalid_schemes()
     call s%finish()
 
 contains
+
+    !> A scheme the engine does not integrate (lammps-phase, unknown codes) or a host
+    !> without constants is an invalid scene, with a message naming it.
+    subroutine invalid_schemes()
+        type(hertzdamp_dem_scene) :: sc
+        integer :: status
+        character(len=:), allocatable :: msg
+        call wall_scene(0.5_wp, 10, HD_DAMPING_LINEAR, HD_END_OVERLAP, HD_HOST_LAMMPS_PHASE, HD_HOST_NONE, sc)
+        call hertzdamp_dem_check(sc, status, msg)
+        call s%check(status /= HD_OK .and. index(msg, 'scheme: ') == 1 .and. index(msg, 'lammps-phase') > 0, &
+                     'scheme lammps-phase: an invalid scene naming it (' // msg // ')')
+        call wall_scene(0.5_wp, 10, HD_DAMPING_LINEAR, HD_END_OVERLAP, HD_HOST_VERLET, 9, sc)
+        call hertzdamp_dem_check(sc, status, msg)
+        call s%check(status /= HD_OK .and. index(msg, 'host: ') == 1 .and. index(msg, 'unknown') > 0, &
+                     'host 9: an invalid scene naming it (' // msg // ')')
+        call wall_scene(0.5_wp, 10, HD_DAMPING_LINEAR, HD_END_OVERLAP, HD_HOST_MFIX_AB2, HD_HOST_NONE, sc)
+        call hertzdamp_dem_check(sc, status, msg)
+        call s%check(status == HD_OK, 'scheme mfix-ab2 with the continuous constants: a valid scene')
+    end subroutine invalid_schemes
 
     !> The scene: m steel spheres (radius 1 mm) 3 mm apart along x, falling at 1 m/s onto
     !> a steel wall z = 0, the j-th touching it at t = (2 + (j - 1/2)/m) dt, so that its
@@ -140,7 +160,7 @@ contains
         call wall_scene(e, n, law, iend, scheme, HD_HOST_NONE, sc)
         call measure(sc, trim(lab) // ', continuous constants', ee0, et0, te0, tt0, ok0)
         if (.not. (ok .and. ok0)) return
-        print '(a,4(a,es9.2),a,4(a,es9.2))', trim(lab), ': host: mean e err ', ee, ' (tol ', te, '), T_c err ', et, &
+        print '(a,4(a,es9.2),a,4(a,es9.2),a)', trim(lab), ': host: mean e err ', ee, ' (tol ', te, '), T_c err ', et, &
             ' (tol ', tt, ')', '; continuous: e err ', ee0, ' (tol ', te0, '), T_c err ', et0, ' (tol ', tt0, ')'
         call s%check(abs(ee) <= te .and. abs(et) <= tt, trim(lab) // ': the host''s constants give the mean e and T_c ' // &
                      'within the phase-sampling tolerance')

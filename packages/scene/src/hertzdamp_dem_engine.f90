@@ -620,6 +620,7 @@ contains
         case default
             st%v = st%v_half + 0.5_wp * st%dt * st%acc + st%dv
         end select
+        if (st%nended == 0) return
         ! the velocities once no force of the ended contacts acts any more (mfix-ab2: after
         ! the next step's kick, which still has the last contact acceleration in a_old),
         ! and from when

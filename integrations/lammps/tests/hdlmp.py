@@ -74,6 +74,8 @@ class CApi:
         self._inv.argtypes = [D, D, D, D, I, P, P]
         self._fwd = self.lib.hertzdamp_c_forward
         self._fwd.argtypes = [D, D, D, D, I, P, P]
+        self._nmin = self.lib.hertzdamp_c_host_min_steps
+        self._nmin.argtypes = [D, I, I, I, ctypes.POINTER(I)]
 
     @staticmethod
     def _end(end):
@@ -85,6 +87,17 @@ class CApi:
         if st != 0:
             raise RuntimeError("invert status %d" % st)
         return k.value, d.value
+
+    # host schemes of include/hertzdamp.h that the plugin runs
+    HOSTS = {"none": 0, "lammps": 1, "lammps-phase": 5}
+
+    def min_steps(self, e, end, host):
+        """The fewest steps per contact with which `host` reaches e (linear law)."""
+        n = ctypes.c_int()
+        st = self._nmin(e, 0, self._end(end), self.HOSTS[host], ctypes.byref(n))
+        if st != 0:
+            raise RuntimeError("min_steps status %d" % st)
+        return n.value
 
     def forward(self, k, d, m, u, end):
         e, tc = ctypes.c_double(), ctypes.c_double()

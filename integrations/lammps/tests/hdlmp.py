@@ -74,6 +74,10 @@ class CApi:
         self._inv.argtypes = [D, D, D, D, I, P, P]
         self._fwd = self.lib.hertzdamp_c_forward
         self._fwd.argtypes = [D, D, D, D, I, P, P]
+        self._pinit = self.lib.hertzdamp_c_pair_init
+        self._pinit.argtypes = [D, I, I, I, D, ctypes.POINTER(D * 8)]
+        self._pkd = self.lib.hertzdamp_c_pair_kd
+        self._pkd.argtypes = [ctypes.POINTER(D * 8), D, D, D, D, P, P]
         self._nmin = self.lib.hertzdamp_c_host_min_steps
         self._nmin.argtypes = [D, I, I, I, ctypes.POINTER(I)]
 
@@ -90,6 +94,20 @@ class CApi:
 
     # host schemes of include/hertzdamp.h that the plugin runs
     HOSTS = {"none": 0, "lammps": 1, "lammps-phase": 5}
+
+    def pair_kd(self, e, end, host, steps, tc, m, u):
+        """k, d of one contact from the per-pair API (linear law, no bound): the
+        constants of (e, end, host, steps) (hertzdamp_c_pair_init), then
+        hertzdamp_c_pair_kd."""
+        pair = (ctypes.c_double * 8)()
+        st = self._pinit(e, 0, self._end(end), self.HOSTS[host], steps, ctypes.byref(pair))
+        if st != 0:
+            raise RuntimeError("pair_init status %d" % st)
+        k, d = ctypes.c_double(), ctypes.c_double()
+        st = self._pkd(ctypes.byref(pair), tc, m, u, 0.0, ctypes.byref(k), ctypes.byref(d))
+        if st != 0:
+            raise RuntimeError("pair_kd status %d" % st)
+        return k.value, d.value
 
     def min_steps(self, e, end, host):
         """The fewest steps per contact with which `host` reaches e (linear law)."""

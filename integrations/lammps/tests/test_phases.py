@@ -15,6 +15,8 @@ initial gap; phase j of n: (j - 1/2)/n), 1 processor.
 - what the plugin reports (compute hertzdamp/stats array, f_wall[18..21]) from the
   library's phase statistics: mean e = target for host lammps (1e-10), and for every
   configuration the measured phase mean agrees with the reported one within 1e-3;
+- every contact's k and d are those of the per-pair C API (hertzdamp_c_pair_init with
+  the scheme, hertzdamp_c_pair_kd), bit for bit;
 - N too small: a LAMMPS error naming the keyword and the fewest N that can (the C API's
   hertzdamp_c_host_min_steps); that N runs, for the pair style and the wall fix.
 """
@@ -78,6 +80,13 @@ def run(c):
                 continue
             me, mt = means(rows)
             p = pred.get(key, [0, 0, 0, 0])
+            # every contact's k, d: the per-pair API's, bit for bit
+            scheme = "none" if v.get("host") == "none" else \
+                ("lammps" if v.get("phase") == "no" else "lammps-phase")
+            end = v.get("end", "overlap")
+            c.check(tag + ": k, d = hertzdamp_c_pair_kd bit for bit",
+                    all((r["k"], r["d"]) == api.pair_kd(e, end, scheme, N, N * DT, r["m"], r["u_used"])
+                        for r in rows))
             print("%-44s mean e %.8f (%+.2e)  mean T_c/(N dt) %.8f (%+.2e); reported %.8f (%+.2e), "
                   "spread %.2e" % (tag, me, me / e - 1, mt, mt - 1, p[0], p[0] / e - 1, p[1]))
             # the measured phase mean is the library's (quadrature error of nphase points)

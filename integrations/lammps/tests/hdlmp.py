@@ -78,6 +78,8 @@ class CApi:
         self._pinit.argtypes = [D, I, I, I, D, ctypes.POINTER(D * 8)]
         self._pkd = self.lib.hertzdamp_c_pair_kd
         self._pkd.argtypes = [ctypes.POINTER(D * 8), D, D, D, D, P, P]
+        self._pstats = self.lib.hertzdamp_c_pair_stats
+        self._pstats.argtypes = [ctypes.c_void_p, I, ctypes.c_void_p]
         self._nmin = self.lib.hertzdamp_c_host_min_steps
         self._nmin.argtypes = [D, I, I, I, ctypes.POINTER(I)]
 
@@ -108,6 +110,18 @@ class CApi:
         if st != 0:
             raise RuntimeError("pair_kd status %d" % st)
         return k.value, d.value
+
+    def pair_stats(self, e, end, host, steps, run_host, valid=True):
+        """(status, stats[8]) of hertzdamp_c_pair_stats for the pair (e, end, host, steps)
+        run by run_host (valid=False: a pair never set; None: a NULL pair)."""
+        pair = (ctypes.c_double * 8)()
+        if valid:
+            st = self._pinit(e, 0, self._end(end), self.HOSTS[host], steps, ctypes.byref(pair))
+            if st != 0:
+                raise RuntimeError("pair_init status %d" % st)
+        stats = (ctypes.c_double * 8)(*([7.0] * 8))
+        st = self._pstats(None if valid is None else ctypes.byref(pair), self.HOSTS[run_host], ctypes.byref(stats))
+        return st, list(stats)
 
     def min_steps(self, e, end, host):
         """The fewest steps per contact with which `host` reaches e (linear law)."""

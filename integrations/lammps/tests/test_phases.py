@@ -17,10 +17,14 @@ initial gap; phase j of n: (j - 1/2)/n), 1 processor.
   configuration the measured phase mean agrees with the reported one within 1e-3;
 - every contact's k and d are those of the per-pair C API (hertzdamp_c_pair_init with
   the scheme, hertzdamp_c_pair_kd), bit for bit;
+- the C entry points added for the plugin: hertzdamp_c_pair_stats (host none: the
+  continuous model; a host pair run by its scheme: e and N dt; bad pairs refused) and
+  hertzdamp_c_host_min_steps (pair_init fails at one step fewer, succeeds at it);
 - N too small: a LAMMPS error naming the keyword and the fewest N that can (the C API's
   hertzdamp_c_host_min_steps); that N runs, for the pair style and the wall fix.
 """
 import atexit
+import ctypes
 import os
 import shutil
 import sys
@@ -99,6 +103,28 @@ def run(c):
                 c.check(tag + ": reported mean T_c = N dt (1e-10)", abs(p[2] - 1) <= 1e-10, repr(p))
             elif e == 0.2:
                 c.check(tag + ": the continuous constants miss e by > 1e-2", abs(me / e - 1) > 1e-2, repr(me))
+
+    # the two C entry points the plugin added (src/hertzdamp_capi.f90): identities
+    st, s = api.pair_stats(0.5, "overlap", "none", 20, "none")
+    # (the reference integrator's e and tau_c at the fit's alpha(e): the fit's accuracy, 1e-13)
+    c.check("C pair_stats: host none run by none = the continuous model (mean e, no spread)",
+            st == 0 and abs(s[0] / 0.5 - 1) <= 1e-12 and s[1] == 0 and abs(s[4] - 1) <= 1e-12 and s[5] == 0,
+            repr((st, s)))
+    st, s = api.pair_stats(0.5, "overlap", "lammps", 20, "lammps")
+    c.check("C pair_stats: a lammps pair run by lammps reaches e and N dt (1e-10)",
+            st == 0 and abs(s[0] / 0.5 - 1) <= 1e-10 and abs(s[4] - 1) <= 1e-10 and s[2] <= s[0] <= s[3], repr(s))
+    st, s = api.pair_stats(0.5, "overlap", "none", 20, "lammps", valid=False)
+    c.check("C pair_stats: a pair never set -> HERTZDAMP_BAD_PAIR (29), zeros", st == 29 and s == [0.0] * 8,
+            repr((st, s)))
+    st, s = api.pair_stats(0.5, "overlap", "none", 20, "lammps", valid=None)
+    c.check("C pair_stats: NULL pair -> HERTZDAMP_BAD_ARGUMENT (18)", st == 18, repr(st))
+    c.check("C host_min_steps: host none needs 2", api.min_steps(0.1, "overlap", "none") == 2)
+    for e, scheme in ((0.1, "lammps"), (0.2, "lammps-phase")):
+        nmin = api.min_steps(e, "overlap", scheme)
+        st_lo = api._pinit(e, 0, 0, api.HOSTS[scheme], nmin - 1, ctypes.byref((ctypes.c_double * 8)()))
+        st_hi = api._pinit(e, 0, 0, api.HOSTS[scheme], nmin, ctypes.byref((ctypes.c_double * 8)()))
+        c.check("C host_min_steps e=%g %s = %d: pair_init fails at N - 1 (28), succeeds at N" % (e, scheme, nmin),
+                st_lo == 28 and st_hi == 0, repr((st_lo, st_hi)))
 
     # N too small: the error names the keyword and the fewest N that can; that N runs
     box = ("include ${load}\nunits si\natom_style sphere\nregion b block 0 0.01 0 0.01 0 0.01\n"

@@ -4,7 +4,7 @@
  * same friction sub-models (contact_models.h).
  *
  * fix ID group hertzdamp/wall (steps N | tc T | fixed K D) e E [end overlap|force]
- *     [vmin V] [phase yes|no] [youngs Y poisson NU [wall_youngs YW wall_poisson NUW]]
+ *     [host lammps|none] [vmin V] [phase yes|no] [youngs Y poisson NU [wall_youngs YW wall_poisson NUW]]
  *     [tangential ...] [rolling ...] [twisting ...] [log FILE]
  *     (xplane|yplane|zplane) LO HI         (one wall per fix; LO or HI may be NULL)
  */

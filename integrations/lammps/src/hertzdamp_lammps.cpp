@@ -226,7 +226,8 @@ bool pair_constants(LAMMPS *lmp, const RuleSettings &rs, double e, double dt, co
   if (st != HERTZDAMP_OK)
     fail_all(lmp, __FILE__, __LINE__,
              who + ": e " + fmt_short(e) + ", " + key + ", host " + scheme_name(scheme) + ": " +
-                 hertzdamp_c_strerror(st));
+                 hertzdamp_c_strerror(st) +
+                 (st == HERTZDAMP_BAD_STEPS ? " (host none takes any N; LAMMPS's own error is then below 1/N)" : ""));
   // what LAMMPS achieves with them (zero when the library cannot tell, e.g. N > 1e5)
   if (hertzdamp_c_pair_stats(&pc.pair, rs.run_scheme(), pc.stats) != HERTZDAMP_OK)
     for (double &x : pc.stats) x = 0.0;

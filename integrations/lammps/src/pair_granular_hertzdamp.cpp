@@ -97,7 +97,7 @@ void PairGranularHertzdamp::create_history_fix()
 
 /* ----------------------------------------------------------------------
    pair_style granular/hertzdamp (steps N | tc T | fixed K D) [end overlap|force]
-                                 [vmin V] [phase yes|no] [log FILE]
+                                 [host lammps|none] [vmin V] [phase yes|no] [log FILE]
 ------------------------------------------------------------------------- */
 
 void PairGranularHertzdamp::settings(int narg, char **arg)

@@ -1,7 +1,8 @@
 /* -*- c++ -*-
  * pair_style granular/hertzdamp: Hertz contact with linear damping whose k and d
  * are set per contact, at its onset, by the adaptive collision time rule of the
- * hertzdamp core library (C API); optional friction (tangential, rolling, twisting
+ * hertzdamp core library (per-pair C API; by default with the constants that make
+ * LAMMPS's own integration of the contact exact on average: host lammps); optional friction (tangential, rolling, twisting
  * sub-models of pair_style granular, contact_models.h) with torques.
  */
 #ifndef HERTZDAMP_PAIR_GRANULAR_HERTZDAMP_H

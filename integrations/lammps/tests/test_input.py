@@ -44,6 +44,9 @@ CASES = [
     ("pair_style granular/hertzdamp steps 3\npair_coeff * * e 0.2\nrun 0\n",
      P + " (types 1 1): steps 3: N = 3 steps cannot reach e = 0.2 with lammps-phase; N >= 4 can"),
     ("pair_style granular/hertzdamp steps 20 host exact\n", P + ": host must be lammps or none, not 'exact'"),
+    ("pair_style granular/hertzdamp steps 200000\npair_coeff * * e 0.5\nrun 0\n",
+     P + " (types 1 1): e 0.5, steps 200000, host lammps-phase: invalid steps per contact: must be finite with "
+     "2 <= N <= 1e5"),
     ("pair_style granular/hertzdamp steps abc\n", P + ": steps needs a number, not 'abc'"),
     ("pair_style granular/hertzdamp steps 0x10\n", P + ": steps needs a number, not '0x10'"),
     ("pair_style granular/hertzdamp tc 1e-6x\n", P + ": tc needs a number, not '1e-6x'"),

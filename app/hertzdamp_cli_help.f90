@@ -131,7 +131,7 @@ module hertzdamp_cli_help
         'Errors go to stderr as one line (the last, after the lines --progress writes' // nl // &
         'into a file or pipe); stdout is then empty, except for commands that print one' // nl // &
         'row per value, where rows with a result still print (see their --help).' // nl // &
-        'Documentation: man hertzdamp, README.md, doc/theory.md.'
+        'Documentation: man hertzdamp, doc/cli.md, README.md, doc/theory.md.'
 
     character(len=*), parameter :: table = &
         'Usage: hertzdamp table [--alpha LIST] [--alpha-range A0:A1:N] [options]' // nl // &

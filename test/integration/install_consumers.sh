@@ -76,7 +76,8 @@ for sym in hertzdamp_c_invert hertzdamp_c_invert_bounded hertzdamp_c_invert_n he
            hertzdamp_c_strerror hertzdamp_invert_ hertzdamp_invert_bounded_ hertzdamp_pair_ hertzdamp_forward_ \
            hertzdamp_invert_n_ hertzdamp_message_ hertzdamp_c_invert_law hertzdamp_c_pair_law hertzdamp_c_forward_law \
            hertzdamp_invert_law_ hertzdamp_pair_law_ hertzdamp_forward_law_ hertzdamp_c_invert_law_n \
-           hertzdamp_invert_law_n_ hertzdamp_c_pair_init hertzdamp_c_pair_kd hertzdamp_pair_init_ hertzdamp_pair_kd_; do
+           hertzdamp_invert_law_n_ hertzdamp_c_pair_init hertzdamp_c_pair_kd hertzdamp_pair_init_ hertzdamp_pair_kd_ \
+           hertzdamp_c_pair_stats hertzdamp_c_host_min_steps; do
   check "shared library exports $sym" grep -qx "$sym" <<<"$defined_so"
 done
 # the C names never equal a legacy name without gfortran's underscore (-fno-underscoring)

@@ -21,6 +21,9 @@ while IFS= read -r row; do
   check "README or a guide has the row: ${row:0:40}" bash -c 'cat README.md doc/*.md | grep -qxF -- "$1"' _ "$row"
 done <<<"$rows"
 
+# ------------------------------------------------------------ the README stays a README (issue 25)
+check "README.md has at most 400 lines ($(wc -l <README.md))" test "$(wc -l <README.md)" -le 400
+
 # ------------------------------------------------------------ every `$ hertzdamp` command and its output
 if [ -n "${HERTZDAMP_BIN:-}" ]; then
   python3 - "$tmp/cmds" README.md doc/*.md <<'PY'

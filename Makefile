@@ -141,8 +141,10 @@ fit-source:
 install: .deps-apt
 	@bash tools/install.sh "$(abspath $(PREFIX))"
 
-# API documentation of the core library (FORD, settings in ford.md) -> build/docs/index.html
+# API documentation of the core library and the README and guides of doc/ as its pages
+# (FORD, settings in ford.md; gen/ford_pages.py makes the page tree) -> build/docs/index.html
 docs: deps
+	$(PYTHON) gen/ford_pages.py build/ford-pages
 	$(VENV)/bin/ford -q ford.md
 
 lint: deps

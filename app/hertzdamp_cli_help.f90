@@ -131,7 +131,7 @@ module hertzdamp_cli_help
         'Errors go to stderr as one line (the last, after the lines --progress writes' // nl // &
         'into a file or pipe); stdout is then empty, except for commands that print one' // nl // &
         'row per value, where rows with a result still print (see their --help).' // nl // &
-        'Documentation: man hertzdamp, README.md, doc/theory.md.'
+        'Documentation: man hertzdamp, doc/cli.md, README.md, doc/theory.md.'
 
     character(len=*), parameter :: table = &
         'Usage: hertzdamp table [--alpha LIST] [--alpha-range A0:A1:N] [options]' // nl // &
@@ -317,6 +317,7 @@ module hertzdamp_cli_help
     character(len=*), parameter :: scene = &
         'Usage: hertzdamp scene FILE [--method M] [--damping LAW] [--format text|csv|json]' // nl // &
         '                            [--plot FILE.png] [--progress] [--no-compare]' // nl // &
+        '                            [--host H --dt DT --steps N]' // nl // &
         '' // nl // &
         'Runs the DEM scene in FILE (Fortran namelist, see data/scenes/*.nml): spheres and' // nl // &
         'plane walls, normal forces only (tangential forces, friction and rotation are out' // nl // &
@@ -357,6 +358,11 @@ module hertzdamp_cli_help
         '  --progress   percentage and time left of each run on stderr (on a terminal' // nl // &
         '               without the option, once a run has taken 2 s)' // nl // &
         '  --no-compare skip the re-run with the iterative rule (no speed-up figures)' // nl // &
+        '  --host H     none (default: the engine''s velocity Verlet, the rule of --method),' // nl // &
+        '               lammps, mfix-euler, mfix-ab2 or verlet: the contacts are integrated' // nl // &
+        '               by that host''s scheme and get k, d from its per-pair constants' // nl // &
+        '               (hertzdamp_pair_init at N; doc/host-schemes.md); needs --dt and' // nl // &
+        '               --steps, which override the file''s dt and steps_per_contact' // nl // &
         '' // nl // &
         'Reports: the method choice; for every binary contact (no other contact on either' // nl // &
         'body meanwhile) the achieved restitution (separation/impact normal speed) and' // nl // &

@@ -6,21 +6,22 @@
 module hertzdamp_cmd_scene
     use hertzdamp, only: hertzdamp_rk, hertzdamp_end_name, HD_OK, HD_METHOD_ITERATIVE, HD_METHOD_SERIES, &
                          HD_METHOD_PADE, HD_METHOD_COMPACT, HD_METHOD_FIT, HD_METHOD_FIRST_ORDER, hertzdamp_method_name, &
-                         hertzdamp_law_code, hertzdamp_law_name
+                         hertzdamp_law_code, hertzdamp_law_name, HD_HOST_NONE, HD_HOST_VERLET, hertzdamp_host_name, &
+                         hertzdamp_pair_t, hertzdamp_pair_init, HD_HOST_UNREACHABLE
     use hertzdamp_dem, only: hertzdamp_dem_scene, hertzdamp_dem_result, hertzdamp_dem_check, hertzdamp_dem_state, &
                              hertzdamp_dem_start, hertzdamp_dem_advance, hertzdamp_dem_finish, hertzdamp_dem_steps_done, &
-                             hertzdamp_dem_steps_total, hertzdamp_dem_rule, hertzdamp_dem_select, &
+                             hertzdamp_dem_steps_total, hertzdamp_dem_rule, hertzdamp_dem_host_rule, hertzdamp_dem_select, &
                              hertzdamp_dem_cost_order, hertzdamp_dem_check_row, hertzdamp_dem_checks_of, &
                              hertzdamp_dem_ratio, hertzdamp_dem_verlet_energy, hertzdamp_dem_min_resolved, &
                              hertzdamp_dem_supports, HD_CHECK_PASS, HD_CHECK_FAIL, HD_CHECK_GRAVITY
     use hertzdamp_scene_io, only: hertzdamp_scene_read
-    use hertzdamp_cli, only: cli_args, cli_buffer, parse_args, parse_choice, fail, quit, fmt_csv, &
+    use hertzdamp_cli, only: cli_args, cli_buffer, parse_args, parse_choice, parse_real, fail, quit, fmt_csv, &
                              EXIT_USAGE, EXIT_OK, EXIT_FAILURE, EXIT_NO_SOLUTION
     use hertzdamp_cli_output, only: out_table, format_choices, FORMAT_JSON, FORMAT_CSV, FORMAT_TEXT
     use hertzdamp_cli_help, only: print_help, wants_help
     use hertzdamp_cli_model, only: law_choices, damping_unit, law_text
     use hertzdamp_cli_plot, only: plot_check_target, plot_scratch, plot_temp_name, gp_string
-    use hertzdamp_cli_text, only: itoa, fmt_text_short
+    use hertzdamp_cli_text, only: itoa, fmt_text_short, fmt_short
     use hertzdamp_cli_progress, only: progress_reporter
     use, intrinsic :: iso_fortran_env, only: int64
     implicit none
@@ -32,6 +33,8 @@ module hertzdamp_cmd_scene
     integer, parameter :: EXIT_CHECKS = 5
     !> --method choices; 'auto' first.
     character(len=*), parameter :: method_choices = 'auto first-order compact series pade fit iterative'
+    !> --host choices, in the order of the codes HD_HOST_* = 0, 1, ...
+    character(len=*), parameter :: host_choices = 'none lammps mfix-euler mfix-ab2 verlet'
     !> Most contact rows printed.
     integer, parameter :: max_rows = 200
     !> Most particles drawn by --plot.
@@ -54,7 +57,7 @@ contains
         logical :: progress
         type(hertzdamp_dem_check_row), allocatable :: rows(:)
         character(len=:), allocatable :: file, msg, plot, reason, terminal, failed_names
-        integer :: fmt, mchoice, method, status, chosen, c, nsec, nfailed, nruns, law
+        integer :: fmt, mchoice, method, status, chosen, c, nsec, nfailed, nruns, law, host
         real(wp) :: err(6), tol_it, t_select
         logical :: avail(6), compare
         integer(int64) :: c0, c1, rate
@@ -64,7 +67,8 @@ contains
             call print_help('scene')
             call quit(EXIT_OK)
         end if
-        call parse_args(2, '--method --format --plot --damping', '--progress --no-compare', args, allow_positional=.true.)
+        call parse_args(2, '--method --format --plot --damping --host --dt --steps', '--progress --no-compare', args, &
+                        allow_positional=.true.)
         if (.not. allocated(args%positional)) call fail(EXIT_USAGE, 'scene needs a FILE (see hertzdamp scene --help)')
         file = args%positional
         mchoice = parse_choice(args%get('--method', 'auto'), method_choices, 'method (--method)')
@@ -77,10 +81,27 @@ contains
         end if
         compare = .not. args%has('--no-compare')
         if (args%has('--plot')) call plot_check_target(plot, terminal, [file])
+        host = HD_HOST_NONE
+        if (args%has('--host')) then
+            host = parse_choice(args%get('--host', ''), host_choices, 'host scheme (--host)') - 1
+            if (.not. (args%has('--dt') .and. args%has('--steps'))) then
+                call fail(EXIT_USAGE, '--host needs --dt and --steps (the time step of the host and the steps per ' // &
+                          'contact N it integrates with, T_c = N dt)')
+            end if
+            if (host /= HD_HOST_NONE .and. mchoice /= 1 .and. mchoice /= 6) then
+                call fail(EXIT_USAGE, '--host ' // hertzdamp_host_name(host) // ': the host-exact constants come ' // &
+                          'from the fit; --method applies to --host none')
+            end if
+        end if
 
         call hertzdamp_scene_read(file, sc, status, msg)
         if (status /= HD_OK) call fail(EXIT_USAGE, file // ': ' // msg)
         if (law >= 0) sc%law = law   ! --damping overrides the file's damping key
+        call scene_overrides(args, host, sc)
+        if (host /= HD_HOST_NONE .and. .not. sc%want_duration) then
+            call fail(EXIT_USAGE, '--host ' // hertzdamp_host_name(host) // ': the host-exact constants need the ' // &
+                      'contact time T_c = N dt; the scene wants the restitution only (want_duration)')
+        end if
         if (mchoice /= 1) then
             if (.not. hertzdamp_dem_supports(method_code(mchoice), sc%law)) then
                 call fail(EXIT_USAGE, 'method ' // hertzdamp_method_name(method_code(mchoice)) // ' exists for the ' // &
@@ -97,7 +118,11 @@ contains
         call system_clock(c1)
         t_select = real(c1 - c0, wp) / real(rate, wp)
         if (status /= HD_OK) call fail(EXIT_FAILURE, 'reference solver failed while choosing the method')
-        if (mchoice == 1) then
+        if (host /= HD_HOST_NONE) then
+            method = HD_METHOD_FIT
+            reason = 'host ' // hertzdamp_host_name(host) // ': the per-pair constants of the fit for the host''s ' // &
+                     'scheme at N = ' // itoa(sc%steps_per_contact) // ' (hertzdamp_pair_init)'
+        else if (mchoice == 1) then
             if (chosen < 0) call fail(EXIT_NO_SOLUTION, 'no contact rule meets the accuracy ' // &
                                       trim(fmt_csv(sc%accuracy)) // ' of the scene')
             method = chosen
@@ -113,11 +138,12 @@ contains
             reason = 'requested; measured error in e and tau_c ' // number(err(c), fmt)
         end if
         tol_it = min(1.0e-2_wp, max(1.0e-10_wp, 0.1_wp * sc%accuracy))
-        compare = compare .and. method /= HD_METHOD_ITERATIVE
+        compare = compare .and. method /= HD_METHOD_ITERATIVE .and. host == HD_HOST_NONE
         nruns = merge(2, 1, compare)
 
         progress = args%has('--progress')
         call timed_run(sc, method, tol_it, res, cost, progress, run_label(1, nruns, method))
+        if (res%status == HD_HOST_UNREACHABLE) call fail(EXIT_NO_SOLUTION, file // ': ' // res%message)
         if (res%status /= HD_OK) call fail(EXIT_FAILURE, file // ': ' // res%message)
         if (compare) then
             call timed_run(sc, HD_METHOD_ITERATIVE, tol_it, res_it, cost_it, progress, &
@@ -130,8 +156,8 @@ contains
         if (fmt == FORMAT_JSON) call buf%add('{')
         call report_method(sc, file, method, reason, err, avail, t_select, fmt, buf, nsec)
         call report_contacts(sc, res, fmt, buf, nsec)
-        call report_checks(rows, fmt, buf, nsec)
-        call report_cost(method, res, cost, res_it, cost_it, compare, fmt, buf, nsec)
+        call report_checks(sc, rows, fmt, buf, nsec)
+        call report_cost(method, res, cost, res_it, cost_it, compare, host, fmt, buf, nsec)
         if (fmt == FORMAT_JSON) call buf%add('}')
         if (args%has('--plot')) call write_plot(sc, res, plot, terminal)
         call buf%flush_to_stdout()
@@ -148,6 +174,29 @@ contains
         end if
         call quit(EXIT_OK)
     end subroutine cmd_scene
+
+    !> --dt and --steps override the scene file's dt and steps_per_contact (validated with
+    !> the scene); --host sets the host whose per-pair constants give k and d and the
+    !> scheme that integrates the contacts (none: the engine's own velocity Verlet with the
+    !> rule of --method, today's run).
+    subroutine scene_overrides(args, host, sc)
+        type(cli_args), intent(in) :: args
+        integer, intent(in) :: host
+        type(hertzdamp_dem_scene), intent(inout) :: sc
+        real(wp) :: x
+        if (args%has('--dt')) sc%dt = parse_real(args%get('--dt', ''), '--dt')
+        if (args%has('--steps')) then
+            x = parse_real(args%get('--steps', ''), '--steps')
+            if (.not. (x >= 1.0_wp .and. x <= 1.0e9_wp .and. x == anint(x))) then
+                call fail(EXIT_USAGE, '--steps ' // fmt_short(x) // ': time steps per contact must be ' // &
+                          'a whole number from 1 to 1e9')
+            end if
+            sc%steps_per_contact = nint(x)
+        end if
+        sc%host = host
+        sc%scheme = HD_HOST_VERLET
+        if (host /= HD_HOST_NONE) sc%scheme = host
+    end subroutine scene_overrides
 
     !> 'scene run 1 of 2 (compact)'
     function run_label(k, n, method) result(s)
@@ -186,7 +235,8 @@ contains
         type(hertzdamp_dem_state) :: st
         type(progress_reporter) :: p
         integer(int64) :: c0, c1, rate
-        integer :: reps, n, chunk, total
+        integer :: reps, n, chunk, total, i, j
+        type(hertzdamp_pair_t), allocatable :: pairs(:)
         real(wp), allocatable :: k(:), d(:), tce(:)
         logical, allocatable :: bound(:)
         integer, allocatable :: stat(:)
@@ -206,13 +256,31 @@ contains
         if (res%status /= HD_OK) return
         n = res%ncontacts
         if (n == 0) return
-        allocate (k(n), d(n), tce(n), bound(n), stat(n))
+        allocate (k(n), d(n), tce(n), bound(n), stat(n), pairs(n))
         reps = 0
         call system_clock(c0)
+        if (sc%host /= HD_HOST_NONE) then
+            ! the per-contact part of the host rule (hertzdamp_pair_kd); hertzdamp_pair_init
+            ! runs once per material pair at the start of the run (in the total)
+            do i = 1, n
+                j = findloc(res%contacts(1:i - 1)%e_target, res%contacts(i)%e_target, dim=1)
+                if (j > 0) then
+                    pairs(i) = pairs(j)
+                else
+                    call hertzdamp_pair_init(res%contacts(i)%e_target, sc%law, sc%iend, sc%host, &
+                                             real(sc%steps_per_contact, wp), pairs(i), stat(i))
+                end if
+            end do
+        end if
         do
-            call hertzdamp_dem_rule(res%contacts%e_target, sc%steps_per_contact * sc%dt, res%contacts%m, &
-                                    res%contacts%u_rule, res%contacts%k_phys, sc%iend, sc%law, method, &
-                                    sc%want_duration, tol, k, d, tce, bound, stat)
+            if (sc%host /= HD_HOST_NONE) then
+                call hertzdamp_dem_host_rule(pairs, sc%steps_per_contact * sc%dt, res%contacts%m, res%contacts%u_rule, &
+                                             res%contacts%k_phys, k, d, tce, bound, stat)
+            else
+                call hertzdamp_dem_rule(res%contacts%e_target, sc%steps_per_contact * sc%dt, res%contacts%m, &
+                                        res%contacts%u_rule, res%contacts%k_phys, sc%iend, sc%law, method, &
+                                        sc%want_duration, tol, k, d, tce, bound, stat)
+            end if
             reps = reps + 1
             call system_clock(c1)
             if (real(c1 - c0, wp) / real(rate, wp) > 0.02_wp .or. reps >= 100000) exit
@@ -282,6 +350,10 @@ contains
         end if
         call t%meta('accuracy', number(sc%accuracy, fmt))
         call t%meta('dt', number(sc%dt, fmt) // ' s')
+        if (sc%host /= HD_HOST_NONE .or. sc%scheme /= HD_HOST_VERLET) then
+            call t%meta('host', hertzdamp_host_name(sc%host) // ': contacts integrated by the scheme ' // &
+                        hertzdamp_host_name(sc%scheme) // ' (doc/host-schemes.md)')
+        end if
         call t%meta('method', hertzdamp_method_name(method))
         call t%meta('why', reason)
         call t%meta('selection_time', number(t_select, fmt) // ' s (one reference solve per candidate and target e)')
@@ -402,7 +474,8 @@ contains
     end subroutine report_contacts
 
     !> The checks computed by hertzdamp_dem_checks_of: value, bound, outcome.
-    subroutine report_checks(rows, fmt, buf, nsec)
+    subroutine report_checks(sc, rows, fmt, buf, nsec)
+        type(hertzdamp_dem_scene), intent(in) :: sc
         type(hertzdamp_dem_check_row), intent(in) :: rows(:)
         integer, intent(in) :: fmt
         type(cli_buffer), intent(inout) :: buf
@@ -413,11 +486,20 @@ contains
         call t%set_columns('check,value,bound,result')
         write (b1, '(f0.3)') hertzdamp_dem_verlet_energy()
         write (b2, '(i0)') nint(hertzdamp_dem_min_resolved)
-        call t%meta('bounds', 'binary contacts that started at or above rest_speed: e and tc to the method ' // &
-                    'accuracy plus the time-step error, velocity Verlet O(1/N^2) for N steps per contact ' // &
-                    '(bound 2/N^2, N the fewest steps per contact in the run, at least ' // trim(b2) // &
-                    '); energy: no rise above the velocity Verlet swing ' // trim(b1) // '/N^2 of the energy ' // &
-                    'scale plus the gain the e bound allows, max(0, (e_max (1 + bound_e))^2 - 1)')
+        if (sc%host /= HD_HOST_NONE .or. sc%scheme /= HD_HOST_VERLET) then
+            call t%meta('bounds', 'binary contacts that started at or above rest_speed, host ' // &
+                        hertzdamp_host_name(sc%host) // ' (scheme ' // hertzdamp_host_name(sc%scheme) // '): e and ' // &
+                        'tc within the accuracy plus the largest deviation of the host''s discrete collision from ' // &
+                        'its mean over the onset phase (the means are the targets; +2.5e-3 for e and tc information ' // &
+                        'only when the physical stiffness applies); the mean errors approach 0 as the contacts ' // &
+                        'sample the phase; energy: information (the host schemes are first order or not symplectic)')
+        else
+            call t%meta('bounds', 'binary contacts that started at or above rest_speed: e and tc to the method ' // &
+                        'accuracy plus the time-step error, velocity Verlet O(1/N^2) for N steps per contact ' // &
+                        '(bound 2/N^2, N the fewest steps per contact in the run, at least ' // trim(b2) // &
+                        '); energy: no rise above the velocity Verlet swing ' // trim(b1) // '/N^2 of the energy ' // &
+                        'scale plus the gain the e bound allows, max(0, (e_max (1 + bound_e))^2 - 1)')
+        end if
         do i = 1, size(rows)
             call t%str(trim(rows(i)%name))
             call t%num(rows(i)%value)
@@ -436,8 +518,8 @@ contains
         call add_section('checks', t, fmt, buf, nsec)
     end subroutine report_checks
 
-    subroutine report_cost(method, res, cost, res_it, cost_it, compare, fmt, buf, nsec)
-        integer, intent(in) :: method, fmt
+    subroutine report_cost(method, res, cost, res_it, cost_it, compare, host, fmt, buf, nsec)
+        integer, intent(in) :: method, fmt, host
         type(hertzdamp_dem_result), intent(in) :: res, res_it
         type(run_cost), intent(in) :: cost, cost_it
         logical, intent(in) :: compare
@@ -449,7 +531,12 @@ contains
                                'speedup_params')
         else
             call t%set_columns('rule,total_time_s,param_time_s,contacts,param_time_per_contact_s')
-            call t%meta('compare', 'iterative re-run skipped (--no-compare): no speed-ups')
+            if (host == HD_HOST_NONE) then
+                call t%meta('compare', 'iterative re-run skipped (--no-compare): no speed-ups')
+            else
+                call t%meta('compare', 'iterative re-run skipped (--host ' // hertzdamp_host_name(host) // &
+                            ': the iterative rule is the continuous model''s): no speed-ups')
+            end if
         end if
         call t%meta('timing', 'total: wall time of the run; params: the rule replayed on the run''s contacts')
         if (method == HD_METHOD_ITERATIVE) then

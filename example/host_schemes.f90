@@ -11,7 +11,8 @@
 !> 3. The spread with and without the onset/release correction (lammps, lammps-phase),
 !>    every law and end, at the per-pair constants.
 !> 4. MFiX 21.3.2's measured runs (e = 0.5) against the range of the two MFiX schemes.
-!> 5. The cost of one hertzdamp_host_solve (milliseconds on the machine that runs it).
+!> 5. The cost per material pair: one hertzdamp_pair_init (milliseconds on the machine that
+!>    runs it).
 !> 6. The scene engine (verlet) near e = 1: overlap and force end at alpha -> 0.
 program host_schemes
     use hertzdamp
@@ -151,11 +152,11 @@ contains
 
     subroutine cost()
         real(wp), parameter :: nn(4) = [10.0_wp, 20.0_wp, 100.0_wp, 1000.0_wp]
-        type(hertzdamp_host_stats) :: s
-        real(wp) :: a, t, best
+        type(hertzdamp_pair_t) :: pair
+        real(wp) :: best
         integer :: j, k, r, st
         integer(int64) :: c0, c1, cr
-        print '(a)', '## 5. Cost of one hertzdamp_host_solve, ms (e = 0.5, linear law, overlap end; best of 3)'
+        print '(a)', '## 5. Cost per material pair: one hertzdamp_pair_init, ms (e = 0.5, linear law, overlap end; best of 3)'
         print '(a)', ''
         print '(a)', '| host | N = 10 | N = 20 | N = 100 | N = 1000 |'
         print '(a)', '|---|---|---|---|---|'
@@ -165,7 +166,7 @@ contains
                 best = huge(1.0_wp)
                 do r = 1, 3
                     call system_clock(c0, cr)
-                    call hertzdamp_host_solve(0.5_wp, HD_DAMPING_LINEAR, HD_END_OVERLAP, hosts(j), nn(k), a, t, s, st)
+                    call hertzdamp_pair_init(0.5_wp, HD_DAMPING_LINEAR, HD_END_OVERLAP, hosts(j), nn(k), pair, st)
                     call system_clock(c1)
                     best = min(best, real(c1 - c0, wp) * 1.0e3_wp / real(cr, wp))
                 end do

@@ -116,6 +116,26 @@ int hertzdamp_c_pair_kd(const hertzdamp_pair_t *p, double tc, double m, double u
                         double *k, double *d);
 
 /*
+ * What a pair's constants achieve in the host scheme `host` (HERTZDAMP_HOST_*, not
+ * necessarily the pair's own) at the pair's N steps per contact, over the onset phase:
+ * stats[0..3] = mean, standard deviation, min and max of e; stats[4..7] = the same of
+ * the contact time in units of the target T_c = N dt (HERTZDAMP_HOST_NONE: the
+ * continuous model, no spread).  A host-exact pair run by its own scheme gives
+ * stats[0] = e and stats[4] = 1; a
+ * HERTZDAMP_HOST_NONE pair run by a scheme shows that scheme's error.  Costs about one
+ * hertzdamp_c_pair_init: call it once per pair, not per contact.  On failure stats = 0.
+ */
+int hertzdamp_c_pair_stats(const hertzdamp_pair_t *p, int host, double stats[8]);
+
+/*
+ * The fewest whole steps per contact N for which hertzdamp_c_pair_init succeeds with
+ * this (e, law, end, host) (HERTZDAMP_HOST_NONE: 2), for a message such as "N = 3 steps
+ * cannot reach e = 0.5 with lammps; N >= 6 can".  HERTZDAMP_HOST_UNREACHABLE when no N up
+ * to 1024 can; bad input as hertzdamp_c_pair_init.  On failure *n_min = 0.
+ */
+int hertzdamp_c_host_min_steps(double e, int law, int end, int host, int *n_min);
+
+/*
  * Inverse problem (adaptive collision time): the Hertz stiffness *k [N m^-3/2] and
  * linear damping *d [kg/s] that give restitution coefficient e (1e-3 <= e <= 1 for
  * the overlap end, 1e-4 <= e <= 1 for the force end) and contact time tc [s] to a

@@ -48,14 +48,14 @@ module hertzdamp_capi
     use hertzdamp_methods, only: hertzdamp_forward_dim, HD_METHOD_FIT
     use hertzdamp_pair, only: hertzdamp_pair_t, hertzdamp_pair_init, hertzdamp_invert, hertzdamp_c_pair_kd, &
                               hertzdamp_invert_contact
-    use hertzdamp_host, only: HD_HOST_NONE
+    use hertzdamp_host, only: HD_HOST_NONE, hertzdamp_host_stats, hertzdamp_host_mean, hertzdamp_host_min_steps
     implicit none
     private
 
     public :: hertzdamp_c_invert, hertzdamp_c_invert_bounded, hertzdamp_c_invert_n, hertzdamp_c_pair, &
               hertzdamp_c_forward, hertzdamp_c_strerror
     public :: hertzdamp_c_invert_law, hertzdamp_c_invert_law_n, hertzdamp_c_pair_law, hertzdamp_c_forward_law
-    public :: hertzdamp_c_pair_init, hertzdamp_c_pair_kd
+    public :: hertzdamp_c_pair_init, hertzdamp_c_pair_kd, hertzdamp_c_pair_stats, hertzdamp_c_host_min_steps
 
     integer, private :: i_   ! implied-do index of the initialisation below (never used at run time)
     !> The NUL-terminated messages of hertzdamp_message_table (the one table behind
@@ -87,6 +87,56 @@ contains
         call hertzdamp_pair_init(e, int(law), int(iend), int(host), steps, p, st)
         status = int(st, c_int)
     end function hertzdamp_c_pair_init
+
+    !> `int hertzdamp_c_pair_stats(const hertzdamp_pair_t *p, int host, double stats[8])`:
+    !> what the pair's constants achieve in the host scheme `host` (HERTZDAMP_HOST_*, not
+    !> necessarily the pair's own) at the pair's N steps per contact, over the onset phase
+    !> (hertzdamp_host_mean at h = tau_c/N): stats = e mean, sd, min, max, then the contact
+    !> time's mean, sd, min, max in units of the target T_c = N dt (host none: the continuous
+    !> model, no spread).  For the log of a host that runs the pair with a scheme
+    !> (a host-exact pair gives e mean = e), or with `host none` constants (the host's error).
+    !> A pair not set by hertzdamp_c_pair_init gives HD_BAD_PAIR, a NULL pointer
+    !> HD_BAD_ARGUMENT; on failure stats are 0.
+    integer(c_int) function hertzdamp_c_pair_stats(p, host, stats) &
+            bind(c, name='hertzdamp_c_pair_stats') result(status)
+        type(hertzdamp_pair_t), intent(in), optional :: p      !! the pair's constants
+        integer(c_int), value, intent(in) :: host              !! host scheme that runs them (HERTZDAMP_HOST_*)
+        real(c_double), intent(out), optional :: stats(8)     !! e mean, sd, min, max; T_c/(N dt) mean, sd, min, max
+        type(hertzdamp_host_stats) :: s
+        real(c_double) :: k, d
+        integer :: st
+        status = HD_BAD_ARGUMENT
+        if (.not. (present(p) .and. present(stats))) return
+        stats = 0.0_c_double
+        ! the pair's validity (HD_BAD_PAIR) as the per-contact call checks it, at a valid contact
+        status = hertzdamp_c_pair_kd(p, 1.0_c_double, 1.0_c_double, 1.0_c_double, 0.0_c_double, k, d)
+        if (status /= HD_OK) return
+        call hertzdamp_host_mean(p%alpha, p%tau_c / p%steps, int(p%law), int(p%iend), int(host), s, st)
+        status = int(st, c_int)
+        if (st /= HD_OK) return
+        stats = [s%e_mean, s%e_sd, s%e_min, s%e_max, &
+                 s%tau_mean / p%tau_c, s%tau_sd / p%tau_c, s%tau_min / p%tau_c, s%tau_max / p%tau_c]
+    end function hertzdamp_c_pair_stats
+
+    !> `int hertzdamp_c_host_min_steps(double e, int law, int end, int host, int *n_min)`:
+    !> the fewest whole steps per contact N for which hertzdamp_c_pair_init succeeds with
+    !> this host (hertzdamp_host_min_steps; host none: 2), for messages such as "N = 3 steps
+    !> cannot reach e = 0.5 with lammps; N >= 6 can".  HERTZDAMP_HOST_UNREACHABLE when no N
+    !> up to 1024 can; on failure *n_min = 0; a NULL n_min gives HD_BAD_ARGUMENT.
+    integer(c_int) function hertzdamp_c_host_min_steps(e, law, iend, host, n_min) &
+            bind(c, name='hertzdamp_c_host_min_steps') result(status)
+        real(c_double), value, intent(in) :: e          !! target restitution
+        integer(c_int), value, intent(in) :: law        !! damping law: 0 linear, 1 tsuji, 2 kuwabara-kono
+        integer(c_int), value, intent(in) :: iend       !! contact end: 0 overlap, 1 force
+        integer(c_int), value, intent(in) :: host       !! host scheme (HERTZDAMP_HOST_*)
+        integer(c_int), intent(out), optional :: n_min  !! fewest steps per contact that reach e
+        integer :: n, st
+        status = HD_BAD_ARGUMENT
+        if (.not. present(n_min)) return
+        call hertzdamp_host_min_steps(e, int(law), int(iend), int(host), n, st)
+        n_min = int(n, c_int)
+        status = int(st, c_int)
+    end function hertzdamp_c_host_min_steps
 
     ! ================================================================ C: the one-call inverse
 

@@ -5,7 +5,7 @@
 # contact, against the module procedure hertzdamp_invert called the same way, in one
 # process: 10^6 contacts (e uniform in [0.05, 0.99], m, u, T_c log-uniform over
 # [1e-9, 1] kg, [1e-3, 10] m/s, [1e-7, 1e-3] s), rounds that time both loops in turn,
-# medians of 7 rounds.  Not a test (speed is never asserted): README "Speed" cites it.
+# medians of 7 rounds.  Not a test (speed is never asserted): doc/performance.md cites it.
 #
 #   tools/legacy_client_bench.sh [PREFIX]
 #

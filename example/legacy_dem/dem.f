@@ -10,6 +10,12 @@ C     Per contact it prints UIN, K, D and the achieved ratio of
 C     rebound to impact speed, plus E and TC that HERTZDAMP_FORWARD
 C     predicts for K, D (gravity and time stepping are not in it).
 C
+C     Then (subroutine EULER) MFiX's explicit Euler scheme, at many
+C     onset phases, with the per-pair API: HERTZDAMP_PAIR_INIT once per
+C     material pair for the host scheme (IHOST = 2, mfix-euler, exact
+C     for this scheme at NSTEP steps per contact; IHOST = 0 the
+C     continuous model) and HERTZDAMP_PAIR_KD at every contact onset.
+C
 C     Build against an installed prefix:  make PREFIX=/path/to/prefix
 C     INCLUDE 'hertzdamp.fi' (from PREFIX/include) declares the library
 C     routines: an argument of the wrong type or kind is then a compile
@@ -86,4 +92,102 @@ C        contact end: the overlap has returned to zero
          END IF
   100 CONTINUE
   200 CONTINUE
+      CALL EULER(2)
+      CALL EULER(0)
       END
+C
+C     EULER: head-on sphere-wall collisions (no gravity) integrated as
+C     MFiX's DES_INTG_METHOD = 'EULER' does (model/des/cfnewvalues.f):
+C         V = V + DT*A;   X = X + DT*V;   A from the new X and V,
+C     at NPH onset phases: sphere J starts (2 + (J-1/2)/NPH)*U*DT above
+C     the touch, so its first overlap is PHI*U*DT, PHI = 1-(J-1/2)/NPH
+C     (one contact in each of NPH equal cells of the phase).  K and D of
+C     each contact come from HERTZDAMP_PAIR_KD with the constants that
+C     HERTZDAMP_PAIR_INIT gave once for the pair (host IHOST, NSTEP
+C     steps per contact).  The contact lasts while the overlap is > 0;
+C     its T_c runs from the touch to the overlap zero (both interpolated
+C     linearly in the overlap), its e is the speed after it over U.
+C     Prints the mean e/ETARG - 1 and T_c/(NSTEP*DT) - 1 over the
+C     phases, and the variation of e/ETARG and T_c/TC over them divided
+C     by NPH; the stratified sampling error of the means is below it.
+      SUBROUTINE EULER(IHOST)
+      IMPLICIT NONE
+      INCLUDE 'hertzdamp.fi'
+      INTEGER IHOST
+      DOUBLE PRECISION AM, DT, ETARG, U, TC, PAIR(8), X, XOLD, V, A
+      DOUBLE PRECISION AK, D, UIN, T, TON, SE, ST, VE, VT, E1, T1
+      DOUBLE PRECISION EPREV, TPREV
+      INTEGER NSTEP, NPH, J, ISTEP, IERR, NDONE
+      LOGICAL INCONT
+      CHARACTER*100 TEXT
+C     mass [kg], time step [s], target e, impact speed [m/s]
+      PARAMETER (AM = 1.0D-3, DT = 1.0D-5, ETARG = 0.5D0, U = 1.0D0)
+C     steps per contact, onset phases
+      PARAMETER (NSTEP = 10, NPH = 1000)
+      TC = NSTEP*DT
+      CALL HERTZDAMP_PAIR_INIT(ETARG, 0, 0, IHOST, DBLE(NSTEP), PAIR,
+     &                         IERR)
+      IF (IERR .NE. 0) THEN
+         CALL HERTZDAMP_MESSAGE(IERR, TEXT)
+         WRITE (*,'(A,A)') 'hertzdamp_pair_init failed: ', TEXT
+         STOP 1
+      END IF
+      SE = 0.0D0
+      ST = 0.0D0
+      VE = 0.0D0
+      VT = 0.0D0
+      EPREV = 0.0D0
+      TPREV = 0.0D0
+      NDONE = 0
+      AK = 0.0D0
+      D = 0.0D0
+      UIN = 0.0D0
+      TON = 0.0D0
+      DO 300 J = 1, NPH
+         X = (2.0D0 + (J - 0.5D0)/NPH)*U*DT
+         V = -U
+         A = 0.0D0
+         INCONT = .FALSE.
+         DO 250 ISTEP = 1, 1000
+            T = ISTEP*DT
+            V = V + DT*A
+            XOLD = X
+            X = X + DT*V
+            A = 0.0D0
+            IF (X .LT. 0.0D0) THEN
+               IF (.NOT. INCONT) THEN
+C                 onset: the touch inside this step, k and d
+                  INCONT = .TRUE.
+                  TON = T - DT + DT*XOLD/(XOLD - X)
+                  UIN = -V
+                  CALL HERTZDAMP_PAIR_KD(PAIR, TC, AM, UIN, 0.0D0, AK,
+     &                                   D, IERR)
+                  IF (IERR .NE. 0) THEN
+                     CALL HERTZDAMP_MESSAGE(IERR, TEXT)
+                     WRITE (*,'(2A)') 'hertzdamp_pair_kd failed: ', TEXT
+                     STOP 1
+                  END IF
+               END IF
+               A = (AK*(-X)**1.5D0 - D*V)/AM
+            ELSE IF (INCONT) THEN
+C              the overlap is gone: no force from here on
+               E1 = V/UIN/ETARG
+               T1 = (T - DT + DT*XOLD/(XOLD - X) - TON)/TC
+               SE = SE + E1
+               ST = ST + T1
+               IF (J .GT. 1) THEN
+                  VE = VE + ABS(E1 - EPREV)
+                  VT = VT + ABS(T1 - TPREV)
+               END IF
+               EPREV = E1
+               TPREV = T1
+               NDONE = NDONE + 1
+               GO TO 300
+            END IF
+  250    CONTINUE
+  300 CONTINUE
+      WRITE (*,'(A,I2,A,I5,A,I3,A,1P,4E12.4E2)') 'euler ihost',IHOST,
+     &   ' phases', NDONE, ' steps', NSTEP,
+     &   ' e_err tc_err e_var/n tc_var/n', SE/NDONE - 1.0D0,
+     &   ST/NDONE - 1.0D0, VE/NDONE, VT/NDONE
+      END SUBROUTINE EULER

@@ -369,4 +369,40 @@ expect_fail 2 "bad method" scene $S/chain.nml --method magic
 expect_fail 2 "bad format" scene $S/chain.nml --format xml
 run scene --help
 check "scene --help mentions tangential forces out of scope" grep -q 'tangential forces' "$OUT"
+
+# --host: the contacts integrated by a host's scheme with its per-pair constants
+# (test_scene_host asserts the means against the targets; here the command line)
+for h in lammps mfix-euler mfix-ab2 verlet; do
+  run scene $S/phases.nml --host $h --dt 1e-6 --steps 10 --format json
+  check "phases --host $h: exit 0 (got $RC), no FAIL, fit, the host stated, no iterative re-run" python3 -c '
+import json, sys
+d = json.load(open(sys.argv[1])); h = sys.argv[2]
+assert d["method"]["method"] == "fit" and d["method"]["host"].startswith(h + ":"), d["method"]
+rows = {r["check"]: r for r in d["checks"]["rows"]}
+assert all(r["result"] != "FAIL" for r in rows.values()), rows
+assert rows["contacts with e, tc checked"]["value"] == 64
+# 64 phases of one step: the mean e within 5e-3 of the target (the per-contact spread is
+# up to 12 %), the mean T_c within 2e-3
+assert abs(rows["mean_e_rel_err (binary contacts)"]["value"]) < 5e-3, rows
+assert abs(rows["mean_tc_rel_err (binary contacts)"]["value"]) < 2e-3, rows
+assert [r["rule"] for r in d["cost"]["rows"]] == ["fit"]
+' "$OUT" $h
+done
+run scene $S/phases.nml --host none --dt 1e-6 --steps 10 --format csv --no-compare
+cp "$OUT" "$TMPD/host_none.csv"
+run scene $S/phases.nml --format csv --no-compare
+check "--host none --dt, --steps as in the file: the report of the plain run (but the timings)" \
+  bash -c "diff <(sed '/^# cost/,\$d' '$TMPD/host_none.csv') <(sed '/^# cost/,\$d' '$OUT')"
+run scene $S/phases.nml --host lammps --dt 1e-6 --steps 2
+check "--host lammps at N = 2: exit 3, no solution (got $RC)" test "$RC" -eq 3
+check "--host lammps at N = 2: names the pair, N and the N that can" grep -q 'material pair steel - steel: N = 2 steps cannot reach e = 0.5.* with lammps; N >= 3 can' "$ERR"
+expect_fail 2 "--host without --dt" scene $S/phases.nml --host lammps --steps 10
+check "--host without --dt: the rule of invert" grep -q -- '--host needs --dt and --steps' "$ERR"
+expect_fail 2 "--host lammps --method series" scene $S/phases.nml --host lammps --dt 1e-6 --steps 10 --method series
+check "--host lammps --method series: from the fit" grep -q -- '--host lammps: the host-exact constants come from the fit' "$ERR"
+expect_fail 2 "--host lammps-phase (not a scheme of the engine)" scene $S/phases.nml --host lammps-phase --dt 1e-6 --steps 10
+expect_fail 2 "--steps 2.5" scene $S/phases.nml --host lammps --dt 1e-6 --steps 2.5
+check "--steps 2.5: a whole number" grep -q -- '--steps 2.5: time steps per contact must be a whole number' "$ERR"
+expect_fail 2 "--host lammps on a restitution-only scene" scene $S/bed.nml --host lammps --dt 2e-5 --steps 40
+check "restitution only: --host needs T_c" grep -q 'the scene wants the restitution only' "$ERR"
 finish

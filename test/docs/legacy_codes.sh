@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# The table of legacy argument codes in README.md (IEND, ILAW, IHOST) agrees with
+# The table of legacy argument codes in doc/library.md (IEND, ILAW, IHOST) agrees with
 # include/hertzdamp.h (the C macros) and the modules that define them
 # (src/hertzdamp_ends.f90 HD_END_*, src/hertzdamp_laws.f90 HD_DAMPING_*,
 # src/hertzdamp_host.f90 HD_HOST_*): every code the header defines has its row, with
@@ -9,7 +9,7 @@ p=0; f=0
 out=$(mktemp); trap 'rm -f "$out"' EXIT
 python3 - <<'PY' >"$out" 2>&1
 import re
-readme = open("README.md", encoding="utf-8").read()
+readme = open("doc/library.md", encoding="utf-8").read()
 block = readme.split("<!-- BEGIN legacy codes -->")[1].split("<!-- END legacy codes -->")[0]
 rows = [l for l in block.splitlines() if l.startswith("| `")]
 table = {}
@@ -29,12 +29,12 @@ arg = lambda m: "IEND" if "_END_" in m else "ILAW" if "_DAMPING_" in m else "IHO
 def say(ok, label): print(("ok " if ok else "FAIL ") + label)
 say(len(macros) == 11, "hertzdamp.h defines 2 end, 3 law and 6 host codes (%d)" % len(macros))
 for m, v in macros.items():
-    say(m in table, "README has a row for %s" % m)
-    say(m in table and table[m][1] == v, "README's code of %s is hertzdamp.h's (%d)" % (m, v))
+    say(m in table, "doc/library.md has a row for %s" % m)
+    say(m in table and table[m][1] == v, "doc/library.md: the code of %s is hertzdamp.h's (%d)" % (m, v))
     say(m in table and table[m][0] == arg(m), "%s is an %s code" % (m, arg(m)))
     say(fortran.get(m[len("HERTZDAMP_"):]) == v, "HD_%s = %d in the module" % (m[len("HERTZDAMP_"):], v))
 for m in table:
-    say(m in macros, "README's row %s is a macro of hertzdamp.h" % m)
+    say(m in macros, "doc/library.md: the row %s is a macro of hertzdamp.h" % m)
 PY
 while IFS= read -r line; do
   case "$line" in

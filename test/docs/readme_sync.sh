@@ -1,11 +1,12 @@
 #!/usr/bin/env bash
-# The README as written: the figures copied into it are what the programs print today
-# (the series accuracy table), every `$ hertzdamp ...` command prints exactly the
-# output shown under it, every compile and link line (gfortran, cc, pkg-config) builds
-# a program against a fresh `make install` prefix that then runs from another
-# directory (the static lines without libhertzdamp.so), and every relative link in
-# README.md and doc/*.md resolves to a file (and, for a #fragment into a markdown file,
-# to one of its headings).
+# The README and the guides in doc/ as written: the figures copied into them are what
+# the programs print today (the series accuracy table, doc/accuracy.md), every
+# `$ hertzdamp ...` command of README.md and doc/*.md prints exactly the output shown
+# under it, every compile and link line (gfortran, cc, pkg-config) of README.md and
+# doc/*.md builds a program against a fresh `make install` prefix that then runs from
+# another directory (the static lines without libhertzdamp.so; a line written in two
+# files is built once), and every relative link in README.md and doc/*.md resolves to
+# a file (and, for a #fragment into a markdown file, to one of its headings).
 cd "$(dirname "$0")/../.."
 root=$PWD
 fpm=${HERTZDAMP_FPM:-.venv/bin/fpm}
@@ -17,19 +18,23 @@ tmp=$(mktemp -d); trap 'rm -rf "$tmp"' EXIT
 rows=$("$fpm" run --example series_accuracy --flag "${HERTZDAMP_RELEASE_FLAGS:-}" 2>/dev/null | grep '^|')
 check "series accuracy table printed" test "$(wc -l <<<"$rows")" -eq 9
 while IFS= read -r row; do
-  check "README has the row: ${row:0:40}" grep -qxF -- "$row" README.md
+  check "README or a guide has the row: ${row:0:40}" bash -c 'cat README.md doc/*.md | grep -qxF -- "$1"' _ "$row"
 done <<<"$rows"
+
+# ------------------------------------------------------------ the README stays a README (issue 25)
+check "README.md has at most 400 lines ($(wc -l <README.md))" test "$(wc -l <README.md)" -le 400
 
 # ------------------------------------------------------------ every `$ hertzdamp` command and its output
 if [ -n "${HERTZDAMP_BIN:-}" ]; then
-  python3 - README.md "$tmp/cmds" <<'PY'
+  python3 - "$tmp/cmds" README.md doc/*.md <<'PY'
 import os, sys
-lines = open(sys.argv[1], encoding="utf-8").read().splitlines()
-out = sys.argv[2]
+out = sys.argv[1]
 os.makedirs(out)
 n = 0
-i = 0
-while i < len(lines):
+for md in sys.argv[2:]:
+  lines = open(md, encoding="utf-8").read().splitlines()
+  i = 0
+  while i < len(lines):
     if lines[i].startswith("    $ hertzdamp "):
         cmd = lines[i][6:]
         body = []
@@ -39,6 +44,7 @@ while i < len(lines):
             i += 1
         n += 1
         open(f"{out}/{n}.cmd", "w").write(cmd)
+        open(f"{out}/{n}.file", "w").write(md)
         if body and body[-1] == "...":
             # an excerpt: the lines shown must appear in the output, in this order
             body.pop()
@@ -48,18 +54,19 @@ while i < len(lines):
         i += 1
 PY
   ncmd=$(ls "$tmp/cmds" | grep -c '\.cmd$')
-  check "README shows at least 5 hertzdamp commands with their output ($ncmd)" test "$ncmd" -ge 5
+  check "README and guides show at least 5 hertzdamp commands with their output ($ncmd)" test "$ncmd" -ge 5
+  check "README itself shows at least 5 of them ($(grep -c '^    \$ hertzdamp ' README.md))" test "$(grep -c '^    \$ hertzdamp ' README.md)" -ge 5
   bindir=$tmp/bin; mkdir -p "$bindir"; ln -s "$(realpath "$HERTZDAMP_BIN")" "$bindir/hertzdamp"
   for c in "$tmp"/cmds/*.cmd; do
     PATH=$bindir:$PATH bash -c "$(cat "$c")" >"${c%.cmd}.got" 2>/dev/null
     if [ -e "${c%.cmd}.excerpt" ]; then
-      check "README command prints the lines the README shows: $(head -c 90 "$c")" python3 -c '
+      check "$(cat "${c%.cmd}.file") command prints the lines it shows: $(head -c 90 "$c")" python3 -c '
 import sys
 got = open(sys.argv[1]).read().splitlines(); it = iter(got)
 sys.exit(0 if all(any(g == w for g in it) for w in open(sys.argv[2]).read().splitlines()) else 1)' \
         "${c%.cmd}.got" "${c%.cmd}.want"
     else
-      check "README command prints what the README shows: $(head -c 90 "$c")" cmp -s "${c%.cmd}.got" "${c%.cmd}.want"
+      check "$(cat "${c%.cmd}.file") command prints what it shows: $(head -c 90 "$c")" cmp -s "${c%.cmd}.got" "${c%.cmd}.want"
     fi
   done
   # the glass-bead answer of issue 12 is among them: one invert, one forward
@@ -110,18 +117,20 @@ C
     n=$((n + 1))
     rm -f "$work/a.out"
     ( cd "$work" && PREFIX=$prefix eval "$cmd" ) >"$tmp/cc.log" 2>&1
-    check "README line builds: $cmd" test -x "$work/a.out"
+    check "compile line builds: $cmd" test -x "$work/a.out"
     if [ -x "$work/a.out" ]; then
       mv "$work/a.out" "$tmp/elsewhere/prog$n"
       ( cd / && "$tmp/elsewhere/prog$n" ) >"$tmp/run.log" 2>&1
-      check "README line's program runs from another directory: $cmd" grep -Eq '^ *(k =|contact)' "$tmp/run.log"
+      check "compile line's program runs from another directory: $cmd" grep -Eq '^ *(k =|contact)' "$tmp/run.log"
       if [[ $cmd == *static* || $cmd == *libhertzdamp.a* ]]; then
         check "static line links the archive (no libhertzdamp.so): $cmd" \
           bash -c "! ldd '$tmp/elsewhere/prog$n' | grep -q libhertzdamp"
       fi
     fi
-  done < <(grep -E '^    (gfortran|cc|export PKG_CONFIG_PATH)[ =]' README.md | sed "s|\\\$PREFIX|$prefix|g")
-  check "README has compile lines for Fortran, legacy Fortran, C shared/static and pkg-config ($n)" test "$n" -ge 7
+  done < <(grep -hE '^    (gfortran|cc|export PKG_CONFIG_PATH)[ =]' README.md doc/*.md | awk '!seen[$0]++' | sed "s|\\\$PREFIX|$prefix|g")
+  check "README and guides have compile lines for Fortran, legacy Fortran, C shared/static and pkg-config ($n)" test "$n" -ge 7
+  check "README itself has compile lines for Fortran, legacy Fortran, C and pkg-config" \
+    bash -c "grep -q '^    gfortran .*prog.f90' README.md && grep -q '^    gfortran dem.f' README.md && grep -q '^    cc prog.c -I' README.md && grep -q '^    cc prog.c .*pkg-config' README.md"
 fi
 
 # ------------------------------------------------------------ relative links resolve

@@ -67,6 +67,7 @@ if [ -n "$so" ] && [ -n "$ar" ]; then
               hertzdamp_invert_law_ hertzdamp_pair_law_ hertzdamp_forward_law_ hertzdamp_c_invert_law \
               hertzdamp_c_pair_law hertzdamp_c_forward_law hertzdamp_c_invert_law_n hertzdamp_invert_law_n_ \
               hertzdamp_c_pair_init hertzdamp_c_pair_kd hertzdamp_pair_init_ hertzdamp_pair_kd_ \
+              hertzdamp_c_pair_stats hertzdamp_c_host_min_steps \
               hertzdamp_message_ hertzdamp_c_invert hertzdamp_c_invert_bounded hertzdamp_c_invert_n \
               hertzdamp_c_pair hertzdamp_c_forward hertzdamp_c_strerror; do
     check "entry point $name exported" $(grep -qx "$name" <<<"$exported"; echo $?)

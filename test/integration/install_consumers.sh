@@ -76,7 +76,8 @@ for sym in hertzdamp_c_invert hertzdamp_c_invert_bounded hertzdamp_c_invert_n he
            hertzdamp_c_strerror hertzdamp_invert_ hertzdamp_invert_bounded_ hertzdamp_pair_ hertzdamp_forward_ \
            hertzdamp_invert_n_ hertzdamp_message_ hertzdamp_c_invert_law hertzdamp_c_pair_law hertzdamp_c_forward_law \
            hertzdamp_invert_law_ hertzdamp_pair_law_ hertzdamp_forward_law_ hertzdamp_c_invert_law_n \
-           hertzdamp_invert_law_n_ hertzdamp_c_pair_init hertzdamp_c_pair_kd hertzdamp_pair_init_ hertzdamp_pair_kd_; do
+           hertzdamp_invert_law_n_ hertzdamp_c_pair_init hertzdamp_c_pair_kd hertzdamp_pair_init_ hertzdamp_pair_kd_ \
+           hertzdamp_c_pair_stats hertzdamp_c_host_min_steps; do
   check "shared library exports $sym" grep -qx "$sym" <<<"$defined_so"
 done
 # the C names never equal a legacy name without gfortran's underscore (-fno-underscoring)
@@ -118,6 +119,16 @@ check "legacy example: achieved v_out/u_in within 0.1 of e" \
   awk '/^contact/ { if ($6 < 0.7 || $6 > 0.9) bad = 1; n++ } END { exit (bad || n != 5) }' "$tmp/legacy.out"
 check "legacy example: forward gives back e and T_c (1e-12)" \
   awk '/^contact/ { if (($8 / 0.8 - 1)^2 > 1e-24 || ($9/1e-4 - 1)^2 > 1e-24) bad = 1 } END { exit bad }' "$tmp/legacy.out"
+# its explicit Euler loop (MFiX's EULER) over 1000 onset phases, e = 0.5, N = 10: with
+# HERTZDAMP_PAIR_INIT(IHOST = 2) the mean e and T_c within 1e-3 of the targets, and the
+# phase sampling allows it (variation / phases, the bound of its error, below 1e-3);
+# with IHOST = 0 (the continuous constants) they miss by more than 1e-3
+# (fields: 3 ihost, 5 phases, 7 steps, then after four labels 12 e_err, 13 tc_err, 14 e_var/n, 15 tc_var/n)
+check "legacy example: Euler loop, IHOST = 2: mean e and T_c within 1e-3 over 1000 phases" \
+  awk '/^euler ihost +2 / { n++; if ($5 != 1000 || $12^2 > 1e-6 || $13^2 > 1e-6 || $14 > 1e-3 || $15 > 1e-3) bad = 1 }
+       END { exit (bad || n != 1) }' "$tmp/legacy.out"
+check "legacy example: Euler loop, IHOST = 0: the continuous constants miss e or T_c by more than 1e-3" \
+  awk '/^euler ihost +0 / { n++; if ($12^2 <= 1e-6 && $13^2 <= 1e-6) bad = 1 } END { exit (bad || n != 1) }' "$tmp/legacy.out"
 
 # The same k, d from three routes for every (e, T_c, m, u_in) of the legacy run:
 # legacy external (the run above), C API (./dem_c e tc m u), module API (checker).

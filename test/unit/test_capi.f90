@@ -35,7 +35,7 @@ program test_capi
             call hertzdamp_forward_dim(km, dm, ms(i), us(i), iend, HD_METHOD_FIT, alpha, tstar, em, tcm, zmax, stm)
             call suite%check(st == HD_OK .and. .not. (abs(e - em) > 0.0_wp .or. abs(tc - tcm) > 0.0_wp), &
                              'forward bit-identical to the module API')
-            ! the fit's stated round-trip accuracy (README: e 8.8e-13, T_c 1.7e-13 at worst)
+            ! the fit's stated round-trip accuracy (doc/accuracy.md: e 8.8e-13, T_c 1.7e-13 at worst)
             call suite%check_close(e, es(i), 1.0e-12_wp, 'round trip e')
             call suite%check_close(tc, 1.0e-4_wp, 1.0e-12_wp, 'round trip tc')
         end do

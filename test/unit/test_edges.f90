@@ -1,7 +1,7 @@
 !> The case matrix of extreme and invalid inputs (issue: stiff and extreme cases).
 !> Every case must finish with a status, finite outputs on success, a message on
 !> failure, bounded work; valid dimensional cases must round-trip.  Prints the
-!> summary table quoted in README.md: per class the number of cases, the NaN outputs
+!> summary table quoted in doc/accuracy.md: per class the number of cases, the NaN outputs
 !> (asserted zero), the largest right-hand-side count and the slowest case (measured;
 !> a crash or a hang would stop this program before the table, and the test runner
 !> reports that as a failure).

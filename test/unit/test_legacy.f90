@@ -110,7 +110,7 @@ program test_legacy
             ! round trip through the legacy forward problem
             call hertzdamp_forward(k, d, ms(i), us(i), iend, e, tc, ierr)
             call suite%check(ierr == HD_OK, 'forward status after invert, end ' // cend)
-            ! the fit's stated round-trip accuracy (README: e 8.8e-13, T_c 1.7e-13 at worst)
+            ! the fit's stated round-trip accuracy (doc/accuracy.md: e 8.8e-13, T_c 1.7e-13 at worst)
             call suite%check_close(e, es(i), 1.0e-12_wp, 'round trip e, end ' // cend)
             call suite%check_close(tc, tcs(i), 1.0e-12_wp, 'round trip tc, end ' // cend)
             call hertzdamp_forward_dim(k, d, ms(i), us(i), iend, HD_METHOD_FIT, alpha, tstar, em, tcm, zmax, st)

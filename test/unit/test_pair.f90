@@ -30,7 +30,8 @@ program test_pair
     use hertzdamp_host, only: HD_HOST_NONE, HD_HOST_LAMMPS, HD_HOST_MFIX_AB2, HD_HOST_VERLET, HD_HOST_LAMMPS_PHASE, &
                               hertzdamp_host_stats, hertzdamp_host_solve, hertzdamp_host_min_steps, hertzdamp_host_name, &
                               hertzdamp_host_mean
-    use hertzdamp_capi, only: hertzdamp_c_pair_init, hertzdamp_c_pair_kd, hertzdamp_c_invert_law
+    use hertzdamp_capi, only: hertzdamp_c_pair_init, hertzdamp_c_pair_kd, hertzdamp_c_invert_law, &
+                              hertzdamp_c_pair_stats, hertzdamp_c_host_min_steps
     use hertzdamp_testing, only: test_suite, new_suite, rel_err
     use, intrinsic :: iso_c_binding, only: c_double, c_int
     use, intrinsic :: iso_fortran_env, only: int64
@@ -81,6 +82,7 @@ program test_pair
     call bad_init()
     call bad_kd()
     call invalid_pairs()
+    call c_stats_and_min_steps()
     call s%finish()
 
 contains
@@ -649,5 +651,62 @@ contains
         end do
         call s%check(nbad == 0, '1000 random bit patterns: HD_BAD_PAIR')
     end subroutine invalid_pairs
+
+    !> The C functions a host's log uses: hertzdamp_c_pair_stats of a host-exact pair in
+    !> its own scheme gives the target (phase means e and T_c/(N dt) = 1, the identity the
+    !> constants are solved for), and in the continuous model (host none) no spread;
+    !> hertzdamp_c_host_min_steps equals the module's hertzdamp_host_min_steps; bad pairs
+    !> and NULL arguments give their statuses and zero outputs.
+    subroutine c_stats_and_min_steps()
+        integer, parameter :: hosts(3) = [HD_HOST_LAMMPS, HD_HOST_MFIX_AB2, HD_HOST_LAMMPS_PHASE]
+        real(wp), parameter :: es(2) = [0.2_wp, 0.9_wp]
+        type(hertzdamp_pair_t) :: p
+        real(c_double) :: st8(8)
+        integer(c_int) :: stc, nc
+        integer :: ih, ie, lw, ie2, nm, st, nbad_stats, nbad_none, nbad_min
+        nbad_stats = 0; nbad_none = 0; nbad_min = 0
+        do lw = HD_DAMPING_LINEAR, HD_DAMPING_KUWABARA_KONO
+            do ie2 = HD_END_OVERLAP, HD_END_FORCE
+                do ih = 1, size(hosts)
+                    do ie = 1, size(es)
+                        stc = hertzdamp_c_pair_init(es(ie), int(lw, c_int), int(ie2, c_int), int(hosts(ih), c_int), &
+                                                    20.0_wp, p)
+                        if (stc /= HD_OK) then
+                            nbad_stats = nbad_stats + 1
+                            cycle
+                        end if
+                        stc = hertzdamp_c_pair_stats(p, int(hosts(ih), c_int), st8)
+                        if (stc /= HD_OK .or. abs(st8(1) / es(ie) - 1.0_wp) > 1.0e-9_wp .or. &
+                            abs(st8(5) - 1.0_wp) > 1.0e-9_wp .or. .not. (st8(3) <= st8(1) .and. st8(1) <= st8(4)) &
+                            .or. st8(2) <= 0.0_wp) nbad_stats = nbad_stats + 1
+                        stc = hertzdamp_c_pair_stats(p, int(HD_HOST_NONE, c_int), st8)
+                        if (stc /= HD_OK .or. st8(2) /= 0.0_wp .or. st8(6) /= 0.0_wp .or. st8(3) /= st8(4)) then
+                            nbad_none = nbad_none + 1
+                        end if
+                        call hertzdamp_host_min_steps(es(ie), lw, ie2, hosts(ih), nm, st)
+                        stc = hertzdamp_c_host_min_steps(es(ie), int(lw, c_int), int(ie2, c_int), &
+                                                         int(hosts(ih), c_int), nc)
+                        if (stc /= st .or. nc /= nm) nbad_min = nbad_min + 1
+                    end do
+                end do
+            end do
+        end do
+        call s%check(nbad_stats == 0, 'C hertzdamp_c_pair_stats of a host-exact pair (N = 20, every law, end, ' // &
+                     'lammps/mfix-ab2/lammps-phase, e = 0.2, 0.9): phase means e and T_c/(N dt) equal the target ' // &
+                     'to 1e-9, min <= mean <= max, spread > 0')
+        call s%check(nbad_none == 0, 'C hertzdamp_c_pair_stats with host none: no spread')
+        call s%check(nbad_min == 0, 'C hertzdamp_c_host_min_steps = hertzdamp_host_min_steps (status and N)')
+        p = hertzdamp_pair_t()
+        st8 = 1.0_wp
+        stc = hertzdamp_c_pair_stats(p, int(HD_HOST_LAMMPS, c_int), st8)
+        call s%check(stc == HD_BAD_PAIR .and. all(st8 == 0.0_wp), 'C hertzdamp_c_pair_stats: a pair not set by ' // &
+                     'init gives HD_BAD_PAIR and zero stats')
+        stc = hertzdamp_c_pair_stats(stats=st8, host=int(HD_HOST_LAMMPS, c_int))
+        call s%check(stc == HD_BAD_ARGUMENT, 'C hertzdamp_c_pair_stats: NULL pair gives HD_BAD_ARGUMENT')
+        stc = hertzdamp_c_host_min_steps(0.5_wp, 0_c_int, 0_c_int, int(HD_HOST_LAMMPS, c_int))
+        call s%check(stc == HD_BAD_ARGUMENT, 'C hertzdamp_c_host_min_steps: NULL n_min gives HD_BAD_ARGUMENT')
+        stc = hertzdamp_c_host_min_steps(0.5_wp, 0_c_int, 0_c_int, -1_c_int, nc)
+        call s%check(stc == HD_BAD_HOST .and. nc == 0, 'C hertzdamp_c_host_min_steps: host -1 gives HD_BAD_HOST, 0')
+    end subroutine c_stats_and_min_steps
 
 end program test_pair

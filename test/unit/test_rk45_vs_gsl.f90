@@ -13,7 +13,7 @@ program test_rk45_vs_gsl
     s = new_suite('test_rk45_vs_gsl')
     call closed_forms()
     worst = 0.0_wp
-    ! 12 digits (README): default tolerance against rk8pd at 1e-14, every damping law
+    ! 12 digits (doc/accuracy.md): default tolerance against rk8pd at 1e-14, every damping law
     ! (doc/damping-laws.md) and contact end, over alpha down to e ~ 1e-4
     call compare(HD_END_OVERLAP, 0.0_wp, 1.12_wp, 57, 2.0e-12_wp)
     call compare(HD_END_FORCE, 0.0_wp, 50.0_wp, 51, 2.0e-12_wp)
@@ -45,7 +45,7 @@ contains
 
     !> alpha_c of the linear law (overlap end) by bisection on the GSL peer's own
     !> no-rebound decision (rk8pd, tolerance 1e-14) against the library's
-    !> hertzdamp_alpha_c (bisection on rk45, width 1e-11): the 10 digits the README
+    !> hertzdamp_alpha_c (bisection on rk45, width 1e-11): the 10 digits doc/accuracy.md
     !> states (1.1279881355).  The GSL bracket is narrowed to 1e-10.
     subroutine critical_damping()
         real(wp) :: lo, hi, mid, ac, e, tau_c, z_max, tau_max
@@ -72,7 +72,7 @@ contains
         call s%check(abs(ac - 0.5_wp * (lo + hi)) <= 2.0e-10_wp, 'alpha_c = GSL rk8pd bisection to 2e-10 (10 digits)')
         if (abs(ac - 0.5_wp * (lo + hi)) > 2.0e-10_wp) print '(a,es24.16,a,2es24.16)', '     library ', ac, &
             ' GSL bracket ', lo, hi
-        call s%check(abs(ac - 1.1279881355_wp) <= 1.0e-10_wp, 'alpha_c = 1.1279881355 as the README states')
+        call s%check(abs(ac - 1.1279881355_wp) <= 1.0e-10_wp, 'alpha_c = 1.1279881355 as doc/accuracy.md states')
     end subroutine critical_damping
 
     !> Default-tolerance rk45 against rk8pd at 1e-14 on a grid of alpha; errors of e

@@ -118,7 +118,7 @@ contains
         call order(lab, nn(4:7), ee(4:7), et(4:7), 0.25_wp)
         ! stronger damping, every pair at e = 0.5 (within the bound) and e = 0.3 (the
         ! overlap end reaches 3.2/N^2 at N = 10 and 20 for every law: the bound fails
-        ! there, as the README says; asserted from N = 40 on).  At N = 10 and 20 instead:
+        ! there, as doc/scenes.md says; asserted from N = 40 on).  At N = 10 and 20 instead:
         ! the report is honest (a run passes exactly when its error is within the bound,
         ! see phases) and the errors converge, at least at order 2 - 0.6 from N = 10 to 40
         ! (second-order Verlet; not yet asymptotic there, measured 1.8 to 3.1, faster is fine)

@@ -11,6 +11,13 @@
  * of separation / u, measured when the overlap ends, over isolated binary collisions
  * only (no other contact of either bead meanwhile, impact speed not raised to vmin).
  * Counts since pair_style (or read_restart).
+ *
+ * Global array, one row per type pair I <= J (row (I-1) n - (I-1)(I-2)/2 + J - I + 1 of
+ * n types): what the rule's constants achieve in LAMMPS's integrator, from the library
+ * (hertzdamp_c_pair_stats, over the onset phase of a head-on collision):
+ *   1 I  2 J  3 target e  4 mean e  5 e spread (standard deviation / mean)
+ *   6 mean T_c / (N dt)  7 T_c spread (sd / mean)
+ * (zeros for fixed K D, or before the first run).  host lammps: 4 = 3 and 6 = 1.
  */
 #ifndef HERTZDAMP_COMPUTE_HERTZDAMP_STATS_H
 #define HERTZDAMP_COMPUTE_HERTZDAMP_STATS_H
@@ -26,6 +33,7 @@ class ComputeHertzdampStats : public LAMMPS_NS::Compute {
   ~ComputeHertzdampStats() override;
   void init() override {}
   void compute_vector() override;
+  void compute_array() override;
 };
 
 }    // namespace HertzdampLammps

@@ -87,7 +87,7 @@ FixHertzdampWall::FixHertzdampWall(LAMMPS *lmp, int narg, char **arg) : Fix(lmp,
   }
 
   vector_flag = 1;
-  size_vector = ContactBook::NSTATS;
+  size_vector = ContactBook::NSTATS + NHOSTSTATS;
   global_freq = 1;
   extvector = 0;
   maxexchange = NCOL;
@@ -120,8 +120,9 @@ void FixHertzdampWall::init()
   if (!atom->radius_flag || !atom->rmass_flag) fail_all(lmp, __FILE__, __LINE__, "fix hertzdamp/wall requires atom_style sphere");
   if (fm.any() && (!atom->omega_flag || !atom->torque_flag))
     fail_all(lmp, __FILE__, __LINE__, "fix hertzdamp/wall with friction requires atom_style sphere (omega, torque)");
-  rule.check_dt(lmp, CMD, update->dt);
-  logmesg(lmp, std::string("fix hertzdamp/wall ") + id + ": " + rule.describe() + ", " + fm.describe() + "\n");
+  pair_constants(lmp, rule, e, update->dt, std::string(CMD) + " " + id, pc);
+  logmesg(lmp, std::string("fix hertzdamp/wall ") + id + ": " + rule.describe() + ", " + fm.describe() +
+                   (rule.tcmode != TC_FIXED ? "; " + describe_constants(rule, pc) : std::string()) + "\n");
 }
 
 void FixHertzdampWall::setup(int vflag)
@@ -175,7 +176,7 @@ void FixHertzdampWall::contact(int i, int side, double ov, int setup)
     // onset: first step with overlap > 0 for an atom without wall history
     const double m = rmass[i];
     const double kphys = estar > 0.0 ? 4.0 / 3.0 * estar * sqrt(radius[i]) : 0.0;
-    const Onset o = contact_rule(lmp, rule, e, kphys, m, approach, dt);
+    const Onset o = contact_rule(lmp, rule, pc, kphys, m, approach, dt);
     s[0] = 1.0;
     f_phase = payload_onset(p, o, approach, m, ov, step, dt, rule.phase);
     book.onset(o, approach);
@@ -233,6 +234,7 @@ double FixHertzdampWall::compute_vector(int n)
 {
   if (cache_step != update->ntimestep) {
     book.vector(lmp, cache);
+    constants_stats(pc, cache + ContactBook::NSTATS);
     cache_step = update->ntimestep;
   }
   return cache[n];

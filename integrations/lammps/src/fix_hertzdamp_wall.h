@@ -4,7 +4,7 @@
  * same friction sub-models (contact_models.h).
  *
  * fix ID group hertzdamp/wall (steps N | tc T | fixed K D) e E [end overlap|force]
- *     [vmin V] [phase yes|no] [youngs Y poisson NU [wall_youngs YW wall_poisson NUW]]
+ *     [host lammps|none] [vmin V] [phase yes|no] [youngs Y poisson NU [wall_youngs YW wall_poisson NUW]]
  *     [tangential ...] [rolling ...] [twisting ...] [log FILE]
  *     (xplane|yplane|zplane) LO HI         (one wall per fix; LO or HI may be NULL)
  */
@@ -49,13 +49,14 @@ class FixHertzdampWall : public LAMMPS_NS::Fix {
   enum { SLOT = 1 + NPAYLOAD, NCOL = 2 * SLOT };    // per side: active flag + payload
   void contact(int i, int side, double ov, int setup);
   RuleSettings rule;
+  PairConstants pc;    // the rule's constants at this run's N (init)
   FrictionModel fm;
   double e = 0.0, estar = 0.0, gstar = 0.0;
   int axis = -1;
   int has_lo = 0, has_hi = 0;
   double lo = 0.0, hi = 0.0;
   double **wst = nullptr;
-  double cache[ContactBook::NSTATS];
+  double cache[ContactBook::NSTATS + NHOSTSTATS];
   LAMMPS_NS::bigint cache_step = -1;
 };
 

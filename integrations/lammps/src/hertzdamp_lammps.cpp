@@ -85,10 +85,9 @@ int RuleSettings::parse(LAMMPS *lmp, const char *cmd, int narg, char **arg, int 
                std::string(cmd) + ": steps N must be a whole number of time steps, not " + v);
     }
     nsteps = parse_number(lmp, cmd, "steps", v);
-    if (nsteps < MIN_STEPS)
-      fail_all(lmp, __FILE__, __LINE__,
-               std::string(cmd) + ": steps " + v + " is below " + fmt_g(MIN_STEPS) +
-                   ": LAMMPS's integrator does not reach the target e with fewer steps per contact");
+    // the fewest N that reach e depend on e (pair_coeff) and the scheme: checked at the
+    // run's start (pair_constants)
+    if (!(nsteps >= 1.0)) fail_all(lmp, __FILE__, __LINE__, std::string(cmd) + ": steps must be >= 1, not " + v);
     return 2;
   }
   if (key == "tc") {
@@ -135,6 +134,17 @@ int RuleSettings::parse(LAMMPS *lmp, const char *cmd, int narg, char **arg, int 
       fail_all(lmp, __FILE__, __LINE__, std::string(cmd) + ": phase must be yes or no");
     return 2;
   }
+  if (key == "host") {
+    need(1);
+    const std::string v = arg[iarg + 1];
+    if (v == "lammps")
+      host = HOST_LAMMPS_MODE;
+    else if (v == "none")
+      host = HOST_NONE_MODE;
+    else
+      fail_all(lmp, __FILE__, __LINE__, std::string(cmd) + ": host must be lammps or none, not '" + v + "'");
+    return 2;
+  }
   if (key == "log") {
     need(1);
     logfile = arg[iarg + 1];
@@ -149,15 +159,6 @@ void RuleSettings::check(LAMMPS *lmp, const char *cmd) const
     fail_all(lmp, __FILE__, __LINE__, std::string(cmd) + ": one of steps N, tc T or fixed K D is required");
 }
 
-void RuleSettings::check_dt(LAMMPS *lmp, const char *cmd, double dt) const
-{
-  if (tcmode == TC_TIME && tc < MIN_STEPS * dt)
-    fail_all(lmp, __FILE__, __LINE__,
-             std::string(cmd) + ": tc " + fmt_g(tc) + " is below " + fmt_g(MIN_STEPS) +
-                 " time steps of " + fmt_g(dt) +
-                 ": LAMMPS's integrator does not reach the target e with fewer steps per contact");
-}
-
 std::string RuleSettings::describe() const
 {
   std::string s;
@@ -170,12 +171,108 @@ std::string RuleSettings::describe() const
   s += std::string(", end ") + (end == HERTZDAMP_END_FORCE ? "force" : "overlap");
   s += ", vmin " + fmt_g(vmin);
   s += std::string(", phase correction ") + (phase ? "yes" : "no");
+  if (tcmode != TC_FIXED) s += std::string(", constants for host ") + scheme_name(pair_scheme());
   return s;
 }
 
 /* ---------------------------------------------------------------------- */
 
-Onset contact_rule(LAMMPS *lmp, const RuleSettings &rs, double e, double kphys, double m,
+const char *scheme_name(int scheme)
+{
+  switch (scheme) {
+    case HERTZDAMP_HOST_NONE: return "none (the continuous model)";
+    case HERTZDAMP_HOST_LAMMPS: return "lammps";
+    case HERTZDAMP_HOST_LAMMPS_PHASE: return "lammps-phase";
+    default: return "?";
+  }
+}
+
+namespace {
+std::string fmt_short(double x)
+{
+  char buf[40];
+  snprintf(buf, sizeof(buf), "%.6g", x);
+  return buf;
+}
+}    // namespace
+
+bool pair_constants(LAMMPS *lmp, const RuleSettings &rs, double e, double dt, const std::string &who,
+                    PairConstants &pc)
+{
+  if (rs.tcmode == TC_FIXED) return false;
+  const double n = rs.steps_per_contact(dt);
+  const int scheme = rs.pair_scheme();
+  if (pc.valid && pc.e == e && pc.steps == n && pc.end == rs.end && pc.scheme == scheme) return false;
+  pc.valid = false;
+  const std::string key = rs.tcmode == TC_STEPS
+      ? "steps " + fmt_short(n)
+      : "tc " + fmt_g(rs.tc) + " (" + fmt_short(n) + " time steps of " + fmt_g(dt) + ")";
+  // below the fewest N of LAMMPS's scheme no constants reach e; with host none the
+  // continuous constants would run anyway, so the same bound applies to them
+  int st = hertzdamp_c_pair_init(e, HERTZDAMP_DAMPING_LINEAR, rs.end, scheme, n, &pc.pair);
+  bool too_few = st == HERTZDAMP_HOST_UNREACHABLE || (st == HERTZDAMP_BAD_STEPS && n < 2.0);
+  int nmin = 0;
+  const int st_min = (too_few || (st == HERTZDAMP_OK && scheme == HERTZDAMP_HOST_NONE))
+      ? hertzdamp_c_host_min_steps(e, HERTZDAMP_DAMPING_LINEAR, rs.end, rs.run_scheme(), &nmin)
+      : HERTZDAMP_OK;
+  if (st_min == HERTZDAMP_OK && nmin > 0 && n < nmin) too_few = true;
+  if (too_few) {
+    std::string msg = who + ": " + key + ": N = " + fmt_short(n) + " steps cannot reach e = " + fmt_short(e) +
+        " with " + scheme_name(rs.run_scheme());
+    msg += st_min == HERTZDAMP_OK ? "; N >= " + std::to_string(nmin) + " can"
+                                  : std::string(" (") + hertzdamp_c_strerror(st_min) + ")";
+    fail_all(lmp, __FILE__, __LINE__, msg);
+  }
+  if (st != HERTZDAMP_OK)
+    fail_all(lmp, __FILE__, __LINE__,
+             who + ": e " + fmt_short(e) + ", " + key + ", host " + scheme_name(scheme) + ": " +
+                 hertzdamp_c_strerror(st) +
+                 (st == HERTZDAMP_BAD_STEPS ? " (host none takes any N; LAMMPS's own error is then below 1/N)" : ""));
+  // what LAMMPS achieves with them (zero when the library cannot tell, e.g. N > 1e5)
+  if (hertzdamp_c_pair_stats(&pc.pair, rs.run_scheme(), pc.stats) != HERTZDAMP_OK)
+    for (double &x : pc.stats) x = 0.0;
+  pc.e = e;
+  pc.steps = n;
+  pc.end = rs.end;
+  pc.scheme = scheme;
+  pc.valid = true;
+  // host none: say when LAMMPS's own error is beyond 1 % (the default host lammps removes it)
+  if (scheme == HERTZDAMP_HOST_NONE && pc.stats[0] > 0.0 && std::fabs(pc.stats[0] / e - 1.0) > 0.01 &&
+      lmp->comm->me == 0)
+    warn(lmp, __FILE__, __LINE__,
+         who + ": host none: with the continuous constants LAMMPS's integrator achieves e " +
+             fmt_short(pc.stats[0]) + " on average for e = " + fmt_short(e) + " at N = " + fmt_short(n) +
+             " (host lammps makes it exact)");
+  return true;
+}
+
+void constants_stats(const PairConstants &pc, double *out)
+{
+  const double *s = pc.stats;
+  const bool ok = pc.valid && s[0] > 0.0 && s[4] > 0.0;
+  out[0] = ok ? s[0] : 0.0;
+  out[1] = ok ? s[1] / s[0] : 0.0;
+  out[2] = ok ? s[4] : 0.0;
+  out[3] = ok ? s[5] / s[4] : 0.0;
+}
+
+std::string describe_constants(const RuleSettings &rs, const PairConstants &pc)
+{
+  if (!pc.valid) return "";
+  const double *s = pc.stats;
+  std::string t = "e " + fmt_short(pc.e) + ", host " + scheme_name(pc.scheme) + " at N = " + fmt_short(pc.steps);
+  if (s[0] <= 0.0) return t + " (achieved e not known at this N)";
+  auto pct = [](double x) { return fmt_short(100.0 * x) + " %"; };
+  t += std::string(": ") + scheme_name(rs.run_scheme()) + " achieves e mean " + fmt_short(s[0]) + " (" +
+       pct(s[0] / pc.e - 1.0) + "), spread " + pct(s[1] / s[0]) + " (" + fmt_short(s[2]) + " .. " +
+       fmt_short(s[3]) + "), T_c mean " + fmt_short(s[4]) + " N dt, spread " + pct(s[5] / s[4]) +
+       " over the onset phase";
+  return t;
+}
+
+/* ---------------------------------------------------------------------- */
+
+Onset contact_rule(LAMMPS *lmp, const RuleSettings &rs, const PairConstants &pc, double kphys, double m,
                    double u_raw, double dt)
 {
   Onset o;
@@ -191,16 +288,11 @@ Onset contact_rule(LAMMPS *lmp, const RuleSettings &rs, double e, double kphys, 
              "hertzdamp: contact onset with approach speed " + fmt_g(u_raw) +
                  " <= 0 (overlapping at creation, or grazing); set a speed floor with vmin V");
   const double tc = rs.contact_time(dt);
-  int st;
-  if (kphys > 0.0) {
-    st = hertzdamp_c_invert_bounded(e, tc, m, o.u_used, kphys, rs.end, &o.k, &o.d);
-    o.bounded = (st == HERTZDAMP_OK && o.k == kphys) ? 1 : 0;
-  } else {
-    st = hertzdamp_c_invert(e, tc, m, o.u_used, rs.end, &o.k, &o.d);
-  }
+  const int st = hertzdamp_c_pair_kd(&pc.pair, tc, m, o.u_used, kphys, &o.k, &o.d);
+  o.bounded = (kphys > 0.0 && st == HERTZDAMP_OK && o.k == kphys) ? 1 : 0;
   if (st != HERTZDAMP_OK)
     fail_one(lmp, __FILE__, __LINE__,
-             std::string("hertzdamp: the rule failed at a contact onset (e ") + fmt_g(e) + ", tc " +
+             std::string("hertzdamp: the rule failed at a contact onset (e ") + fmt_g(pc.e) + ", tc " +
                  fmt_g(tc) + ", m " + fmt_g(m) + ", u " + fmt_g(o.u_used) +
                  "): " + hertzdamp_c_strerror(st));
   return o;

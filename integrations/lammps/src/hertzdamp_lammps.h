@@ -42,11 +42,10 @@ void check_poisson(LAMMPS *lmp, const std::string &cmd, const char *keyword, dou
 
 enum TcMode { TC_STEPS, TC_TIME, TC_FIXED };
 
-// Fewest time steps per contact accepted (steps N, tc T).  Measured with
-// examples/in.binary (head-on, one onset phase): N = 3 gives e = 2.61 / 0.82 / 0.96 and
-// N = 4 gives 0.69 / 0.52 / 0.93 for targets 0.2 / 0.5 / 0.9; from N = 5 on e stays
-// within the integrator's first-order error (0.14-0.20 / 0.49-0.50 / 0.90-0.91).
-const double MIN_STEPS = 5.0;
+// Which constants the rule uses (keyword host): the host-exact ones of LAMMPS's own
+// integrator (default), or those of the continuous model (host none: k, d exact for the
+// ODE, LAMMPS's first-order error stays).
+enum HostMode { HOST_NONE_MODE, HOST_LAMMPS_MODE };
 
 struct RuleSettings {
   int tcmode = TC_STEPS;
@@ -56,6 +55,7 @@ struct RuleSettings {
   int end = HERTZDAMP_END_OVERLAP;
   double vmin = 0.0;         // floor of the impact speed used by the rule
   int phase = 1;             // 1: weight the damping force's jumps by the contact phase (see README)
+  int host = HOST_LAMMPS_MODE;    // host lammps|none
   std::string logfile;       // per-contact log ("" = none)
   int ntimes = 0;            // timing keywords given (steps, tc, fixed): exactly one
 
@@ -64,9 +64,13 @@ struct RuleSettings {
   int parse(LAMMPS *lmp, const char *cmd, int narg, char **arg, int iarg);
   // After the last keyword: stops the run when no timing keyword was given.
   void check(LAMMPS *lmp, const char *cmd) const;
-  // At a run's start: tc T must span at least MIN_STEPS time steps of dt.
-  void check_dt(LAMMPS *lmp, const char *cmd, double dt) const;
   double contact_time(double dt) const { return tcmode == TC_STEPS ? nsteps * dt : tc; }
+  // steps per contact N at time step dt (tc T: T/dt, need not be whole)
+  double steps_per_contact(double dt) const { return tcmode == TC_STEPS ? nsteps : tc / dt; }
+  // The scheme LAMMPS runs the contact with (fix nve/sphere, with or without the phase
+  // correction), and the one the constants are made exact for (none with host none).
+  int run_scheme() const { return phase ? HERTZDAMP_HOST_LAMMPS_PHASE : HERTZDAMP_HOST_LAMMPS; }
+  int pair_scheme() const { return host == HOST_NONE_MODE ? HERTZDAMP_HOST_NONE : run_scheme(); }
   std::string describe() const;
 };
 
@@ -77,10 +81,43 @@ struct Onset {
   int bounded;      // 1 if k = k_phys (physical stiffness bound active)
 };
 
-// k and d for restitution e at impact speed u_raw (relative normal approach speed)
-// with effective mass m.  kphys > 0: bound by the physical Hertz stiffness.
-// Errors (no solution, bad input) stop the run on this processor with a message.
-Onset contact_rule(LAMMPS *lmp, const RuleSettings &rs, double e, double kphys, double m,
+// Name of a HERTZDAMP_HOST_* scheme the plugin uses (as the CLI's --host names them).
+const char *scheme_name(int scheme);
+
+// The constants of one material pair (type pair, or the beads of a wall fix) at the
+// run's steps per contact: hertzdamp_c_pair_init once, hertzdamp_c_pair_kd per contact.
+// stats: what LAMMPS's integrator achieves with them over the onset phase
+// (hertzdamp_c_pair_stats with the run's scheme): e mean, sd, min, max, then T_c/(N dt)
+// mean, sd, min, max.
+struct PairConstants {
+  hertzdamp_pair_t pair;
+  double stats[8] = {0, 0, 0, 0, 0, 0, 0, 0};
+  // what they were made for: recomputed when one of these changes (a new time step with
+  // tc T, another e, settings read from a restart file)
+  double e = -1.0, steps = -1.0;
+  int end = -1, scheme = -1;
+  bool valid = false;
+};
+
+// Set pc for restitution e with the rule's settings at time step dt (unchanged when
+// already made for them).  N too small for the scheme (or, with host none, for any
+// constants in LAMMPS's scheme) and other failures stop the run with an error naming
+// the keyword, `who` and the fewest N that can (hertzdamp_c_host_min_steps).  Returns
+// true when the constants were (re)computed.
+bool pair_constants(LAMMPS *lmp, const RuleSettings &rs, double e, double dt, const std::string &who,
+                    PairConstants &pc);
+// One line on the constants and what they achieve (the setup log).
+std::string describe_constants(const RuleSettings &rs, const PairConstants &pc);
+// What the constants achieve, as the statistics report it: e mean, e spread (standard
+// deviation over the onset phase / mean), T_c mean / (N dt), T_c spread (sd / mean), as
+// the CLI's e_spread and tc_spread; zeros without constants (fixed K D).
+enum { NHOSTSTATS = 4 };
+void constants_stats(const PairConstants &pc, double *out);
+
+// k and d of the pair constants pc at impact speed u_raw (relative normal approach
+// speed) with effective mass m.  kphys > 0: bound by the physical Hertz stiffness.
+// Errors (bad input) stop the run on this processor with a message.
+Onset contact_rule(LAMMPS *lmp, const RuleSettings &rs, const PairConstants &pc, double kphys, double m,
                    double u_raw, double dt);
 
 // Contact phase correction.  The damping force jumps from 0 to d u at the onset

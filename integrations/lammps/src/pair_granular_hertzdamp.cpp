@@ -74,6 +74,7 @@ void PairGranularHertzdamp::allocate()
   memory->create(nu_i, n + 1, "pair:nu_i");
   memory->create(maxrad, n + 1, "pair:maxrad");
   fm.assign(static_cast<size_t>(n + 1) * (n + 1), FrictionModel());
+  pcs.assign(static_cast<size_t>(n + 1) * (n + 1), PairConstants());
   for (int i = 0; i <= n; i++) {
     y_i[i] = nu_i[i] = maxrad[i] = 0.0;
     for (int j = 0; j <= n; j++) {
@@ -96,7 +97,7 @@ void PairGranularHertzdamp::create_history_fix()
 
 /* ----------------------------------------------------------------------
    pair_style granular/hertzdamp (steps N | tc T | fixed K D) [end overlap|force]
-                                 [vmin V] [phase yes|no] [log FILE]
+                                 [host lammps|none] [vmin V] [phase yes|no] [log FILE]
 ------------------------------------------------------------------------- */
 
 void PairGranularHertzdamp::settings(int narg, char **arg)
@@ -188,7 +189,6 @@ void PairGranularHertzdamp::init_style()
     history_initialized = true;
   }
   create_history_fix();
-  rule.check_dt(lmp, CMD, update->dt);
 
   friction = false;
   for (const FrictionModel &f : fm) friction = friction || f.any();
@@ -253,18 +253,24 @@ double PairGranularHertzdamp::init_one(int i, int j)
   gstar_ij[j][i] = gstar_ij[i][j];
   fm[j * nt + i] = fm[i * nt + j];
   if (rule.tcmode != TC_FIXED) {
-    double alpha, tau;
-    const int st = hertzdamp_c_pair(e_ij[i][j], rule.end, &alpha, &tau);
-    if (st != HERTZDAMP_OK)
-      fail_all(lmp, __FILE__, __LINE__,
-               "granular/hertzdamp: e " + fmt_g(e_ij[i][j]) + " for types " + std::to_string(i) +
-                   " " + std::to_string(j) + ": " + hertzdamp_c_strerror(st));
-    logmesg(lmp, "granular/hertzdamp: types " + std::to_string(i) + " " + std::to_string(j) +
-                     ": e " + fmt_g(e_ij[i][j]) + ", alpha " + fmt_g(alpha) + ", tau_c " +
-                     fmt_g(tau) + (estar_ij[i][j] > 0 ? ", E* " + fmt_g(estar_ij[i][j]) : "") +
-                     ", " + fm[i * nt + j].describe() + "\n");
+    // the pair's constants at this run's N (once per type pair; again when e, N or the
+    // settings change: a new time step with tc T, read_restart)
+    const std::string ij = std::to_string(i) + " " + std::to_string(j);
+    PairConstants &pc = pcs[i * nt + j];
+    pair_constants(lmp, rule, e_ij[i][j], update->dt, std::string(CMD) + " (types " + ij + ")", pc);
+    pcs[j * nt + i] = pc;
+    logmesg(lmp, "granular/hertzdamp: types " + ij + ": " + describe_constants(rule, pc) +
+                     (estar_ij[i][j] > 0 ? ", E* " + fmt_g(estar_ij[i][j]) : "") + ", " +
+                     fm[i * nt + j].describe() + "\n");
   }
   return maxrad[i] + maxrad[j];
+}
+
+const PairConstants &PairGranularHertzdamp::constants(int i, int j) const
+{
+  static const PairConstants none = PairConstants();
+  const size_t k = static_cast<size_t>(i) * (atom->ntypes + 1) + j;
+  return k < pcs.size() ? pcs[k] : none;
 }
 
 /* ---------------------------------------------------------------------- */
@@ -368,7 +374,7 @@ void PairGranularHertzdamp::compute(int eflag, int vflag)
         const double m = mi * mj / (mi + mj);
         double kphys = 0.0;
         if (estar_ij[ti][tj] > 0.0) kphys = 4.0 / 3.0 * estar_ij[ti][tj] * sqrt(radi * radius[j] / radsum);
-        const Onset o = contact_rule(lmp, rule, e_ij[ti][tj], kphys, m, approach, dt);
+        const Onset o = contact_rule(lmp, rule, pcs[ti * nt + tj], kphys, m, approach, dt);
         c = new_contact();
         ci[jj] = c;
         p = &pool[static_cast<size_t>(c) * NPAYLOAD];
@@ -519,8 +525,10 @@ void PairGranularHertzdamp::unpack_reverse_comm(int n, int *list, double *buf)
 
 void PairGranularHertzdamp::write_restart_settings(FILE *fp)
 {
+  // phase and host in one number (phase + 2 host; files written before the host keyword
+  // have 0 or 1 there: host none, what those runs used)
   const double d[7] = {static_cast<double>(rule.tcmode), rule.nsteps, rule.tc, rule.kfix, rule.dfix,
-                       rule.vmin, static_cast<double>(rule.phase)};
+                       rule.vmin, static_cast<double>(rule.phase + 2 * rule.host)};
   const int end = rule.end, nlog = static_cast<int>(rule.logfile.size());
   fwrite(d, sizeof(double), 7, fp);
   fwrite(&end, sizeof(int), 1, fp);
@@ -553,7 +561,8 @@ void PairGranularHertzdamp::read_restart_settings(FILE *fp)
   rule.kfix = d[3];
   rule.dfix = d[4];
   rule.vmin = d[5];
-  rule.phase = static_cast<int>(d[6]);
+  rule.phase = static_cast<int>(d[6]) % 2;
+  rule.host = static_cast<int>(d[6]) / 2;
   rule.end = end;
   rule.ntimes = 1;
   // the log goes on in the same file (appended, with a header line of its own)

@@ -1,7 +1,8 @@
 /* -*- c++ -*-
  * pair_style granular/hertzdamp: Hertz contact with linear damping whose k and d
  * are set per contact, at its onset, by the adaptive collision time rule of the
- * hertzdamp core library (C API); optional friction (tangential, rolling, twisting
+ * hertzdamp core library (per-pair C API; by default with the constants that make
+ * LAMMPS's own integration of the contact exact on average: host lammps); optional friction (tangential, rolling, twisting
  * sub-models of pair_style granular, contact_models.h) with torques.
  */
 #ifndef HERTZDAMP_PAIR_GRANULAR_HERTZDAMP_H
@@ -42,6 +43,9 @@ class PairGranularHertzdamp : public LAMMPS_NS::Pair {
   void history_from_atoms(FixHertzdampHistory *fix);             // after the list is rebuilt (post_neighbor)
   void end_of_run(FixHertzdampHistory *fix);
 
+  // constants of type pair i j (valid after the run's init)
+  const PairConstants &constants(int i, int j) const;
+
   // pair contacts of local atom i in this step's force computation (isolation flag of walls)
   double contacts_of(int i) const { return i < static_cast<int>(npair.size()) ? npair[i] : 0.0; }
 
@@ -66,6 +70,7 @@ class PairGranularHertzdamp : public LAMMPS_NS::Pair {
   double *y_i = nullptr, *nu_i = nullptr;    // material given with pair_coeff I I (0: none)
   double *maxrad = nullptr;       // largest radius of each type (for the cutoff)
   std::vector<FrictionModel> fm;  // (ntypes+1)^2 friction sub-models
+  std::vector<PairConstants> pcs; // (ntypes+1)^2 constants of the rule (hertzdamp_c_pair_init)
   bool friction = false;          // any type pair with a tangential model
 
   // contacts: payload pool, indexed per neighbor-list entry

@@ -74,6 +74,14 @@ class CApi:
         self._inv.argtypes = [D, D, D, D, I, P, P]
         self._fwd = self.lib.hertzdamp_c_forward
         self._fwd.argtypes = [D, D, D, D, I, P, P]
+        self._pinit = self.lib.hertzdamp_c_pair_init
+        self._pinit.argtypes = [D, I, I, I, D, ctypes.POINTER(D * 8)]
+        self._pkd = self.lib.hertzdamp_c_pair_kd
+        self._pkd.argtypes = [ctypes.POINTER(D * 8), D, D, D, D, P, P]
+        self._pstats = self.lib.hertzdamp_c_pair_stats
+        self._pstats.argtypes = [ctypes.c_void_p, I, ctypes.c_void_p]
+        self._nmin = self.lib.hertzdamp_c_host_min_steps
+        self._nmin.argtypes = [D, I, I, I, ctypes.POINTER(I)]
 
     @staticmethod
     def _end(end):
@@ -85,6 +93,43 @@ class CApi:
         if st != 0:
             raise RuntimeError("invert status %d" % st)
         return k.value, d.value
+
+    # host schemes of include/hertzdamp.h that the plugin runs
+    HOSTS = {"none": 0, "lammps": 1, "lammps-phase": 5}
+
+    def pair_kd(self, e, end, host, steps, tc, m, u):
+        """k, d of one contact from the per-pair API (linear law, no bound): the
+        constants of (e, end, host, steps) (hertzdamp_c_pair_init), then
+        hertzdamp_c_pair_kd."""
+        pair = (ctypes.c_double * 8)()
+        st = self._pinit(e, 0, self._end(end), self.HOSTS[host], steps, ctypes.byref(pair))
+        if st != 0:
+            raise RuntimeError("pair_init status %d" % st)
+        k, d = ctypes.c_double(), ctypes.c_double()
+        st = self._pkd(ctypes.byref(pair), tc, m, u, 0.0, ctypes.byref(k), ctypes.byref(d))
+        if st != 0:
+            raise RuntimeError("pair_kd status %d" % st)
+        return k.value, d.value
+
+    def pair_stats(self, e, end, host, steps, run_host, valid=True):
+        """(status, stats[8]) of hertzdamp_c_pair_stats for the pair (e, end, host, steps)
+        run by run_host (valid=False: a pair never set; None: a NULL pair)."""
+        pair = (ctypes.c_double * 8)()
+        if valid:
+            st = self._pinit(e, 0, self._end(end), self.HOSTS[host], steps, ctypes.byref(pair))
+            if st != 0:
+                raise RuntimeError("pair_init status %d" % st)
+        stats = (ctypes.c_double * 8)(*([7.0] * 8))
+        st = self._pstats(None if valid is None else ctypes.byref(pair), self.HOSTS[run_host], ctypes.byref(stats))
+        return st, list(stats)
+
+    def min_steps(self, e, end, host):
+        """The fewest steps per contact with which `host` reaches e (linear law)."""
+        n = ctypes.c_int()
+        st = self._nmin(e, 0, self._end(end), self.HOSTS[host], ctypes.byref(n))
+        if st != 0:
+            raise RuntimeError("min_steps status %d" % st)
+        return n.value
 
     def forward(self, k, d, m, u, end):
         e, tc = ctypes.c_double(), ctypes.c_double()

@@ -1,5 +1,7 @@
 """Binary head-on collisions (pair_style granular/hertzdamp) and a bead against
-fix hertzdamp/wall, 2 atoms, 1 processor.
+fix hertzdamp/wall, 2 atoms, 1 processor, with `host none` (the continuous-model
+constants, whose k and d the C API's hertzdamp_c_invert gives; test_phases.py checks
+the default host lammps).
 
 - 1000 steps per contact, e in {0.9, 0.5, 0.2}, end overlap and force: e and T_c
   within 3e-3 (relative) of the targets;
@@ -37,7 +39,7 @@ def gap(phase):
 def run_binary(tmp, e, N, end, phase=0.3, correction="yes"):
     out = hdlmp.lmp(os.path.join(hdlmp.EXAMPLES, "in.binary"),
                     {"e": e, "N": N, "end": end, "u": U, "gap": repr(gap(phase)),
-                     "phase": correction, "log": "c.txt"}, tmp)
+                     "phase": correction, "host": "none", "log": "c.txt"}, tmp)
     res = [l for l in out.splitlines() if l.startswith("RESULT")][0].split()
     rows = hdlmp.read_log(os.path.join(tmp, "c.txt"))
     return rows, {"v1": float(res[2]), "v2": float(res[4]), "contacts": float(res[10]),
@@ -104,7 +106,7 @@ def run(c):
     # wall
     for end in ("overlap", "force"):
         out = hdlmp.lmp(os.path.join(hdlmp.EXAMPLES, "in.wall"),
-                        {"e": 0.5, "N": 1000, "end": end, "log": "w.txt"}, tmp)
+                        {"e": 0.5, "N": 1000, "end": end, "host": "none", "log": "w.txt"}, tmp)
         rows = hdlmp.read_log(os.path.join(tmp, "w.txt"))
         res = [l for l in out.splitlines() if l.startswith("RESULT")][0].split()
         if not c.check("wall %s one contact" % end, len(rows) == 1 and float(res[4]) == 1):
@@ -119,7 +121,7 @@ def run(c):
     # physical stiffness bound: E* = Y / (2 (1 - nu^2)), k_phys = 4/3 E* sqrt(R)
     y, nu, R = 1.0e8, 0.3, 1.0e-3
     out = hdlmp.lmp(os.path.join(hdlmp.EXAMPLES, "in.wall"),
-                    {"e": 0.5, "N": 1000, "end": "overlap", "youngs": y, "log": "w.txt"}, tmp)
+                    {"e": 0.5, "N": 1000, "end": "overlap", "youngs": y, "host": "none", "log": "w.txt"}, tmp)
     r = hdlmp.read_log(os.path.join(tmp, "w.txt"))[0]
     kphys = 4.0 / 3.0 * (y / (2 * (1 - nu * nu))) * math.sqrt(R)
     c.check("wall k_phys bound active", r["bounded"] == 1 and abs(r["k"] / kphys - 1) <= 1e-15,

@@ -1,9 +1,14 @@
 """Figures of the LAMMPS plugin, measured on the granular gas example
 (examples/in.gas: 2925 steel beads, 20 steps per contact, e = 0.5, overlap end).
 
-  python3 integrations/lammps/tools/figures.py [--steps S] [--repeats R]
+  python3 integrations/lammps/tools/figures.py [--steps S] [--repeats R] [--nphase P]
 
 writes integrations/lammps/results/:
+  phases.txt               head-on collisions at N = 20 (examples/in.phases, P evenly
+                           spaced onset phases, e = 0.2, 0.5, 0.9, overlap end): mean
+                           error and spread of e and T_c over the phase as LAMMPS
+                           achieves them, with host lammps / none and phase yes / no,
+                           next to what the plugin reports from the library
   e_vs_u.dat, e_vs_u.png   achieved e per contact against the impact speed, with
                            per-contact k and d (granular/hertzdamp steps 20) and with
                            the best single fixed (k, d) (granular/hertzdamp fixed K D),
@@ -12,7 +17,7 @@ writes integrations/lammps/results/:
   speed.txt                cost per time step of granular/hertzdamp against stock
                            pair_style granular hertz ... damping velocity with that
                            fixed (k, d): medians of R runs measured side by side
-  summary.txt              the numbers quoted in README.md
+  summary.txt              the numbers quoted in README.md (the gas also with host none)
 Run `make lammps` first.
 """
 import argparse
@@ -76,14 +81,18 @@ def main():
     ap = argparse.ArgumentParser()
     ap.add_argument("--steps", type=int, default=20000)
     ap.add_argument("--repeats", type=int, default=7)
+    ap.add_argument("--nphase", type=int, default=256)
     args = ap.parse_args()
     api = hdlmp.CApi()
     tmp = tempfile.mkdtemp(prefix="hd_lmp_fig_")
+    phase_table(tmp, args.nphase)
     base = {"n": 15, "steps": args.steps, "N": NSTEP, "e": E, "data": "start.data"}
     hdlmp.lmp(GAS, dict(base, mkdata=1), tmp)
 
     hdlmp.lmp(GAS, dict(base, usedata=1, log="adaptive.log", stats="a.stats"), tmp)
     ad = [r for r in hdlmp.read_log(os.path.join(tmp, "adaptive.log"))]
+    hdlmp.lmp(GAS, dict(base, usedata=1, host="none", log="none.log", stats="n.stats"), tmp)
+    an = [r for r in hdlmp.read_log(os.path.join(tmp, "none.log"))]
     m = ad[0]["m"]
     k, d, worst, fixed_cmd = best_fixed([r["u_in"] for r in ad], m)
     hdlmp.lmp(GAS, dict(base, usedata=1, rule="fixed", K=repr(k), D=repr(d), log="fixed.log",
@@ -113,7 +122,7 @@ def main():
         rms = math.sqrt(sum((x - E) ** 2 for x in es) / len(es))
         return statistics.median(es), es[len(es) // 10], es[9 * len(es) // 10], rms, len(es)
 
-    sa, sf = spread(ad), spread(fx)
+    sa, sn, sf = spread(ad), spread(an), spread(fx)
     gp = """set terminal pngcairo size 900,600
 set output '%s'
 set logscale x
@@ -149,10 +158,45 @@ plot '%s' index 0 u ($1==1?$2:NaN):4:5:6 with yerrorlines lw 2 title 'per-contac
         f.write("best fixed pair: k %.6e N/m^1.5, d %.6e kg/s, worst |e/%g - 1| %.4f over the speeds of the per-contact run "
                 "(hertzdamp %s)\n" % (k, d, E, worst, fixed_cmd))
         f.write("impact speeds: %.4g .. %.4g m/s\n" % (umin, umax))
-        for name, s in (("per-contact k, d", sa), ("fixed k, d", sf)):
+        for name, s in (("per-contact k, d", sa), ("  with host none", sn), ("fixed k, d", sf)):
             f.write("%-17s contacts %d, e median %.4f, 10%%..90%% %.4f..%.4f, rms(e - %.1f) %.4f\n" % ((name, s[4], s[0], s[1], s[2], E, s[3])))
         f.write("cost per step, median of %d: loop %.4f x stock, pair %.4f x stock\n" % (args.repeats, med(ratio), med(pratio)))
+        f.write(open(os.path.join(RESULTS, "phases.txt")).read())
     print(open(os.path.join(RESULTS, "summary.txt")).read())
+
+
+def phase_table(tmp, nphase):
+    """results/phases.txt: examples/in.phases (N = 20, overlap end) at nphase onset phases
+    per e: mean error and standard deviation over the phase of e and T_c, in LAMMPS and as
+    the plugin reports them (library phase statistics of the constants)."""
+    targets = (0.2, 0.5, 0.9)
+    lines = ["head-on, N = 20, overlap end, %d evenly spaced onset phases per e (examples/in.phases, "
+             "both LAMMPS versions give the same); errors in %% of the target, spreads (standard deviation "
+             "over the phase) in %% of the mean:" % nphase,
+             "| host | phase | e | mean e error | e sd | mean T_c error | T_c sd | reported: mean e error, e sd |",
+             "|---|---|---|---|---|---|---|---|"]
+    for host, phase in (("lammps", "yes"), ("lammps", "no"), ("none", "yes"), ("none", "no")):
+        out = hdlmp.lmp(os.path.join(hdlmp.EXAMPLES, "in.phases"),
+                        {"host": host, "phase": phase, "nphase": nphase, "log": "ph.txt", "wlog": "phw.txt"}, tmp)
+        rows = hdlmp.read_log(os.path.join(tmp, "ph.txt"))
+        pred = {}
+        for line in out.splitlines():
+            w = line.split()
+            if w and w[0] == "PREDICTED" and w[1] != "wall":
+                pred[targets[int(w[1]) - 1]] = [float(x) for x in w[3:7]]
+        for t, e in enumerate(targets, 1):
+            rr = [r for r in rows if 2 * nphase * (t - 1) < r["tag_i"] <= 2 * nphase * t]
+            es = [r["e"] / e for r in rr]
+            ts = [r["tc"] / (NSTEP * 1.0e-7) for r in rr]
+            p = pred[e]
+            # spreads relative to the mean (as the CLI's e_spread, tc_spread and the plugin report them)
+            lines.append("| %s | %s | %.1f | %+.3f %% | %.3f %% | %+.4f %% | %.3f %% | %+.3f %%, %.3f %% |" % (
+                host, phase, e, 100 * (statistics.mean(es) - 1), 100 * statistics.pstdev(es) / statistics.mean(es),
+                100 * (statistics.mean(ts) - 1), 100 * statistics.pstdev(ts) / statistics.mean(ts),
+                100 * (p[0] / e - 1), 100 * p[1]))
+    with open(os.path.join(RESULTS, "phases.txt"), "w") as f:
+        f.write("\n".join(lines) + "\n")
+    print("\n".join(lines))
 
 
 if __name__ == "__main__":

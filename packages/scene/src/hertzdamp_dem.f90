@@ -3,7 +3,8 @@
 !>
 !> - hertzdamp_dem_types: scene, material, wall, contact, result; limits; pair formulas
 !> - hertzdamp_dem_validate: hertzdamp_dem_check (values, representable magnitudes, layout)
-!> - hertzdamp_dem_rules: hertzdamp_dem_rule (k, d of one contact, every damping law),
+!> - hertzdamp_dem_rules: hertzdamp_dem_rule (k, d of one contact, every damping law), hertzdamp_dem_host_rule
+!>   (k, d from a host's per-pair constants),
 !>   hertzdamp_dem_select (auto), hertzdamp_dem_supports (the rules of a law)
 !> - hertzdamp_dem_checks: the checks of a run (values, bounds, outcomes) that the report prints
 !> - hertzdamp_dem_engine: the state type and the phases of a step; hertzdamp_dem_run, or
@@ -20,7 +21,7 @@ module hertzdamp_dem
                                     hertzdamp_dem_verlet_energy, hertzdamp_dem_ratio, hertzdamp_dem_checked, &
                                     hertzdamp_dem_min_resolved, HD_CHECK_PASS, HD_CHECK_FAIL, HD_CHECK_INFO, &
                                     HD_CHECK_GRAVITY
-    use hertzdamp_dem_rules, only: hertzdamp_dem_rule, hertzdamp_dem_select, hertzdamp_dem_targets, &
+    use hertzdamp_dem_rules, only: hertzdamp_dem_rule, hertzdamp_dem_host_rule, hertzdamp_dem_select, hertzdamp_dem_targets, &
                                    hertzdamp_dem_cost_order, hertzdamp_dem_supports
     use hertzdamp_dem_engine, only: hertzdamp_dem_state, hertzdamp_dem_run, hertzdamp_dem_start, &
                                     hertzdamp_dem_advance, hertzdamp_dem_finish, hertzdamp_dem_steps_done, &

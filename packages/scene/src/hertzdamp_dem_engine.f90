@@ -4,10 +4,21 @@
 !> - Spheres in 3-D (a 1-D column is a scene whose particles lie on one line),
 !>   plane walls, optional uniform gravity.  Tangential forces, friction and
 !>   rotation are out of scope: every force acts along the line of centres.
-!> - Time stepping: velocity Verlet at the scene's dt.  The damping force needs a
+!> - Time stepping (sc%scheme): by default (HD_HOST_VERLET) velocity Verlet at the scene's dt.  The damping force needs a
 !>   velocity at the new positions; the extrapolation v + dt a_n + dt/2 (a_n - a_(n-1))
 !>   is used (error O(dt^3); the plain v + dt a costs ten times more accuracy in e
 !>   for strongly damped contacts, though both are second order).
+!> - Host schemes (sc%scheme, doc/host-schemes.md section 2, one step each, a = g + F/m):
+!>   HD_HOST_LAMMPS v_h = v + dt/2 a; x += dt v_h; F(x, v_h); v = v_h + dt/2 a_new;
+!>   HD_HOST_MFIX_EULER v += dt a; x += dt v; F(x, v);  HD_HOST_MFIX_AB2 v_new = v +
+!>   dt (3 a - a_old)/2; x += dt (v + v_new)/2; F(x, v_new) -- without the onset and end
+!>   corrections below.  A contact ends at the first step without overlap (its instant
+!>   interpolated linearly in the overlap) or, force end, at the first step whose force
+!>   is not positive (interpolated linearly in the force; no force from then on); its
+!>   separation speed is the velocity once no contact force acts (mfix-ab2: after the
+!>   step that still applies the last contact acceleration through a_old).  With
+!>   sc%host /= HD_HOST_NONE every contact gets k and d from the per-pair constants
+!>   of that host (hertzdamp_pair_init at N = steps_per_contact, hertzdamp_pair_kd).
 !> - At each contact onset (pair or sphere-wall) the contact gets its own k and d
 !>   from the inverse rule for its effective mass m and impact normal velocity u_in,
 !>   bounded by the material pair's physical Hertz stiffness
@@ -73,16 +84,20 @@
 !> back as a status (hertzdamp_status codes) and a message.
 module hertzdamp_dem_engine
     use hertzdamp_kinds, only: hertzdamp_rk
-    use hertzdamp_status, only: HD_OK, HD_OUT_OF_RANGE, hertzdamp_message
+    use hertzdamp_status, only: HD_OK, HD_OUT_OF_RANGE, HD_HOST_UNREACHABLE, hertzdamp_message
     use hertzdamp_ends, only: HD_END_FORCE
+    use hertzdamp_host, only: HD_HOST_NONE, HD_HOST_LAMMPS, HD_HOST_MFIX_EULER, HD_HOST_MFIX_AB2, HD_HOST_VERLET, &
+                              hertzdamp_host_name, hertzdamp_host_min_steps, hertzdamp_host_stats
+    use hertzdamp_pair, only: hertzdamp_pair_t, hertzdamp_pair_init
     use hertzdamp_laws, only: hertzdamp_law_q
     use hertzdamp_materials, only: hertzdamp_sphere_mass, hertzdamp_effective_mass, hertzdamp_effective_radius, &
                                    hertzdamp_effective_modulus, hertzdamp_hertz_stiffness
     use hertzdamp_dem_types, only: hertzdamp_dem_scene, hertzdamp_dem_contact, hertzdamp_dem_result, &
                                    hertzdamp_dem_pair_e, hertzdamp_dem_nsteps, hertzdamp_dem_trace_size, hertzdamp_dem_u_floor, &
-                                   HD_CONTACT_ACTIVE, HD_CONTACT_RELEASED, HD_CONTACT_CLOSED
-    use hertzdamp_dem_rules, only: hertzdamp_dem_rule
+                                   hertzdamp_dem_pairs_met, HD_CONTACT_ACTIVE, HD_CONTACT_RELEASED, HD_CONTACT_CLOSED
+    use hertzdamp_dem_rules, only: hertzdamp_dem_rule, hertzdamp_dem_host_rule
     use hertzdamp_dem_types, only: int_text => hertzdamp_dem_int_text
+    use hertzdamp_apps_text, only: fmt_short
     implicit none
     private
 
@@ -106,6 +121,9 @@ module hertzdamp_dem_engine
         real(wp), allocatable :: rad(:)          ! particle radii [m]
         real(wp), allocatable :: estar(:, :)     ! E* of each material pair [Pa]
         real(wp), allocatable :: e_pair(:, :)    ! target e of each material pair
+        integer :: scheme = HD_HOST_VERLET       ! HD_HOST_* time integrator of the contacts
+        logical :: host_rule = .false.           ! k, d from the per-pair constants of sc%host
+        type(hertzdamp_pair_t), allocatable :: pair(:, :)  ! per-pair constants of each material pair (host_rule)
         ! kinematics: x, v, acc at the step points; the rest inside one step
         real(wp), allocatable :: x(:, :)         ! positions [m]
         real(wp), allocatable :: v(:, :)         ! velocities [m s^-1]
@@ -192,6 +210,8 @@ contains
         st%tol = tol
         st%dt = sc%dt
         st%tc_wanted = sc%steps_per_contact * sc%dt
+        st%scheme = sc%scheme
+        st%host_rule = sc%host /= HD_HOST_NONE
         st%nsteps = hertzdamp_dem_nsteps(sc)
         st%step = 0
         if (sc%gravity) st%g = sc%g
@@ -213,6 +233,7 @@ contains
                 st%e_pair(i, j) = hertzdamp_dem_pair_e(sc%mat(i), sc%mat(j))
             end do
         end do
+        if (st%host_rule) call host_pairs(sc, st, res)
         st%rad = sc%radius
         st%rmax = maxval(st%rad)
         call hertzdamp_sphere_mass(st%rad, sc%mat(sc%pmat)%density, st%mass, status)
@@ -327,9 +348,24 @@ contains
         dt = st%dt
         st%x_start = st%x
         st%v_start = st%v
-        st%v_half = st%v + 0.5_wp * dt * st%acc
-        st%x = st%x + dt * st%v_half
-        st%v_pred = st%v_half + 0.5_wp * dt * st%acc + 0.5_wp * dt * (st%acc - st%acc_prev)
+        select case (st%scheme)
+        case (HD_HOST_LAMMPS)
+            st%v_half = st%v + 0.5_wp * dt * st%acc
+            st%x = st%x + dt * st%v_half
+            st%v_pred = st%v_half
+        case (HD_HOST_MFIX_EULER)
+            st%v_half = st%v + dt * st%acc
+            st%x = st%x + dt * st%v_half
+            st%v_pred = st%v_half
+        case (HD_HOST_MFIX_AB2)
+            st%v_half = st%v + 0.5_wp * dt * (3.0_wp * st%acc - st%acc_prev)
+            st%x = st%x + 0.5_wp * dt * (st%v + st%v_half)
+            st%v_pred = st%v_half
+        case default
+            st%v_half = st%v + 0.5_wp * dt * st%acc
+            st%x = st%x + dt * st%v_half
+            st%v_pred = st%v_half + 0.5_wp * dt * st%acc + 0.5_wp * dt * (st%acc - st%acc_prev)
+        end select
         st%force = 0.0_wp
         st%dv = 0.0_wp
         st%ncontact = 0
@@ -366,6 +402,22 @@ contains
                     kk = kk + 1
                     cycle
                 end if
+                if (st%scheme /= HD_HOST_VERLET) then
+                    ! a host scheme: no impulse corrections; the end instants interpolated
+                    ! linearly in the overlap or in the force between the last two steps
+                    if (zeta <= 0.0_wp) then
+                        call mark_ended(st, ct, c, t + overlap_fraction(ct%zeta_last, zeta, 0.0_wp) * dt, &
+                                        HD_CONTACT_CLOSED)
+                        call close_contact(st, res, kk)
+                        cycle
+                    end if
+                    fn = ct%k * zeta * sqrt(zeta) + ct%d * law_power(zeta, st%q) * zdot
+                    if (sc%iend == HD_END_FORCE .and. fn <= 0.0_wp) then
+                        call mark_ended(st, ct, c, t + ct%f_last / (ct%f_last - fn) * dt, HD_CONTACT_RELEASED)
+                        kk = kk + 1
+                        cycle
+                    end if
+                end if
                 if (zeta <= 0.0_wp .and. sc%iend == HD_END_FORCE .and. ct%d * zdot < 0.0_wp) then
                     ! force end, and the step jumped over the force zero and the overlap
                     ! zero: the contact ended at the force zero, before the overlap zero
@@ -391,9 +443,7 @@ contains
                     ! the damping force -d (us s)^q us, s the time left to the end
                     if (st%q > 0.0_wp) call add_impulse(st, ct%i, ct%j, trapezoid_error(st%q, phi) * ct%d &
                                                         * us * law_power(us, st%q) * dt * law_power(dt, st%q), ct%n_last)
-                    ct%t_end = t + phi * dt
-                    ct%state = HD_CONTACT_CLOSED
-                    call push(st%ended, st%nended, c)
+                    call mark_ended(st, ct, c, t + phi * dt, HD_CONTACT_CLOSED)
                     call close_contact(st, res, kk)
                     cycle
                 end if
@@ -468,10 +518,20 @@ contains
         integer, intent(in) :: c, new_state
         real(wp), intent(in) :: phi, t
         call add_impulse(st, ct%i, ct%j, ct%f_last * (phi - 1.0_wp) * 0.5_wp * st%dt, ct%n_last)
-        ct%t_end = t + phi * st%dt
+        call mark_ended(st, ct, c, t + phi * st%dt, new_state)
+    end subroutine end_at_force_zero
+
+    !> Contact c ended at t_end: it goes to new_state and into the list of contacts ended
+    !> in the step (their separation speeds are taken by the closing kick).
+    pure subroutine mark_ended(st, ct, c, t_end, new_state)
+        type(hertzdamp_dem_state), intent(inout) :: st
+        type(hertzdamp_dem_contact), intent(inout) :: ct
+        integer, intent(in) :: c, new_state
+        real(wp), intent(in) :: t_end
+        ct%t_end = t_end
         ct%state = new_state
         call push(st%ended, st%nended, c)
-    end subroutine end_at_force_zero
+    end subroutine mark_ended
 
     !> New contacts of particles with walls.
     pure subroutine wall_onsets(sc, st, res, t)
@@ -547,15 +607,33 @@ contains
         type(hertzdamp_dem_result), intent(inout) :: res
         real(wp), intent(in) :: t
         integer :: i, kk
-        real(wp) :: lag
+        real(wp) :: lag, ahead
+        real(wp), allocatable :: vf(:, :)
         st%acc_prev = st%acc
         do i = 1, st%n
             st%acc(:, i) = st%g + st%force(:, i) / st%mass(i)
         end do
-        st%v = st%v_half + 0.5_wp * st%dt * st%acc + st%dv
+        select case (st%scheme)
+        case (HD_HOST_MFIX_EULER, HD_HOST_MFIX_AB2)
+            st%v = st%v_half   ! the kick of this step's force comes with the next drift
+        case (HD_HOST_LAMMPS)
+            st%v = st%v_half + 0.5_wp * st%dt * st%acc
+        case default
+            st%v = st%v_half + 0.5_wp * st%dt * st%acc + st%dv
+        end select
+        if (st%nended == 0) return
+        ! the velocities once no force of the ended contacts acts any more (mfix-ab2: after
+        ! the next step's kick, which still has the last contact acceleration in a_old),
+        ! and from when
+        ahead = 0.0_wp
+        vf = st%v
+        if (st%scheme == HD_HOST_MFIX_AB2) then
+            ahead = st%dt
+            vf = st%v + 0.5_wp * st%dt * (3.0_wp * st%acc - st%acc_prev)
+        end if
         do kk = 1, st%nended
-            associate (ct => res%contacts(st%ended(kk)), v => st%v, a => st%acc)
-                lag = t + st%dt - ct%t_end   ! from the end instant to the end of the step [s]
+            associate (ct => res%contacts(st%ended(kk)), v => vf, a => st%acc)
+                lag = t + st%dt + ahead - ct%t_end   ! from the end instant to when v holds [s]
                 if (ct%j > 0) then
                     ct%u_out = dot_product(v(:, ct%j) - lag * a(:, ct%j) - v(:, ct%i) + lag * a(:, ct%i), ct%n_last)
                 else
@@ -659,9 +737,16 @@ contains
         ct%u_in = u
         ct%u_rule = max(u, sc%rest_speed, hertzdamp_dem_u_floor)
         ct%e_target = st%e_pair(sc%pmat(i), mb)
-        if (status == HD_OK) call hertzdamp_dem_rule(ct%e_target, st%tc_wanted, ct%m, ct%u_rule, ct%k_phys, sc%iend, &
-                                                     sc%law, st%method, sc%want_duration, st%tol, ct%k, ct%d, &
-                                                     ct%tc_target, ct%bound_active, status)
+        if (status == HD_OK) then
+            if (st%host_rule) then
+                call hertzdamp_dem_host_rule(st%pair(sc%pmat(i), mb), st%tc_wanted, ct%m, ct%u_rule, ct%k_phys, ct%k, &
+                                             ct%d, ct%tc_target, ct%bound_active, status)
+            else
+                call hertzdamp_dem_rule(ct%e_target, st%tc_wanted, ct%m, ct%u_rule, ct%k_phys, sc%iend, sc%law, &
+                                        st%method, sc%want_duration, st%tol, ct%k, ct%d, ct%tc_target, &
+                                        ct%bound_active, status)
+            end if
+        end if
         if (status /= HD_OK) then
             res%status = status
             res%message = contact_name(i, j) // ' at t = ' // real_text(t + before * dt) // ': ' // hertzdamp_message(status)
@@ -677,10 +762,12 @@ contains
         ! force for 2/5 in_contact dt; the closing kick gives both dt/2.  Then the
         ! error of the trapezoidal impulse of the later steps, which depends on
         ! in_contact: Hertz and, for q > 0, damping d (u s)^q u (trapezoid_error).
-        call add_impulse(st, i, j, (fd * (in_contact / (1.0_wp + st%q) - 0.5_wp) + fh * (0.4_wp * in_contact - 0.5_wp)) &
-                         * dt - start_error(in_contact) * ct%k * max(u, 0.0_wp)**1.5_wp * dt**2.5_wp, nv)
-        if (st%q > 0.0_wp) call add_impulse(st, i, j, -trapezoid_error(st%q, in_contact) * ct%d * max(u, 0.0_wp) &
-                                            * law_power(max(u, 0.0_wp), st%q) * dt * law_power(dt, st%q), nv)
+        if (st%scheme == HD_HOST_VERLET) then
+            call add_impulse(st, i, j, (fd * (in_contact / (1.0_wp + st%q) - 0.5_wp) + fh * (0.4_wp * in_contact &
+                             - 0.5_wp)) * dt - start_error(in_contact) * ct%k * max(u, 0.0_wp)**1.5_wp * dt**2.5_wp, nv)
+            if (st%q > 0.0_wp) call add_impulse(st, i, j, -trapezoid_error(st%q, in_contact) * ct%d * max(u, 0.0_wp) &
+                                                * law_power(max(u, 0.0_wp), st%q) * dt * law_power(dt, st%q), nv)
+        end if
         call apply_force(st, i, j, fn, nv)
         st%epot = st%epot + 0.4_wp * ct%k * z**2 * sqrt(z)
         ct%f_last = fn
@@ -695,6 +782,45 @@ contains
             st%wall_contact(i, -j) = res%ncontacts
         end if
     end subroutine start_contact
+
+    !> The per-pair constants of sc%host for every material pair that can meet
+    !> (hertzdamp_pair_init at N = steps_per_contact); a failure ends the run before its
+    !> start with a message naming the pair (and, when N is too small, the N that can).
+    pure subroutine host_pairs(sc, st, res)
+        type(hertzdamp_dem_scene), intent(in) :: sc
+        type(hertzdamp_dem_state), intent(inout) :: st
+        type(hertzdamp_dem_result), intent(inout) :: res
+        logical, allocatable :: met(:, :)
+        integer :: a, b, status, nmin, st_min
+        type(hertzdamp_host_stats) :: stats
+        call hertzdamp_dem_pairs_met(sc, met)
+        allocate (st%pair(size(sc%mat), size(sc%mat)))
+        do a = 1, size(sc%mat)
+            do b = a, size(sc%mat)
+                if (.not. met(a, b)) cycle
+                call hertzdamp_pair_init(st%e_pair(a, b), sc%law, sc%iend, sc%host, real(sc%steps_per_contact, wp), &
+                                         st%pair(a, b), status, stats)
+                st%pair(b, a) = st%pair(a, b)
+                if (status == HD_OK) then
+                    res%host_e_dev = max(res%host_e_dev, (stats%e_max - stats%e_mean) / stats%e_mean, &
+                                         (stats%e_mean - stats%e_min) / stats%e_mean)
+                    res%host_tc_dev = max(res%host_tc_dev, (stats%tau_max - stats%tau_mean) / stats%tau_mean, &
+                                          (stats%tau_mean - stats%tau_min) / stats%tau_mean)
+                end if
+                if (status == HD_OK .or. res%status /= HD_OK) cycle
+                res%status = status
+                res%message = 'material pair ' // trim(sc%mat(a)%name) // ' - ' // trim(sc%mat(b)%name) // &
+                              ', host ' // hertzdamp_host_name(sc%host) // ': ' // hertzdamp_message(status)
+                if (status /= HD_HOST_UNREACHABLE) cycle
+                call hertzdamp_host_min_steps(st%e_pair(a, b), sc%law, sc%iend, sc%host, nmin, st_min)
+                if (st_min /= HD_OK) cycle
+                res%message = 'material pair ' // trim(sc%mat(a)%name) // ' - ' // trim(sc%mat(b)%name) // ': N = ' // &
+                              int_text(sc%steps_per_contact) // ' steps cannot reach e = ' // &
+                              fmt_short(st%e_pair(a, b)) // ' with ' // hertzdamp_host_name(sc%host) // '; N >= ' // &
+                              int_text(nmin) // ' can'
+            end do
+        end do
+    end subroutine host_pairs
 
     !> Normal used at onset when the centres coincide at the end of the step: the
     !> direction between the centres at the start of the step, else +x.

@@ -4,12 +4,11 @@ module hertzdamp_dem_rules
     use hertzdamp_kinds, only: hertzdamp_rk
     use hertzdamp_status, only: HD_OK, HD_NO_REBOUND
     use hertzdamp_laws, only: HD_DAMPING_LINEAR
-    use hertzdamp_scaling, only: hertzdamp_expand, hertzdamp_reduce
     use hertzdamp_rk45, only: hertzdamp_collision, hertzdamp_rk45_collide
     use hertzdamp_methods, only: HD_METHOD_SERIES, HD_METHOD_PADE, HD_METHOD_COMPACT, HD_METHOD_FIT, &
                                  HD_METHOD_ITERATIVE, HD_METHOD_FIRST_ORDER
     use hertzdamp_inverse, only: hertzdamp_invert_alpha, hertzdamp_invert_options
-    use hertzdamp_pair, only: hertzdamp_invert
+    use hertzdamp_pair, only: hertzdamp_invert, hertzdamp_pair_t, hertzdamp_pair_kd
     use hertzdamp_dem_types, only: hertzdamp_dem_scene, hertzdamp_dem_pairs_met, hertzdamp_dem_pair_e
     implicit none
     private
@@ -22,7 +21,7 @@ module hertzdamp_dem_rules
     integer, parameter, public :: hertzdamp_dem_cost_order(6) = [HD_METHOD_FIRST_ORDER, HD_METHOD_COMPACT, &
         HD_METHOD_SERIES, HD_METHOD_PADE, HD_METHOD_FIT, HD_METHOD_ITERATIVE]
 
-    public :: hertzdamp_dem_rule, hertzdamp_dem_select, hertzdamp_dem_targets, hertzdamp_dem_supports
+    public :: hertzdamp_dem_rule, hertzdamp_dem_host_rule, hertzdamp_dem_select, hertzdamp_dem_targets, hertzdamp_dem_supports
 
 contains
 
@@ -46,40 +45,41 @@ contains
         real(wp), intent(out) :: tc_expected    !! contact time the parameters give [s]
         logical, intent(out) :: bound           !! k = kp
         integer, intent(out) :: status          !! HD_OK or the rule's failure
-        real(wp) :: alpha, tau, ts, kk, dd
-        k = 0.0_wp
-        d = 0.0_wp
+        real(wp) :: alpha, tau, ts
+        ! restitution only: k = kp, which the per-pair API's bound gives for a target
+        ! contact time below any physical one (the bound applies for every m, u, kp the
+        ! engine accepts); k, d, t* and the bound are computed there only
+        call hertzdamp_invert(e, merge(tc, tiny(1.0_wp), want_duration), m, u, iend, k, d, status, alpha=alpha, &
+                              tau_c=tau, tstar=ts, bound_active=bound, k_phys=kp, law=law, &
+                              options=hertzdamp_invert_options(method=method, tol=tol))   ! (tol: iterative rule)
         tc_expected = 0.0_wp
-        bound = .false.
-        status = HD_OK
-        if (want_duration) then
-            ! (tol matters to the iterative rule only)
-            call hertzdamp_invert(e, tc, m, u, iend, k, d, status, alpha=alpha, tau_c=tau, &
-                                  bound_active=bound, k_phys=kp, law=law, &
-                                  options=hertzdamp_invert_options(method=method, tol=tol))
-            if (status /= HD_OK) return
-            tc_expected = tc
-        else
-            ! restitution only: the pair constants, then k = kp
-            call hertzdamp_invert_alpha(e, iend, alpha, tau, status, method=method, tol=tol, law=law)
-            if (status /= HD_OK) return
-            bound = .true.
-        end if
-        if (bound) then
-            ! physical stiffness: t* of kp (the reduction), then d = alpha m t*^-1 (u t*)^-q
-            ! (= alpha m^((3-2q)/5) kp^((2+2q)/5) u^((1-4q)/5): linear alpha m^(3/5) kp^(2/5) u^(1/5),
-            ! tsuji alpha sqrt(m kp)) from the same expansion the inverse uses
-            call hertzdamp_reduce(kp, 0.0_wp, m, u, dd, ts, status)
-            if (status == HD_OK) call hertzdamp_expand(alpha, ts, m, u, kk, d, status, law=law)
-            k = kp
-            tc_expected = ts * tau
-            if (status /= HD_OK) then
-                k = 0.0_wp
-                d = 0.0_wp
-                tc_expected = 0.0_wp
-            end if
-        end if
+        if (status /= HD_OK) return
+        tc_expected = tc
+        if (bound) tc_expected = ts * tau
     end subroutine hertzdamp_dem_rule
+
+    !> The contact rule of a host scheme: k and d of one contact from the per-pair
+    !> constants of the host (hertzdamp_pair_init at the scene's N), the contact time
+    !> tc = N dt, effective mass m, impact velocity u and the bound kp (hertzdamp_pair_kd).
+    !> tc_expected: tc, or t*(kp) tau_N when the bound applies.
+    pure elemental subroutine hertzdamp_dem_host_rule(pair, tc, m, u, kp, k, d, tc_expected, bound, status)
+        type(hertzdamp_pair_t), intent(in) :: pair   !! constants of the material pair
+        real(wp), intent(in) :: tc              !! wanted contact time N dt [s]
+        real(wp), intent(in) :: m               !! effective mass [kg]
+        real(wp), intent(in) :: u               !! impact velocity [m s^-1]
+        real(wp), intent(in) :: kp              !! physical stiffness [N m^-3/2]
+        real(wp), intent(out) :: k              !! stiffness [N m^-3/2]
+        real(wp), intent(out) :: d              !! damping [kg s^-1 m^-q]
+        real(wp), intent(out) :: tc_expected    !! contact time the parameters give [s]
+        logical, intent(out) :: bound           !! k = kp
+        integer, intent(out) :: status          !! HD_OK or the failure
+        real(wp) :: ts
+        call hertzdamp_pair_kd(pair, tc, m, u, k, d, status, k_phys=kp, bound_active=bound, tstar=ts)
+        tc_expected = 0.0_wp
+        if (status /= HD_OK) return
+        tc_expected = tc
+        if (bound) tc_expected = ts * pair%tau_c
+    end subroutine hertzdamp_dem_host_rule
 
     !> True when the library provides the contact rule `method` for the damping law:
     !> fit, iterative and first-order (with the law's e1) for every law; compact,

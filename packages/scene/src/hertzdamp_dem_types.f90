@@ -9,6 +9,7 @@ module hertzdamp_dem_types
     use hertzdamp_ends, only: HD_END_OVERLAP
     use hertzdamp_laws, only: HD_DAMPING_LINEAR
     use hertzdamp_methods, only: HD_METHOD_FIT
+    use hertzdamp_host, only: HD_HOST_NONE, HD_HOST_VERLET
     implicit none
     private
 
@@ -69,6 +70,8 @@ module hertzdamp_dem_types
         real(wp) :: domain_hi(3) = 0.0_wp       !! box upper corner [m]
         real(wp) :: rest_speed = 1.0e-3_wp      !! at rest when every speed is below; slowest impact given to the rule [m s^-1]
         integer :: samples = 1000               !! trace samples kept (for plots)
+        integer :: host = HD_HOST_NONE          !! HD_HOST_* whose per-pair constants give k, d (none: the rule of the method)
+        integer :: scheme = HD_HOST_VERLET      !! HD_HOST_* time integrator of the contacts (verlet: the engine's own)
         type(hertzdamp_dem_material), allocatable :: mat(:)  !! materials
         integer, allocatable :: pmat(:)         !! material of each particle
         real(wp), allocatable :: radius(:)      !! radius of each particle [m]
@@ -111,6 +114,8 @@ module hertzdamp_dem_types
         integer :: status = HD_OK               !! HD_OK or the failure
         character(len=:), allocatable :: message !! what failed (empty on success)
         integer :: method = HD_METHOD_FIT       !! contact rule used
+        real(wp) :: host_e_dev = 0.0_wp         !! host constants: largest |e(phi)/e - 1| over the onset phase and pairs
+        real(wp) :: host_tc_dev = 0.0_wp        !! host constants: largest |T_c(phi)/T_c - 1| over the phase and pairs
         integer :: steps = 0                    !! time steps taken
         integer :: ncontacts = 0                !! contacts started
         type(hertzdamp_dem_contact), allocatable :: contacts(:) !! every contact, in order of onset

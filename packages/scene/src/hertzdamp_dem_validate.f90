@@ -25,6 +25,8 @@ module hertzdamp_dem_validate
     use hertzdamp_constants, only: hertzdamp_tau_c0, hertzdamp_pi
     use hertzdamp_inverse, only: hertzdamp_invert_alpha
     use hertzdamp_laws, only: hertzdamp_law_status, hertzdamp_law_name
+    use hertzdamp_host, only: HD_HOST_NONE, HD_HOST_LAMMPS, HD_HOST_MFIX_EULER, HD_HOST_MFIX_AB2, HD_HOST_VERLET, &
+                              hertzdamp_host_name
     use hertzdamp_fit_laws, only: hertzdamp_fit_law_e_min
     use hertzdamp_materials, only: hertzdamp_sphere_mass, hertzdamp_effective_mass, hertzdamp_effective_radius, &
                                    hertzdamp_effective_modulus
@@ -182,6 +184,13 @@ contains
         n = size(sc%radius)
         if (hertzdamp_law_status(sc%law) /= HD_OK) then
             message = '&scene: damping must be ''linear'', ''tsuji'' or ''kuwabara-kono'''
+        else if (.not. any(sc%scheme == [HD_HOST_LAMMPS, HD_HOST_MFIX_EULER, HD_HOST_MFIX_AB2, HD_HOST_VERLET])) then
+            message = 'scheme: the engine integrates with lammps, mfix-euler, mfix-ab2 or verlet (HD_HOST_*), not ' // &
+                      hertzdamp_host_name(sc%scheme)
+        else if (.not. any(sc%host == [HD_HOST_NONE, HD_HOST_LAMMPS, HD_HOST_MFIX_EULER, HD_HOST_MFIX_AB2, &
+                                       HD_HOST_VERLET])) then
+            message = 'host: the per-pair constants of none, lammps, mfix-euler, mfix-ab2 or verlet (HD_HOST_*), not ' // &
+                      hertzdamp_host_name(sc%host)
         else if (.not. (sc%dt > 0.0_wp)) then
             message = '&scene: dt must be positive'
         else if (.not. (sc%end_time > 0.0_wp)) then

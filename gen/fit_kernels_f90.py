@@ -447,17 +447,21 @@ def kd_formula():
 
 
 def fused_procedure(kernel, degs):
-    """Inverse kernel fused with the kd formula block: one loop e, T_c, m, u
-    -> alpha, tau_c, status, k, d, flags (the body of inverse_body, then the call of
-    direct_flags and direct_kd as in hertzdamp_pair's contacts_kd: the same operations and
-    bits as the kernel followed by contacts_kd's loop)."""
+    """Inverse kernel fused with the kd formula block, for a pass whose values are all valid
+    (e_min <= e <= 1; T_c, m, u in the direct range): one loop e, T_c, m, u -> alpha, tau_c,
+    status, k, d, flags, the body of inverse_body and then the two statements of the loop of
+    hertzdamp_pair's contacts_kd, with the masks constant (keep all ones, flags 0: every
+    blend the identity, so the same bits as the masked kernel followed by contacts_kd; the
+    compiler folds the masks away).  A pass with an invalid value returns done = .false.
+    and nothing else (the caller takes the masked kernel and contacts_kd)."""
     code, name, law, end, emin, kind, maps = kernel
     local = 'x, l, v, t, a, p2' if kind != 'exact' else 'x, l, t, a, p2'
     head = """\
-!> Inverse kernel %d fused with the direct k, d formulas (direct_kd, direct_flags, copied
-!> from hertzdamp_pair): alpha, tau_c, status as kernel_inverse_%s, then k, d and the flags of
-!> the direct path for T_c, m, u, in the same loop.
-pure subroutine kernel_invert_kd_%s(n, e, tc, m, u, alpha, tau_c, status, k, d, flags)
+!> Inverse kernel %d fused with the direct k, d formulas (direct_kd, copied from
+!> hertzdamp_pair) for n values all valid: alpha, tau_c, status as kernel_inverse_%s, then
+!> k, d and the flags (0) of contacts_kd, in one loop; done = .false. and no outputs when a
+!> value is invalid (e outside [e_min, 1], or T_c, m or u outside the direct range).
+pure subroutine kernel_invert_kd_%s(n, e, tc, m, u, alpha, tau_c, status, k, d, flags, done)
     integer, intent(in) :: n            !! number of values
     real(wp), intent(in) :: e(n)        !! restitution coefficients
     real(wp), intent(in) :: tc(n)       !! contact times [s]
@@ -465,32 +469,44 @@ pure subroutine kernel_invert_kd_%s(n, e, tc, m, u, alpha, tau_c, status, k, d, 
     real(wp), intent(in) :: u(n)        !! impact velocities [m s^-1]
     real(wp), intent(out) :: alpha(n)   !! damping parameters
     real(wp), intent(out) :: tau_c(n)   !! dimensionless contact durations
-    integer, intent(out) :: status(n)   !! HD_OK or HD_BAD_RESTITUTION
+    integer, intent(out) :: status(n)   !! HD_OK
     real(wp), intent(out) :: k(n)       !! stiffnesses of the direct formulas
     real(wp), intent(out) :: d(n)       !! damping coefficients of the direct formulas
-    integer(int64), intent(out) :: flags(n) !! sign bit set: not served by the direct formulas
+    integer(int64), intent(out) :: flags(n) !! 0: every value served by the direct formulas
+    logical, intent(out) :: done        !! every value valid, the outputs set
     integer(int64), parameter :: emin_bits = transfer(%s, 0_int64)
     real(wp) :: %s
-    integer(int64) :: keep, elastic
+    integer(int64) :: keep, elastic, valid
     integer :: i, ip
 """ % (code, name, name, emin, local)
     body = inverse_body(kernel, degs) + '''
-! k and d: the statements of the loop of hertzdamp_pair's contacts_kd
-flags(i) = direct_flags(status(i), tc(i), m(i), u(i))
+! k and d: the statements of the loop of hertzdamp_pair's contacts_kd (flags 0: all valid)
+flags(i) = 0_int64
 call direct_kd(%s, alpha(i), direct_harmless(tau_c(i), flags(i)), &
                direct_harmless(tc(i), flags(i)), direct_harmless(m(i), flags(i)), &
                direct_harmless(u(i), flags(i)), k(i), d(i))''' % LAW_CODE[law]
-    body = 'do i = 1, n\n%s\nend do' % indent(body, 4)
+    mask_e = 'keep = keep_mask(outside(e(i), emin_bits, one_bits))'
+    if body.count(mask_e) != 1:
+        raise SystemExit('kernel %s: the mask of e not found' % name)
+    body = body.replace(mask_e, 'keep = -1_int64   ! all valid')
     fams = sorted({maps[0]} if kind != 'split' else {maps[0][0], maps[1][0]})
-    return head + indent(associated(body, fams), 4) + '\nend subroutine kernel_invert_kd_%s' % name
+    text = '\n'.join([
+        '! the sign bit of the or of the masks of e and of contacts_kd: an invalid value',
+        'valid = 0_int64',
+        'do i = 1, n',
+        '    valid = ior(valid, ior(outside(e(i), emin_bits, one_bits), direct_flags(0, tc(i), m(i), u(i))))',
+        'end do',
+        'done = valid >= 0_int64',
+        'if (.not. done) return',
+        'do i = 1, n\n%s\nend do' % indent(body, 4)])
+    return head + indent(associated(text, fams), 4) + '\nend subroutine kernel_invert_kd_%s' % name
 
 
 def fused_dispatch():
-    """kernel_invert_kd: the fused kernel of a code (another code: HD_BAD_END, zero outputs,
-    every contact flagged)."""
-    lines = ['!> The fused kernel of code ikern (kern_*; HD_BAD_END, zero outputs and every contact',
-             '!> flagged for another code).',
-             'pure subroutine kernel_invert_kd(ikern, n, e, tc, m, u, alpha, tau_c, status, k, d, flags)',
+    """kernel_invert_kd: the fused kernel of a code (another code: done = .false.)."""
+    lines = ['!> The fused kernel of code ikern for n values all valid (done = .false. and no outputs',
+             '!> when a value is invalid, or for another code).',
+             'pure subroutine kernel_invert_kd(ikern, n, e, tc, m, u, alpha, tau_c, status, k, d, flags, done)',
              '    integer, intent(in) :: ikern        !! kernel code, kern_*',
              '    integer, intent(in) :: n            !! number of values',
              '    real(wp), intent(in) :: e(n)        !! restitution coefficients',
@@ -499,25 +515,20 @@ def fused_dispatch():
              '    real(wp), intent(in) :: u(n)        !! impact velocities [m s^-1]',
              '    real(wp), intent(out) :: alpha(n)   !! damping parameters',
              '    real(wp), intent(out) :: tau_c(n)   !! dimensionless contact durations',
-             '    integer, intent(out) :: status(n)   !! HD_OK or HD_BAD_RESTITUTION',
+             '    integer, intent(out) :: status(n)   !! HD_OK',
              '    real(wp), intent(out) :: k(n)       !! stiffnesses of the direct formulas',
              '    real(wp), intent(out) :: d(n)       !! damping coefficients of the direct formulas',
-             '    integer(int64), intent(out) :: flags(n) !! sign bit set: not served by the direct formulas',
+             '    integer(int64), intent(out) :: flags(n) !! 0: every value served by the direct formulas',
+             '    logical, intent(out) :: done        !! every value valid, the outputs set',
              '    select case (ikern)']
     for code, name, *_ in INVERSE_KERNELS:
         lines.append('    case (kern_%s)' % name)
-        lines.append('        call kernel_invert_kd_%s(n, e, tc, m, u, alpha, tau_c, status, k, d, flags)' % name)
+        lines.append('        call kernel_invert_kd_%s(n, e, tc, m, u, alpha, tau_c, status, k, d, flags, done)' % name)
     lines += ['    case default',
-              '        alpha = 0.0_wp',
-              '        tau_c = 0.0_wp',
-              '        status = HD_BAD_END',
-              '        k = 0.0_wp',
-              '        d = 0.0_wp',
-              '        flags = -1_int64',
+              '        done = .false.',
               '    end select',
               'end subroutine kernel_invert_kd']
     return '\n'.join(lines)
-
 
 # ------------------------------------------------------------------ forward
 def forward_body(end, degs):

@@ -137,10 +137,11 @@ contains
     end subroutine hertzdamp_fit_inverse_n
 
     !> hertzdamp_fit_inverse_n fused with the direct k, d formulas of hertzdamp_pair (one
-    !> loop, the array forms of the inverse): alpha, tau_c, status as hertzdamp_fit_inverse_n,
-    !> and k, d and flags as hertzdamp_pair's contacts_kd makes of (alpha, tau_c, status, T_c, m, u)
-    !> (the same bits); an invalid end or law flags every contact.
-    pure subroutine hertzdamp_fit_invert_kd_n(n, e, iend, law, tc, m, u, alpha, tau_c, status, k, d, flags)
+    !> loop, the array forms of the inverse) for n contacts all valid (e_min <= e <= 1, T_c,
+    !> m, u in the direct range): alpha, tau_c, status as hertzdamp_fit_inverse_n, k, d and
+    !> flags as hertzdamp_pair's contacts_kd makes of them (the same bits).  done = .false.
+    !> and no outputs when a contact is invalid, or the end or the law is.
+    pure subroutine hertzdamp_fit_invert_kd_n(n, e, iend, law, tc, m, u, alpha, tau_c, status, k, d, flags, done)
         integer, intent(in) :: n                  !! number of values
         real(wp), intent(in) :: e(n)              !! restitution coefficients
         integer, intent(in) :: iend               !! HD_END_OVERLAP or HD_END_FORCE
@@ -150,22 +151,15 @@ contains
         real(wp), intent(in) :: u(n)              !! impact velocities [m s^-1]
         real(wp), intent(out) :: alpha(n)         !! damping parameters with e(alpha) = e
         real(wp), intent(out) :: tau_c(n)         !! dimensionless contact durations tau_c(alpha)
-        integer, intent(out) :: status(n)         !! as hertzdamp_fit_inverse_n
+        integer, intent(out) :: status(n)         !! HD_OK
         real(wp), intent(out) :: k(n)             !! stiffnesses of the direct formulas
         real(wp), intent(out) :: d(n)             !! damping coefficients of the direct formulas
-        integer(int64), intent(out) :: flags(n)   !! sign bit set: not served by the direct formulas
+        integer(int64), intent(out) :: flags(n)   !! 0: every contact served by the direct formulas
+        logical, intent(out) :: done              !! every contact valid, the outputs set
         integer :: ikern, st
         call inverse_kernel(iend, law, ikern, st)
-        if (st /= HD_OK) then
-            alpha = 0.0_wp
-            tau_c = 0.0_wp
-            status = st
-            k = 0.0_wp
-            d = 0.0_wp
-            flags = -1_int64
-            return
-        end if
-        call kernel_invert_kd(ikern, n, e, tc, m, u, alpha, tau_c, status, k, d, flags)
+        done = .false.
+        if (st == HD_OK) call kernel_invert_kd(ikern, n, e, tc, m, u, alpha, tau_c, status, k, d, flags, done)
     end subroutine hertzdamp_fit_invert_kd_n
 
     !> The inverse map e -> (alpha, tau_c) of a contact end and damping law.  e must be

@@ -1261,10 +1261,11 @@ contains
     end function direct_harmless
     ! END kd formula
 
-    !> Inverse kernel 1 fused with the direct k, d formulas (direct_kd, direct_flags, copied
-    !> from hertzdamp_pair): alpha, tau_c, status as kernel_inverse_linear_overlap, then k, d and the flags of
-    !> the direct path for T_c, m, u, in the same loop.
-    pure subroutine kernel_invert_kd_linear_overlap(n, e, tc, m, u, alpha, tau_c, status, k, d, flags)
+    !> Inverse kernel 1 fused with the direct k, d formulas (direct_kd, copied from
+    !> hertzdamp_pair) for n values all valid: alpha, tau_c, status as kernel_inverse_linear_overlap, then
+    !> k, d and the flags (0) of contacts_kd, in one loop; done = .false. and no outputs when a
+    !> value is invalid (e outside [e_min, 1], or T_c, m or u outside the direct range).
+    pure subroutine kernel_invert_kd_linear_overlap(n, e, tc, m, u, alpha, tau_c, status, k, d, flags, done)
         integer, intent(in) :: n            !! number of values
         real(wp), intent(in) :: e(n)        !! restitution coefficients
         real(wp), intent(in) :: tc(n)       !! contact times [s]
@@ -1272,20 +1273,28 @@ contains
         real(wp), intent(in) :: u(n)        !! impact velocities [m s^-1]
         real(wp), intent(out) :: alpha(n)   !! damping parameters
         real(wp), intent(out) :: tau_c(n)   !! dimensionless contact durations
-        integer, intent(out) :: status(n)   !! HD_OK or HD_BAD_RESTITUTION
+        integer, intent(out) :: status(n)   !! HD_OK
         real(wp), intent(out) :: k(n)       !! stiffnesses of the direct formulas
         real(wp), intent(out) :: d(n)       !! damping coefficients of the direct formulas
-        integer(int64), intent(out) :: flags(n) !! sign bit set: not served by the direct formulas
+        integer(int64), intent(out) :: flags(n) !! 0: every value served by the direct formulas
+        logical, intent(out) :: done        !! every value valid, the outputs set
         integer(int64), parameter :: emin_bits = transfer(fit_e_min_overlap, 0_int64)
         real(wp) :: x, l, v, t, a, p2
-        integer(int64) :: keep, elastic
+        integer(int64) :: keep, elastic, valid
         integer :: i, ip
         associate (c_inv => fit_inv_c)
+            ! the sign bit of the or of the masks of e and of contacts_kd: an invalid value
+            valid = 0_int64
+            do i = 1, n
+                valid = ior(valid, ior(outside(e(i), emin_bits, one_bits), direct_flags(0, tc(i), m(i), u(i))))
+            end do
+            done = valid >= 0_int64
+            if (.not. done) return
             do i = 1, n
                 ! keep: all ones where e is valid (e_min <= e <= 1; NaN is not); an invalid e is
                 ! replaced by 0.5, its outputs by 0.  elastic: all ones at e = 1 exactly, where tau_c(0)
                 ! is returned (not the polynomial's value)
-                keep = keep_mask(outside(e(i), emin_bits, one_bits))
+                keep = -1_int64   ! all valid
                 elastic = -shiftr(iand(ieor(transfer(e(i), 0_int64), one_bits), huge(keep)) - 1_int64, 63)
                 x = blend(keep, e(i), 0.5_wp)
                 ! l = -ln x
@@ -1327,8 +1336,8 @@ contains
                 alpha(i) = blend(keep, l * a, 0.0_wp)
                 tau_c(i) = blend(keep, blend(elastic, tau_c0, p2), 0.0_wp)
                 status(i) = int(iand(not(keep), int(HD_BAD_RESTITUTION, int64)))
-                ! k and d: the statements of the loop of hertzdamp_pair's contacts_kd
-                flags(i) = direct_flags(status(i), tc(i), m(i), u(i))
+                ! k and d: the statements of the loop of hertzdamp_pair's contacts_kd (flags 0: all valid)
+                flags(i) = 0_int64
                 call direct_kd(HD_DAMPING_LINEAR, alpha(i), direct_harmless(tau_c(i), flags(i)), &
                                direct_harmless(tc(i), flags(i)), direct_harmless(m(i), flags(i)), &
                                direct_harmless(u(i), flags(i)), k(i), d(i))
@@ -1336,10 +1345,11 @@ contains
         end associate
     end subroutine kernel_invert_kd_linear_overlap
 
-    !> Inverse kernel 2 fused with the direct k, d formulas (direct_kd, direct_flags, copied
-    !> from hertzdamp_pair): alpha, tau_c, status as kernel_inverse_linear_force, then k, d and the flags of
-    !> the direct path for T_c, m, u, in the same loop.
-    pure subroutine kernel_invert_kd_linear_force(n, e, tc, m, u, alpha, tau_c, status, k, d, flags)
+    !> Inverse kernel 2 fused with the direct k, d formulas (direct_kd, copied from
+    !> hertzdamp_pair) for n values all valid: alpha, tau_c, status as kernel_inverse_linear_force, then
+    !> k, d and the flags (0) of contacts_kd, in one loop; done = .false. and no outputs when a
+    !> value is invalid (e outside [e_min, 1], or T_c, m or u outside the direct range).
+    pure subroutine kernel_invert_kd_linear_force(n, e, tc, m, u, alpha, tau_c, status, k, d, flags, done)
         integer, intent(in) :: n            !! number of values
         real(wp), intent(in) :: e(n)        !! restitution coefficients
         real(wp), intent(in) :: tc(n)       !! contact times [s]
@@ -1347,20 +1357,28 @@ contains
         real(wp), intent(in) :: u(n)        !! impact velocities [m s^-1]
         real(wp), intent(out) :: alpha(n)   !! damping parameters
         real(wp), intent(out) :: tau_c(n)   !! dimensionless contact durations
-        integer, intent(out) :: status(n)   !! HD_OK or HD_BAD_RESTITUTION
+        integer, intent(out) :: status(n)   !! HD_OK
         real(wp), intent(out) :: k(n)       !! stiffnesses of the direct formulas
         real(wp), intent(out) :: d(n)       !! damping coefficients of the direct formulas
-        integer(int64), intent(out) :: flags(n) !! sign bit set: not served by the direct formulas
+        integer(int64), intent(out) :: flags(n) !! 0: every value served by the direct formulas
+        logical, intent(out) :: done        !! every value valid, the outputs set
         integer(int64), parameter :: emin_bits = transfer(fit_e_min_force, 0_int64)
         real(wp) :: x, l, v, t, a, p2
-        integer(int64) :: keep, elastic
+        integer(int64) :: keep, elastic, valid
         integer :: i, ip
         associate (c_inv => fit_inv_c)
+            ! the sign bit of the or of the masks of e and of contacts_kd: an invalid value
+            valid = 0_int64
+            do i = 1, n
+                valid = ior(valid, ior(outside(e(i), emin_bits, one_bits), direct_flags(0, tc(i), m(i), u(i))))
+            end do
+            done = valid >= 0_int64
+            if (.not. done) return
             do i = 1, n
                 ! keep: all ones where e is valid (e_min <= e <= 1; NaN is not); an invalid e is
                 ! replaced by 0.5, its outputs by 0.  elastic: all ones at e = 1 exactly, where tau_c(0)
                 ! is returned (not the polynomial's value)
-                keep = keep_mask(outside(e(i), emin_bits, one_bits))
+                keep = -1_int64   ! all valid
                 elastic = -shiftr(iand(ieor(transfer(e(i), 0_int64), one_bits), huge(keep)) - 1_int64, 63)
                 x = blend(keep, e(i), 0.5_wp)
                 ! l = -ln x
@@ -1422,8 +1440,8 @@ contains
                 alpha(i) = blend(keep, l * a, 0.0_wp)
                 tau_c(i) = blend(keep, blend(elastic, tau_c0, p2), 0.0_wp)
                 status(i) = int(iand(not(keep), int(HD_BAD_RESTITUTION, int64)))
-                ! k and d: the statements of the loop of hertzdamp_pair's contacts_kd
-                flags(i) = direct_flags(status(i), tc(i), m(i), u(i))
+                ! k and d: the statements of the loop of hertzdamp_pair's contacts_kd (flags 0: all valid)
+                flags(i) = 0_int64
                 call direct_kd(HD_DAMPING_LINEAR, alpha(i), direct_harmless(tau_c(i), flags(i)), &
                                direct_harmless(tc(i), flags(i)), direct_harmless(m(i), flags(i)), &
                                direct_harmless(u(i), flags(i)), k(i), d(i))
@@ -1431,10 +1449,11 @@ contains
         end associate
     end subroutine kernel_invert_kd_linear_force
 
-    !> Inverse kernel 3 fused with the direct k, d formulas (direct_kd, direct_flags, copied
-    !> from hertzdamp_pair): alpha, tau_c, status as kernel_inverse_tsuji_overlap, then k, d and the flags of
-    !> the direct path for T_c, m, u, in the same loop.
-    pure subroutine kernel_invert_kd_tsuji_overlap(n, e, tc, m, u, alpha, tau_c, status, k, d, flags)
+    !> Inverse kernel 3 fused with the direct k, d formulas (direct_kd, copied from
+    !> hertzdamp_pair) for n values all valid: alpha, tau_c, status as kernel_inverse_tsuji_overlap, then
+    !> k, d and the flags (0) of contacts_kd, in one loop; done = .false. and no outputs when a
+    !> value is invalid (e outside [e_min, 1], or T_c, m or u outside the direct range).
+    pure subroutine kernel_invert_kd_tsuji_overlap(n, e, tc, m, u, alpha, tau_c, status, k, d, flags, done)
         integer, intent(in) :: n            !! number of values
         real(wp), intent(in) :: e(n)        !! restitution coefficients
         real(wp), intent(in) :: tc(n)       !! contact times [s]
@@ -1442,20 +1461,28 @@ contains
         real(wp), intent(in) :: u(n)        !! impact velocities [m s^-1]
         real(wp), intent(out) :: alpha(n)   !! damping parameters
         real(wp), intent(out) :: tau_c(n)   !! dimensionless contact durations
-        integer, intent(out) :: status(n)   !! HD_OK or HD_BAD_RESTITUTION
+        integer, intent(out) :: status(n)   !! HD_OK
         real(wp), intent(out) :: k(n)       !! stiffnesses of the direct formulas
         real(wp), intent(out) :: d(n)       !! damping coefficients of the direct formulas
-        integer(int64), intent(out) :: flags(n) !! sign bit set: not served by the direct formulas
+        integer(int64), intent(out) :: flags(n) !! 0: every value served by the direct formulas
+        logical, intent(out) :: done        !! every value valid, the outputs set
         integer(int64), parameter :: emin_bits = transfer(fit_law_e_min, 0_int64)
         real(wp) :: x, l, t, a, p2
-        integer(int64) :: keep, elastic
+        integer(int64) :: keep, elastic, valid
         integer :: i, ip
         associate (c_one => fit_one_c)
+            ! the sign bit of the or of the masks of e and of contacts_kd: an invalid value
+            valid = 0_int64
+            do i = 1, n
+                valid = ior(valid, ior(outside(e(i), emin_bits, one_bits), direct_flags(0, tc(i), m(i), u(i))))
+            end do
+            done = valid >= 0_int64
+            if (.not. done) return
             do i = 1, n
                 ! keep: all ones where e is valid (e_min <= e <= 1; NaN is not); an invalid e is
                 ! replaced by 0.5, its outputs by 0.  elastic: all ones at e = 1 exactly, where tau_c(0)
                 ! is returned (not the polynomial's value)
-                keep = keep_mask(outside(e(i), emin_bits, one_bits))
+                keep = -1_int64   ! all valid
                 elastic = -shiftr(iand(ieor(transfer(e(i), 0_int64), one_bits), huge(keep)) - 1_int64, 63)
                 x = blend(keep, e(i), 0.5_wp)
                 ! l = -ln x
@@ -1496,8 +1523,8 @@ contains
                 alpha(i) = blend(keep, l * a, 0.0_wp)
                 tau_c(i) = blend(keep, blend(elastic, tau_c0, p2), 0.0_wp)
                 status(i) = int(iand(not(keep), int(HD_BAD_RESTITUTION, int64)))
-                ! k and d: the statements of the loop of hertzdamp_pair's contacts_kd
-                flags(i) = direct_flags(status(i), tc(i), m(i), u(i))
+                ! k and d: the statements of the loop of hertzdamp_pair's contacts_kd (flags 0: all valid)
+                flags(i) = 0_int64
                 call direct_kd(HD_DAMPING_TSUJI, alpha(i), direct_harmless(tau_c(i), flags(i)), &
                                direct_harmless(tc(i), flags(i)), direct_harmless(m(i), flags(i)), &
                                direct_harmless(u(i), flags(i)), k(i), d(i))
@@ -1505,10 +1532,11 @@ contains
         end associate
     end subroutine kernel_invert_kd_tsuji_overlap
 
-    !> Inverse kernel 4 fused with the direct k, d formulas (direct_kd, direct_flags, copied
-    !> from hertzdamp_pair): alpha, tau_c, status as kernel_inverse_tsuji_force, then k, d and the flags of
-    !> the direct path for T_c, m, u, in the same loop.
-    pure subroutine kernel_invert_kd_tsuji_force(n, e, tc, m, u, alpha, tau_c, status, k, d, flags)
+    !> Inverse kernel 4 fused with the direct k, d formulas (direct_kd, copied from
+    !> hertzdamp_pair) for n values all valid: alpha, tau_c, status as kernel_inverse_tsuji_force, then
+    !> k, d and the flags (0) of contacts_kd, in one loop; done = .false. and no outputs when a
+    !> value is invalid (e outside [e_min, 1], or T_c, m or u outside the direct range).
+    pure subroutine kernel_invert_kd_tsuji_force(n, e, tc, m, u, alpha, tau_c, status, k, d, flags, done)
         integer, intent(in) :: n            !! number of values
         real(wp), intent(in) :: e(n)        !! restitution coefficients
         real(wp), intent(in) :: tc(n)       !! contact times [s]
@@ -1516,20 +1544,28 @@ contains
         real(wp), intent(in) :: u(n)        !! impact velocities [m s^-1]
         real(wp), intent(out) :: alpha(n)   !! damping parameters
         real(wp), intent(out) :: tau_c(n)   !! dimensionless contact durations
-        integer, intent(out) :: status(n)   !! HD_OK or HD_BAD_RESTITUTION
+        integer, intent(out) :: status(n)   !! HD_OK
         real(wp), intent(out) :: k(n)       !! stiffnesses of the direct formulas
         real(wp), intent(out) :: d(n)       !! damping coefficients of the direct formulas
-        integer(int64), intent(out) :: flags(n) !! sign bit set: not served by the direct formulas
+        integer(int64), intent(out) :: flags(n) !! 0: every value served by the direct formulas
+        logical, intent(out) :: done        !! every value valid, the outputs set
         integer(int64), parameter :: emin_bits = transfer(fit_law_e_min, 0_int64)
         real(wp) :: x, l, v, t, a, p2
-        integer(int64) :: keep, elastic
+        integer(int64) :: keep, elastic, valid
         integer :: i, ip
         associate (c_one => fit_one_c)
+            ! the sign bit of the or of the masks of e and of contacts_kd: an invalid value
+            valid = 0_int64
+            do i = 1, n
+                valid = ior(valid, ior(outside(e(i), emin_bits, one_bits), direct_flags(0, tc(i), m(i), u(i))))
+            end do
+            done = valid >= 0_int64
+            if (.not. done) return
             do i = 1, n
                 ! keep: all ones where e is valid (e_min <= e <= 1; NaN is not); an invalid e is
                 ! replaced by 0.5, its outputs by 0.  elastic: all ones at e = 1 exactly, where tau_c(0)
                 ! is returned (not the polynomial's value)
-                keep = keep_mask(outside(e(i), emin_bits, one_bits))
+                keep = -1_int64   ! all valid
                 elastic = -shiftr(iand(ieor(transfer(e(i), 0_int64), one_bits), huge(keep)) - 1_int64, 63)
                 x = blend(keep, e(i), 0.5_wp)
                 ! l = -ln x
@@ -1607,8 +1643,8 @@ contains
                 alpha(i) = blend(keep, l * a, 0.0_wp)
                 tau_c(i) = blend(keep, blend(elastic, tau_c0, p2), 0.0_wp)
                 status(i) = int(iand(not(keep), int(HD_BAD_RESTITUTION, int64)))
-                ! k and d: the statements of the loop of hertzdamp_pair's contacts_kd
-                flags(i) = direct_flags(status(i), tc(i), m(i), u(i))
+                ! k and d: the statements of the loop of hertzdamp_pair's contacts_kd (flags 0: all valid)
+                flags(i) = 0_int64
                 call direct_kd(HD_DAMPING_TSUJI, alpha(i), direct_harmless(tau_c(i), flags(i)), &
                                direct_harmless(tc(i), flags(i)), direct_harmless(m(i), flags(i)), &
                                direct_harmless(u(i), flags(i)), k(i), d(i))
@@ -1616,10 +1652,11 @@ contains
         end associate
     end subroutine kernel_invert_kd_tsuji_force
 
-    !> Inverse kernel 5 fused with the direct k, d formulas (direct_kd, direct_flags, copied
-    !> from hertzdamp_pair): alpha, tau_c, status as kernel_inverse_kuwabara_kono_overlap, then k, d and the flags of
-    !> the direct path for T_c, m, u, in the same loop.
-    pure subroutine kernel_invert_kd_kuwabara_kono_overlap(n, e, tc, m, u, alpha, tau_c, status, k, d, flags)
+    !> Inverse kernel 5 fused with the direct k, d formulas (direct_kd, copied from
+    !> hertzdamp_pair) for n values all valid: alpha, tau_c, status as kernel_inverse_kuwabara_kono_overlap, then
+    !> k, d and the flags (0) of contacts_kd, in one loop; done = .false. and no outputs when a
+    !> value is invalid (e outside [e_min, 1], or T_c, m or u outside the direct range).
+    pure subroutine kernel_invert_kd_kuwabara_kono_overlap(n, e, tc, m, u, alpha, tau_c, status, k, d, flags, done)
         integer, intent(in) :: n            !! number of values
         real(wp), intent(in) :: e(n)        !! restitution coefficients
         real(wp), intent(in) :: tc(n)       !! contact times [s]
@@ -1627,20 +1664,28 @@ contains
         real(wp), intent(in) :: u(n)        !! impact velocities [m s^-1]
         real(wp), intent(out) :: alpha(n)   !! damping parameters
         real(wp), intent(out) :: tau_c(n)   !! dimensionless contact durations
-        integer, intent(out) :: status(n)   !! HD_OK or HD_BAD_RESTITUTION
+        integer, intent(out) :: status(n)   !! HD_OK
         real(wp), intent(out) :: k(n)       !! stiffnesses of the direct formulas
         real(wp), intent(out) :: d(n)       !! damping coefficients of the direct formulas
-        integer(int64), intent(out) :: flags(n) !! sign bit set: not served by the direct formulas
+        integer(int64), intent(out) :: flags(n) !! 0: every value served by the direct formulas
+        logical, intent(out) :: done        !! every value valid, the outputs set
         integer(int64), parameter :: emin_bits = transfer(fit_law_e_min, 0_int64)
         real(wp) :: x, l, v, t, a, p2
-        integer(int64) :: keep, elastic
+        integer(int64) :: keep, elastic, valid
         integer :: i, ip
         associate (c_linv => fit_linv_c)
+            ! the sign bit of the or of the masks of e and of contacts_kd: an invalid value
+            valid = 0_int64
+            do i = 1, n
+                valid = ior(valid, ior(outside(e(i), emin_bits, one_bits), direct_flags(0, tc(i), m(i), u(i))))
+            end do
+            done = valid >= 0_int64
+            if (.not. done) return
             do i = 1, n
                 ! keep: all ones where e is valid (e_min <= e <= 1; NaN is not); an invalid e is
                 ! replaced by 0.5, its outputs by 0.  elastic: all ones at e = 1 exactly, where tau_c(0)
                 ! is returned (not the polynomial's value)
-                keep = keep_mask(outside(e(i), emin_bits, one_bits))
+                keep = -1_int64   ! all valid
                 elastic = -shiftr(iand(ieor(transfer(e(i), 0_int64), one_bits), huge(keep)) - 1_int64, 63)
                 x = blend(keep, e(i), 0.5_wp)
                 ! l = -ln x
@@ -1686,8 +1731,8 @@ contains
                 alpha(i) = blend(keep, l * a, 0.0_wp)
                 tau_c(i) = blend(keep, blend(elastic, tau_c0, p2), 0.0_wp)
                 status(i) = int(iand(not(keep), int(HD_BAD_RESTITUTION, int64)))
-                ! k and d: the statements of the loop of hertzdamp_pair's contacts_kd
-                flags(i) = direct_flags(status(i), tc(i), m(i), u(i))
+                ! k and d: the statements of the loop of hertzdamp_pair's contacts_kd (flags 0: all valid)
+                flags(i) = 0_int64
                 call direct_kd(HD_DAMPING_KUWABARA_KONO, alpha(i), direct_harmless(tau_c(i), flags(i)), &
                                direct_harmless(tc(i), flags(i)), direct_harmless(m(i), flags(i)), &
                                direct_harmless(u(i), flags(i)), k(i), d(i))
@@ -1695,10 +1740,11 @@ contains
         end associate
     end subroutine kernel_invert_kd_kuwabara_kono_overlap
 
-    !> Inverse kernel 6 fused with the direct k, d formulas (direct_kd, direct_flags, copied
-    !> from hertzdamp_pair): alpha, tau_c, status as kernel_inverse_kuwabara_kono_force, then k, d and the flags of
-    !> the direct path for T_c, m, u, in the same loop.
-    pure subroutine kernel_invert_kd_kuwabara_kono_force(n, e, tc, m, u, alpha, tau_c, status, k, d, flags)
+    !> Inverse kernel 6 fused with the direct k, d formulas (direct_kd, copied from
+    !> hertzdamp_pair) for n values all valid: alpha, tau_c, status as kernel_inverse_kuwabara_kono_force, then
+    !> k, d and the flags (0) of contacts_kd, in one loop; done = .false. and no outputs when a
+    !> value is invalid (e outside [e_min, 1], or T_c, m or u outside the direct range).
+    pure subroutine kernel_invert_kd_kuwabara_kono_force(n, e, tc, m, u, alpha, tau_c, status, k, d, flags, done)
         integer, intent(in) :: n            !! number of values
         real(wp), intent(in) :: e(n)        !! restitution coefficients
         real(wp), intent(in) :: tc(n)       !! contact times [s]
@@ -1706,20 +1752,28 @@ contains
         real(wp), intent(in) :: u(n)        !! impact velocities [m s^-1]
         real(wp), intent(out) :: alpha(n)   !! damping parameters
         real(wp), intent(out) :: tau_c(n)   !! dimensionless contact durations
-        integer, intent(out) :: status(n)   !! HD_OK or HD_BAD_RESTITUTION
+        integer, intent(out) :: status(n)   !! HD_OK
         real(wp), intent(out) :: k(n)       !! stiffnesses of the direct formulas
         real(wp), intent(out) :: d(n)       !! damping coefficients of the direct formulas
-        integer(int64), intent(out) :: flags(n) !! sign bit set: not served by the direct formulas
+        integer(int64), intent(out) :: flags(n) !! 0: every value served by the direct formulas
+        logical, intent(out) :: done        !! every value valid, the outputs set
         integer(int64), parameter :: emin_bits = transfer(fit_law_e_min, 0_int64)
         real(wp) :: x, l, v, t, a, p2
-        integer(int64) :: keep, elastic
+        integer(int64) :: keep, elastic, valid
         integer :: i, ip
         associate (c_linv => fit_linv_c)
+            ! the sign bit of the or of the masks of e and of contacts_kd: an invalid value
+            valid = 0_int64
+            do i = 1, n
+                valid = ior(valid, ior(outside(e(i), emin_bits, one_bits), direct_flags(0, tc(i), m(i), u(i))))
+            end do
+            done = valid >= 0_int64
+            if (.not. done) return
             do i = 1, n
                 ! keep: all ones where e is valid (e_min <= e <= 1; NaN is not); an invalid e is
                 ! replaced by 0.5, its outputs by 0.  elastic: all ones at e = 1 exactly, where tau_c(0)
                 ! is returned (not the polynomial's value)
-                keep = keep_mask(outside(e(i), emin_bits, one_bits))
+                keep = -1_int64   ! all valid
                 elastic = -shiftr(iand(ieor(transfer(e(i), 0_int64), one_bits), huge(keep)) - 1_int64, 63)
                 x = blend(keep, e(i), 0.5_wp)
                 ! l = -ln x
@@ -1765,8 +1819,8 @@ contains
                 alpha(i) = blend(keep, l * a, 0.0_wp)
                 tau_c(i) = blend(keep, blend(elastic, tau_c0, p2), 0.0_wp)
                 status(i) = int(iand(not(keep), int(HD_BAD_RESTITUTION, int64)))
-                ! k and d: the statements of the loop of hertzdamp_pair's contacts_kd
-                flags(i) = direct_flags(status(i), tc(i), m(i), u(i))
+                ! k and d: the statements of the loop of hertzdamp_pair's contacts_kd (flags 0: all valid)
+                flags(i) = 0_int64
                 call direct_kd(HD_DAMPING_KUWABARA_KONO, alpha(i), direct_harmless(tau_c(i), flags(i)), &
                                direct_harmless(tc(i), flags(i)), direct_harmless(m(i), flags(i)), &
                                direct_harmless(u(i), flags(i)), k(i), d(i))
@@ -1774,9 +1828,9 @@ contains
         end associate
     end subroutine kernel_invert_kd_kuwabara_kono_force
 
-    !> The fused kernel of code ikern (kern_*; HD_BAD_END, zero outputs and every contact
-    !> flagged for another code).
-    pure subroutine kernel_invert_kd(ikern, n, e, tc, m, u, alpha, tau_c, status, k, d, flags)
+    !> The fused kernel of code ikern for n values all valid (done = .false. and no outputs
+    !> when a value is invalid, or for another code).
+    pure subroutine kernel_invert_kd(ikern, n, e, tc, m, u, alpha, tau_c, status, k, d, flags, done)
         integer, intent(in) :: ikern        !! kernel code, kern_*
         integer, intent(in) :: n            !! number of values
         real(wp), intent(in) :: e(n)        !! restitution coefficients
@@ -1785,30 +1839,26 @@ contains
         real(wp), intent(in) :: u(n)        !! impact velocities [m s^-1]
         real(wp), intent(out) :: alpha(n)   !! damping parameters
         real(wp), intent(out) :: tau_c(n)   !! dimensionless contact durations
-        integer, intent(out) :: status(n)   !! HD_OK or HD_BAD_RESTITUTION
+        integer, intent(out) :: status(n)   !! HD_OK
         real(wp), intent(out) :: k(n)       !! stiffnesses of the direct formulas
         real(wp), intent(out) :: d(n)       !! damping coefficients of the direct formulas
-        integer(int64), intent(out) :: flags(n) !! sign bit set: not served by the direct formulas
+        integer(int64), intent(out) :: flags(n) !! 0: every value served by the direct formulas
+        logical, intent(out) :: done        !! every value valid, the outputs set
         select case (ikern)
         case (kern_linear_overlap)
-            call kernel_invert_kd_linear_overlap(n, e, tc, m, u, alpha, tau_c, status, k, d, flags)
+            call kernel_invert_kd_linear_overlap(n, e, tc, m, u, alpha, tau_c, status, k, d, flags, done)
         case (kern_linear_force)
-            call kernel_invert_kd_linear_force(n, e, tc, m, u, alpha, tau_c, status, k, d, flags)
+            call kernel_invert_kd_linear_force(n, e, tc, m, u, alpha, tau_c, status, k, d, flags, done)
         case (kern_tsuji_overlap)
-            call kernel_invert_kd_tsuji_overlap(n, e, tc, m, u, alpha, tau_c, status, k, d, flags)
+            call kernel_invert_kd_tsuji_overlap(n, e, tc, m, u, alpha, tau_c, status, k, d, flags, done)
         case (kern_tsuji_force)
-            call kernel_invert_kd_tsuji_force(n, e, tc, m, u, alpha, tau_c, status, k, d, flags)
+            call kernel_invert_kd_tsuji_force(n, e, tc, m, u, alpha, tau_c, status, k, d, flags, done)
         case (kern_kuwabara_kono_overlap)
-            call kernel_invert_kd_kuwabara_kono_overlap(n, e, tc, m, u, alpha, tau_c, status, k, d, flags)
+            call kernel_invert_kd_kuwabara_kono_overlap(n, e, tc, m, u, alpha, tau_c, status, k, d, flags, done)
         case (kern_kuwabara_kono_force)
-            call kernel_invert_kd_kuwabara_kono_force(n, e, tc, m, u, alpha, tau_c, status, k, d, flags)
+            call kernel_invert_kd_kuwabara_kono_force(n, e, tc, m, u, alpha, tau_c, status, k, d, flags, done)
         case default
-            alpha = 0.0_wp
-            tau_c = 0.0_wp
-            status = HD_BAD_END
-            k = 0.0_wp
-            d = 0.0_wp
-            flags = -1_int64
+            done = .false.
         end select
     end subroutine kernel_invert_kd
 

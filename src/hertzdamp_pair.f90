@@ -47,7 +47,7 @@ module hertzdamp_pair
     use hertzdamp_constants, only: direct_lo => hertzdamp_direct_lo, direct_hi => hertzdamp_direct_hi
     use hertzdamp_scaling, only: hertzdamp_safe_exp, hertzdamp_log_tstar, hertzdamp_log_k, hertzdamp_scale_log_d
     use hertzdamp_methods, only: HD_METHOD_FIT
-    use hertzdamp_fit, only: hertzdamp_fit_inverse, hertzdamp_fit_invert_kd_n
+    use hertzdamp_fit, only: hertzdamp_fit_inverse, hertzdamp_fit_inverse_n, hertzdamp_fit_invert_kd_n
     use hertzdamp_inverse, only: hertzdamp_invert_alpha, hertzdamp_invert_options
     use hertzdamp_host, only: HD_HOST_NONE, HD_HOST_MFIX_AB2, HD_HOST_VERLET, hertzdamp_host_stats, hertzdamp_host_solve
     implicit none
@@ -769,8 +769,10 @@ contains
     end subroutine pair_constants
 
     !> hertzdamp_invert over arrays; tc, m of size 1 are broadcast (the core of the array
-    !> forms): per pass of `chunk` contacts the fit's vectorised kernel (other methods:
-    !> one contact at a time) gives alpha and tau_c, then contacts_kd k and d.
+    !> forms): a pass of `chunk` contacts all valid takes the fit's kernel fused with the
+    !> direct formulas (alpha, tau_c, k and d in one loop), then contacts_rest; another
+    !> pass the fit's vectorised kernel (other methods: one contact at a time) for alpha
+    !> and tau_c, then contacts_kd for k and d (the same bits either way).
     pure subroutine invert_n(e, tc, m, u, iend, k, d, status, alpha, tstar, tau_c, bound_active, k_phys, law, options)
         real(wp), intent(in) :: e(:), tc(:), m(:), u(:)
         integer, intent(in) :: iend
@@ -783,7 +785,7 @@ contains
         type(hertzdamp_invert_options), intent(in), optional :: options
         real(wp) :: ab(chunk), tb(chunk), kpb(chunk), tsb(chunk)
         integer :: gb(chunk)
-        logical :: bb(chunk), fit
+        logical :: bb(chunk), fit, done
         integer(int64) :: flags(chunk)
         integer :: i0, nc, j, law_, n, jt, jm
         n = size(e)
@@ -797,19 +799,24 @@ contains
             jt = start(tc, n, i0)
             jm = start(m, n, i0)
             if (present(k_phys)) kpb(1:nc) = k_phys(i0 + 1:i0 + nc)
+            done = .false.
             if (fit) then
-                ! the fit's kernel fused with the direct formulas (one loop), then the rest of contacts_kd
+                ! contacts all valid: the fit's kernel fused with the direct formulas (one loop)
                 call hertzdamp_fit_invert_kd_n(nc, e(i0 + 1:i0 + nc), iend, law_, tc(jt + 1:jt + nc), &
                                                m(jm + 1:jm + nc), u(i0 + 1:i0 + nc), ab, tb, gb, k(i0 + 1:i0 + nc), &
-                                               d(i0 + 1:i0 + nc), flags)
-                call contacts_rest(nc, law_, HD_HOST_NONE, ab, tb, ab, gb, tc(jt + 1:jt + nc), m(jm + 1:jm + nc), &
-                                   u(i0 + 1:i0 + nc), present(k_phys), kpb, present(tstar), k(i0 + 1:i0 + nc), &
-                                   d(i0 + 1:i0 + nc), tsb, bb, status(i0 + 1:i0 + nc), flags)
+                                               d(i0 + 1:i0 + nc), flags, done)
+                if (.not. done) call hertzdamp_fit_inverse_n(nc, e(i0 + 1:i0 + nc), iend, ab, tb, gb, law_)
             else
                 do j = 1, nc
                     call pair_constants(e(i0 + j), iend, law_, options, tc(jt + j), m(jm + j), u(i0 + j), &
                                         present(k_phys), kpb(j), ab(j), tb(j), gb(j))
                 end do
+            end if
+            if (done) then
+                call contacts_rest(nc, law_, HD_HOST_NONE, ab, tb, ab, gb, tc(jt + 1:jt + nc), m(jm + 1:jm + nc), &
+                                   u(i0 + 1:i0 + nc), present(k_phys), kpb, present(tstar), k(i0 + 1:i0 + nc), &
+                                   d(i0 + 1:i0 + nc), tsb, bb, status(i0 + 1:i0 + nc), flags)
+            else
                 call contacts_kd(nc, law_, HD_HOST_NONE, ab, tb, ab, gb, tc(jt + 1:jt + nc), m(jm + 1:jm + nc), &
                                  u(i0 + 1:i0 + nc), present(k_phys), kpb, present(tstar), k(i0 + 1:i0 + nc), &
                                  d(i0 + 1:i0 + nc), tsb, bb, status(i0 + 1:i0 + nc))

@@ -424,6 +424,112 @@ def inverse_dispatch(one=False):
     return '\n'.join(lines)
 
 
+# ------------------------------------------------------------------ fused with k, d
+PAIR_SOURCE = os.path.join(os.path.dirname(os.path.abspath(__file__)), '..', 'src', 'hertzdamp_pair.f90')
+LAW_CODE = {'linear': 'HD_DAMPING_LINEAR', 'tsuji': 'HD_DAMPING_TSUJI', 'kuwabara-kono': 'HD_DAMPING_KUWABARA_KONO'}
+
+
+def kd_formula():
+    """The text between '! BEGIN kd formula' and '! END kd formula' of src/hertzdamp_pair.f90
+    (the one place of the direct k, d formulas and the masks of the array forms: direct_kd,
+    direct_flags, direct_outside, direct_harmless), marker lines included, dedented."""
+    with open(PAIR_SOURCE) as f:
+        lines = f.read().split('\n')
+    first = [i for i, line in enumerate(lines) if line.strip() == '! BEGIN kd formula']
+    last = [i for i, line in enumerate(lines) if line.strip() == '! END kd formula']
+    if len(first) != 1 or len(last) != 1 or last[0] < first[0]:
+        raise SystemExit('%s: expected one "! BEGIN kd formula" ... "! END kd formula" block' % PAIR_SOURCE)
+    block = lines[first[0]:last[0] + 1]
+    pad = len(block[0]) - len(block[0].lstrip())
+    if any(line[:pad].strip() for line in block):
+        raise SystemExit('%s: the kd formula block is indented less than its marker' % PAIR_SOURCE)
+    return '\n'.join(line[pad:] for line in block)
+
+
+def fused_procedure(kernel, degs):
+    """Inverse kernel fused with the kd formula block, for a pass whose values are all valid
+    (e_min <= e <= 1; T_c, m, u in the direct range): one loop e, T_c, m, u -> alpha, tau_c,
+    status, k, d, flags, the body of inverse_body and then the two statements of the loop of
+    hertzdamp_pair's contacts_kd, with the masks constant (keep all ones, flags 0: every
+    blend the identity, so the same bits as the masked kernel followed by contacts_kd; the
+    compiler folds the masks away).  A pass with an invalid value returns done = .false.
+    and nothing else (the caller takes the masked kernel and contacts_kd)."""
+    code, name, law, end, emin, kind, maps = kernel
+    local = 'x, l, v, t, a, p2' if kind != 'exact' else 'x, l, t, a, p2'
+    head = """\
+!> Inverse kernel %d fused with the direct k, d formulas (direct_kd, copied from
+!> hertzdamp_pair) for n values all valid: alpha, tau_c, status as kernel_inverse_%s, then
+!> k, d and the flags (0) of contacts_kd, in one loop; done = .false. and no outputs when a
+!> value is invalid (e outside [e_min, 1], or T_c, m or u outside the direct range).
+pure subroutine kernel_invert_kd_%s(n, e, tc, m, u, alpha, tau_c, status, k, d, flags, done)
+    integer, intent(in) :: n            !! number of values
+    real(wp), intent(in) :: e(n)        !! restitution coefficients
+    real(wp), intent(in) :: tc(n)       !! contact times [s]
+    real(wp), intent(in) :: m(n)        !! effective masses [kg]
+    real(wp), intent(in) :: u(n)        !! impact velocities [m s^-1]
+    real(wp), intent(out) :: alpha(n)   !! damping parameters
+    real(wp), intent(out) :: tau_c(n)   !! dimensionless contact durations
+    integer, intent(out) :: status(n)   !! HD_OK
+    real(wp), intent(out) :: k(n)       !! stiffnesses of the direct formulas
+    real(wp), intent(out) :: d(n)       !! damping coefficients of the direct formulas
+    integer(int64), intent(out) :: flags(n) !! 0: every value served by the direct formulas
+    logical, intent(out) :: done        !! every value valid, the outputs set
+    integer(int64), parameter :: emin_bits = transfer(%s, 0_int64)
+    real(wp) :: %s
+    integer(int64) :: keep, elastic, valid
+    integer :: i, ip
+""" % (code, name, name, emin, local)
+    body = inverse_body(kernel, degs) + '''
+! k and d: the statements of the loop of hertzdamp_pair's contacts_kd (flags 0: all valid)
+flags(i) = 0_int64
+call direct_kd(%s, alpha(i), direct_harmless(tau_c(i), flags(i)), &
+               direct_harmless(tc(i), flags(i)), direct_harmless(m(i), flags(i)), &
+               direct_harmless(u(i), flags(i)), k(i), d(i))''' % LAW_CODE[law]
+    mask_e = 'keep = keep_mask(outside(e(i), emin_bits, one_bits))'
+    if body.count(mask_e) != 1:
+        raise SystemExit('kernel %s: the mask of e not found' % name)
+    body = body.replace(mask_e, 'keep = -1_int64   ! all valid')
+    fams = sorted({maps[0]} if kind != 'split' else {maps[0][0], maps[1][0]})
+    text = '\n'.join([
+        '! the sign bit of the or of the masks of e and of contacts_kd: an invalid value',
+        'valid = 0_int64',
+        'do i = 1, n',
+        '    valid = ior(valid, ior(outside(e(i), emin_bits, one_bits), direct_flags(0, tc(i), m(i), u(i))))',
+        'end do',
+        'done = valid >= 0_int64',
+        'if (.not. done) return',
+        'do i = 1, n\n%s\nend do' % indent(body, 4)])
+    return head + indent(associated(text, fams), 4) + '\nend subroutine kernel_invert_kd_%s' % name
+
+
+def fused_dispatch():
+    """kernel_invert_kd: the fused kernel of a code (another code: done = .false.)."""
+    lines = ['!> The fused kernel of code ikern for n values all valid (done = .false. and no outputs',
+             '!> when a value is invalid, or for another code).',
+             'pure subroutine kernel_invert_kd(ikern, n, e, tc, m, u, alpha, tau_c, status, k, d, flags, done)',
+             '    integer, intent(in) :: ikern        !! kernel code, kern_*',
+             '    integer, intent(in) :: n            !! number of values',
+             '    real(wp), intent(in) :: e(n)        !! restitution coefficients',
+             '    real(wp), intent(in) :: tc(n)       !! contact times [s]',
+             '    real(wp), intent(in) :: m(n)        !! effective masses [kg]',
+             '    real(wp), intent(in) :: u(n)        !! impact velocities [m s^-1]',
+             '    real(wp), intent(out) :: alpha(n)   !! damping parameters',
+             '    real(wp), intent(out) :: tau_c(n)   !! dimensionless contact durations',
+             '    integer, intent(out) :: status(n)   !! HD_OK',
+             '    real(wp), intent(out) :: k(n)       !! stiffnesses of the direct formulas',
+             '    real(wp), intent(out) :: d(n)       !! damping coefficients of the direct formulas',
+             '    integer(int64), intent(out) :: flags(n) !! 0: every value served by the direct formulas',
+             '    logical, intent(out) :: done        !! every value valid, the outputs set',
+             '    select case (ikern)']
+    for code, name, *_ in INVERSE_KERNELS:
+        lines.append('    case (kern_%s)' % name)
+        lines.append('        call kernel_invert_kd_%s(n, e, tc, m, u, alpha, tau_c, status, k, d, flags, done)' % name)
+    lines += ['    case default',
+              '        done = .false.',
+              '    end select',
+              'end subroutine kernel_invert_kd']
+    return '\n'.join(lines)
+
 # ------------------------------------------------------------------ forward
 def forward_body(end, degs):
     """The forward map of one contact end for one alpha -> e, tau_c, status, z_max,
@@ -720,8 +826,10 @@ def main(argv):
            '    use hertzdamp_kinds, only: hertzdamp_rk',
            '    use hertzdamp_status, only: HD_OK, HD_BAD_END, HD_BAD_ALPHA, HD_BAD_RESTITUTION, HD_OUTSIDE_VALIDITY, &',
            '                                HD_NO_REBOUND',
-           '    use hertzdamp_constants, only: tau_c0 => hertzdamp_tau_c0_value, hertzdamp_pi',
-           '    use hertzdamp_laws, only: HD_DAMPING_TSUJI, HD_DAMPING_KUWABARA_KONO, hertzdamp_alpha_c_tsuji',
+           '    use hertzdamp_constants, only: tau_c0 => hertzdamp_tau_c0_value, hertzdamp_pi, &',
+           '                                   direct_lo => hertzdamp_direct_lo, direct_hi => hertzdamp_direct_hi',
+           '    use hertzdamp_laws, only: HD_DAMPING_LINEAR, HD_DAMPING_TSUJI, HD_DAMPING_KUWABARA_KONO, &',
+           '                              hertzdamp_alpha_c_tsuji',
            '    use hertzdamp_fit_data',
            '    use, intrinsic :: iso_fortran_env, only: int64, real128',
            '    implicit none',
@@ -732,7 +840,8 @@ def main(argv):
            indent(CONSTANTS.replace('{codes}', codes), 4),
            '',
            '    public :: hertzdamp_fit_neg_log, hertzdamp_fit_cbrt, hertzdamp_fit_root5, hertzdamp_fit_exp_neg',
-           '    public :: kernel_inverse, kernel_inverse_one, kernel_forward_overlap, kernel_forward_force',
+           '    public :: kernel_inverse, kernel_inverse_one, kernel_invert_kd, kernel_forward_overlap, &',
+           '              kernel_forward_force',
            '',
            'contains',
            '',
@@ -754,6 +863,15 @@ def main(argv):
         out.append('')
     out.append(indent(inverse_dispatch(one=True), 4))
     out.append('')
+    out.append('    ! ================================================================ inverse kernels fused with k, d')
+    out.append('')
+    out.append(indent(kd_formula(), 4))
+    out.append('')
+    for k in INVERSE_KERNELS:
+        out.append(indent(fused_procedure(k, degs), 4))
+        out.append('')
+    out.append(indent(fused_dispatch(), 4))
+    out.append('')
     out.append('    ! ================================================================ forward kernels')
     for end in ('overlap', 'force'):
         out.append('')
@@ -763,7 +881,8 @@ def main(argv):
     text = '\n'.join(out) + '\n'
     # the names of hertzdamp_fit_data that the kernels read, listed in its use statement
 
-    names = sorted(set(re.findall(r'\bfit_\w+', text.split('contains', 1)[1] + CONSTANTS)))
+    # (the kd formula block of hertzdamp_pair reads none of them; its comments may name files)
+    names = sorted(set(re.findall(r'\bfit_\w+', text.split('contains', 1)[1].replace(indent(kd_formula(), 4), '') + CONSTANTS)))
     lines, cur = [], '    use hertzdamp_fit_data, only: '
     for k, name in enumerate(names):
         item = name + (', ' if k < len(names) - 1 else '')

@@ -47,12 +47,13 @@
 !> forward_body there (linear law) or in hertzdamp_fit_laws).
 module hertzdamp_fit
     use hertzdamp_kinds, only: hertzdamp_rk
+    use, intrinsic :: iso_fortran_env, only: int64
     use hertzdamp_status, only: HD_OK, HD_BAD_END, HD_BAD_ALPHA, HD_OUTSIDE_VALIDITY
     use hertzdamp_ends, only: HD_END_OVERLAP, HD_END_FORCE
     use hertzdamp_laws, only: HD_DAMPING_LINEAR, HD_DAMPING_TSUJI, HD_DAMPING_KUWABARA_KONO, hertzdamp_law_status
     use hertzdamp_fit_data, only: fit_e_min_overlap, fit_e_min_force, fit_alpha_c, fit_alpha_max_force
     use hertzdamp_fit_kernels, only: hertzdamp_fit_neg_log, hertzdamp_fit_cbrt, hertzdamp_fit_exp_neg, &
-                                     hertzdamp_fit_root5, kernel_inverse, kernel_inverse_one, &
+                                     hertzdamp_fit_root5, kernel_inverse, kernel_inverse_one, kernel_invert_kd, &
                                      kernel_forward_overlap, kernel_forward_force, &
                                      kern_linear_overlap, kern_linear_force, kern_tsuji_overlap, kern_tsuji_force, &
                                      kern_kuwabara_kono_overlap, kern_kuwabara_kono_force
@@ -71,6 +72,7 @@ module hertzdamp_fit
     real(wp), parameter, public :: hertzdamp_fit_alpha_max_force = fit_alpha_max_force
 
     public :: hertzdamp_fit_inverse, hertzdamp_fit_inverse_n, hertzdamp_fit_alpha, hertzdamp_fit_tau_c_of_e
+    public :: hertzdamp_fit_invert_kd_n
     public :: hertzdamp_fit_forward, hertzdamp_fit_forward_n, hertzdamp_fit_e, hertzdamp_fit_tau_c
     public :: hertzdamp_approx_alpha_status
     public :: hertzdamp_fit_neg_log, hertzdamp_fit_cbrt, hertzdamp_fit_exp_neg, hertzdamp_fit_root5
@@ -133,6 +135,32 @@ contains
         end if
         call kernel_inverse(ikern, n, e, alpha, tau_c, status)
     end subroutine hertzdamp_fit_inverse_n
+
+    !> hertzdamp_fit_inverse_n fused with the direct k, d formulas of hertzdamp_pair (one
+    !> loop, the array forms of the inverse) for n contacts all valid (e_min <= e <= 1, T_c,
+    !> m, u in the direct range): alpha, tau_c, status as hertzdamp_fit_inverse_n, k, d and
+    !> flags as hertzdamp_pair's contacts_kd makes of them (the same bits).  done = .false.
+    !> and no outputs when a contact is invalid, or the end or the law is.
+    pure subroutine hertzdamp_fit_invert_kd_n(n, e, iend, law, tc, m, u, alpha, tau_c, status, k, d, flags, done)
+        integer, intent(in) :: n                  !! number of values
+        real(wp), intent(in) :: e(n)              !! restitution coefficients
+        integer, intent(in) :: iend               !! HD_END_OVERLAP or HD_END_FORCE
+        integer, intent(in) :: law                !! HD_DAMPING_*
+        real(wp), intent(in) :: tc(n)             !! contact times [s]
+        real(wp), intent(in) :: m(n)              !! effective masses [kg]
+        real(wp), intent(in) :: u(n)              !! impact velocities [m s^-1]
+        real(wp), intent(out) :: alpha(n)         !! damping parameters with e(alpha) = e
+        real(wp), intent(out) :: tau_c(n)         !! dimensionless contact durations tau_c(alpha)
+        integer, intent(out) :: status(n)         !! HD_OK
+        real(wp), intent(out) :: k(n)             !! stiffnesses of the direct formulas
+        real(wp), intent(out) :: d(n)             !! damping coefficients of the direct formulas
+        integer(int64), intent(out) :: flags(n)   !! 0: every contact served by the direct formulas
+        logical, intent(out) :: done              !! every contact valid, the outputs set
+        integer :: ikern, st
+        call inverse_kernel(iend, law, ikern, st)
+        done = .false.
+        if (st == HD_OK) call kernel_invert_kd(ikern, n, e, tc, m, u, alpha, tau_c, status, k, d, flags, done)
+    end subroutine hertzdamp_fit_invert_kd_n
 
     !> The inverse map e -> (alpha, tau_c) of a contact end and damping law.  e must be
     !> finite with e_min <= e <= 1 (e_min = 1e-3 linear overlap, 1e-4 otherwise), else

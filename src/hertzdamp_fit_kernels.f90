@@ -32,8 +32,10 @@ module hertzdamp_fit_kernels
     use hertzdamp_kinds, only: hertzdamp_rk
     use hertzdamp_status, only: HD_OK, HD_BAD_END, HD_BAD_ALPHA, HD_BAD_RESTITUTION, HD_OUTSIDE_VALIDITY, &
                                 HD_NO_REBOUND
-    use hertzdamp_constants, only: tau_c0 => hertzdamp_tau_c0_value, hertzdamp_pi
-    use hertzdamp_laws, only: HD_DAMPING_TSUJI, HD_DAMPING_KUWABARA_KONO, hertzdamp_alpha_c_tsuji
+    use hertzdamp_constants, only: tau_c0 => hertzdamp_tau_c0_value, hertzdamp_pi, &
+                                   direct_lo => hertzdamp_direct_lo, direct_hi => hertzdamp_direct_hi
+    use hertzdamp_laws, only: HD_DAMPING_LINEAR, HD_DAMPING_TSUJI, HD_DAMPING_KUWABARA_KONO, &
+                              hertzdamp_alpha_c_tsuji
     use hertzdamp_fit_data, only: fit_alpha_c, fit_alpha_max_force, fit_e_min_force, fit_e_min_overlap, fit_fwd_c, &
                                   fit_fwd_first, fit_fwd_np, fit_fwd_scale, fit_fwd_x0, fit_fwd_x1, fit_inv_c, &
                                   fit_inv_first, fit_inv_np, fit_inv_scale, fit_inv_x0, fit_law_e_min, fit_linv_c, &
@@ -108,7 +110,8 @@ module hertzdamp_fit_kernels
     real(wp), parameter :: sqrt5 = hertzdamp_alpha_c_tsuji, pi_sq = hertzdamp_pi**2
 
     public :: hertzdamp_fit_neg_log, hertzdamp_fit_cbrt, hertzdamp_fit_root5, hertzdamp_fit_exp_neg
-    public :: kernel_inverse, kernel_inverse_one, kernel_forward_overlap, kernel_forward_force
+    public :: kernel_inverse, kernel_inverse_one, kernel_invert_kd, kernel_forward_overlap, &
+              kernel_forward_force
 
 contains
 
@@ -1196,6 +1199,668 @@ contains
             status = HD_BAD_END
         end select
     end subroutine kernel_inverse_one
+
+    ! ================================================================ inverse kernels fused with k, d
+
+    ! BEGIN kd formula
+    ! The one place of the direct k, d formulas and of the masks of the array forms:
+    ! gen/fit_kernels_f90.py copies the text between these markers into the fused inverse
+    ! kernels of src/hertzdamp_fit_kernels.f90 (test/docs/cli_sync_fit.sh checks the copy).
+
+    !> The direct formulas (T_c, m, u in [1e-30, 1e30]: every intermediate a normal
+    !> double): r = tau_c (1/T_c) = 1/t*, s = (r/u)^(1/2), k = m r^2 s, d = alpha m r (r/u)^q.
+    !> 1/T_c and 1/(T_c u) do not depend on the pair, so that their divisions overlap
+    !> with the rest: only products and square roots follow.
+    pure elemental subroutine direct_kd(law, a, tau, tc, m, u, k, d)
+        integer, value :: law
+        real(wp), intent(in) :: a, tau, tc, m, u
+        real(wp), intent(out) :: k, d
+        real(wp) :: r, s
+        r = tau * (1.0_wp / tc)
+        s = sqrt(tau * (1.0_wp / (tc * u)))
+        k = m * (r * r) * s
+        if (law == HD_DAMPING_LINEAR) then
+            d = a * m * r
+        else if (law == HD_DAMPING_TSUJI) then
+            d = a * m * r * sqrt(s)
+        else
+            d = a * m * r * s
+        end if
+    end subroutine direct_kd
+
+    !> The flags of one contact of the array forms: sign bit set where T_c, m or u is
+    !> outside the direct range or given /= HD_OK (the contact is then redone by
+    !> contact_rest; its inputs to direct_kd are replaced by harmless ones, direct_harmless).
+    pure elemental integer(int64) function direct_flags(given, tc, m, u) result(flags)
+        integer, intent(in) :: given
+        real(wp), intent(in) :: tc, m, u
+        flags = ior(ior(direct_outside(tc), direct_outside(m)), ior(direct_outside(u), -int(given, int64)))
+    end function direct_flags
+
+    !> Sign bit set when x is outside the direct range [1e-30, 1e30] (NaN, infinities, zero,
+    !> negatives included), in integer arithmetic: the magnitude's bit pattern minus that
+    !> of the range's low end is negative below it, and (high - low) minus it is negative
+    !> above it; the sign bit of x itself flags negatives.
+    pure elemental integer(int64) function direct_outside(x)
+        real(wp), intent(in) :: x
+        integer(int64), parameter :: lo_bits = transfer(direct_lo, 0_int64), hi_bits = transfer(direct_hi, 0_int64)
+        integer(int64) :: ix, dx
+        ix = transfer(x, 0_int64)
+        dx = iand(ix, huge(ix)) - lo_bits
+        direct_outside = ior(ix, ior(dx, (hi_bits - lo_bits) - dx))
+    end function direct_outside
+
+    !> x where the sign bit of flags is clear, else 1 (bitwise, no branch): a harmless input
+    !> for a contact the direct formulas do not serve.
+    pure elemental real(wp) function direct_harmless(x, flags)
+        real(wp), intent(in) :: x
+        integer(int64), intent(in) :: flags
+        integer(int64) :: keep
+        keep = not(shifta(flags, 63))
+        direct_harmless = transfer(ior(iand(transfer(x, 0_int64), keep), iand(one_bits, not(keep))), 1.0_wp)
+    end function direct_harmless
+    ! END kd formula
+
+    !> Inverse kernel 1 fused with the direct k, d formulas (direct_kd, copied from
+    !> hertzdamp_pair) for n values all valid: alpha, tau_c, status as kernel_inverse_linear_overlap, then
+    !> k, d and the flags (0) of contacts_kd, in one loop; done = .false. and no outputs when a
+    !> value is invalid (e outside [e_min, 1], or T_c, m or u outside the direct range).
+    pure subroutine kernel_invert_kd_linear_overlap(n, e, tc, m, u, alpha, tau_c, status, k, d, flags, done)
+        integer, intent(in) :: n            !! number of values
+        real(wp), intent(in) :: e(n)        !! restitution coefficients
+        real(wp), intent(in) :: tc(n)       !! contact times [s]
+        real(wp), intent(in) :: m(n)        !! effective masses [kg]
+        real(wp), intent(in) :: u(n)        !! impact velocities [m s^-1]
+        real(wp), intent(out) :: alpha(n)   !! damping parameters
+        real(wp), intent(out) :: tau_c(n)   !! dimensionless contact durations
+        integer, intent(out) :: status(n)   !! HD_OK
+        real(wp), intent(out) :: k(n)       !! stiffnesses of the direct formulas
+        real(wp), intent(out) :: d(n)       !! damping coefficients of the direct formulas
+        integer(int64), intent(out) :: flags(n) !! 0: every value served by the direct formulas
+        logical, intent(out) :: done        !! every value valid, the outputs set
+        integer(int64), parameter :: emin_bits = transfer(fit_e_min_overlap, 0_int64)
+        real(wp) :: x, l, v, t, a, p2
+        integer(int64) :: keep, elastic, valid
+        integer :: i, ip
+        associate (c_inv => fit_inv_c)
+            ! the sign bit of the or of the masks of e and of contacts_kd: an invalid value
+            valid = 0_int64
+            do i = 1, n
+                valid = ior(valid, ior(outside(e(i), emin_bits, one_bits), direct_flags(0, tc(i), m(i), u(i))))
+            end do
+            done = valid >= 0_int64
+            if (.not. done) return
+            do i = 1, n
+                ! keep: all ones where e is valid (e_min <= e <= 1; NaN is not); an invalid e is
+                ! replaced by 0.5, its outputs by 0.  elastic: all ones at e = 1 exactly, where tau_c(0)
+                ! is returned (not the polynomial's value)
+                keep = -1_int64   ! all valid
+                elastic = -shiftr(iand(ieor(transfer(e(i), 0_int64), one_bits), huge(keep)) - 1_int64, 63)
+                x = blend(keep, e(i), 0.5_wp)
+                ! l = -ln x
+                block
+                    integer(int64) :: ix, big
+                    real(wp) :: m, k, f, s, z, z2, z4, r
+                    ix = transfer(x, 0_int64)
+                    big = shiftr(sqrt2_mant_bits - iand(ix, mant_bits), 63)      ! 1 when m would exceed sqrt(2)
+                    m = transfer(ior(iand(ix, mant_bits), one_bits - shiftl(big, 52)), 1.0_wp)
+                    k = transfer(ior(shiftr(ix, 52) + big, two52_bits), 1.0_wp) - (two52 + 1023.0_wp)
+                    f = m - 1.0_wp
+                    s = f / (2.0_wp + f)
+                    z = s * s
+                    z2 = z * z
+                    z4 = z2 * z2
+                    r = ((log_c(1) + log_c(2) * z) + z2 * (log_c(3) + log_c(4) * z)) &
+                        + z4 * (((log_c(5) + log_c(6) * z) + z2 * (log_c(7) + log_c(8) * z)) &
+                        + z4 * (log_c(9) + log_c(10) * z))
+                    r = r * z
+                    l = (0.0_wp - k * ln2_hi) - (k * ln2_lo + (f - s * (f - r)))
+                end block
+                v = l
+                ! alpha/L and tau_c of L (map ov_inv)
+                call locate(v, fit_inv_x0(fit_map_ov_inv), fit_inv_scale(fit_map_ov_inv), &
+                            fit_inv_np(fit_map_ov_inv), fit_inv_first(fit_map_ov_inv), ip, t)
+                ! the two components of the piece
+                block
+                    real(wp) :: t2, t4, t8
+                    t2 = t * t
+                    t4 = t2 * t2
+                    t8 = t4 * t4
+                    a = (((c_inv(0, 1, ip) + c_inv(1, 1, ip) * t) + t2 * (c_inv(2, 1, ip) + c_inv(3, 1, ip) * t)) &
+                        + t4 * ((c_inv(4, 1, ip) + c_inv(5, 1, ip) * t) + t2 * (c_inv(6, 1, ip) + c_inv(7, 1, ip) * t))) &
+                        + t8 * (c_inv(8, 1, ip) + c_inv(9, 1, ip) * t)
+                    p2 = (((c_inv(0, 2, ip) + c_inv(1, 2, ip) * t) + t2 * (c_inv(2, 2, ip) + c_inv(3, 2, ip) * t)) &
+                         + t4 * ((c_inv(4, 2, ip) + c_inv(5, 2, ip) * t) &
+                         + t2 * (c_inv(6, 2, ip) + c_inv(7, 2, ip) * t))) + t8 * (c_inv(8, 2, ip) + c_inv(9, 2, ip) * t)
+                end block
+                alpha(i) = blend(keep, l * a, 0.0_wp)
+                tau_c(i) = blend(keep, blend(elastic, tau_c0, p2), 0.0_wp)
+                status(i) = int(iand(not(keep), int(HD_BAD_RESTITUTION, int64)))
+                ! k and d: the statements of the loop of hertzdamp_pair's contacts_kd (flags 0: all valid)
+                flags(i) = 0_int64
+                call direct_kd(HD_DAMPING_LINEAR, alpha(i), direct_harmless(tau_c(i), flags(i)), &
+                               direct_harmless(tc(i), flags(i)), direct_harmless(m(i), flags(i)), &
+                               direct_harmless(u(i), flags(i)), k(i), d(i))
+            end do
+        end associate
+    end subroutine kernel_invert_kd_linear_overlap
+
+    !> Inverse kernel 2 fused with the direct k, d formulas (direct_kd, copied from
+    !> hertzdamp_pair) for n values all valid: alpha, tau_c, status as kernel_inverse_linear_force, then
+    !> k, d and the flags (0) of contacts_kd, in one loop; done = .false. and no outputs when a
+    !> value is invalid (e outside [e_min, 1], or T_c, m or u outside the direct range).
+    pure subroutine kernel_invert_kd_linear_force(n, e, tc, m, u, alpha, tau_c, status, k, d, flags, done)
+        integer, intent(in) :: n            !! number of values
+        real(wp), intent(in) :: e(n)        !! restitution coefficients
+        real(wp), intent(in) :: tc(n)       !! contact times [s]
+        real(wp), intent(in) :: m(n)        !! effective masses [kg]
+        real(wp), intent(in) :: u(n)        !! impact velocities [m s^-1]
+        real(wp), intent(out) :: alpha(n)   !! damping parameters
+        real(wp), intent(out) :: tau_c(n)   !! dimensionless contact durations
+        integer, intent(out) :: status(n)   !! HD_OK
+        real(wp), intent(out) :: k(n)       !! stiffnesses of the direct formulas
+        real(wp), intent(out) :: d(n)       !! damping coefficients of the direct formulas
+        integer(int64), intent(out) :: flags(n) !! 0: every value served by the direct formulas
+        logical, intent(out) :: done        !! every value valid, the outputs set
+        integer(int64), parameter :: emin_bits = transfer(fit_e_min_force, 0_int64)
+        real(wp) :: x, l, v, t, a, p2
+        integer(int64) :: keep, elastic, valid
+        integer :: i, ip
+        associate (c_inv => fit_inv_c)
+            ! the sign bit of the or of the masks of e and of contacts_kd: an invalid value
+            valid = 0_int64
+            do i = 1, n
+                valid = ior(valid, ior(outside(e(i), emin_bits, one_bits), direct_flags(0, tc(i), m(i), u(i))))
+            end do
+            done = valid >= 0_int64
+            if (.not. done) return
+            do i = 1, n
+                ! keep: all ones where e is valid (e_min <= e <= 1; NaN is not); an invalid e is
+                ! replaced by 0.5, its outputs by 0.  elastic: all ones at e = 1 exactly, where tau_c(0)
+                ! is returned (not the polynomial's value)
+                keep = -1_int64   ! all valid
+                elastic = -shiftr(iand(ieor(transfer(e(i), 0_int64), one_bits), huge(keep)) - 1_int64, 63)
+                x = blend(keep, e(i), 0.5_wp)
+                ! l = -ln x
+                block
+                    integer(int64) :: ix, big
+                    real(wp) :: m, k, f, s, z, z2, z4, r
+                    ix = transfer(x, 0_int64)
+                    big = shiftr(sqrt2_mant_bits - iand(ix, mant_bits), 63)      ! 1 when m would exceed sqrt(2)
+                    m = transfer(ior(iand(ix, mant_bits), one_bits - shiftl(big, 52)), 1.0_wp)
+                    k = transfer(ior(shiftr(ix, 52) + big, two52_bits), 1.0_wp) - (two52 + 1023.0_wp)
+                    f = m - 1.0_wp
+                    s = f / (2.0_wp + f)
+                    z = s * s
+                    z2 = z * z
+                    z4 = z2 * z2
+                    r = ((log_c(1) + log_c(2) * z) + z2 * (log_c(3) + log_c(4) * z)) &
+                        + z4 * (((log_c(5) + log_c(6) * z) + z2 * (log_c(7) + log_c(8) * z)) &
+                        + z4 * (log_c(9) + log_c(10) * z))
+                    r = r * z
+                    l = (0.0_wp - k * ln2_hi) - (k * ln2_lo + (f - s * (f - r)))
+                end block
+                ! v = l^(1/3)
+                block
+                    integer(int64) :: ix, nz
+                    real(wp) :: k, q, r, m, w, g, g3
+                    ix = iand(transfer(l, 0_int64), huge(ix))             ! -0 as +0 (and no overflow in -ix)
+                    nz = shifta(-ix, 63)                                    ! all ones when the argument > 0
+                    ix = ior(iand(ix, nz), iand(one_bits, not(nz)))         ! 0 -> 1 (no exceptions)
+                    k = transfer(ior(shiftr(ix, 52), two52_bits), 1.0_wp) - two52      ! biased exponent
+                    q = (((k + 0.5_wp) * third - 0.5_wp) + shifter) - shifter           ! floor(k / 3)
+                    r = k - 3.0_wp * q                                      ! 0, 1 or 2
+                    m = transfer(ior(iand(ix, mant_bits), one_bits), 1.0_wp)
+                    w = m * (1.0_wp + r + 0.5_wp * r * (r - 1.0_wp))       ! m 2^r, exact
+                    g = (1.0_wp + (m - 1.0_wp) * (cb_d1 + (m - cb_x1) * cb_d2)) * (1.0_wp + r * (cr_d1 + (r - 1.0_wp) * cr_d2))
+                    g3 = g * g * g
+                    g = g + g * (w - g3) / (2.0_wp * g3 + w)
+                    g3 = g * g * g
+                    g = g + g * (w - g3) / (2.0_wp * g3 + w)
+                    ! times 2^(q - 341) (the biased exponent is 3q + r), from its exponent field
+                    g = g * transfer(shiftl(transfer(q + (two52 + 682.0_wp), 0_int64) - two52_bits, 52), 1.0_wp)
+                    v = transfer(iand(transfer(g, 0_int64), nz), 1.0_wp)   ! 0 gives +0
+                end block
+                ! alpha/L and tau_c of L^(1/3) (map fo_inv)
+                call locate(v, fit_inv_x0(fit_map_fo_inv), fit_inv_scale(fit_map_fo_inv), &
+                            fit_inv_np(fit_map_fo_inv), fit_inv_first(fit_map_fo_inv), ip, t)
+                ! the two components of the piece
+                block
+                    real(wp) :: t2, t4, t8
+                    t2 = t * t
+                    t4 = t2 * t2
+                    t8 = t4 * t4
+                    a = (((c_inv(0, 1, ip) + c_inv(1, 1, ip) * t) + t2 * (c_inv(2, 1, ip) + c_inv(3, 1, ip) * t)) &
+                        + t4 * ((c_inv(4, 1, ip) + c_inv(5, 1, ip) * t) + t2 * (c_inv(6, 1, ip) + c_inv(7, 1, ip) * t))) &
+                        + t8 * (c_inv(8, 1, ip) + c_inv(9, 1, ip) * t)
+                    p2 = (((c_inv(0, 2, ip) + c_inv(1, 2, ip) * t) + t2 * (c_inv(2, 2, ip) + c_inv(3, 2, ip) * t)) &
+                         + t4 * ((c_inv(4, 2, ip) + c_inv(5, 2, ip) * t) &
+                         + t2 * (c_inv(6, 2, ip) + c_inv(7, 2, ip) * t))) + t8 * (c_inv(8, 2, ip) + c_inv(9, 2, ip) * t)
+                end block
+                alpha(i) = blend(keep, l * a, 0.0_wp)
+                tau_c(i) = blend(keep, blend(elastic, tau_c0, p2), 0.0_wp)
+                status(i) = int(iand(not(keep), int(HD_BAD_RESTITUTION, int64)))
+                ! k and d: the statements of the loop of hertzdamp_pair's contacts_kd (flags 0: all valid)
+                flags(i) = 0_int64
+                call direct_kd(HD_DAMPING_LINEAR, alpha(i), direct_harmless(tau_c(i), flags(i)), &
+                               direct_harmless(tc(i), flags(i)), direct_harmless(m(i), flags(i)), &
+                               direct_harmless(u(i), flags(i)), k(i), d(i))
+            end do
+        end associate
+    end subroutine kernel_invert_kd_linear_force
+
+    !> Inverse kernel 3 fused with the direct k, d formulas (direct_kd, copied from
+    !> hertzdamp_pair) for n values all valid: alpha, tau_c, status as kernel_inverse_tsuji_overlap, then
+    !> k, d and the flags (0) of contacts_kd, in one loop; done = .false. and no outputs when a
+    !> value is invalid (e outside [e_min, 1], or T_c, m or u outside the direct range).
+    pure subroutine kernel_invert_kd_tsuji_overlap(n, e, tc, m, u, alpha, tau_c, status, k, d, flags, done)
+        integer, intent(in) :: n            !! number of values
+        real(wp), intent(in) :: e(n)        !! restitution coefficients
+        real(wp), intent(in) :: tc(n)       !! contact times [s]
+        real(wp), intent(in) :: m(n)        !! effective masses [kg]
+        real(wp), intent(in) :: u(n)        !! impact velocities [m s^-1]
+        real(wp), intent(out) :: alpha(n)   !! damping parameters
+        real(wp), intent(out) :: tau_c(n)   !! dimensionless contact durations
+        integer, intent(out) :: status(n)   !! HD_OK
+        real(wp), intent(out) :: k(n)       !! stiffnesses of the direct formulas
+        real(wp), intent(out) :: d(n)       !! damping coefficients of the direct formulas
+        integer(int64), intent(out) :: flags(n) !! 0: every value served by the direct formulas
+        logical, intent(out) :: done        !! every value valid, the outputs set
+        integer(int64), parameter :: emin_bits = transfer(fit_law_e_min, 0_int64)
+        real(wp) :: x, l, t, a, p2
+        integer(int64) :: keep, elastic, valid
+        integer :: i, ip
+        associate (c_one => fit_one_c)
+            ! the sign bit of the or of the masks of e and of contacts_kd: an invalid value
+            valid = 0_int64
+            do i = 1, n
+                valid = ior(valid, ior(outside(e(i), emin_bits, one_bits), direct_flags(0, tc(i), m(i), u(i))))
+            end do
+            done = valid >= 0_int64
+            if (.not. done) return
+            do i = 1, n
+                ! keep: all ones where e is valid (e_min <= e <= 1; NaN is not); an invalid e is
+                ! replaced by 0.5, its outputs by 0.  elastic: all ones at e = 1 exactly, where tau_c(0)
+                ! is returned (not the polynomial's value)
+                keep = -1_int64   ! all valid
+                elastic = -shiftr(iand(ieor(transfer(e(i), 0_int64), one_bits), huge(keep)) - 1_int64, 63)
+                x = blend(keep, e(i), 0.5_wp)
+                ! l = -ln x
+                block
+                    integer(int64) :: ix, big
+                    real(wp) :: m, k, f, s, z, z2, z4, r
+                    ix = transfer(x, 0_int64)
+                    big = shiftr(sqrt2_mant_bits - iand(ix, mant_bits), 63)      ! 1 when m would exceed sqrt(2)
+                    m = transfer(ior(iand(ix, mant_bits), one_bits - shiftl(big, 52)), 1.0_wp)
+                    k = transfer(ior(shiftr(ix, 52) + big, two52_bits), 1.0_wp) - (two52 + 1023.0_wp)
+                    f = m - 1.0_wp
+                    s = f / (2.0_wp + f)
+                    z = s * s
+                    z2 = z * z
+                    z4 = z2 * z2
+                    r = ((log_c(1) + log_c(2) * z) + z2 * (log_c(3) + log_c(4) * z)) &
+                        + z4 * (((log_c(5) + log_c(6) * z) + z2 * (log_c(7) + log_c(8) * z)) &
+                        + z4 * (log_c(9) + log_c(10) * z))
+                    r = r * z
+                    l = (0.0_wp - k * ln2_hi) - (k * ln2_lo + (f - s * (f - r)))
+                end block
+                ! alpha/L exactly: sqrt(5) / sqrt(pi^2 + L^2) (Antypov & Elliott 2011); tau_c of L (map ts_ov_inv_t)
+                a = sqrt5 / sqrt(pi_sq + l * l)
+                call locate(l, fit_one_x0(fit_map_ts_ov_inv_t), fit_one_scale(fit_map_ts_ov_inv_t), &
+                            fit_one_np(fit_map_ts_ov_inv_t), fit_one_first(fit_map_ts_ov_inv_t), ip, t)
+                ! tau_c
+                block
+                    real(wp) :: t2, t4, t8
+                    t2 = t * t
+                    t4 = t2 * t2
+                    t8 = t4 * t4
+                    p2 = (((c_one(0, 1, ip) + c_one(1, 1, ip) * t) + t2 * (c_one(2, 1, ip) + c_one(3, 1, ip) * t)) &
+                         + t4 * ((c_one(4, 1, ip) + c_one(5, 1, ip) * t) &
+                         + t2 * (c_one(6, 1, ip) + c_one(7, 1, ip) * t))) &
+                         + t8 * ((c_one(8, 1, ip) + c_one(9, 1, ip) * t) &
+                         + t2 * (c_one(10, 1, ip) + c_one(11, 1, ip) * t))
+                end block
+                alpha(i) = blend(keep, l * a, 0.0_wp)
+                tau_c(i) = blend(keep, blend(elastic, tau_c0, p2), 0.0_wp)
+                status(i) = int(iand(not(keep), int(HD_BAD_RESTITUTION, int64)))
+                ! k and d: the statements of the loop of hertzdamp_pair's contacts_kd (flags 0: all valid)
+                flags(i) = 0_int64
+                call direct_kd(HD_DAMPING_TSUJI, alpha(i), direct_harmless(tau_c(i), flags(i)), &
+                               direct_harmless(tc(i), flags(i)), direct_harmless(m(i), flags(i)), &
+                               direct_harmless(u(i), flags(i)), k(i), d(i))
+            end do
+        end associate
+    end subroutine kernel_invert_kd_tsuji_overlap
+
+    !> Inverse kernel 4 fused with the direct k, d formulas (direct_kd, copied from
+    !> hertzdamp_pair) for n values all valid: alpha, tau_c, status as kernel_inverse_tsuji_force, then
+    !> k, d and the flags (0) of contacts_kd, in one loop; done = .false. and no outputs when a
+    !> value is invalid (e outside [e_min, 1], or T_c, m or u outside the direct range).
+    pure subroutine kernel_invert_kd_tsuji_force(n, e, tc, m, u, alpha, tau_c, status, k, d, flags, done)
+        integer, intent(in) :: n            !! number of values
+        real(wp), intent(in) :: e(n)        !! restitution coefficients
+        real(wp), intent(in) :: tc(n)       !! contact times [s]
+        real(wp), intent(in) :: m(n)        !! effective masses [kg]
+        real(wp), intent(in) :: u(n)        !! impact velocities [m s^-1]
+        real(wp), intent(out) :: alpha(n)   !! damping parameters
+        real(wp), intent(out) :: tau_c(n)   !! dimensionless contact durations
+        integer, intent(out) :: status(n)   !! HD_OK
+        real(wp), intent(out) :: k(n)       !! stiffnesses of the direct formulas
+        real(wp), intent(out) :: d(n)       !! damping coefficients of the direct formulas
+        integer(int64), intent(out) :: flags(n) !! 0: every value served by the direct formulas
+        logical, intent(out) :: done        !! every value valid, the outputs set
+        integer(int64), parameter :: emin_bits = transfer(fit_law_e_min, 0_int64)
+        real(wp) :: x, l, v, t, a, p2
+        integer(int64) :: keep, elastic, valid
+        integer :: i, ip
+        associate (c_one => fit_one_c)
+            ! the sign bit of the or of the masks of e and of contacts_kd: an invalid value
+            valid = 0_int64
+            do i = 1, n
+                valid = ior(valid, ior(outside(e(i), emin_bits, one_bits), direct_flags(0, tc(i), m(i), u(i))))
+            end do
+            done = valid >= 0_int64
+            if (.not. done) return
+            do i = 1, n
+                ! keep: all ones where e is valid (e_min <= e <= 1; NaN is not); an invalid e is
+                ! replaced by 0.5, its outputs by 0.  elastic: all ones at e = 1 exactly, where tau_c(0)
+                ! is returned (not the polynomial's value)
+                keep = -1_int64   ! all valid
+                elastic = -shiftr(iand(ieor(transfer(e(i), 0_int64), one_bits), huge(keep)) - 1_int64, 63)
+                x = blend(keep, e(i), 0.5_wp)
+                ! l = -ln x
+                block
+                    integer(int64) :: ix, big
+                    real(wp) :: m, k, f, s, z, z2, z4, r
+                    ix = transfer(x, 0_int64)
+                    big = shiftr(sqrt2_mant_bits - iand(ix, mant_bits), 63)      ! 1 when m would exceed sqrt(2)
+                    m = transfer(ior(iand(ix, mant_bits), one_bits - shiftl(big, 52)), 1.0_wp)
+                    k = transfer(ior(shiftr(ix, 52) + big, two52_bits), 1.0_wp) - (two52 + 1023.0_wp)
+                    f = m - 1.0_wp
+                    s = f / (2.0_wp + f)
+                    z = s * s
+                    z2 = z * z
+                    z4 = z2 * z2
+                    r = ((log_c(1) + log_c(2) * z) + z2 * (log_c(3) + log_c(4) * z)) &
+                        + z4 * (((log_c(5) + log_c(6) * z) + z2 * (log_c(7) + log_c(8) * z)) &
+                        + z4 * (log_c(9) + log_c(10) * z))
+                    r = r * z
+                    l = (0.0_wp - k * ln2_hi) - (k * ln2_lo + (f - s * (f - r)))
+                end block
+                ! alpha/L of L (map ts_fo_inv_a)
+                call locate(l, fit_one_x0(fit_map_ts_fo_inv_a), fit_one_scale(fit_map_ts_fo_inv_a), &
+                            fit_one_np(fit_map_ts_fo_inv_a), fit_one_first(fit_map_ts_fo_inv_a), ip, t)
+                ! alpha/L
+                block
+                    real(wp) :: t2, t4, t8
+                    t2 = t * t
+                    t4 = t2 * t2
+                    t8 = t4 * t4
+                    a = (((c_one(0, 1, ip) + c_one(1, 1, ip) * t) + t2 * (c_one(2, 1, ip) + c_one(3, 1, ip) * t)) &
+                        + t4 * ((c_one(4, 1, ip) + c_one(5, 1, ip) * t) + t2 * (c_one(6, 1, ip) + c_one(7, 1, ip) * t))) &
+                        + t8 * ((c_one(8, 1, ip) + c_one(9, 1, ip) * t) &
+                        + t2 * (c_one(10, 1, ip) + c_one(11, 1, ip) * t))
+                end block
+                ! v = l^(1/5)
+                block
+                    integer(int64) :: ix, nz
+                    real(wp) :: k, q, r, m, w, g, g2, g5
+                    ix = iand(transfer(l, 0_int64), huge(ix))             ! -0 as +0 (and no overflow in -ix)
+                    nz = shifta(-ix, 63)                                    ! all ones when the argument > 0
+                    ix = ior(iand(ix, nz), iand(one_bits, not(nz)))         ! 0 -> 1 (no exceptions)
+                    k = transfer(ior(shiftr(ix, 52), two52_bits), 1.0_wp) - two52      ! biased exponent
+                    q = (((k + 2.5_wp) * fifth - 0.5_wp) + shifter) - shifter           ! floor((k + 2) / 5)
+                    r = (k + 2.0_wp) - 5.0_wp * q                           ! 0, 1, 2, 3 or 4
+                    m = transfer(ior(iand(ix, mant_bits), one_bits), 1.0_wp)
+                    w = m * transfer(shiftl(transfer(r + two52, 0_int64) - two52_bits + 1023_int64, 52), 1.0_wp)   ! m 2^r, exact
+                    g = (1.0_wp + (m - 1.0_wp) * (r5_d1 + (m - r5_x1) * r5_d2)) &
+                        * (1.0_wp + r * (p5_d(1) + (r - 1.0_wp) * (p5_d(2) + (r - 2.0_wp) * (p5_d(3) + (r - 3.0_wp) * p5_d(4)))))
+                    g2 = g * g
+                    g5 = g2 * g2 * g
+                    g = g + g * (w - g5) / (3.0_wp * g5 + 2.0_wp * w)
+                    g2 = g * g
+                    g5 = g2 * g2 * g
+                    g = g + g * (w - g5) / (3.0_wp * g5 + 2.0_wp * w)
+                    ! times 2^(q - 205), from its exponent field q + 818
+                    g = g * transfer(shiftl(transfer(q + (two52 + 818.0_wp), 0_int64) - two52_bits, 52), 1.0_wp)
+                    v = transfer(iand(transfer(g, 0_int64), nz), 1.0_wp)   ! 0 gives +0
+                end block
+                ! tau_c of L^(1/5) (map ts_fo_inv_t)
+                call locate(v, fit_one_x0(fit_map_ts_fo_inv_t), fit_one_scale(fit_map_ts_fo_inv_t), &
+                            fit_one_np(fit_map_ts_fo_inv_t), fit_one_first(fit_map_ts_fo_inv_t), ip, t)
+                ! tau_c
+                block
+                    real(wp) :: t2, t4, t8
+                    t2 = t * t
+                    t4 = t2 * t2
+                    t8 = t4 * t4
+                    p2 = (((c_one(0, 1, ip) + c_one(1, 1, ip) * t) + t2 * (c_one(2, 1, ip) + c_one(3, 1, ip) * t)) &
+                         + t4 * ((c_one(4, 1, ip) + c_one(5, 1, ip) * t) &
+                         + t2 * (c_one(6, 1, ip) + c_one(7, 1, ip) * t))) &
+                         + t8 * ((c_one(8, 1, ip) + c_one(9, 1, ip) * t) &
+                         + t2 * (c_one(10, 1, ip) + c_one(11, 1, ip) * t))
+                end block
+                alpha(i) = blend(keep, l * a, 0.0_wp)
+                tau_c(i) = blend(keep, blend(elastic, tau_c0, p2), 0.0_wp)
+                status(i) = int(iand(not(keep), int(HD_BAD_RESTITUTION, int64)))
+                ! k and d: the statements of the loop of hertzdamp_pair's contacts_kd (flags 0: all valid)
+                flags(i) = 0_int64
+                call direct_kd(HD_DAMPING_TSUJI, alpha(i), direct_harmless(tau_c(i), flags(i)), &
+                               direct_harmless(tc(i), flags(i)), direct_harmless(m(i), flags(i)), &
+                               direct_harmless(u(i), flags(i)), k(i), d(i))
+            end do
+        end associate
+    end subroutine kernel_invert_kd_tsuji_force
+
+    !> Inverse kernel 5 fused with the direct k, d formulas (direct_kd, copied from
+    !> hertzdamp_pair) for n values all valid: alpha, tau_c, status as kernel_inverse_kuwabara_kono_overlap, then
+    !> k, d and the flags (0) of contacts_kd, in one loop; done = .false. and no outputs when a
+    !> value is invalid (e outside [e_min, 1], or T_c, m or u outside the direct range).
+    pure subroutine kernel_invert_kd_kuwabara_kono_overlap(n, e, tc, m, u, alpha, tau_c, status, k, d, flags, done)
+        integer, intent(in) :: n            !! number of values
+        real(wp), intent(in) :: e(n)        !! restitution coefficients
+        real(wp), intent(in) :: tc(n)       !! contact times [s]
+        real(wp), intent(in) :: m(n)        !! effective masses [kg]
+        real(wp), intent(in) :: u(n)        !! impact velocities [m s^-1]
+        real(wp), intent(out) :: alpha(n)   !! damping parameters
+        real(wp), intent(out) :: tau_c(n)   !! dimensionless contact durations
+        integer, intent(out) :: status(n)   !! HD_OK
+        real(wp), intent(out) :: k(n)       !! stiffnesses of the direct formulas
+        real(wp), intent(out) :: d(n)       !! damping coefficients of the direct formulas
+        integer(int64), intent(out) :: flags(n) !! 0: every value served by the direct formulas
+        logical, intent(out) :: done        !! every value valid, the outputs set
+        integer(int64), parameter :: emin_bits = transfer(fit_law_e_min, 0_int64)
+        real(wp) :: x, l, v, t, a, p2
+        integer(int64) :: keep, elastic, valid
+        integer :: i, ip
+        associate (c_linv => fit_linv_c)
+            ! the sign bit of the or of the masks of e and of contacts_kd: an invalid value
+            valid = 0_int64
+            do i = 1, n
+                valid = ior(valid, ior(outside(e(i), emin_bits, one_bits), direct_flags(0, tc(i), m(i), u(i))))
+            end do
+            done = valid >= 0_int64
+            if (.not. done) return
+            do i = 1, n
+                ! keep: all ones where e is valid (e_min <= e <= 1; NaN is not); an invalid e is
+                ! replaced by 0.5, its outputs by 0.  elastic: all ones at e = 1 exactly, where tau_c(0)
+                ! is returned (not the polynomial's value)
+                keep = -1_int64   ! all valid
+                elastic = -shiftr(iand(ieor(transfer(e(i), 0_int64), one_bits), huge(keep)) - 1_int64, 63)
+                x = blend(keep, e(i), 0.5_wp)
+                ! l = -ln x
+                block
+                    integer(int64) :: ix, big
+                    real(wp) :: m, k, f, s, z, z2, z4, r
+                    ix = transfer(x, 0_int64)
+                    big = shiftr(sqrt2_mant_bits - iand(ix, mant_bits), 63)      ! 1 when m would exceed sqrt(2)
+                    m = transfer(ior(iand(ix, mant_bits), one_bits - shiftl(big, 52)), 1.0_wp)
+                    k = transfer(ior(shiftr(ix, 52) + big, two52_bits), 1.0_wp) - (two52 + 1023.0_wp)
+                    f = m - 1.0_wp
+                    s = f / (2.0_wp + f)
+                    z = s * s
+                    z2 = z * z
+                    z4 = z2 * z2
+                    r = ((log_c(1) + log_c(2) * z) + z2 * (log_c(3) + log_c(4) * z)) &
+                        + z4 * (((log_c(5) + log_c(6) * z) + z2 * (log_c(7) + log_c(8) * z)) &
+                        + z4 * (log_c(9) + log_c(10) * z))
+                    r = r * z
+                    l = (0.0_wp - k * ln2_hi) - (k * ln2_lo + (f - s * (f - r)))
+                end block
+                v = l
+                ! alpha/L and tau_c of L (map kk_ov_inv)
+                call locate(v, fit_linv_x0(fit_map_kk_ov_inv), fit_linv_scale(fit_map_kk_ov_inv), &
+                            fit_linv_np(fit_map_kk_ov_inv), fit_linv_first(fit_map_kk_ov_inv), ip, t)
+                ! the two components of the piece
+                block
+                    real(wp) :: t2, t4, t8
+                    t2 = t * t
+                    t4 = t2 * t2
+                    t8 = t4 * t4
+                    a = (((c_linv(0, 1, ip) + c_linv(1, 1, ip) * t) + t2 * (c_linv(2, 1, ip) + c_linv(3, 1, ip) * t)) &
+                        + t4 * ((c_linv(4, 1, ip) + c_linv(5, 1, ip) * t) &
+                        + t2 * (c_linv(6, 1, ip) + c_linv(7, 1, ip) * t))) &
+                        + t8 * ((c_linv(8, 1, ip) + c_linv(9, 1, ip) * t) &
+                        + t2 * (c_linv(10, 1, ip) + c_linv(11, 1, ip) * t))
+                    p2 = (((c_linv(0, 2, ip) + c_linv(1, 2, ip) * t) + t2 * (c_linv(2, 2, ip) + c_linv(3, 2, ip) * t)) &
+                         + t4 * ((c_linv(4, 2, ip) + c_linv(5, 2, ip) * t) &
+                         + t2 * (c_linv(6, 2, ip) + c_linv(7, 2, ip) * t))) &
+                         + t8 * ((c_linv(8, 2, ip) + c_linv(9, 2, ip) * t) &
+                         + t2 * (c_linv(10, 2, ip) + c_linv(11, 2, ip) * t))
+                end block
+                alpha(i) = blend(keep, l * a, 0.0_wp)
+                tau_c(i) = blend(keep, blend(elastic, tau_c0, p2), 0.0_wp)
+                status(i) = int(iand(not(keep), int(HD_BAD_RESTITUTION, int64)))
+                ! k and d: the statements of the loop of hertzdamp_pair's contacts_kd (flags 0: all valid)
+                flags(i) = 0_int64
+                call direct_kd(HD_DAMPING_KUWABARA_KONO, alpha(i), direct_harmless(tau_c(i), flags(i)), &
+                               direct_harmless(tc(i), flags(i)), direct_harmless(m(i), flags(i)), &
+                               direct_harmless(u(i), flags(i)), k(i), d(i))
+            end do
+        end associate
+    end subroutine kernel_invert_kd_kuwabara_kono_overlap
+
+    !> Inverse kernel 6 fused with the direct k, d formulas (direct_kd, copied from
+    !> hertzdamp_pair) for n values all valid: alpha, tau_c, status as kernel_inverse_kuwabara_kono_force, then
+    !> k, d and the flags (0) of contacts_kd, in one loop; done = .false. and no outputs when a
+    !> value is invalid (e outside [e_min, 1], or T_c, m or u outside the direct range).
+    pure subroutine kernel_invert_kd_kuwabara_kono_force(n, e, tc, m, u, alpha, tau_c, status, k, d, flags, done)
+        integer, intent(in) :: n            !! number of values
+        real(wp), intent(in) :: e(n)        !! restitution coefficients
+        real(wp), intent(in) :: tc(n)       !! contact times [s]
+        real(wp), intent(in) :: m(n)        !! effective masses [kg]
+        real(wp), intent(in) :: u(n)        !! impact velocities [m s^-1]
+        real(wp), intent(out) :: alpha(n)   !! damping parameters
+        real(wp), intent(out) :: tau_c(n)   !! dimensionless contact durations
+        integer, intent(out) :: status(n)   !! HD_OK
+        real(wp), intent(out) :: k(n)       !! stiffnesses of the direct formulas
+        real(wp), intent(out) :: d(n)       !! damping coefficients of the direct formulas
+        integer(int64), intent(out) :: flags(n) !! 0: every value served by the direct formulas
+        logical, intent(out) :: done        !! every value valid, the outputs set
+        integer(int64), parameter :: emin_bits = transfer(fit_law_e_min, 0_int64)
+        real(wp) :: x, l, v, t, a, p2
+        integer(int64) :: keep, elastic, valid
+        integer :: i, ip
+        associate (c_linv => fit_linv_c)
+            ! the sign bit of the or of the masks of e and of contacts_kd: an invalid value
+            valid = 0_int64
+            do i = 1, n
+                valid = ior(valid, ior(outside(e(i), emin_bits, one_bits), direct_flags(0, tc(i), m(i), u(i))))
+            end do
+            done = valid >= 0_int64
+            if (.not. done) return
+            do i = 1, n
+                ! keep: all ones where e is valid (e_min <= e <= 1; NaN is not); an invalid e is
+                ! replaced by 0.5, its outputs by 0.  elastic: all ones at e = 1 exactly, where tau_c(0)
+                ! is returned (not the polynomial's value)
+                keep = -1_int64   ! all valid
+                elastic = -shiftr(iand(ieor(transfer(e(i), 0_int64), one_bits), huge(keep)) - 1_int64, 63)
+                x = blend(keep, e(i), 0.5_wp)
+                ! l = -ln x
+                block
+                    integer(int64) :: ix, big
+                    real(wp) :: m, k, f, s, z, z2, z4, r
+                    ix = transfer(x, 0_int64)
+                    big = shiftr(sqrt2_mant_bits - iand(ix, mant_bits), 63)      ! 1 when m would exceed sqrt(2)
+                    m = transfer(ior(iand(ix, mant_bits), one_bits - shiftl(big, 52)), 1.0_wp)
+                    k = transfer(ior(shiftr(ix, 52) + big, two52_bits), 1.0_wp) - (two52 + 1023.0_wp)
+                    f = m - 1.0_wp
+                    s = f / (2.0_wp + f)
+                    z = s * s
+                    z2 = z * z
+                    z4 = z2 * z2
+                    r = ((log_c(1) + log_c(2) * z) + z2 * (log_c(3) + log_c(4) * z)) &
+                        + z4 * (((log_c(5) + log_c(6) * z) + z2 * (log_c(7) + log_c(8) * z)) &
+                        + z4 * (log_c(9) + log_c(10) * z))
+                    r = r * z
+                    l = (0.0_wp - k * ln2_hi) - (k * ln2_lo + (f - s * (f - r)))
+                end block
+                v = sqrt(l)
+                ! alpha/L and tau_c of L^(1/2) (map kk_fo_inv)
+                call locate(v, fit_linv_x0(fit_map_kk_fo_inv), fit_linv_scale(fit_map_kk_fo_inv), &
+                            fit_linv_np(fit_map_kk_fo_inv), fit_linv_first(fit_map_kk_fo_inv), ip, t)
+                ! the two components of the piece
+                block
+                    real(wp) :: t2, t4, t8
+                    t2 = t * t
+                    t4 = t2 * t2
+                    t8 = t4 * t4
+                    a = (((c_linv(0, 1, ip) + c_linv(1, 1, ip) * t) + t2 * (c_linv(2, 1, ip) + c_linv(3, 1, ip) * t)) &
+                        + t4 * ((c_linv(4, 1, ip) + c_linv(5, 1, ip) * t) &
+                        + t2 * (c_linv(6, 1, ip) + c_linv(7, 1, ip) * t))) &
+                        + t8 * ((c_linv(8, 1, ip) + c_linv(9, 1, ip) * t) &
+                        + t2 * (c_linv(10, 1, ip) + c_linv(11, 1, ip) * t))
+                    p2 = (((c_linv(0, 2, ip) + c_linv(1, 2, ip) * t) + t2 * (c_linv(2, 2, ip) + c_linv(3, 2, ip) * t)) &
+                         + t4 * ((c_linv(4, 2, ip) + c_linv(5, 2, ip) * t) &
+                         + t2 * (c_linv(6, 2, ip) + c_linv(7, 2, ip) * t))) &
+                         + t8 * ((c_linv(8, 2, ip) + c_linv(9, 2, ip) * t) &
+                         + t2 * (c_linv(10, 2, ip) + c_linv(11, 2, ip) * t))
+                end block
+                alpha(i) = blend(keep, l * a, 0.0_wp)
+                tau_c(i) = blend(keep, blend(elastic, tau_c0, p2), 0.0_wp)
+                status(i) = int(iand(not(keep), int(HD_BAD_RESTITUTION, int64)))
+                ! k and d: the statements of the loop of hertzdamp_pair's contacts_kd (flags 0: all valid)
+                flags(i) = 0_int64
+                call direct_kd(HD_DAMPING_KUWABARA_KONO, alpha(i), direct_harmless(tau_c(i), flags(i)), &
+                               direct_harmless(tc(i), flags(i)), direct_harmless(m(i), flags(i)), &
+                               direct_harmless(u(i), flags(i)), k(i), d(i))
+            end do
+        end associate
+    end subroutine kernel_invert_kd_kuwabara_kono_force
+
+    !> The fused kernel of code ikern for n values all valid (done = .false. and no outputs
+    !> when a value is invalid, or for another code).
+    pure subroutine kernel_invert_kd(ikern, n, e, tc, m, u, alpha, tau_c, status, k, d, flags, done)
+        integer, intent(in) :: ikern        !! kernel code, kern_*
+        integer, intent(in) :: n            !! number of values
+        real(wp), intent(in) :: e(n)        !! restitution coefficients
+        real(wp), intent(in) :: tc(n)       !! contact times [s]
+        real(wp), intent(in) :: m(n)        !! effective masses [kg]
+        real(wp), intent(in) :: u(n)        !! impact velocities [m s^-1]
+        real(wp), intent(out) :: alpha(n)   !! damping parameters
+        real(wp), intent(out) :: tau_c(n)   !! dimensionless contact durations
+        integer, intent(out) :: status(n)   !! HD_OK
+        real(wp), intent(out) :: k(n)       !! stiffnesses of the direct formulas
+        real(wp), intent(out) :: d(n)       !! damping coefficients of the direct formulas
+        integer(int64), intent(out) :: flags(n) !! 0: every value served by the direct formulas
+        logical, intent(out) :: done        !! every value valid, the outputs set
+        select case (ikern)
+        case (kern_linear_overlap)
+            call kernel_invert_kd_linear_overlap(n, e, tc, m, u, alpha, tau_c, status, k, d, flags, done)
+        case (kern_linear_force)
+            call kernel_invert_kd_linear_force(n, e, tc, m, u, alpha, tau_c, status, k, d, flags, done)
+        case (kern_tsuji_overlap)
+            call kernel_invert_kd_tsuji_overlap(n, e, tc, m, u, alpha, tau_c, status, k, d, flags, done)
+        case (kern_tsuji_force)
+            call kernel_invert_kd_tsuji_force(n, e, tc, m, u, alpha, tau_c, status, k, d, flags, done)
+        case (kern_kuwabara_kono_overlap)
+            call kernel_invert_kd_kuwabara_kono_overlap(n, e, tc, m, u, alpha, tau_c, status, k, d, flags, done)
+        case (kern_kuwabara_kono_force)
+            call kernel_invert_kd_kuwabara_kono_force(n, e, tc, m, u, alpha, tau_c, status, k, d, flags, done)
+        case default
+            done = .false.
+        end select
+    end subroutine kernel_invert_kd
 
     ! ================================================================ forward kernels
 

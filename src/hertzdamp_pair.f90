@@ -47,7 +47,7 @@ module hertzdamp_pair
     use hertzdamp_constants, only: direct_lo => hertzdamp_direct_lo, direct_hi => hertzdamp_direct_hi
     use hertzdamp_scaling, only: hertzdamp_safe_exp, hertzdamp_log_tstar, hertzdamp_log_k, hertzdamp_scale_log_d
     use hertzdamp_methods, only: HD_METHOD_FIT
-    use hertzdamp_fit, only: hertzdamp_fit_inverse, hertzdamp_fit_inverse_n
+    use hertzdamp_fit, only: hertzdamp_fit_inverse, hertzdamp_fit_inverse_n, hertzdamp_fit_invert_kd_n
     use hertzdamp_inverse, only: hertzdamp_invert_alpha, hertzdamp_invert_options
     use hertzdamp_host, only: HD_HOST_NONE, HD_HOST_MFIX_AB2, HD_HOST_VERLET, hertzdamp_host_stats, hertzdamp_host_solve
     implicit none
@@ -81,9 +81,6 @@ module hertzdamp_pair
     integer(int64), parameter :: marker_seed = int(z'2545F4914F6CDD1D', int64)
     integer(int64), parameter :: fraction_bits = int(z'000FFFFFFFFFFFFF', int64)
     integer(int64), parameter :: one_bits = transfer(1.0_wp, 0_int64)
-    !> The direct range [1e-30, 1e30] as bit patterns (the masks of the array forms).
-    integer(int64), parameter :: direct_lo_bits = transfer(direct_lo, 0_int64)
-    integer(int64), parameter :: direct_hi_bits = transfer(direct_hi, 0_int64)
 
     !> k and d of contacts from the constants of a pair: one contact (elemental) or rank-1
     !> arrays of T_c, m, u (vectorised), T_c and/or m also as scalars.
@@ -357,6 +354,11 @@ contains
         end if
     end subroutine contact_rest
 
+    ! BEGIN kd formula
+    ! The one place of the direct k, d formulas and of the masks of the array forms:
+    ! gen/fit_kernels_f90.py copies the text between these markers into the fused inverse
+    ! kernels of src/hertzdamp_fit_kernels.f90 (test/docs/cli_sync_fit.sh checks the copy).
+
     !> The direct formulas (T_c, m, u in [1e-30, 1e30]: every intermediate a normal
     !> double): r = tau_c (1/T_c) = 1/t*, s = (r/u)^(1/2), k = m r^2 s, d = alpha m r (r/u)^q.
     !> 1/T_c and 1/(T_c u) do not depend on the pair, so that their divisions overlap
@@ -377,6 +379,39 @@ contains
             d = a * m * r * s
         end if
     end subroutine direct_kd
+
+    !> The flags of one contact of the array forms: sign bit set where T_c, m or u is
+    !> outside the direct range or given /= HD_OK (the contact is then redone by
+    !> contact_rest; its inputs to direct_kd are replaced by harmless ones, direct_harmless).
+    pure elemental integer(int64) function direct_flags(given, tc, m, u) result(flags)
+        integer, intent(in) :: given
+        real(wp), intent(in) :: tc, m, u
+        flags = ior(ior(direct_outside(tc), direct_outside(m)), ior(direct_outside(u), -int(given, int64)))
+    end function direct_flags
+
+    !> Sign bit set when x is outside the direct range [1e-30, 1e30] (NaN, infinities, zero,
+    !> negatives included), in integer arithmetic: the magnitude's bit pattern minus that
+    !> of the range's low end is negative below it, and (high - low) minus it is negative
+    !> above it; the sign bit of x itself flags negatives.
+    pure elemental integer(int64) function direct_outside(x)
+        real(wp), intent(in) :: x
+        integer(int64), parameter :: lo_bits = transfer(direct_lo, 0_int64), hi_bits = transfer(direct_hi, 0_int64)
+        integer(int64) :: ix, dx
+        ix = transfer(x, 0_int64)
+        dx = iand(ix, huge(ix)) - lo_bits
+        direct_outside = ior(ix, ior(dx, (hi_bits - lo_bits) - dx))
+    end function direct_outside
+
+    !> x where the sign bit of flags is clear, else 1 (bitwise, no branch): a harmless input
+    !> for a contact the direct formulas do not serve.
+    pure elemental real(wp) function direct_harmless(x, flags)
+        real(wp), intent(in) :: x
+        integer(int64), intent(in) :: flags
+        integer(int64) :: keep
+        keep = not(shifta(flags, 63))
+        direct_harmless = transfer(ior(iand(transfer(x, 0_int64), keep), iand(one_bits, not(keep))), 1.0_wp)
+    end function direct_harmless
+    ! END kd formula
 
     !> The bound on the direct path (k_phys <= k): k = k_phys, t* = (m/k_phys)^(2/5) u^(-1/5),
     !> d = alpha_eff m t*^(-1) (u t*)^(-q) (tsuji: alpha_eff sqrt(m k_phys), which needs no t*
@@ -467,33 +502,52 @@ contains
         integer, intent(out) :: status(nc)
         integer(int64) :: flags(chunk)
         integer :: j
-        ! which contacts the direct formulas serve (flags(j) >= 0; the others get harmless
-        ! inputs and are redone below), in integer arithmetic (an ordered floating-point
-        ! comparison keeps a loop from vectorising under the default -ftrapping-math), then
-        ! one loop per law (the law a constant in each: no branch in the loop body)
-        do j = 1, nc
-            flags(j) = ior(ior(outside(tc(j)), outside(m(j))), ior(outside(u(j)), -int(given(j), int64)))
-        end do
+        ! one loop per law (the law a constant in each: no branch in the loop body); the
+        ! masks in integer arithmetic (an ordered floating-point comparison keeps a loop from
+        ! vectorising under the default -ftrapping-math)
         select case (law)
         case (HD_DAMPING_LINEAR)
             do j = 1, nc
-                call direct_kd(HD_DAMPING_LINEAR, a(j), harmless(tau(j), flags(j)), harmless(tc(j), flags(j)), &
-                               harmless(m(j), flags(j)), harmless(u(j), flags(j)), k(j), d(j))
+                flags(j) = direct_flags(given(j), tc(j), m(j), u(j))
+                call direct_kd(HD_DAMPING_LINEAR, a(j), direct_harmless(tau(j), flags(j)), direct_harmless(tc(j), flags(j)), &
+                               direct_harmless(m(j), flags(j)), direct_harmless(u(j), flags(j)), k(j), d(j))
             end do
         case (HD_DAMPING_TSUJI)
             do j = 1, nc
-                call direct_kd(HD_DAMPING_TSUJI, a(j), harmless(tau(j), flags(j)), harmless(tc(j), flags(j)), &
-                               harmless(m(j), flags(j)), harmless(u(j), flags(j)), k(j), d(j))
+                flags(j) = direct_flags(given(j), tc(j), m(j), u(j))
+                call direct_kd(HD_DAMPING_TSUJI, a(j), direct_harmless(tau(j), flags(j)), direct_harmless(tc(j), flags(j)), &
+                               direct_harmless(m(j), flags(j)), direct_harmless(u(j), flags(j)), k(j), d(j))
             end do
         case default
             do j = 1, nc
-                call direct_kd(HD_DAMPING_KUWABARA_KONO, a(j), harmless(tau(j), flags(j)), harmless(tc(j), flags(j)), &
-                               harmless(m(j), flags(j)), harmless(u(j), flags(j)), k(j), d(j))
+                flags(j) = direct_flags(given(j), tc(j), m(j), u(j))
+                call direct_kd(HD_DAMPING_KUWABARA_KONO, a(j), direct_harmless(tau(j), flags(j)), &
+                               direct_harmless(tc(j), flags(j)), direct_harmless(m(j), flags(j)), &
+                               direct_harmless(u(j), flags(j)), k(j), d(j))
             end do
         end select
+        call contacts_rest(nc, law, host, a, tau, a_cont, given, tc, m, u, has_kp, kp, want_ts, k, d, ts, bound, &
+                           status, flags)
+    end subroutine contacts_kd
+
+    !> The rest of contacts_kd after the direct formulas (k, d and flags of direct_flags and direct_kd,
+    !> from contacts_kd or the fit's fused kernel): t* where wanted, the bound, and the
+    !> flagged contacts one by one through contact_rest.
+    pure subroutine contacts_rest(nc, law, host, a, tau, a_cont, given, tc, m, u, has_kp, kp, want_ts, k, d, ts, &
+                                  bound, status, flags)
+        integer, intent(in) :: nc, law, host
+        real(wp), intent(in) :: a(nc), tau(nc), a_cont(nc), tc(nc), m(nc), u(nc), kp(nc)
+        integer, intent(in) :: given(nc)
+        logical, intent(in) :: has_kp, want_ts
+        real(wp), intent(inout) :: k(nc), d(nc)
+        real(wp), intent(out) :: ts(nc)
+        logical, intent(out) :: bound(nc)
+        integer, intent(out) :: status(nc)
+        integer(int64), intent(inout) :: flags(nc)
+        integer :: j
         if (want_ts) then
             do j = 1, nc
-                ts(j) = harmless(tc(j), flags(j)) / harmless(tau(j), flags(j))
+                ts(j) = direct_harmless(tc(j), flags(j)) / direct_harmless(tau(j), flags(j))
             end do
         end if
         if (has_kp) then
@@ -509,29 +563,7 @@ contains
                                                     has_kp, kp(j), want_ts, k(j), d(j), ts(j), bound(j), status(j))
             end do
         end if
-    end subroutine contacts_kd
-
-    !> Sign bit set when x is outside the direct range [1e-30, 1e30] (NaN, infinities, zero,
-    !> negatives included), in integer arithmetic: the magnitude's bit pattern minus that
-    !> of the range's low end is negative below it, and (high - low) minus it is negative
-    !> above it; the sign bit of x itself flags negatives.
-    pure elemental integer(int64) function outside(x)
-        real(wp), intent(in) :: x
-        integer(int64) :: ix, dx
-        ix = transfer(x, 0_int64)
-        dx = iand(ix, huge(ix)) - direct_lo_bits
-        outside = ior(ix, ior(dx, (direct_hi_bits - direct_lo_bits) - dx))
-    end function outside
-
-    !> x where the sign bit of flags is clear, else 1 (bitwise, no branch): a harmless input
-    !> for a contact the direct formulas do not serve.
-    pure elemental real(wp) function harmless(x, flags)
-        real(wp), intent(in) :: x
-        integer(int64), intent(in) :: flags
-        integer(int64) :: keep
-        keep = not(shifta(flags, 63))
-        harmless = transfer(ior(iand(transfer(x, 0_int64), keep), iand(one_bits, not(keep))), 1.0_wp)
-    end function harmless
+    end subroutine contacts_rest
 
     !> hertzdamp_pair_kd over arrays (the core of the array forms: passes of `chunk`
     !> contacts); tc and m hold one value per contact, or `chunk` copies of one value (a
@@ -737,8 +769,10 @@ contains
     end subroutine pair_constants
 
     !> hertzdamp_invert over arrays; tc, m of size 1 are broadcast (the core of the array
-    !> forms): per pass of `chunk` contacts the fit's vectorised kernel (other methods:
-    !> one contact at a time) gives alpha and tau_c, then contacts_kd k and d.
+    !> forms): a pass of `chunk` contacts all valid takes the fit's kernel fused with the
+    !> direct formulas (alpha, tau_c, k and d in one loop), then contacts_rest; another
+    !> pass the fit's vectorised kernel (other methods: one contact at a time) for alpha
+    !> and tau_c, then contacts_kd for k and d (the same bits either way).
     pure subroutine invert_n(e, tc, m, u, iend, k, d, status, alpha, tstar, tau_c, bound_active, k_phys, law, options)
         real(wp), intent(in) :: e(:), tc(:), m(:), u(:)
         integer, intent(in) :: iend
@@ -751,7 +785,8 @@ contains
         type(hertzdamp_invert_options), intent(in), optional :: options
         real(wp) :: ab(chunk), tb(chunk), kpb(chunk), tsb(chunk)
         integer :: gb(chunk)
-        logical :: bb(chunk), fit
+        logical :: bb(chunk), fit, done
+        integer(int64) :: flags(chunk)
         integer :: i0, nc, j, law_, n, jt, jm
         n = size(e)
         law_ = HD_DAMPING_LINEAR
@@ -764,17 +799,28 @@ contains
             jt = start(tc, n, i0)
             jm = start(m, n, i0)
             if (present(k_phys)) kpb(1:nc) = k_phys(i0 + 1:i0 + nc)
+            done = .false.
             if (fit) then
-                call hertzdamp_fit_inverse_n(nc, e(i0 + 1:i0 + nc), iend, ab, tb, gb, law_)
+                ! contacts all valid: the fit's kernel fused with the direct formulas (one loop)
+                call hertzdamp_fit_invert_kd_n(nc, e(i0 + 1:i0 + nc), iend, law_, tc(jt + 1:jt + nc), &
+                                               m(jm + 1:jm + nc), u(i0 + 1:i0 + nc), ab, tb, gb, k(i0 + 1:i0 + nc), &
+                                               d(i0 + 1:i0 + nc), flags, done)
+                if (.not. done) call hertzdamp_fit_inverse_n(nc, e(i0 + 1:i0 + nc), iend, ab, tb, gb, law_)
             else
                 do j = 1, nc
                     call pair_constants(e(i0 + j), iend, law_, options, tc(jt + j), m(jm + j), u(i0 + j), &
                                         present(k_phys), kpb(j), ab(j), tb(j), gb(j))
                 end do
             end if
-            call contacts_kd(nc, law_, HD_HOST_NONE, ab, tb, ab, gb, tc(jt + 1:jt + nc), m(jm + 1:jm + nc), &
-                             u(i0 + 1:i0 + nc), present(k_phys), kpb, present(tstar), k(i0 + 1:i0 + nc), &
-                             d(i0 + 1:i0 + nc), tsb, bb, status(i0 + 1:i0 + nc))
+            if (done) then
+                call contacts_rest(nc, law_, HD_HOST_NONE, ab, tb, ab, gb, tc(jt + 1:jt + nc), m(jm + 1:jm + nc), &
+                                   u(i0 + 1:i0 + nc), present(k_phys), kpb, present(tstar), k(i0 + 1:i0 + nc), &
+                                   d(i0 + 1:i0 + nc), tsb, bb, status(i0 + 1:i0 + nc), flags)
+            else
+                call contacts_kd(nc, law_, HD_HOST_NONE, ab, tb, ab, gb, tc(jt + 1:jt + nc), m(jm + 1:jm + nc), &
+                                 u(i0 + 1:i0 + nc), present(k_phys), kpb, present(tstar), k(i0 + 1:i0 + nc), &
+                                 d(i0 + 1:i0 + nc), tsb, bb, status(i0 + 1:i0 + nc))
+            end if
             if (present(alpha)) alpha(i0 + 1:i0 + nc) = merge(ab(1:nc), 0.0_wp, status(i0 + 1:i0 + nc) == HD_OK)
             if (present(tau_c)) tau_c(i0 + 1:i0 + nc) = merge(tb(1:nc), 0.0_wp, status(i0 + 1:i0 + nc) == HD_OK)
             if (present(tstar)) tstar(i0 + 1:i0 + nc) = tsb(1:nc)

@@ -26,6 +26,20 @@ done
 if [ "$(grep -c '^    pure subroutine kernel_inverse_' src/hertzdamp_fit_kernels.f90)" -eq 6 ] &&
    ! grep -qi "^ *include " src/hertzdamp_fit*.f90 && ! ls src/*.inc >/dev/null 2>&1; then
   p=$((p + 1)); else echo "FAIL sync_fit: kernels not one procedure each, or an include left"; f=$((f + 1)); fi
+# the fused kernels carry the k, d formulas of src/hertzdamp_pair.f90 (its block between
+# '! BEGIN kd formula' and '! END kd formula', the one place of them) verbatim, and call them
+if python3 - <<'PY'
+import sys
+def block(path):
+    lines = open(path).read().split('\n')
+    i = [n for n, s in enumerate(lines) if s.strip() == '! BEGIN kd formula']
+    j = [n for n, s in enumerate(lines) if s.strip() == '! END kd formula']
+    return '\n'.join(lines[i[0]:j[0] + 1]) if len(i) == 1 and len(j) == 1 else None
+pair, kern = block('src/hertzdamp_pair.f90'), block('src/hertzdamp_fit_kernels.f90')
+text = open('src/hertzdamp_fit_kernels.f90').read()
+sys.exit(0 if pair and pair == kern and text.count('call direct_kd(') == 6 else 1)
+PY
+then p=$((p + 1)); else echo "FAIL sync_fit: the kd formula block of src/hertzdamp_pair.f90 is not in the kernels (make fit-source)"; f=$((f + 1)); fi
 # header of the CSV names the generator and the reference tolerance
 if grep -q '^# .*gen/fit/gen_fit.f90' data/fit_coefficients.csv && grep -q 'tolerance 1.000E-15' data/fit_coefficients.csv; then
   p=$((p + 1)); else echo "FAIL sync_fit: CSV header"; f=$((f + 1)); fi

@@ -107,7 +107,7 @@ program test_entry_points
 contains
 
     !> All combinations of es with one of tc, m, u taken from xs (the others 1e-4 s,
-    !> 1e-3 kg, 1 m/s), then random contacts over 1e-20 .. 1e20.
+    !> 1e-3 kg, 1 m/s), then random contacts over 1e-20 .. 1e20, then random valid ones.
     subroutine make_grid(es, xs, e, tc, m, u)
         real(wp), intent(in) :: es(:), xs(:)
         real(wp), allocatable, intent(out) :: e(:), tc(:), m(:), u(:)
@@ -131,6 +131,17 @@ contains
             m = [m, 10.0_wp**(-20.0_wp + 40.0_wp * r(3))]
             u = [u, 10.0_wp**(-20.0_wp + 40.0_wp * r(4))]
         end do
+        ! then 768 contacts all valid for every law and end (e in [1e-3, 1], T_c, m, u in the
+        ! direct range, its ends among them): whole passes of 256 that the array forms serve
+        ! by the fused kernel (the passes above hold invalid contacts)
+        do i = 1, 768
+            call random_number(r)
+            e = [e, merge(1.0_wp, 10.0_wp**(-3.0_wp * r(1)), mod(i, 97) == 0)]
+            tc = [tc, merge(1.0e-30_wp, 10.0_wp**(-20.0_wp + 40.0_wp * r(2)), mod(i, 89) == 0)]
+            m = [m, merge(1.0e30_wp, 10.0_wp**(-20.0_wp + 40.0_wp * r(3)), mod(i, 83) == 0)]
+            u = [u, merge(1.0e-30_wp, 10.0_wp**(-20.0_wp + 40.0_wp * r(4)), mod(i, 79) == 0)]
+        end do
+        e(size(e)) = 1.0e-3_wp
     end subroutine make_grid
 
     !> k_phys for the bounded calls: alternately soft (bound active), stiff, and the

@@ -184,7 +184,13 @@ contains
         integer, intent(in) :: host
         type(hertzdamp_dem_scene), intent(inout) :: sc
         real(wp) :: x
-        if (args%has('--dt')) sc%dt = parse_real(args%get('--dt', ''), '--dt')
+        if (args%has('--dt')) then
+            x = parse_real(args%get('--dt', ''), '--dt')
+            if (.not. (x > 0.0_wp .and. x <= huge(x))) then
+                call fail(EXIT_USAGE, '--dt ' // fmt_short(x) // ': the time step must be positive and finite')
+            end if
+            sc%dt = x
+        end if
         if (args%has('--steps')) then
             x = parse_real(args%get('--steps', ''), '--steps')
             if (.not. (x >= 1.0_wp .and. x <= 1.0e9_wp .and. x == anint(x))) then

@@ -403,6 +403,10 @@ check "--host lammps --method series: from the fit" grep -q -- '--host lammps: t
 expect_fail 2 "--host lammps-phase (not a scheme of the engine)" scene $S/phases.nml --host lammps-phase --dt 1e-6 --steps 10
 expect_fail 2 "--steps 2.5" scene $S/phases.nml --host lammps --dt 1e-6 --steps 2.5
 check "--steps 2.5: a whole number" grep -q -- '--steps 2.5: time steps per contact must be a whole number' "$ERR"
+for dt in -1 0 inf; do
+  expect_fail 2 "--dt $dt" scene $S/phases.nml --host lammps --dt $dt --steps 10
+  check "--dt $dt: the message names --dt, not the scene file" grep -Eq -- '^hertzdamp: (--dt .*: the time step must be positive and finite|malformed number "inf" for --dt)$' "$ERR"
+done
 expect_fail 2 "--host lammps on a restitution-only scene" scene $S/bed.nml --host lammps --dt 2e-5 --steps 40
 check "restitution only: --host needs T_c" grep -q 'the scene wants the restitution only' "$ERR"
 finish

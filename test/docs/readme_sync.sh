@@ -24,6 +24,25 @@ done <<<"$rows"
 # ------------------------------------------------------------ the README stays a README (issue 25)
 check "README.md has at most 400 lines ($(wc -l <README.md))" test "$(wc -l <README.md)" -le 400
 
+# ------------------------------------------------------------ README section 6: the spread figure
+# The README rounds the rows of doc/host-schemes.md's table 3 (synced with the example by
+# test/docs/host_schemes_sync.sh): e sd of lammps / lammps-phase, linear law, overlap end.
+spread_ok() {
+  python3 - "$@" <<'PY'
+import re, sys
+doc = open("doc/host-schemes.md", encoding="utf-8").read()
+readme = open("README.md", encoding="utf-8").read()
+sd = {}
+for n in (10, 20):
+    m = re.search(r"^\| linear \| overlap \| %d \| *([0-9.]+), *[0-9.]+; *[0-9.]+, *[0-9.]+ \| *([0-9.]+)," % n, doc, re.M)
+    if not m: sys.exit(1)
+    sd[n] = (float(m.group(1)), float(m.group(2)))
+want = "%.1f / %.1f %% against %.2f / %.2f %%" % (sd[10][0], sd[20][0], sd[10][1], sd[20][1])
+sys.exit(0 if want in readme else 1)
+PY
+}
+check "README section 6: the spread of e is doc/host-schemes.md's table 3, rounded" spread_ok
+
 # ------------------------------------------------------------ every `$ hertzdamp` command and its output
 if [ -n "${HERTZDAMP_BIN:-}" ]; then
   python3 - "$tmp/cmds" README.md doc/*.md <<'PY'

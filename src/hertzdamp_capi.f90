@@ -47,6 +47,7 @@ module hertzdamp_capi
                                 hertzdamp_message_len
     use hertzdamp_methods, only: hertzdamp_forward_dim, HD_METHOD_FIT
     use hertzdamp_pair, only: hertzdamp_pair_t, hertzdamp_pair_init, hertzdamp_invert, hertzdamp_c_pair_kd, &
+                              hertzdamp_pair_status, &
                               hertzdamp_invert_contact
     use hertzdamp_host, only: HD_HOST_NONE, hertzdamp_host_stats, hertzdamp_host_mean, hertzdamp_host_min_steps
     implicit none
@@ -103,13 +104,11 @@ contains
         integer(c_int), value, intent(in) :: host              !! host scheme that runs them (HERTZDAMP_HOST_*)
         real(c_double), intent(out), optional :: stats(8)     !! e mean, sd, min, max; T_c/(N dt) mean, sd, min, max
         type(hertzdamp_host_stats) :: s
-        real(c_double) :: k, d
         integer :: st
         status = HD_BAD_ARGUMENT
         if (.not. (present(p) .and. present(stats))) return
         stats = 0.0_c_double
-        ! the pair's validity (HD_BAD_PAIR) as the per-contact call checks it, at a valid contact
-        status = hertzdamp_c_pair_kd(p, 1.0_c_double, 1.0_c_double, 1.0_c_double, 0.0_c_double, k, d)
+        status = int(hertzdamp_pair_status(p), c_int)
         if (status /= HD_OK) return
         call hertzdamp_host_mean(p%alpha, p%tau_c / p%steps, int(p%law), int(p%iend), int(host), s, st)
         status = int(st, c_int)

@@ -103,7 +103,7 @@ module hertzdamp_pair
         module procedure invert_array_tc_m
     end interface hertzdamp_invert
 
-    public :: hertzdamp_pair_init, hertzdamp_pair_kd, hertzdamp_invert
+    public :: hertzdamp_pair_init, hertzdamp_pair_kd, hertzdamp_invert, hertzdamp_pair_status
     ! the C entry of the per-contact call (see there; hertzdamp_capi re-exports it), and the
     ! one-contact inverse without optional arguments that the binding layer calls
     public :: hertzdamp_c_pair_kd, hertzdamp_invert_contact
@@ -173,11 +173,11 @@ contains
     end function marker_of
 
     !> HD_OK for a pair set by hertzdamp_pair_init and not changed since, else HD_BAD_PAIR.
-    pure elemental integer function pair_status(pair) result(status)
+    pure elemental integer function hertzdamp_pair_status(pair) result(status)
         type(hertzdamp_pair_t), intent(in) :: pair
         status = HD_BAD_PAIR
         if (transfer(pair%marker, 0_int64) == marker_of(pair)) status = HD_OK
-    end function pair_status
+    end function hertzdamp_pair_status
 
     ! ================================================================ k, d of one contact
 
@@ -198,7 +198,7 @@ contains
         real(wp) :: kp, ts
         logical :: bound
         integer :: valid, law, host
-        valid = pair_status(pair)
+        valid = hertzdamp_pair_status(pair)
         law = HD_DAMPING_LINEAR
         host = HD_HOST_NONE
         if (valid == HD_OK) then
@@ -233,7 +233,7 @@ contains
         if (.not. (present(p) .and. present(k) .and. present(d))) return
         ! the usual contact (a valid pair, T_c, m, u in the direct range, no bound met) here,
         ! every other one out of line: the entry point keeps no stack frame for the rest
-        if (pair_status(p) == HD_OK .and. direct(tc, m, u)) then
+        if (hertzdamp_pair_status(p) == HD_OK .and. direct(tc, m, u)) then
             call direct_kd(int(p%law), p%alpha, p%tau_c, tc, m, u, k_, d_)
             if (k_phys <= 0.0_wp .or. (k_phys <= huge(k_phys) .and. k_phys > k_)) then
                 k = k_
@@ -253,7 +253,7 @@ contains
         real(wp) :: ts
         integer :: valid, law, host
         logical :: bound
-        valid = pair_status(p)
+        valid = hertzdamp_pair_status(p)
         law = HD_DAMPING_LINEAR
         host = HD_HOST_NONE
         if (valid == HD_OK) then
@@ -581,7 +581,7 @@ contains
         logical :: bb(chunk)
         integer :: i0, nc, valid, law, host, n, jt, jm
         n = size(u)
-        valid = pair_status(pair)
+        valid = hertzdamp_pair_status(pair)
         law = HD_DAMPING_LINEAR
         host = HD_HOST_NONE
         if (valid == HD_OK) then

@@ -63,6 +63,11 @@ extern "C" {
 #define HERTZDAMP_BAD_STEPS           27  /* steps per contact (or step h) not finite or outside the allowed range */
 #define HERTZDAMP_HOST_UNREACHABLE    28  /* no alpha reaches this e with the host at so few steps per contact */
 #define HERTZDAMP_BAD_PAIR            29  /* pair not set by hertzdamp_c_pair_init, or changed since */
+#define HERTZDAMP_PHASE_UNREACHABLE   30  /* some onset phase cannot reach e and T_c at so few steps */
+#define HERTZDAMP_BAD_PHASE           31  /* onset phase not finite or outside (0, 1] */
+#define HERTZDAMP_NO_PHASE_TABLE      32  /* the pair was initialised without its onset-phase table */
+#define HERTZDAMP_BAD_TANGENTIAL      33  /* tangential model or its parameters invalid */
+#define HERTZDAMP_BAD_OBLIQUE         34  /* oblique-contact argument invalid */
 
 /* Contact-end definitions (argument `end`). */
 #define HERTZDAMP_END_OVERLAP 0  /* contact ends when the overlap returns to zero */
@@ -83,15 +88,20 @@ extern "C" {
 #define HERTZDAMP_HOST_LAMMPS_PHASE 5  /* lammps with the hertzdamp plugin's onset correction */
 
 /*
- * The constants of a material pair (set by hertzdamp_c_pair_init, read by
- * hertzdamp_c_pair_kd): eight doubles, the same memory as the Fortran type
- * hertzdamp_pair_t and the legacy DOUBLE PRECISION PAIR(8).  Treat it as opaque: a
- * pair that was not set by hertzdamp_c_pair_init, whose init failed, or that was
- * changed since, is refused (HERTZDAMP_BAD_PAIR).  Copying it is fine.
+ * The constants of a material pair (set by hertzdamp_c_pair_init, read by the per-contact
+ * calls): HERTZDAMP_PAIR_SIZE doubles, the same memory as the Fortran type
+ * hertzdamp_pair_t and the legacy REAL(8) PAIR(HERTZDAMP_PAIR_SIZE) (hertzdamp.fi).  Treat it
+ * as opaque: a pair that was not set by hertzdamp_c_pair_init, whose init failed, or of which
+ * a part that a call reads was changed since, is refused (HERTZDAMP_BAD_PAIR).  Copying it
+ * is fine.  hertzdamp_c_pair_size() gives the size at run time.
  */
+#define HERTZDAMP_PAIR_SIZE 256
 typedef struct {
-    double v[8];
+    double v[HERTZDAMP_PAIR_SIZE];
 } hertzdamp_pair_t;
+
+/* The size of hertzdamp_pair_t in doubles, as the library was built (HERTZDAMP_PAIR_SIZE). */
+int hertzdamp_c_pair_size(void);
 
 /*
  * Per-pair API (the fast path of a DEM host): once per material pair,

@@ -16,7 +16,8 @@ module hertzdamp
                                 HD_NOT_SUPPORTED, HD_NO_CONVERGENCE, HD_BAD_ORDER, HD_BAD_KPHYS, &
                                 HD_BAD_ARGUMENT, HD_OUTSIDE_VALIDITY, HD_INACCURATE, HD_BAD_RADIUS, &
                                 HD_BAD_DENSITY, HD_BAD_MODULUS, HD_BAD_POISSON, HD_BAD_LAW, HD_BAD_HOST, &
-                                HD_BAD_STEPS, HD_HOST_UNREACHABLE, HD_BAD_PAIR, hertzdamp_message
+                                HD_BAD_STEPS, HD_HOST_UNREACHABLE, HD_BAD_PAIR, HD_PHASE_UNREACHABLE, &
+                                HD_BAD_PHASE, HD_NO_PHASE_TABLE, HD_BAD_TANGENTIAL, HD_BAD_OBLIQUE, hertzdamp_message
     use hertzdamp_ends, only: HD_END_OVERLAP, HD_END_FORCE, hertzdamp_end_name
     use hertzdamp_laws, only: HD_DAMPING_LINEAR, HD_DAMPING_TSUJI, HD_DAMPING_KUWABARA_KONO, &
                               hertzdamp_max_law, hertzdamp_law_name, hertzdamp_law_code, hertzdamp_law_q, &
@@ -51,7 +52,8 @@ module hertzdamp
                               hertzdamp_host_status, hertzdamp_host_stats, hertzdamp_host_collide, &
                               hertzdamp_host_mean, hertzdamp_host_solve, hertzdamp_host_min_steps, &
                               hertzdamp_host_alpha_for_e, hertzdamp_host_phase_force
-    use hertzdamp_pair, only: hertzdamp_pair_t, hertzdamp_pair_init, hertzdamp_pair_kd, hertzdamp_invert
+    use hertzdamp_pair, only: hertzdamp_pair_t, hertzdamp_pair_size, hertzdamp_pair_init, hertzdamp_pair_kd, &
+                              hertzdamp_invert
     use hertzdamp_materials, only: hertzdamp_sphere_mass, hertzdamp_effective_mass, &
                                    hertzdamp_effective_radius, hertzdamp_effective_modulus, &
                                    hertzdamp_plane_strain_modulus, hertzdamp_hertz_stiffness, &
@@ -68,7 +70,8 @@ module hertzdamp
               HD_OUT_OF_RANGE, HD_NOT_SUPPORTED, HD_NO_CONVERGENCE, HD_BAD_ORDER, HD_BAD_KPHYS, &
               HD_BAD_ARGUMENT, HD_OUTSIDE_VALIDITY, HD_INACCURATE, HD_BAD_RADIUS, HD_BAD_DENSITY, &
               HD_BAD_MODULUS, HD_BAD_POISSON, HD_BAD_LAW, HD_BAD_HOST, HD_BAD_STEPS, HD_HOST_UNREACHABLE, &
-              HD_BAD_PAIR, hertzdamp_message
+              HD_BAD_PAIR, HD_PHASE_UNREACHABLE, HD_BAD_PHASE, HD_NO_PHASE_TABLE, HD_BAD_TANGENTIAL, HD_BAD_OBLIQUE, &
+              hertzdamp_message
     ! the contact-end definitions (hertzdamp_ends)
     public :: HD_END_OVERLAP, HD_END_FORCE, hertzdamp_end_name
     ! the damping laws and their exact facts (hertzdamp_laws)
@@ -111,7 +114,7 @@ module hertzdamp
               hertzdamp_host_collide, hertzdamp_host_mean, hertzdamp_host_solve, hertzdamp_host_min_steps, &
               hertzdamp_host_alpha_for_e, hertzdamp_host_phase_force
     ! the per-pair API and the one-call inverse (hertzdamp_pair)
-    public :: hertzdamp_pair_t, hertzdamp_pair_init, hertzdamp_pair_kd, hertzdamp_invert
+    public :: hertzdamp_pair_t, hertzdamp_pair_size, hertzdamp_pair_init, hertzdamp_pair_kd, hertzdamp_invert
     ! material data to the contact (hertzdamp_materials)
     public :: hertzdamp_sphere_mass, hertzdamp_effective_mass, hertzdamp_effective_radius, &
               hertzdamp_effective_modulus, hertzdamp_plane_strain_modulus, hertzdamp_hertz_stiffness, &

@@ -46,7 +46,7 @@ module hertzdamp_capi
     use hertzdamp_status, only: HD_OK, HD_NO_REBOUND, HD_BAD_ARGUMENT, hertzdamp_message_table, hertzdamp_max_status, &
                                 hertzdamp_message_len
     use hertzdamp_methods, only: hertzdamp_forward_dim, HD_METHOD_FIT
-    use hertzdamp_pair, only: hertzdamp_pair_t, hertzdamp_pair_init, hertzdamp_invert, hertzdamp_c_pair_kd, &
+    use hertzdamp_pair, only: hertzdamp_pair_t, hertzdamp_pair_size, hertzdamp_pair_init, hertzdamp_invert, hertzdamp_c_pair_kd, &
                               hertzdamp_pair_status, &
                               hertzdamp_invert_contact
     use hertzdamp_host, only: HD_HOST_NONE, hertzdamp_host_stats, hertzdamp_host_mean, hertzdamp_host_min_steps
@@ -104,18 +104,32 @@ contains
         integer(c_int), value, intent(in) :: host              !! host scheme that runs them (HERTZDAMP_HOST_*)
         real(c_double), intent(out), optional :: stats(8)     !! e mean, sd, min, max; T_c/(N dt) mean, sd, min, max
         type(hertzdamp_host_stats) :: s
-        integer :: st
+        real(c_double) :: out(8), a, tau, n
+        integer :: st, law, iend
         status = HD_BAD_ARGUMENT
         if (.not. (present(p) .and. present(stats))) return
-        stats = 0.0_c_double
-        status = int(hertzdamp_pair_status(p), c_int)
-        if (status /= HD_OK) return
-        call hertzdamp_host_mean(p%alpha, p%tau_c / p%steps, int(p%law), int(p%iend), int(host), s, st)
+        ! everything read from the pair before stats is written: stats may overlap it
+        out = 0.0_c_double
+        st = hertzdamp_pair_status(p)
+        a = p%alpha
+        tau = p%tau_c
+        n = p%steps
+        law = int(p%law)
+        iend = int(p%iend)
+        if (st == HD_OK) then
+            call hertzdamp_host_mean(a, tau / n, law, iend, int(host), s, st)
+            if (st == HD_OK) out = [s%e_mean, s%e_sd, s%e_min, s%e_max, &
+                                    s%tau_mean / tau, s%tau_sd / tau, s%tau_min / tau, s%tau_max / tau]
+        end if
+        stats = out
         status = int(st, c_int)
-        if (st /= HD_OK) return
-        stats = [s%e_mean, s%e_sd, s%e_min, s%e_max, &
-                 s%tau_mean / p%tau_c, s%tau_sd / p%tau_c, s%tau_min / p%tau_c, s%tau_max / p%tau_c]
     end function hertzdamp_c_pair_stats
+
+    !> `int hertzdamp_c_pair_size(void)`: the size of a pair in doubles (HERTZDAMP_PAIR_SIZE of
+    !> hertzdamp.h), for a host that allocates pairs at run time (Python's ctypes).
+    integer(c_int) function hertzdamp_c_pair_size() bind(c, name='hertzdamp_c_pair_size') result(n)
+        n = int(hertzdamp_pair_size, c_int)
+    end function hertzdamp_c_pair_size
 
     !> `int hertzdamp_c_host_min_steps(double e, int law, int end, int host, int *n_min)`:
     !> the fewest whole steps per contact N for which hertzdamp_c_pair_init succeeds with
@@ -548,7 +562,7 @@ contains
     end subroutine legacy_forward_law
 
     !> HERTZDAMP_PAIR_INIT(E, ILAW, IEND, IHOST, STEPS, PAIR, IERR): the constants of a
-    !> material pair into DOUBLE PRECISION PAIR(8) (hertzdamp_pair_init): ihost = 0 the
+    !> material pair into REAL(8) PAIR(HERTZDAMP_PAIR_SIZE) (hertzdamp_pair_init): ihost = 0 the
     !> continuous model, else the host scheme's exact constants at steps = T_c/dt steps per
     !> contact.  On failure PAIR is invalid (HERTZDAMP_PAIR_KD refuses it), ierr /= 0.
     subroutine legacy_pair_init(e, ilaw, iend, ihost, steps, pair, ierr) bind(c, name='hertzdamp_pair_init_')
@@ -558,7 +572,7 @@ contains
         integer(c_int), intent(in) :: ihost          !! host scheme: 0 none, 1 lammps, 2 mfix-euler, 3 mfix-ab2,
                                                      !! 4 verlet, 5 lammps-phase
         real(c_double), intent(in) :: steps          !! steps per contact N (not used by ihost = 0)
-        type(hertzdamp_pair_t), intent(out) :: pair    !! DOUBLE PRECISION PAIR(8): the pair's constants
+        type(hertzdamp_pair_t), intent(out) :: pair    !! REAL(8) PAIR(HERTZDAMP_PAIR_SIZE): the constants
         integer(c_int), intent(out) :: ierr          !! 0 on success, else a status code
         ierr = hertzdamp_c_pair_init(e, ilaw, iend, ihost, steps, pair)
     end subroutine legacy_pair_init
@@ -568,7 +582,7 @@ contains
     !> mass, u its impact speed; kphys > 0 the physical stiffness bound (<= 0: none).  On
     !> failure k = d = 0, ierr /= 0.
     subroutine legacy_pair_kd(pair, tc, m, u, kphys, k, d, ierr) bind(c, name='hertzdamp_pair_kd_')
-        type(hertzdamp_pair_t), intent(in) :: pair     !! DOUBLE PRECISION PAIR(8) of HERTZDAMP_PAIR_INIT
+        type(hertzdamp_pair_t), intent(in) :: pair     !! REAL(8) PAIR(HERTZDAMP_PAIR_SIZE) of HERTZDAMP_PAIR_INIT
         real(c_double), intent(in) :: tc             !! target contact time [s]
         real(c_double), intent(in) :: m              !! effective mass [kg]
         real(c_double), intent(in) :: u              !! impact velocity [m/s]

@@ -43,22 +43,34 @@ module hertzdamp_pair
     use hertzdamp_kinds, only: hertzdamp_rk
     use hertzdamp_status, only: HD_OK, HD_BAD_TIME, HD_BAD_MASS, HD_BAD_VELOCITY, HD_BAD_KPHYS, HD_OUT_OF_RANGE, &
                                 HD_BAD_PAIR, HD_BAD_ARGUMENT
-    use hertzdamp_laws, only: HD_DAMPING_LINEAR, HD_DAMPING_TSUJI, HD_DAMPING_KUWABARA_KONO, hertzdamp_law_q
+    use hertzdamp_laws, only: HD_DAMPING_LINEAR, HD_DAMPING_TSUJI, HD_DAMPING_KUWABARA_KONO, hertzdamp_law_q, &
+                              hertzdamp_max_law
     use hertzdamp_constants, only: direct_lo => hertzdamp_direct_lo, direct_hi => hertzdamp_direct_hi
     use hertzdamp_scaling, only: hertzdamp_safe_exp, hertzdamp_log_tstar, hertzdamp_log_k, hertzdamp_scale_log_d
     use hertzdamp_methods, only: HD_METHOD_FIT
     use hertzdamp_fit, only: hertzdamp_fit_inverse, hertzdamp_fit_inverse_n, hertzdamp_fit_invert_kd_n
     use hertzdamp_inverse, only: hertzdamp_invert_alpha, hertzdamp_invert_options
-    use hertzdamp_host, only: HD_HOST_NONE, HD_HOST_MFIX_AB2, HD_HOST_VERLET, hertzdamp_host_stats, hertzdamp_host_solve
+    use hertzdamp_host, only: HD_HOST_NONE, HD_HOST_MFIX_AB2, HD_HOST_VERLET, hertzdamp_host_stats, hertzdamp_host_solve, &
+                              hertzdamp_max_host, hertzdamp_host_steps_min, hertzdamp_host_steps_max
     implicit none
     private
 
     integer, parameter :: wp = hertzdamp_rk
 
-    !> The constants of a material pair: eight doubles, so that it is the C `hertzdamp_pair_t`
-    !> and the legacy `DOUBLE PRECISION PAIR(8)` are the same memory.  Set only by
-    !> hertzdamp_pair_init; hertzdamp_pair_kd refuses (HD_BAD_PAIR) a pair that was not
-    !> set, whose init failed, or that was changed since (the marker no longer matches).
+    !> Size of a pair in doubles (C HERTZDAMP_PAIR_SIZE, legacy REAL(8) PAIR(HERTZDAMP_PAIR_SIZE)).
+    integer, parameter, public :: hertzdamp_pair_size = 256
+    !> Doubles of the oblique-contact block and of the onset-phase table of a pair.
+    integer, parameter, public :: hertzdamp_pair_oblique_size = 8, &
+                                  hertzdamp_pair_phase_size = hertzdamp_pair_size - 8 - hertzdamp_pair_oblique_size
+
+    !> The constants of a material pair: hertzdamp_pair_size doubles, so that it is the C
+    !> `hertzdamp_pair_t` and the legacy `REAL(8) PAIR(HERTZDAMP_PAIR_SIZE)` (the same memory).
+    !> The header (the first eight) holds the mean-exact constants that hertzdamp_pair_kd
+    !> reads; the oblique block and the onset-phase table follow, each with a marker of its
+    !> own, and are read only by the per-contact forms that need them.  Set only by
+    !> hertzdamp_pair_init; every per-contact call refuses (HD_BAD_PAIR) a pair that was not
+    !> set, whose init failed, or of which a field it reads was changed since: the marker,
+    !> a keyed hash of the seven header fields, no longer matches, or a field is out of range.
     type, bind(c), public :: hertzdamp_pair_t
         real(c_double) :: alpha = 0.0_c_double       !! alpha of the k, d formulas (a host: alpha_N)
         real(c_double) :: tau_c = 0.0_c_double       !! tau_c of the k, d formulas (a host: tau_N)
@@ -67,20 +79,32 @@ module hertzdamp_pair
         real(c_double) :: law = 0.0_c_double         !! HD_DAMPING_* of the pair
         real(c_double) :: iend = 0.0_c_double        !! HD_END_* of the pair
         real(c_double) :: host = 0.0_c_double        !! HD_HOST_* of the pair
-        real(c_double) :: marker = 0.0_c_double      !! validity marker, a function of the seven others
+        real(c_double) :: marker = 0.0_c_double      !! validity marker, a keyed hash of the seven above
+        !> the oblique-contact block (its own marker last; zero when not built)
+        real(c_double) :: oblique(hertzdamp_pair_oblique_size) = 0.0_c_double
+        !> the onset-phase table (its own markers; zero when not built)
+        real(c_double) :: phase(hertzdamp_pair_phase_size) = 0.0_c_double
     end type hertzdamp_pair_t
 
     !> Contacts per pass of the array forms (buffers on the stack).
     integer, parameter :: chunk = 256
 
-    ! The marker: the exclusive or of the seven fields' bit patterns and a seed, folded
-    ! (high half into low half) and put into the fraction of a number in [1, 2) (always a
-    ! finite double).  A change of any one field changes it; it is checked on every
-    ! per-contact call, so it is kept to a dozen integer operations (rotating each field
-    ! first cost 10 % of the C call).
-    integer(int64), parameter :: marker_seed = int(z'2545F4914F6CDD1D', int64)
+    ! The marker: a keyed hash of the seven header fields' bit patterns: each pattern times
+    ! a key of its own (odd, so that a change of one field always changes the sum modulo
+    ! 2^64; distinct, so that two fields swapped change it unless they differ only in their
+    ! highest bits, which no two valid fields do), the products added, the sum finalised
+    ! (xor-shift, odd multiply, xor-shift: bijections, which bring the high bits down) and its
+    ! low 52 bits put into the fraction of a number in [1, 2) (a finite double).  The keys
+    ! are 31-bit (immediate operands of the multiplications).  With the range checks of the
+    ! fields the per-contact path reads (header_valid) about 30 integer operations, no
+    ! branch, off the floating-point units that the k, d formulas use.
+    integer(int64), parameter :: marker_keys(8) = [int(z'4F6CDD1D', int64), int(z'7F4A7C15', int64), &
+        int(z'1CE4E5B9', int64), int(z'133111EB', int64), int(z'6659FD93', int64), int(z'78BD642F', int64), &
+        int(z'20B428DB', int64), int(z'1C88C6E3', int64)]
     integer(int64), parameter :: fraction_bits = int(z'000FFFFFFFFFFFFF', int64)
     integer(int64), parameter :: one_bits = transfer(1.0_wp, 0_int64)
+    !> Largest tau_c and alpha a valid pair holds (the range checks of the header).
+    real(wp), parameter :: pair_tau_max = 1.0e4_wp, pair_alpha_max = 1.0e4_wp
 
     !> k and d of contacts from the constants of a pair: one contact (elemental) or rank-1
     !> arrays of T_c, m, u (vectorised), T_c and/or m also as scalars.
@@ -151,32 +175,69 @@ contains
         if (present(stats)) stats = st
     end subroutine hertzdamp_pair_init
 
-    !> A valid pair of the given constants (the caller has checked them).
+    !> A valid pair of the given constants (the caller has checked them).  steps is kept
+    !> when it is a valid N (host none does not use it, but hertzdamp_c_pair_stats runs the
+    !> pair at its N), else 0.
     pure subroutine set_pair(a, tau, a_cont, steps, law, iend, host, pair)
         real(wp), intent(in) :: a, tau, a_cont, steps
         integer, intent(in) :: law, iend, host
         type(hertzdamp_pair_t), intent(out) :: pair
-        pair = hertzdamp_pair_t(a, tau, a_cont, steps, real(law, wp), real(iend, wp), real(host, wp), 0.0_wp)
+        real(wp) :: n
+        n = 0.0_wp
+        if (steps >= hertzdamp_host_steps_min .and. steps <= hertzdamp_host_steps_max) n = steps
+        pair = hertzdamp_pair_t(alpha=a, tau_c=tau, alpha_cont=a_cont, steps=n, law=real(law, wp), &
+                                iend=real(iend, wp), host=real(host, wp))
         pair%marker = transfer(marker_of(pair), 1.0_wp)
     end subroutine set_pair
 
-    !> The marker that a valid pair with these seven fields carries (bit pattern).
+    !> The marker that a valid pair with these seven header fields carries (bit pattern).
     pure integer(int64) function marker_of(pair) result(bits)
         type(hertzdamp_pair_t), intent(in) :: pair
         integer(int64) :: h
-        h = ieor(ieor(ieor(transfer(pair%alpha, 0_int64), transfer(pair%tau_c, 0_int64)), &
-                      ieor(transfer(pair%alpha_cont, 0_int64), transfer(pair%steps, 0_int64))), &
-                 ieor(ieor(transfer(pair%law, 0_int64), transfer(pair%iend, 0_int64)), &
-                      ieor(transfer(pair%host, 0_int64), marker_seed)))
-        h = ieor(h, shiftr(h, 32))
+        h = (bits_of(pair%alpha) * marker_keys(1) + bits_of(pair%tau_c) * marker_keys(2)) + &
+            (bits_of(pair%alpha_cont) * marker_keys(3) + bits_of(pair%steps) * marker_keys(4)) + &
+            ((bits_of(pair%law) * marker_keys(5) + bits_of(pair%iend) * marker_keys(6)) + &
+             bits_of(pair%host) * marker_keys(7))
+        h = ieor(h, shiftr(h, 31)) * marker_keys(8)
+        h = ieor(h, shiftr(h, 29))
         bits = ior(iand(h, fraction_bits), one_bits)
     end function marker_of
 
-    !> HD_OK for a pair set by hertzdamp_pair_init and not changed since, else HD_BAD_PAIR.
+    !> The bit pattern of a double.
+    pure elemental integer(int64) function bits_of(x)
+        real(c_double), intent(in) :: x
+        bits_of = transfer(x, 0_int64)
+    end function bits_of
+
+    !> hi's bit pattern minus x's: negative when x > hi (NaN and infinities included), for
+    !> x >= 0 (bit patterns order non-negative doubles as their values).
+    pure elemental integer(int64) function above(x, hi)
+        real(c_double), intent(in) :: x, hi
+        above = transfer(hi, 0_int64) - transfer(x, 0_int64)
+    end function above
+
+    !> Whether the header of a pair is valid: its marker matches (no field changed) and every
+    !> field is in range (law, end and host valid codes; alpha and alpha(e) in [0, 1e4]; tau_c
+    !> in (0, 1e4]; steps in [0, 1e5]).  The check of every per-contact call, in integer
+    !> arithmetic on the bit patterns, without a branch: the sign bit of their or is set when
+    !> a field is negative, that of a difference `above` when it exceeds its bound.
+    pure logical function header_valid(pair) result(ok)
+        type(hertzdamp_pair_t), intent(in) :: pair
+        integer(int64) :: bad
+        bad = ior(ior(ior(bits_of(pair%alpha), bits_of(pair%tau_c)), ior(bits_of(pair%alpha_cont), bits_of(pair%steps))), &
+                  ior(ior(bits_of(pair%law), bits_of(pair%iend)), bits_of(pair%host)))
+        bad = ior(bad, ior(ior(above(pair%alpha, pair_alpha_max), above(pair%tau_c, pair_tau_max)), &
+                           ior(above(pair%alpha_cont, pair_alpha_max), above(pair%steps, hertzdamp_host_steps_max))))
+        bad = ior(bad, ior(ior(above(pair%law, real(hertzdamp_max_law, wp)), above(pair%iend, 1.0_wp)), &
+                           ior(above(pair%host, real(hertzdamp_max_host, wp)), bits_of(pair%tau_c) - 1_int64)))
+        ok = ior(shiftr(bad, 63), ieor(bits_of(pair%marker), marker_of(pair))) == 0_int64
+    end function header_valid
+
+    !> HD_OK for a pair set by hertzdamp_pair_init whose header was not changed since (the
+    !> marker matches and every field is in range, header_valid), else HD_BAD_PAIR.
     pure elemental integer function hertzdamp_pair_status(pair) result(status)
         type(hertzdamp_pair_t), intent(in) :: pair
-        status = HD_BAD_PAIR
-        if (transfer(pair%marker, 0_int64) == marker_of(pair)) status = HD_OK
+        status = merge(HD_OK, HD_BAD_PAIR, header_valid(pair))
     end function hertzdamp_pair_status
 
     ! ================================================================ k, d of one contact
@@ -233,7 +294,7 @@ contains
         if (.not. (present(p) .and. present(k) .and. present(d))) return
         ! the usual contact (a valid pair, T_c, m, u in the direct range, no bound met) here,
         ! every other one out of line: the entry point keeps no stack frame for the rest
-        if (hertzdamp_pair_status(p) == HD_OK .and. direct(tc, m, u)) then
+        if (header_valid(p) .and. direct(tc, m, u)) then
             call direct_kd(int(p%law), p%alpha, p%tau_c, tc, m, u, k_, d_)
             if (k_phys <= 0.0_wp .or. (k_phys <= huge(k_phys) .and. k_phys > k_)) then
                 k = k_

@@ -37,11 +37,16 @@ module hertzdamp_status
     integer, parameter, public :: HD_BAD_STEPS = 27        !! steps per contact (or step h) not finite or outside the allowed range
     integer, parameter, public :: HD_HOST_UNREACHABLE = 28 !! no alpha reaches this e with the host at so few steps per contact
     integer, parameter, public :: HD_BAD_PAIR = 29         !! pair constants not set by hertzdamp_pair_init, or changed since
+    integer, parameter, public :: HD_PHASE_UNREACHABLE = 30 !! some onset phase cannot reach e and T_c at so few steps
+    integer, parameter, public :: HD_BAD_PHASE = 31        !! onset phase not finite or outside (0, 1]
+    integer, parameter, public :: HD_NO_PHASE_TABLE = 32   !! the pair was initialised without its onset-phase table
+    integer, parameter, public :: HD_BAD_TANGENTIAL = 33   !! tangential model or its parameters invalid
+    integer, parameter, public :: HD_BAD_OBLIQUE = 34      !! oblique-contact argument invalid (tangential speed, radii, angle)
 
     !> Length of the stored messages (each fits, blank-padded).
     integer, parameter, public :: hertzdamp_message_len = 192
     !> Largest status code with a message of its own.
-    integer, parameter, public :: hertzdamp_max_status = 29
+    integer, parameter, public :: hertzdamp_max_status = 34
     !> The message of every status code 0..hertzdamp_max_status, then that of unknown
     !> codes: the one table behind hertzdamp_message and the C hertzdamp_strerror.
     character(len=hertzdamp_message_len), parameter, public :: &
@@ -83,6 +88,14 @@ module hertzdamp_status
         'the host cannot reach this restitution coefficient at so few steps per contact: no damping ' // &
             'alpha >= 0 gives it (hertzdamp_host_min_steps tells which N can)', &
         'invalid pair: not set by hertzdamp_pair_init (or its failure), or changed since', &
+        'the host cannot reach this restitution coefficient and contact time at every onset phase at so ' // &
+            'few steps per contact (hertzdamp_phase_min_steps tells which N can)', &
+        'invalid onset phase: must be finite and in (0, 1] (hertzdamp_onset_phase computes it from the ' // &
+            'first overlap)', &
+        'the pair has no onset-phase table: initialise it with the phase form (hertzdamp_pair_init with ' // &
+            'phase = .true., hertzdamp_c_pair_init_phase)', &
+        'invalid tangential model or parameters', &
+        'invalid oblique-contact argument', &
         'unknown status code']
 
     public :: hertzdamp_message

@@ -114,7 +114,8 @@ C     by NPH; the stratified sampling error of the means is below it.
       IMPLICIT NONE
       INCLUDE 'hertzdamp.fi'
       INTEGER IHOST
-      DOUBLE PRECISION AM, DT, ETARG, U, TC, PAIR(8), X, XOLD, V, A
+      DOUBLE PRECISION AM, DT, ETARG, U, TC, X, XOLD, V, A
+      REAL(8) PAIR(HERTZDAMP_PAIR_SIZE)
       DOUBLE PRECISION AK, D, UIN, T, TON, SE, ST, VE, VT, E1, T1
       DOUBLE PRECISION EPREV, TPREV
       INTEGER NSTEP, NPH, J, ISTEP, IERR, NDONE

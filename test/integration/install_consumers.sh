@@ -229,8 +229,8 @@ check "C: pair formulas, bounded, array and damping-law entry points agree with 
 # ------------------------------------------------------------ the per-pair API three ways, bit for bit
 # The same grid (laws, contact ends, hosts none and lammps, e, contacts with and without
 # the bound, a bad speed) through C (hertzdamp_c_pair_init/_kd), a fixed-form caller through
-# hertzdamp.fi (HERTZDAMP_PAIR_INIT/_KD with DOUBLE PRECISION PAIR(8)) and the module
-# API (hertzdamp_pair_init/_kd): every status, the eight doubles of the pair, k and d
+# hertzdamp.fi (HERTZDAMP_PAIR_INIT/_KD with REAL(8) PAIR(HERTZDAMP_PAIR_SIZE)) and the module
+# API (hertzdamp_pair_init/_kd): every status, the eight doubles of the pair's header, k and d
 # printed as bit patterns, and the three outputs compared byte for byte.
 cat >"$tmp/pair.c" <<'C'
 #include <stdio.h>
@@ -264,8 +264,9 @@ cat >"$tmp/pair.f" <<'F'
       IMPLICIT NONE
       INCLUDE 'hertzdamp.fi'
       DOUBLE PRECISION ES(3), TCS(3), MS(3), US(3), KPS(3)
-      DOUBLE PRECISION PAIR(8), K, D
-      INTEGER IHOST, ILAW, IEND, I, C, B, IERR
+      REAL(8) PAIR(HERTZDAMP_PAIR_SIZE)
+      DOUBLE PRECISION K, D
+      INTEGER IHOST, ILAW, IEND, I, C, B, IERR, J
       DATA ES /0.9D0, 0.5D0, 0.1D0/, TCS /1D-5, 1D-40, 3D-4/
       DATA MS /2D-6, 1D0, 1D35/, US /0.5D0, 3D0, -1D-3/
       DATA KPS /0D0, 1D3, -1D0/
@@ -275,7 +276,7 @@ cat >"$tmp/pair.f" <<'F'
       DO I = 1, 3
         CALL HERTZDAMP_PAIR_INIT(ES(I), ILAW, IEND, IHOST, 20D0, PAIR,
      &                           IERR)
-        WRITE (*, '(I0,8(1X,Z16.16))') IERR, PAIR
+        WRITE (*, '(I0,8(1X,Z16.16))') IERR, (PAIR(J), J = 1, 8)
         DO C = 1, 3
         DO B = 1, 3
           CALL HERTZDAMP_PAIR_KD(PAIR, TCS(C), MS(C), US(C), KPS(B),
@@ -332,7 +333,7 @@ check "per-pair module client builds" gfortran -I"$prefix/include/hertzdamp" "$t
 "$tmp/pair_c" >"$tmp/pair_c.out" 2>&1; "$tmp/pair_f" >"$tmp/pair_f.out" 2>&1; "$tmp/pair_m" >"$tmp/pair_m.out" 2>&1
 check "per-pair: 360 records, successes and failures among them" bash -c \
   "test \$(wc -l <'$tmp/pair_m.out') -eq 360 && grep -q '^0 ' '$tmp/pair_m.out' && grep -qv '^0 ' '$tmp/pair_m.out'"
-check "per-pair: C = module, bit for bit (statuses, PAIR(8), k, d)" cmp "$tmp/pair_c.out" "$tmp/pair_m.out"
+check "per-pair: C = module, bit for bit (statuses, the pair header, k, d)" cmp "$tmp/pair_c.out" "$tmp/pair_m.out"
 check "per-pair: fixed form through hertzdamp.fi = module, bit for bit" cmp "$tmp/pair_f.out" "$tmp/pair_m.out"
 
 # ------------------------------------------------------------ the _n functions under aliasing

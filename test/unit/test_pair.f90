@@ -620,7 +620,7 @@ contains
         call s%check(st == HD_OK, 'a copy of a valid pair is valid')
         ! each field changed: by one ulp, to zero, to the value of another pair
         nbad = 0
-        v = transfer(p, v)
+        v = [p%alpha, p%tau_c, p%alpha_cont, p%steps, p%law, p%iend, p%host, p%marker]
         do i = 1, 8
             do j = 1, 3
                 pl = v
@@ -632,7 +632,7 @@ contains
                 case default
                     pl(i) = v(i) + 1.0_wp
                 end select
-                q = transfer(pl, q)
+                q = header(pl, p)
                 call hertzdamp_pair_kd(q, 1.0e-4_wp, 1.0_wp, 1.0_wp, k, d, st)
                 if (st /= HD_BAD_PAIR .or. k /= 0.0_wp .or. d /= 0.0_wp) nbad = nbad + 1
             end do
@@ -645,12 +645,157 @@ contains
                 call random_number(r)
                 pl(j) = transfer(int(r * 2.0_wp**62, int64) * 3_int64 + 12345_int64 * i, 1.0_wp)
             end do
-            q = transfer(pl, q)
+            q = header(pl, p)
             call hertzdamp_pair_kd(q, 1.0e-4_wp, 1.0_wp, 1.0_wp, k, d, st)
             if (st /= HD_BAD_PAIR) nbad = nbad + 1
         end do
         call s%check(nbad == 0, '1000 random bit patterns: HD_BAD_PAIR')
+        call tampered_pairs()
     end subroutine invalid_pairs
+
+    !> Issue 30, defect 1: changes that an exclusive-or marker cannot see (two fields swapped,
+    !> two bits of one field flipped, both signs flipped) are refused; and a pair forged with a
+    !> matching marker (computed here by the keyed hash the module documents, written again
+    !> independently) is still refused when a field is out of range (law 7, alpha NaN or
+    !> negative, steps -1 or 1e6, tau_c 0, host 99).
+    subroutine tampered_pairs()
+        type(hertzdamp_pair_t) :: p, q
+        real(wp) :: k, d, nan
+        integer :: st, i, nbad
+        integer(int64) :: b
+        nan = ieee_value(1.0_wp, ieee_quiet_nan)
+        ! law 1 and host 3 (differ, so that swapping them is a change)
+        call hertzdamp_pair_init(0.5_wp, HD_DAMPING_TSUJI, HD_END_FORCE, HD_HOST_MFIX_AB2, 20.0_wp, p, st)
+        call s%check(st == HD_OK, 'the pair the tampering starts from is valid')
+        q = p
+        q%alpha = p%tau_c
+        q%tau_c = p%alpha
+        call expect_bad(q, 'alpha and tau_c swapped')
+        q = p
+        q%law = p%host
+        q%host = p%law
+        call expect_bad(q, 'law and host swapped')
+        q = p
+        q%alpha_cont = p%steps
+        q%steps = p%alpha_cont
+        call expect_bad(q, 'alpha(e) and steps swapped')
+        q = p
+        q%alpha = -p%alpha
+        q%tau_c = -p%tau_c
+        call expect_bad(q, 'alpha and tau_c both negated')
+        q = p
+        q%alpha = 0.5_wp * p%alpha
+        call expect_bad(q, 'alpha halved')
+        nbad = 0
+        do i = 0, 31
+            q = p
+            b = transfer(p%alpha, b)
+            q%alpha = transfer(ieor(b, ior(shiftl(1_int64, i), shiftl(1_int64, i + 32))), 1.0_wp)
+            call hertzdamp_pair_kd(q, 1.0e-4_wp, 1.0_wp, 1.0_wp, k, d, st)
+            if (st /= HD_BAD_PAIR) nbad = nbad + 1
+            q = p
+            b = transfer(p%tau_c, b)
+            q%tau_c = transfer(ieor(b, ior(shiftl(1_int64, i), shiftl(1_int64, i + 20))), 1.0_wp)
+            call hertzdamp_pair_kd(q, 1.0e-4_wp, 1.0_wp, 1.0_wp, k, d, st)
+            if (st /= HD_BAD_PAIR) nbad = nbad + 1
+        end do
+        call s%check(nbad == 0, 'two bits of alpha (i, i + 32) or tau_c (i, i + 20) flipped, i = 0..31: HD_BAD_PAIR')
+        ! forged with a matching marker: the range checks
+        q = p
+        call seal(q)
+        call hertzdamp_pair_kd(q, 1.0e-4_wp, 1.0_wp, 1.0_wp, k, d, st)
+        call s%check(st == HD_OK .and. q%marker == p%marker, 'the test''s own keyed hash reproduces the marker')
+        q = p
+        q%law = 7.0_wp
+        call forged(q, 'law 7')
+        q = p
+        q%alpha = nan
+        call forged(q, 'alpha NaN')
+        q = p
+        q%alpha = -p%alpha
+        q%tau_c = -p%tau_c
+        call forged(q, 'alpha and tau_c negated')
+        q = p
+        q%steps = -1.0_wp
+        call forged(q, 'steps -1')
+        q = p
+        q%steps = 1.0e6_wp
+        call forged(q, 'steps 1e6')
+        q = p
+        q%iend = 2.0_wp
+        call forged(q, 'end 2')
+        q = p
+        q%alpha_cont = huge(1.0_wp)
+        call forged(q, 'alpha(e) huge')
+        q = p
+        q%tau_c = 0.0_wp
+        call forged(q, 'tau_c 0')
+        q = p
+        q%host = 99.0_wp
+        call forged(q, 'host 99')
+    end subroutine tampered_pairs
+
+    !> The pair pp with its eight header fields replaced by h.
+    pure type(hertzdamp_pair_t) function header(h, pp) result(q)
+        real(wp), intent(in) :: h(8)
+        type(hertzdamp_pair_t), intent(in) :: pp
+        q = pp
+        q%alpha = h(1)
+        q%tau_c = h(2)
+        q%alpha_cont = h(3)
+        q%steps = h(4)
+        q%law = h(5)
+        q%iend = h(6)
+        q%host = h(7)
+        q%marker = h(8)
+    end function header
+
+    !> A tampered pair gives HD_BAD_PAIR and k = d = 0.
+    subroutine expect_bad(pp, what)
+        type(hertzdamp_pair_t), intent(in) :: pp
+        character(len=*), intent(in) :: what
+        real(wp) :: k, d
+        integer :: st
+        call hertzdamp_pair_kd(pp, 1.0e-4_wp, 1.0_wp, 1.0_wp, k, d, st)
+        call s%check(st == HD_BAD_PAIR .and. k == 0.0_wp .and. d == 0.0_wp, 'tampered pair (' // what // &
+                     '): HD_BAD_PAIR, k = d = 0')
+    end subroutine expect_bad
+
+    !> A pair forged with a matching marker (seal) and one field out of range: refused by the
+    !> module and the C call.
+    subroutine forged(pp, what)
+        type(hertzdamp_pair_t), intent(inout) :: pp
+        character(len=*), intent(in) :: what
+        real(wp) :: kk, dd
+        integer(c_int) :: stc
+        call seal(pp)
+        call expect_bad(pp, 'forged with a matching marker, ' // what)
+        stc = hertzdamp_c_pair_kd(pp, 1.0e-4_wp, 1.0_wp, 1.0_wp, 0.0_wp, kk, dd)
+        call s%check(stc == HD_BAD_PAIR .and. kk == 0.0_wp .and. dd == 0.0_wp, &
+                     'C hertzdamp_c_pair_kd: forged pair (' // what // '): HD_BAD_PAIR')
+    end subroutine forged
+
+    !> The marker of the module note, written again here: each of the seven header fields'
+    !> bit patterns times its key, summed; finalised by xor-shift 31,
+    !> times key 8, xor-shift 29; the low 52 bits as the fraction of a number in [1, 2).
+    subroutine seal(pp)
+        type(hertzdamp_pair_t), intent(inout) :: pp
+        integer(int64), parameter :: keys(8) = [int(z'4F6CDD1D', int64), int(z'7F4A7C15', int64), &
+            int(z'1CE4E5B9', int64), int(z'133111EB', int64), int(z'6659FD93', int64), int(z'78BD642F', int64), &
+            int(z'20B428DB', int64), int(z'1C88C6E3', int64)]
+        real(wp) :: f(7)
+        integer(int64) :: h, x
+        integer :: j
+        f = [pp%alpha, pp%tau_c, pp%alpha_cont, pp%steps, pp%law, pp%iend, pp%host]
+        h = 0_int64
+        do j = 1, 7
+            x = transfer(f(j), x)
+            h = h + x * keys(j)
+        end do
+        h = ieor(h, shiftr(h, 31)) * keys(8)
+        h = ieor(h, shiftr(h, 29))
+        pp%marker = transfer(ior(iand(h, int(z'000FFFFFFFFFFFFF', int64)), transfer(1.0_wp, h)), 1.0_wp)
+    end subroutine seal
 
     !> The C functions a host's log uses: hertzdamp_c_pair_stats of a host-exact pair in
     !> its own scheme gives the target (phase means e and T_c/(N dt) = 1, the identity the

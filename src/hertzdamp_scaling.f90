@@ -108,8 +108,9 @@ contains
         lk = lm - 2.5_wp * lts - 0.5_wp * lu
     end function hertzdamp_log_k
 
-    !> d = alpha m t*^(-1) (u t*)^(-q) by logarithms (0 for alpha = 0 and on underflow;
-    !> HD_OUT_OF_RANGE on overflow; nothing is done when status is already set).
+    !> d = alpha m t*^(-1) (u t*)^(-q) by logarithms: 0 for alpha = 0 (no damping), and
+    !> HD_OUT_OF_RANGE when d > 0 is not a normal double (an underflow to 0 would be an
+    !> undamped contact: issue 30); nothing is done when status is already set.
     pure elemental subroutine hertzdamp_scale_log_d(lts, lm, lu, alpha, q, d, status)
         real(wp), intent(in) :: lts      !! ln t*
         real(wp), intent(in) :: lm       !! ln m
@@ -119,7 +120,7 @@ contains
         real(wp), intent(out) :: d       !! damping coefficient [kg s^-1 m^-q]
         integer, intent(inout) :: status !! HD_OK, or HD_OUT_OF_RANGE
         d = 0.0_wp
-        if (alpha > 0.0_wp) call hertzdamp_safe_exp_or_zero(log(alpha) + lm - lts - q * (lu + lts), d, status)
+        if (alpha > 0.0_wp) call hertzdamp_safe_exp(log(alpha) + lm - lts - q * (lu + lts), d, status)
     end subroutine hertzdamp_scale_log_d
 
     !> Exponent q of an optional law argument (0 when absent), or HD_BAD_LAW.

@@ -97,6 +97,16 @@ program test_inverse
     call s%check(st == HD_BAD_TOL, 'iterative tol 0.5: HD_BAD_TOL')
     call hertzdamp_invert(0.5_wp, 1.0e-300_wp, 1.0e300_wp, 1.0_wp, 0, k, d, st)
     call s%check(st == HD_OUT_OF_RANGE .and. same(k, 0.0_wp) .and. same(d, 0.0_wp), 'overflowing k: HD_OUT_OF_RANGE')
+    ! issue 30, defect 5: a damping d > 0 that underflows is out of range, not an undamped contact
+    call hertzdamp_invert(0.5_wp, 1.0e25_wp, 1.0e-300_wp, 1.0e-300_wp, 0, k, d, st)
+    call s%check(st == HD_OUT_OF_RANGE .and. same(k, 0.0_wp) .and. same(d, 0.0_wp), &
+                 'tc 1e25, m 1e-300, u 1e-300 (d underflows): HD_OUT_OF_RANGE, k = d = 0')
+    call hertzdamp_invert(0.5_wp, 1.0e25_wp, 1.0e-310_wp, 1.0_wp, 0, k, d, st)
+    call s%check(st == HD_OUT_OF_RANGE .and. same(k, 0.0_wp) .and. same(d, 0.0_wp), &
+                 'tc 1e25, subnormal m 1e-310 (d underflows): HD_OUT_OF_RANGE, k = d = 0')
+    call hertzdamp_invert(1.0_wp, 1.0e-4_wp, 1.0e-40_wp, 1.0_wp, 0, k, d, st)
+    call s%check(st == HD_OK .and. k > 0.0_wp .and. same(d, 0.0_wp), &
+                 'e = 1 (alpha = 0) on the logarithmic path: d = 0 is the undamped contact, status 0')
 
     ! log path = direct path (k is proportional to m at fixed t*, u: k(1e-40) = 1e-20 k(1e-20))
     call hertzdamp_invert(0.5_wp, 1.0e-4_wp, 1.0e-20_wp, 1.0_wp, 0, k, d, st)

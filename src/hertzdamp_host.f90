@@ -118,6 +118,13 @@ module hertzdamp_host
         integer :: law = 0, iend = 0, host = 0
     end type ctx_t
 
+    !> Phases of the stratified proxy of the phase means that the bracketing solve searches
+    !> with (the midpoint rule: an error of about the jumps of e(phi) over n_proxy, 1e-3 of e
+    !> in the regular cases; the solution is then polished with the exact means).
+    integer, parameter :: n_proxy = 64
+    !> Relative tolerance of the bracketing solve on the proxy means (its result is polished).
+    real(wp), parameter :: proxy_tol = 1.0e-9_wp
+
     !> Running sums of the phase quadrature (integrals over the pieces done so far).
     type :: sums_t
         real(wp) :: ie = 0.0_wp, it = 0.0_wp, ie2 = 0.0_wp, it2 = 0.0_wp
@@ -144,9 +151,17 @@ module hertzdamp_host
     integer, parameter :: level_min = 2, level_max = 7
     real(wp), parameter :: quad_tol = 1.0e-10_wp
     !> Relative tolerance of the solves (the means they match), and the most phase
-    !> statistics one solve computes before it gives up (a regular solve takes 6 to 12).
+    !> statistics Newton computes before the bracketing solve takes over (a regular solve
+    !> takes 6 to 12).
     real(wp), parameter :: solve_tol = 2.0e-12_wp
     integer, parameter :: max_means = 60
+    !> The budget of Newton's polish of the bracketing solve's result on the exact means.
+    integer, parameter :: polish_means = 20
+    !> A discrete collision with e above this gains energy: the step is unstable for the
+    !> damping (the per-pair solve's bracketing does not follow such collisions).
+    real(wp), parameter :: unstable_e = 1.5_wp
+    !> The steps beyond N_min at which hertzdamp_host_min_steps also requires success.
+    integer, parameter :: min_steps_window = 3
     !> Largest N that hertzdamp_host_min_steps tries.
     integer, parameter :: n_search_max = 1024
 
@@ -775,6 +790,44 @@ contains
         status = HD_OK
     end subroutine phase_stats
 
+    !> The stratified proxy of the phase means (mean of e and tau_c at the midpoints
+    !> phi = (j - 1/2) / n_proxy; spreads, min and max over them): the search's cheap means.
+    !> Status HD_NO_REBOUND when a phase does not rebound.
+    pure subroutine proxy_stats(alpha, h, law, iend, host, stats, status)
+        real(wp), intent(in) :: alpha, h
+        integer, intent(in) :: law, iend, host
+        type(hertzdamp_host_stats), intent(out) :: stats
+        integer, intent(out) :: status
+        type(run_t) :: r
+        real(wp) :: se, st, se2, st2
+        integer :: j
+        se = 0.0_wp; st = 0.0_wp; se2 = 0.0_wp; st2 = 0.0_wp
+        stats%e_min = huge(1.0_wp)
+        stats%e_max = -huge(1.0_wp)
+        stats%tau_min = huge(1.0_wp)
+        stats%tau_max = -huge(1.0_wp)
+        do j = 1, n_proxy
+            call run(alpha, h, (real(j, wp) - 0.5_wp) / real(n_proxy, wp), law, iend, host, r)
+            status = r%status
+            if (status /= HD_OK) then
+                stats = hertzdamp_host_stats()
+                return
+            end if
+            se = se + r%e
+            st = st + r%tau
+            se2 = se2 + r%e**2
+            st2 = st2 + r%tau**2
+            stats%e_min = min(stats%e_min, r%e)
+            stats%e_max = max(stats%e_max, r%e)
+            stats%tau_min = min(stats%tau_min, r%tau)
+            stats%tau_max = max(stats%tau_max, r%tau)
+        end do
+        stats%e_mean = se / n_proxy
+        stats%tau_mean = st / n_proxy
+        stats%e_sd = sqrt(max(se2 / n_proxy - stats%e_mean**2, 0.0_wp))
+        stats%tau_sd = sqrt(max(st2 / n_proxy - stats%tau_mean**2, 0.0_wp))
+    end subroutine proxy_stats
+
     !> One collision at phase p, its values kept for the min and max.
     pure subroutine sample(cx, p, r, acc)
         type(ctx_t), intent(in) :: cx
@@ -920,8 +973,11 @@ contains
 
     !> The per-pair constants of a host (doc/host-schemes.md): alpha and tau_c such that
     !> with h = tau_c / steps the host's phase means are e_mean = e and tau_mean = tau_c,
-    !> each to 1e-10 relative (Newton's method on the phase means in (alpha, h), started from
-    !> the continuous inverse of the law and end).  stats: the phase statistics there.
+    !> each to 2e-12 relative.  Newton's method on the phase means in (alpha, h), started from
+    !> the continuous inverse of the law and end (newton_solve), and where it does not converge
+    !> a bracketing solve that finds a solution wherever one exists on the branch where e_mean
+    !> falls with alpha (nested_solve; an explicit scheme's e_mean rises again for strong
+    !> damping at a coarse step).  stats: the phase statistics there.
     !> host = HD_HOST_NONE: exactly hertzdamp_fit_inverse (alpha(e), tau_c(alpha)) with
     !> zero spread (steps checked, not used).  steps is real (T_c = N dt need not be whole).  Status HD_OK; for bad
     !> input (in this order) HD_BAD_HOST, HD_BAD_LAW, HD_BAD_END, HD_BAD_RESTITUTION (e
@@ -938,10 +994,8 @@ contains
         real(wp), intent(out) :: tau_c                    !! contact duration (units of t*): t* = T_c / tau_c
         type(hertzdamp_host_stats), intent(out) :: stats  !! phase statistics at the solution
         integer, intent(out) :: status                    !! HD_OK or the failure
-        real(wp) :: a0, t0, x(2), r(2), xt(2), rt(2), jac(2, 2), dx(2), sc(2), det, lam, nrm, nrmt, f
-        type(hertzdamp_host_stats) :: st0, stt
-        integer :: it, ls, sv, nev
-        logical :: fresh, need_jac, ok
+        real(wp) :: a0, t0, x(2), xp(2)
+        type(ctx_t) :: cx
         alpha = 0.0_wp
         tau_c = 0.0_wp
         status = check_common(law, iend, host)
@@ -957,12 +1011,59 @@ contains
             stats = point_stats(e, t0)
             return
         end if
-        ! Newton in x = (alpha, h) on r = (e_mean - e, tau_mean / (N h) - 1): a forward
-        ! difference Jacobian, Broyden updates while the residual falls fast, a trust
-        ! region (alpha moves by at most half its size, h by at most 40 %) and step halving
+        cx = ctx_t(0.0_wp, 0.0_wp, law, iend, host)
+        call newton_solve(cx, e, steps, [a0, t0 / steps], max_means, x, stats, status)
+        if (status /= HD_OK) then
+            ! the bracketing solve on the proxy means, then Newton on the exact ones from there
+            call nested_solve(cx, e, steps, a0, t0 / steps, x, stats, status)
+            xp = x
+            if (status == HD_OK) call newton_solve(cx, e, steps, xp, polish_means, x, stats, status)
+        end if
+        if (status == HD_OK) then
+            alpha = x(1)
+            tau_c = steps * x(2)
+        else
+            stats = hertzdamp_host_stats()
+        end if
+    end subroutine hertzdamp_host_solve
+
+    !> The residual of the per-pair solve at x = (alpha, h): (e_mean - e, tau_mean / (N h) - 1)
+    !> and the statistics there; sv /= HD_OK where the phase statistics fail.
+    pure subroutine solve_residual(cx, e, steps, x, r, st, sv)
+        type(ctx_t), intent(in) :: cx
+        real(wp), intent(in) :: e, steps, x(2)
+        real(wp), intent(out) :: r(2)
+        type(hertzdamp_host_stats), intent(out) :: st
+        integer, intent(out) :: sv
+        r = huge(1.0_wp)
+        sv = check_alpha(x(1))
+        if (sv == HD_OK) sv = check_h(x(2))
+        if (sv /= HD_OK) return
+        call phase_stats(x(1), x(2), cx%law, cx%iend, cx%host, st, sv)
+        if (sv /= HD_OK) return
+        r(1) = st%e_mean - e
+        r(2) = st%tau_mean / (steps * x(2)) - 1.0_wp
+    end subroutine solve_residual
+
+    !> Newton in x = (alpha, h) on the residual of solve_residual from x0: a forward
+    !> difference Jacobian, Broyden updates while the residual falls fast, a trust region
+    !> (alpha moves by at most half its size, h by at most 40 %) and step halving.  HD_OK with
+    !> both residuals below solve_tol (e relative), else HD_HOST_UNREACHABLE (also after
+    !> `budget` phase statistics).
+    pure subroutine newton_solve(cx, e, steps, x0, budget, x, stats, status)
+        type(ctx_t), intent(in) :: cx
+        real(wp), intent(in) :: e, steps, x0(2)
+        integer, intent(in) :: budget
+        real(wp), intent(out) :: x(2)
+        type(hertzdamp_host_stats), intent(out) :: stats
+        integer, intent(out) :: status
+        real(wp) :: r(2), xt(2), rt(2), jac(2, 2), dx(2), sc(2), det, lam, nrm, nrmt, f
+        type(hertzdamp_host_stats) :: stt
+        integer :: it, ls, sv, nev
+        logical :: fresh, need_jac, ok
         status = HD_HOST_UNREACHABLE
-        x = [a0, t0 / steps]
-        call residual(x, r, st0, sv)
+        x = x0
+        call solve_residual(cx, e, steps, x, r, stats, sv)
         nev = 1
         if (sv /= HD_OK) return
         nrm = rnorm(r)
@@ -972,13 +1073,10 @@ contains
         nrmt = nrm
         do it = 1, 40
             if (abs(r(1)) <= solve_tol * e .and. abs(r(2)) <= solve_tol) then
-                alpha = x(1)
-                tau_c = steps * x(2)
-                stats = st0
                 status = HD_OK
                 return
             end if
-            if (nev > max_means) return
+            if (nev > budget) return
             if (need_jac) then
                 call jacobian(x, r, jac, sv)
                 nev = nev + 2
@@ -998,13 +1096,13 @@ contains
             do ls = 1, 6
                 xt = x + lam * dx
                 xt(1) = max(xt(1), 0.0_wp)
-                call residual(xt, rt, stt, sv)
+                call solve_residual(cx, e, steps, xt, rt, stt, sv)
                 nev = nev + 1
                 if (sv == HD_OK) then
                     nrmt = rnorm(rt)
                     ok = nrmt < nrm
                 end if
-                if (ok .or. nev > max_means) exit
+                if (ok .or. nev > budget) exit
                 lam = 0.5_wp * lam
             end do
             if (.not. ok) then
@@ -1024,25 +1122,9 @@ contains
             x = xt
             r = rt
             nrm = nrmt
-            st0 = stt
+            stats = stt
         end do
     contains
-        !> The residual at xx; sv /= HD_OK where the phase statistics fail.
-        pure subroutine residual(xx, rr, ss, sv)
-            real(wp), intent(in) :: xx(2)
-            real(wp), intent(out) :: rr(2)
-            type(hertzdamp_host_stats), intent(out) :: ss
-            integer, intent(out) :: sv
-            rr = huge(1.0_wp)
-            sv = check_alpha(xx(1))
-            if (sv == HD_OK) sv = check_h(xx(2))
-            if (sv /= HD_OK) return
-            call phase_stats(xx(1), xx(2), law, iend, host, ss, sv)
-            if (sv /= HD_OK) return
-            rr(1) = ss%e_mean - e
-            rr(2) = ss%tau_mean / (steps * xx(2)) - 1.0_wp
-        end subroutine residual
-
         !> Forward-difference Jacobian at xx (residual rr there).
         pure subroutine jacobian(xx, rr, jj, sv)
             real(wp), intent(in) :: xx(2), rr(2)
@@ -1052,11 +1134,11 @@ contains
             type(hertzdamp_host_stats) :: sd
             jj = 0.0_wp
             d = 1.0e-7_wp * max(xx(1), 1.0e-3_wp)
-            call residual([xx(1) + d, xx(2)], rd, sd, sv)
+            call solve_residual(cx, e, steps, [xx(1) + d, xx(2)], rd, sd, sv)
             jj(:, 1) = (rd - rr) / d
             if (sv /= HD_OK) return
             d = 1.0e-7_wp * xx(2)
-            call residual([xx(1), xx(2) + d], rd, sd, sv)
+            call solve_residual(cx, e, steps, [xx(1), xx(2) + d], rd, sd, sv)
             jj(:, 2) = (rd - rr) / d
         end subroutine jacobian
 
@@ -1064,14 +1146,354 @@ contains
             real(wp), intent(in) :: rr(2)
             rnorm = max(abs(rr(1)) / min(e, 1.0_wp), abs(rr(2)))
         end function rnorm
-    end subroutine hertzdamp_host_solve
+    end subroutine newton_solve
 
-    !> The smallest whole number of steps per contact N (>= 2) for which
-    !> hertzdamp_host_solve succeeds: N - 1 fails (or is below 2), N succeeds.  For messages
-    !> such as "N = 3 steps cannot reach e = 0.5 with lammps; N >= 6 can".  host none: 2.
-    !> Every N up to 32 is tried, beyond that the search doubles N up to 1024 and bisects.
-    !> Status HD_OK, a bad-input status of hertzdamp_host_solve, or HD_HOST_UNREACHABLE when
-    !> no N up to 1024 succeeds (n_min = 0).
+    !> The bracketing solve of the per-pair constants: for a step h, alpha(h) is the damping
+    !> on the falling branch of e_mean(alpha) with e_mean = e (fall_alpha; h is feasible where
+    !> it exists); the contact-time residual g(h) = tau_mean / (N h) - 1 at (alpha(h), h)
+    !> grows without bound as h -> 0 and falls with h.  Its zero is bracketed by steps of 25 %
+    !> from the continuous h0 (bracket_h) and found by the Illinois method.  HD_HOST_UNREACHABLE
+    !> when g stays positive up to h_max or up to the edge of the feasible steps (no solution
+    !> with this N), or when the phase statistics fail.
+    pure subroutine nested_solve(cx, e, steps, a0, h0, x, stats, status)
+        type(ctx_t), intent(in) :: cx
+        real(wp), intent(in) :: e, steps, a0, h0
+        real(wp), intent(out) :: x(2)
+        type(hertzdamp_host_stats), intent(out) :: stats
+        integer, intent(out) :: status
+        real(wp) :: hlo, hhi, glo, ghi, alo, ahi, hm, gm, am
+        type(hertzdamp_host_stats) :: s
+        integer :: it, st, side
+        status = HD_HOST_UNREACHABLE
+        x = 0.0_wp
+        call bracket_h(cx, e, steps, a0, h0, hlo, hhi, glo, ghi, alo, ahi, s, st)
+        if (st /= HD_OK) return
+        if (ghi == 0.0_wp) then
+            x = [ahi, hhi]
+            stats = s
+            status = HD_OK
+            return
+        end if
+        side = 0
+        do it = 1, 100
+            hm = illinois_point(hlo, hhi, glo, ghi)
+            am = merge(alo, ahi, hm - hlo < hhi - hm)
+            call g_of_h(cx, e, steps, hm, am, gm, s, st)
+            if (st /= HD_OK) return
+            if (abs(gm) <= proxy_tol .or. hhi - hlo <= 4.0_wp * spacing(hhi)) then
+                x = [am, hm]
+                stats = s
+                status = HD_OK
+                return
+            end if
+            if (gm > 0.0_wp) then
+                alo = am
+            else
+                ahi = am
+            end if
+            call illinois_update(hm, gm, hlo, hhi, glo, ghi, side)
+        end do
+    end subroutine nested_solve
+
+    !> The contact-time residual g(h) = tau_mean / (N h) - 1 at (alpha(h), h), alpha(h) from
+    !> fall_alpha with the guess a (replaced by alpha(h)); st /= HD_OK where h is infeasible.
+    pure subroutine g_of_h(cx, e, steps, h, a, g, stats, st)
+        type(ctx_t), intent(in) :: cx
+        real(wp), intent(in) :: e, steps, h
+        real(wp), intent(inout) :: a
+        real(wp), intent(out) :: g
+        type(hertzdamp_host_stats), intent(out) :: stats
+        integer, intent(out) :: st
+        call fall_alpha(cx, e, h, a, stats, st)
+        g = 0.0_wp
+        if (st == HD_OK) g = stats%tau_mean / (steps * h) - 1.0_wp
+    end subroutine g_of_h
+
+    !> A bracket hlo < hhi of the zero of g (g(hlo) > 0 >= g(hhi), both feasible; alo, ahi the
+    !> alpha there; stats those at hhi): from h0, steps of 25 % up while g > 0 or down while
+    !> g <= 0 or h is infeasible; where the steps meet the edge of the feasible steps with
+    !> g > 0 on the feasible side, bisection towards the edge (16 halvings) for a feasible
+    !> g <= 0.  HD_HOST_UNREACHABLE when there is none (or h leaves [h_min, h_max]).
+    pure subroutine bracket_h(cx, e, steps, a0, h0, hlo, hhi, glo, ghi, alo, ahi, stats, status)
+        type(ctx_t), intent(in) :: cx
+        real(wp), intent(in) :: e, steps, a0, h0
+        real(wp), intent(out) :: hlo, hhi, glo, ghi, alo, ahi
+        type(hertzdamp_host_stats), intent(out) :: stats
+        integer, intent(out) :: status
+        real(wp) :: h, g, a, hf, af, hx
+        type(hertzdamp_host_stats) :: s
+        integer :: it, st
+        logical :: have_hi, have_lo, have_bad
+        status = HD_HOST_UNREACHABLE
+        hlo = 0.0_wp; hhi = 0.0_wp; glo = 0.0_wp; ghi = 0.0_wp; alo = 0.0_wp; ahi = 0.0_wp
+        have_hi = .false.
+        have_lo = .false.
+        have_bad = .false.   ! an infeasible step above the feasible ones seen (hx)
+        hx = 0.0_wp
+        h = min(max(h0, hertzdamp_host_h_min), hertzdamp_host_h_max)
+        a = a0
+        do it = 1, 80
+            call g_of_h(cx, e, steps, h, a, g, s, st)
+            if (st /= HD_OK) then
+                ! infeasible: a finer step may reach e
+                if (have_lo) exit
+                have_bad = .true.
+                hx = h
+                h = 0.8_wp * h
+                a = a0
+            else if (g > 0.0_wp) then
+                hlo = h
+                glo = g
+                alo = a
+                have_lo = .true.
+                if (have_hi .or. have_bad) exit
+                h = 1.25_wp * h
+            else
+                hhi = h
+                ghi = g
+                ahi = a
+                stats = s
+                have_hi = .true.
+                if (have_lo) exit
+                h = 0.8_wp * h
+            end if
+            if (h < hertzdamp_host_h_min .or. h > hertzdamp_host_h_max) return
+        end do
+        if (have_lo .and. have_hi) then
+            status = HD_OK
+            return
+        end if
+        if (.not. (have_lo .and. have_bad)) return
+        ! g > 0 at hlo, infeasible at hx > hlo: look for a feasible g <= 0 in between, unless
+        ! g cannot get there: tau_mean changes little with h, so that 1 + g falls about like
+        ! 1/h; beyond a margin of 20 % that would need, there is no zero
+        if (st /= HD_OK .and. h > hlo) hx = h
+        if ((1.0_wp + glo) * (hlo / hx) > 1.2_wp) return
+        hf = hlo
+        af = alo
+        do it = 1, 10
+            h = 0.5_wp * (hf + hx)
+            a = af
+            call g_of_h(cx, e, steps, h, a, g, s, st)
+            if (st /= HD_OK) then
+                hx = h
+            else if (g > 0.0_wp) then
+                hf = h
+                af = a
+                hlo = h
+                glo = g
+                alo = a
+            else
+                hhi = h
+                ghi = g
+                ahi = a
+                stats = s
+                status = HD_OK
+                return
+            end if
+        end do
+    end subroutine bracket_h
+
+    !> At the step h, the damping alpha on the falling branch of e_mean(alpha) (from
+    !> alpha = 0 up to its minimum, beyond which an explicit scheme's e_mean rises again) with
+    !> e_mean = e to proxy_tol relative on the proxy means (proxy_stats), and their statistics; alpha holds a guess on
+    !> entry.  A collision without rebound counts as e_mean = 0.  HD_HOST_UNREACHABLE when e
+    !> lies below the branch's minimum or above e_mean(0), or the statistics fail.
+    pure subroutine fall_alpha(cx, e, h, alpha, stats, status)
+        type(ctx_t), intent(in) :: cx
+        real(wp), intent(in) :: e, h
+        real(wp), intent(inout) :: alpha
+        type(hertzdamp_host_stats), intent(out) :: stats
+        integer, intent(out) :: status
+        real(wp) :: alo, ahi, elo, ehi, a, ea, ap, ep, step, aprev
+        type(hertzdamp_host_stats) :: s
+        integer :: it, st, found
+        status = HD_HOST_UNREACHABLE
+        call mean_of(0.0_wp, elo, stats, st)
+        if (st /= HD_OK .or. elo < e) return
+        alo = 0.0_wp
+        ahi = 0.0_wp
+        ehi = huge(1.0_wp)
+        ! a point a on the falling branch (the guess, halved until e_mean falls there): above
+        ! the target it is the low end of the bracket (found = 1), below it the high end
+        ! (found = 2); a guess halved to 0 starts from alpha = 0 (found = 1)
+        found = 0
+        a = max(min(alpha, 0.5_wp * hertzdamp_host_alpha_max), 0.0_wp)
+        do it = 1, 60
+            if (a < 1.0e-6_wp) then
+                found = 1
+                exit
+            end if
+            call mean_of(a, ea, s, st)
+            if (st == HD_OK) call mean_of(a * (1.0_wp - 1.0e-3_wp), ep, s, st)
+            if (st /= HD_OK) return
+            if (ea < e .and. (ep > ea .or. ea == 0.0_wp)) then
+                ahi = a
+                ehi = ea
+                found = 2
+                exit
+            else if (ea >= e .and. ep > ea) then
+                alo = a
+                elo = ea
+                found = 1
+                exit
+            end if
+            a = 0.5_wp * a
+        end do
+        if (found == 1) then
+            ! e_mean(alo) >= e on the branch: walk up, doubling the step, until it falls below
+            ! e; found it stops falling first, e is below the branch's minimum
+            step = max(0.25_wp * alo, 1.0e-2_wp)
+            aprev = alo
+            do it = 1, 60
+                ap = min(alo + step, hertzdamp_host_alpha_max)
+                call mean_of(ap, ep, s, st)
+                if (st /= HD_OK) return
+                if (ep < e) then
+                    ahi = ap
+                    ehi = ep
+                    exit
+                end if
+                if (ep >= elo) then
+                    ! e_mean rose again: its minimum lies in (aprev, ap); below e there?
+                    call branch_minimum(aprev, ap, ahi, ehi)
+                    exit
+                end if
+                if (ap >= hertzdamp_host_alpha_max) return
+                aprev = alo
+                alo = ap
+                elo = ep
+                step = 2.0_wp * step
+            end do
+        else if (found == 2) then
+            ! e_mean(ahi) < e on the branch: halve until e_mean >= e (the branch falls from 0)
+            alo = ahi
+            do it = 1, 60
+                alo = 0.5_wp * alo
+                if (alo < 1.0e-6_wp) alo = 0.0_wp
+                call mean_of(alo, elo, s, st)
+                if (st /= HD_OK) return
+                if (elo >= e) exit
+                ahi = alo
+                ehi = elo
+            end do
+        end if
+        if (.not. (found > 0 .and. elo >= e .and. ehi < e)) return
+        call illinois_on_mean(alo, ahi, elo, ehi, alpha, stats, status)
+    contains
+        !> The proxy e_mean at alpha (0 without rebound; a collision that gains energy at some
+        !> phase, e > unstable_e, is an unstable step, off the branch: its largest e).
+        pure subroutine mean_of(aa, ee, sa, sta)
+            real(wp), intent(in) :: aa
+            real(wp), intent(out) :: ee
+            type(hertzdamp_host_stats), intent(out) :: sa
+            integer, intent(out) :: sta
+            ee = 0.0_wp
+            sta = check_alpha(aa)
+            if (sta /= HD_OK) return
+            call proxy_stats(aa, h, cx%law, cx%iend, cx%host, sa, sta)
+            if (sta == HD_NO_REBOUND) then
+                sta = HD_OK
+                sa = hertzdamp_host_stats()
+            end if
+            ee = sa%e_mean
+            if (sa%e_max > unstable_e) ee = sa%e_max
+        end subroutine mean_of
+
+        !> Golden-section search of the minimum of e_mean on [lo, hi] (at most 30 steps, to
+        !> 1e-6 of the interval): the point where it is below e if it gets there first (amin,
+        !> emin < e), else the minimum (emin >= e: e out of reach), found early when e lies
+        !> well below what the narrowing bracket can still reach.
+        pure subroutine branch_minimum(lo, hi, amin, emin)
+            real(wp), intent(in) :: lo, hi
+            real(wp), intent(out) :: amin, emin
+            real(wp), parameter :: gr = 0.6180339887498949_wp
+            real(wp) :: x1, x2, f1, f2, l, r
+            type(hertzdamp_host_stats) :: sg
+            integer :: k, stg
+            l = lo
+            r = hi
+            x1 = r - gr * (r - l)
+            x2 = l + gr * (r - l)
+            call mean_of(x1, f1, sg, stg)
+            call mean_of(x2, f2, sg, stg)
+            amin = x1
+            emin = huge(1.0_wp)
+            do k = 1, 30
+                if (f1 < e) then
+                    amin = x1
+                    emin = f1
+                    return
+                else if (f2 < e) then
+                    amin = x2
+                    emin = f2
+                    return
+                end if
+                ! a smooth minimum lies within a few |f1 - f2| of the better point: when e is
+                ! further below, it is out of reach (after a few steps, once the bracket is
+                ! narrow enough for that)
+                if (k > 6 .and. min(f1, f2) - e > 8.0_wp * abs(f1 - f2)) exit
+                if (f1 <= f2) then
+                    r = x2
+                    x2 = x1
+                    f2 = f1
+                    x1 = r - gr * (r - l)
+                    call mean_of(x1, f1, sg, stg)
+                else
+                    l = x1
+                    x1 = x2
+                    f1 = f2
+                    x2 = l + gr * (r - l)
+                    call mean_of(x2, f2, sg, stg)
+                end if
+                if (stg /= HD_OK) return
+            end do
+            emin = min(f1, f2)
+        end subroutine branch_minimum
+
+        !> The Illinois method on e_mean - e in [lo, hi] (e_mean(lo) >= e > e_mean(hi)).
+        pure subroutine illinois_on_mean(lo, hi, emlo, emhi, aout, sout, stout)
+            real(wp), intent(inout) :: lo, hi, emlo, emhi
+            real(wp), intent(inout) :: aout
+            type(hertzdamp_host_stats), intent(inout) :: sout
+            integer, intent(inout) :: stout
+            real(wp) :: glo, ghi, am, em
+            type(hertzdamp_host_stats) :: sm
+            integer :: k, side, stm
+            glo = emlo - e
+            ghi = emhi - e
+            if (glo == 0.0_wp) then
+                call mean_of(lo, em, sout, stout)
+                aout = lo
+                return
+            end if
+            side = 0
+            do k = 1, 200
+                am = illinois_point(lo, hi, glo, ghi)
+                call mean_of(am, em, sm, stm)
+                if (stm /= HD_OK) return
+                if (abs(em - e) <= proxy_tol * e .or. hi - lo <= 4.0_wp * spacing(hi)) then
+                    aout = am
+                    sout = sm
+                    stout = HD_OK
+                    return
+                end if
+                call illinois_update(am, em - e, lo, hi, glo, ghi, side)
+            end do
+        end subroutine illinois_on_mean
+    end subroutine fall_alpha
+
+    !> The smallest whole number of steps per contact N (>= 2) from which hertzdamp_host_solve
+    !> succeeds: at N, N + 1, .., N + 3 (min_steps_window), while N - 1 fails (or is below 2).
+    !> The reach of a scheme is not always monotone in N near its limit (verlet, e = 0.05,
+    !> linear, overlap: N = 12 is reached, 13 not, 14 and up again), hence the window; beyond
+    !> it the reach grows with N over the tested range (test_host checks N - 1 and
+    !> N .. N + 8 over a grid of laws, ends, schemes and e).  For messages such as "N = 3 steps
+    !> cannot reach e = 0.5 with lammps; N >= 6 can".  host none: 2.  A candidate comes from
+    !> the bracketing solve on the proxy means alone (N = 2, then growing by factors of about
+    !> sqrt(2) up to 1024 until it succeeds, then bisection), and is confirmed and moved by
+    !> hertzdamp_host_solve itself: up until the window succeeds, down while N - 1 succeeds.  Status HD_OK, a bad-input status of hertzdamp_host_solve, or
+    !> HD_HOST_UNREACHABLE when no N up to 1024 succeeds (n_min = 0).
     pure subroutine hertzdamp_host_min_steps(e, law, iend, host, n_min, status)
         real(wp), intent(in) :: e        !! target restitution coefficient
         integer, intent(in) :: law       !! HD_DAMPING_*
@@ -1079,10 +1501,11 @@ contains
         integer, intent(in) :: host      !! HD_HOST_*
         integer, intent(out) :: n_min    !! smallest whole N that the solve reaches
         integer, intent(out) :: status   !! HD_OK or the failure
-        integer :: n, lo, hi, mid, st
+        integer :: lo, hi, mid, st, n, k
+        real(wp) :: a0, t0
         n_min = 0
         ! the bad-input statuses first, at N = 2 (a valid N)
-        call try(2, st)
+        call try(2, .false., st)
         if (st == HD_OK) then
             n_min = 2
             status = HD_OK
@@ -1090,46 +1513,64 @@ contains
         end if
         status = st
         if (st /= HD_HOST_UNREACHABLE) return
-        ! every N up to 32, then doubling up to 1024 and bisection between the last
-        ! failure and the first success
-        do n = 3, 32
-            call try(n, st)
-            if (st == HD_OK) then
-                n_min = n
-                status = HD_OK
-                return
-            end if
-        end do
-        lo = 32
-        hi = 64
+        call hertzdamp_fit_inverse(e, iend, a0, t0, st, law)
+        ! the candidate: the fewest N the proxy search reaches
+        lo = 2
+        hi = 3
         do
-            call try(hi, st)
+            call try(hi, .true., st)
             if (st == HD_OK) exit
             lo = hi
-            if (hi >= n_search_max) then
-                status = HD_HOST_UNREACHABLE
-                return
-            end if
-            hi = 2 * hi
+            if (hi >= n_search_max) exit
+            hi = min(max(hi + 1, nint(sqrt(2.0_wp) * real(hi, wp))), n_search_max)
         end do
         do while (hi - lo > 1)
             mid = (lo + hi) / 2
-            call try(mid, st)
+            call try(mid, .true., st)
             if (st == HD_OK) then
                 hi = mid
             else
                 lo = mid
             end if
         end do
-        n_min = hi
+        ! confirmed by the solve itself: up until it succeeds at N .. N + min_steps_window,
+        ! then down while N - 1 succeeds
+        n = hi
+        k = 0
+        do while (k <= min_steps_window)
+            call try(n + k, .false., st)
+            if (st == HD_OK) then
+                k = k + 1
+            else
+                if (n + k >= n_search_max) then
+                    status = HD_HOST_UNREACHABLE
+                    return
+                end if
+                n = n + k + 1
+                k = 0
+            end if
+        end do
+        do while (n > 2)
+            call try(n - 1, .false., st)
+            if (st /= HD_OK) exit
+            n = n - 1
+        end do
+        n_min = n
         status = HD_OK
     contains
-        pure subroutine try(nn, st)
+        !> The solve at nn (proxy: the bracketing solve on the proxy means only).
+        pure subroutine try(nn, proxy, st)
             integer, intent(in) :: nn
+            logical, intent(in) :: proxy
             integer, intent(out) :: st
-            real(wp) :: a, t
+            real(wp) :: a, t, x(2)
             type(hertzdamp_host_stats) :: s
-            call hertzdamp_host_solve(e, law, iend, host, real(nn, wp), a, t, s, st)
+            if (proxy) then
+                call nested_solve(ctx_t(0.0_wp, 0.0_wp, law, iend, host), e, real(nn, wp), a0, t0 / real(nn, wp), x, s, &
+                                  st)
+            else
+                call hertzdamp_host_solve(e, law, iend, host, real(nn, wp), a, t, s, st)
+            end if
         end subroutine try
     end subroutine hertzdamp_host_min_steps
 

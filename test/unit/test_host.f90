@@ -47,6 +47,7 @@ program test_host
     call solve_order()
     call mean_tends_to_continuous()
     call min_steps()
+    call reachable_found()
     call alpha_for_e()
     call bad_input()
     call s%finish()
@@ -543,7 +544,85 @@ contains
         call s%check(st == HD_OK .and. nmin == 2, 'min_steps, host none: 2')
         call hertzdamp_host_min_steps(0.9_wp, HD_DAMPING_LINEAR, HD_END_OVERLAP, HD_HOST_LAMMPS, nmin, st)
         call s%check(st == HD_OK .and. nmin == 2, 'min_steps, lammps e = 0.9: 2 steps already')
+        call min_steps_true()
     end subroutine min_steps
+
+    !> "N >= n can" is true (issue 30, defect 2): over a grid of e, laws, ends and schemes,
+    !> the solve fails at min_steps - 1 and succeeds at every N from min_steps to min_steps + 8.
+    subroutine min_steps_true()
+        real(wp), parameter :: es(3) = [0.05_wp, 0.2_wp, 0.5_wp]
+        integer, parameter :: ihs(4) = [HD_HOST_LAMMPS, HD_HOST_MFIX_AB2, HD_HOST_VERLET, HD_HOST_LAMMPS_PHASE]
+        real(wp) :: a, t
+        type(hertzdamp_host_stats) :: st0
+        integer :: ie, il, iend, ih, nmin, st, n, nbad, ncases, sts
+        nbad = 0
+        ncases = 0
+        do ie = 1, size(es)
+            do il = HD_DAMPING_LINEAR, HD_DAMPING_KUWABARA_KONO
+                do iend = HD_END_OVERLAP, HD_END_FORCE
+                    do ih = 1, size(ihs)
+                        call hertzdamp_host_min_steps(es(ie), il, iend, ihs(ih), nmin, st)
+                        if (st /= HD_OK) then
+                            nbad = nbad + 1
+                            cycle
+                        end if
+                        ncases = ncases + 1
+                        if (nmin > 2) then
+                            call hertzdamp_host_solve(es(ie), il, iend, ihs(ih), real(nmin - 1, wp), a, t, st0, sts)
+                            if (sts == HD_OK) nbad = nbad + 1
+                        end if
+                        do n = nmin, nmin + 8
+                            call hertzdamp_host_solve(es(ie), il, iend, ihs(ih), real(n, wp), a, t, st0, sts)
+                            if (sts /= HD_OK) nbad = nbad + 1
+                        end do
+                    end do
+                end do
+            end do
+        end do
+        call s%check(nbad == 0 .and. ncases == 72, 'min_steps over e = 0.05, 0.2, 0.5, every law and end, ' // &
+                     'lammps/mfix-ab2/verlet/lammps-phase (72 cases): N_min - 1 fails, N_min .. N_min + 8 succeed')
+    end subroutine min_steps_true
+
+    !> Targets reachable at N are found at N (issue 30, defects 2 and 6): lammps-phase, force
+    !> end, e = 0.02 at N = 6 .. 12 (Newton from the continuous constants stalled at 8, 9, 10;
+    !> the old message claimed N >= 6); mfix-ab2, tsuji, force end, e = 0.001 at N = 2, 5 .. 8,
+    !> 11 (6, 7 and 11 failed); each solution's phase means checked by this program's own
+    !> stepper and quadrature (own_mean); and the fewest N of the first case is 6.
+    subroutine reachable_found()
+        real(wp) :: a, t, em, tm
+        type(hertzdamp_host_stats) :: st0
+        integer :: n, st, nmiss, nbad, nm
+        nbad = 0
+        do n = 6, 12
+            call hertzdamp_host_solve(0.02_wp, HD_DAMPING_LINEAR, HD_END_FORCE, HD_HOST_LAMMPS_PHASE, real(n, wp), a, t, &
+                                      st0, st)
+            if (st /= HD_OK) then
+                nbad = nbad + 1
+                cycle
+            end if
+            call own_mean(a, t / n, HD_DAMPING_LINEAR, HD_END_FORCE, HD_HOST_LAMMPS_PHASE, em, tm, nmiss)
+            if (abs(em / 0.02_wp - 1.0_wp) > 1.0e-8_wp .or. abs(tm / t - 1.0_wp) > 1.0e-8_wp .or. nmiss /= 0) &
+                nbad = nbad + 1
+        end do
+        call s%check(nbad == 0, 'lammps-phase, force end, e = 0.02, N = 6 .. 12: every N solved, its means (own ' // &
+                     'stepper) e and tau_c = N h to 1e-8')
+        call hertzdamp_host_min_steps(0.02_wp, HD_DAMPING_LINEAR, HD_END_FORCE, HD_HOST_LAMMPS_PHASE, nm, st)
+        call s%check(st == HD_OK .and. nm == 6, 'lammps-phase, force end, e = 0.02: min_steps = 6 (got ' // itoa(nm) // ')')
+        nbad = 0
+        do n = 2, 11
+            if (n == 3 .or. n == 4 .or. n == 9 .or. n == 10) cycle
+            call hertzdamp_host_solve(0.001_wp, HD_DAMPING_TSUJI, HD_END_FORCE, HD_HOST_MFIX_AB2, real(n, wp), a, t, st0, st)
+            if (st /= HD_OK) then
+                nbad = nbad + 1
+                cycle
+            end if
+            call own_mean(a, t / n, HD_DAMPING_TSUJI, HD_END_FORCE, HD_HOST_MFIX_AB2, em, tm, nmiss)
+            if (abs(em / 0.001_wp - 1.0_wp) > 1.0e-8_wp .or. abs(tm / t - 1.0_wp) > 1.0e-8_wp .or. nmiss /= 0) &
+                nbad = nbad + 1
+        end do
+        call s%check(nbad == 0, 'mfix-ab2, tsuji, force end, e = 0.001, N = 2, 5, 6, 7, 8, 11: every N solved, its ' // &
+                     'means (own stepper) e and tau_c = N h to 1e-8')
+    end subroutine reachable_found
 
     !> At a fixed h, the alpha whose phase-mean e is the target (the deck checker's
     !> corrected coefficient), checked by this program's quadrature; host none: alpha(e).

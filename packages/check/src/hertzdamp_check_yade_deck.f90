@@ -11,14 +11,15 @@
 !> (`PWaveTimeStep()` evaluated as Yade does: min r/sqrt(E/rho) over the spheres).
 !> Statements that name these but cannot be evaluated are noted with file:line; other
 !> Python statements are counted.
-module hertzdamp_peers_yade_deck
-    use hertzdamp, only: hertzdamp_rk
-    use hertzdamp_peers, only: peer_text, PEER_YADE
-    use hertzdamp_peers_text, only: peer_list, peer_vars, peer_eval, peer_num_text, peer_strip_quotes, peer_words, &
-                                    peer_number, peer_directory, SYNTAX_PYTHON
-    use hertzdamp_peers_scene, only: peer_scene, peer_contact, peer_read_lines, peer_where
-    use hertzdamp_host, only: HD_HOST_LAMMPS, HD_HOST_NONE
-    use hertzdamp_apps_text, only: itoa, fmt_short
+module hertzdamp_check_yade_deck
+    use hertzdamp, only: hertzdamp_rk, HD_HOST_LAMMPS, HD_HOST_NONE
+    use hertzdamp_check_model, only: PEER_YADE
+    use hertzdamp_check_scene, only: peer_scene, peer_contact
+    use hertzdamp_text_list, only: text_string, text_list
+    use hertzdamp_text_parse, only: text_number, text_shortest, text_strip_quotes, text_words, text_directory
+    use hertzdamp_text_expr, only: text_vars, text_eval, SYNTAX_PYTHON
+    use hertzdamp_text_file, only: text_read_lines, text_where
+    use hertzdamp_text_format, only: itoa, fmt_short
     implicit none
     private
 
@@ -37,7 +38,7 @@ module hertzdamp_peers_yade_deck
 
     !> What the script defines.
     type :: yade_model
-        type(peer_vars) :: vars
+        type(text_vars) :: vars
         type(ymat), allocatable :: mats(:)
         integer :: nmats = 0, nappended = 0
         character(len=:), allocatable :: law_where, en, betan, vn     !! the Ip2 arguments (text)
@@ -59,11 +60,11 @@ contains
 
     !> Read Yade script files (in order) into a scene.
     subroutine read_yade_deck(paths, scene, msg)
-        type(peer_text), intent(in) :: paths(:)
+        type(text_string), intent(in) :: paths(:)
         type(peer_scene), intent(out) :: scene
         character(len=:), allocatable, intent(out) :: msg
         type(yade_model) :: md
-        type(peer_list) :: lines, stmts, wheres
+        type(text_list) :: lines, stmts, wheres
         integer :: f, i
         msg = ''
         scene%peer = PEER_YADE
@@ -80,8 +81,8 @@ contains
         md%law_label = ''
         md%newton_label = ''
         do f = 1, size(paths)
-            md%dir = peer_directory(paths(f)%s)
-            call peer_read_lines(paths(f)%s, lines, msg, scene%work)
+            md%dir = text_directory(paths(f)%s)
+            call text_read_lines(paths(f)%s, lines, msg, scene%work)
             if (len(msg) > 0) return
             call scene%files%push(paths(f)%s)
             call statements(lines, paths(f)%s, stmts, wheres)
@@ -99,9 +100,9 @@ contains
     !> Logical statements: comments removed, lines joined inside brackets and after \,
     !> triple-quoted strings dropped; with the file:line of their first line.
     subroutine statements(lines, file, stmts, wheres)
-        type(peer_list), intent(in) :: lines
+        type(text_list), intent(in) :: lines
         character(len=*), intent(in) :: file
-        type(peer_list), intent(inout) :: stmts, wheres
+        type(text_list), intent(inout) :: stmts, wheres
         character(len=:), allocatable :: cur, t
         character :: q
         integer :: i, j, depth, start
@@ -151,7 +152,7 @@ contains
             end if
             if (len_trim(cur) > 0) then
                 call stmts%push(trim(adjustl(cur)))
-                call wheres%push(peer_where(file, start))
+                call wheres%push(text_where(file, start))
             end if
             cur = ''
         end do
@@ -212,7 +213,7 @@ contains
     subroutine call_args(s, k, pos, keys, vals)
         character(len=*), intent(in) :: s
         integer, intent(in) :: k
-        type(peer_list), intent(out) :: pos, keys, vals
+        type(text_list), intent(out) :: pos, keys, vals
         character :: q
         integer :: i, depth, start, e
         character(len=:), allocatable :: a
@@ -259,7 +260,7 @@ contains
 
     !> The value of keyword key ('' if absent).
     function kwarg(keys, vals, key) result(v)
-        type(peer_list), intent(in) :: keys, vals
+        type(text_list), intent(in) :: keys, vals
         character(len=*), intent(in) :: key
         character(len=:), allocatable :: v
         integer :: i
@@ -289,7 +290,7 @@ contains
             return
         end if
         if (verify(name, 'abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ0123456789_') /= 0) return
-        call peer_eval(trim(adjustl(s(e + 1:))), SYNTAX_PYTHON, md%vars, x, msg)
+        call text_eval(trim(adjustl(s(e + 1:))), SYNTAX_PYTHON, md%vars, x, msg)
         if (len(msg) > 0) return
         call md%vars%set_num(name, x)
         ok = .true.
@@ -299,7 +300,7 @@ contains
     logical function tuple_assignment(md, lhs, rhs) result(ok)
         type(yade_model), intent(inout) :: md
         character(len=*), intent(in) :: lhs, rhs
-        type(peer_list) :: names, values, k2, v2
+        type(text_list) :: names, values, k2, v2
         real(wp) :: x
         integer :: i
         ok = .false.
@@ -324,7 +325,7 @@ contains
         logical, intent(out) :: ok
         character(len=:), allocatable :: msg
         real(wp) :: y
-        call peer_eval(text, SYNTAX_PYTHON, md%vars, y, msg)
+        call text_eval(text, SYNTAX_PYTHON, md%vars, y, msg)
         ok = len(msg) == 0
         if (ok) x = y
     end subroutine number_arg
@@ -334,7 +335,7 @@ contains
         type(peer_scene), intent(inout) :: scene
         type(yade_model), intent(inout) :: md
         character(len=*), intent(in) :: s, where
-        type(peer_list) :: pos, keys, vals
+        type(text_list) :: pos, keys, vals
         type(ymat) :: m
         type(ymat), allocatable :: tmp(:)
         integer :: k, e, i
@@ -357,7 +358,7 @@ contains
         call mat_number(kwarg(keys, vals, 'young'), m%young)
         call mat_number(kwarg(keys, vals, 'poisson'), m%poisson)
         call mat_number(kwarg(keys, vals, 'density'), m%density)
-        m%label = peer_strip_quotes(kwarg(keys, vals, 'label'))
+        m%label = text_strip_quotes(kwarg(keys, vals, 'label'))
         if (index(s, 'O.materials.append') > 0) then
             m%id = md%nappended
             md%nappended = md%nappended + 1
@@ -389,7 +390,7 @@ contains
         type(peer_scene), intent(inout) :: scene
         type(yade_model), intent(inout) :: md
         character(len=*), intent(in) :: s, where
-        type(peer_list) :: pos, keys, vals
+        type(text_list) :: pos, keys, vals
         integer :: k, m
         k = call_at(s, 'append')
         if (k == 0) then
@@ -428,7 +429,7 @@ contains
         end if
         if (arg(1:1) == '''' .or. arg(1:1) == '"') then
             do i = 1, md%nmats
-                if (md%mats(i)%label == peer_strip_quotes(arg) .and. md%mats(i)%id >= 0) m = i
+                if (md%mats(i)%label == text_strip_quotes(arg) .and. md%mats(i)%id >= 0) m = i
             end do
             return
         end if
@@ -477,7 +478,7 @@ contains
         type(peer_scene), intent(inout) :: scene
         type(yade_model), intent(inout) :: md
         character(len=*), intent(in) :: s, where
-        type(peer_list) :: pos, keys, vals
+        type(text_list) :: pos, keys, vals
         integer :: kind, k, m
         real(wp) :: r
         logical :: ok
@@ -519,7 +520,7 @@ contains
         type(peer_scene), intent(inout) :: scene
         type(yade_model), intent(inout) :: md
         character(len=*), intent(in) :: s, where
-        type(peer_list) :: pos, keys, vals
+        type(text_list) :: pos, keys, vals
         real(wp) :: r, f
         logical :: ok, ok2
         integer :: m
@@ -552,14 +553,14 @@ contains
         type(yade_model), intent(inout) :: md
         character(len=*), intent(in) :: s, where
         integer, intent(in) :: k
-        type(peer_list) :: pos, keys, vals
+        type(text_list) :: pos, keys, vals
         call call_args(s, k, pos, keys, vals)
         md%have_law = .true.
         md%law_where = where
         md%en = kwarg(keys, vals, 'en')
         md%betan = kwarg(keys, vals, 'betan')
         md%vn = kwarg(keys, vals, 'vn')
-        md%law_label = peer_strip_quotes(kwarg(keys, vals, 'label'))
+        md%law_label = text_strip_quotes(kwarg(keys, vals, 'label'))
         if (index(s, 'Law2_ScGeom_MindlinPhys_Mindlin') == 0) call scene%note(where, &
             'Ip2_FrictMat_FrictMat_MindlinPhys without Law2_ScGeom_MindlinPhys_Mindlin in the same statement: ' // &
             'the checker assumes that law')
@@ -575,7 +576,7 @@ contains
         integer :: i, k
         character(len=*), parameter :: ig2(nshape) = [character(len=24) :: 'Ig2_Wall_Sphere_ScGeom', &
                                                       'Ig2_Facet_Sphere_ScGeom', 'Ig2_Box_Sphere_ScGeom']
-        type(peer_list) :: pos, keys, vals
+        type(text_list) :: pos, keys, vals
         do i = 1, nshape
             k = call_at(s, trim(ig2(i)))
             if (k == 0) cycle
@@ -593,11 +594,11 @@ contains
         type(peer_scene), intent(inout) :: scene
         type(yade_model), intent(inout) :: md
         character(len=*), intent(in) :: s, where
-        type(peer_list) :: pos, keys, vals
+        type(text_list) :: pos, keys, vals
         logical :: ok
         call call_args(s, call_at(s, 'NewtonIntegrator'), pos, keys, vals)
         md%newton_where = where
-        md%newton_label = peer_strip_quotes(kwarg(keys, vals, 'label'))
+        md%newton_label = text_strip_quotes(kwarg(keys, vals, 'label'))
         md%damping = 0.2_wp
         if (len(kwarg(keys, vals, 'damping')) > 0) then
             call number_arg(md, kwarg(keys, vals, 'damping'), md%damping, ok)
@@ -650,7 +651,7 @@ contains
         type(peer_scene), intent(inout) :: scene
         type(yade_model), intent(inout) :: md
         character(len=*), intent(in) :: s, where
-        type(peer_list) :: pos, keys, vals, lines, w
+        type(text_list) :: pos, keys, vals, lines, w
         character(len=:), allocatable :: path, msg
         real(wp) :: r, rmin
         integer :: k, m, i
@@ -673,11 +674,11 @@ contains
             return
         end if
         path = ''
-        if (pos%n >= 1) path = peer_strip_quotes(pos%item(1)%s)
+        if (pos%n >= 1) path = text_strip_quotes(pos%item(1)%s)
         if (len(path) > 0) then
             if (path(1:1) /= '/') path = md%dir // path
         end if
-        call peer_read_lines(path, lines, msg, scene%work)
+        call text_read_lines(path, lines, msg, scene%work)
         if (len(msg) > 0) then
             call scene%note(where, 'ymport.text: ' // msg // ' (the spheres'' radii are in it)')
             return
@@ -685,9 +686,9 @@ contains
         rmin = huge(1.0_wp)
         do i = 1, lines%n
             w%n = 0
-            call peer_words(lines%item(i)%s, w)
+            call text_words(lines%item(i)%s, w)
             if (w%n < 4) cycle
-            if (peer_number(w%item(4)%s, r)) rmin = min(rmin, r)
+            if (text_number(w%item(4)%s, r)) rmin = min(rmin, r)
         end do
         if (rmin < huge(1.0_wp)) then
             if (md%mats(m)%rmin <= 0.0_wp .or. rmin < md%mats(m)%rmin) md%mats(m)%rmin = rmin
@@ -743,9 +744,9 @@ contains
                 if (.not. (word_char(t(i - 1:i - 1)) .or. t(i - 1:i - 1) == '.')) exit
                 i = i - 1
             end do
-            t = t(1:i - 1) // peer_num_text(pwave(md)) // t(k + len('PWaveTimeStep()'):)
+            t = t(1:i - 1) // text_shortest(pwave(md)) // t(k + len('PWaveTimeStep()'):)
         end if
-        call peer_eval(t, SYNTAX_PYTHON, md%vars, x, msg)
+        call text_eval(t, SYNTAX_PYTHON, md%vars, x, msg)
         if (len(msg) == 0 .and. x > 0.0_wp) then
             scene%dt = x
             scene%dt_text = 'O.dt = ' // md%dt_text // ' (' // md%dt_where // ')'
@@ -792,7 +793,7 @@ contains
         type(yade_model), intent(inout) :: md
         integer, intent(in) :: a, b, shape
         type(peer_contact) :: c
-        type(peer_list) :: w
+        type(text_list) :: w
         c%pair = name_of(md, a) // '-' // name_of(md, b)
         if (shape > 0) c%pair = name_of(md, a) // '-' // trim(shapes(shape)) // ':' // name_of(md, b)
         c%where = md%mats(a)%where
@@ -800,8 +801,8 @@ contains
         if (md%mats(a)%kind /= 'FrictMat' .or. md%mats(b)%kind /= 'FrictMat') c%problem = md%mats(a)%kind // &
             ' with ' // md%mats(b)%kind // ': not the Hertz-Mindlin law of FrictMat (ViscElMat is a linear spring)'
         if (.not. md%have_law .and. len(c%problem) == 0) c%problem = 'no Ip2_FrictMat_FrictMat_MindlinPhys in the script'
-        call w%push('young=' // peer_num_text(md%mats(a)%young) // ',' // peer_num_text(md%mats(b)%young))
-        call w%push('poisson=' // peer_num_text(md%mats(a)%poisson) // ',' // peer_num_text(md%mats(b)%poisson))
+        call w%push('young=' // text_shortest(md%mats(a)%young) // ',' // text_shortest(md%mats(b)%young))
+        call w%push('poisson=' // text_shortest(md%mats(a)%poisson) // ',' // text_shortest(md%mats(b)%poisson))
         call damping_words(md, a, b, w, c%problem)
         c%mat%radius = [md%mats(a)%rmin, md%mats(b)%rmin]
         c%mat%density = [md%mats(a)%density, md%mats(b)%density]
@@ -838,7 +839,7 @@ contains
     subroutine damping_words(md, a, b, w, problem)
         type(yade_model), intent(inout) :: md
         integer, intent(in) :: a, b
-        type(peer_list), intent(inout) :: w
+        type(text_list), intent(inout) :: w
         character(len=:), allocatable, intent(inout) :: problem
         character(len=:), allocatable :: v
         if (len(md%en) > 0) then
@@ -868,14 +869,14 @@ contains
         character(len=*), intent(in) :: text
         integer, intent(in) :: a, b
         character(len=:), allocatable :: v
-        type(peer_list) :: pos, keys, vals, tri, p2, k2, v2
+        type(text_list) :: pos, keys, vals, tri, p2, k2, v2
         real(wp) :: x, i1, i2
         logical :: ok
         integer :: i, k
         v = ''
         call number_arg(md, text, x, ok)
         if (ok) then
-            v = peer_num_text(x)
+            v = text_shortest(x)
             return
         end if
         k = call_at(text, 'MatchMaker')
@@ -894,9 +895,9 @@ contains
             if ((nint(i1) == md%mats(a)%id .and. nint(i2) == md%mats(b)%id) .or. &
                 (nint(i2) == md%mats(a)%id .and. nint(i1) == md%mats(b)%id)) then
                 call number_arg(md, p2%item(3)%s, x, ok)
-                if (ok) v = peer_num_text(x)
+                if (ok) v = text_shortest(x)
             end if
         end do
     end function match
 
-end module hertzdamp_peers_yade_deck
+end module hertzdamp_check_yade_deck

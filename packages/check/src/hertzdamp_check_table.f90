@@ -1,17 +1,18 @@
 !> The tables of doc/peers.md section 7 (`hertzdamp check --table`): the e each engine
 !> achieves when the user writes the target into its restitution input, and the speed
 !> dependence of the laws whose e depends on the impact speed.  Markdown lines, or rows
-!> as data (hertzdamp_peers_report) for CSV and JSON.
-module hertzdamp_peers_table
+!> as data (hertzdamp_check_report) for CSV and JSON.
+module hertzdamp_check_table
     use hertzdamp, only: hertzdamp_rk, hertzdamp_end_name, hertzdamp_law_name, hertzdamp_law_speed_exponent, &
                          HD_OK, HD_NO_REBOUND, HD_NO_CONVERGENCE, HD_END_OVERLAP, HD_END_FORCE, HD_DAMPING_LINEAR, &
                          HD_DAMPING_KUWABARA_KONO
-    use hertzdamp_peers, only: peer_deck, peer_text, peer_spec_field, peer_spec_count, peer_law_inverse, &
+    use hertzdamp_check_model, only: peer_deck, peer_spec_field, peer_spec_count, peer_law_inverse, &
                                peer_law_forward, peer_beta, peer_damping, peer_row_law, peer_row_end, peer_row_coef, &
                                peer_nan, peer_float, COEF_GAMMA_P6, COEF_GAMMA_SQRT2_P6, COEF_GAMMA_SQRT5_BETA, &
                                COEF_GAMMA_2BETA, COEF_GAMMA_SQRT6, COEF_GAMMA_SQRT5_BETA_EPS, COEF_GAMMA_SQRT6_THORNTON
-    use hertzdamp_peers_report, only: peer_report
-    use hertzdamp_apps_text, only: fmt_short, ROUND_TRIP
+    use hertzdamp_check_report, only: peer_report
+    use hertzdamp_text_list, only: text_string
+    use hertzdamp_text_format, only: fmt_short, ROUND_TRIP
     implicit none
     private
 
@@ -183,7 +184,7 @@ contains
 
     !> The markdown tables of doc/peers.md (the text form of `check --table`).
     subroutine peer_table_lines(lines)
-        type(peer_text), allocatable, intent(out) :: lines(:)
+        type(text_string), allocatable, intent(out) :: lines(:)
         integer :: row, j, st, law, iend, k
         real(wp) :: e
         character(len=:), allocatable :: s
@@ -209,8 +210,9 @@ contains
         end do
         call add('')
         call add('Speed dependence of the other laws: the engine''s coefficient is chosen to give the target ' // &
-                 'e exactly at u0; e at other impact speeds u (alpha ~ u^(-1/5) for linear, u^(1/5) for ' // &
-                 'kuwabara-kono):')
+                 'e exactly at u0; e at other impact speeds u (alpha ~ u^(-1/5) for ' // &
+                 hertzdamp_law_name(HD_DAMPING_LINEAR) // ', u^(1/5) for ' // &
+                 hertzdamp_law_name(HD_DAMPING_KUWABARA_KONO) // '):')
         call add('')
         call add('| law | end | used by | target e | u = u0/100 | u0/10 | u0 | 10 u0 | 100 u0 |')
         call add('| --- | --- | --- | --- | --- | --- | --- | --- | --- |')
@@ -235,7 +237,7 @@ contains
     contains
         subroutine add(line)
             character(len=*), intent(in) :: line
-            lines = [lines, peer_text(line)]
+            lines = [lines, text_string(line)]
         end subroutine add
     end subroutine peer_table_lines
 
@@ -290,4 +292,4 @@ contains
         end subroutine put
     end subroutine peer_table_report
 
-end module hertzdamp_peers_table
+end module hertzdamp_check_table

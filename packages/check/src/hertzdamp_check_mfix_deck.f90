@@ -6,16 +6,18 @@
 !> DES_COLL_MODEL, E_YOUNG, V_POISSON, EW_YOUNG, VW_POISSON, DES_EN_INPUT (MFiX's pair
 !> order 1-1, 1-2, ..., 1-M, 2-2, ...), DES_EN_WALL_INPUT, DES_ET_INPUT, DES_INTG_METHOD,
 !> DTSOLID_FACTOR and DT.  Every pair of DEM phases and every DEM phase against the
-!> wall is a contact in the words of the MFiX contact reader (hertzdamp_peers_mfix); the
-!> time step is MFiX's DTSOLID, computed from the contacts (hertzdamp_peers_check).
-module hertzdamp_peers_mfix_deck
-    use hertzdamp, only: hertzdamp_rk
-    use hertzdamp_peers, only: peer_text, PEER_MFIX
-    use hertzdamp_peers_text, only: peer_list, peer_map, peer_vars, peer_number, peer_eval, peer_num_text, &
-                                    peer_strip_quotes, SYNTAX_MFIX
-    use hertzdamp_peers_scene, only: peer_scene, peer_contact, peer_read_lines, peer_where
-    use hertzdamp_host, only: HD_HOST_MFIX_EULER, HD_HOST_MFIX_AB2, HD_HOST_NONE
-    use hertzdamp_apps_text, only: upper, itoa, fmt_short
+!> wall is a contact in the words of the MFiX contact reader (hertzdamp_check_mfix); the
+!> time step is MFiX's DTSOLID, computed from the contacts (hertzdamp_check_whole).
+module hertzdamp_check_mfix_deck
+    use hertzdamp, only: hertzdamp_rk, HD_HOST_MFIX_EULER, HD_HOST_MFIX_AB2, HD_HOST_NONE
+    use hertzdamp_check_model, only: PEER_MFIX
+    use hertzdamp_check_scene, only: peer_scene, peer_contact
+    use hertzdamp_text_list, only: text_string, text_list
+    use hertzdamp_text_map, only: text_map
+    use hertzdamp_text_parse, only: text_number, text_shortest, text_strip_quotes, text_find_unquoted
+    use hertzdamp_text_expr, only: text_vars, text_eval, SYNTAX_MFIX
+    use hertzdamp_text_file, only: text_read_lines, text_where
+    use hertzdamp_text_format, only: upper, itoa, fmt_short
     implicit none
     private
 
@@ -28,9 +30,9 @@ module hertzdamp_peers_mfix_deck
 
     !> The assignments: "KEY(i)" -> index into val/where.
     type :: mfix_values
-        type(peer_map) :: index
-        type(peer_list) :: val, where, keys
-        type(peer_vars) :: vars       !! for @( ) expressions (none defined: numbers only)
+        type(text_map) :: index
+        type(text_list) :: val, where, keys
+        type(text_vars) :: vars       !! for @( ) expressions (none defined: numbers only)
     end type mfix_values
 
     public :: read_mfix_deck
@@ -39,22 +41,22 @@ contains
 
     !> Read MFiX deck files (in order; a later assignment replaces an earlier one).
     subroutine read_mfix_deck(paths, scene, msg)
-        type(peer_text), intent(in) :: paths(:)
+        type(text_string), intent(in) :: paths(:)
         type(peer_scene), intent(out) :: scene
         character(len=:), allocatable, intent(out) :: msg
         type(mfix_values) :: mv
-        type(peer_list) :: lines
+        type(text_list) :: lines
         integer :: f, i
         msg = ''
         scene%peer = PEER_MFIX
         scene%units = 'SI'
         scene%dt_text = ''
         do f = 1, size(paths)
-            call peer_read_lines(paths(f)%s, lines, msg, scene%work)
+            call text_read_lines(paths(f)%s, lines, msg, scene%work)
             if (len(msg) > 0) return
             call scene%files%push(paths(f)%s)
             do i = 1, lines%n
-                call parse_line(scene, mv, lines%item(i)%s, peer_where(paths(f)%s, i))
+                call parse_line(scene, mv, lines%item(i)%s, text_where(paths(f)%s, i))
             end do
         end do
         scene%work = scene%work + mv%index%probes
@@ -71,7 +73,9 @@ contains
         character(len=:), allocatable :: line
         integer, allocatable :: eq(:), kstart(:)
         integer :: i, n, vend
-        line = strip_comment(line0)
+        line = line0
+        i = text_find_unquoted(line, '!#')     ! a comment
+        if (i > 0) line = line(1:i - 1)
         if (len_trim(line) == 0) return
         call find_assignments(line, eq, kstart)
         n = size(eq)
@@ -87,26 +91,6 @@ contains
             call assign(scene, mv, line(kstart(i):eq(i) - 1), line(eq(i) + 1:vend), where)
         end do
     end subroutine parse_line
-
-    !> The line without its comment: ! or # outside quotes.
-    function strip_comment(line) result(s)
-        character(len=*), intent(in) :: line
-        character(len=:), allocatable :: s
-        character :: q
-        integer :: i
-        q = ' '
-        s = line
-        do i = 1, len(line)
-            if (q /= ' ') then
-                if (line(i:i) == q) q = ' '
-            else if (line(i:i) == '"' .or. line(i:i) == '''') then
-                q = line(i:i)
-            else if (line(i:i) == '!' .or. line(i:i) == '#') then
-                s = line(1:i - 1)
-                return
-            end if
-        end do
-    end function strip_comment
 
     !> The '=' of each assignment (outside quotes and parentheses) and where its key starts.
     subroutine find_assignments(line, eq, kstart)
@@ -184,7 +168,7 @@ contains
         type(mfix_values), intent(inout) :: mv
         character(len=*), intent(in) :: key0, text, where
         character(len=:), allocatable :: key, idx
-        type(peer_list) :: vals
+        type(text_list) :: vals
         integer :: p, lo, hi, i
         real(wp) :: x
         key = upper(trim(adjustl(key0)))
@@ -200,14 +184,14 @@ contains
             end if
             i = index(idx, ':')
             if (i == 0) i = len(idx) + 1
-            if (.not. peer_number(idx(1:i - 1), x)) then
+            if (.not. text_number(idx(1:i - 1), x)) then
                 call scene%note(where, key // '(' // idx // '): index not read')
                 return
             end if
             lo = nint(x)
             hi = lo
             if (i <= len(idx)) then
-                if (.not. peer_number(idx(i + 1:), x)) then
+                if (.not. text_number(idx(i + 1:), x)) then
                     call scene%note(where, key // '(' // idx // '): index not read')
                     return
                 end if
@@ -250,7 +234,7 @@ contains
         type(peer_scene), intent(inout) :: scene
         type(mfix_values), intent(inout) :: mv
         character(len=*), intent(in) :: text, where
-        type(peer_list), intent(out) :: vals
+        type(text_list), intent(out) :: vals
         character(len=:), allocatable :: w, msg
         character :: q
         integer :: i, j, depth, star, k
@@ -281,23 +265,23 @@ contains
             n = 1.0_wp
             star = index(w, '*')
             if (star > 1 .and. w(1:1) /= '@' .and. w(1:1) /= '''' .and. w(1:1) /= '"') then
-                if (peer_number(w(1:star - 1), n)) w = w(star + 1:)
+                if (text_number(w(1:star - 1), n)) w = w(star + 1:)
             end if
             if (len(w) > 2) then
                 if (w(1:2) == '@(') then
-                    call peer_eval(w(3:len(w) - 1), SYNTAX_MFIX, mv%vars, x, msg)
+                    call text_eval(w(3:len(w) - 1), SYNTAX_MFIX, mv%vars, x, msg)
                     if (len(msg) > 0) then
                         call scene%note(where, '@(' // w(3:len(w) - 1) // '): ' // msg)
                         cycle
                     end if
-                    w = peer_num_text(x)
+                    w = text_shortest(x)
                 end if
             end if
             if (scan(w, 'dD') > 0) then      ! 1.0d-3 as the readers take it
-                if (peer_number(w, x, fortran_d=.true.)) w = peer_num_text(x)
+                if (text_number(w, x, fortran_d=.true.)) w = text_shortest(x)
             end if
             do k = 1, max(1, nint(n))
-                call vals%push(peer_strip_quotes(w))
+                call vals%push(text_strip_quotes(w))
             end do
         end do
     end subroutine expand
@@ -333,7 +317,7 @@ contains
         integer, intent(in) :: i
         real(wp), intent(inout) :: x
         real(wp) :: y
-        ok = peer_number(get(mv, key, i), y, fortran_d=.true.)
+        ok = text_number(get(mv, key, i), y, fortran_d=.true.)
         if (ok) x = y
     end function get_num
 
@@ -407,7 +391,7 @@ contains
         character(len=*), intent(in) :: model
         integer, intent(in) :: m, l, lc
         type(peer_contact) :: c
-        type(peer_list) :: w
+        type(text_list) :: w
         character(len=:), allocatable :: where
         c%problem = ''
         c%mat%wall = l == 0
@@ -500,4 +484,4 @@ contains
                                         'boundary conditions, output) were read and do not enter the contacts')
     end subroutine unread_keys
 
-end module hertzdamp_peers_mfix_deck
+end module hertzdamp_check_mfix_deck

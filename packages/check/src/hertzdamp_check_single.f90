@@ -265,18 +265,8 @@ contains
         type(peer_point), intent(in) :: pt(:)
         real(wp), intent(in) :: et
         character(len=:), allocatable :: s
-        integer :: i, ilo, ihi
-        ilo = 0
-        ihi = 0
-        do i = 1, size(pt)
-            if (.not. (pt(i)%status == HD_OK .or. pt(i)%status == HD_NO_REBOUND)) cycle
-            if (ilo == 0) then
-                ilo = i
-                ihi = i
-            end if
-            if (pt(i)%e < pt(ilo)%e) ilo = i
-            if (pt(i)%e > pt(ihi)%e) ihi = i
-        end do
+        integer :: ilo, ihi
+        call extremes(pt%e, pt%status == HD_OK .or. pt%status == HD_NO_REBOUND, ilo, ihi)
         if (abs(pt(ihi)%e - pt(ilo)%e) <= 1.0e-12_wp * pt(ihi)%e) then
             s = 'e = ' // fmt_short(pt(ilo)%e, 6) // ' at every speed (' // pct(pt(ilo)%e_error) // &
                 ' against the target ' // fmt_short(et, ROUND_TRIP) // ')'
@@ -332,17 +322,7 @@ contains
         character(len=:), allocatable :: s, problem
         real(wp) :: alpha, lo, hi, ealt
         integer :: i, ilo, ihi, st
-        ilo = 0
-        ihi = 0
-        do i = 1, size(pt)
-            if (pt(i)%status_corrected /= HD_OK) cycle
-            if (ilo == 0) then
-                ilo = i
-                ihi = i
-            end if
-            if (pt(i)%p_corrected < pt(ilo)%p_corrected) ilo = i
-            if (pt(i)%p_corrected > pt(ihi)%p_corrected) ihi = i
-        end do
+        call extremes(pt%p_corrected, pt%status_corrected == HD_OK, ilo, ihi)
         if (ilo == 0) then
             ! the reason at the first speed with a result (there is one)
             i = 1
@@ -393,6 +373,19 @@ contains
         end if
     end function corrected_text
 
+    !> The first index of the smallest and of the largest x where mask holds (0 and 0
+    !> where it holds nowhere).
+    pure subroutine extremes(x, mask, ilo, ihi)
+        real(wp), intent(in) :: x(:)
+        logical, intent(in) :: mask(:)
+        integer, intent(out) :: ilo, ihi
+        ilo = 0
+        ihi = 0
+        if (.not. any(mask)) return
+        ilo = minloc(x, 1, mask)
+        ihi = maxloc(x, 1, mask)
+    end subroutine extremes
+
     function subst(template, v) result(s)
         character(len=*), intent(in) :: template, v
         character(len=:), allocatable :: s
@@ -412,14 +405,9 @@ contains
         integer, intent(in) :: steps
         type(peer_report), intent(inout) :: t
         character(len=:), allocatable :: s
-        integer :: i, ib
+        integer :: ib, ihi
         real(wp) :: dt_mfix, x
-        ib = 0
-        do i = 1, size(pt)
-            if (pt(i)%status /= HD_OK) cycle
-            if (ib == 0) ib = i
-            if (pt(i)%tc < pt(ib)%tc) ib = i
-        end do
+        call extremes(pt%tc, pt%status == HD_OK, ib, ihi)
         if (ib == 0) then
             call t%meta('time step', 'no speed rebounds: no contact time')
             return

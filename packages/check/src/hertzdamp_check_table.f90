@@ -143,43 +143,23 @@ contains
         end select
     end function short_option
 
-    !> A row's version, short.
+    !> A row's version, short: by the first of these prefixes its id starts with.
     function short_version(row) result(s)
         integer, intent(in) :: row
         character(len=:), allocatable :: s
-        character(len=:), allocatable :: id
-        id = peer_spec_field(row, 'id')
-        if (index(id, 'lammps-2021-') == 1) then
-            s = '29 Sep 2021'
-        else if (index(id, 'lammps-2023-') == 1) then
-            s = '28 Mar 2023 - 29 Aug 2024'
-        else if (index(id, 'lammps-current-') == 1) then
-            s = 'current (07b704ca)'
-        else if (index(id, 'lammps-2024-') == 1) then
-            s = '27 Jun 2024 +'
-        else if (index(id, 'liggghts') == 1) then
-            s = '3.8.0'
-        else if (index(id, 'mercurydpm2015') == 1) then
-            s = 'Beta 2015'
-        else if (index(id, 'mercurydpm') == 1) then
-            s = 'trunk 2018-2024'
-        else if (index(id, 'lammps-hertz_history') == 1) then
-            s = '29 Sep 2021 +'
-        else if (index(id, 'yade2023') == 1) then
-            s = '2023.02a +'
-        else if (index(id, 'yade2024') == 1) then
-            s = '2024.02a +'
-        else if (id == 'yade-betan-force') then
-            s = '2020 trunk +'
-        else if (index(id, 'yade') == 1) then
-            s = '2020-2022 trunk'
-        else if (index(id, 'mfix') == 1) then
-            s = '21.3.2'
-        else if (index(id, 'chrono') == 1) then
-            s = '9.0.1 - 2026'
-        else
-            s = ''
-        end if
+        character(len=*), parameter :: prefix(14) = [character(len=20) :: 'lammps-2021-', 'lammps-2023-', &
+            'lammps-current-', 'lammps-2024-', 'liggghts', 'mercurydpm2015', 'mercurydpm', 'lammps-hertz_history', &
+            'yade2023', 'yade2024', 'yade-betan-force', 'yade', 'mfix', 'chrono']
+        character(len=*), parameter :: label(14) = [character(len=25) :: '29 Sep 2021', '28 Mar 2023 - 29 Aug 2024', &
+            'current (07b704ca)', '27 Jun 2024 +', '3.8.0', 'Beta 2015', 'trunk 2018-2024', '29 Sep 2021 +', &
+            '2023.02a +', '2024.02a +', '2020 trunk +', '2020-2022 trunk', '21.3.2', '9.0.1 - 2026']
+        integer :: k
+        s = ''
+        do k = 1, size(prefix)
+            if (index(peer_spec_field(row, 'id'), trim(prefix(k))) /= 1) cycle
+            s = trim(label(k))
+            return
+        end do
     end function short_version
 
     !> The markdown tables of doc/peers.md (the text form of `check --table`).

@@ -199,7 +199,7 @@ contains
         type(peer_report), intent(inout) :: rep
         character(len=:), allocatable :: s
         type(check_engine) :: e
-        integer :: i, k
+        integer :: i
         e = check_engine_of(scene%peer)
         s = e%title
         if (len(e%releases) > 0) then
@@ -225,10 +225,8 @@ contains
         s = scene%host_text
         if (scene%host /= HD_HOST_NONE) s = s // '; modeled as the host scheme ' // hertzdamp_host_name(scene%host)
         call rep%meta('integrator', s)
-        k = 0
         do i = 1, scene%ncontacts
             if (.not. ok(i)) cycle
-            k = k + 1
             call rep%meta('contact ' // scene%contacts(i)%pair, contact_text(scene%contacts(i), decks(i)))
         end do
         do i = 1, scene%skipped%n

@@ -1,7 +1,7 @@
 !> Numbers and words in text: strict decimal numbers, a number as the shortest text that
 !> reads back (and as C's "%.15g"), words split at blanks with quotes grouping them,
-!> quotes stripped, the first character outside quotes, a path's directory.  Nothing
-!> prints or stops.
+!> quotes stripped, the first character outside quotes, a path's directory, name
+!> characters.  Nothing prints or stops.
 module hertzdamp_text_parse
     use hertzdamp_text_list, only: text_list
     use hertzdamp_text_format, only: itoa, fmt_short, ROUND_TRIP
@@ -13,6 +13,7 @@ module hertzdamp_text_parse
     integer, parameter :: wp = real64
 
     public :: text_number, text_shortest, text_g15, text_words, text_strip_quotes, text_find_unquoted, text_directory
+    public :: text_name_char, text_is_name
 
 contains
 
@@ -194,5 +195,18 @@ contains
             end if
         end do
     end function text_find_unquoted
+
+    !> Whether c may stand in a name: an ASCII letter or digit, or '_'.
+    pure logical function text_name_char(c)
+        character, intent(in) :: c   !! the character
+        text_name_char = (c >= 'a' .and. c <= 'z') .or. (c >= 'A' .and. c <= 'Z') .or. (c >= '0' .and. c <= '9') .or. &
+                         c == '_'
+    end function text_name_char
+
+    !> Whether every character of s may stand in a name (text_name_char; true for '').
+    pure logical function text_is_name(s)
+        character(len=*), intent(in) :: s   !! the text
+        text_is_name = verify(s, 'abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ0123456789_') == 0
+    end function text_is_name
 
 end module hertzdamp_text_parse

@@ -104,6 +104,7 @@ contains
         call hertzdamp_hertz_stiffness(e_star, radius, k, st)
     end function hertz_k
 
+    !> msg (when still '') says that a modulus `what` = text is not positive.
     subroutine check_modulus(x, what, text, msg)
         real(wp), intent(in) :: x
         character(len=*), intent(in) :: what, text
@@ -112,6 +113,7 @@ contains
         if (.not. (x > 0.0_wp)) msg = what // ' = ' // text // ': a modulus must be positive'
     end subroutine check_modulus
 
+    !> msg (when still '') says that a Poisson's ratio `what` = text is outside (-1, 0.5].
     subroutine check_poisson(x, what, text, msg)
         real(wp), intent(in) :: x
         character(len=*), intent(in) :: what, text
@@ -157,6 +159,7 @@ contains
         end if
     end subroutine pair_values
 
+    !> The number of a key that must be given (msg names it when it is missing or malformed).
     subroutine required(kv, key, x, msg)
         type(kv_list), intent(inout) :: kv
         character(len=*), intent(in) :: key
@@ -172,6 +175,7 @@ contains
         call number(v, key, x, msg)
     end subroutine required
 
+    !> An on|off value of a key (msg names the key for any other).
     subroutine on_off(v, key, flag, msg)
         character(len=*), intent(in) :: v, key
         logical, intent(out) :: flag
@@ -267,6 +271,7 @@ contains
         end if
     end function take
 
+    !> Whether a key is given (without marking it used).
     pure logical function has(kv, key)
         type(kv_list), intent(in) :: kv
         character(len=*), intent(in) :: key
@@ -292,6 +297,7 @@ contains
         end do
     end subroutine check_all_used
 
+    !> A key without its index: KEY(2) -> KEY.
     pure function base_key(key) result(b)
         character(len=*), intent(in) :: key
         character(len=:), allocatable :: b
@@ -304,6 +310,7 @@ contains
         end if
     end function base_key
 
+    !> Append a remark to the deck's notes.
     subroutine add_note(deck, text)
         type(peer_deck), intent(inout) :: deck
         character(len=*), intent(in) :: text

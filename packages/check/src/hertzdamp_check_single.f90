@@ -159,6 +159,7 @@ contains
                     '; method: what gave e and t_c')
     end subroutine single_header
 
+    !> Why a speed has no result: its --velocity, alpha and the status in words.
     function peer_row_reason(deck, pt) result(s)
         type(peer_deck), intent(in) :: deck
         type(peer_point), intent(in) :: pt
@@ -225,6 +226,7 @@ contains
         if (release >= 1 .and. release <= words%n) s = words%item(release)%s
     end function release_word
 
+    !> A status in words, naming the law and end where the build lacks them.
     function law_message(deck, status) result(s)
         type(peer_deck), intent(in) :: deck
         integer, intent(in) :: status
@@ -237,6 +239,7 @@ contains
         end if
     end function law_message
 
+    !> The contact end in words.
     function end_text(iend) result(s)
         integer, intent(in) :: iend
         character(len=:), allocatable :: s
@@ -386,6 +389,7 @@ contains
         ihi = maxloc(x, 1, mask)
     end subroutine extremes
 
+    !> A template with v in place of {} (appended when there is none).
     function subst(template, v) result(s)
         character(len=*), intent(in) :: template, v
         character(len=:), allocatable :: s

@@ -272,7 +272,7 @@ contains
             i = i + 1
         end do
         call parts%push(line(start:))
-        out = text_join(parts%items(), '')
+        out = text_join(parts%item(1:parts%n), '')   ! (parts holds the text after the last reference)
     end subroutine substitute
 
     !> The reference starting at line(i) = '$': its name (or expression) and last index j.

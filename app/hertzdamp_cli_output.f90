@@ -14,7 +14,7 @@
 !> document may carry further tables (render's `more`): each as an array of row
 !> objects under its own name (`rows_key`, default "rows").
 !>
-!> The text output is for people, with the number formats of hertzdamp_apps_text (the
+!> The text output is for people, with the number formats of hertzdamp_text_format (the
 !> one place of them): each column's unit in its header (`set_columns`' `units`);
 !> numbers with 7 significant digits and a two-digit exponent (9.965498e+08), whole
 !> numbers as integers; a column that has the same value in every row printed once

@@ -4,19 +4,27 @@
 !>     hertzdamp check ENGINE WORDS... --radius R --density RHO --velocity SWEEP [options]
 !>     hertzdamp check --table
 !>
-!> Whole decks (the arguments are files) are read and evaluated by hertzdamp_peers_check;
-!> one contact in the engine's words by hertzdamp_peers_deck and hertzdamp_peers_single;
-!> the table by hertzdamp_peers_table.  This module parses the command line and prints.
+!> Whole decks (the arguments are files) are read and evaluated by hertzdamp_check_whole;
+!> one contact in the engine's words by hertzdamp_check_deck and hertzdamp_check_single;
+!> the table by hertzdamp_check_table.  This module parses the command line and prints.
+!>
+!> Files or words: an argument after the engine is the engine's contact words when it
+!> holds a key=value word, or (LAMMPS) when it names no file and its first word is one
+!> a LAMMPS contact starts with (pair_coeff, fix, gran/hertz/history, hertz/material,
+!> damping, ...); any other argument is a deck file, which must exist (exit 2 naming it).
 module hertzdamp_cmd_check
     use hertzdamp, only: hertzdamp_rk, HD_OK
-    use hertzdamp_peers, only: peer_deck, peer_point, peer_text, peer_evaluate, peer_name
-    use hertzdamp_peers_deck, only: peer_materials, peer_read_deck, peer_code, peer_releases
-    use hertzdamp_peers_text, only: peer_list, peer_words
-    use hertzdamp_peers_scene, only: peer_scene
-    use hertzdamp_peers_check, only: peer_check_options, peer_read_scene, peer_check_scene, peer_units_si
-    use hertzdamp_peers_single, only: peer_single_report
-    use hertzdamp_peers_table, only: peer_table_lines, peer_table_report
-    use hertzdamp_peers_report, only: peer_report, PEER_CELL_NUM, PEER_CELL_STR
+    use hertzdamp_check_model, only: peer_deck, peer_point, peer_evaluate
+    use hertzdamp_check_deck, only: peer_materials, peer_read_deck
+    use hertzdamp_check_engines, only: check_engine, check_engine_of, peer_code, peer_name, peer_releases, &
+                                       peer_engine_list
+    use hertzdamp_text_list, only: text_string, text_list
+    use hertzdamp_text_parse, only: text_words
+    use hertzdamp_check_scene, only: peer_scene
+    use hertzdamp_check_whole, only: peer_check_options, peer_read_scene, peer_check_scene, peer_units_si
+    use hertzdamp_check_single, only: peer_single_report
+    use hertzdamp_check_table, only: peer_table_lines, peer_table_report
+    use hertzdamp_check_report, only: peer_report, PEER_CELL_NUM, PEER_CELL_STR
     use hertzdamp_cli, only: cli_args, cli_line, cli_buffer, parse_args, parse_real, parse_int, parse_choice, &
                              required_sweep, fail, quit, EXIT_USAGE, EXIT_OK
     use hertzdamp_cli_text, only: fmt_short, ROUND_TRIP
@@ -54,7 +62,7 @@ contains
         type(cli_args) :: args
         type(cli_line), allocatable :: words(:)
         type(check_request) :: rq
-        type(peer_text), allocatable :: files(:)
+        type(text_string), allocatable :: files(:)
         integer :: peer
         if (wants_help()) call print_help('check')
         call parse_args(2, '--velocity --e --steps --release --format ' // material_options, &
@@ -66,13 +74,12 @@ contains
             end if
             call print_table(rq%fmt)
         end if
-        if (size(words) == 0) call fail(EXIT_USAGE, 'missing the engine: lammps, liggghts, mercurydpm, yade, ' // &
-                                        'mfix or chrono (see hertzdamp check --help)')
+        if (size(words) == 0) call fail(EXIT_USAGE, 'missing the engine: ' // peer_engine_list() // &
+                                        ' (see hertzdamp check --help)')
         peer = peer_code(words(1)%s)
-        if (peer == 0) call fail(EXIT_USAGE, 'unknown engine "' // words(1)%s // &
-                                 '": choose lammps, liggghts, mercurydpm, yade, mfix or chrono')
+        if (peer == 0) call fail(EXIT_USAGE, 'unknown engine "' // words(1)%s // '": choose ' // peer_engine_list())
         call common_options(args, peer, rq)
-        if (deck_files(words, files)) then
+        if (deck_files(peer, words, files)) then
             call check_files(args, peer, files, rq)
         else
             call check_words(args, peer, words, rq)
@@ -101,28 +108,43 @@ contains
         rq%progress = args%has('--progress')
     end subroutine common_options
 
-    !> True when the first argument after the engine names an existing file: then every
-    !> argument must be one (the deck's files, in order).  Otherwise the arguments are the
-    !> engine's words (no file system call per word: a deck of 40,000 words stays fast).
-    logical function deck_files(words, files) result(is_deck)
+    !> Whether the arguments after the engine are deck files (else the engine's contact
+    !> words): the first is the engine's words when it holds a key=value word, or when it
+    !> names no file and starts with a word of a contact of the engine (LAMMPS:
+    !> check_engine%takes_words); otherwise every argument must name an existing file
+    !> (exit 2 naming the first that does not).  No file system call per word: a contact
+    !> of 40,000 words stays fast.
+    logical function deck_files(peer, words, files) result(is_deck)
+        integer, intent(in) :: peer
         type(cli_line), intent(in) :: words(:)
-        type(peer_text), allocatable, intent(out) :: files(:)
+        type(text_string), allocatable, intent(out) :: files(:)
+        type(check_engine) :: e
         logical :: exists
         integer :: i
         allocate (files(0))
         is_deck = .false.
         if (size(words) < 2) return
         if (index(words(2)%s, '=') > 0) return
+        e = check_engine_of(peer)
         inquire (file=words(2)%s, exist=exists)
-        if (.not. exists) return
+        if (.not. exists .and. e%takes_words(words(2)%s)) return
         is_deck = .true.
         deallocate (files)
         allocate (files(size(words) - 1))
         do i = 2, size(words)
             inquire (file=words(i)%s, exist=exists)
-            if (.not. exists .or. index(words(i)%s, '=') > 0) call fail(EXIT_USAGE, 'give either deck files or ' // &
-                'the engine''s words, not both ("' // words(2)%s // '" is a file, "' // words(i)%s // '" is not)')
-            files(i - 1)%s = words(i)%s
+            if (exists .and. index(words(i)%s, '=') == 0) then
+                files(i - 1)%s = words(i)%s
+            else if (i > 2 .and. (index(words(i)%s, '=') > 0 .or. e%takes_words(words(i)%s))) then
+                call fail(EXIT_USAGE, 'give either deck files or the engine''s words, not both ("' // words(2)%s // &
+                          '" is a file, "' // words(i)%s // '" is not)')
+            else if (len(e%starts) > 0) then
+                call fail(EXIT_USAGE, words(i)%s // ': no such deck file (' // e%title // '''s own words start ' // &
+                          'with pair_coeff, fix, a granular pair style or a pair_coeff keyword such as hertz/material)')
+            else
+                call fail(EXIT_USAGE, words(i)%s // ': no such deck file (' // e%title // '''s own words are ' // &
+                          'key=value)')
+            end if
         end do
     end function deck_files
 
@@ -131,7 +153,7 @@ contains
     subroutine check_files(args, peer, files, rq)
         type(cli_args), intent(in) :: args
         integer, intent(in) :: peer
-        type(peer_text), intent(in) :: files(:)
+        type(text_string), intent(in) :: files(:)
         type(check_request), intent(inout) :: rq
         type(peer_scene) :: scene
         type(peer_check_options) :: opt
@@ -182,8 +204,8 @@ contains
         type(check_request), intent(inout) :: rq
         type(cli_contact) :: ct
         type(peer_materials) :: mat
-        type(peer_list) :: w
-        type(peer_text), allocatable :: tokens(:)
+        type(text_list) :: w
+        type(text_string), allocatable :: tokens(:)
         type(peer_deck) :: deck
         type(peer_point), allocatable :: pt(:)
         type(peer_report) :: rep
@@ -192,7 +214,7 @@ contains
         real(wp) :: et
         integer :: i, status
         do i = 2, size(words)
-            call peer_words(words(i)%s, w)
+            call text_words(words(i)%s, w)
         end do
         tokens = w%items()
         ! the bodies: checked as every command checks them (a wall has no --radius2, ...)
@@ -288,7 +310,7 @@ contains
     subroutine print_table(fmt)
         integer, intent(in) :: fmt
         type(cli_buffer) :: buf
-        type(peer_text), allocatable :: lines(:)
+        type(text_string), allocatable :: lines(:)
         type(peer_report) :: rep
         type(out_table) :: t
         integer :: i

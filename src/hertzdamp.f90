@@ -40,6 +40,7 @@ module hertzdamp
                              hertzdamp_fit_alpha_c, hertzdamp_fit_alpha_max_force
     use hertzdamp_fit_laws, only: hertzdamp_fit_law_forward, hertzdamp_fit_law_inverse, &
                                   hertzdamp_fit_law_e_min, hertzdamp_fit_forward_deriv
+    use hertzdamp_fit_data, only: hertzdamp_fit_law_e_min_forward => fit_law_e_min_forward
     use hertzdamp_compact, only: hertzdamp_compact_forward, hertzdamp_compact_inverse, &
                                  hertzdamp_compact_e_min_overlap, hertzdamp_compact_e_min_force, &
                                  hertzdamp_compact_alpha_max_overlap, hertzdamp_compact_alpha_max_force
@@ -100,6 +101,8 @@ module hertzdamp
     ! the fitted maps of every law (hertzdamp_fit_laws)
     public :: hertzdamp_fit_law_forward, hertzdamp_fit_law_inverse, hertzdamp_fit_law_e_min, &
               hertzdamp_fit_forward_deriv
+    ! the smallest e the fitted forward maps of the laws reach (hertzdamp_fit_data)
+    public :: hertzdamp_fit_law_e_min_forward
     ! the compact engineering formula (hertzdamp_compact)
     public :: hertzdamp_compact_forward, hertzdamp_compact_inverse, hertzdamp_compact_e_min_overlap, &
               hertzdamp_compact_e_min_force, hertzdamp_compact_alpha_max_overlap, &

@@ -9,8 +9,8 @@ TMP=$(mktemp -d); trap 'rm -rf "$TMP" "$OUT" "$ERR"' EXIT
 
 # --- the specification embedded in the program is the CSV (regenerated and compared)
 python3 gen/peers_to_f90.py data/peers/peers_spec.csv "$TMP/data.f90"
-check "packages/check/src/hertzdamp_peers_data.f90 is gen/peers_to_f90.py of data/peers/peers_spec.csv" \
-  cmp -s "$TMP/data.f90" packages/check/src/hertzdamp_peers_data.f90
+check "packages/check/src/hertzdamp_check_data.f90 is gen/peers_to_f90.py of data/peers/peers_spec.csv" \
+  cmp -s "$TMP/data.f90" packages/check/src/hertzdamp_check_data.f90
 
 # --- the table in doc/peers.md is `check --table`
 run check --table

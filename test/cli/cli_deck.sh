@@ -250,4 +250,52 @@ check "units cgs: velocity [cm/s], t_c [s]; 3000 cm/s is no warning" \
 sed 's/^units           si$/units           lj/' "$D/lammps_include.in" >"$TMP/lj.in"
 run check lammps "$TMP/lj.in" --velocity 1,2
 check "units lj: no unit in the header" bash -c "grep -qE '^ *pair +velocity +e_target .* t_c +corrected' '$OUT'"
+
+# ------------------------------------------------------------------ defects of issue 30 (each failed on 56a29ad)
+# item 4: a deck from a pipe, a FIFO or a process substitution is read to its end (the
+# size the system gives for them is 0); its include is found in the working directory
+cd "$D" || exit 1
+run check lammps lammps_include.in --velocity 1 --release 2021 --format csv
+cp "$OUT" "$TMP/from_file.csv"
+cat lammps_include.in | "$BIN" check lammps /dev/stdin --velocity 1 --release 2021 --format csv >"$OUT" 2>"$ERR"; RC=$?
+check "a deck from a pipe (cat deck | check lammps /dev/stdin): the rows of the file (exit $RC: $(head -c 150 "$ERR"))" \
+  cmp -s "$OUT" "$TMP/from_file.csv"
+mkfifo "$TMP/deck.fifo"
+cat lammps_include.in >"$TMP/deck.fifo" &
+run check lammps "$TMP/deck.fifo" --velocity 1 --release 2021 --format csv
+wait
+check "a deck from a FIFO: the rows of the file (exit $RC)" cmp -s "$OUT" "$TMP/from_file.csv"
+run check lammps <(cat lammps_include.in) --velocity 1 --release 2021 --format csv
+check "a deck from <(...): the rows of the file (exit $RC)" cmp -s "$OUT" "$TMP/from_file.csv"
+cd - >/dev/null || exit 1
+# item 9: an argument that is neither a file nor the engine's words is a missing deck file
+expect_fail 2 "a missing deck file (lammps)" check lammps nonexist.in --radius 1e-3 --density 2500 --velocity 1
+check "message names nonexist.in, no such file: $(cat "$ERR")" grep -q '^hertzdamp: nonexist.in: no such deck file' "$ERR"
+expect_fail 2 "a missing deck file (mfix)" check mfix nonexist.dat --velocity 1
+check "message names nonexist.dat, no such file: $(cat "$ERR")" grep -q '^hertzdamp: nonexist.dat: no such deck file' "$ERR"
+expect_fail 2 "a missing second deck file" check lammps "$D/lammps_include.in" nonexist.in
+check "message names the second file: $(cat "$ERR")" grep -q '^hertzdamp: nonexist.in: no such deck file' "$ERR"
+run check lammps "hertz/material 1e8 0.5 0.3 damping tsuji" --radius 1e-3 --density 2500 --velocity 1
+check "LAMMPS's own words that name no file are still words (exit $RC)" test "$RC" -eq 0
+# item 7: the whole deck notes what the other LAMMPS releases give (LAMMPS's own example:
+# the 2021 fix wall/gran stiffness); the note's e_host is the --release 2021 row's
+cd "$LEX/granular" || exit 1
+run check lammps in.pour.flatwall --velocity 1 --release 2021 --format csv
+eh=$(pcol 1-wall e_host)
+run check lammps in.pour.flatwall --velocity 1
+note=$(sed -n 's/^# note[ 0-9]*: contacts 1-wall, 2-wall: LAMMPS 29 Sep 2021 update 2 (Debian 12) (--release 2021) gives e_model = [^,]*, e_host = \([^,]*\),.*/\1/p' "$OUT")
+check "in.pour.flatwall: a note gives the 2021 release's e_host of the walls (${note:-none} vs $eh of --release 2021)" \
+  close "${note:-0}" "$eh" 5e-6
+cd - >/dev/null || exit 1
+# minor: a deck that includes itself is an error, as LAMMPS never finishes reading it
+cp "$D/lammps_materials.in" "$TMP/"
+{ cat "$D/lammps_include.in"; echo "include self.in"; } >"$TMP/self.in"
+expect_fail 2 "a deck that includes itself" check lammps "$TMP/self.in" --velocity 1
+check "message names self.in and the nesting: $(cat "$ERR")" grep -q 'self.in:[0-9]*: include [^:]*: nested deeper than 20 files (does the deck include itself?)' "$ERR"
+# found here: a pair style the checker does not read, with a name of 25 characters or more,
+# crashed the program (gfortran 12 built the words 'pair_style STYLE' with an empty STYLE)
+cd "$LEX/PACKAGES/dpd-smooth/equipartition-verification" || exit 1
+expect_fail 2 "LAMMPS's dpd-smooth example (pair_style sdpd/taitwater/isothermal)" check lammps in.lammps
+check "message names the pair style: $(cat "$ERR")" grep -q 'pair_style sdpd/taitwater/isothermal is not a granular style' "$ERR"
+cd - >/dev/null || exit 1
 finish

@@ -1,6 +1,6 @@
 !> An evaluator of the `alpha_expr` expressions of data/peers/peers_spec.csv, written
 !> for the tests from the grammar of doc/peers.md section 0 and independent of the
-!> program's own formulas (hertzdamp_peers): a recursive-descent parser over
+!> program's own formulas (hertzdamp_check_model): a recursive-descent parser over
 !>
 !>     expr    := term   { ("+" | "-") term }
 !>     term    := unary  { ("*" | "/") unary }

@@ -1,5 +1,5 @@
-!> Tests of the deck readers' tools and of their cost (hertzdamp_peers_text, _scene,
-!> _script and the engines' deck readers):
+!> Tests of the deck readers' tools and of their cost (packages/text, the script
+!> interpreter hertzdamp_lmpscript and the engines' deck readers):
 !> - the expression evaluator against exact values in the LAMMPS, Python and MFiX
 !>   syntaxes, and its errors naming the culprit;
 !> - the hash map: every key found, probes per operation bounded;
@@ -9,13 +9,15 @@
 !> - the deck files are read whole: a line without a line end, CR LF line ends.
 program test_decks
     use hertzdamp, only: hertzdamp_rk, hertzdamp_pi
-    use hertzdamp_peers, only: peer_text, PEER_LAMMPS, PEER_LIGGGHTS, PEER_MFIX, PEER_YADE
-    use hertzdamp_peers_text, only: peer_map, peer_vars, peer_list, peer_eval, SYNTAX_LAMMPS, SYNTAX_PYTHON, &
-                                    SYNTAX_MFIX
-    use hertzdamp_peers_common, only: kv_list, split_pairs
-    use hertzdamp_peers_scene, only: peer_scene, peer_read_lines
-    use hertzdamp_peers_check, only: peer_read_scene
-    use hertzdamp_apps_text, only: itoa
+    use hertzdamp_check_model, only: PEER_LAMMPS, PEER_LIGGGHTS, PEER_MFIX, PEER_YADE
+    use hertzdamp_text_list, only: text_string, text_list
+    use hertzdamp_text_map, only: text_map
+    use hertzdamp_text_expr, only: text_vars, text_eval, SYNTAX_LAMMPS, SYNTAX_PYTHON, SYNTAX_MFIX
+    use hertzdamp_text_file, only: text_read_lines
+    use hertzdamp_check_common, only: kv_list, split_pairs
+    use hertzdamp_check_scene, only: peer_scene
+    use hertzdamp_check_whole, only: peer_read_scene
+    use hertzdamp_text_format, only: itoa
     use hertzdamp_testing, only: test_suite, new_suite
     use, intrinsic :: iso_fortran_env, only: int64
     implicit none
@@ -53,26 +55,26 @@ contains
         character(len=*), intent(in) :: text
         integer, intent(in) :: syntax
         real(wp), intent(in) :: want
-        type(peer_vars), intent(inout) :: vars
+        type(text_vars), intent(inout) :: vars
         real(wp) :: x
         character(len=:), allocatable :: msg
-        call peer_eval(text, syntax, vars, x, msg)
+        call text_eval(text, syntax, vars, x, msg)
         call s%check(len(msg) == 0 .and. x == want, 'eval "' // text // '" = exact value (' // msg // ')')
     end subroutine expect
 
     subroutine expect_err(text, syntax, word, vars)
         character(len=*), intent(in) :: text, word
         integer, intent(in) :: syntax
-        type(peer_vars), intent(inout) :: vars
+        type(text_vars), intent(inout) :: vars
         real(wp) :: x
         character(len=:), allocatable :: msg
-        call peer_eval(text, syntax, vars, x, msg)
+        call text_eval(text, syntax, vars, x, msg)
         call s%check(index(msg, word) > 0 .and. x == 0.0_wp, 'eval "' // text // '": error names ' // word // ' (' // &
                      msg // ')')
     end subroutine expect_err
 
     subroutine test_eval()
-        type(peer_vars) :: v
+        type(text_vars) :: v
         call v%set_num('a', 3.0_wp)
         call v%set_text('s', '2.5e-1')
         call v%set_text('word', 'granular')
@@ -107,7 +109,7 @@ contains
     ! ------------------------------------------------------------------ hash map
 
     subroutine test_map()
-        type(peer_map) :: m
+        type(text_map) :: m
         integer :: i, n, bad, v, w
         n = 100000
         do i = 1, n
@@ -131,7 +133,7 @@ contains
     ! ------------------------------------------------------------------ lines
 
     subroutine test_lines()
-        type(peer_list) :: lines
+        type(text_list) :: lines
         character(len=:), allocatable :: msg, path
         integer(int64) :: work
         integer :: u
@@ -140,11 +142,11 @@ contains
         write (u) 'one' // achar(13) // achar(10) // achar(10) // 'three'
         close (u)
         work = 0
-        call peer_read_lines(path, lines, msg, work)
+        call text_read_lines(path, lines, msg, work)
         call s%check(len(msg) == 0 .and. lines%n == 3 .and. work == 11, 'lines: CR LF, an empty line, no final line end')
         if (lines%n == 3) call s%check(lines%item(1)%s == 'one' .and. lines%item(2)%s == '' .and. &
                                        lines%item(3)%s == 'three', 'lines: their text')
-        call peer_read_lines(dir // 'no such file', lines, msg, work)
+        call text_read_lines(dir // 'no such file', lines, msg, work)
         call s%check(index(msg, 'no such file') > 0, 'lines: a missing file is named')
         open (newunit=u, file=path, status='old')
         close (u, status='delete')
@@ -217,7 +219,7 @@ contains
         do k = 1, 2
             n = 10000 * 4**(k - 1)
             call write_deck(peer, n, path)
-            call peer_read_scene(peer, [peer_text(path)], scene, msg)
+            call peer_read_scene(peer, [text_string(path)], scene, msg)
             call s%check(len(msg) == 0 .and. scene%ncontacts >= 1, name // ': a deck of ' // itoa(n) // ' words is read (' // &
                          msg // ')')
             do u = 1, scene%notes%n      ! (MFiX counts its other keys in a note without a line)
@@ -238,7 +240,7 @@ contains
     !> key=value words: the duplicate check and lookups by hash map (probes linear).
     subroutine test_words()
         type(kv_list) :: kv
-        type(peer_text), allocatable :: tok(:)
+        type(text_string), allocatable :: tok(:)
         character(len=:), allocatable :: msg
         integer(int64) :: p(2)
         integer :: k, n, i

@@ -24,7 +24,7 @@ program test_host
                              hertzdamp_dem_check, hertzdamp_dem_run
     use hertzdamp_testing, only: test_suite, new_suite, rel_err
     use hertzdamp_test_host_sim, only: coll_t, zeta_h, collide, own_mean
-    use hertzdamp_apps_text, only: itoa, fmt_short
+    use hertzdamp_text_format, only: itoa, fmt_short
     use, intrinsic :: iso_fortran_env, only: int64
     implicit none
     integer, parameter :: wp = hertzdamp_rk

@@ -19,7 +19,7 @@ program test_host_sweep
                          hertzdamp_host_min_steps
     use hertzdamp_testing, only: test_suite, new_suite
     use hertzdamp_test_host_sim, only: own_mean
-    use hertzdamp_apps_text, only: itoa, fmt_short
+    use hertzdamp_text_format, only: itoa, fmt_short
     implicit none
     integer, parameter :: wp = hertzdamp_rk
     integer, parameter :: laws(3) = [HD_DAMPING_LINEAR, HD_DAMPING_TSUJI, HD_DAMPING_KUWABARA_KONO]

@@ -1,4 +1,4 @@
-!> Tests of `hertzdamp check` (hertzdamp_peers, hertzdamp_peers_deck):
+!> Tests of `hertzdamp check` (hertzdamp_check_model, hertzdamp_check_deck):
 !> - every row of data/peers/peers_spec.csv: a deck written in the engine's keywords
 !>   gives the alpha (or gamma) of the row's alpha_expr, evaluated by the independent
 !>   evaluator hertzdamp_test_expr, and the stiffness k of doc/peers.md (transcribed
@@ -19,8 +19,9 @@
 !> - bad decks give an error naming the key.
 program test_peers
     use hertzdamp
-    use hertzdamp_peers
-    use hertzdamp_peers_deck
+    use hertzdamp_check_model
+    use hertzdamp_check_deck
+    use hertzdamp_text_list, only: text_string
     use hertzdamp_test_expr, only: expr_vars, expr_eval
     use hertzdamp_testing, only: test_suite, new_suite, rel_err
     use, intrinsic :: iso_fortran_env, only: real32, int64
@@ -31,7 +32,7 @@ program test_peers
 
     !> One generated case: the deck tokens and what the test expects.
     type :: case_t
-        type(peer_text), allocatable :: tok(:)
+        type(text_string), allocatable :: tok(:)
         type(peer_materials) :: mat
         integer :: peer = 0
         integer :: release = LAMMPS_CURRENT
@@ -106,7 +107,7 @@ contains
             else
                 j = i + j - 1
             end if
-            c%tok = [c%tok, peer_text(text(i:j - 1))]
+            c%tok = [c%tok, text_string(text(i:j - 1))]
             i = j
         end do
     end subroutine add

@@ -49,7 +49,7 @@ module hertzdamp_calibrate
     use hertzdamp_scaling, only: hertzdamp_reduce
     use hertzdamp_calibrate_maps, only: cal_forward, cal_law_name, cal_law_q, cal_law_speed_exponent, &
                                         cal_law_supported, cal_max_law
-    use hertzdamp_apps_text, only: fmt_short
+    use hertzdamp_text_format, only: fmt_short
     use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
     implicit none
     private

@@ -97,7 +97,7 @@ module hertzdamp_dem_engine
                                    hertzdamp_dem_pairs_met, HD_CONTACT_ACTIVE, HD_CONTACT_RELEASED, HD_CONTACT_CLOSED
     use hertzdamp_dem_rules, only: hertzdamp_dem_rule, hertzdamp_dem_host_rule
     use hertzdamp_dem_types, only: int_text => hertzdamp_dem_int_text
-    use hertzdamp_apps_text, only: fmt_short
+    use hertzdamp_text_format, only: fmt_short
     implicit none
     private
 

@@ -24,7 +24,7 @@ module hertzdamp_scene_io
     use hertzdamp_status, only: HD_OK, HD_BAD_ARGUMENT
     use hertzdamp_ends, only: HD_END_OVERLAP, HD_END_FORCE
     use hertzdamp_laws, only: hertzdamp_law_code
-    use hertzdamp_apps_text, only: lower
+    use hertzdamp_text_format, only: lower
     use hertzdamp_dem, only: hertzdamp_dem_scene, hertzdamp_dem_material, hertzdamp_dem_wall, &
                              hertzdamp_dem_max_particles
     implicit none

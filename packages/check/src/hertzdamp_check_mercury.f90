@@ -4,12 +4,12 @@
 !> `setEffectiveElasticModulus=E*`, `setDissipation=g`, `setDensity=rho`) or, with
 !> `species=HertzianViscoelasticSpecies`, Beta 2015 (`setElasticModulus=E`,
 !> `setDissipation=d`, `setStiffnessAndRestitutionCoefficient=E,e,mass`).
-module hertzdamp_peers_mercury
+module hertzdamp_check_mercury
     use hertzdamp, only: hertzdamp_rk
-    use hertzdamp_peers, only: peer_deck, peer_spec_row, TSTEP_MERCURY
-    use hertzdamp_peers_common, only: peer_materials, kv_list, bodies, hertz_k, check_modulus, values, take, &
+    use hertzdamp_check_model, only: peer_deck, peer_spec_row, TSTEP_MERCURY
+    use hertzdamp_check_common, only: peer_materials, kv_list, bodies, hertz_k, check_modulus, values, take, &
                                       add_note
-    use hertzdamp_apps_text, only: itoa, fmt_short, ROUND_TRIP
+    use hertzdamp_text_format, only: itoa, fmt_short, ROUND_TRIP
     implicit none
     private
 
@@ -215,4 +215,4 @@ contains
         deck%deck_text = st%species // ':' // st%calls
     end subroutine resolve
 
-end module hertzdamp_peers_mercury
+end module hertzdamp_check_mercury

@@ -4,13 +4,15 @@
 !> engines' parameters, and what the deck readers hand to the contact readers).
 !>
 !> Errors are one-line messages ('' when none) naming the key or value; nothing prints.
-module hertzdamp_peers_common
-    use hertzdamp, only: hertzdamp_rk, hertzdamp_message, HD_OK
-    use hertzdamp_materials, only: hertzdamp_sphere_mass, hertzdamp_effective_mass, hertzdamp_effective_radius, &
-                                   hertzdamp_effective_modulus, hertzdamp_hertz_stiffness
-    use hertzdamp_peers, only: peer_deck, peer_text
-    use hertzdamp_peers_text, only: peer_map, peer_number
-    use hertzdamp_apps_text, only: upper
+module hertzdamp_check_common
+    use hertzdamp, only: hertzdamp_rk, hertzdamp_message, HD_OK, HD_END_OVERLAP, HD_END_FORCE, hertzdamp_end_name, &
+                         hertzdamp_sphere_mass, hertzdamp_effective_mass, hertzdamp_effective_radius, &
+                         hertzdamp_effective_modulus, hertzdamp_hertz_stiffness
+    use hertzdamp_check_model, only: peer_deck
+    use hertzdamp_text_list, only: text_string
+    use hertzdamp_text_map, only: text_map
+    use hertzdamp_text_parse, only: text_number
+    use hertzdamp_text_format, only: upper
     implicit none
     private
 
@@ -26,14 +28,14 @@ module hertzdamp_peers_common
 
     !> key=value pairs of a deck, with a flag for the keys consumed.
     type, public :: kv_list
-        type(peer_text), allocatable :: key(:), val(:)
+        type(text_string), allocatable :: key(:), val(:)
         logical, allocatable :: used(:)
-        type(peer_map) :: map              !! key -> its index
+        type(text_map) :: map              !! key -> its index
     end type kv_list
 
     public :: bodies, end_word, effective_modulus, hertz_k, check_modulus, check_poisson
     public :: pair_values, required, on_off, values, number, split_pairs, take, has, check_all_used, base_key
-    public :: add_note, join, unquote
+    public :: add_note
 
 contains
 
@@ -76,15 +78,12 @@ contains
         deck%m_damp = deck%m
     end subroutine bodies
 
-    !> 'force' or 'overlap', the end of a row id.
+    !> The contact end of a row id: the library's name of the force end (the total force
+    !> clipped, `limit`) or of the overlap end.
     pure function end_word(limit) result(w)
         logical, intent(in) :: limit
         character(len=:), allocatable :: w
-        if (limit) then
-            w = 'force'
-        else
-            w = 'overlap'
-        end if
+        w = hertzdamp_end_name(merge(HD_END_FORCE, HD_END_OVERLAP, limit))
     end function end_word
 
     !> 1/E* = (1 - nu1^2)/E1 + (1 - nu2^2)/E2 (hertzdamp_effective_modulus; the inputs
@@ -105,6 +104,7 @@ contains
         call hertzdamp_hertz_stiffness(e_star, radius, k, st)
     end function hertz_k
 
+    !> msg (when still '') says that a modulus `what` = text is not positive.
     subroutine check_modulus(x, what, text, msg)
         real(wp), intent(in) :: x
         character(len=*), intent(in) :: what, text
@@ -113,6 +113,7 @@ contains
         if (.not. (x > 0.0_wp)) msg = what // ' = ' // text // ': a modulus must be positive'
     end subroutine check_modulus
 
+    !> msg (when still '') says that a Poisson's ratio `what` = text is outside (-1, 0.5].
     subroutine check_poisson(x, what, text, msg)
         real(wp), intent(in) :: x
         character(len=*), intent(in) :: what, text
@@ -158,6 +159,7 @@ contains
         end if
     end subroutine pair_values
 
+    !> The number of a key that must be given (msg names it when it is missing or malformed).
     subroutine required(kv, key, x, msg)
         type(kv_list), intent(inout) :: kv
         character(len=*), intent(in) :: key
@@ -173,6 +175,7 @@ contains
         call number(v, key, x, msg)
     end subroutine required
 
+    !> An on|off value of a key (msg names the key for any other).
     subroutine on_off(v, key, flag, msg)
         character(len=*), intent(in) :: v, key
         logical, intent(out) :: flag
@@ -213,13 +216,13 @@ contains
         character(len=:), allocatable, intent(inout) :: msg
         x = 0.0_wp
         if (len(msg) > 0) return
-        if (.not. peer_number(text, x)) msg = 'malformed number "' // text // '" for ' // what
+        if (.not. text_number(text, x)) msg = 'malformed number "' // text // '" for ' // what
     end subroutine number
 
     !> Split key=value words (MFiX: keys upper-cased, as its namelist is case-insensitive);
     !> a key given twice is an error (found through a hash map: linear time).
     subroutine split_pairs(tok, to_upper, kv, msg)
-        type(peer_text), intent(in) :: tok(:)
+        type(text_string), intent(in) :: tok(:)
         logical, intent(in) :: to_upper
         type(kv_list), intent(out) :: kv
         character(len=:), allocatable, intent(inout) :: msg
@@ -268,6 +271,7 @@ contains
         end if
     end function take
 
+    !> Whether a key is given (without marking it used).
     pure logical function has(kv, key)
         type(kv_list), intent(in) :: kv
         character(len=*), intent(in) :: key
@@ -293,6 +297,7 @@ contains
         end do
     end subroutine check_all_used
 
+    !> A key without its index: KEY(2) -> KEY.
     pure function base_key(key) result(b)
         character(len=*), intent(in) :: key
         character(len=:), allocatable :: b
@@ -305,42 +310,11 @@ contains
         end if
     end function base_key
 
+    !> Append a remark to the deck's notes.
     subroutine add_note(deck, text)
         type(peer_deck), intent(inout) :: deck
         character(len=*), intent(in) :: text
-        deck%notes = [deck%notes, peer_text(text)]
+        deck%notes = [deck%notes, text_string(text)]
     end subroutine add_note
 
-    !> The words joined by blanks (linear time: the length is counted first).
-    pure function join(t) result(s)
-        type(peer_text), intent(in) :: t(:)
-        character(len=:), allocatable :: s
-        integer :: i, n, k
-        n = max(0, size(t) - 1)
-        do i = 1, size(t)
-            n = n + len(t(i)%s)
-        end do
-        allocate (character(len=n) :: s)
-        k = 0
-        do i = 1, size(t)
-            if (i > 1) then
-                s(k + 1:k + 1) = ' '
-                k = k + 1
-            end if
-            s(k + 1:k + len(t(i)%s)) = t(i)%s
-            k = k + len(t(i)%s)
-        end do
-    end function join
-
-    pure function unquote(s) result(r)
-        character(len=*), intent(in) :: s
-        character(len=:), allocatable :: r
-        r = s
-        if (len(r) >= 2) then
-            if ((r(1:1) == '''' .and. r(len(r):len(r)) == '''') .or. (r(1:1) == '"' .and. r(len(r):len(r)) == '"')) then
-                r = r(2:len(r) - 1)
-            end if
-        end if
-    end function unquote
-
-end module hertzdamp_peers_common
+end module hertzdamp_check_common

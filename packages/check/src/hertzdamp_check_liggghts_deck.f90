@@ -9,14 +9,16 @@
 !> - `fix particletemplate/sphere ... atom_type T density constant rho radius constant r`
 !>   (and create_atoms with set, as LAMMPS).
 !> Every type pair and every type against every wall becomes a contact in the words of the
-!> LIGGGHTS contact reader (hertzdamp_peers_liggghts).
-module hertzdamp_peers_liggghts_deck
+!> LIGGGHTS contact reader (hertzdamp_check_liggghts).
+module hertzdamp_check_liggghts_deck
     use hertzdamp, only: hertzdamp_rk
-    use hertzdamp_peers, only: peer_text, PEER_LIGGGHTS
-    use hertzdamp_peers_text, only: peer_list, peer_map, peer_number, peer_num_text
-    use hertzdamp_peers_scene, only: peer_scene, peer_contact
-    use hertzdamp_peers_script, only: peer_script, script_open, script_next, script_size, script_add_size
-    use hertzdamp_apps_text, only: itoa
+    use hertzdamp_check_model, only: PEER_LIGGGHTS
+    use hertzdamp_check_scene, only: peer_scene, peer_contact, peer_scene_from_script
+    use hertzdamp_lmpscript, only: lmp_script, lmp_commands, lmp_read, lmp_size, lmp_add_size, lmp_active_types
+    use hertzdamp_text_list, only: text_string, text_list
+    use hertzdamp_text_map, only: text_map
+    use hertzdamp_text_parse, only: text_number, text_shortest
+    use hertzdamp_text_format, only: itoa
     implicit none
     private
 
@@ -32,80 +34,75 @@ module hertzdamp_peers_liggghts_deck
     !> One granular wall.
     type :: lwall
         character(len=:), allocatable :: id, where
-        type(peer_text), allocatable :: model(:)   !! the contact reader's words of the models
+        type(text_string), allocatable :: model(:)   !! the contact reader's words of the models
         integer, allocatable :: types(:)           !! the wall's material types
     end type lwall
 
-    !> What the deck defines.
-    type :: liggghts_model
+    !> What the deck defines: the LIGGGHTS commands of lmp_read's reader.
+    type, extends(lmp_commands) :: liggghts_model
         type(property), allocatable :: props(:)
         integer :: nprops = 0
-        type(peer_map) :: prop_index               !! property name -> index
-        type(peer_text), allocatable :: pair_words(:)
+        type(text_map) :: prop_index               !! property name -> index
+        type(text_string), allocatable :: pair_words(:)
         character(len=:), allocatable :: pair_where, pair_problem
         type(lwall), allocatable :: walls(:)
         integer :: nwalls = 0
-        type(peer_map) :: mesh_type                !! mesh fix ID -> material type
+        type(text_map) :: mesh_type                !! mesh fix ID -> material type
+    contains
+        procedure :: command
     end type liggghts_model
 
     public :: read_liggghts_deck
 
 contains
 
-    !> Read LIGGGHTS deck files (in order) into a scene.
+    !> Read LIGGGHTS deck files (in order) into a scene.  msg: a file that cannot be
+    !> read, or why the reading stopped.
     subroutine read_liggghts_deck(paths, scene, msg)
-        type(peer_text), intent(in) :: paths(:)
+        type(text_string), intent(in) :: paths(:)            !! the deck's files
         type(peer_scene), intent(out) :: scene
         character(len=:), allocatable, intent(out) :: msg
-        type(peer_script) :: st
+        type(lmp_script) :: st
         type(liggghts_model) :: md
-        type(peer_list) :: w
-        character(len=:), allocatable :: where
-        logical :: more
-        call script_open(st, paths, .true., msg)
-        if (len(msg) > 0) return
-        st%scene%units = 'si'
         allocate (md%props(8), md%walls(4), md%pair_words(0))
         md%pair_where = ''
         md%pair_problem = 'no pair_style gran'
-        do
-            call script_next(st, w, where, more)
-            if (.not. more) exit
-            call command(st, md, w, where)
-        end do
+        call lmp_read(st, paths, .true., md, msg)
+        if (len(msg) > 0) return
         if (.not. st%have_dt) then
-            st%scene%dt = 1.0e-8_wp
-            st%scene%dt_text = 'LIGGGHTS''s default (no timestep command)'
+            st%dt = 1.0e-8_wp
+            st%dt_text = 'LIGGGHTS''s default (no timestep command)'
         end if
-        call contacts(st, md)
-        scene = st%scene
-        scene%peer = PEER_LIGGGHTS
+        call contacts(st, md, scene)
+        call peer_scene_from_script(st, PEER_LIGGGHTS, scene)
     end subroutine read_liggghts_deck
 
-    subroutine command(st, md, w, where)
-        type(peer_script), intent(inout) :: st
-        type(liggghts_model), intent(inout) :: md
-        type(peer_list), intent(in) :: w
+    subroutine command(self, st, w, where, handled)
+        class(liggghts_model), intent(inout) :: self
+        type(lmp_script), intent(inout) :: st
+        type(text_list), intent(in) :: w
         character(len=*), intent(in) :: where
+        logical, intent(out) :: handled
+        handled = .true.
         select case (w%item(1)%s)
         case ('pair_style')
-            call pair_style(md, w, where)
+            call pair_style(self, w, where)
         case ('pair_coeff')
-            if (w%n > 3) call st%scene%note(where, 'pair_coeff with coefficients: LIGGGHTS takes them from ' // &
-                                            'fix property/global; ignored')
+            if (w%n > 3) call st%note(where, 'pair_coeff with coefficients: LIGGGHTS takes them from ' // &
+                                      'fix property/global; ignored')
         case ('fix')
-            call fix_command(st, md, w, where)
+            call fix_command(st, self, w, where, handled)
         case default
-            call st%scene%note(where, 'command ' // w%item(1)%s // ' is not interpreted')
+            handled = .false.
         end select
     end subroutine command
 
     !> The contact reader's words of `model X [tangential Y ...] keyword value ...`
     !> starting at word k; problem when a model is not a Hertz one.
     subroutine model_words(w, k, words, problem)
-        type(peer_list), intent(in) :: w
+        type(text_list), intent(in) :: w
         integer, intent(in) :: k
-        type(peer_text), allocatable, intent(out) :: words(:)
+        type(text_string), allocatable, intent(out) :: words(:)
         character(len=:), allocatable, intent(out) :: problem
         integer :: i
         allocate (words(0))
@@ -114,7 +111,7 @@ contains
         do while (i + 1 <= w%n)
             select case (w%item(i)%s)
             case ('model', 'tangential', 'cohesion', 'rolling_friction', 'surface', 'limitForce', 'tangential_damping')
-                words = [words, peer_text(w%item(i)%s // '=' // w%item(i + 1)%s)]
+                words = [words, text_string(w%item(i)%s // '=' // w%item(i + 1)%s)]
             case ('primitive', 'mesh')
                 return
             case default
@@ -126,7 +123,7 @@ contains
 
     subroutine pair_style(md, w, where)
         type(liggghts_model), intent(inout) :: md
-        type(peer_list), intent(in) :: w
+        type(text_list), intent(in) :: w
         character(len=*), intent(in) :: where
         md%pair_where = where
         if (w%n >= 2 .and. (w%item(2)%s == 'gran' .or. w%item(2)%s == 'bubble' .or. w%item(2)%s == 'gran_bubble')) then
@@ -136,11 +133,13 @@ contains
         end if
     end subroutine pair_style
 
-    subroutine fix_command(st, md, w, where)
-        type(peer_script), intent(inout) :: st
+    !> The fixes of materials, walls and particle templates (handled false for other styles).
+    subroutine fix_command(st, md, w, where, handled)
+        type(lmp_script), intent(inout) :: st
         type(liggghts_model), intent(inout) :: md
-        type(peer_list), intent(in) :: w
+        type(text_list), intent(in) :: w
         character(len=*), intent(in) :: where
+        logical, intent(inout) :: handled
         if (w%n < 4) return
         select case (w%item(4)%s)
         case ('property/global')
@@ -153,18 +152,18 @@ contains
             call template(st, w, where)
         case ('particledistribution/discrete', 'insert/pack', 'insert/stream', 'insert/rate/region', &
               'move/mesh', 'wall/region/sph', 'check/timestep/gran', 'particletemplate/multisphere')
-            if (w%item(4)%s == 'particletemplate/multisphere') call st%scene%note(where, 'multisphere ' // &
+            if (w%item(4)%s == 'particletemplate/multisphere') call st%note(where, 'multisphere ' // &
                 'particles are not read')
         case default
-            call st%scene%note(where, 'fix style ' // w%item(4)%s // ' is not interpreted')
+            handled = .false.
         end select
     end subroutine fix_command
 
     !> fix ID group property/global NAME style values.
     subroutine add_property(st, md, w, where)
-        type(peer_script), intent(inout) :: st
+        type(lmp_script), intent(inout) :: st
         type(liggghts_model), intent(inout) :: md
-        type(peer_list), intent(in) :: w
+        type(text_list), intent(in) :: w
         character(len=*), intent(in) :: where
         type(property) :: p
         type(property), allocatable :: tmp(:)
@@ -176,13 +175,13 @@ contains
         p%where = where
         k0 = 7
         if (p%style == 'peratomtypepair' .or. p%style == 'atomtypepair') then
-            if (peer_number(w%item(7)%s, x)) p%n = nint(x)
+            if (text_number(w%item(7)%s, x)) p%n = nint(x)
             k0 = 8
         end if
         allocate (p%v(max(0, w%n - k0 + 1)))
         do i = k0, w%n
-            if (.not. peer_number(w%item(i)%s, p%v(i - k0 + 1))) then
-                call st%scene%note(where, 'property/global ' // p%name // ': "' // w%item(i)%s // '" is not a number')
+            if (.not. text_number(w%item(i)%s, p%v(i - k0 + 1))) then
+                call st%note(where, 'property/global ' // p%name // ': "' // w%item(i)%s // '" is not a number')
                 return
             end if
         end do
@@ -202,9 +201,9 @@ contains
 
     !> fix ID group wall/gran model ... primitive type T plane pos | mesh n_meshes N meshes IDs
     subroutine add_wall(st, md, w, where)
-        type(peer_script), intent(inout) :: st
+        type(lmp_script), intent(inout) :: st
         type(liggghts_model), intent(inout) :: md
-        type(peer_list), intent(in) :: w
+        type(text_list), intent(in) :: w
         character(len=*), intent(in) :: where
         type(lwall) :: wl
         type(lwall), allocatable :: tmp(:)
@@ -217,25 +216,25 @@ contains
         call model_words(w, 5, wl%model, problem)
         do i = 5, w%n
             if (w%item(i)%s == 'type' .and. i + 1 <= w%n) then
-                if (peer_number(w%item(i + 1)%s, x)) wl%types = [wl%types, nint(x)]
+                if (text_number(w%item(i + 1)%s, x)) wl%types = [wl%types, nint(x)]
             else if (w%item(i)%s == 'xcylinder' .or. w%item(i)%s == 'ycylinder' .or. w%item(i)%s == 'zcylinder') then
-                call st%scene%note(where, 'fix wall/gran ' // w%item(i)%s // ': checked as a flat wall (R = the ' // &
+                call st%note(where, 'fix wall/gran ' // w%item(i)%s // ': checked as a flat wall (R = the ' // &
                                    'particle radius); a cylinder changes R')
             else if (w%item(i)%s == 'n_meshes' .and. i + 1 <= w%n) then
                 nm = 0
-                if (peer_number(w%item(i + 1)%s, x)) nm = nint(x)
+                if (text_number(w%item(i + 1)%s, x)) nm = nint(x)
                 do j = i + 3, min(w%n, i + 2 + nm)
                     t = md%mesh_type%get(w%item(j)%s)
                     if (t > 0) then
                         wl%types = [wl%types, t]
                     else
-                        call st%scene%note(where, 'mesh ' // w%item(j)%s // ': no fix mesh/surface with a type')
+                        call st%note(where, 'mesh ' // w%item(j)%s // ': no fix mesh/surface with a type')
                     end if
                 end do
             end if
         end do
         if (len(problem) > 0 .or. size(wl%types) == 0) then
-            call st%scene%note(where, 'fix wall/gran ' // wl%id // ': no model or no wall material type; not checked')
+            call st%note(where, 'fix wall/gran ' // wl%id // ': no model or no wall material type; not checked')
             return
         end if
         if (md%nwalls == size(md%walls)) then
@@ -250,19 +249,19 @@ contains
     !> fix ID group mesh/surface file F type T ...: the mesh's material type.
     subroutine mesh(md, w)
         type(liggghts_model), intent(inout) :: md
-        type(peer_list), intent(in) :: w
+        type(text_list), intent(in) :: w
         integer :: i
         real(wp) :: x
         do i = 5, w%n - 1
             if (w%item(i)%s /= 'type') cycle
-            if (peer_number(w%item(i + 1)%s, x)) call md%mesh_type%put(w%item(2)%s, nint(x))
+            if (text_number(w%item(i + 1)%s, x)) call md%mesh_type%put(w%item(2)%s, nint(x))
         end do
     end subroutine mesh
 
     !> fix ID group particletemplate/sphere seed atom_type T density constant rho radius constant r
     subroutine template(st, w, where)
-        type(peer_script), intent(inout) :: st
-        type(peer_list), intent(in) :: w
+        type(lmp_script), intent(inout) :: st
+        type(text_list), intent(in) :: w
         character(len=*), intent(in) :: where
         real(wp) :: x, r, rho
         integer :: i, t
@@ -272,47 +271,41 @@ contains
         do i = 6, w%n - 1
             select case (w%item(i)%s)
             case ('atom_type')
-                if (peer_number(w%item(i + 1)%s, x)) t = nint(x)
+                if (text_number(w%item(i + 1)%s, x)) t = nint(x)
             case ('density', 'radius')
                 if (i + 2 > w%n) cycle
                 if (w%item(i + 1)%s /= 'constant') then
-                    call st%scene%note(where, 'particletemplate/sphere ' // w%item(i)%s // ' ' // w%item(i + 1)%s // &
+                    call st%note(where, 'particletemplate/sphere ' // w%item(i)%s // ' ' // w%item(i + 1)%s // &
                                        ': only constant is read')
-                else if (peer_number(w%item(i + 2)%s, x)) then
+                else if (text_number(w%item(i + 2)%s, x)) then
                     if (w%item(i)%s == 'radius') r = x
                     if (w%item(i)%s == 'density') rho = x
                 end if
             case ('relative')
-                if (w%item(i + 1)%s == 'yes') call st%scene%note(where, 'particletemplate/sphere relative yes: ' // &
+                if (w%item(i + 1)%s == 'yes') call st%note(where, 'particletemplate/sphere relative yes: ' // &
                                                                  'the radius is relative; read as absolute')
             case default
             end select
         end do
-        call script_add_size(st, t, 2.0_wp * r, rho, 'particletemplate/sphere ' // w%item(2)%s // ' (' // where // ')')
+        call lmp_add_size(st, t, 2.0_wp * r, rho, 'particletemplate/sphere ' // w%item(2)%s // ' (' // where // ')')
     end subroutine template
 
     ! ------------------------------------------------------------------ contacts
 
-    subroutine contacts(st, md)
-        type(peer_script), intent(inout) :: st
+    subroutine contacts(st, md, scene)
+        type(lmp_script), intent(inout) :: st
         type(liggghts_model), intent(inout) :: md
+        type(peer_scene), intent(inout) :: scene
         integer, allocatable :: types(:)
         integer :: a, b, k, j
         type(peer_contact) :: c
-        allocate (types(0))
-        do a = 1, st%ntypes
-            if (st%atoms(a)) types = [types, a]
-        end do
-        if (size(types) == 0) then
-            call st%scene%note('', 'no particle template or created atom: every type is checked')
-            types = [(a, a = 1, st%ntypes)]
-        end if
+        call lmp_active_types(st, 'no particle template or created atom: every type is checked', types)
         do a = 1, size(types)
             do b = a, size(types)
                 c%pair = itoa(types(a)) // '-' // itoa(types(b))
                 c%where = md%pair_where
                 call contact_words(st, md, md%pair_words, md%pair_problem, types(a), types(b), .false., c)
-                call st%scene%add_contact(c)
+                call scene%add_contact(c)
             end do
         end do
         do k = 1, md%nwalls
@@ -323,7 +316,7 @@ contains
                     if (size(md%walls(k)%types) > 1) c%pair = c%pair // '/' // itoa(md%walls(k)%types(j))
                     c%where = md%walls(k)%where
                     call contact_words(st, md, md%walls(k)%model, '', types(a), md%walls(k)%types(j), .true., c)
-                    call st%scene%add_contact(c)
+                    call scene%add_contact(c)
                 end do
             end do
         end do
@@ -331,23 +324,23 @@ contains
 
     !> The contact of type i with type (or wall material) j in the LIGGGHTS reader's words.
     subroutine contact_words(st, md, model, problem, i, j, wall, c)
-        type(peer_script), intent(inout) :: st
+        type(lmp_script), intent(inout) :: st
         type(liggghts_model), intent(inout) :: md
-        type(peer_text), intent(in) :: model(:)
+        type(text_string), intent(in) :: model(:)
         character(len=*), intent(in) :: problem
         integer, intent(in) :: i, j
         logical, intent(in) :: wall
         type(peer_contact), intent(inout) :: c
-        type(peer_list) :: w
+        type(text_list) :: w
         character(len=:), allocatable :: s2
         integer :: k
         c%problem = problem
         c%mat%wall = wall
-        call script_size(st, i, c%mat%radius(1), c%mat%density(1), c%sizes)
+        call lmp_size(st, i, c%mat%radius(1), c%mat%density(1), c%sizes)
         c%mat%radius(2) = 0.0_wp
         c%mat%density(2) = 0.0_wp
         if (.not. wall) then
-            call script_size(st, j, c%mat%radius(2), c%mat%density(2), s2)
+            call lmp_size(st, j, c%mat%radius(2), c%mat%density(2), s2)
             if (j /= i) c%sizes = c%sizes // '; ' // s2
         end if
         do k = 1, size(model)
@@ -364,7 +357,7 @@ contains
     end subroutine contact_words
 
     function join_words(t) result(s)
-        type(peer_text), intent(in) :: t(:)
+        type(text_string), intent(in) :: t(:)
         character(len=:), allocatable :: s
         integer :: i
         s = ''
@@ -378,7 +371,7 @@ contains
         type(liggghts_model), intent(inout) :: md
         character(len=*), intent(in) :: name
         integer, intent(in) :: i, j
-        type(peer_list), intent(inout) :: w
+        type(text_list), intent(inout) :: w
         character(len=:), allocatable, intent(inout) :: problem
         integer :: k
         k = md%prop_index%get(name)
@@ -392,7 +385,7 @@ contains
                                                  itoa(size(p%v)) // ' values, fewer than the atom types'
                 return
             end if
-            call w%push(name // '=' // peer_num_text(p%v(i)) // ',' // peer_num_text(p%v(j)))
+            call w%push(name // '=' // text_shortest(p%v(i)) // ',' // text_shortest(p%v(j)))
         end associate
     end subroutine per_type
 
@@ -401,7 +394,7 @@ contains
         type(liggghts_model), intent(inout) :: md
         character(len=*), intent(in) :: name
         integer, intent(in) :: i, j
-        type(peer_list), intent(inout) :: w
+        type(text_list), intent(inout) :: w
         character(len=:), allocatable, intent(inout) :: problem
         integer :: k, n
         k = md%prop_index%get(name)
@@ -412,14 +405,14 @@ contains
         associate (p => md%props(k))
             n = p%n
             if (p%style == 'scalar' .and. size(p%v) == 1) then
-                call w%push(name // '=' // peer_num_text(p%v(1)))
+                call w%push(name // '=' // text_shortest(p%v(1)))
             else if (n < max(i, j) .or. size(p%v) < n * n) then
                 if (len(problem) == 0) problem = 'property/global ' // name // ' (' // p%where // '): not a ' // &
                                                  'peratomtypepair matrix covering types ' // itoa(i) // ' and ' // itoa(j)
             else
-                call w%push(name // '=' // peer_num_text(p%v((i - 1) * n + j)))
+                call w%push(name // '=' // text_shortest(p%v((i - 1) * n + j)))
             end if
         end associate
     end subroutine per_pair
 
-end module hertzdamp_peers_liggghts_deck
+end module hertzdamp_check_liggghts_deck

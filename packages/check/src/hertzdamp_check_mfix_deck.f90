@@ -6,16 +6,19 @@
 !> DES_COLL_MODEL, E_YOUNG, V_POISSON, EW_YOUNG, VW_POISSON, DES_EN_INPUT (MFiX's pair
 !> order 1-1, 1-2, ..., 1-M, 2-2, ...), DES_EN_WALL_INPUT, DES_ET_INPUT, DES_INTG_METHOD,
 !> DTSOLID_FACTOR and DT.  Every pair of DEM phases and every DEM phase against the
-!> wall is a contact in the words of the MFiX contact reader (hertzdamp_peers_mfix); the
-!> time step is MFiX's DTSOLID, computed from the contacts (hertzdamp_peers_check).
-module hertzdamp_peers_mfix_deck
-    use hertzdamp, only: hertzdamp_rk
-    use hertzdamp_peers, only: peer_text, PEER_MFIX
-    use hertzdamp_peers_text, only: peer_list, peer_map, peer_vars, peer_number, peer_eval, peer_num_text, &
-                                    peer_strip_quotes, SYNTAX_MFIX
-    use hertzdamp_peers_scene, only: peer_scene, peer_contact, peer_read_lines, peer_where
-    use hertzdamp_host, only: HD_HOST_MFIX_EULER, HD_HOST_MFIX_AB2, HD_HOST_NONE
-    use hertzdamp_apps_text, only: upper, itoa, fmt_short
+!> wall is a contact in the words of the MFiX contact reader (hertzdamp_check_mfix); the
+!> time step is MFiX's DTSOLID, computed from the contacts (hertzdamp_check_whole).
+module hertzdamp_check_mfix_deck
+    use hertzdamp, only: hertzdamp_rk, HD_HOST_MFIX_EULER, HD_HOST_MFIX_AB2, HD_HOST_NONE
+    use hertzdamp_check_model, only: PEER_MFIX
+    use hertzdamp_check_scene, only: peer_scene, peer_contact
+    use hertzdamp_text_list, only: text_string, text_list
+    use hertzdamp_text_map, only: text_map
+    use hertzdamp_text_parse, only: text_number, text_find_unquoted
+    use hertzdamp_text_expr, only: text_vars
+    use hertzdamp_text_namelist, only: text_nml_assignments, text_nml_values
+    use hertzdamp_text_file, only: text_read_lines, text_where
+    use hertzdamp_text_format, only: upper, itoa, fmt_short
     implicit none
     private
 
@@ -28,9 +31,9 @@ module hertzdamp_peers_mfix_deck
 
     !> The assignments: "KEY(i)" -> index into val/where.
     type :: mfix_values
-        type(peer_map) :: index
-        type(peer_list) :: val, where, keys
-        type(peer_vars) :: vars       !! for @( ) expressions (none defined: numbers only)
+        type(text_map) :: index
+        type(text_list) :: val, where, keys
+        type(text_vars) :: vars       !! for @( ) expressions (none defined: numbers only)
     end type mfix_values
 
     public :: read_mfix_deck
@@ -39,22 +42,22 @@ contains
 
     !> Read MFiX deck files (in order; a later assignment replaces an earlier one).
     subroutine read_mfix_deck(paths, scene, msg)
-        type(peer_text), intent(in) :: paths(:)
+        type(text_string), intent(in) :: paths(:)
         type(peer_scene), intent(out) :: scene
         character(len=:), allocatable, intent(out) :: msg
         type(mfix_values) :: mv
-        type(peer_list) :: lines
+        type(text_list) :: lines
         integer :: f, i
         msg = ''
         scene%peer = PEER_MFIX
         scene%units = 'SI'
         scene%dt_text = ''
         do f = 1, size(paths)
-            call peer_read_lines(paths(f)%s, lines, msg, scene%work)
+            call text_read_lines(paths(f)%s, lines, msg, scene%work)
             if (len(msg) > 0) return
             call scene%files%push(paths(f)%s)
             do i = 1, lines%n
-                call parse_line(scene, mv, lines%item(i)%s, peer_where(paths(f)%s, i))
+                call parse_line(scene, mv, lines%item(i)%s, text_where(paths(f)%s, i))
             end do
         end do
         scene%work = scene%work + mv%index%probes
@@ -71,9 +74,11 @@ contains
         character(len=:), allocatable :: line
         integer, allocatable :: eq(:), kstart(:)
         integer :: i, n, vend
-        line = strip_comment(line0)
+        line = line0
+        i = text_find_unquoted(line, '!#')     ! a comment
+        if (i > 0) line = line(1:i - 1)
         if (len_trim(line) == 0) return
-        call find_assignments(line, eq, kstart)
+        call text_nml_assignments(line, eq, kstart)
         n = size(eq)
         if (n == 0) then
             call scene%note(where, 'not an assignment: "' // trim(adjustl(line)) // '"')
@@ -88,103 +93,13 @@ contains
         end do
     end subroutine parse_line
 
-    !> The line without its comment: ! or # outside quotes.
-    function strip_comment(line) result(s)
-        character(len=*), intent(in) :: line
-        character(len=:), allocatable :: s
-        character :: q
-        integer :: i
-        q = ' '
-        s = line
-        do i = 1, len(line)
-            if (q /= ' ') then
-                if (line(i:i) == q) q = ' '
-            else if (line(i:i) == '"' .or. line(i:i) == '''') then
-                q = line(i:i)
-            else if (line(i:i) == '!' .or. line(i:i) == '#') then
-                s = line(1:i - 1)
-                return
-            end if
-        end do
-    end function strip_comment
-
-    !> The '=' of each assignment (outside quotes and parentheses) and where its key starts.
-    subroutine find_assignments(line, eq, kstart)
-        character(len=*), intent(in) :: line
-        integer, allocatable, intent(out) :: eq(:), kstart(:)
-        character :: q
-        integer :: i, depth, k
-        allocate (eq(0), kstart(0))
-        q = ' '
-        depth = 0
-        do i = 1, len(line)
-            if (q /= ' ') then
-                if (line(i:i) == q) q = ' '
-                cycle
-            end if
-            select case (line(i:i))
-            case ('"', ''''); q = line(i:i)
-            case ('('); depth = depth + 1
-            case (')'); depth = max(0, depth - 1)
-            case ('=')
-                if (depth > 0) cycle
-                k = key_start(line, i)
-                if (k > 0) then
-                    eq = [eq, i]
-                    kstart = [kstart, k]
-                end if
-            case default
-            end select
-        end do
-    end subroutine find_assignments
-
-    !> Start of the key before the '=' at position e: NAME or NAME(...); 0 if none.
-    pure integer function key_start(line, e) result(k)
-        character(len=*), intent(in) :: line
-        integer, intent(in) :: e
-        integer :: j, depth
-        j = e - 1
-        do while (j >= 1)
-            if (line(j:j) /= ' ') exit
-            j = j - 1
-        end do
-        if (j < 1) then
-            k = 0
-            return
-        end if
-        if (line(j:j) == ')') then
-            depth = 0
-            do while (j >= 1)
-                if (line(j:j) == ')') depth = depth + 1
-                if (line(j:j) == '(') depth = depth - 1
-                j = j - 1
-                if (depth == 0) exit
-            end do
-        end if
-        k = j + 1
-        do while (j >= 1)
-            if (.not. name_char(line(j:j))) exit
-            k = j
-            j = j - 1
-        end do
-        if (k > j + 1 .or. .not. name_char(line(max(1, k):max(1, k)))) k = 0
-        if (j >= 1 .and. k > 0) then
-            if (line(j:j) /= ' ' .and. line(j:j) /= ',' .and. line(j:j) /= achar(9)) k = 0
-        end if
-    end function key_start
-
-    pure logical function name_char(c)
-        character, intent(in) :: c
-        name_char = (c >= 'A' .and. c <= 'Z') .or. (c >= 'a' .and. c <= 'z') .or. (c >= '0' .and. c <= '9') .or. c == '_'
-    end function name_char
-
     !> KEY[(i[:j])] = values: every value stored under KEY(index).
     subroutine assign(scene, mv, key0, text, where)
         type(peer_scene), intent(inout) :: scene
         type(mfix_values), intent(inout) :: mv
         character(len=*), intent(in) :: key0, text, where
         character(len=:), allocatable :: key, idx
-        type(peer_list) :: vals
+        type(text_list) :: vals, errors
         integer :: p, lo, hi, i
         real(wp) :: x
         key = upper(trim(adjustl(key0)))
@@ -200,21 +115,24 @@ contains
             end if
             i = index(idx, ':')
             if (i == 0) i = len(idx) + 1
-            if (.not. peer_number(idx(1:i - 1), x)) then
+            if (.not. text_number(idx(1:i - 1), x)) then
                 call scene%note(where, key // '(' // idx // '): index not read')
                 return
             end if
             lo = nint(x)
             hi = lo
             if (i <= len(idx)) then
-                if (.not. peer_number(idx(i + 1:), x)) then
+                if (.not. text_number(idx(i + 1:), x)) then
                     call scene%note(where, key // '(' // idx // '): index not read')
                     return
                 end if
                 hi = nint(x)
             end if
         end if
-        call expand(scene, mv, text, where, vals)
+        call text_nml_values(text, mv%vars, vals, errors)
+        do i = 1, errors%n
+            call scene%note(where, errors%item(i)%s)
+        end do
         if (p > 0 .and. vals%n /= hi - lo + 1) call scene%note(where, key // ': ' // itoa(vals%n) // &
             ' values for ' // itoa(hi - lo + 1) // ' indices')
         do i = 1, min(vals%n, hi - lo + 1)
@@ -244,87 +162,22 @@ contains
         end if
     end subroutine remember
 
-    !> The values of an assignment: words split at blanks and commas outside quotes and
-    !> @( ), n*value repeated, @(expr) evaluated, quotes removed.
-    subroutine expand(scene, mv, text, where, vals)
-        type(peer_scene), intent(inout) :: scene
-        type(mfix_values), intent(inout) :: mv
-        character(len=*), intent(in) :: text, where
-        type(peer_list), intent(out) :: vals
-        character(len=:), allocatable :: w, msg
-        character :: q
-        integer :: i, j, depth, star, k
-        real(wp) :: x, n
-        i = 1
-        do while (i <= len(text))
-            if (text(i:i) == ' ' .or. text(i:i) == ',' .or. text(i:i) == achar(9)) then
-                i = i + 1
-                cycle
-            end if
-            q = ' '
-            depth = 0
-            do j = i, len(text)
-                if (q /= ' ') then
-                    if (text(j:j) == q) q = ' '
-                else if (text(j:j) == '"' .or. text(j:j) == '''') then
-                    q = text(j:j)
-                else if (text(j:j) == '(') then
-                    depth = depth + 1
-                else if (text(j:j) == ')') then
-                    depth = depth - 1
-                else if (depth == 0 .and. (text(j:j) == ' ' .or. text(j:j) == ',' .or. text(j:j) == achar(9))) then
-                    exit
-                end if
-            end do
-            w = text(i:j - 1)
-            i = j
-            n = 1.0_wp
-            star = index(w, '*')
-            if (star > 1 .and. w(1:1) /= '@' .and. w(1:1) /= '''' .and. w(1:1) /= '"') then
-                if (peer_number(w(1:star - 1), n)) w = w(star + 1:)
-            end if
-            if (len(w) > 2) then
-                if (w(1:2) == '@(') then
-                    call peer_eval(w(3:len(w) - 1), SYNTAX_MFIX, mv%vars, x, msg)
-                    if (len(msg) > 0) then
-                        call scene%note(where, '@(' // w(3:len(w) - 1) // '): ' // msg)
-                        cycle
-                    end if
-                    w = peer_num_text(x)
-                end if
-            end if
-            if (scan(w, 'dD') > 0) then      ! 1.0d-3 as the readers take it
-                if (peer_number(w, x, fortran_d=.true.)) w = peer_num_text(x)
-            end if
-            do k = 1, max(1, nint(n))
-                call vals%push(peer_strip_quotes(w))
-            end do
-        end do
-    end subroutine expand
-
-    !> The value of KEY(i) ('' when absent).
-    pure function get(mv, key, i) result(v)
+    !> The value of KEY(i), or with `where` the file:line that set it ('' when absent).
+    pure function get(mv, key, i, where) result(v)
         type(mfix_values), intent(in) :: mv
         character(len=*), intent(in) :: key
         integer, intent(in) :: i
+        logical, intent(in), optional :: where
         character(len=:), allocatable :: v
         integer :: k
         k = mv%index%find(key // '(' // itoa(i) // ')')
         v = ''
-        if (k > 0) v = mv%val%item(k)%s
+        if (k == 0) return
+        v = mv%val%item(k)%s
+        if (present(where)) then
+            if (where) v = mv%where%item(k)%s
+        end if
     end function get
-
-    !> Where KEY(i) was set ('' when absent).
-    pure function get_where(mv, key, i) result(where)
-        type(mfix_values), intent(in) :: mv
-        character(len=*), intent(in) :: key
-        integer, intent(in) :: i
-        character(len=:), allocatable :: where
-        integer :: k
-        k = mv%index%find(key // '(' // itoa(i) // ')')
-        where = ''
-        if (k > 0) where = mv%where%item(k)%s
-    end function get_where
 
     !> A number of MFiX's (d exponents allowed); `x` unchanged when absent or not a number.
     logical function get_num(mv, key, i, x) result(ok)
@@ -333,7 +186,7 @@ contains
         integer, intent(in) :: i
         real(wp), intent(inout) :: x
         real(wp) :: y
-        ok = peer_number(get(mv, key, i), y, fortran_d=.true.)
+        ok = text_number(get(mv, key, i), y, fortran_d=.true.)
         if (ok) x = y
     end function get_num
 
@@ -345,7 +198,7 @@ contains
         real(wp) :: x
         if (len(get(mv, 'UNITS', 1)) > 0) scene%units = upper(get(mv, 'UNITS', 1))
         m = upper(get(mv, 'DES_INTG_METHOD', 1))
-        where = get_where(mv, 'DES_INTG_METHOD', 1)
+        where = get(mv, 'DES_INTG_METHOD', 1, where=.true.)
         select case (m)
         case ('', 'EULER')
             scene%host = HD_HOST_MFIX_EULER
@@ -407,7 +260,7 @@ contains
         character(len=*), intent(in) :: model
         integer, intent(in) :: m, l, lc
         type(peer_contact) :: c
-        type(peer_list) :: w
+        type(text_list) :: w
         character(len=:), allocatable :: where
         c%problem = ''
         c%mat%wall = l == 0
@@ -421,12 +274,12 @@ contains
             call w%push('EW_YOUNG=' // need('EW_YOUNG', 1))
             call w%push('VW_POISSON=' // need('VW_POISSON', 1))
             call w%push('DES_EN_WALL_INPUT=' // need('DES_EN_WALL_INPUT', m))
-            where = get_where(mv, 'DES_EN_WALL_INPUT', m)
+            where = get(mv, 'DES_EN_WALL_INPUT', m, where=.true.)
         else
             call w%push('E_YOUNG=' // need('E_YOUNG', m) // ',' // need('E_YOUNG', l))
             call w%push('V_POISSON=' // need('V_POISSON', m) // ',' // need('V_POISSON', l))
             call w%push('DES_EN_INPUT=' // need('DES_EN_INPUT', lc))
-            where = get_where(mv, 'DES_EN_INPUT', lc)
+            where = get(mv, 'DES_EN_INPUT', lc, where=.true.)
             if (len(get(mv, 'DES_ET_INPUT', lc)) == 0) call scene%note(where, 'DES_ET_INPUT(' // itoa(lc) // &
                 ') is missing: MFiX''s Hertzian model requires it and stops (check_solids_dem.f)')
         end if
@@ -500,4 +353,4 @@ contains
                                         'boundary conditions, output) were read and do not enter the contacts')
     end subroutine unread_keys
 
-end module hertzdamp_peers_mfix_deck
+end module hertzdamp_check_mfix_deck

@@ -3,29 +3,39 @@
 !> version, formula, source, stiffness, target, achieved and corrected e, time step,
 !> warnings and notes) and one row per impact speed with alpha, e, e_error, t_c,
 !> t_attractive, dt_max, t_hertz, t_peer, corrected and method (doc/peers.md section 11).
-!> Built as data (hertzdamp_peers_report); the command-line program prints it.
-module hertzdamp_peers_single
+!> Built as data (hertzdamp_check_report); the command-line program prints it.
+module hertzdamp_check_single
     use hertzdamp, only: hertzdamp_rk, hertzdamp_message, hertzdamp_end_name, hertzdamp_law_name, &
                          hertzdamp_law_has_alpha_c, hertzdamp_law_alpha_c, hertzdamp_method_name, &
                          hertzdamp_fit_law_e_min, hertzdamp_alpha_max, HD_METHOD_RK45, HD_METHOD_FIT, &
                          HD_OK, HD_NO_REBOUND, HD_END_OVERLAP, HD_OUTSIDE_VALIDITY, HD_OUT_OF_RANGE, &
                          HD_BAD_RESTITUTION, HD_NOT_SUPPORTED, HD_DAMPING_TSUJI
-    use hertzdamp_peers, only: peer_deck, peer_point, peer_text, peer_evaluate, peer_spec_field, &
-                               peer_law_inverse, peer_beta_inverse, peer_damping, &
-                               PEER_LAMMPS, PEER_LIGGGHTS, TSTEP_NONE, TSTEP_LIGGGHTS, TSTEP_MERCURY, TSTEP_MFIX
-    use hertzdamp_peers_common, only: peer_materials
-    use hertzdamp_peers_deck, only: peer_read_deck, peer_parameter_problem, peer_releases, &
-                                    LAMMPS_2021, LAMMPS_2023, LAMMPS_CURRENT
-    use hertzdamp_peers_report, only: peer_report
-    use hertzdamp_apps_text, only: itoa, fmt_short, ROUND_TRIP
+    use hertzdamp_check_model, only: peer_deck, peer_point, peer_evaluate, peer_spec_field, peer_law_inverse, &
+                                     peer_beta_inverse, peer_damping, PEER_LAMMPS, PEER_LIGGGHTS, TSTEP_NONE, &
+                                     TSTEP_LIGGGHTS, TSTEP_MERCURY, TSTEP_MFIX
+    use hertzdamp_check_common, only: peer_materials
+    use hertzdamp_check_deck, only: peer_read_deck, peer_parameter_problem
+    use hertzdamp_check_engines, only: check_engine, check_engine_of, peer_releases
+    use hertzdamp_check_report, only: peer_report
+    use hertzdamp_text_list, only: text_string, text_list
+    use hertzdamp_text_parse, only: text_words
+    use hertzdamp_text_format, only: itoa, fmt_short, ROUND_TRIP
     use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
     implicit none
     private
 
     integer, parameter :: wp = hertzdamp_rk
 
+    !> What another release of the engine gives for the same contact words.
+    type, public :: peer_release
+        integer :: release = 0                        !! its index in the engine's releases
+        character(len=:), allocatable :: refusal      !! why it refuses the words ('' when it reads them)
+        type(peer_deck) :: deck                       !! the contact with its formulas
+        type(peer_point) :: pt                        !! at the speed compared
+    end type peer_release
+
     public :: peer_single_report, peer_has_result, peer_row_reason, pct, negligible, subst, law_message, end_text
-    public :: numbered
+    public :: numbered, peer_other_releases, release_word
 
 contains
 
@@ -45,7 +55,7 @@ contains
         logical, intent(in) :: have_e               !! the target is --e (else the deck's restitution input)
         integer, intent(in) :: steps                !! --steps
         integer, intent(in) :: release              !! --release
-        type(peer_text), intent(in) :: tokens(:)    !! the deck's words (for the other releases)
+        type(text_string), intent(in) :: tokens(:)    !! the deck's words (for the other releases)
         type(peer_materials), intent(in) :: mat
         type(peer_report), intent(out) :: t
         integer :: i, nfail, first_fail
@@ -91,10 +101,11 @@ contains
         real(wp), intent(in) :: et
         logical, intent(in) :: have_e
         integer, intent(in) :: steps, release, nfail, first_fail
-        type(peer_text), intent(in) :: tokens(:)
+        type(text_string), intent(in) :: tokens(:)
         type(peer_materials), intent(in) :: mat
         type(peer_report), intent(inout) :: t
-        type(peer_text), allocatable :: warn(:), note(:)
+        type(text_string), allocatable :: warn(:), note(:)
+        type(check_engine) :: e
         character(len=:), allocatable :: s
         integer :: i
         allocate (warn(0), note(0))
@@ -132,8 +143,9 @@ contains
         do i = 1, size(deck%notes)
             note = [note, deck%notes(i)]
         end do
-        if (deck%peer == PEER_LAMMPS) call release_notes(tokens, mat, release, deck, pt, et, note)
-        if (nfail > 0) warn = [warn, peer_text(itoa(nfail) // ' of ' // itoa(size(pt)) // &
+        e = check_engine_of(deck%peer)
+        if (e%release_notes) call release_notes(tokens, mat, deck, pt, et, note)
+        if (nfail > 0) warn = [warn, text_string(itoa(nfail) // ' of ' // itoa(size(pt)) // &
                                ' speeds have no result; first: ' // peer_row_reason(deck, pt(first_fail)))]
         do i = 1, size(warn)
             call t%meta(numbered('warning', i, size(warn)), warn(i)%s)
@@ -147,13 +159,15 @@ contains
                     '; method: what gave e and t_c')
     end subroutine single_header
 
+    !> Why a speed has no result: its --velocity, alpha and the status in words.
     function peer_row_reason(deck, pt) result(s)
         type(peer_deck), intent(in) :: deck
         type(peer_point), intent(in) :: pt
         character(len=:), allocatable :: s
         s = '--velocity ' // fmt_short(pt%u, ROUND_TRIP) // ': '
         if (ieee_is_finite(pt%alpha)) s = s // 'alpha = ' // fmt_short(pt%alpha, 6)
-        if (pt%method == HD_METHOD_RK45) s = s // ' (rk45: beyond the fitted range)'
+        if (pt%method == HD_METHOD_RK45) s = s // ' (' // hertzdamp_method_name(HD_METHOD_RK45) // &
+                                             ': beyond the fitted range)'
         if (ieee_is_finite(pt%alpha)) s = s // ': '
         select case (pt%status)
         case (HD_OUT_OF_RANGE)
@@ -178,12 +192,12 @@ contains
         nfit = count(pt%method == HD_METHOD_FIT)
         nrk = count(pt%method == HD_METHOD_RK45)
         s = ''
-        if (nfit > 0) s = 'fit (the library''s fitted maps of the law and end) at ' // itoa(nfit) // ' of ' // &
-                          itoa(size(pt)) // ' speeds'
+        if (nfit > 0) s = hertzdamp_method_name(HD_METHOD_FIT) // ' (the library''s fitted maps of the law ' // &
+                          'and end) at ' // itoa(nfit) // ' of ' // itoa(size(pt)) // ' speeds'
         if (nrk > 0) then
             if (len(s) > 0) s = s // '; '
-            s = s // 'rk45 (the reference integrator) at ' // itoa(nrk) // ' of ' // itoa(size(pt)) // &
-                ' speeds, where alpha is beyond the fitted range'
+            s = s // hertzdamp_method_name(HD_METHOD_RK45) // ' (the reference integrator) at ' // itoa(nrk) // &
+                ' of ' // itoa(size(pt)) // ' speeds, where alpha is beyond the fitted range'
         end if
         if (nfit + nrk < size(pt)) then
             if (len(s) > 0) s = s // '; '
@@ -201,23 +215,18 @@ contains
         if (n > 1) s = word // ' ' // itoa(i)
     end function numbered
 
-    !> The --release word of a release of the engine.
+    !> The --release word of a release of the engine ('' if it has no such release).
     function release_word(peer, release) result(s)
-        integer, intent(in) :: peer, release
-        character(len=:), allocatable :: s, words
-        integer :: i, j, k
-        words = peer_releases(peer) // ' '
+        integer, intent(in) :: peer      !! PEER_*
+        integer, intent(in) :: release   !! the release's index among the engine's releases
+        character(len=:), allocatable :: s
+        type(text_list) :: words
+        call text_words(peer_releases(peer), words)
         s = ''
-        j = 1
-        k = 0
-        do i = 1, len(words)
-            if (words(i:i) /= ' ') cycle
-            k = k + 1
-            if (k == release) s = words(j:i - 1)
-            j = i + 1
-        end do
+        if (release >= 1 .and. release <= words%n) s = words%item(release)%s
     end function release_word
 
+    !> A status in words, naming the law and end where the build lacks them.
     function law_message(deck, status) result(s)
         type(peer_deck), intent(in) :: deck
         integer, intent(in) :: status
@@ -230,6 +239,7 @@ contains
         end if
     end function law_message
 
+    !> The contact end in words.
     function end_text(iend) result(s)
         integer, intent(in) :: iend
         character(len=:), allocatable :: s
@@ -258,18 +268,8 @@ contains
         type(peer_point), intent(in) :: pt(:)
         real(wp), intent(in) :: et
         character(len=:), allocatable :: s
-        integer :: i, ilo, ihi
-        ilo = 0
-        ihi = 0
-        do i = 1, size(pt)
-            if (.not. (pt(i)%status == HD_OK .or. pt(i)%status == HD_NO_REBOUND)) cycle
-            if (ilo == 0) then
-                ilo = i
-                ihi = i
-            end if
-            if (pt(i)%e < pt(ilo)%e) ilo = i
-            if (pt(i)%e > pt(ihi)%e) ihi = i
-        end do
+        integer :: ilo, ihi
+        call extremes(pt%e, pt%status == HD_OK .or. pt%status == HD_NO_REBOUND, ilo, ihi)
         if (abs(pt(ihi)%e - pt(ilo)%e) <= 1.0e-12_wp * pt(ihi)%e) then
             s = 'e = ' // fmt_short(pt(ilo)%e, 6) // ' at every speed (' // pct(pt(ilo)%e_error) // &
                 ' against the target ' // fmt_short(et, ROUND_TRIP) // ')'
@@ -325,17 +325,7 @@ contains
         character(len=:), allocatable :: s, problem
         real(wp) :: alpha, lo, hi, ealt
         integer :: i, ilo, ihi, st
-        ilo = 0
-        ihi = 0
-        do i = 1, size(pt)
-            if (pt(i)%status_corrected /= HD_OK) cycle
-            if (ilo == 0) then
-                ilo = i
-                ihi = i
-            end if
-            if (pt(i)%p_corrected < pt(ilo)%p_corrected) ilo = i
-            if (pt(i)%p_corrected > pt(ihi)%p_corrected) ihi = i
-        end do
+        call extremes(pt%p_corrected, pt%status_corrected == HD_OK, ilo, ihi)
         if (ilo == 0) then
             ! the reason at the first speed with a result (there is one)
             i = 1
@@ -386,6 +376,20 @@ contains
         end if
     end function corrected_text
 
+    !> The first index of the smallest and of the largest x where mask holds (0 and 0
+    !> where it holds nowhere).
+    pure subroutine extremes(x, mask, ilo, ihi)
+        real(wp), intent(in) :: x(:)
+        logical, intent(in) :: mask(:)
+        integer, intent(out) :: ilo, ihi
+        ilo = 0
+        ihi = 0
+        if (.not. any(mask)) return
+        ilo = minloc(x, 1, mask)
+        ihi = maxloc(x, 1, mask)
+    end subroutine extremes
+
+    !> A template with v in place of {} (appended when there is none).
     function subst(template, v) result(s)
         character(len=*), intent(in) :: template, v
         character(len=:), allocatable :: s
@@ -405,14 +409,9 @@ contains
         integer, intent(in) :: steps
         type(peer_report), intent(inout) :: t
         character(len=:), allocatable :: s
-        integer :: i, ib
+        integer :: ib, ihi
         real(wp) :: dt_mfix, x
-        ib = 0
-        do i = 1, size(pt)
-            if (pt(i)%status /= HD_OK) cycle
-            if (ib == 0) ib = i
-            if (pt(i)%tc < pt(ib)%tc) ib = i
-        end do
+        call extremes(pt%tc, pt%status == HD_OK, ib, ihi)
         if (ib == 0) then
             call t%meta('time step', 'no speed rebounds: no contact time')
             return
@@ -494,7 +493,7 @@ contains
     subroutine collect_warnings(deck, pt, warn)
         type(peer_deck), intent(in) :: deck
         type(peer_point), intent(in) :: pt(:)
-        type(peer_text), allocatable, intent(inout) :: warn(:)
+        type(text_string), allocatable, intent(inout) :: warn(:)
         integer :: i, nno, iworst
         real(wp) :: umax, frac, worst, ac
         character(len=:), allocatable :: s
@@ -522,7 +521,7 @@ contains
                 ac = hertzdamp_law_alpha_c(deck%law)
                 s = s // ' (alpha >= alpha_c = ' // fmt_short(ac, 6) // ')'
             end if
-            warn = [warn, peer_text(s)]
+            warn = [warn, text_string(s)]
         end if
         if (iworst > 0) then
             s = 'the total force turns attractive before the particles separate: for the last ' // &
@@ -533,52 +532,77 @@ contains
             case (PEER_LIGGGHTS); s = s // ' (limitForce on clips it: the force end)'
             case default
             end select
-            warn = [warn, peer_text(s)]
+            warn = [warn, text_string(s)]
         end if
     end subroutine collect_warnings
 
-    !> LAMMPS: what the other releases give for the same deck, where it differs.
-    subroutine release_notes(tokens, mat, release, deck, pt, et, note)
-        type(peer_text), intent(in) :: tokens(:)
+    !> What the engine's other releases give for the same contact words at speed u, where
+    !> it differs from `deck`'s result `pt` (or where a release refuses the words): one
+    !> entry per such release, oldest first.
+    function peer_other_releases(tokens, mat, deck, pt, et) result(rs)
+        type(text_string), intent(in) :: tokens(:)   !! the contact's words
+        type(peer_materials), intent(in) :: mat      !! its bodies
+        type(peer_deck), intent(in) :: deck          !! the contact with the chosen release
+        type(peer_point), intent(in) :: pt           !! its result at the speed compared (one with a result)
+        real(wp), intent(in) :: et                   !! the target
+        type(peer_release), allocatable :: rs(:)
+        type(peer_release) :: r
+        type(text_list) :: words
+        integer :: k, st
+        allocate (rs(0))
+        call text_words(peer_releases(deck%peer), words)
+        do k = 1, words%n
+            if (k == deck%release) cycle
+            r%release = k
+            call peer_read_deck(deck%peer, tokens, mat, k, r%deck, st, r%refusal)
+            if (st == HD_OK) then
+                if (r%deck%row == deck%row .and. r%deck%k == deck%k) cycle
+                r%pt = peer_evaluate(r%deck, pt%u, et)
+                if (r%pt%status /= HD_OK .and. r%pt%status /= HD_NO_REBOUND) cycle
+                if (r%pt%status == pt%status) then
+                    if (r%pt%status == HD_NO_REBOUND) cycle
+                    if (abs(r%pt%e - pt%e) <= 1.0e-12_wp .and. abs(r%pt%tc - pt%tc) <= 1.0e-12_wp * pt%tc) cycle
+                end if
+            end if
+            rs = [rs, r]
+        end do
+    end function peer_other_releases
+
+    !> What the other releases give for the same deck, where it differs (the engines
+    !> whose table row asks for it: LAMMPS).
+    subroutine release_notes(tokens, mat, deck, pt, et, note)
+        type(text_string), intent(in) :: tokens(:)
         type(peer_materials), intent(in) :: mat
-        integer, intent(in) :: release
         type(peer_deck), intent(in) :: deck
         type(peer_point), intent(in) :: pt(:)
         real(wp), intent(in) :: et
-        type(peer_text), allocatable, intent(inout) :: note(:)
-        type(peer_deck) :: other
-        type(peer_point) :: q
-        integer :: r, st, i
+        type(text_string), allocatable, intent(inout) :: note(:)
+        type(peer_release), allocatable :: rs(:)
         character(len=:), allocatable :: msg
+        integer :: i, k
         ! at the first speed with a result (there is one)
         i = 1
         do while (.not. peer_has_result(pt(i)%status))
             i = i + 1
         end do
-        do r = LAMMPS_2021, LAMMPS_CURRENT
-            if (r == release) cycle
-            call peer_read_deck(PEER_LAMMPS, tokens, mat, r, other, st, msg)
-            if (st /= HD_OK) then
-                note = [note, peer_text(other%version // ': ' // msg)]
-                cycle
-            end if
-            if (other%row == deck%row .and. other%k == deck%k) cycle
-            q = peer_evaluate(other, pt(i)%u, et)
-            if (q%status /= HD_OK .and. q%status /= HD_NO_REBOUND) cycle
-            if (q%status == pt(i)%status) then
-                if (q%status == HD_NO_REBOUND) cycle
-                if (abs(q%e - pt(i)%e) <= 1.0e-12_wp .and. abs(q%tc - pt(i)%tc) <= 1.0e-12_wp * pt(i)%tc) cycle
-            end if
-            if (q%status == HD_NO_REBOUND) then
-                msg = ' gives no rebound'
-            else
-                msg = ' gives e = ' // fmt_short(q%e, 6) // ', t_c = ' // fmt_short(q%tc, 6) // ' s'
-            end if
-            note = [note, peer_text(other%version // msg // ' at u = ' // fmt_short(pt(i)%u, 6) // &
-                                    ' m/s for this deck (' // peer_spec_field(other%row, 'alpha_expr') // &
-                                    '; ' // other%k_text // ')')]
+        rs = peer_other_releases(tokens, mat, deck, pt(i), et)
+        do k = 1, size(rs)
+            associate (other => rs(k)%deck, q => rs(k)%pt)
+                if (len(rs(k)%refusal) > 0) then
+                    note = [note, text_string(other%version // ': ' // rs(k)%refusal)]
+                    cycle
+                end if
+                if (q%status == HD_NO_REBOUND) then
+                    msg = ' gives no rebound'
+                else
+                    msg = ' gives e = ' // fmt_short(q%e, 6) // ', t_c = ' // fmt_short(q%tc, 6) // ' s'
+                end if
+                note = [note, text_string(other%version // msg // ' at u = ' // fmt_short(pt(i)%u, 6) // &
+                                          ' m/s for this deck (' // peer_spec_field(other%row, 'alpha_expr') // &
+                                          '; ' // other%k_text // ')')]
+            end associate
         end do
     end subroutine release_notes
 
 
-end module hertzdamp_peers_single
+end module hertzdamp_check_single

@@ -2,12 +2,12 @@
 !> the C++ calls (doc/peers.md section 6): `SetYoungModulus=E[,E2] SetPoissonRatio=nu[,nu2]
 !> SetRestitution=e[,e2]`, or `UseMaterialProperties=false SetKn= SetGn=`;
 !> `SetCollisionSystemType=BULLET|MULTICORE`; `wallMass=` with a wall.
-module hertzdamp_peers_chrono
+module hertzdamp_check_chrono
     use hertzdamp, only: hertzdamp_rk
-    use hertzdamp_peers, only: peer_deck, peer_spec_row
-    use hertzdamp_peers_common, only: peer_materials, kv_list, bodies, hertz_k, check_modulus, check_poisson, &
+    use hertzdamp_check_model, only: peer_deck, peer_spec_row
+    use hertzdamp_check_common, only: peer_materials, kv_list, bodies, hertz_k, check_modulus, check_poisson, &
                                       pair_values, number, take, has, add_note
-    use hertzdamp_apps_text, only: fmt_short, ROUND_TRIP
+    use hertzdamp_text_format, only: fmt_short, ROUND_TRIP
     use, intrinsic :: iso_fortran_env, only: real32
     implicit none
     private
@@ -162,4 +162,4 @@ contains
                          ') SetGn(' // fmt_short(gn(1), ROUND_TRIP) // ')'
     end subroutine chrono_kn_gn
 
-end module hertzdamp_peers_chrono
+end module hertzdamp_check_chrono

@@ -1,40 +1,35 @@
 !> `hertzdamp check ENGINE FILE...`: a whole deck, evaluated contact by contact
 !> (doc/peers.md section 11).  The engine's deck reader gives the contacts (every type
 !> pair and every type against every wall), the time step and the integrator; each
-!> contact is resolved by the engine's contact reader (hertzdamp_peers_deck) and
+!> contact is resolved by the engine's contact reader (hertzdamp_check_deck) and
 !> evaluated at every impact speed:
 !>
 !> - e_target: the restitution coefficient the deck asks for (its restitution input; for
 !>   Yade's en with vn, the Mueller-Poeschel e at each speed), or --e; empty where neither
 !>   says;
-!> - e_model, t_c: the continuous model with the deck's k and d (hertzdamp_peers);
+!> - e_model, t_c: the continuous model with the deck's k and d (hertzdamp_check_model);
 !> - e_host, e_spread: the mean and the standard deviation over the onset phase of the
 !>   restitution coefficient the engine's own integrator gives at the deck's time step
 !>   (hertzdamp_host: h = dt/t*); empty, with a note, where the integrator is not modeled;
 !> - steps_per_contact = t_c/dt and the time-step verdict (dt_verdict);
 !> - corrected: the engine's parameter that makes e_host (e_model where the integrator
 !>   is not modeled) equal the target.
-module hertzdamp_peers_check
+module hertzdamp_check_whole
     use hertzdamp, only: hertzdamp_rk, hertzdamp_message, hertzdamp_law_name, hertzdamp_end_name, hertzdamp_law_q, &
-                         HD_OK, HD_NO_REBOUND, HD_BAD_ARGUMENT, HD_DAMPING_TSUJI
-    use hertzdamp_peers, only: peer_deck, peer_point, peer_text, peer_evaluate, peer_parameter, peer_time_estimate, &
-                               peer_spec_field, peer_name, peer_pade_mp, peer_pade_mp_inverse, TSTEP_MFIX, &
-                               COEF_D_YADE_VN, &
-                               PEER_LAMMPS, PEER_LIGGGHTS, PEER_YADE, PEER_MFIX
-    use hertzdamp_peers_deck, only: peer_read_deck, peer_releases, peer_parameter_problem
-    use hertzdamp_peers_scene, only: peer_scene, peer_contact
-    use hertzdamp_peers_lammps_deck, only: read_lammps_deck
-    use hertzdamp_peers_liggghts_deck, only: read_liggghts_deck
-    use hertzdamp_peers_mfix_deck, only: read_mfix_deck
-    use hertzdamp_peers_yade_deck, only: read_yade_deck
-    use hertzdamp_peers_report, only: peer_report
-    use hertzdamp_peers_text, only: peer_list, peer_map
-    use hertzdamp_peers_single, only: peer_has_result, peer_row_reason, numbered
-    use hertzdamp_host, only: hertzdamp_host_mean, hertzdamp_host_alpha_for_e, hertzdamp_host_stats, &
-                              hertzdamp_host_name, HD_HOST_NONE
-    use hertzdamp_apps_text, only: itoa, fmt_short, ROUND_TRIP, lower
+                         HD_OK, HD_NO_REBOUND, HD_BAD_ARGUMENT, HD_DAMPING_TSUJI, hertzdamp_host_mean, &
+                         hertzdamp_host_alpha_for_e, hertzdamp_host_stats, hertzdamp_host_name, HD_HOST_NONE
+    use hertzdamp_check_model, only: peer_deck, peer_point, peer_evaluate, peer_parameter, peer_time_estimate, &
+                                     peer_spec_field, peer_pade_mp, peer_pade_mp_inverse, TSTEP_MFIX, COEF_D_YADE_VN
+    use hertzdamp_check_deck, only: peer_read_deck, peer_parameter_problem
+    use hertzdamp_check_engines, only: check_engine, check_engine_of
+    use hertzdamp_check_scene, only: peer_scene, peer_contact
+    use hertzdamp_check_report, only: peer_report
+    use hertzdamp_check_single, only: peer_has_result, peer_row_reason, numbered, peer_release, peer_other_releases, &
+                                      release_word
+    use hertzdamp_text_list, only: text_string, text_list
+    use hertzdamp_text_map, only: text_map
+    use hertzdamp_text_format, only: itoa, fmt_short, ROUND_TRIP, lower
     use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
-    use, intrinsic :: iso_fortran_env, only: int64
     implicit none
     private
 
@@ -96,19 +91,13 @@ contains
     !> Read an engine's deck files into a scene (msg: a file that cannot be read, or an
     !> engine whose decks are programs: MercuryDPM, Chrono).
     subroutine peer_read_scene(peer, paths, scene, msg)
-        integer, intent(in) :: peer
-        type(peer_text), intent(in) :: paths(:)
+        integer, intent(in) :: peer                      !! PEER_*
+        type(text_string), intent(in) :: paths(:)        !! the deck's files, in order
         type(peer_scene), intent(out) :: scene
         character(len=:), allocatable, intent(out) :: msg
-        select case (peer)
-        case (PEER_LAMMPS); call read_lammps_deck(paths, scene, msg)
-        case (PEER_LIGGGHTS); call read_liggghts_deck(paths, scene, msg)
-        case (PEER_MFIX); call read_mfix_deck(paths, scene, msg)
-        case (PEER_YADE); call read_yade_deck(paths, scene, msg)
-        case default
-            msg = peer_name(peer) // ' decks are C++ or Python programs: give the species or material calls ' // &
-                  'as key=value words (hertzdamp check --help)'
-        end select
+        type(check_engine) :: e
+        e = check_engine_of(peer)
+        call e%read_deck(paths, scene, msg)
     end subroutine peer_read_scene
 
     !> Resolve and evaluate every contact of the scene at the speeds: the report (columns
@@ -122,7 +111,7 @@ contains
         character(len=:), allocatable, intent(out) :: msg
         type(peer_deck), allocatable :: decks(:)
         logical, allocatable :: ok(:)
-        type(peer_list) :: refused, host_notes
+        type(text_list) :: refused, host_notes
         integer :: i, nok
         msg = ''
         allocate (decks(scene%ncontacts), ok(scene%ncontacts))
@@ -209,9 +198,11 @@ contains
         logical, intent(in) :: ok(:)
         type(peer_report), intent(inout) :: rep
         character(len=:), allocatable :: s
-        integer :: i, k
-        s = peer_name(scene%peer, title=.true.)
-        if (len(peer_releases(scene%peer)) > 0) then
+        type(check_engine) :: e
+        integer :: i
+        e = check_engine_of(scene%peer)
+        s = e%title
+        if (len(e%releases) > 0) then
             do i = 1, size(decks)
                 if (ok(i)) exit
             end do
@@ -234,10 +225,8 @@ contains
         s = scene%host_text
         if (scene%host /= HD_HOST_NONE) s = s // '; modeled as the host scheme ' // hertzdamp_host_name(scene%host)
         call rep%meta('integrator', s)
-        k = 0
         do i = 1, scene%ncontacts
             if (.not. ok(i)) cycle
-            k = k + 1
             call rep%meta('contact ' // scene%contacts(i)%pair, contact_text(scene%contacts(i), decks(i)))
         end do
         do i = 1, scene%skipped%n
@@ -246,7 +235,7 @@ contains
         do i = 1, scene%notes%n
             call rep%meta(numbered('not interpreted', i, scene%notes%n), scene%notes%item(i)%s)
         end do
-        call contact_notes(scene, decks, ok, rep)
+        call contact_notes(scene, decks, ok, opt, rep)
         if (.not. opt%have_e) call rep%meta('target', 'e_target: the restitution coefficient the deck gives ' // &
                                             '(empty where it gives a damping coefficient; --e sets one)')
         if (opt%have_e) call rep%meta('target', 'e_target = ' // fmt_short(opt%e_user, ROUND_TRIP) // ' (--e)')
@@ -258,15 +247,20 @@ contains
     end subroutine header
 
     !> The contacts' own notes (version and geometry traps), each once; the note on
-    !> LAMMPS's half-step velocity is left out: e_host models it.
-    subroutine contact_notes(scene, decks, ok, rep)
+    !> LAMMPS's half-step velocity is left out: e_host models it.  Then, for the engines
+    !> whose table row asks for it (LAMMPS), what the other releases give, once for the
+    !> contacts they give the same.
+    subroutine contact_notes(scene, decks, ok, opt, rep)
         type(peer_scene), intent(in) :: scene
         type(peer_deck), intent(in) :: decks(:)
         logical, intent(in) :: ok(:)
+        type(peer_check_options), intent(in) :: opt
         type(peer_report), intent(inout) :: rep
-        type(peer_map) :: seen
-        type(peer_list) :: notes
-        integer :: i, j
+        type(text_map) :: seen, seen_other
+        type(text_list) :: notes, other, texts, pairs
+        type(check_engine) :: e
+        integer :: i, j, k
+        e = check_engine_of(scene%peer)
         do i = 1, scene%ncontacts
             if (.not. ok(i)) cycle
             do j = 1, size(decks(i)%notes)
@@ -276,10 +270,86 @@ contains
                 call seen%put(decks(i)%notes(j)%s, notes%n)
             end do
         end do
+        do i = 1, scene%ncontacts
+            if (.not. (ok(i) .and. e%release_notes)) cycle
+            call release_texts(scene, scene%contacts(i), decks(i), opt, texts)
+            do j = 1, texts%n
+                k = seen_other%get(texts%item(j)%s)
+                if (k == 0) then
+                    call other%push(texts%item(j)%s)
+                    call pairs%push(scene%contacts(i)%pair)
+                    call seen_other%put(texts%item(j)%s, other%n)
+                else
+                    pairs%item(k)%s = pairs%item(k)%s // ', ' // scene%contacts(i)%pair
+                end if
+            end do
+        end do
+        do k = 1, other%n
+            call notes%push(trim(merge('contacts', 'contact ', index(pairs%item(k)%s, ',') > 0)) // ' ' // &
+                            pairs%item(k)%s // ': ' // other%item(k)%s)
+        end do
         do i = 1, notes%n
             call rep%meta(numbered('note', i, notes%n), notes%item(i)%s)
         end do
     end subroutine contact_notes
+
+    !> What the engine's other releases give for a contact at the first speed with a
+    !> result, where it differs: e_model, e_host (where the integrator is modeled) and t_c.
+    subroutine release_texts(scene, c, deck, opt, texts)
+        type(peer_scene), intent(in) :: scene
+        type(peer_contact), intent(in) :: c
+        type(peer_deck), intent(in) :: deck
+        type(peer_check_options), intent(in) :: opt
+        type(text_list), intent(out) :: texts
+        type(peer_release), allocatable :: rs(:)
+        type(peer_point) :: pt
+        type(check_row) :: r
+        character(len=:), allocatable :: s
+        real(wp) :: et
+        logical :: have_et
+        integer :: i, k
+        do i = 1, size(opt%speeds)
+            call row_target(deck, opt, opt%speeds(i), et, have_et)
+            pt = peer_evaluate(deck, opt%speeds(i), et)
+            if (peer_has_result(pt%status)) exit
+        end do
+        if (i > size(opt%speeds)) return
+        rs = peer_other_releases(c%words, c%mat, deck, pt, et)
+        do k = 1, size(rs)
+            s = rs(k)%deck%version // ' (--release ' // release_word(deck%peer, rs(k)%release) // ')'
+            if (len(rs(k)%refusal) > 0) then
+                call texts%push(s // ': ' // rs(k)%refusal)
+                cycle
+            end if
+            call evaluate_row(scene, rs(k)%deck, rs(k)%pt, et, have_et, r)
+            if (rs(k)%pt%status == HD_NO_REBOUND) then
+                s = s // ' gives no rebound'
+            else
+                s = s // ' gives e_model = ' // fmt_short(rs(k)%pt%e, 6)
+                if (r%have_host) s = s // ', e_host = ' // fmt_short(r%e_host, 6)
+                s = s // ', t_c = ' // fmt_short(rs(k)%pt%tc, 6)
+            end if
+            call texts%push(s // ' at u = ' // fmt_short(pt%u, 6) // ' (' // &
+                            peer_spec_field(rs(k)%deck%row, 'alpha_expr') // '; ' // rs(k)%deck%k_text // ')')
+        end do
+    end subroutine release_texts
+
+    !> The target at impact speed u: --e, the deck's restitution input (Yade's en with vn:
+    !> the Mueller-Poeschel e at u, Pade(V*(en) (u/vn)^(1/10))), or 0.5 where neither gives
+    !> one (have false).
+    subroutine row_target(deck, opt, u, et, have)
+        type(peer_deck), intent(in) :: deck
+        type(peer_check_options), intent(in) :: opt
+        real(wp), intent(in) :: u
+        real(wp), intent(out) :: et
+        logical, intent(out) :: have
+        have = opt%have_e .or. deck%e_deck > 0.0_wp
+        et = 0.5_wp
+        if (deck%e_deck > 0.0_wp) et = deck%e_deck
+        if (opt%have_e) et = opt%e_user
+        if (deck%coef == COEF_D_YADE_VN .and. .not. opt%have_e) et = peer_pade_mp(peer_pade_mp_inverse(deck%p) * &
+                                                                                  (u / deck%vn)**0.1_wp)
+    end subroutine row_target
 
     function contact_text(c, deck) result(s)
         type(peer_contact), intent(in) :: c
@@ -298,8 +368,8 @@ contains
         type(peer_deck), intent(in) :: deck
         type(peer_check_options), intent(in) :: opt
         type(peer_report), intent(inout) :: rep
-        type(peer_list), intent(inout) :: refused     !! corrected values the engine refuses, why
-        type(peer_list), intent(inout) :: host_notes  !! why e_host is missing where the integrator is modeled
+        type(text_list), intent(inout) :: refused     !! corrected values the engine refuses, why
+        type(text_list), intent(inout) :: host_notes  !! why e_host is missing where the integrator is modeled
         type(peer_point) :: pt
         type(check_row) :: r
         real(wp) :: et
@@ -307,14 +377,8 @@ contains
         character(len=:), allocatable :: problem
         integer :: i
         problem = ''
-        have_et = opt%have_e .or. deck%e_deck > 0.0_wp
-        et = 0.5_wp
-        if (deck%e_deck > 0.0_wp) et = deck%e_deck
-        if (opt%have_e) et = opt%e_user
         do i = 1, size(opt%speeds)
-            ! Yade's en with vn asks for the Mueller-Poeschel e at each speed: Pade(V*(en) (u/vn)^(1/10))
-            if (deck%coef == COEF_D_YADE_VN .and. .not. opt%have_e) et = &
-                peer_pade_mp(peer_pade_mp_inverse(deck%p) * (opt%speeds(i) / deck%vn)**0.1_wp)
+            call row_target(deck, opt, opt%speeds(i), et, have_et)
             pt = peer_evaluate(deck, opt%speeds(i), et)
             have = peer_has_result(pt%status)
             call rep%str(c%pair)
@@ -438,4 +502,4 @@ contains
         if (st /= HD_OK) r%why = 'the engine''s formula cannot produce alpha = ' // fmt_short(alpha, 6)
     end subroutine host_corrected
 
-end module hertzdamp_peers_check
+end module hertzdamp_check_whole

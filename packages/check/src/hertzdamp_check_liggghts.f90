@@ -2,12 +2,12 @@
 !> of its `fix property/global` values of a type pair (doc/peers.md section 2):
 !> `model=hertz|hertz/stiffness limitForce=on|off youngsModulus=Y[,Y2] poissonsRatio=nu[,nu2]
 !> coefficientRestitution=e` or `kn= gamman=`; with a wall the second values are the wall's.
-module hertzdamp_peers_liggghts
+module hertzdamp_check_liggghts
     use hertzdamp, only: hertzdamp_rk
-    use hertzdamp_peers, only: peer_deck, peer_spec_row, TSTEP_LIGGGHTS
-    use hertzdamp_peers_common, only: peer_materials, kv_list, bodies, end_word, effective_modulus, hertz_k, &
+    use hertzdamp_check_model, only: peer_deck, peer_spec_row, TSTEP_LIGGGHTS
+    use hertzdamp_check_common, only: peer_materials, kv_list, bodies, end_word, effective_modulus, hertz_k, &
                                       check_modulus, check_poisson, pair_values, required, on_off, take, has
-    use hertzdamp_apps_text, only: fmt_short, ROUND_TRIP
+    use hertzdamp_text_format, only: fmt_short, ROUND_TRIP
     implicit none
     private
 
@@ -100,4 +100,4 @@ contains
         if (deck%wall) deck%deck_text = deck%deck_text // ' (fix wall/gran, flat wall: the second values are the wall''s)'
     end subroutine read_liggghts
 
-end module hertzdamp_peers_liggghts
+end module hertzdamp_check_liggghts

@@ -3,10 +3,10 @@
 !> Six engines (LAMMPS, LIGGGHTS, MercuryDPM, Yade, MFiX, Chrono) build a damped Hertz
 !> contact  m zeta'' = -k zeta^(3/2) - d zeta^q zeta'  from their own input keywords
 !> (doc/peers.md; one row per engine, version, option and contact end in
-!> data/peers/peers_spec.csv, embedded as hertzdamp_peers_data).  This module holds,
+!> data/peers/peers_spec.csv, embedded as hertzdamp_check_data).  This module holds,
 !> for each row, the engine's formula for its damping parameter (`peer_damping`, one
 !> COEF_* case per formula, each citing its source), its inverse (`peer_parameter`),
-!> and the evaluation of a resolved deck (`peer_deck`, filled by hertzdamp_peers_deck)
+!> and the evaluation of a resolved deck (`peer_deck`, filled by hertzdamp_check_deck)
 !> at an impact speed: alpha, e, T_c, the time at which the total force turns
 !> attractive, the elastic Hertz time, the engine's own contact-time estimate, and the
 !> value of the engine's parameter that gives a target e (`peer_evaluate`).
@@ -20,16 +20,17 @@
 !> fitted range) and alpha(e) (`peer_law_inverse`).  A quantity that double precision
 !> cannot hold is never returned as inf: the point gets HD_OUT_OF_RANGE (its own
 !> results) or NaN with a status (the engine's estimate, the corrected parameter).
-module hertzdamp_peers
+module hertzdamp_check_model
     use hertzdamp, only: hertzdamp_rk, hertzdamp_collision, hertzdamp_forward_alpha, hertzdamp_invert_alpha, &
                          hertzdamp_tau_c0, hertzdamp_law_q, hertzdamp_law_has_alpha_c, hertzdamp_law_alpha_c, &
                          hertzdamp_pi, &
                          HD_DAMPING_LINEAR, HD_DAMPING_TSUJI, HD_DAMPING_KUWABARA_KONO, HD_METHOD_FIT, HD_METHOD_RK45, &
                          HD_OK, HD_NO_REBOUND, HD_BAD_ARGUMENT, HD_BAD_ALPHA, &
-                         HD_OUT_OF_RANGE, HD_OUTSIDE_VALIDITY, HD_END_OVERLAP, HD_END_FORCE
-    use hertzdamp_fit_data, only: fit_law_e_min_forward
-    use hertzdamp_peers_data, only: peer_spec_field, peer_spec_row, peer_spec_count
-    use hertzdamp_apps_text, only: fmt_short, ROUND_TRIP
+                         HD_OUT_OF_RANGE, HD_OUTSIDE_VALIDITY, HD_END_OVERLAP, HD_END_FORCE, hertzdamp_end_name, &
+                         hertzdamp_fit_law_e_min_forward
+    use hertzdamp_check_data, only: peer_spec_field, peer_spec_row, peer_spec_count
+    use hertzdamp_text_list, only: text_string
+    use hertzdamp_text_format, only: fmt_short, ROUND_TRIP
     use, intrinsic :: ieee_arithmetic, only: ieee_value, ieee_quiet_nan, ieee_positive_inf, ieee_is_finite
     use, intrinsic :: iso_fortran_env, only: real32
     implicit none
@@ -38,12 +39,9 @@ module hertzdamp_peers
     integer, parameter :: wp = hertzdamp_rk
     real(wp), parameter :: pi = hertzdamp_pi
 
-    !> The engines, in the order of `peer_names`.
+    !> The engines (their names, keys and readers: hertzdamp_check_engines).
     integer, parameter, public :: PEER_LAMMPS = 1, PEER_LIGGGHTS = 2, PEER_MERCURYDPM = 3, PEER_YADE = 4, &
                                   PEER_MFIX = 5, PEER_CHRONO = 6
-    character(len=*), parameter, public :: peer_names = 'lammps liggghts mercurydpm yade mfix chrono'
-    !> Their names as the engines write them, in the same order.
-    character(len=*), parameter :: peer_titles = 'LAMMPS LIGGGHTS MercuryDPM Yade MFiX Chrono'
 
     !> How the deck's damping parameter p gives the damping of the model.  For the
     !> q = 1/4 kinds the result is gamma (d = gamma sqrt(m k), so alpha = gamma); for the
@@ -72,15 +70,11 @@ module hertzdamp_peers
     integer, parameter, public :: TSTEP_MERCURY = 2   !! getCollisionTime: 2.214 (rho^2/(E^2 v))^(1/5) D
     integer, parameter, public :: TSTEP_MFIX = 3      !! TCOLL = pi / sqrt(k/m - (eta/m)^2/4)
 
-    !> A line of text.
-    type, public :: peer_text
-        character(len=:), allocatable :: s
-    end type peer_text
-
-    !> A peer's contact resolved to the model: filled by hertzdamp_peers_deck.
+    !> A peer's contact resolved to the model: filled by hertzdamp_check_deck.
     type, public :: peer_deck
         integer :: peer = 0                 !! PEER_*
-        integer :: row = 0                  !! row of the specification (hertzdamp_peers_data)
+        integer :: release = 0              !! the engine's release whose formulas apply (LAMMPS_*, YADE_*)
+        integer :: row = 0                  !! row of the specification (hertzdamp_check_data)
         integer :: law = HD_DAMPING_LINEAR    !! PEER_LAW_*, from the row's q
         integer :: iend = HD_END_OVERLAP    !! from the row's end
         integer :: coef = 0                 !! COEF_*
@@ -105,7 +99,7 @@ module hertzdamp_peers
         character(len=:), allocatable :: version  !! release label (LAMMPS) or ''
         character(len=:), allocatable :: deck_text !! the deck as understood, one line
         character(len=:), allocatable :: k_text   !! how the engine builds k
-        type(peer_text), allocatable :: notes(:)  !! remarks on the deck (version, geometry, ...)
+        type(text_string), allocatable :: notes(:)  !! remarks on the deck (version, geometry, ...)
     end type peer_deck
 
     !> The deck at one impact speed.  Quantities that do not apply, or that double
@@ -135,7 +129,7 @@ module hertzdamp_peers
     public :: peer_beta, peer_beta_inverse, peer_p6, peer_p6_inverse, peer_thornton, peer_thornton_inverse
     public :: peer_pade_mp, peer_pade_mp_inverse
     public :: peer_damping, peer_parameter, peer_alpha, peer_evaluate, peer_time_estimate
-    public :: peer_row_law, peer_row_end, peer_row_coef, peer_nan, peer_float, peer_name
+    public :: peer_row_law, peer_row_end, peer_row_coef, peer_nan, peer_float
     public :: peer_spec_field, peer_spec_row, peer_spec_count
 
 contains
@@ -156,11 +150,10 @@ contains
     !> The contact end of a specification row, from its end column; -1 if unknown.
     pure integer function peer_row_end(row) result(iend)
         integer, intent(in) :: row   !! row of the specification
-        select case (peer_spec_field(row, 'end'))
-        case ('overlap'); iend = HD_END_OVERLAP
-        case ('force'); iend = HD_END_FORCE
-        case default; iend = -1
-        end select
+        do iend = HD_END_OVERLAP, HD_END_FORCE
+            if (peer_spec_field(row, 'end') == hertzdamp_end_name(iend)) return
+        end do
+        iend = -1
     end function peer_row_end
 
     !> The formula (COEF_*) of a specification row: how the engine's damping parameter
@@ -225,7 +218,7 @@ contains
         integer :: used
         used = HD_METHOD_FIT
         r = hertzdamp_forward_alpha(alpha, iend, HD_METHOD_FIT, law=law)
-        if (r%status == HD_OUTSIDE_VALIDITY .or. (r%status == HD_OK .and. r%e < fit_law_e_min_forward)) then
+        if (r%status == HD_OUTSIDE_VALIDITY .or. (r%status == HD_OK .and. r%e < hertzdamp_fit_law_e_min_forward)) then
             used = HD_METHOD_RK45
             r = hertzdamp_forward_alpha(alpha, iend, HD_METHOD_RK45, law=law)
         end if
@@ -249,31 +242,6 @@ contains
         real(wp) :: tau
         call hertzdamp_invert_alpha(e, iend, alpha, tau, status, method=HD_METHOD_FIT, law=law)
     end subroutine peer_law_inverse
-
-    !> Name of an engine: as the command line takes it ('lammps', ...) or, with
-    !> `title`, as the engine writes it ('LAMMPS', 'MercuryDPM', ...); '?' if unknown.
-    pure function peer_name(peer, title) result(name)
-        integer, intent(in) :: peer            !! PEER_*
-        logical, intent(in), optional :: title !! the engine's own spelling
-        character(len=:), allocatable :: name
-        character(len=:), allocatable :: list
-        integer :: i, j, start
-        list = peer_names
-        if (present(title)) then
-            if (title) list = peer_titles
-        end if
-        name = '?'
-        start = 1
-        j = 0
-        do i = 1, len(list) + 1
-            if (i <= len(list)) then
-                if (list(i:i) /= ' ') cycle
-            end if
-            j = j + 1
-            if (j == peer) name = list(start:i - 1)
-            start = i + 1
-        end do
-    end function peer_name
 
     ! ------------------------------------------------------------------ formulas of the engines
 
@@ -761,4 +729,4 @@ contains
         if (st /= HD_OK) pt%p_corrected = peer_nan()
     end subroutine corrected
 
-end module hertzdamp_peers
+end module hertzdamp_check_model

@@ -7,12 +7,13 @@
 !> - the classic style `gran/hertz/history Kn Kt gamma_n gamma_t xmu dampflag
 !>   [limit_damping]` (the `pair_style` arguments), and its `fix wall/gran hertz/history`.
 !> Errors name the keyword; nothing prints.
-module hertzdamp_peers_lammps
+module hertzdamp_check_lammps
     use hertzdamp, only: hertzdamp_rk
-    use hertzdamp_peers, only: peer_deck, peer_text, peer_spec_row
-    use hertzdamp_peers_common, only: peer_materials, bodies, end_word, hertz_k, check_modulus, check_poisson, &
-                                      number, add_note, join
-    use hertzdamp_apps_text, only: itoa, fmt_short, ROUND_TRIP
+    use hertzdamp_check_model, only: peer_deck, peer_spec_row
+    use hertzdamp_check_common, only: peer_materials, bodies, end_word, hertz_k, check_modulus, check_poisson, &
+                                      number, add_note
+    use hertzdamp_text_list, only: text_string, text_join
+    use hertzdamp_text_format, only: itoa, fmt_short, ROUND_TRIP
     implicit none
     private
 
@@ -26,6 +27,10 @@ module hertzdamp_peers_lammps
     !> The keywords of a granular pair_coeff (for messages).
     character(len=*), parameter, public :: lammps_keys = &
         'hertz hertz/material damping tangential rolling twisting heat cutoff limit_damping'
+    !> The words a contact in LAMMPS's words starts with: the commands and styles `head`
+    !> reads, and the keywords of the granular model and of a wall fix.
+    character(len=*), parameter, public :: lammps_starts = 'pair_coeff pair_style fix gran/hertz/history ' // &
+        'gran/hooke/history gran/hooke hooke dmt jkr mdr xplane yplane zplane region zcylinder ' // lammps_keys
 
     !> A contact's words as read, before the release picks the formulas.
     type :: lammps_args
@@ -44,12 +49,12 @@ module hertzdamp_peers_lammps
 
 contains
 
-    !> Read a LAMMPS contact (see the module).  On failure msg names the keyword.
-    subroutine read_lammps(tok, mat, release, deck, msg)
-        type(peer_text), intent(in) :: tok(:)           !! the contact's words
+    !> Read a LAMMPS contact (see the module) with the formulas of the release deck%release.
+    !> On failure msg names the keyword.
+    subroutine read_lammps(tok, mat, deck, msg)
+        type(text_string), intent(in) :: tok(:)           !! the contact's words
         type(peer_materials), intent(in) :: mat         !! radii and densities (a wall: mat%wall)
-        integer, intent(in) :: release                  !! LAMMPS_*
-        type(peer_deck), intent(inout) :: deck
+        type(peer_deck), intent(inout) :: deck          !! deck%release: LAMMPS_*
         character(len=:), allocatable, intent(inout) :: msg
         type(lammps_args) :: a
         integer :: i
@@ -78,13 +83,13 @@ contains
         end if
         if (len(msg) > 0) return
         if (a%is_fix) deck%wall = .true.
-        call resolve(a, mat, release, deck, msg)
+        call resolve(a, mat, deck%release, deck, msg)
     end subroutine read_lammps
 
     !> The leading words: `pair_coeff I J`, `fix ID group wall/gran[/region] STYLE`, or
     !> the classic `gran/hertz/history` settings; i = the first word after them.
     subroutine head(tok, a, i, msg)
-        type(peer_text), intent(in) :: tok(:)
+        type(text_string), intent(in) :: tok(:)
         type(lammps_args), intent(inout) :: a
         integer, intent(out) :: i
         character(len=:), allocatable, intent(inout) :: msg
@@ -127,7 +132,7 @@ contains
     !> The classic Hertz settings Kn Kt gamma_n gamma_t xmu dampflag [limit_damping]
     !> (pair_gran_hertz_history.cpp, settings): F = sqrt(R delta) (Kn delta - m gamma_n v_n).
     subroutine classic(tok, i0, a, i, msg)
-        type(peer_text), intent(in) :: tok(:)
+        type(text_string), intent(in) :: tok(:)
         integer, intent(in) :: i0
         type(lammps_args), intent(inout) :: a
         integer, intent(out) :: i
@@ -152,8 +157,8 @@ contains
         if (tok(i0 + 5)%s /= '0' .and. tok(i0 + 5)%s /= '1') msg = 'gran/hertz/history dampflag must be 0 or 1'
         a%normal = 'hertz/history'
         a%damping = 'hertz/history'
-        a%normal_text = 'gran/hertz/history ' // join(tok(i0:i0 + 5))
-        a%template = 'gran/hertz/history ' // tok(i0)%s // ' ' // tok(i0 + 1)%s // ' {} ' // join(tok(i0 + 3:i0 + 5))
+        a%normal_text = 'gran/hertz/history ' // text_join(tok(i0:i0 + 5))
+        a%template = 'gran/hertz/history ' // tok(i0)%s // ' ' // tok(i0 + 1)%s // ' {} ' // text_join(tok(i0 + 3:i0 + 5))
         if (size(tok) >= i) then
             if (tok(i)%s == 'limit_damping') then
                 a%limit = .true.
@@ -164,7 +169,7 @@ contains
 
     !> One keyword of the granular model (or the wall style of a fix) at tok(i).
     subroutine keyword(tok, i, a, msg)
-        type(peer_text), intent(in) :: tok(:)
+        type(text_string), intent(in) :: tok(:)
         integer, intent(inout) :: i
         type(lammps_args), intent(inout) :: a
         character(len=:), allocatable, intent(inout) :: msg
@@ -220,7 +225,7 @@ contains
 
     !> hertz kn eta_n0 | hertz/material E eta_n0 nu.
     subroutine normal_model(tok, i, a, msg)
-        type(peer_text), intent(in) :: tok(:)
+        type(text_string), intent(in) :: tok(:)
         integer, intent(inout) :: i
         type(lammps_args), intent(inout) :: a
         character(len=:), allocatable, intent(inout) :: msg
@@ -237,7 +242,7 @@ contains
             msg = t // ' needs ' // itoa(na) // ' values (' // trim(merge('kn eta_n0  ', 'E eta_n0 nu', t == 'hertz')) // ')'
             return
         end if
-        a%normal_text = join(tok(i:i + na))
+        a%normal_text = text_join(tok(i:i + na))
         a%template = tok(i)%s // ' ' // tok(i + 1)%s // ' {}'
         if (na == 3) a%template = a%template // ' ' // tok(i + 3)%s
         if (t == 'hertz') then
@@ -255,7 +260,7 @@ contains
     end subroutine normal_model
 
     subroutine damping_model(tok, i, a, msg)
-        type(peer_text), intent(in) :: tok(:)
+        type(text_string), intent(in) :: tok(:)
         integer, intent(inout) :: i
         type(lammps_args), intent(inout) :: a
         character(len=:), allocatable, intent(inout) :: msg
@@ -277,7 +282,7 @@ contains
 
     !> xplane|yplane|zplane lo hi, or region ID (a fix only).
     subroutine wall_style(tok, i, a, msg)
-        type(peer_text), intent(in) :: tok(:)
+        type(text_string), intent(in) :: tok(:)
         integer, intent(inout) :: i
         type(lammps_args), intent(inout) :: a
         character(len=:), allocatable, intent(inout) :: msg
@@ -294,14 +299,14 @@ contains
             return
         end if
         if (t /= 'region') call check_values(tok(i + 1:i + 2), t, msg)
-        a%wall_text = join(tok(i:i + na))
+        a%wall_text = text_join(tok(i:i + na))
         a%after_wall = .true.
         i = i + na + 1
     end subroutine wall_style
 
     !> fix wall/gran keywords after the wall style.
     subroutine wall_keyword(tok, i, msg)
-        type(peer_text), intent(in) :: tok(:)
+        type(text_string), intent(in) :: tok(:)
         integer, intent(inout) :: i
         character(len=:), allocatable, intent(inout) :: msg
         character(len=:), allocatable :: t
@@ -466,7 +471,7 @@ contains
 
     !> Values of a keyword: numbers or NULL.
     subroutine check_values(vals, what, msg)
-        type(peer_text), intent(in) :: vals(:)
+        type(text_string), intent(in) :: vals(:)
         character(len=*), intent(in) :: what
         character(len=:), allocatable, intent(inout) :: msg
         integer :: j
@@ -477,4 +482,4 @@ contains
         end do
     end subroutine check_values
 
-end module hertzdamp_peers_lammps
+end module hertzdamp_check_lammps

@@ -11,14 +11,18 @@
 !> (`PWaveTimeStep()` evaluated as Yade does: min r/sqrt(E/rho) over the spheres).
 !> Statements that name these but cannot be evaluated are noted with file:line; other
 !> Python statements are counted.
-module hertzdamp_peers_yade_deck
-    use hertzdamp, only: hertzdamp_rk
-    use hertzdamp_peers, only: peer_text, PEER_YADE
-    use hertzdamp_peers_text, only: peer_list, peer_vars, peer_eval, peer_num_text, peer_strip_quotes, peer_words, &
-                                    peer_number, peer_directory, SYNTAX_PYTHON
-    use hertzdamp_peers_scene, only: peer_scene, peer_contact, peer_read_lines, peer_where
-    use hertzdamp_host, only: HD_HOST_LAMMPS, HD_HOST_NONE
-    use hertzdamp_apps_text, only: itoa, fmt_short
+module hertzdamp_check_yade_deck
+    use hertzdamp, only: hertzdamp_rk, HD_HOST_LAMMPS, HD_HOST_NONE
+    use hertzdamp_check_model, only: PEER_YADE
+    use hertzdamp_check_scene, only: peer_scene, peer_contact
+    use hertzdamp_text_list, only: text_string, text_list
+    use hertzdamp_text_parse, only: text_number, text_shortest, text_strip_quotes, text_words, text_directory, &
+                                    word_char => text_name_char, text_is_name
+    use hertzdamp_text_python, only: statements => text_py_statements, call_at => text_py_call_at, &
+                                     call_args => text_py_call_args, kwarg => text_py_kwarg
+    use hertzdamp_text_expr, only: text_vars, text_eval, SYNTAX_PYTHON
+    use hertzdamp_text_file, only: text_read_lines, text_where
+    use hertzdamp_text_format, only: itoa, fmt_short
     implicit none
     private
 
@@ -37,7 +41,7 @@ module hertzdamp_peers_yade_deck
 
     !> What the script defines.
     type :: yade_model
-        type(peer_vars) :: vars
+        type(text_vars) :: vars
         type(ymat), allocatable :: mats(:)
         integer :: nmats = 0, nappended = 0
         character(len=:), allocatable :: law_where, en, betan, vn     !! the Ip2 arguments (text)
@@ -59,11 +63,11 @@ contains
 
     !> Read Yade script files (in order) into a scene.
     subroutine read_yade_deck(paths, scene, msg)
-        type(peer_text), intent(in) :: paths(:)
+        type(text_string), intent(in) :: paths(:)
         type(peer_scene), intent(out) :: scene
         character(len=:), allocatable, intent(out) :: msg
         type(yade_model) :: md
-        type(peer_list) :: lines, stmts, wheres
+        type(text_list) :: lines, stmts, wheres
         integer :: f, i
         msg = ''
         scene%peer = PEER_YADE
@@ -80,8 +84,8 @@ contains
         md%law_label = ''
         md%newton_label = ''
         do f = 1, size(paths)
-            md%dir = peer_directory(paths(f)%s)
-            call peer_read_lines(paths(f)%s, lines, msg, scene%work)
+            md%dir = text_directory(paths(f)%s)
+            call text_read_lines(paths(f)%s, lines, msg, scene%work)
             if (len(msg) > 0) return
             call scene%files%push(paths(f)%s)
             call statements(lines, paths(f)%s, stmts, wheres)
@@ -95,67 +99,6 @@ contains
         call integrator(scene, md)
         call contacts(scene, md)
     end subroutine read_yade_deck
-
-    !> Logical statements: comments removed, lines joined inside brackets and after \,
-    !> triple-quoted strings dropped; with the file:line of their first line.
-    subroutine statements(lines, file, stmts, wheres)
-        type(peer_list), intent(in) :: lines
-        character(len=*), intent(in) :: file
-        type(peer_list), intent(inout) :: stmts, wheres
-        character(len=:), allocatable :: cur, t
-        character :: q
-        integer :: i, j, depth, start
-        logical :: triple
-        cur = ''
-        depth = 0
-        triple = .false.
-        start = 1
-        do i = 1, lines%n
-            t = lines%item(i)%s
-            if (triple) then
-                if (index(t, '"""') > 0 .or. index(t, "'''") > 0) triple = .false.
-                cycle
-            end if
-            q = ' '
-            do j = 1, len(t)
-                if (q /= ' ') then
-                    if (t(j:j) == q) q = ' '
-                    cycle
-                end if
-                select case (t(j:j))
-                case ('"', '''')
-                    if (j + 2 <= len(t)) then
-                        if (t(j:j + 2) == repeat(t(j:j), 3)) then
-                            if (index(t(j + 3:), t(j:j + 2)) == 0) triple = .true.
-                            t = t(1:j - 1)
-                            exit
-                        end if
-                    end if
-                    q = t(j:j)
-                case ('#')
-                    t = t(1:j - 1)
-                    exit
-                case ('(', '[', '{'); depth = depth + 1
-                case (')', ']', '}'); depth = max(0, depth - 1)
-                case default
-                end select
-            end do
-            if (len(cur) == 0) start = i
-            cur = cur // ' ' // trim(t)
-            if (depth > 0) cycle
-            if (len_trim(t) > 0) then
-                if (t(len_trim(t):len_trim(t)) == '\') then
-                    cur = cur(1:len_trim(cur) - 1)
-                    cycle
-                end if
-            end if
-            if (len_trim(cur) > 0) then
-                call stmts%push(trim(adjustl(cur)))
-                call wheres%push(peer_where(file, start))
-            end if
-            cur = ''
-        end do
-    end subroutine statements
 
     !> One statement.
     subroutine statement(scene, md, s, where)
@@ -186,89 +129,6 @@ contains
         end if
     end subroutine statement
 
-    !> Position of the '(' of a call of name in s (a whole name, any module prefix), 0: none.
-    pure integer function call_at(s, name) result(k)
-        character(len=*), intent(in) :: s, name
-        integer :: i, j
-        k = 0
-        j = 1
-        do
-            i = index(s(j:), name // '(')
-            if (i == 0) return
-            i = i + j - 1
-            if (i == 1) exit
-            if (.not. word_char(s(i - 1:i - 1))) exit
-            j = i + 1
-        end do
-        k = i + len(name)
-    end function call_at
-
-    pure logical function word_char(c)
-        character, intent(in) :: c
-        word_char = (c >= 'a' .and. c <= 'z') .or. (c >= 'A' .and. c <= 'Z') .or. (c >= '0' .and. c <= '9') .or. c == '_'
-    end function word_char
-
-    !> The arguments of the call whose '(' is at k: positional ones, and key=value ones.
-    subroutine call_args(s, k, pos, keys, vals)
-        character(len=*), intent(in) :: s
-        integer, intent(in) :: k
-        type(peer_list), intent(out) :: pos, keys, vals
-        character :: q
-        integer :: i, depth, start, e
-        character(len=:), allocatable :: a
-        depth = 0
-        q = ' '
-        start = k + 1
-        do i = k + 1, len(s)
-            if (q /= ' ') then
-                if (s(i:i) == q) q = ' '
-                cycle
-            end if
-            select case (s(i:i))
-            case ('"', ''''); q = s(i:i)
-            case ('(', '[', '{'); depth = depth + 1
-            case (')', ']', '}')
-                if (depth == 0) then
-                    call add_arg(s(start:i - 1))
-                    return
-                end if
-                depth = depth - 1
-            case (',')
-                if (depth == 0) then
-                    call add_arg(s(start:i - 1))
-                    start = i + 1
-                end if
-            case default
-            end select
-        end do
-    contains
-        subroutine add_arg(text)
-            character(len=*), intent(in) :: text
-            a = trim(adjustl(text))
-            if (len(a) == 0) return
-            e = index(a, '=')
-            if (e > 1 .and. index(a, '==') == 0 .and. verify(trim(a(1:e - 1)), &
-                'abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ0123456789_') == 0) then
-                call keys%push(trim(a(1:e - 1)))
-                call vals%push(trim(adjustl(a(e + 1:))))
-            else
-                call pos%push(a)
-            end if
-        end subroutine add_arg
-    end subroutine call_args
-
-    !> The value of keyword key ('' if absent).
-    function kwarg(keys, vals, key) result(v)
-        type(peer_list), intent(in) :: keys, vals
-        character(len=*), intent(in) :: key
-        character(len=:), allocatable :: v
-        integer :: i
-        v = ''
-        do i = 1, keys%n
-            if (keys%item(i)%s == key) v = vals%item(i)%s
-        end do
-    end function kwarg
-
     !> name = expr with a numeric value: a variable.  False when not such a statement.
     logical function assignment(md, s) result(ok)
         type(yade_model), intent(inout) :: md
@@ -288,8 +148,8 @@ contains
             ok = tuple_assignment(md, name, s(e + 1:))
             return
         end if
-        if (verify(name, 'abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ0123456789_') /= 0) return
-        call peer_eval(trim(adjustl(s(e + 1:))), SYNTAX_PYTHON, md%vars, x, msg)
+        if (.not. text_is_name(name)) return
+        call text_eval(trim(adjustl(s(e + 1:))), SYNTAX_PYTHON, md%vars, x, msg)
         if (len(msg) > 0) return
         call md%vars%set_num(name, x)
         ok = .true.
@@ -299,7 +159,7 @@ contains
     logical function tuple_assignment(md, lhs, rhs) result(ok)
         type(yade_model), intent(inout) :: md
         character(len=*), intent(in) :: lhs, rhs
-        type(peer_list) :: names, values, k2, v2
+        type(text_list) :: names, values, k2, v2
         real(wp) :: x
         integer :: i
         ok = .false.
@@ -307,7 +167,7 @@ contains
         call call_args('(' // rhs // ')', 1, values, k2, v2)
         if (names%n /= values%n .or. names%n < 2) return
         do i = 1, names%n
-            if (verify(names%item(i)%s, 'abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ0123456789_') /= 0) return
+            if (.not. text_is_name(names%item(i)%s)) return
         end do
         do i = 1, names%n
             call number_arg(md, values%item(i)%s, x, ok)
@@ -324,7 +184,7 @@ contains
         logical, intent(out) :: ok
         character(len=:), allocatable :: msg
         real(wp) :: y
-        call peer_eval(text, SYNTAX_PYTHON, md%vars, y, msg)
+        call text_eval(text, SYNTAX_PYTHON, md%vars, y, msg)
         ok = len(msg) == 0
         if (ok) x = y
     end subroutine number_arg
@@ -334,7 +194,7 @@ contains
         type(peer_scene), intent(inout) :: scene
         type(yade_model), intent(inout) :: md
         character(len=*), intent(in) :: s, where
-        type(peer_list) :: pos, keys, vals
+        type(text_list) :: pos, keys, vals
         type(ymat) :: m
         type(ymat), allocatable :: tmp(:)
         integer :: k, e, i
@@ -357,7 +217,7 @@ contains
         call mat_number(kwarg(keys, vals, 'young'), m%young)
         call mat_number(kwarg(keys, vals, 'poisson'), m%poisson)
         call mat_number(kwarg(keys, vals, 'density'), m%density)
-        m%label = peer_strip_quotes(kwarg(keys, vals, 'label'))
+        m%label = text_strip_quotes(kwarg(keys, vals, 'label'))
         if (index(s, 'O.materials.append') > 0) then
             m%id = md%nappended
             md%nappended = md%nappended + 1
@@ -389,7 +249,7 @@ contains
         type(peer_scene), intent(inout) :: scene
         type(yade_model), intent(inout) :: md
         character(len=*), intent(in) :: s, where
-        type(peer_list) :: pos, keys, vals
+        type(text_list) :: pos, keys, vals
         integer :: k, m
         k = call_at(s, 'append')
         if (k == 0) then
@@ -428,7 +288,7 @@ contains
         end if
         if (arg(1:1) == '''' .or. arg(1:1) == '"') then
             do i = 1, md%nmats
-                if (md%mats(i)%label == peer_strip_quotes(arg) .and. md%mats(i)%id >= 0) m = i
+                if (md%mats(i)%label == text_strip_quotes(arg) .and. md%mats(i)%id >= 0) m = i
             end do
             return
         end if
@@ -477,7 +337,7 @@ contains
         type(peer_scene), intent(inout) :: scene
         type(yade_model), intent(inout) :: md
         character(len=*), intent(in) :: s, where
-        type(peer_list) :: pos, keys, vals
+        type(text_list) :: pos, keys, vals
         integer :: kind, k, m
         real(wp) :: r
         logical :: ok
@@ -519,7 +379,7 @@ contains
         type(peer_scene), intent(inout) :: scene
         type(yade_model), intent(inout) :: md
         character(len=*), intent(in) :: s, where
-        type(peer_list) :: pos, keys, vals
+        type(text_list) :: pos, keys, vals
         real(wp) :: r, f
         logical :: ok, ok2
         integer :: m
@@ -552,14 +412,14 @@ contains
         type(yade_model), intent(inout) :: md
         character(len=*), intent(in) :: s, where
         integer, intent(in) :: k
-        type(peer_list) :: pos, keys, vals
+        type(text_list) :: pos, keys, vals
         call call_args(s, k, pos, keys, vals)
         md%have_law = .true.
         md%law_where = where
         md%en = kwarg(keys, vals, 'en')
         md%betan = kwarg(keys, vals, 'betan')
         md%vn = kwarg(keys, vals, 'vn')
-        md%law_label = peer_strip_quotes(kwarg(keys, vals, 'label'))
+        md%law_label = text_strip_quotes(kwarg(keys, vals, 'label'))
         if (index(s, 'Law2_ScGeom_MindlinPhys_Mindlin') == 0) call scene%note(where, &
             'Ip2_FrictMat_FrictMat_MindlinPhys without Law2_ScGeom_MindlinPhys_Mindlin in the same statement: ' // &
             'the checker assumes that law')
@@ -575,7 +435,7 @@ contains
         integer :: i, k
         character(len=*), parameter :: ig2(nshape) = [character(len=24) :: 'Ig2_Wall_Sphere_ScGeom', &
                                                       'Ig2_Facet_Sphere_ScGeom', 'Ig2_Box_Sphere_ScGeom']
-        type(peer_list) :: pos, keys, vals
+        type(text_list) :: pos, keys, vals
         do i = 1, nshape
             k = call_at(s, trim(ig2(i)))
             if (k == 0) cycle
@@ -593,11 +453,11 @@ contains
         type(peer_scene), intent(inout) :: scene
         type(yade_model), intent(inout) :: md
         character(len=*), intent(in) :: s, where
-        type(peer_list) :: pos, keys, vals
+        type(text_list) :: pos, keys, vals
         logical :: ok
         call call_args(s, call_at(s, 'NewtonIntegrator'), pos, keys, vals)
         md%newton_where = where
-        md%newton_label = peer_strip_quotes(kwarg(keys, vals, 'label'))
+        md%newton_label = text_strip_quotes(kwarg(keys, vals, 'label'))
         md%damping = 0.2_wp
         if (len(kwarg(keys, vals, 'damping')) > 0) then
             call number_arg(md, kwarg(keys, vals, 'damping'), md%damping, ok)
@@ -650,7 +510,7 @@ contains
         type(peer_scene), intent(inout) :: scene
         type(yade_model), intent(inout) :: md
         character(len=*), intent(in) :: s, where
-        type(peer_list) :: pos, keys, vals, lines, w
+        type(text_list) :: pos, keys, vals, lines, w
         character(len=:), allocatable :: path, msg
         real(wp) :: r, rmin
         integer :: k, m, i
@@ -673,11 +533,11 @@ contains
             return
         end if
         path = ''
-        if (pos%n >= 1) path = peer_strip_quotes(pos%item(1)%s)
+        if (pos%n >= 1) path = text_strip_quotes(pos%item(1)%s)
         if (len(path) > 0) then
             if (path(1:1) /= '/') path = md%dir // path
         end if
-        call peer_read_lines(path, lines, msg, scene%work)
+        call text_read_lines(path, lines, msg, scene%work)
         if (len(msg) > 0) then
             call scene%note(where, 'ymport.text: ' // msg // ' (the spheres'' radii are in it)')
             return
@@ -685,9 +545,9 @@ contains
         rmin = huge(1.0_wp)
         do i = 1, lines%n
             w%n = 0
-            call peer_words(lines%item(i)%s, w)
+            call text_words(lines%item(i)%s, w)
             if (w%n < 4) cycle
-            if (peer_number(w%item(4)%s, r)) rmin = min(rmin, r)
+            if (text_number(w%item(4)%s, r)) rmin = min(rmin, r)
         end do
         if (rmin < huge(1.0_wp)) then
             if (md%mats(m)%rmin <= 0.0_wp .or. rmin < md%mats(m)%rmin) md%mats(m)%rmin = rmin
@@ -743,9 +603,9 @@ contains
                 if (.not. (word_char(t(i - 1:i - 1)) .or. t(i - 1:i - 1) == '.')) exit
                 i = i - 1
             end do
-            t = t(1:i - 1) // peer_num_text(pwave(md)) // t(k + len('PWaveTimeStep()'):)
+            t = t(1:i - 1) // text_shortest(pwave(md)) // t(k + len('PWaveTimeStep()'):)
         end if
-        call peer_eval(t, SYNTAX_PYTHON, md%vars, x, msg)
+        call text_eval(t, SYNTAX_PYTHON, md%vars, x, msg)
         if (len(msg) == 0 .and. x > 0.0_wp) then
             scene%dt = x
             scene%dt_text = 'O.dt = ' // md%dt_text // ' (' // md%dt_where // ')'
@@ -792,7 +652,7 @@ contains
         type(yade_model), intent(inout) :: md
         integer, intent(in) :: a, b, shape
         type(peer_contact) :: c
-        type(peer_list) :: w
+        type(text_list) :: w
         c%pair = name_of(md, a) // '-' // name_of(md, b)
         if (shape > 0) c%pair = name_of(md, a) // '-' // trim(shapes(shape)) // ':' // name_of(md, b)
         c%where = md%mats(a)%where
@@ -800,8 +660,8 @@ contains
         if (md%mats(a)%kind /= 'FrictMat' .or. md%mats(b)%kind /= 'FrictMat') c%problem = md%mats(a)%kind // &
             ' with ' // md%mats(b)%kind // ': not the Hertz-Mindlin law of FrictMat (ViscElMat is a linear spring)'
         if (.not. md%have_law .and. len(c%problem) == 0) c%problem = 'no Ip2_FrictMat_FrictMat_MindlinPhys in the script'
-        call w%push('young=' // peer_num_text(md%mats(a)%young) // ',' // peer_num_text(md%mats(b)%young))
-        call w%push('poisson=' // peer_num_text(md%mats(a)%poisson) // ',' // peer_num_text(md%mats(b)%poisson))
+        call w%push('young=' // text_shortest(md%mats(a)%young) // ',' // text_shortest(md%mats(b)%young))
+        call w%push('poisson=' // text_shortest(md%mats(a)%poisson) // ',' // text_shortest(md%mats(b)%poisson))
         call damping_words(md, a, b, w, c%problem)
         c%mat%radius = [md%mats(a)%rmin, md%mats(b)%rmin]
         c%mat%density = [md%mats(a)%density, md%mats(b)%density]
@@ -838,7 +698,7 @@ contains
     subroutine damping_words(md, a, b, w, problem)
         type(yade_model), intent(inout) :: md
         integer, intent(in) :: a, b
-        type(peer_list), intent(inout) :: w
+        type(text_list), intent(inout) :: w
         character(len=:), allocatable, intent(inout) :: problem
         character(len=:), allocatable :: v
         if (len(md%en) > 0) then
@@ -868,14 +728,14 @@ contains
         character(len=*), intent(in) :: text
         integer, intent(in) :: a, b
         character(len=:), allocatable :: v
-        type(peer_list) :: pos, keys, vals, tri, p2, k2, v2
+        type(text_list) :: pos, keys, vals, tri, p2, k2, v2
         real(wp) :: x, i1, i2
         logical :: ok
         integer :: i, k
         v = ''
         call number_arg(md, text, x, ok)
         if (ok) then
-            v = peer_num_text(x)
+            v = text_shortest(x)
             return
         end if
         k = call_at(text, 'MatchMaker')
@@ -894,9 +754,9 @@ contains
             if ((nint(i1) == md%mats(a)%id .and. nint(i2) == md%mats(b)%id) .or. &
                 (nint(i2) == md%mats(a)%id .and. nint(i1) == md%mats(b)%id)) then
                 call number_arg(md, p2%item(3)%s, x, ok)
-                if (ok) v = peer_num_text(x)
+                if (ok) v = text_shortest(x)
             end if
         end do
     end function match
 
-end module hertzdamp_peers_yade_deck
+end module hertzdamp_check_yade_deck

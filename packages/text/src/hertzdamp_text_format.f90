@@ -1,15 +1,18 @@
-!> Text helpers shared by the applications (the deck reader of `check`, the scene
-!> reader, the calibration) and the command-line program: ASCII case conversion, an
-!> integer as text, the one short number format of messages (fmt_short) and the
+!> Number and case formats shared by the applications (the deck reader of `check`, the
+!> scene reader, the calibration) and the command-line program: ASCII case conversion,
+!> an integer as text, the one short number format of messages (fmt_short) and the
 !> number formats of every text output for people (fmt_text in tables, fmt_text_short
 !> for single values and prose), in this one place.
-module hertzdamp_apps_text
-    use hertzdamp_kinds, only: hertzdamp_rk
+!>
+!> The text package needs nothing of the core: its reals are real64, the core's
+!> hertzdamp_rk.
+module hertzdamp_text_format
+    use, intrinsic :: iso_fortran_env, only: real64
     use, intrinsic :: ieee_arithmetic, only: ieee_is_finite, ieee_is_nan
     implicit none
     private
 
-    integer, parameter :: wp = hertzdamp_rk
+    integer, parameter :: wp = real64
     !> `digits` of fmt_short that always read back as the same double (the shortest such form).
     integer, parameter, public :: ROUND_TRIP = 17
 
@@ -201,4 +204,4 @@ contains
         end if
     end function shift
 
-end module hertzdamp_apps_text
+end module hertzdamp_text_format

@@ -4,12 +4,13 @@
 !> sizes; keys are case-insensitive; `KEY(i)=` gives phase i (or, for DES_EN_INPUT, the
 !> pair i in MFiX's order 1-1, 1-2, 2-2).  The contact is phase 1 with itself, with
 !> phase 2 when a second phase value is given, or with the wall.
-module hertzdamp_peers_mfix
+module hertzdamp_check_mfix
     use hertzdamp, only: hertzdamp_rk
-    use hertzdamp_peers, only: peer_deck, peer_spec_row, TSTEP_MFIX
-    use hertzdamp_peers_common, only: peer_materials, kv_list, bodies, effective_modulus, hertz_k, check_modulus, &
-                                      check_poisson, pair_values, required, values, number, take, has, add_note, unquote
-    use hertzdamp_apps_text, only: upper, fmt_short, ROUND_TRIP
+    use hertzdamp_check_model, only: peer_deck, peer_spec_row, TSTEP_MFIX
+    use hertzdamp_check_common, only: peer_materials, kv_list, bodies, effective_modulus, hertz_k, check_modulus, &
+                                      check_poisson, pair_values, required, values, number, take, has, add_note
+    use hertzdamp_text_parse, only: text_strip_quotes
+    use hertzdamp_text_format, only: upper, fmt_short, ROUND_TRIP
     implicit none
     private
 
@@ -43,7 +44,7 @@ contains
             msg = 'missing DES_COLL_MODEL = ''HERTZIAN'' (MFiX''s default is LSD, the linear spring-dashpot model)'
             return
         end if
-        if (upper(unquote(v)) /= 'HERTZIAN') then
+        if (upper(text_strip_quotes(v)) /= 'HERTZIAN') then
             msg = 'DES_COLL_MODEL = ' // v // ': hertzdamp checks ''HERTZIAN'' (LSD is a linear spring)'
             return
         end if
@@ -197,4 +198,4 @@ contains
         end if
     end subroutine restitution
 
-end module hertzdamp_peers_mfix
+end module hertzdamp_check_mfix

@@ -2,10 +2,9 @@
 !> cells (numbers, strings, empty) with each row's status (a library status: HD_OK,
 !> HD_NO_REBOUND or why the row has no result) and the reason of a row without one.
 !> The command-line program renders it as text, CSV or JSON; nothing here prints.
-module hertzdamp_peers_report
+module hertzdamp_check_report
     use hertzdamp, only: hertzdamp_rk, HD_OK
-    use hertzdamp_peers, only: peer_text
-    use hertzdamp_peers_text, only: peer_list
+    use hertzdamp_text_list, only: text_string, text_list
     implicit none
     private
 
@@ -22,14 +21,14 @@ module hertzdamp_peers_report
 
     !> The report.
     type, public :: peer_report
-        type(peer_list) :: keys, values               !! metadata, in order
+        type(text_list) :: keys, values               !! metadata, in order
         character(len=:), allocatable :: columns      !! comma-separated column names
         character(len=:), allocatable :: units        !! comma-separated units, as many ('' for none)
         integer :: ncol = 0
         type(peer_cell), allocatable :: cells(:, :)   !! (column, row)
         integer :: nrow = 0, col = 0
         integer, allocatable :: status(:)             !! per row: HD_OK, HD_NO_REBOUND or why none
-        type(peer_text), allocatable :: reason(:)     !! per row: why it has no result ('' if it has)
+        type(text_string), allocatable :: reason(:)     !! per row: why it has no result ('' if it has)
     contains
         procedure :: set_columns => report_set_columns
         procedure :: meta => report_meta
@@ -71,7 +70,7 @@ contains
         class(peer_report), intent(inout) :: self
         type(peer_cell), allocatable :: tmp(:, :)
         integer, allocatable :: st(:)
-        type(peer_text), allocatable :: why(:)
+        type(text_string), allocatable :: why(:)
         integer :: m
         if (self%col == 0) then
             self%nrow = self%nrow + 1
@@ -136,4 +135,4 @@ contains
         self%col = 0
     end subroutine report_end_row
 
-end module hertzdamp_peers_report
+end module hertzdamp_check_report

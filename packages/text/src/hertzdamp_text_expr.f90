@@ -1,190 +1,50 @@
-!> The deck readers' shared text tools, all in time linear in their input: a growable
-!> list of strings, a string-keyed hash map, strict number parsing, word splitting and an
-!> expression evaluator for the arithmetic the engines' inputs allow (LAMMPS equal-style
-!> variables and `$(...)`, Python assignments in Yade scripts, MFiX `@(...)`).
-!>
-!> Nothing here prints or stops: errors come back as a message ('' when none).  Every
-!> lookup in a map counts its probes (`peer_map%probes`), so a test can show that the
-!> readers' work grows linearly with the deck.
-module hertzdamp_peers_text
-    use hertzdamp, only: hertzdamp_rk, hertzdamp_pi
-    use hertzdamp_peers, only: peer_text
-    use hertzdamp_apps_text, only: lower, itoa, fmt_short, ROUND_TRIP
+!> Named numbers and strings (`text_vars`) and an expression evaluator for the
+!> arithmetic the engines' inputs allow (`text_eval`): LAMMPS equal-style variables and
+!> `$(...)`, Python assignments in Yade scripts, MFiX `@(...)`.  A recursive-descent
+!> parser, in time linear in the expression; errors come back as a message naming the
+!> culprit ('' when none), and a result is finite or an error.
+module hertzdamp_text_expr
+    use hertzdamp_text_list, only: text_string
+    use hertzdamp_text_map, only: text_map
+    use hertzdamp_text_parse, only: text_number
+    use hertzdamp_text_format, only: lower
     use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
-    use, intrinsic :: iso_fortran_env, only: int64
+    use, intrinsic :: iso_fortran_env, only: real64
     implicit none
     private
 
-    integer, parameter :: wp = hertzdamp_rk
+    integer, parameter :: wp = real64
+    real(wp), parameter :: pi = acos(-1.0_wp)
 
-    !> Expression syntaxes of peer_eval.
+    !> Expression syntaxes of text_eval.
     integer, parameter, public :: SYNTAX_LAMMPS = 1  !! ^ power, v_name, PI, ln/log, && || !
     integer, parameter, public :: SYNTAX_PYTHON = 2  !! ** power, math.x, pi, log = ln
     integer, parameter, public :: SYNTAX_MFIX = 3    !! MFiX @(...): ** and ^ power, d exponents, pi
 
-    !> A list of strings that grows by doubling (amortised constant time per push).
-    type, public :: peer_list
-        type(peer_text), allocatable :: item(:)
-        integer :: n = 0
-    contains
-        procedure :: push => list_push       !! append a string
-        procedure :: items => list_items     !! the strings, item(1:n)
-    end type peer_list
-
-    !> A map from strings to positive integers, open addressing with linear probing,
-    !> resized at half load.  `probes` counts the slots looked at by every call.
-    type, public :: peer_map
-        type(peer_text), allocatable :: key(:)
-        integer, allocatable :: val(:)        !! 0: empty slot
-        integer :: n = 0
-        integer(int64) :: probes = 0
-    contains
-        procedure :: put => map_put          !! set key -> value (value > 0)
-        procedure :: get => map_get          !! the value of key, 0 if absent (counts probes)
-        procedure :: find => map_find        !! the same without counting (pure)
-    end type peer_map
-
-    !> Named numbers and strings for peer_eval (variables of a deck).
-    type, public :: peer_vars
-        type(peer_map) :: map
+    !> Named numbers and strings for text_eval (the variables of a deck).
+    type, public :: text_vars
+        type(text_map) :: map
         real(wp), allocatable :: x(:)            !! value of a numeric variable
         logical, allocatable :: numeric(:)       !! x holds it (else text does)
-        type(peer_text), allocatable :: text(:)  !! a string value, or why there is no number
+        type(text_string), allocatable :: text(:)  !! a string value, or why there is no number
         integer :: n = 0
     contains
         procedure :: set_num => vars_set_num     !! name = number
         procedure :: set_text => vars_set_text   !! name = string (numeric when it reads as a number)
         procedure :: find => vars_find           !! index of a name, 0 if absent
-    end type peer_vars
+    end type text_vars
 
-    public :: peer_number, peer_words, peer_eval, peer_num_text, peer_g15, peer_strip_quotes, peer_find_unquoted
-    public :: peer_directory
+    public :: text_eval
 
 contains
 
-    ! ------------------------------------------------------------------ list
-
-    subroutine list_push(self, s)
-        class(peer_list), intent(inout) :: self
-        character(len=*), intent(in) :: s
-        type(peer_text), allocatable :: tmp(:)
-        if (.not. allocated(self%item)) allocate (self%item(8))
-        if (self%n == size(self%item)) then
-            allocate (tmp(2 * size(self%item)))
-            tmp(1:self%n) = self%item(1:self%n)
-            call move_alloc(tmp, self%item)
-        end if
-        self%n = self%n + 1
-        self%item(self%n)%s = s
-    end subroutine list_push
-
-    function list_items(self) result(t)
-        class(peer_list), intent(in) :: self
-        type(peer_text), allocatable :: t(:)
-        if (self%n == 0) then
-            allocate (t(0))
-        else
-            t = self%item(1:self%n)
-        end if
-    end function list_items
-
-    ! ------------------------------------------------------------------ map
-
-    !> FNV-1a hash of a string, as a non-negative integer.
-    pure integer function hash(s)
-        character(len=*), intent(in) :: s
-        integer(int64) :: h
-        integer :: i
-        h = 2166136261_int64
-        do i = 1, len(s)
-            h = ieor(h, int(iachar(s(i:i)), int64))
-            h = mod(h * 16777619_int64, 4294967296_int64)
-        end do
-        hash = int(mod(h, 2147483647_int64))
-    end function hash
-
-    !> The slot of key: where it is, or the empty slot where it would go.
-    integer function slot(self, key)
-        class(peer_map), intent(inout) :: self
-        character(len=*), intent(in) :: key
-        integer :: m
-        m = size(self%val)
-        slot = mod(hash(key), m) + 1
-        do
-            self%probes = self%probes + 1
-            if (self%val(slot) == 0) return
-            if (self%key(slot)%s == key) return
-            slot = mod(slot, m) + 1
-        end do
-    end function slot
-
-    subroutine map_put(self, key, v)
-        class(peer_map), intent(inout) :: self
-        character(len=*), intent(in) :: key
-        integer, intent(in) :: v      !! > 0
-        type(peer_text), allocatable :: oldk(:)
-        integer, allocatable :: oldv(:)
-        integer :: i, j
-        if (.not. allocated(self%val)) then
-            allocate (self%key(16), self%val(16))
-            self%val = 0
-        end if
-        if (2 * (self%n + 1) > size(self%val)) then
-            call move_alloc(self%key, oldk)
-            call move_alloc(self%val, oldv)
-            allocate (self%key(2 * size(oldv)), self%val(2 * size(oldv)))
-            self%val = 0
-            do i = 1, size(oldv)
-                if (oldv(i) == 0) cycle
-                j = slot(self, oldk(i)%s)
-                self%key(j)%s = oldk(i)%s
-                self%val(j) = oldv(i)
-            end do
-        end if
-        j = slot(self, key)
-        if (self%val(j) == 0) then
-            self%n = self%n + 1
-            self%key(j)%s = key
-        end if
-        self%val(j) = v
-    end subroutine map_put
-
-    !> The value of key without counting the probes (0 if absent).
-    pure integer function map_find(self, key) result(v)
-        class(peer_map), intent(in) :: self
-        character(len=*), intent(in) :: key
-        integer :: j, m
-        v = 0
-        if (.not. allocated(self%val)) return
-        m = size(self%val)
-        j = mod(hash(key), m) + 1
-        do
-            if (self%val(j) == 0) return
-            if (self%key(j)%s == key) then
-                v = self%val(j)
-                return
-            end if
-            j = mod(j, m) + 1
-        end do
-    end function map_find
-
-    integer function map_get(self, key) result(v)
-        class(peer_map), intent(inout) :: self
-        character(len=*), intent(in) :: key
-        v = 0
-        if (.not. allocated(self%val)) return
-        v = self%val(slot(self, key))
-    end function map_get
-
-    ! ------------------------------------------------------------------ variables
-
     !> Index of a variable, appending it when new.
     integer function vars_slot(self, name) result(i)
-        class(peer_vars), intent(inout) :: self
+        class(text_vars), intent(inout) :: self
         character(len=*), intent(in) :: name
         real(wp), allocatable :: x(:)
         logical, allocatable :: b(:)
-        type(peer_text), allocatable :: t(:)
+        type(text_string), allocatable :: t(:)
         integer :: m
         i = self%map%get(name)
         if (i > 0) return
@@ -205,214 +65,34 @@ contains
     end function vars_slot
 
     subroutine vars_set_num(self, name, x)
-        class(peer_vars), intent(inout) :: self
+        class(text_vars), intent(inout) :: self
         character(len=*), intent(in) :: name
         real(wp), intent(in) :: x
         integer :: i
         i = vars_slot(self, name)
         self%x(i) = x
         self%numeric(i) = .true.
-        self%text(i)%s = ''      ! a number: no text (peer_g15 formats it where a deck substitutes it)
+        self%text(i)%s = ''      ! a number: no text (text_g15 formats it where a deck substitutes it)
     end subroutine vars_set_num
 
     !> A string variable; it is numeric too when the whole string reads as a number.
     subroutine vars_set_text(self, name, s)
-        class(peer_vars), intent(inout) :: self
+        class(text_vars), intent(inout) :: self
         character(len=*), intent(in) :: name, s
         integer :: i
         real(wp) :: x
         i = vars_slot(self, name)
         self%text(i)%s = s
-        self%numeric(i) = peer_number(s, x)
+        self%numeric(i) = text_number(s, x)
         self%x(i) = 0.0_wp
         if (self%numeric(i)) self%x(i) = x
     end subroutine vars_set_text
 
     integer function vars_find(self, name) result(i)
-        class(peer_vars), intent(inout) :: self
+        class(text_vars), intent(inout) :: self
         character(len=*), intent(in) :: name
         i = self%map%get(name)
     end function vars_find
-
-    ! ------------------------------------------------------------------ numbers and words
-
-    !> A strict decimal number ([sign] digits [. digits] [e|E [sign] digits], or
-    !> [sign] . digits ...), finite.  `fortran_d`: also d/D exponents (1.0d-3).
-    logical function peer_number(text, x, fortran_d) result(ok)
-        character(len=*), intent(in) :: text
-        real(wp), intent(out) :: x
-        logical, intent(in), optional :: fortran_d
-        character(len=:), allocatable :: t
-        integer :: i, n, nd, ios
-        logical :: dexp
-        x = 0.0_wp
-        dexp = .false.
-        if (present(fortran_d)) dexp = fortran_d
-        t = text
-        n = len(t)
-        i = 1
-        nd = 0
-        ok = n > 0
-        if (.not. ok) return
-        if (t(1:1) == '+' .or. t(1:1) == '-') i = 2
-        call digits()
-        if (i <= n) then
-            if (t(i:i) == '.') then
-                i = i + 1
-                call digits()
-            end if
-        end if
-        ok = nd > 0
-        if (ok .and. i <= n) then
-            if (t(i:i) == 'e' .or. t(i:i) == 'E' .or. (dexp .and. (t(i:i) == 'd' .or. t(i:i) == 'D'))) then
-                t(i:i) = 'e'
-                i = i + 1
-                if (i <= n) then
-                    if (t(i:i) == '+' .or. t(i:i) == '-') i = i + 1
-                end if
-                nd = 0
-                call digits()
-                ok = nd > 0
-            end if
-        end if
-        ok = ok .and. i > n
-        if (.not. ok) return
-        read (t, *, iostat=ios) x
-        ok = ios == 0 .and. ieee_is_finite(x)
-        if (.not. ok) x = 0.0_wp
-    contains
-        subroutine digits()
-            do while (i <= n)
-                if (t(i:i) < '0' .or. t(i:i) > '9') exit
-                i = i + 1
-                nd = nd + 1
-            end do
-        end subroutine digits
-    end function peer_number
-
-    !> A number as the shortest text that reads back as the same double.
-    function peer_num_text(x) result(s)
-        real(wp), intent(in) :: x
-        character(len=:), allocatable :: s
-        s = fmt_short(x, ROUND_TRIP)
-    end function peer_num_text
-
-    !> x with at most 15 significant digits, as C's "%.15g" (LAMMPS substitutes equal-style
-    !> variables so): trailing zeros dropped, plain notation for exponents -4 to 14.
-    function peer_g15(x) result(s)
-        real(wp), intent(in) :: x
-        character(len=:), allocatable :: s
-        character(len=32) :: b
-        character(len=15) :: d
-        integer :: e, nd, ios
-        if (.not. ieee_is_finite(x)) then
-            s = fmt_short(x)
-            return
-        end if
-        if (x == 0.0_wp) then
-            s = '0'
-            return
-        end if
-        write (b, '(es23.14e3)') abs(x)
-        b = adjustl(b)
-        d = b(1:1) // b(3:16)
-        read (b(18:), *, iostat=ios) e
-        if (ios /= 0) e = 0        ! (not reached: es23.14e3 always writes the exponent there)
-        nd = len_trim(d)
-        do while (nd > 1)
-            if (d(nd:nd) /= '0') exit
-            nd = nd - 1
-        end do
-        if (e < -4 .or. e >= 15) then
-            s = d(1:1)
-            if (nd > 1) s = s // '.' // d(2:nd)
-            s = s // 'e' // itoa(e)
-        else if (e >= 0) then
-            if (nd <= e + 1) then
-                s = d(1:nd) // repeat('0', e + 1 - nd)
-            else
-                s = d(1:e + 1) // '.' // d(e + 2:nd)
-            end if
-        else
-            s = '0.' // repeat('0', -e - 1) // d(1:nd)
-        end if
-        if (x < 0.0_wp) s = '-' // s
-    end function peer_g15
-
-    !> The directory part of a path, with its slash ('' for none).
-    pure function peer_directory(path) result(d)
-        character(len=*), intent(in) :: path
-        character(len=:), allocatable :: d
-        d = path(1:index(path, '/', back=.true.))
-    end function peer_directory
-
-    !> Append the words of s to `words`: separated by blanks and tabs; a word in single
-    !> or double quotes (`quotes`) is one word without its quotes.
-    subroutine peer_words(s, words, quotes)
-        character(len=*), intent(in) :: s
-        type(peer_list), intent(inout) :: words
-        logical, intent(in), optional :: quotes
-        integer :: i, j
-        logical :: q
-        character :: c
-        q = .false.
-        if (present(quotes)) q = quotes
-        i = 1
-        do while (i <= len(s))
-            c = s(i:i)
-            if (c == ' ' .or. c == achar(9)) then
-                i = i + 1
-                cycle
-            end if
-            if (q .and. (c == '"' .or. c == '''')) then
-                j = index(s(i + 1:), c)
-                if (j > 0) then
-                    call words%push(s(i + 1:i + j - 1))
-                    i = i + j + 1
-                    cycle
-                end if
-            end if
-            j = i
-            do while (j <= len(s))
-                if (s(j:j) == ' ' .or. s(j:j) == achar(9)) exit
-                j = j + 1
-            end do
-            call words%push(s(i:j - 1))
-            i = j
-        end do
-    end subroutine peer_words
-
-    !> s without one pair of enclosing single or double quotes.
-    pure function peer_strip_quotes(s) result(r)
-        character(len=*), intent(in) :: s
-        character(len=:), allocatable :: r
-        r = trim(adjustl(s))
-        if (len(r) >= 2) then
-            if ((r(1:1) == '''' .and. r(len(r):len(r)) == '''') .or. (r(1:1) == '"' .and. r(len(r):len(r)) == '"')) then
-                r = r(2:len(r) - 1)
-            end if
-        end if
-    end function peer_strip_quotes
-
-    !> Position of the first character c of s outside single and double quotes (0: none).
-    pure integer function peer_find_unquoted(s, c) result(k)
-        character(len=*), intent(in) :: s
-        character, intent(in) :: c
-        character :: q
-        integer :: i
-        k = 0
-        q = ' '
-        do i = 1, len(s)
-            if (q /= ' ') then
-                if (s(i:i) == q) q = ' '
-            else if (s(i:i) == '"' .or. s(i:i) == '''') then
-                q = s(i:i)
-            else if (s(i:i) == c) then
-                k = i
-                return
-            end if
-        end do
-    end function peer_find_unquoted
 
     ! ------------------------------------------------------------------ expressions
 
@@ -421,10 +101,10 @@ contains
     !> (result 1 or 0), and the functions sqrt exp ln log log10 abs sin cos tan asin acos
     !> atan atan2 floor ceil round min max pow radians degrees.  Names the deck has not
     !> defined give a message naming them; the result is finite or an error.
-    subroutine peer_eval(text, syntax, vars, x, msg)
+    subroutine text_eval(text, syntax, vars, x, msg)
         character(len=*), intent(in) :: text
         integer, intent(in) :: syntax             !! SYNTAX_*
-        type(peer_vars), intent(inout) :: vars
+        type(text_vars), intent(inout) :: vars
         real(wp), intent(out) :: x
         character(len=:), allocatable, intent(out) :: msg
         integer :: pos
@@ -437,7 +117,7 @@ contains
         end if
         if (len(msg) == 0 .and. .not. ieee_is_finite(x)) msg = '"' // text // '" is not a finite number'
         if (len(msg) > 0) x = 0.0_wp
-    end subroutine peer_eval
+    end subroutine text_eval
 
     subroutine skip_blanks(t, pos)
         character(len=*), intent(in) :: t
@@ -471,7 +151,7 @@ contains
         character(len=*), intent(in) :: t
         integer, intent(inout) :: pos
         integer, intent(in) :: syn
-        type(peer_vars), intent(inout) :: vars
+        type(text_vars), intent(inout) :: vars
         real(wp), intent(out) :: x
         character(len=:), allocatable, intent(inout) :: msg
         real(wp) :: y
@@ -487,7 +167,7 @@ contains
         character(len=*), intent(in) :: t
         integer, intent(inout) :: pos
         integer, intent(in) :: syn
-        type(peer_vars), intent(inout) :: vars
+        type(text_vars), intent(inout) :: vars
         real(wp), intent(out) :: x
         character(len=:), allocatable, intent(inout) :: msg
         real(wp) :: y
@@ -503,7 +183,7 @@ contains
         character(len=*), intent(in) :: t
         integer, intent(inout) :: pos
         integer, intent(in) :: syn
-        type(peer_vars), intent(inout) :: vars
+        type(text_vars), intent(inout) :: vars
         real(wp), intent(out) :: x
         character(len=:), allocatable, intent(inout) :: msg
         real(wp) :: y
@@ -531,7 +211,7 @@ contains
         character(len=*), intent(in) :: t
         integer, intent(inout) :: pos
         integer, intent(in) :: syn
-        type(peer_vars), intent(inout) :: vars
+        type(text_vars), intent(inout) :: vars
         real(wp), intent(out) :: x
         character(len=:), allocatable, intent(inout) :: msg
         real(wp) :: y
@@ -553,7 +233,7 @@ contains
         character(len=*), intent(in) :: t
         integer, intent(inout) :: pos
         integer, intent(in) :: syn
-        type(peer_vars), intent(inout) :: vars
+        type(text_vars), intent(inout) :: vars
         real(wp), intent(out) :: x
         character(len=:), allocatable, intent(inout) :: msg
         real(wp) :: y
@@ -581,7 +261,7 @@ contains
         character(len=*), intent(in) :: t
         integer, intent(inout) :: pos
         integer, intent(in) :: syn
-        type(peer_vars), intent(inout) :: vars
+        type(text_vars), intent(inout) :: vars
         real(wp), intent(out) :: x
         character(len=:), allocatable, intent(inout) :: msg
         if (accept(t, pos, '-')) then
@@ -602,7 +282,7 @@ contains
         character(len=*), intent(in) :: t
         integer, intent(inout) :: pos
         integer, intent(in) :: syn
-        type(peer_vars), intent(inout) :: vars
+        type(text_vars), intent(inout) :: vars
         real(wp), intent(out) :: x
         character(len=:), allocatable, intent(inout) :: msg
         real(wp) :: y
@@ -625,7 +305,7 @@ contains
         character(len=*), intent(in) :: t
         integer, intent(inout) :: pos
         integer, intent(in) :: syn
-        type(peer_vars), intent(inout) :: vars
+        type(text_vars), intent(inout) :: vars
         real(wp), intent(out) :: x
         character(len=:), allocatable, intent(inout) :: msg
         integer :: start
@@ -697,7 +377,7 @@ contains
                 exit
             end if
         end do
-        if (.not. peer_number(t(start:pos - 1), x, fortran_d=syn == SYNTAX_MFIX)) then
+        if (.not. text_number(t(start:pos - 1), x, fortran_d=syn == SYNTAX_MFIX)) then
             msg = 'malformed number "' // t(start:pos - 1) // '" in "' // t // '"'
         end if
     end subroutine scan_number
@@ -706,7 +386,7 @@ contains
     subroutine lookup(name0, syn, vars, t, x, msg)
         character(len=*), intent(in) :: name0, t
         integer, intent(in) :: syn
-        type(peer_vars), intent(inout) :: vars
+        type(text_vars), intent(inout) :: vars
         real(wp), intent(out) :: x
         character(len=:), allocatable, intent(inout) :: msg
         character(len=:), allocatable :: name
@@ -729,12 +409,12 @@ contains
         select case (name)
         case ('PI')
             if (syn == SYNTAX_LAMMPS) then
-                x = hertzdamp_pi
+                x = pi
                 return
             end if
         case ('pi')
             if (syn /= SYNTAX_LAMMPS) then
-                x = hertzdamp_pi
+                x = pi
                 return
             end if
         case ('True')
@@ -767,7 +447,7 @@ contains
         character(len=*), intent(in) :: t, name0
         integer, intent(inout) :: pos
         integer, intent(in) :: syn
-        type(peer_vars), intent(inout) :: vars
+        type(text_vars), intent(inout) :: vars
         real(wp), intent(out) :: x
         character(len=:), allocatable, intent(inout) :: msg
         real(wp) :: a(8)
@@ -851,11 +531,11 @@ contains
         case ('floor'); x = real(floor(a(1)), wp)
         case ('ceil'); x = real(ceiling(a(1)), wp)
         case ('round'); x = anint(a(1))
-        case ('radians'); x = a(1) * hertzdamp_pi / 180.0_wp
-        case ('degrees'); x = a(1) * 180.0_wp / hertzdamp_pi
+        case ('radians'); x = a(1) * pi / 180.0_wp
+        case ('degrees'); x = a(1) * 180.0_wp / pi
         case ('float'); x = a(1)
         case default
         end select
     end function function_value
 
-end module hertzdamp_peers_text
+end module hertzdamp_text_expr

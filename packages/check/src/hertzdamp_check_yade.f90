@@ -7,12 +7,12 @@
 !> 2023.02a (Debian 12) Thornton et al. (2013) eq. (B6)-(B7), gamma = sqrt(6) betan(e);
 !> from 2024.02a also `vn`, the Kuwabara-Kono (Brilliantov) damping whose e at the
 !> speed vn is `en` by the Mueller-Poeschel Pade.  Yade always clips the total force.
-module hertzdamp_peers_yade
+module hertzdamp_check_yade
     use hertzdamp, only: hertzdamp_rk
-    use hertzdamp_peers, only: peer_deck, peer_spec_row
-    use hertzdamp_peers_common, only: peer_materials, kv_list, bodies, effective_modulus, hertz_k, check_modulus, &
+    use hertzdamp_check_model, only: peer_deck, peer_spec_row
+    use hertzdamp_check_common, only: peer_materials, kv_list, bodies, effective_modulus, hertz_k, check_modulus, &
                                       check_poisson, pair_values, number, take, has, add_note
-    use hertzdamp_apps_text, only: fmt_short, ROUND_TRIP
+    use hertzdamp_text_format, only: fmt_short, ROUND_TRIP
     implicit none
     private
 
@@ -32,11 +32,10 @@ module hertzdamp_peers_yade
 contains
 
     !> Read a Yade contact; msg names the key on failure.
-    subroutine read_yade(kv, mat, release, deck, msg)
+    subroutine read_yade(kv, mat, deck, msg)
         type(kv_list), intent(inout) :: kv
         type(peer_materials), intent(in) :: mat
-        integer, intent(in) :: release                  !! YADE_*
-        type(peer_deck), intent(inout) :: deck
+        type(peer_deck), intent(inout) :: deck          !! deck%release: YADE_*
         character(len=:), allocatable, intent(inout) :: msg
         character(len=:), allocatable :: v, shape
         real(wp) :: ymod(2), nu(2), rho
@@ -69,7 +68,7 @@ contains
         deck%e_star = effective_modulus(ymod, nu)
         deck%k = hertz_k(deck%e_star, deck%radius)
         deck%k_text = 'k = Kno = (4/3) E* sqrt(R), 1/E* = (1-nu1^2)/E1 + (1-nu2^2)/E2'
-        call damping(kv, release, deck, msg)
+        call damping(kv, deck, msg)
         if (len(msg) > 0) return
         deck%deck_text = deck%deck_text // ' FrictMat(young=' // fmt_short(ymod(1), ROUND_TRIP) // ', poisson=' // &
                          fmt_short(nu(1), ROUND_TRIP) // ')'
@@ -126,14 +125,13 @@ contains
     end subroutine wall_radius
 
     !> en (by release), en with vn, or betan: the damping parameter and the row.
-    subroutine damping(kv, release, deck, msg)
+    subroutine damping(kv, deck, msg)
         type(kv_list), intent(inout) :: kv
-        integer, intent(in) :: release
-        type(peer_deck), intent(inout) :: deck
+        type(peer_deck), intent(inout) :: deck   !! deck%release: YADE_*
         character(len=:), allocatable, intent(inout) :: msg
         character(len=:), allocatable :: v, vv
         real(wp) :: e, b
-        if (has(kv, 'vn') .and. release /= YADE_CURRENT) then
+        if (has(kv, 'vn') .and. deck%release /= YADE_CURRENT) then
             msg = 'vn: Ip2_FrictMat_FrictMat_MindlinPhys has vn from Yade 2024.02a (--release current)'
         else if (has(kv, 'vn') .and. .not. has(kv, 'en')) then
             msg = 'vn needs en (the restitution coefficient at the impact speed vn)'
@@ -160,7 +158,7 @@ contains
                 deck%deck_text = deck%deck_text // ', vn=' // vv
                 call add_note(deck, 'vn: Yade builds a Kuwabara-Kono (viscoelastic) damping whose e is en at the ' // &
                               'impact speed vn = ' // vv // ' (Mueller-Poeschel Pade); e changes with the speed by design')
-            else if (release == YADE_2022) then
+            else if (deck%release == YADE_2022) then
                 deck%row = peer_spec_row('yade-en-force')
             else
                 deck%row = peer_spec_row('yade2023-en-force')
@@ -181,11 +179,11 @@ contains
         else
             msg = 'missing en (or betan)'
         end if
-        select case (release)
+        select case (deck%release)
         case (YADE_2022); deck%version = 'Yade 2020.01a to 2022.01a'
         case (YADE_2023); deck%version = 'Yade 2023.02a (Debian 12)'
         case default; deck%version = 'Yade 2024.02a and later'
         end select
     end subroutine damping
 
-end module hertzdamp_peers_yade
+end module hertzdamp_check_yade

@@ -1,17 +1,18 @@
 !> The tables of doc/peers.md section 7 (`hertzdamp check --table`): the e each engine
 !> achieves when the user writes the target into its restitution input, and the speed
 !> dependence of the laws whose e depends on the impact speed.  Markdown lines, or rows
-!> as data (hertzdamp_peers_report) for CSV and JSON.
-module hertzdamp_peers_table
+!> as data (hertzdamp_check_report) for CSV and JSON.
+module hertzdamp_check_table
     use hertzdamp, only: hertzdamp_rk, hertzdamp_end_name, hertzdamp_law_name, hertzdamp_law_speed_exponent, &
                          HD_OK, HD_NO_REBOUND, HD_NO_CONVERGENCE, HD_END_OVERLAP, HD_END_FORCE, HD_DAMPING_LINEAR, &
                          HD_DAMPING_KUWABARA_KONO
-    use hertzdamp_peers, only: peer_deck, peer_text, peer_spec_field, peer_spec_count, peer_law_inverse, &
+    use hertzdamp_check_model, only: peer_deck, peer_spec_field, peer_spec_count, peer_law_inverse, &
                                peer_law_forward, peer_beta, peer_damping, peer_row_law, peer_row_end, peer_row_coef, &
                                peer_nan, peer_float, COEF_GAMMA_P6, COEF_GAMMA_SQRT2_P6, COEF_GAMMA_SQRT5_BETA, &
                                COEF_GAMMA_2BETA, COEF_GAMMA_SQRT6, COEF_GAMMA_SQRT5_BETA_EPS, COEF_GAMMA_SQRT6_THORNTON
-    use hertzdamp_peers_report, only: peer_report
-    use hertzdamp_apps_text, only: fmt_short, ROUND_TRIP
+    use hertzdamp_check_report, only: peer_report
+    use hertzdamp_text_list, only: text_string
+    use hertzdamp_text_format, only: fmt_short, ROUND_TRIP
     implicit none
     private
 
@@ -142,48 +143,28 @@ contains
         end select
     end function short_option
 
-    !> A row's version, short.
+    !> A row's version, short: by the first of these prefixes its id starts with.
     function short_version(row) result(s)
         integer, intent(in) :: row
         character(len=:), allocatable :: s
-        character(len=:), allocatable :: id
-        id = peer_spec_field(row, 'id')
-        if (index(id, 'lammps-2021-') == 1) then
-            s = '29 Sep 2021'
-        else if (index(id, 'lammps-2023-') == 1) then
-            s = '28 Mar 2023 - 29 Aug 2024'
-        else if (index(id, 'lammps-current-') == 1) then
-            s = 'current (07b704ca)'
-        else if (index(id, 'lammps-2024-') == 1) then
-            s = '27 Jun 2024 +'
-        else if (index(id, 'liggghts') == 1) then
-            s = '3.8.0'
-        else if (index(id, 'mercurydpm2015') == 1) then
-            s = 'Beta 2015'
-        else if (index(id, 'mercurydpm') == 1) then
-            s = 'trunk 2018-2024'
-        else if (index(id, 'lammps-hertz_history') == 1) then
-            s = '29 Sep 2021 +'
-        else if (index(id, 'yade2023') == 1) then
-            s = '2023.02a +'
-        else if (index(id, 'yade2024') == 1) then
-            s = '2024.02a +'
-        else if (id == 'yade-betan-force') then
-            s = '2020 trunk +'
-        else if (index(id, 'yade') == 1) then
-            s = '2020-2022 trunk'
-        else if (index(id, 'mfix') == 1) then
-            s = '21.3.2'
-        else if (index(id, 'chrono') == 1) then
-            s = '9.0.1 - 2026'
-        else
-            s = ''
-        end if
+        character(len=*), parameter :: prefix(14) = [character(len=20) :: 'lammps-2021-', 'lammps-2023-', &
+            'lammps-current-', 'lammps-2024-', 'liggghts', 'mercurydpm2015', 'mercurydpm', 'lammps-hertz_history', &
+            'yade2023', 'yade2024', 'yade-betan-force', 'yade', 'mfix', 'chrono']
+        character(len=*), parameter :: label(14) = [character(len=25) :: '29 Sep 2021', '28 Mar 2023 - 29 Aug 2024', &
+            'current (07b704ca)', '27 Jun 2024 +', '3.8.0', 'Beta 2015', 'trunk 2018-2024', '29 Sep 2021 +', &
+            '2023.02a +', '2024.02a +', '2020 trunk +', '2020-2022 trunk', '21.3.2', '9.0.1 - 2026']
+        integer :: k
+        s = ''
+        do k = 1, size(prefix)
+            if (index(peer_spec_field(row, 'id'), trim(prefix(k))) /= 1) cycle
+            s = trim(label(k))
+            return
+        end do
     end function short_version
 
     !> The markdown tables of doc/peers.md (the text form of `check --table`).
     subroutine peer_table_lines(lines)
-        type(peer_text), allocatable, intent(out) :: lines(:)
+        type(text_string), allocatable, intent(out) :: lines(:)
         integer :: row, j, st, law, iend, k
         real(wp) :: e
         character(len=:), allocatable :: s
@@ -209,8 +190,9 @@ contains
         end do
         call add('')
         call add('Speed dependence of the other laws: the engine''s coefficient is chosen to give the target ' // &
-                 'e exactly at u0; e at other impact speeds u (alpha ~ u^(-1/5) for linear, u^(1/5) for ' // &
-                 'kuwabara-kono):')
+                 'e exactly at u0; e at other impact speeds u (alpha ~ u^(-1/5) for ' // &
+                 hertzdamp_law_name(HD_DAMPING_LINEAR) // ', u^(1/5) for ' // &
+                 hertzdamp_law_name(HD_DAMPING_KUWABARA_KONO) // '):')
         call add('')
         call add('| law | end | used by | target e | u = u0/100 | u0/10 | u0 | 10 u0 | 100 u0 |')
         call add('| --- | --- | --- | --- | --- | --- | --- | --- | --- |')
@@ -235,7 +217,7 @@ contains
     contains
         subroutine add(line)
             character(len=*), intent(in) :: line
-            lines = [lines, peer_text(line)]
+            lines = [lines, text_string(line)]
         end subroutine add
     end subroutine peer_table_lines
 
@@ -290,4 +272,4 @@ contains
         end subroutine put
     end subroutine peer_table_report
 
-end module hertzdamp_peers_table
+end module hertzdamp_check_table

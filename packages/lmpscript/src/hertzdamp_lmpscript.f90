@@ -7,19 +7,21 @@
 !> dimension, timestep, create_box, create_atoms, set (type and group all: diameter,
 !> density, mass), read_data (not read: noted) and the integrator fixes; commands that
 !> cannot change a normal contact are read and passed over.  Every other command is
-!> handed to the engine's reader (`script_next`), which notes what it cannot interpret.
+!> handed to the engine's own reader (an extension of `lmp_commands`, given to
+!> `lmp_read`); what neither interprets is noted with its file:line.
 !>
-!> The work is linear in the deck: each line is scanned a bounded number of times and
-!> every name lookup is a hash-map probe (counted in scene%work).
-module hertzdamp_peers_script
-    use hertzdamp, only: hertzdamp_rk
-    use hertzdamp_peers, only: peer_text
-    use hertzdamp_peers_text, only: peer_list, peer_vars, peer_words, peer_eval, peer_number, peer_num_text, &
-                                    peer_g15, peer_directory, SYNTAX_LAMMPS
-    use hertzdamp_peers_scene, only: peer_scene, peer_read_lines, peer_where
-    use hertzdamp_peers_common, only: join
-    use hertzdamp_host, only: HD_HOST_NONE, HD_HOST_LAMMPS
-    use hertzdamp_apps_text, only: itoa, fmt_short
+!> An include that cannot be read, or one nested deeper than `max_depth` files (a deck
+!> that includes itself), stops the reading with an error, as it stops LAMMPS.  The
+!> work is linear in the deck: each line is scanned a bounded number of times and every
+!> name lookup is a hash-map probe (counted in `work`).
+module hertzdamp_lmpscript
+    use hertzdamp, only: hertzdamp_rk, HD_HOST_NONE, HD_HOST_LAMMPS
+    use hertzdamp_text_list, only: text_string, text_list, text_join
+    use hertzdamp_text_parse, only: text_words, text_number, text_shortest, text_g15, text_directory, &
+                                    text_find_unquoted
+    use hertzdamp_text_expr, only: text_vars, text_eval, SYNTAX_LAMMPS
+    use hertzdamp_text_file, only: text_read_lines, text_where
+    use hertzdamp_text_format, only: itoa, fmt_short
     use, intrinsic :: iso_fortran_env, only: int64
     implicit none
     private
@@ -30,14 +32,24 @@ module hertzdamp_peers_script
     !> One open file.
     type :: script_file
         character(len=:), allocatable :: name
-        type(peer_list) :: lines
+        type(text_list) :: lines
         integer :: next = 1
     end type script_file
 
-    !> The interpreter's state: the scene being filled, variables, open files, atom types.
-    type, public :: peer_script
-        type(peer_scene) :: scene
-        type(peer_vars) :: vars
+    !> The interpreter's state: what the deck sets for every engine (units, time step,
+    !> integrator, atom types and their sizes), what was not interpreted, the variables
+    !> and the open files.
+    type, public :: lmp_script
+        character(len=:), allocatable :: units    !! unit system of the deck (all numbers are in it)
+        real(wp) :: dt = 0.0_wp                   !! the time step (0: unknown)
+        character(len=:), allocatable :: dt_text  !! where the time step comes from
+        integer :: host = HD_HOST_NONE            !! the integrator as a host scheme
+        character(len=:), allocatable :: host_text  !! the integrator, or why it is not modeled
+        type(text_list) :: notes                  !! what was not interpreted, with file:line
+        type(text_list) :: files                  !! the files read
+        integer(int64) :: work = 0                !! characters and words read, map probes (linear in the deck)
+        character(len=:), allocatable :: error    !! why the reading stopped ('' when it did not)
+        type(text_vars) :: vars
         type(script_file) :: stack(max_depth)
         integer :: depth = 0
         integer :: ntypes = 0                    !! create_box
@@ -45,46 +57,97 @@ module hertzdamp_peers_script
         real(wp), allocatable :: dens(:)         !! lowest density of each type (<= 0: none known)
         real(wp), allocatable :: mass(:)         !! set type N mass (<= 0: none)
         logical, allocatable :: atoms(:)         !! the type has atoms (created, poured, ...)
-        type(peer_text), allocatable :: src(:)   !! where each type's sizes come from
+        type(text_string), allocatable :: src(:)   !! where each type's sizes come from
         integer :: dimension = 3
         logical :: liggghts = .false.            !! LIGGGHTS (communicate, atom_style granular)
         logical :: have_dt = .false.
         logical :: have_integrator = .false.
-    end type peer_script
+    contains
+        procedure :: note => script_note         !! something not interpreted (or a remark), with file:line
+    end type lmp_script
 
-    public :: script_open, script_next, script_types, script_type_range, script_size, script_add_size
+    !> An engine's own commands (pair styles, walls, particle sizes ...): the reader that
+    !> `lmp_read` hands every command it does not interpret itself.
+    type, abstract, public :: lmp_commands
+    contains
+        procedure(command_iface), deferred :: command   !! interpret one command (handled: it did)
+    end type lmp_commands
+
+    abstract interface
+        subroutine command_iface(self, st, w, where, handled)
+            import :: lmp_commands, lmp_script, text_list
+            implicit none
+            class(lmp_commands), intent(inout) :: self
+            type(lmp_script), intent(inout) :: st     !! the interpreter (notes, atom types)
+            type(text_list), intent(in) :: w          !! the command's words
+            character(len=*), intent(in) :: where     !! its file:line
+            logical, intent(out) :: handled           !! false: neither read nor passed over
+        end subroutine command_iface
+    end interface
+
+    public :: lmp_read, lmp_types, lmp_type_range, lmp_size, lmp_add_size, lmp_active_types
 
 contains
 
-    !> Start reading the deck files (read in order, as if included one after another).
-    subroutine script_open(st, paths, liggghts, msg)
-        type(peer_script), intent(inout) :: st
-        type(peer_text), intent(in) :: paths(:)
-        logical, intent(in) :: liggghts
-        character(len=:), allocatable, intent(out) :: msg
+    !> Read the deck files in order (as if included one after another): the commands this
+    !> module interprets on the way, every other one handed to `reader` (noted when it
+    !> does not interpret it either).  msg: a deck file that cannot be read, or why the
+    !> reading stopped (an include).
+    subroutine lmp_read(st, paths, liggghts, reader, msg)
+        type(lmp_script), intent(out) :: st
+        type(text_string), intent(in) :: paths(:)            !! the deck's files
+        logical, intent(in) :: liggghts                      !! LIGGGHTS (else LAMMPS)
+        class(lmp_commands), intent(inout) :: reader         !! the engine's own commands
+        character(len=:), allocatable, intent(out) :: msg    !! '' when the deck is read
+        type(text_list) :: w
+        character(len=:), allocatable :: where
+        logical :: more, handled
         integer :: i
         msg = ''
+        st%error = ''
         st%liggghts = liggghts
-        st%scene%units = 'lj'
-        st%scene%dt_text = ''
-        st%scene%host = HD_HOST_NONE
-        st%scene%host_text = 'no fix nve/sphere: the particles are not integrated'
+        st%units = 'lj'
+        st%dt_text = ''
+        st%host = HD_HOST_NONE
+        st%host_text = 'no fix nve/sphere: the particles are not integrated'
         allocate (st%diam(0), st%dens(0), st%mass(0), st%atoms(0), st%src(0))
         ! the files are a stack: the first on top
         do i = size(paths), 1, -1
-            call push_file(st, paths(i)%s, '', msg)
-            if (len(msg) > 0) return
+            call push_file(st, paths(i)%s, '')
+            if (len(st%error) > 0) exit
         end do
-    end subroutine script_open
+        do while (len(st%error) == 0)
+            call next_command(st, w, where, more)
+            if (.not. more) exit
+            call reader%command(st, w, where, handled)
+            if (handled) cycle
+            if (w%item(1)%s == 'fix' .and. w%n >= 4) then
+                call st%note(where, 'fix style ' // w%item(4)%s // ' is not interpreted')
+            else
+                call st%note(where, 'command ' // w%item(1)%s // ' is not interpreted')
+            end if
+        end do
+        msg = st%error
+    end subroutine lmp_read
 
-    subroutine push_file(st, path, where, msg)
-        type(peer_script), intent(inout) :: st
+    !> Something the reader did not interpret (or a remark), prefixed with file:line.
+    subroutine script_note(self, where, text)
+        class(lmp_script), intent(inout) :: self
+        character(len=*), intent(in) :: where   !! file:line ('' for none)
+        character(len=*), intent(in) :: text    !! what
+        call self%notes%note(where, text)
+    end subroutine script_note
+
+    !> Open a deck file or an include (`where`: the include's file:line, '' for a deck
+    !> file); st%error when it cannot be read or is nested too deep.
+    subroutine push_file(st, path, where)
+        type(lmp_script), intent(inout) :: st
         character(len=*), intent(in) :: path, where
-        character(len=:), allocatable, intent(inout) :: msg
         character(len=:), allocatable :: m
         logical :: found
         if (st%depth == max_depth) then
-            msg = where // ': include nested deeper than ' // itoa(max_depth) // ' files'
+            st%error = where // ': include ' // path // ': nested deeper than ' // itoa(max_depth) // &
+                       ' files (does the deck include itself?); LAMMPS would not finish reading it'
             return
         end if
         st%depth = st%depth + 1
@@ -93,28 +156,28 @@ contains
         ! an include is looked up beside the file that includes it, then in the working directory
         if (st%depth > 1 .and. len(path) > 0) then
             if (path(1:1) /= '/') then
-                inquire (file=peer_directory(st%stack(st%depth - 1)%name) // path, exist=found)
-                if (found) st%stack(st%depth)%name = peer_directory(st%stack(st%depth - 1)%name) // path
+                inquire (file=text_directory(st%stack(st%depth - 1)%name) // path, exist=found)
+                if (found) st%stack(st%depth)%name = text_directory(st%stack(st%depth - 1)%name) // path
             end if
         end if
-        call peer_read_lines(st%stack(st%depth)%name, st%stack(st%depth)%lines, m, st%scene%work)
+        call text_read_lines(st%stack(st%depth)%name, st%stack(st%depth)%lines, m, st%work)
         if (len(m) > 0) then
             st%depth = st%depth - 1
-            msg = m
-            if (len(where) > 0) msg = where // ': include ' // m
+            st%error = m
+            if (len(where) > 0) st%error = where // ': include ' // m
             return
         end if
-        call st%scene%files%push(st%stack(st%depth)%name)
+        call st%files%push(st%stack(st%depth)%name)
     end subroutine push_file
 
     !> The next logical line (continuations joined), with the file:line of its start.
     subroutine next_line(st, line, where, more)
-        type(peer_script), intent(inout) :: st
+        type(lmp_script), intent(inout) :: st
         character(len=:), allocatable, intent(out) :: line, where
         logical, intent(out) :: more
         character(len=:), allocatable :: t
         integer :: k
-        type(peer_list) :: parts
+        type(text_list) :: parts
         more = .false.
         line = ''
         where = ''
@@ -128,7 +191,7 @@ contains
         if (st%depth == 0) return
         more = .true.
         associate (f => st%stack(st%depth))
-            where = peer_where(f%name, f%next)
+            where = text_where(f%name, f%next)
             do while (f%next <= f%lines%n)
                 t = f%lines%item(f%next)%s
                 f%next = f%next + 1
@@ -141,61 +204,46 @@ contains
                 call parts%push(t(1:k - 1))
             end do
         end associate
-        line = join(parts%items())
+        line = text_join(parts%items())
     end subroutine next_line
 
     !> The next command the engine's reader has to interpret: its words (quotes removed)
-    !> and file:line; `more` false at the end of the deck.  Common commands are
-    !> interpreted on the way (see the module).
-    subroutine script_next(st, words, where, more)
-        type(peer_script), intent(inout) :: st
-        type(peer_list), intent(out) :: words
+    !> and file:line; `more` false at the end of the deck or at an error.  Common commands
+    !> are interpreted on the way (see the module).
+    subroutine next_command(st, words, where, more)
+        type(lmp_script), intent(inout) :: st
+        type(text_list), intent(out) :: words
         character(len=:), allocatable, intent(out) :: where
         logical, intent(out) :: more
         character(len=:), allocatable :: line, text
         logical :: handled
+        integer :: k
         do
             call next_line(st, line, where, more)
             if (.not. more) return
-            call strip_comment(line)
+            k = text_find_unquoted(line, '#')
+            if (k > 0) line = line(1:k - 1)
             if (len_trim(line) == 0) cycle
             call substitute(st, line, where, text, handled)
             if (handled) cycle            ! a substitution failed: noted
-            call peer_words(text, words, quotes=.true.)
-            st%scene%work = st%scene%work + len(text) + words%n
+            call text_words(text, words, quotes=.true.)
+            st%work = st%work + len(text) + words%n
             if (words%n == 0) cycle
             call common_command(st, words, where, handled)
-            if (.not. handled) return
+            more = len(st%error) == 0
+            if (.not. (handled .and. more)) return
             words%n = 0
         end do
-    end subroutine script_next
-
-    !> Cut the line at the first # outside quotes.
-    subroutine strip_comment(line)
-        character(len=:), allocatable, intent(inout) :: line
-        character :: q
-        integer :: i
-        q = ' '
-        do i = 1, len(line)
-            if (q /= ' ') then
-                if (line(i:i) == q) q = ' '
-            else if (line(i:i) == '"' .or. line(i:i) == '''') then
-                q = line(i:i)
-            else if (line(i:i) == '#') then
-                line = line(1:i - 1)
-                return
-            end if
-        end do
-    end subroutine strip_comment
+    end subroutine next_command
 
     !> ${name}, $x and $(expr) replaced outside quotes; `failed` when a name has no
     !> value (the command is noted and skipped, as LAMMPS would stop there).
     subroutine substitute(st, line, where, out, failed)
-        type(peer_script), intent(inout) :: st
+        type(lmp_script), intent(inout) :: st
         character(len=*), intent(in) :: line, where
         character(len=:), allocatable, intent(out) :: out
         logical, intent(out) :: failed
-        type(peer_list) :: parts
+        type(text_list) :: parts
         character(len=:), allocatable :: name, val, msg
         character :: q
         integer :: i, j, start
@@ -213,7 +261,7 @@ contains
                 call reference(line, i, name, j)
                 call variable_text(st, line(i + 1:i + 1), name, val, msg)
                 if (len(msg) > 0) then
-                    call st%scene%note(where, msg // ': the command is not interpreted')
+                    call st%note(where, msg // ': the command is not interpreted')
                     failed = .true.
                     return
                 end if
@@ -224,25 +272,8 @@ contains
             i = i + 1
         end do
         call parts%push(line(start:))
-        out = join_plain(parts)
+        out = text_join(parts%item(1:parts%n), '')   ! (parts holds the text after the last reference)
     end subroutine substitute
-
-    !> The text of a list without separators (linear).
-    function join_plain(parts) result(s)
-        type(peer_list), intent(in) :: parts
-        character(len=:), allocatable :: s
-        integer :: i, n, k
-        n = 0
-        do i = 1, parts%n
-            n = n + len(parts%item(i)%s)
-        end do
-        allocate (character(len=n) :: s)
-        k = 0
-        do i = 1, parts%n
-            s(k + 1:k + len(parts%item(i)%s)) = parts%item(i)%s
-            k = k + len(parts%item(i)%s)
-        end do
-    end function join_plain
 
     !> The reference starting at line(i) = '$': its name (or expression) and last index j.
     subroutine reference(line, i, name, j)
@@ -273,7 +304,7 @@ contains
     !> The value a reference substitutes: `kind` '{' or a letter: a variable; '(': an
     !> immediate expression (an optional :format is dropped; full precision).
     subroutine variable_text(st, kind, name, val, msg)
-        type(peer_script), intent(inout) :: st
+        type(lmp_script), intent(inout) :: st
         character(len=*), intent(in) :: kind, name
         character(len=:), allocatable, intent(out) :: val, msg
         real(wp) :: x
@@ -283,17 +314,17 @@ contains
         if (kind == '(') then
             k = index(name, ':', back=.true.)
             if (k == 0) k = len(name) + 1
-            call peer_eval(name(1:k - 1), SYNTAX_LAMMPS, st%vars, x, msg)
-            if (len(msg) == 0) val = peer_num_text(x)
+            call text_eval(name(1:k - 1), SYNTAX_LAMMPS, st%vars, x, msg)
+            if (len(msg) == 0) val = text_shortest(x)
             if (len(msg) > 0) msg = '$(' // name // '): ' // msg
             return
         end if
         i = st%vars%find(name)
-        st%scene%work = st%scene%work + 1
+        st%work = st%work + 1
         if (i == 0) then
             msg = 'variable ' // name // ' is not defined'
         else if (st%vars%numeric(i) .and. len(st%vars%text(i)%s) == 0) then
-            val = peer_g15(st%vars%x(i))      ! an equal-style value, as LAMMPS's "%.15g"
+            val = text_g15(st%vars%x(i))      ! an equal-style value, as LAMMPS's "%.15g"
         else if (index(st%vars%text(i)%s, 'no value:') == 1) then
             msg = 'variable ' // name // ' has ' // st%vars%text(i)%s
         else
@@ -301,23 +332,19 @@ contains
         end if
     end subroutine variable_text
 
-
     !> The commands interpreted for every engine; handled false for the others.
     subroutine common_command(st, w, where, handled)
-        type(peer_script), intent(inout) :: st
-        type(peer_list), intent(in) :: w
+        type(lmp_script), intent(inout) :: st
+        type(text_list), intent(in) :: w
         character(len=*), intent(in) :: where
         logical, intent(out) :: handled
-        character(len=:), allocatable :: msg
         handled = .true.
-        msg = ''
         select case (w%item(1)%s)
         case ('include')
             if (w%n < 2) then
-                call st%scene%note(where, 'include without a file name')
+                call st%note(where, 'include without a file name')
             else
-                call push_file(st, w%item(2)%s, where, msg)
-                if (len(msg) > 0) call st%scene%note('', msg)
+                call push_file(st, w%item(2)%s, where)
             end if
         case ('variable')
             call define_variable(st, w, where)
@@ -328,7 +355,7 @@ contains
         case ('fix')
             call integrator_fix(st, w, where, handled)
         case ('jump', 'next', 'if', 'label', 'loop')
-            call st%scene%note(where, w%item(1)%s // ': flow control is not followed; every command is read ' // &
+            call st%note(where, w%item(1)%s // ': flow control is not followed; every command is read ' // &
                                'once, in the order of the files')
         case default
             handled = passed_over(w%item(1)%s)
@@ -357,14 +384,14 @@ contains
     !> variable NAME STYLE args (LAMMPS variable.cpp semantics: an index-style name that
     !> exists is not redefined; equal-style formulas are evaluated when defined).
     subroutine define_variable(st, w, where)
-        type(peer_script), intent(inout) :: st
-        type(peer_list), intent(in) :: w
+        type(lmp_script), intent(inout) :: st
+        type(text_list), intent(in) :: w
         character(len=*), intent(in) :: where
         character(len=:), allocatable :: name, style, msg
         real(wp) :: x
         integer :: i
         if (w%n < 3) then
-            call st%scene%note(where, 'variable: missing name or style')
+            call st%note(where, 'variable: missing name or style')
             return
         end if
         name = w%item(2)%s
@@ -376,7 +403,7 @@ contains
         case ('index', 'loop', 'world', 'universe', 'uloop')
             if (i > 0 .and. style == 'index') return
             if (w%n < 4) then
-                call st%scene%note(where, 'variable ' // name // ' ' // style // ' without a value')
+                call st%note(where, 'variable ' // name // ' ' // style // ' without a value')
             else if (style == 'loop' .and. w%n == 4) then
                 call st%vars%set_text(name, '1')
             else
@@ -384,55 +411,55 @@ contains
             end if
         case ('string', 'internal', 'getenv', 'format', 'file', 'atomfile', 'python', 'timer', 'atom', 'vector')
             if ((style == 'string' .or. style == 'internal') .and. w%n >= 4) then
-                call st%vars%set_text(name, join(w%item(4:w%n)))
+                call st%vars%set_text(name, text_join(w%item(4:w%n)))
             else
                 call st%vars%set_text(name, 'no value: ' // style // '-style variable (' // where // ')')
             end if
         case ('equal')
-            call peer_eval(join(w%item(4:w%n)), SYNTAX_LAMMPS, st%vars, x, msg)
+            call text_eval(text_join(w%item(4:w%n)), SYNTAX_LAMMPS, st%vars, x, msg)
             if (len(msg) == 0) then
                 call st%vars%set_num(name, x)
             else
                 call st%vars%set_text(name, 'no value: ' // msg // ' (' // where // ')')
             end if
         case default
-            call st%scene%note(where, 'variable style ' // style // ' is not interpreted')
+            call st%note(where, 'variable style ' // style // ' is not interpreted')
         end select
     end subroutine define_variable
 
     !> units, dimension, timestep, atom_style.
     subroutine setting(st, w, where)
-        type(peer_script), intent(inout) :: st
-        type(peer_list), intent(in) :: w
+        type(lmp_script), intent(inout) :: st
+        type(text_list), intent(in) :: w
         character(len=*), intent(in) :: where
         real(wp) :: x
         if (w%n < 2) then
-            call st%scene%note(where, w%item(1)%s // ' without a value')
+            call st%note(where, w%item(1)%s // ' without a value')
             return
         end if
         select case (w%item(1)%s)
         case ('units')
-            st%scene%units = w%item(2)%s
-            select case (st%scene%units)
+            st%units = w%item(2)%s
+            select case (st%units)
             case ('si', 'cgs', 'lj', 'micro', 'nano')
             case default
-                call st%scene%note(where, 'units ' // st%scene%units // ': granular contacts are checked in si, cgs, ' // &
+                call st%note(where, 'units ' // st%units // ': granular contacts are checked in si, cgs, ' // &
                                    'lj, micro and nano units (nktv2p = 1); other units scale gran/hertz/history Kn')
             end select
         case ('dimension')
             if (w%item(2)%s == '2') st%dimension = 2
         case ('timestep')
-            if (peer_number(w%item(2)%s, x) .and. x > 0.0_wp) then
-                st%scene%dt = x
-                st%scene%dt_text = 'timestep ' // w%item(2)%s // ' (' // where // ')'
+            if (text_number(w%item(2)%s, x) .and. x > 0.0_wp) then
+                st%dt = x
+                st%dt_text = 'timestep ' // w%item(2)%s // ' (' // where // ')'
                 st%have_dt = .true.
             else
-                call st%scene%note(where, 'timestep ' // w%item(2)%s // ': not a positive number')
+                call st%note(where, 'timestep ' // w%item(2)%s // ': not a positive number')
             end if
         case ('atom_style')
             if (w%item(2)%s == 'granular') st%liggghts = .true.
             if (w%item(2)%s /= 'sphere' .and. w%item(2)%s /= 'granular' .and. w%item(2)%s /= 'hybrid') then
-                call st%scene%note(where, 'atom_style ' // w%item(2)%s // ': the checker expects sphere (granular)')
+                call st%note(where, 'atom_style ' // w%item(2)%s // ': the checker expects sphere (granular)')
             end if
         case default
         end select
@@ -440,20 +467,20 @@ contains
 
     !> create_box N, create_atoms T, set type|group all ..., read_data, mass.
     subroutine atoms_command(st, w, where)
-        type(peer_script), intent(inout) :: st
-        type(peer_list), intent(in) :: w
+        type(lmp_script), intent(inout) :: st
+        type(text_list), intent(in) :: w
         character(len=*), intent(in) :: where
         integer :: t, lo, hi
         real(wp) :: x
         select case (w%item(1)%s)
         case ('create_box')
             if (w%n >= 2) then
-                if (peer_number(w%item(2)%s, x)) call script_types(st, nint(x))
+                if (text_number(w%item(2)%s, x)) call lmp_types(st, nint(x))
             end if
         case ('create_atoms')
-            call script_type_range(st, w, 2, lo, hi)
+            call lmp_type_range(st, w, 2, lo, hi)
             if (lo < 1) then
-                call st%scene%note(where, 'create_atoms: atom type ' // w%item(min(2, w%n))%s // ' not read')
+                call st%note(where, 'create_atoms: atom type ' // w%item(min(2, w%n))%s // ' not read')
             else if (w%n >= 3) then
                 do t = lo, hi
                     st%atoms(t) = .true.
@@ -462,44 +489,44 @@ contains
         case ('set')
             call set_command(st, w, where)
         case ('read_data', 'read_restart')
-            call st%scene%note(where, w%item(1)%s // ': the atoms, their types and sizes in the file are not read; ' // &
+            call st%note(where, w%item(1)%s // ': the atoms, their types and sizes in the file are not read; ' // &
                                'types without another size are checked with LAMMPS''s default diameter 1 and density 1')
-            if (st%ntypes == 0) call st%scene%note(where, w%item(1)%s // ': the number of atom types is not known')
+            if (st%ntypes == 0) call st%note(where, w%item(1)%s // ': the number of atom types is not known')
             st%atoms = .true.
         case ('mass')
-            call st%scene%note(where, 'mass: per-type masses are not used by atom_style sphere (rmass from density)')
+            call st%note(where, 'mass: per-type masses are not used by atom_style sphere (rmass from density)')
         case default
         end select
     end subroutine atoms_command
 
     !> set type N (or group all) diameter D | density rho | mass m ...
     subroutine set_command(st, w, where)
-        type(peer_script), intent(inout) :: st
-        type(peer_list), intent(in) :: w
+        type(lmp_script), intent(inout) :: st
+        type(text_list), intent(in) :: w
         character(len=*), intent(in) :: where
         integer :: lo, hi, i, t
         real(wp) :: x
         if (w%n < 5) return
         if (w%item(2)%s == 'type') then
-            call script_type_range(st, w, 3, lo, hi)
+            call lmp_type_range(st, w, 3, lo, hi)
         else if (w%item(2)%s == 'group' .and. w%item(3)%s == 'all') then
             lo = 1
             hi = st%ntypes
         else
-            call st%scene%note(where, 'set ' // w%item(2)%s // ' ' // w%item(3)%s // ': only set type N and set ' // &
+            call st%note(where, 'set ' // w%item(2)%s // ' ' // w%item(3)%s // ': only set type N and set ' // &
                                'group all are mapped to atom types; this set is not used')
             return
         end if
         if (lo < 1) then
-            call st%scene%note(where, 'set: atom type ' // w%item(3)%s // ' not read')
+            call st%note(where, 'set: atom type ' // w%item(3)%s // ' not read')
             return
         end if
         i = 4
         do while (i + 1 <= w%n)
             select case (w%item(i)%s)
             case ('diameter', 'density', 'mass', 'density/disc')
-                if (.not. peer_number(w%item(i + 1)%s, x)) then
-                    call st%scene%note(where, 'set ' // w%item(i)%s // ' ' // w%item(i + 1)%s // ': not a number')
+                if (.not. text_number(w%item(i + 1)%s, x)) then
+                    call st%note(where, 'set ' // w%item(i)%s // ' ' // w%item(i + 1)%s // ': not a number')
                 else
                     do t = lo, hi
                         call set_one(st, t, w%item(i)%s, x, where)
@@ -512,12 +539,12 @@ contains
     end subroutine set_command
 
     subroutine set_one(st, t, what, x, where)
-        type(peer_script), intent(inout) :: st
+        type(lmp_script), intent(inout) :: st
         integer, intent(in) :: t
         character(len=*), intent(in) :: what, where
         real(wp), intent(in) :: x
         if (.not. st%atoms(t)) then
-            call st%scene%note(where, 'set type ' // itoa(t) // ' ' // what // ': no atom of type ' // itoa(t) // &
+            call st%note(where, 'set type ' // itoa(t) // ' ' // what // ': no atom of type ' // itoa(t) // &
                                ' exists yet, so LAMMPS changes none')
             return
         end if
@@ -526,7 +553,7 @@ contains
         case ('density'); st%dens(t) = x
         case ('mass'); st%mass(t) = x
         case default
-            call st%scene%note(where, 'set density/disc: the mass is pi r^2 rho (2d discs); the checker uses ' // &
+            call st%note(where, 'set density/disc: the mass is pi r^2 rho (2d discs); the checker uses ' // &
                                '(4/3) pi r^3 rho')
             st%dens(t) = x
         end select
@@ -536,8 +563,8 @@ contains
     !> fix nve/sphere is LAMMPS's velocity Verlet (the host scheme `lammps`); other
     !> integrators are noted; the remaining fixes go to the engine's reader.
     subroutine integrator_fix(st, w, where, handled)
-        type(peer_script), intent(inout) :: st
-        type(peer_list), intent(in) :: w
+        type(lmp_script), intent(inout) :: st
+        type(text_list), intent(in) :: w
         character(len=*), intent(in) :: where
         logical, intent(out) :: handled
         character(len=:), allocatable :: style
@@ -547,23 +574,23 @@ contains
         select case (style)
         case ('nve/sphere', 'nve/sphere/omp', 'nve/sphere/kk')
             handled = .true.
-            if (st%have_integrator .and. st%scene%host /= HD_HOST_LAMMPS) return
-            st%scene%host = HD_HOST_LAMMPS
-            st%scene%host_text = 'fix ' // style // ' (' // where // '): velocity Verlet, the damping sees the ' // &
+            if (st%have_integrator .and. st%host /= HD_HOST_LAMMPS) return
+            st%host = HD_HOST_LAMMPS
+            st%host_text = 'fix ' // style // ' (' // where // '): velocity Verlet, the damping sees the ' // &
                                  'half-step velocity'
             st%have_integrator = .true.
         case ('nve', 'nve/limit', 'nvt/sphere', 'nph/sphere', 'npt/sphere', 'nve/asphere', 'rigid', 'rigid/small', &
               'rigid/nve', 'rigid/small/nve', 'nve/noforce', 'multisphere', 'nve/nonspherical', 'nve/superquadric')
             handled = .true.
-            st%scene%host = HD_HOST_NONE
-            st%scene%host_text = 'fix ' // style // ' (' // where // '): an integrator the checker does not model'
+            st%host = HD_HOST_NONE
+            st%host_text = 'fix ' // style // ' (' // where // '): an integrator the checker does not model'
             st%have_integrator = .true.
         case ('gravity', 'enforce2d', 'balance', 'ave/time', 'ave/atom', 'ave/chunk', 'ave/histo', 'print', &
               'store/state', 'halt', 'check/timestep/gran', 'momentum', 'ave/euler', 'property/atom')
             handled = .true.
         case ('viscous', 'langevin', 'freeze', 'dt/reset', 'damping/cundall', 'viscous/sphere')
             handled = .true.
-            call st%scene%note(where, 'fix ' // style // ' changes the collisions (drag, frozen partners or a ' // &
+            call st%note(where, 'fix ' // style // ' changes the collisions (drag, frozen partners or a ' // &
                                'varying time step); the checker does not model it')
         case default
         end select
@@ -572,12 +599,12 @@ contains
     ! ------------------------------------------------------------------ atom types
 
     !> Number of atom types (create_box); the per-type arrays grow to it.
-    subroutine script_types(st, n)
-        type(peer_script), intent(inout) :: st
+    subroutine lmp_types(st, n)
+        type(lmp_script), intent(inout) :: st
         integer, intent(in) :: n
         real(wp), allocatable :: d(:), r(:), m(:)
         logical, allocatable :: a(:)
-        type(peer_text), allocatable :: s(:)
+        type(text_string), allocatable :: s(:)
         integer :: k, i
         if (n <= st%ntypes .or. n > 100000) return
         k = st%ntypes
@@ -600,12 +627,12 @@ contains
         call move_alloc(a, st%atoms)
         call move_alloc(s, st%src)
         st%ntypes = n
-    end subroutine script_types
+    end subroutine lmp_types
 
     !> The atom types of word k: N, *, N*, *N, M*N (LAMMPS utils::bounds); lo = 0 if not a type.
-    subroutine script_type_range(st, w, k, lo, hi)
-        type(peer_script), intent(in) :: st
-        type(peer_list), intent(in) :: w
+    subroutine lmp_type_range(st, w, k, lo, hi)
+        type(lmp_script), intent(in) :: st
+        type(text_list), intent(in) :: w
         integer, intent(in) :: k
         integer, intent(out) :: lo, hi
         character(len=:), allocatable :: t
@@ -617,7 +644,7 @@ contains
         t = w%item(k)%s
         j = index(t, '*')
         if (j == 0) then
-            if (peer_number(t, x)) then
+            if (text_number(t, x)) then
                 lo = nint(x)
                 hi = lo
             end if
@@ -625,11 +652,11 @@ contains
             lo = 1
             hi = st%ntypes
             if (j > 1) then
-                if (.not. peer_number(t(1:j - 1), x)) lo = 0
+                if (.not. text_number(t(1:j - 1), x)) lo = 0
                 if (lo > 0) lo = nint(x)
             end if
             if (j < len(t)) then
-                if (.not. peer_number(t(j + 1:), y)) lo = 0
+                if (.not. text_number(t(j + 1:), y)) lo = 0
                 if (lo > 0) hi = nint(y)
             end if
         end if
@@ -637,11 +664,24 @@ contains
             lo = 0
             hi = -1
         end if
-    end subroutine script_type_range
+    end subroutine lmp_type_range
+
+    !> The atom types that have atoms (created, poured, deposited, ...); every type when
+    !> none has, with the note `none` ('' for no note).
+    subroutine lmp_active_types(st, none, types)
+        type(lmp_script), intent(inout) :: st
+        character(len=*), intent(in) :: none            !! the note when no type has atoms
+        integer, allocatable, intent(out) :: types(:)   !! the types
+        integer :: t
+        types = pack([(t, t = 1, st%ntypes)], st%atoms(1:st%ntypes))
+        if (size(types) > 0) return
+        types = [(t, t = 1, st%ntypes)]
+        if (len(none) > 0) call st%note('', none)
+    end subroutine lmp_active_types
 
     !> Record a size (diameter, density; <= 0: not given) of type t from a source.
-    subroutine script_add_size(st, t, diam, dens, source)
-        type(peer_script), intent(inout) :: st
+    subroutine lmp_add_size(st, t, diam, dens, source)
+        type(lmp_script), intent(inout) :: st
         integer, intent(in) :: t
         real(wp), intent(in) :: diam, dens
         character(len=*), intent(in) :: source
@@ -654,13 +694,13 @@ contains
             if (st%dens(t) <= 0.0_wp .or. dens < st%dens(t)) st%dens(t) = dens
         end if
         st%src(t)%s = st%src(t)%s // ' ' // source
-    end subroutine script_add_size
+    end subroutine lmp_add_size
 
     !> The radius and density a type's contacts are checked with: the smallest diameter
     !> and the lowest density any source gives (the shortest contact), LAMMPS's
     !> defaults (diameter 1, density 1) where none does; `text` says which.
-    subroutine script_size(st, t, radius, density, text)
-        type(peer_script), intent(in) :: st
+    subroutine lmp_size(st, t, radius, density, text)
+        type(lmp_script), intent(in) :: st
         integer, intent(in) :: t
         real(wp), intent(out) :: radius, density
         character(len=:), allocatable, intent(out) :: text
@@ -684,6 +724,6 @@ contains
             text = text // ', density 1 (LAMMPS default)'
         end if
         if (len(st%src(t)%s) > 0) text = text // ' from' // st%src(t)%s
-    end subroutine script_size
+    end subroutine lmp_size
 
-end module hertzdamp_peers_script
+end module hertzdamp_lmpscript

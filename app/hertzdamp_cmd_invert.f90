@@ -6,7 +6,8 @@ module hertzdamp_cmd_invert
                          HD_OK, HD_BAD_RESTITUTION, HD_OUTSIDE_VALIDITY, HD_INACCURATE, HD_BAD_TIME, HD_BAD_VELOCITY, &
                          HD_OUT_OF_RANGE, HD_METHOD_ITERATIVE, HD_METHOD_FIT, HD_HOST_UNREACHABLE, HD_HOST_NONE, HD_BAD_PAIR, &
                          hertzdamp_pair_t, hertzdamp_pair_init, hertzdamp_pair_kd, hertzdamp_host_stats, &
-                         hertzdamp_host_name, hertzdamp_host_min_steps
+                         hertzdamp_host_name, hertzdamp_host_min_steps, hertzdamp_host_mean, hertzdamp_forward_alpha, &
+                         hertzdamp_collision
     use hertzdamp_cli, only: cli_args, parse_args, parse_sweep, parse_choice, required_sweep, check_combinations, fail, &
                              EXIT_USAGE
     use hertzdamp_cli_text, only: itoa
@@ -110,8 +111,9 @@ contains
         type(progress_reporter) :: p
         type(host_opts) :: h
         type(hertzdamp_pair_t) :: pair
-        type(hertzdamp_host_stats) :: stats
+        type(hertzdamp_host_stats) :: stats, rstats
         integer :: st_pair
+        real(wp) :: tc_act
         character(len=:), allocatable :: columns, units, column_units
         allocate (es(0), tcs(0), us(0), tc_dt(0), tc_steps(0))   ! (defined descriptors for the reallocating assignments)
         if (wants_help()) call print_help('invert')
@@ -167,6 +169,10 @@ contains
                     end if
                     ! the contact time the returned k and d give (T_c, or longer when k = k_phys)
                     if (status == HD_OK .and. .not. ieee_is_finite(tstar * tau)) status = HD_OUT_OF_RANGE
+                    tc_act = tstar * tau
+                    rstats = stats
+                    if (status == HD_OK .and. h%given .and. bound) &
+                        call bound_host_contact(c, h, k, d, ct%mass, u, tc / tc_steps(it), tc_act, rstats, status)
                     kind = row_kind(status)
                     if (status == HD_BAD_RESTITUTION .and. e >= 0.0_wp .and. e <= 1.0_wp) kind = ROW_OUTSIDE_VALIDITY
                     if (status == HD_HOST_UNREACHABLE) kind = ROW_OUTSIDE_VALIDITY
@@ -187,10 +193,10 @@ contains
                     else
                         call t%none()
                     end if
-                    call t%num_or_none(tstar * tau, have)
+                    call t%num_or_none(tc_act, have)
                     if (h%given) then
-                        call t%num_or_none(relative_spread(stats%e_sd, stats%e_mean), have)
-                        call t%num_or_none(relative_spread(stats%tau_sd, stats%tau_mean), have)
+                        call t%num_or_none(relative_spread(rstats%e_sd, rstats%e_mean), have)
+                        call t%num_or_none(relative_spread(rstats%tau_sd, rstats%tau_mean), have)
                     end if
                     call t%str(row_word(kind))
                     if (have) then
@@ -212,6 +218,33 @@ contains
         call p%finish()
         call rows%emit(t, c%fmt)
     end subroutine cmd_invert
+
+    !> A host's contact where the bound is active (issue 30, defect 3): it keeps k = k_phys and
+    !> lasts more than N steps, so its time unit t* and damping alpha are those of its own k and
+    !> d (hertzdamp_reduce), and its step h' = dt / t* is below the pair's.  tc_act is then the
+    !> phase mean of the host's collision at (alpha, h') times t*, and stats its spreads there;
+    !> an h' below the host schemes' range (1e-5) is the continuous contact (no spread).
+    subroutine bound_host_contact(c, h, k, d, m, u, dt, tc_act, stats, status)
+        type(model_opts), intent(in) :: c
+        type(host_opts), intent(in) :: h
+        real(wp), intent(in) :: k, d, m, u, dt
+        real(wp), intent(out) :: tc_act
+        type(hertzdamp_host_stats), intent(out) :: stats
+        integer, intent(inout) :: status
+        real(wp) :: a, ts
+        type(hertzdamp_collision) :: r
+        tc_act = 0.0_wp
+        call hertzdamp_reduce(k, d, m, u, a, ts, status, c%law)
+        if (status /= HD_OK) return
+        if (dt / ts >= 1.0e-5_wp) then
+            call hertzdamp_host_mean(a, dt / ts, c%law, c%iend, h%host, stats, status)
+        else
+            r = hertzdamp_forward_alpha(a, c%iend, HD_METHOD_FIT, law=c%law)
+            status = r%status
+            stats = hertzdamp_host_stats(r%e, 0.0_wp, r%e, r%e, r%tau_c, 0.0_wp, r%tau_c, r%tau_c)
+        end if
+        if (status == HD_OK) tc_act = stats%tau_mean * ts
+    end subroutine bound_host_contact
 
     !> k and d of one contact from a host's pair (st_pair: its init's status, reported
     !> when the contact's arguments are valid), with the bound when the contact has one.

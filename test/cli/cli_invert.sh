@@ -246,6 +246,36 @@ check "--host lammps, N = 2: the row is outside-validity, N = 20 ok" \
   test "$(sed -n 2p "$OUT" | cut -d, -f7,16)" = ",outside-validity" -a "$(sed -n 3p "$OUT" | cut -d, -f16)" = "ok"
 check "--host lammps, N = 2: says which N can ($(cat "$ERR"))" \
   grep -qE 'N = 2 steps cannot reach e = 0.5 with lammps; N >= [0-9]+ can' "$ERR"
+# --host with the bound active (issue 30, defect 3): the contact keeps k_phys and lasts far
+# more than N steps; tc_actual and the spreads are those of that contact, checked by this
+# script's own LAMMPS-scheme stepper (force from z_n and the velocity that moved the body
+# there, w += -dt F/m, z += dt w; touch at t_1 - phi dt; release interpolated in the overlap)
+# over 8 onset phases (the old code printed tau_N t* = 1.3513e-2 and the N = 10 spreads)
+run invert --e 0.5 --dt 1e-6 --steps 10 --velocity 1 --mass 1e-3 --host lammps --k-phys 1e3 --format csv
+check "--host lammps with the bound: exit 0, bound active (exit $RC)" test "$RC" -eq 0 -a \
+  "$(tail -n 1 "$OUT" | cut -d, -f12)" = "true"
+check "--host lammps with the bound: tc_actual and e_spread of the bounded contact (own stepper)" python3 -c '
+import csv, sys
+r = next(csv.DictReader(open(sys.argv[1])))
+k, d, m, u, dt = float(r["k"]), float(r["d"]), 1e-3, 1.0, 1e-6
+ts, es = [], []
+for j in range(8):
+    phi = (j + 0.5) / 8
+    z, w, zp = phi * u * dt, u, 0.0
+    n = 1
+    while z > 0:
+        f = k * z ** 1.5 + d * w
+        w -= dt * f / m
+        zp, z = z, z + dt * w
+        n += 1
+    ts.append(dt * (n - 2 + zp / (zp - z) + phi))
+    es.append(-w / u)
+tm = sum(ts) / len(ts)
+em = sum(es) / len(es)
+sd = (sum((x - em) ** 2 for x in es) / len(es)) ** 0.5 / em
+assert abs(float(r["tc_actual"]) / tm - 1) < 1e-4, (r["tc_actual"], tm)
+assert abs(em - 0.5) < 5e-3 and float(r["e_spread"]) < 1e-3 and sd < 1e-3, (em, r["e_spread"], sd)
+' "$OUT"
 expect_fail 2 "--host with --tc" invert --e 0.5 --tc 1e-5 --mass 1e-3 --velocity 1 --host lammps
 check "--host with --tc: asks for --dt and --steps" grep -q -- '--host needs --dt and --steps' "$ERR"
 expect_fail 2 "--host without --steps" invert --e 0.5 --dt 1e-6 --mass 1e-3 --velocity 1 --host mfix-euler

@@ -7,7 +7,8 @@ module hertzdamp_cmd_scene
     use hertzdamp, only: hertzdamp_rk, hertzdamp_end_name, HD_OK, HD_METHOD_ITERATIVE, HD_METHOD_SERIES, &
                          HD_METHOD_PADE, HD_METHOD_COMPACT, HD_METHOD_FIT, HD_METHOD_FIRST_ORDER, hertzdamp_method_name, &
                          hertzdamp_law_code, hertzdamp_law_name, HD_HOST_NONE, HD_HOST_VERLET, hertzdamp_host_name, &
-                         hertzdamp_pair_t, hertzdamp_pair_init, HD_HOST_UNREACHABLE
+                         hertzdamp_pair_t, hertzdamp_pair_init, HD_HOST_UNREACHABLE, HD_BAD_STEPS, hertzdamp_message, &
+                         hertzdamp_host_steps_min, hertzdamp_host_steps_max
     use hertzdamp_dem, only: hertzdamp_dem_scene, hertzdamp_dem_result, hertzdamp_dem_check, hertzdamp_dem_state, &
                              hertzdamp_dem_start, hertzdamp_dem_advance, hertzdamp_dem_finish, hertzdamp_dem_steps_done, &
                              hertzdamp_dem_steps_total, hertzdamp_dem_rule, hertzdamp_dem_host_rule, hertzdamp_dem_select, &
@@ -202,6 +203,17 @@ contains
         sc%host = host
         sc%scheme = HD_HOST_VERLET
         if (host /= HD_HOST_NONE) sc%scheme = host
+        ! a host's per-pair constants exist for its range of N: bad input, as invert says
+        ! (issue 30, defect 8: this was a failed computation, exit 4)
+        if (host /= HD_HOST_NONE .and. .not. (real(sc%steps_per_contact, wp) >= hertzdamp_host_steps_min .and. &
+                                             real(sc%steps_per_contact, wp) <= hertzdamp_host_steps_max)) then
+            if (args%has('--steps')) then
+                call fail(EXIT_USAGE, '--steps ' // itoa(sc%steps_per_contact) // ' with --host ' // &
+                          hertzdamp_host_name(host) // ': ' // hertzdamp_message(HD_BAD_STEPS))
+            end if
+            call fail(EXIT_USAGE, 'steps_per_contact = ' // itoa(sc%steps_per_contact) // ' of the scene with --host ' // &
+                      hertzdamp_host_name(host) // ': ' // hertzdamp_message(HD_BAD_STEPS))
+        end if
     end subroutine scene_overrides
 
     !> 'scene run 1 of 2 (compact)'

@@ -403,6 +403,13 @@ check "--host lammps --method series: from the fit" grep -q -- '--host lammps: t
 expect_fail 2 "--host lammps-phase (not a scheme of the engine)" scene $S/phases.nml --host lammps-phase --dt 1e-6 --steps 10
 expect_fail 2 "--steps 2.5" scene $S/phases.nml --host lammps --dt 1e-6 --steps 2.5
 check "--steps 2.5: a whole number" grep -q -- '--steps 2.5: time steps per contact must be a whole number' "$ERR"
+# issue 30, defect 8: N outside a host's range is bad input naming --steps (exit 2, as invert), not
+# a failed computation (exit 4)
+for n in 1 1e6; do
+  expect_fail 2 "--host lammps --steps $n" scene $S/binary.nml --host lammps --dt 1e-6 --steps $n
+  check "--host lammps --steps $n: names --steps and the range ($(cat "$ERR"))" \
+    grep -q -- "--steps [0-9]* with --host lammps: invalid steps per contact" "$ERR"
+done
 for dt in -1 0 inf; do
   expect_fail 2 "--dt $dt" scene $S/phases.nml --host lammps --dt $dt --steps 10
   check "--dt $dt: the message names --dt, not the scene file" grep -Eq -- '^hertzdamp: (--dt .*: the time step must be positive and finite|malformed number "inf" for --dt)$' "$ERR"

@@ -20,7 +20,7 @@ RELEASE_FLAGS := -O3 -march=x86-64-v2 -funroll-loops -fPIC
 TEST_FLAGS := -O2 -g -fPIC -fopenmp -Wall -Wextra -Wno-compare-reals -Werror -Wimplicit-interface -std=f2018 -fcheck=bounds,do,pointer -fbacktrace
 TEST_LINK := -fopenmp
 
-.PHONY: all deps run test build install clean lint docs series-data series-source fit-data fit-source bench
+.PHONY: all deps run test build install clean lint docs series-data series-source fit-data fit-source bench registry
 
 all: build
 
@@ -133,6 +133,13 @@ fit-data: deps
 fit-source:
 	$(PYTHON) gen/fit_csv_to_f90.py data/fit_coefficients.csv src/hertzdamp_fit_data.f90
 	$(PYTHON) gen/fit_kernels_f90.py data/fit_coefficients.csv src/hertzdamp_fit_kernels.f90
+
+# ---------------------------------------------------------------- the registry
+# data/registry.toml, the one table of every enumeration (statuses, laws, ends, hosts,
+# methods), into src/hertzdamp_registry.f90 and the generated blocks of include/hertzdamp.h,
+# include/hertzdamp.fi and doc/library.md (test/docs/registry_sync.sh checks them).
+registry:
+	$(PYTHON) gen/registry.py data/registry.toml
 
 # ---------------------------------------------------------------- install
 # CMake builds and installs the core library (shared and static), its modules, the C

@@ -6,7 +6,7 @@
 !> and stderr gets one line.
 module hertzdamp_cli
     use hertzdamp_kinds, only: hertzdamp_rk
-    use hertzdamp_status, only: HD_OK, HD_NO_REBOUND, HD_BAD_RESTITUTION, HD_OUTSIDE_VALIDITY, HD_OUT_OF_RANGE, &
+    use hertzdamp_registry, only: HD_OK, HD_NO_REBOUND, HD_BAD_RESTITUTION, HD_OUTSIDE_VALIDITY, HD_OUT_OF_RANGE, &
                                 HD_MAX_STEPS, HD_STEP_UNDERFLOW, HD_NO_CONVERGENCE
     use, intrinsic :: iso_fortran_env, only: output_unit, error_unit
     use, intrinsic :: iso_c_binding, only: c_int, c_char, c_size_t, c_long, c_funptr, c_intptr_t

@@ -171,8 +171,9 @@ contains
                     if (status == HD_OK .and. .not. ieee_is_finite(tstar * tau)) status = HD_OUT_OF_RANGE
                     tc_act = tstar * tau
                     rstats = stats
-                    if (status == HD_OK .and. h%given .and. bound) &
+                    if (status == HD_OK .and. h%given .and. bound) then
                         call bound_host_contact(c, h, k, d, ct%mass, u, tc / tc_steps(it), tc_act, rstats, status)
+                    end if
                     kind = row_kind(status)
                     if (status == HD_BAD_RESTITUTION .and. e >= 0.0_wp .and. e <= 1.0_wp) kind = ROW_OUTSIDE_VALIDITY
                     if (status == HD_HOST_UNREACHABLE) kind = ROW_OUTSIDE_VALIDITY

@@ -824,7 +824,7 @@ def main(argv):
            HEADER_DOC,
            'module hertzdamp_fit_kernels',
            '    use hertzdamp_kinds, only: hertzdamp_rk',
-           '    use hertzdamp_status, only: HD_OK, HD_BAD_END, HD_BAD_ALPHA, HD_BAD_RESTITUTION, HD_OUTSIDE_VALIDITY, &',
+           '    use hertzdamp_registry, only: HD_OK, HD_BAD_END, HD_BAD_ALPHA, HD_BAD_RESTITUTION, HD_OUTSIDE_VALIDITY, &',
            '                                HD_NO_REBOUND',
            '    use hertzdamp_constants, only: tau_c0 => hertzdamp_tau_c0_value, hertzdamp_pi, &',
            '                                   direct_lo => hertzdamp_direct_lo, direct_hi => hertzdamp_direct_hi',

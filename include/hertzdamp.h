@@ -32,60 +32,66 @@
 extern "C" {
 #endif
 
-/* Status codes (the values of the Fortran module hertzdamp_status; stable). */
-#define HERTZDAMP_OK                   0  /* success */
-#define HERTZDAMP_NO_REBOUND           1  /* overlap end with alpha >= alpha_c: e = 0, tau_c = +inf */
-#define HERTZDAMP_MAX_STEPS            2  /* integrator reached its step limit */
-#define HERTZDAMP_STEP_UNDERFLOW       3  /* step size collapsed below round-off */
-#define HERTZDAMP_BAD_ALPHA            4  /* alpha not finite or outside the supported range */
-#define HERTZDAMP_BAD_END              5  /* contact-end definition not 0 (overlap) or 1 (force) */
-#define HERTZDAMP_BAD_TOL              6  /* tolerance not in [1e-15, 1e-2] */
-#define HERTZDAMP_BAD_MASS             7  /* mass not finite and positive */
-#define HERTZDAMP_BAD_VELOCITY         8  /* impact velocity not finite and positive */
-#define HERTZDAMP_BAD_STIFFNESS        9  /* stiffness not finite and positive */
-#define HERTZDAMP_BAD_DAMPING         10  /* damping not finite and non-negative */
-#define HERTZDAMP_BAD_TIME            11  /* contact time not finite and positive */
-#define HERTZDAMP_BAD_RESTITUTION     12  /* restitution outside the supported range */
-#define HERTZDAMP_OUT_OF_RANGE        13  /* a result overflows or underflows double precision */
-#define HERTZDAMP_NOT_SUPPORTED       14  /* method does not support this contact-end definition */
-#define HERTZDAMP_NO_CONVERGENCE      15  /* an iteration did not converge */
-#define HERTZDAMP_BAD_ORDER           16  /* series order outside the stored range */
-#define HERTZDAMP_BAD_KPHYS           17  /* physical stiffness bound not finite and positive */
-#define HERTZDAMP_BAD_ARGUMENT        18  /* any other invalid argument */
-#define HERTZDAMP_OUTSIDE_VALIDITY    19  /* alpha outside the range where the method is valid */
-#define HERTZDAMP_INACCURATE          20  /* the method's error estimate exceeds the accuracy asked */
-#define HERTZDAMP_BAD_RADIUS          21  /* sphere radius not finite and positive */
-#define HERTZDAMP_BAD_DENSITY         22  /* density not finite and positive */
-#define HERTZDAMP_BAD_MODULUS         23  /* Young's modulus not finite and positive */
-#define HERTZDAMP_BAD_POISSON         24  /* Poisson's ratio outside (-1, 0.5] */
-#define HERTZDAMP_BAD_LAW             25  /* damping law not 0 (linear), 1 (tsuji) or 2 (kuwabara-kono) */
-#define HERTZDAMP_BAD_HOST            26  /* host scheme not one of the host codes (hertzdamp_host) */
-#define HERTZDAMP_BAD_STEPS           27  /* steps per contact (or step h) not finite or outside the allowed range */
-#define HERTZDAMP_HOST_UNREACHABLE    28  /* no alpha reaches this e with the host at so few steps per contact */
-#define HERTZDAMP_BAD_PAIR            29  /* pair not set by hertzdamp_c_pair_init, or changed since */
-#define HERTZDAMP_PHASE_UNREACHABLE   30  /* some onset phase cannot reach e and T_c at so few steps */
-#define HERTZDAMP_BAD_PHASE           31  /* onset phase not finite or outside (0, 1] */
-#define HERTZDAMP_NO_PHASE_TABLE      32  /* the pair was initialised without its onset-phase table */
-#define HERTZDAMP_BAD_TANGENTIAL      33  /* tangential model or its parameters invalid */
-#define HERTZDAMP_BAD_OBLIQUE         34  /* oblique-contact argument invalid */
+/* BEGIN codes (gen/registry.py) */
+/* GENERATED from data/registry.toml by gen/registry.py: edit the table, run `make registry`. */
+
+/* The size of hertzdamp_pair_t in doubles (hertzdamp_c_pair_size() at run time). */
+#define HERTZDAMP_PAIR_SIZE 256
+
+/* Status codes (0: success; hertzdamp_c_strerror explains each; stable across versions). */
+#define HERTZDAMP_OK                  0  /* success */
+#define HERTZDAMP_NO_REBOUND          1  /* overlap end with alpha >= alpha_c: e = 0, tau_c = +inf */
+#define HERTZDAMP_MAX_STEPS           2  /* integrator reached its step limit */
+#define HERTZDAMP_STEP_UNDERFLOW      3  /* step size collapsed below round-off */
+#define HERTZDAMP_BAD_ALPHA           4  /* alpha not finite or outside the supported range */
+#define HERTZDAMP_BAD_END             5  /* contact-end definition not one of the end codes */
+#define HERTZDAMP_BAD_TOL             6  /* tolerance not in [1e-15, 1e-2] */
+#define HERTZDAMP_BAD_MASS            7  /* mass not finite and positive */
+#define HERTZDAMP_BAD_VELOCITY        8  /* impact velocity not finite and positive */
+#define HERTZDAMP_BAD_STIFFNESS       9  /* stiffness not finite and positive */
+#define HERTZDAMP_BAD_DAMPING        10  /* damping not finite and non-negative */
+#define HERTZDAMP_BAD_TIME           11  /* contact time not finite and positive */
+#define HERTZDAMP_BAD_RESTITUTION    12  /* restitution outside the supported range */
+#define HERTZDAMP_OUT_OF_RANGE       13  /* a result overflows or underflows double precision */
+#define HERTZDAMP_NOT_SUPPORTED      14  /* method does not support this contact-end definition */
+#define HERTZDAMP_NO_CONVERGENCE     15  /* an iteration did not converge */
+#define HERTZDAMP_BAD_ORDER          16  /* series order outside the stored range */
+#define HERTZDAMP_BAD_KPHYS          17  /* physical stiffness bound not finite and positive */
+#define HERTZDAMP_BAD_ARGUMENT       18  /* any other invalid argument */
+#define HERTZDAMP_OUTSIDE_VALIDITY   19  /* alpha outside the range where the method is valid */
+#define HERTZDAMP_INACCURATE         20  /* the method's error estimate exceeds the accuracy asked */
+#define HERTZDAMP_BAD_RADIUS         21  /* sphere radius not finite and positive */
+#define HERTZDAMP_BAD_DENSITY        22  /* density not finite and positive */
+#define HERTZDAMP_BAD_MODULUS        23  /* Young's modulus not finite and positive */
+#define HERTZDAMP_BAD_POISSON        24  /* Poisson's ratio outside (-1, 0.5] */
+#define HERTZDAMP_BAD_LAW            25  /* damping law not one of the law codes */
+#define HERTZDAMP_BAD_HOST           26  /* host scheme not one of the host codes */
+#define HERTZDAMP_BAD_STEPS          27  /* steps per contact (or step h) not finite or outside the allowed range */
+#define HERTZDAMP_HOST_UNREACHABLE   28  /* no alpha reaches this e with the host at so few steps per contact */
+#define HERTZDAMP_BAD_PAIR           29  /* pair not set by the pair init (or its failure), or changed since */
+#define HERTZDAMP_PHASE_UNREACHABLE  30  /* some onset phase cannot reach e and T_c at so few steps */
+#define HERTZDAMP_BAD_PHASE          31  /* onset phase not finite or outside (0, 1] */
+#define HERTZDAMP_NO_PHASE_TABLE     32  /* the pair was initialised without its onset-phase table */
+#define HERTZDAMP_BAD_TANGENTIAL     33  /* tangential model or its parameters invalid */
+#define HERTZDAMP_BAD_OBLIQUE        34  /* oblique-contact argument invalid (tangential speed, radii, angle) */
 
 /* Contact-end definitions (argument `end`). */
-#define HERTZDAMP_END_OVERLAP 0  /* contact ends when the overlap returns to zero */
-#define HERTZDAMP_END_FORCE   1  /* contact ends when the total contact force returns to zero */
+#define HERTZDAMP_END_OVERLAP 0  /* overlap: contact ends when the overlap returns to zero (the default) */
+#define HERTZDAMP_END_FORCE   1  /* force: contact ends when the total contact force returns to zero */
 
-/* Damping laws (argument `law`; doc/damping-laws.md): damping force d zeta^q zeta',
-   d in kg s^-1 m^-q. */
-#define HERTZDAMP_DAMPING_LINEAR        0  /* q = 0: constant damping (the default of the other calls) */
-#define HERTZDAMP_DAMPING_TSUJI         1  /* q = 1/4: Tsuji; d = gamma sqrt(m k) gives alpha = gamma */
-#define HERTZDAMP_DAMPING_KUWABARA_KONO 2  /* q = 1/2: Kuwabara-Kono (LAMMPS viscoelastic) */
+/* Damping laws (argument `law`; doc/damping-laws.md): damping force d zeta^q zeta', d in kg s^-1 m^-q. */
+#define HERTZDAMP_DAMPING_LINEAR        0  /* linear: q = 0: constant damping (the default) */
+#define HERTZDAMP_DAMPING_TSUJI         1  /* tsuji: q = 1/4: Tsuji et al. 1992; d = gamma sqrt(m k) gives alpha = gamma */
+#define HERTZDAMP_DAMPING_KUWABARA_KONO 2  /* kuwabara-kono: q = 1/2: Kuwabara and Kono 1987 (LAMMPS viscoelastic) */
 
-/* Host time integrators (argument `host` of hertzdamp_c_pair_init; doc/host-schemes.md). */
-#define HERTZDAMP_HOST_NONE         0  /* the continuous model: k, d exact for it */
-#define HERTZDAMP_HOST_LAMMPS       1  /* LAMMPS / LIGGGHTS fix nve/sphere (velocity Verlet) */
-#define HERTZDAMP_HOST_MFIX_EULER   2  /* MFiX DES_INTG_METHOD = 'EULER' */
-#define HERTZDAMP_HOST_MFIX_AB2     3  /* MFiX DES_INTG_METHOD = 'ADAMS_BASHFORTH' */
-#define HERTZDAMP_HOST_VERLET       4  /* the scheme of hertzdamp's own scene engine */
-#define HERTZDAMP_HOST_LAMMPS_PHASE 5  /* lammps with the hertzdamp plugin's onset correction */
+/* Host time integrators (argument `host`; doc/host-schemes.md). */
+#define HERTZDAMP_HOST_NONE         0  /* none: the continuous model: k, d exact for it */
+#define HERTZDAMP_HOST_LAMMPS       1  /* lammps: LAMMPS / LIGGGHTS fix nve/sphere (velocity Verlet, damping from the half-step velocity) */
+#define HERTZDAMP_HOST_MFIX_EULER   2  /* mfix-euler: MFiX DES_INTG_METHOD = 'EULER' (the same recurrence as lammps) */
+#define HERTZDAMP_HOST_MFIX_AB2     3  /* mfix-ab2: MFiX DES_INTG_METHOD = 'ADAMS_BASHFORTH' */
+#define HERTZDAMP_HOST_VERLET       4  /* verlet: the scene engine of this repository (velocity Verlet with onset/release corrections) */
+#define HERTZDAMP_HOST_LAMMPS_PHASE 5  /* lammps-phase: lammps with the hertzdamp plugin's onset/release phase correction (phase yes) */
+/* END codes */
 
 /*
  * The constants of a material pair (set by hertzdamp_c_pair_init, read by the per-contact
@@ -95,7 +101,6 @@ extern "C" {
  * a part that a call reads was changed since, is refused (HERTZDAMP_BAD_PAIR).  Copying it
  * is fine.  hertzdamp_c_pair_size() gives the size at run time.
  */
-#define HERTZDAMP_PAIR_SIZE 256
 typedef struct {
     double v[HERTZDAMP_PAIR_SIZE];
 } hertzdamp_pair_t;

@@ -10,7 +10,7 @@
 !> The C and legacy entry points are in hertzdamp_capi (include/hertzdamp.h, hertzdamp.fi).
 module hertzdamp
     use hertzdamp_kinds, only: hertzdamp_rk
-    use hertzdamp_status, only: HD_OK, HD_NO_REBOUND, HD_MAX_STEPS, HD_STEP_UNDERFLOW, HD_BAD_ALPHA, &
+    use hertzdamp_registry, only: HD_OK, HD_NO_REBOUND, HD_MAX_STEPS, HD_STEP_UNDERFLOW, HD_BAD_ALPHA, &
                                 HD_BAD_END, HD_BAD_TOL, HD_BAD_MASS, HD_BAD_VELOCITY, HD_BAD_STIFFNESS, &
                                 HD_BAD_DAMPING, HD_BAD_TIME, HD_BAD_RESTITUTION, HD_OUT_OF_RANGE, &
                                 HD_NOT_SUPPORTED, HD_NO_CONVERGENCE, HD_BAD_ORDER, HD_BAD_KPHYS, &
@@ -18,7 +18,7 @@ module hertzdamp
                                 HD_BAD_DENSITY, HD_BAD_MODULUS, HD_BAD_POISSON, HD_BAD_LAW, HD_BAD_HOST, &
                                 HD_BAD_STEPS, HD_HOST_UNREACHABLE, HD_BAD_PAIR, HD_PHASE_UNREACHABLE, &
                                 HD_BAD_PHASE, HD_NO_PHASE_TABLE, HD_BAD_TANGENTIAL, HD_BAD_OBLIQUE, hertzdamp_message
-    use hertzdamp_ends, only: HD_END_OVERLAP, HD_END_FORCE, hertzdamp_end_name
+    use hertzdamp_registry, only: HD_END_OVERLAP, HD_END_FORCE, hertzdamp_end_name
     use hertzdamp_laws, only: HD_DAMPING_LINEAR, HD_DAMPING_TSUJI, HD_DAMPING_KUWABARA_KONO, &
                               hertzdamp_max_law, hertzdamp_law_name, hertzdamp_law_code, hertzdamp_law_q, &
                               hertzdamp_law_status, hertzdamp_law_speed_exponent, &

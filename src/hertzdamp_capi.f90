@@ -43,7 +43,7 @@
 !> bare formula costs a few ns; a call between modules is not inlined without LTO).
 module hertzdamp_capi
     use, intrinsic :: iso_c_binding, only: c_double, c_int, c_char, c_ptr, c_loc, c_null_char, c_intptr_t
-    use hertzdamp_status, only: HD_OK, HD_NO_REBOUND, HD_BAD_ARGUMENT, hertzdamp_message_table, hertzdamp_max_status, &
+    use hertzdamp_registry, only: HD_OK, HD_NO_REBOUND, HD_BAD_ARGUMENT, hertzdamp_message_table, hertzdamp_max_status, &
                                 hertzdamp_message_len
     use hertzdamp_methods, only: hertzdamp_forward_dim, HD_METHOD_FIT
     use hertzdamp_pair, only: hertzdamp_pair_t, hertzdamp_pair_size, hertzdamp_pair_init, hertzdamp_invert, hertzdamp_c_pair_kd, &

@@ -21,9 +21,9 @@
 !> alpha_c on) and 2.85 (force); outside: HD_BAD_RESTITUTION / HD_OUTSIDE_VALIDITY.
 module hertzdamp_compact
     use hertzdamp_kinds, only: hertzdamp_rk
-    use hertzdamp_status, only: HD_OK, HD_NO_REBOUND, HD_BAD_END, HD_BAD_ALPHA, HD_BAD_RESTITUTION, &
+    use hertzdamp_registry, only: HD_OK, HD_NO_REBOUND, HD_BAD_END, HD_BAD_ALPHA, HD_BAD_RESTITUTION, &
                                 HD_OUTSIDE_VALIDITY
-    use hertzdamp_ends, only: HD_END_OVERLAP, HD_END_FORCE
+    use hertzdamp_registry, only: HD_END_OVERLAP, HD_END_FORCE
     use hertzdamp_constants, only: hertzdamp_e1, hertzdamp_tau_c0
     use hertzdamp_fit_data
     use hertzdamp_fit, only: hertzdamp_approx_alpha_status

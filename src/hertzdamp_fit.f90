@@ -48,8 +48,8 @@
 module hertzdamp_fit
     use hertzdamp_kinds, only: hertzdamp_rk
     use, intrinsic :: iso_fortran_env, only: int64
-    use hertzdamp_status, only: HD_OK, HD_BAD_END, HD_BAD_ALPHA, HD_OUTSIDE_VALIDITY
-    use hertzdamp_ends, only: HD_END_OVERLAP, HD_END_FORCE
+    use hertzdamp_registry, only: HD_OK, HD_BAD_END, HD_BAD_ALPHA, HD_OUTSIDE_VALIDITY
+    use hertzdamp_registry, only: HD_END_OVERLAP, HD_END_FORCE
     use hertzdamp_laws, only: HD_DAMPING_LINEAR, HD_DAMPING_TSUJI, HD_DAMPING_KUWABARA_KONO, hertzdamp_law_status
     use hertzdamp_fit_data, only: fit_e_min_overlap, fit_e_min_force, fit_alpha_c, fit_alpha_max_force
     use hertzdamp_fit_kernels, only: hertzdamp_fit_neg_log, hertzdamp_fit_cbrt, hertzdamp_fit_exp_neg, &

@@ -39,9 +39,12 @@
 !> Everything is pure, keeps no state and returns a status (hertzdamp_status).
 module hertzdamp_host
     use hertzdamp_kinds, only: hertzdamp_rk
-    use hertzdamp_status, only: HD_OK, HD_NO_REBOUND, HD_NO_CONVERGENCE, HD_BAD_ALPHA, HD_BAD_END, HD_BAD_ARGUMENT, &
+    use hertzdamp_registry, only: HD_OK, HD_NO_REBOUND, HD_NO_CONVERGENCE, HD_BAD_ALPHA, HD_BAD_END, HD_BAD_ARGUMENT, &
                                 HD_BAD_HOST, HD_BAD_STEPS, HD_HOST_UNREACHABLE
-    use hertzdamp_ends, only: HD_END_OVERLAP, HD_END_FORCE
+    use hertzdamp_registry, only: HD_END_OVERLAP, HD_END_FORCE, HD_HOST_NONE, HD_HOST_LAMMPS, HD_HOST_MFIX_EULER, &
+                                  HD_HOST_MFIX_AB2, HD_HOST_VERLET, HD_HOST_LAMMPS_PHASE, hertzdamp_min_host, &
+                                  hertzdamp_max_host, hertzdamp_host_name, hertzdamp_host_code, hertzdamp_host_order, &
+                                  hertzdamp_host_in_engine
     use hertzdamp_constants, only: hertzdamp_pi
     use hertzdamp_laws, only: hertzdamp_law_status, hertzdamp_law_q, HD_DAMPING_LINEAR, HD_DAMPING_TSUJI, &
                               HD_DAMPING_KUWABARA_KONO
@@ -52,24 +55,10 @@ module hertzdamp_host
 
     integer, parameter :: wp = hertzdamp_rk
 
-    !> No host: the continuous model (today's constants, bit-identical to hertzdamp_fit_inverse).
-    integer, parameter, public :: HD_HOST_NONE = 0
-    !> LAMMPS / LIGGGHTS fix nve/sphere (velocity Verlet, damping from the half-step velocity).
-    integer, parameter, public :: HD_HOST_LAMMPS = 1
-    !> MFiX DES_INTG_METHOD = 'EULER' (the same recurrence as HD_HOST_LAMMPS).
-    integer, parameter, public :: HD_HOST_MFIX_EULER = 2
-    !> MFiX DES_INTG_METHOD = 'ADAMS_BASHFORTH'.
-    integer, parameter, public :: HD_HOST_MFIX_AB2 = 3
-    !> The scene engine of this repository (velocity Verlet with onset/release corrections).
-    integer, parameter, public :: HD_HOST_VERLET = 4
-    !> HD_HOST_LAMMPS with the LAMMPS plugin's onset/release phase correction (phase yes).
-    integer, parameter, public :: HD_HOST_LAMMPS_PHASE = 5
-    !> Largest host code.
-    integer, parameter, public :: hertzdamp_max_host = 5
-
-    !> Host names in the order of the codes (the one table of them).
-    character(len=12), parameter :: host_table(0:hertzdamp_max_host) = [character(len=12) :: &
-        'none', 'lammps', 'mfix-euler', 'mfix-ab2', 'verlet', 'lammps-phase']
+    ! The host codes, names and attributes (the order of their error, whether the scene
+    ! engine runs them) are rows of data/registry.toml (hertzdamp_registry).
+    public :: HD_HOST_NONE, HD_HOST_LAMMPS, HD_HOST_MFIX_EULER, HD_HOST_MFIX_AB2, HD_HOST_VERLET, HD_HOST_LAMMPS_PHASE
+    public :: hertzdamp_max_host, hertzdamp_host_name, hertzdamp_host_code, hertzdamp_host_order, hertzdamp_host_in_engine
 
     !> Smallest and largest number of steps per contact of hertzdamp_host_solve.
     real(wp), parameter, public :: hertzdamp_host_steps_min = 2.0_wp, hertzdamp_host_steps_max = 1.0e5_wp
@@ -91,7 +80,7 @@ module hertzdamp_host
         real(wp) :: tau_max = 0.0_wp   !! longest contact over the phase
     end type hertzdamp_host_stats
 
-    public :: hertzdamp_host_name, hertzdamp_host_code, hertzdamp_host_status
+    public :: hertzdamp_host_status
     public :: hertzdamp_host_collide, hertzdamp_host_mean, hertzdamp_host_solve, hertzdamp_host_min_steps
     public :: hertzdamp_host_alpha_for_e, hertzdamp_host_phase_force, hertzdamp_host_hurwitz
 
@@ -169,36 +158,11 @@ contains
 
     ! ================================================================ names and checks
 
-    !> Name of a host code ('none', 'lammps', 'mfix-euler', 'mfix-ab2', 'verlet',
-    !> 'lammps-phase'; 'unknown' for others).
-    pure function hertzdamp_host_name(host) result(name)
-        integer, intent(in) :: host   !! HD_HOST_*
-        character(len=:), allocatable :: name
-        if (host >= 0 .and. host <= hertzdamp_max_host) then
-            name = trim(host_table(host))
-        else
-            name = 'unknown'
-        end if
-    end function hertzdamp_host_name
-
-    !> Code of a host name (HD_HOST_*), -1 when the name is not a host.
-    pure integer function hertzdamp_host_code(name) result(host)
-        character(len=*), intent(in) :: name   !! a name of hertzdamp_host_name
-        integer :: k
-        host = -1
-        do k = 0, hertzdamp_max_host
-            if (trim(host_table(k)) == name) then
-                host = k
-                return
-            end if
-        end do
-    end function hertzdamp_host_code
-
     !> HD_OK for a valid host code, else HD_BAD_HOST.
     pure elemental integer function hertzdamp_host_status(host) result(status)
         integer, intent(in) :: host   !! HD_HOST_*
         status = HD_OK
-        if (host < 0 .or. host > hertzdamp_max_host) status = HD_BAD_HOST
+        if (host < hertzdamp_min_host .or. host > hertzdamp_max_host) status = HD_BAD_HOST
     end function hertzdamp_host_status
 
     !> Status of the common arguments: host, law, contact end (in this order).
@@ -1492,7 +1456,8 @@ contains
     !> cannot reach e = 0.5 with lammps; N >= 6 can".  host none: 2.  A candidate comes from
     !> the bracketing solve on the proxy means alone (N = 2, then growing by factors of about
     !> sqrt(2) up to 1024 until it succeeds, then bisection), and is confirmed and moved by
-    !> hertzdamp_host_solve itself: up until the window succeeds, down while N - 1 succeeds.  Status HD_OK, a bad-input status of hertzdamp_host_solve, or
+    !> hertzdamp_host_solve itself: up until the window succeeds, down while N - 1 succeeds.
+    !> Status HD_OK, a bad-input status of hertzdamp_host_solve, or
     !> HD_HOST_UNREACHABLE when no N up to 1024 succeeds (n_min = 0).
     pure subroutine hertzdamp_host_min_steps(e, law, iend, host, n_min, status)
         real(wp), intent(in) :: e        !! target restitution coefficient

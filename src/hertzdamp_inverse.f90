@@ -17,9 +17,9 @@
 !> HD_BAD_RESTITUTION.  e = 1 gives alpha = 0, tau_c = tau_c(0).
 module hertzdamp_inverse
     use hertzdamp_kinds, only: hertzdamp_rk
-    use hertzdamp_status, only: HD_OK, HD_BAD_RESTITUTION, HD_BAD_END, HD_BAD_TOL, HD_BAD_ARGUMENT, HD_NOT_SUPPORTED, &
+    use hertzdamp_registry, only: HD_OK, HD_BAD_RESTITUTION, HD_BAD_END, HD_BAD_TOL, HD_BAD_ARGUMENT, HD_NOT_SUPPORTED, &
                                 HD_NO_CONVERGENCE, HD_NO_REBOUND, HD_OUTSIDE_VALIDITY, HD_INACCURATE
-    use hertzdamp_ends, only: HD_END_OVERLAP, HD_END_FORCE
+    use hertzdamp_registry, only: HD_END_OVERLAP, HD_END_FORCE
     use hertzdamp_constants, only: hertzdamp_e1, hertzdamp_tau_c0
     use hertzdamp_rk45, only: hertzdamp_collision, hertzdamp_rk45_collide, hertzdamp_law_alpha_c
     use hertzdamp_methods, only: HD_METHOD_SERIES, HD_METHOD_PADE, HD_METHOD_COMPACT, HD_METHOD_FIT, HD_METHOD_ITERATIVE, &

@@ -15,35 +15,24 @@
 !> state.
 module hertzdamp_laws
     use hertzdamp_kinds, only: hertzdamp_rk
-    use hertzdamp_status, only: HD_OK, HD_BAD_LAW, HD_NOT_SUPPORTED
-    use hertzdamp_ends, only: HD_END_OVERLAP
+    use hertzdamp_registry, only: HD_OK, HD_BAD_LAW, HD_NOT_SUPPORTED, HD_END_OVERLAP, HD_DAMPING_LINEAR, &
+                                  HD_DAMPING_TSUJI, HD_DAMPING_KUWABARA_KONO, hertzdamp_min_law, hertzdamp_max_law, &
+                                  hertzdamp_law_name, hertzdamp_law_code, hertzdamp_law_q
     use hertzdamp_constants, only: hertzdamp_pi
     implicit none
     private
 
     integer, parameter :: wp = hertzdamp_rk
 
-    ! The law codes (stable across versions; mirrored in hertzdamp.h as HERTZDAMP_DAMPING_*).
-    !> linear: q = 0, constant damping (the default).
-    integer, parameter, public :: HD_DAMPING_LINEAR = 0
-    !> tsuji: q = 1/4 (Tsuji et al. 1992); d = gamma sqrt(m k) gives alpha = gamma.
-    integer, parameter, public :: HD_DAMPING_TSUJI = 1
-    !> kuwabara-kono: q = 1/2 (Kuwabara & Kono 1987; LAMMPS viscoelastic).
-    integer, parameter, public :: HD_DAMPING_KUWABARA_KONO = 2
-    !> Largest law code.
-    integer, parameter, public :: hertzdamp_max_law = 2
-
-    !> Law names in the order of the codes (the one table of them).
-    character(len=13), parameter :: law_table(0:hertzdamp_max_law) = [character(len=13) :: &
-        'linear', 'tsuji', 'kuwabara-kono']
-    !> Exponent q of zeta in the damping force of each law.
-    real(wp), parameter :: q_table(0:hertzdamp_max_law) = [0.0_wp, 0.25_wp, 0.5_wp]
+    ! The law codes, names and exponents are rows of data/registry.toml (hertzdamp_registry).
+    public :: HD_DAMPING_LINEAR, HD_DAMPING_TSUJI, HD_DAMPING_KUWABARA_KONO, hertzdamp_max_law
+    public :: hertzdamp_law_name, hertzdamp_law_code, hertzdamp_law_q
 
     !> Critical damping of the tsuji law with the overlap end: alpha_c = sqrt(5) exactly
     !> (the law maps onto a linear oscillator of damping ratio alpha/sqrt(5)).
     real(wp), parameter, public :: hertzdamp_alpha_c_tsuji = sqrt(5.0_wp)
 
-    public :: hertzdamp_law_name, hertzdamp_law_code, hertzdamp_law_q, hertzdamp_law_status
+    public :: hertzdamp_law_status
     public :: hertzdamp_law_speed_exponent, hertzdamp_law_reversal_exponent, hertzdamp_law_has_alpha_c
     public :: hertzdamp_tsuji_e, hertzdamp_tsuji_l, hertzdamp_tsuji_alpha
 
@@ -53,39 +42,8 @@ contains
     pure elemental integer function hertzdamp_law_status(law) result(status)
         integer, intent(in) :: law   !! HD_DAMPING_*
         status = HD_OK
-        if (law < 0 .or. law > hertzdamp_max_law) status = HD_BAD_LAW
+        if (law < hertzdamp_min_law .or. law > hertzdamp_max_law) status = HD_BAD_LAW
     end function hertzdamp_law_status
-
-    !> Name of a law code ('linear', 'tsuji', 'kuwabara-kono'; 'unknown' for others).
-    pure function hertzdamp_law_name(law) result(name)
-        integer, intent(in) :: law   !! HD_DAMPING_*
-        character(len=:), allocatable :: name
-        if (law >= 0 .and. law <= hertzdamp_max_law) then
-            name = trim(law_table(law))
-        else
-            name = 'unknown'
-        end if
-    end function hertzdamp_law_name
-
-    !> Code of a law name (HD_DAMPING_*), -1 when the name is not a law.
-    pure integer function hertzdamp_law_code(name) result(law)
-        character(len=*), intent(in) :: name   !! 'linear', 'tsuji' or 'kuwabara-kono'
-        integer :: k
-        law = -1
-        do k = 0, hertzdamp_max_law
-            if (trim(law_table(k)) == name) then
-                law = k
-                return
-            end if
-        end do
-    end function hertzdamp_law_code
-
-    !> Exponent q of the law (0, 1/4, 1/2); 0 for an invalid code.
-    pure elemental real(wp) function hertzdamp_law_q(law) result(q)
-        integer, intent(in) :: law   !! HD_DAMPING_*
-        q = 0.0_wp
-        if (law >= 0 .and. law <= hertzdamp_max_law) q = q_table(law)
-    end function hertzdamp_law_q
 
     !> Exponent of the impact speed in alpha at fixed k, d, m: alpha ~ u^((4q - 1)/5)
     !> (-1/5 linear, 0 tsuji, 1/5 kuwabara-kono).

@@ -5,7 +5,7 @@
 !> floating-point environment).  Every other legacy entry point (HERTZDAMP_INVERT ...)
 !> is a module procedure of hertzdamp_capi with the external's link name.
 subroutine hertzdamp_message(ierr, text)
-    use hertzdamp_status, only: mod_message => hertzdamp_message
+    use hertzdamp_registry, only: mod_message => hertzdamp_message
     implicit none
     integer, intent(in) :: ierr               !! a status code
     character(len=*), intent(out) :: text     !! receives the message

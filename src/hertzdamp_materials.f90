@@ -24,7 +24,7 @@
 !> (hertzdamp_sphere_mass, hertzdamp_plane_strain_modulus) before combining them.
 module hertzdamp_materials
     use hertzdamp_kinds, only: hertzdamp_rk
-    use hertzdamp_status, only: HD_OK, HD_BAD_RADIUS, HD_BAD_DENSITY, HD_BAD_MODULUS, HD_BAD_POISSON, &
+    use hertzdamp_registry, only: HD_OK, HD_BAD_RADIUS, HD_BAD_DENSITY, HD_BAD_MODULUS, HD_BAD_POISSON, &
                                 HD_BAD_MASS, HD_BAD_VELOCITY, HD_BAD_STIFFNESS, HD_OUT_OF_RANGE
     use hertzdamp_scaling, only: hertzdamp_safe_exp, hertzdamp_check_positive, hertzdamp_tstar_direct, hertzdamp_log_tstar
     use hertzdamp_constants, only: hertzdamp_tau_c0, pi => hertzdamp_pi, hertzdamp_direct_lo, hertzdamp_direct_hi

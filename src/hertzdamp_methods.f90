@@ -3,9 +3,11 @@
 !> (k, d, m, u_in) -> (alpha, t*, e, T_c, zeta_max).
 module hertzdamp_methods
     use hertzdamp_kinds, only: hertzdamp_rk
-    use hertzdamp_status, only: HD_OK, HD_NO_REBOUND, HD_NOT_SUPPORTED, HD_BAD_ARGUMENT, HD_OUT_OF_RANGE, &
+    use hertzdamp_registry, only: HD_METHOD_RK45, HD_METHOD_SERIES, HD_METHOD_PADE, HD_METHOD_COMPACT, HD_METHOD_FIT, &
+                                  HD_METHOD_ITERATIVE, HD_METHOD_FIRST_ORDER, hertzdamp_method_name, hertzdamp_method_code
+    use hertzdamp_registry, only: HD_OK, HD_NO_REBOUND, HD_NOT_SUPPORTED, HD_BAD_ARGUMENT, HD_OUT_OF_RANGE, &
                                 HD_OUTSIDE_VALIDITY, HD_BAD_ORDER, HD_BAD_END, HD_INACCURATE
-    use hertzdamp_ends, only: HD_END_OVERLAP, HD_END_FORCE
+    use hertzdamp_registry, only: HD_END_OVERLAP, HD_END_FORCE
     use hertzdamp_laws, only: HD_DAMPING_LINEAR, hertzdamp_law_status
     use hertzdamp_series, only: hertzdamp_series_eval, hertzdamp_pade_eval
     use hertzdamp_scaling, only: hertzdamp_reduce
@@ -20,49 +22,17 @@ module hertzdamp_methods
 
     integer, parameter :: wp = hertzdamp_rk
 
-    integer, parameter, public :: HD_METHOD_RK45 = 1     !! adaptive Dormand-Prince reference
-    integer, parameter, public :: HD_METHOD_SERIES = 2   !! truncated Taylor series in alpha
-    integer, parameter, public :: HD_METHOD_PADE = 3     !! Pade summation of the series
-    integer, parameter, public :: HD_METHOD_COMPACT = 4  !! closed-form engineering formula
-    integer, parameter, public :: HD_METHOD_FIT = 5      !! machine-precision approximant
-    integer, parameter, public :: HD_METHOD_ITERATIVE = 6 !! inverse only: secant iteration over rk45 solves
-    integer, parameter, public :: HD_METHOD_FIRST_ORDER = 7 !! first order in alpha: e = 1 - e1 alpha, tau_c = tau_c(0)
-
-    !> Method names in the order of the HD_METHOD_* constants (the one table of them).
-    character(len=11), parameter :: method_table(HD_METHOD_FIRST_ORDER) = [character(len=11) :: &
-        'rk45', 'series', 'pade', 'compact', 'fit', 'iterative', 'first-order']
+    ! The method codes and names are rows of data/registry.toml (hertzdamp_registry).
+    public :: HD_METHOD_RK45, HD_METHOD_SERIES, HD_METHOD_PADE, HD_METHOD_COMPACT, HD_METHOD_FIT, HD_METHOD_ITERATIVE, &
+              HD_METHOD_FIRST_ORDER, hertzdamp_method_name, hertzdamp_method_code
 
     !> Default accuracy asked of the series and Pade formulas (relative): where their own
     !> error estimate exceeds it, they answer HD_INACCURATE instead of HD_OK.
     real(wp), parameter, public :: hertzdamp_default_accuracy = 1.0e-10_wp
 
-    public :: hertzdamp_forward_alpha, hertzdamp_forward_dim, hertzdamp_method_name, hertzdamp_method_code
+    public :: hertzdamp_forward_alpha, hertzdamp_forward_dim
 
 contains
-
-    !> Name of a method code ('rk45', ..., 'first-order'; 'unknown' for others).
-    pure function hertzdamp_method_name(method) result(name)
-        integer, intent(in) :: method   !! HD_METHOD_*
-        character(len=:), allocatable :: name
-        if (method >= 1 .and. method <= size(method_table)) then
-            name = trim(method_table(method))
-        else
-            name = 'unknown'
-        end if
-    end function hertzdamp_method_name
-
-    !> Code of a method name (HD_METHOD_*), 0 when the name is not a method.
-    pure integer function hertzdamp_method_code(name) result(method)
-        character(len=*), intent(in) :: name   !! 'rk45', 'series', ..., 'first-order'
-        integer :: k
-        method = 0
-        do k = 1, HD_METHOD_FIRST_ORDER
-            if (hertzdamp_method_name(k) == name) then
-                method = k
-                return
-            end if
-        end do
-    end function hertzdamp_method_code
 
     !> e, tau_c, z_max, tau_max for one alpha by the chosen method, for the damping law
     !> `law` (default linear).  Every law: rk45, fit and first-order (e1 of the law); the

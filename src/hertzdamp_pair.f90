@@ -41,7 +41,8 @@ module hertzdamp_pair
     use, intrinsic :: iso_c_binding, only: c_double, c_int
     use, intrinsic :: iso_fortran_env, only: int64
     use hertzdamp_kinds, only: hertzdamp_rk
-    use hertzdamp_status, only: HD_OK, HD_BAD_TIME, HD_BAD_MASS, HD_BAD_VELOCITY, HD_BAD_KPHYS, HD_OUT_OF_RANGE, &
+    use hertzdamp_registry, only: hertzdamp_pair_size, hertzdamp_pair_oblique_size, hertzdamp_pair_phase_size
+    use hertzdamp_registry, only: HD_OK, HD_BAD_TIME, HD_BAD_MASS, HD_BAD_VELOCITY, HD_BAD_KPHYS, HD_OUT_OF_RANGE, &
                                 HD_BAD_PAIR, HD_BAD_ARGUMENT
     use hertzdamp_laws, only: HD_DAMPING_LINEAR, HD_DAMPING_TSUJI, HD_DAMPING_KUWABARA_KONO, hertzdamp_law_q, &
                               hertzdamp_max_law
@@ -50,18 +51,12 @@ module hertzdamp_pair
     use hertzdamp_methods, only: HD_METHOD_FIT
     use hertzdamp_fit, only: hertzdamp_fit_inverse, hertzdamp_fit_inverse_n, hertzdamp_fit_invert_kd_n
     use hertzdamp_inverse, only: hertzdamp_invert_alpha, hertzdamp_invert_options
-    use hertzdamp_host, only: HD_HOST_NONE, HD_HOST_MFIX_AB2, HD_HOST_VERLET, hertzdamp_host_stats, hertzdamp_host_solve, &
+    use hertzdamp_host, only: HD_HOST_NONE, hertzdamp_host_order, hertzdamp_host_stats, hertzdamp_host_solve, &
                               hertzdamp_max_host, hertzdamp_host_steps_min, hertzdamp_host_steps_max
     implicit none
     private
 
     integer, parameter :: wp = hertzdamp_rk
-
-    !> Size of a pair in doubles (C HERTZDAMP_PAIR_SIZE, legacy REAL(8) PAIR(HERTZDAMP_PAIR_SIZE)).
-    integer, parameter, public :: hertzdamp_pair_size = 256
-    !> Doubles of the oblique-contact block and of the onset-phase table of a pair.
-    integer, parameter, public :: hertzdamp_pair_oblique_size = 8, &
-                                  hertzdamp_pair_phase_size = hertzdamp_pair_size - 8 - hertzdamp_pair_oblique_size
 
     !> The constants of a material pair: hertzdamp_pair_size doubles, so that it is the C
     !> `hertzdamp_pair_t` and the legacy `REAL(8) PAIR(HERTZDAMP_PAIR_SIZE)` (the same memory).
@@ -128,6 +123,7 @@ module hertzdamp_pair
     end interface hertzdamp_invert
 
     public :: hertzdamp_pair_init, hertzdamp_pair_kd, hertzdamp_invert, hertzdamp_pair_status
+    public :: hertzdamp_pair_size, hertzdamp_pair_oblique_size, hertzdamp_pair_phase_size
     ! the C entry of the per-contact call (see there; hertzdamp_capi re-exports it), and the
     ! one-contact inverse without optional arguments that the binding layer calls
     public :: hertzdamp_c_pair_kd, hertzdamp_invert_contact
@@ -507,11 +503,7 @@ contains
     pure real(wp) function interpolated_alpha(a, a_cont, host, ratio) result(ae)
         real(wp), intent(in) :: a, a_cont, ratio
         integer, intent(in) :: host
-        if (host == HD_HOST_MFIX_AB2 .or. host == HD_HOST_VERLET) then
-            ae = a_cont + (a - a_cont) * (ratio * ratio)
-        else
-            ae = a_cont + (a - a_cont) * ratio
-        end if
+        ae = a_cont + (a - a_cont) * ratio**hertzdamp_host_order(host)
     end function interpolated_alpha
 
     !> k and d by logarithms (T_c, m or u outside the direct range), with the bound.

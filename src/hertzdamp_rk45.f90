@@ -31,9 +31,9 @@
 !>   the status is monotone in alpha.
 module hertzdamp_rk45
     use hertzdamp_kinds, only: hertzdamp_rk
-    use hertzdamp_status, only: HD_OK, HD_NO_REBOUND, HD_MAX_STEPS, HD_STEP_UNDERFLOW, HD_BAD_ALPHA, HD_BAD_END, &
+    use hertzdamp_registry, only: HD_OK, HD_NO_REBOUND, HD_MAX_STEPS, HD_STEP_UNDERFLOW, HD_BAD_ALPHA, HD_BAD_END, &
                                 HD_BAD_TOL, HD_NO_CONVERGENCE, HD_INACCURATE, HD_NOT_SUPPORTED, HD_BAD_LAW
-    use hertzdamp_ends, only: HD_END_OVERLAP, HD_END_FORCE
+    use hertzdamp_registry, only: HD_END_OVERLAP, HD_END_FORCE
     use hertzdamp_laws, only: HD_DAMPING_LINEAR, HD_DAMPING_TSUJI, HD_DAMPING_KUWABARA_KONO, hertzdamp_law_status, &
                               hertzdamp_law_has_alpha_c, hertzdamp_law_q, &
                               hertzdamp_alpha_c_tsuji, hertzdamp_tsuji_alpha

@@ -11,7 +11,7 @@
 !> q = 0 (law 0, linear), 1/4 (law 1, tsuji), 1/2 (law 2, kuwabara-kono).
 module hertzdamp_rk45_kernel
     use hertzdamp_kinds, only: hertzdamp_rk
-    use hertzdamp_status, only: HD_OK, HD_NO_CONVERGENCE
+    use hertzdamp_registry, only: HD_OK, HD_NO_CONVERGENCE
     use hertzdamp_laws, only: HD_DAMPING_LINEAR, HD_DAMPING_TSUJI, HD_DAMPING_KUWABARA_KONO, hertzdamp_law_q
     implicit none
     private

@@ -20,7 +20,7 @@ module hertzdamp_series
                                        pade_tau_c_den2, &
                                    pade_z_max_num, pade_z_max_den, pade_tau_max_num, &
                                        pade_tau_max_den
-    use hertzdamp_status, only: HD_OK, HD_INACCURATE, HD_OUTSIDE_VALIDITY, HD_BAD_ORDER
+    use hertzdamp_registry, only: HD_OK, HD_INACCURATE, HD_OUTSIDE_VALIDITY, HD_BAD_ORDER
     use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
     implicit none (type, external)
     private

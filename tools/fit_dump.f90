@@ -10,7 +10,7 @@
 !> Writes to the file named by its first argument.
 program fit_dump
     use hertzdamp_kinds, only: hertzdamp_rk
-    use hertzdamp_ends, only: HD_END_OVERLAP, HD_END_FORCE
+    use hertzdamp_registry, only: HD_END_OVERLAP, HD_END_FORCE
     use hertzdamp_fit, only: hertzdamp_fit_inverse, hertzdamp_fit_inverse_n, &
                              hertzdamp_fit_forward, hertzdamp_fit_forward_n, hertzdamp_fit_e, &
                              hertzdamp_fit_tau_c, hertzdamp_fit_alpha, hertzdamp_fit_tau_c_of_e, hertzdamp_fit_neg_log, &

@@ -8,7 +8,7 @@
 !> Prints one line per entry point: its name and ns per value.
 program fit_speed
     use hertzdamp_kinds, only: hertzdamp_rk
-    use hertzdamp_ends, only: HD_END_OVERLAP, HD_END_FORCE
+    use hertzdamp_registry, only: HD_END_OVERLAP, HD_END_FORCE
     use hertzdamp_fit, only: hertzdamp_fit_inverse, hertzdamp_fit_inverse_n, hertzdamp_fit_forward, &
                              hertzdamp_fit_forward_n
     use hertzdamp_pair, only: hertzdamp_invert

@@ -35,7 +35,7 @@ program driver
     call rows%emit(t, FORMAT_CSV)
 end program driver
 F90
-if ! gfortran -std=f2018 -Wall -Werror -J "$W" -o "$W/driver" src/hertzdamp_kinds.f90 src/hertzdamp_ends.f90 src/hertzdamp_status.f90 \
+if ! gfortran -std=f2018 -Wall -Werror -J "$W" -o "$W/driver" src/hertzdamp_kinds.f90 src/hertzdamp_registry.f90 \
      packages/text/src/hertzdamp_text_format.f90 \
      app/hertzdamp_cli_text.f90 app/hertzdamp_cli.f90 app/hertzdamp_cli_output.f90 app/hertzdamp_cli_rows.f90 \
      "$W/driver.f90" >"$W/build.log" 2>&1; then

@@ -601,8 +601,9 @@ contains
                 cycle
             end if
             call own_mean(a, t / n, HD_DAMPING_LINEAR, HD_END_FORCE, HD_HOST_LAMMPS_PHASE, em, tm, nmiss)
-            if (abs(em / 0.02_wp - 1.0_wp) > 1.0e-8_wp .or. abs(tm / t - 1.0_wp) > 1.0e-8_wp .or. nmiss /= 0) &
+            if (abs(em / 0.02_wp - 1.0_wp) > 1.0e-8_wp .or. abs(tm / t - 1.0_wp) > 1.0e-8_wp .or. nmiss /= 0) then
                 nbad = nbad + 1
+            end if
         end do
         call s%check(nbad == 0, 'lammps-phase, force end, e = 0.02, N = 6 .. 12: every N solved, its means (own ' // &
                      'stepper) e and tau_c = N h to 1e-8')
@@ -617,8 +618,9 @@ contains
                 cycle
             end if
             call own_mean(a, t / n, HD_DAMPING_TSUJI, HD_END_FORCE, HD_HOST_MFIX_AB2, em, tm, nmiss)
-            if (abs(em / 0.001_wp - 1.0_wp) > 1.0e-8_wp .or. abs(tm / t - 1.0_wp) > 1.0e-8_wp .or. nmiss /= 0) &
+            if (abs(em / 0.001_wp - 1.0_wp) > 1.0e-8_wp .or. abs(tm / t - 1.0_wp) > 1.0e-8_wp .or. nmiss /= 0) then
                 nbad = nbad + 1
+            end if
         end do
         call s%check(nbad == 0, 'mfix-ab2, tsuji, force end, e = 0.001, N = 2, 5, 6, 7, 8, 11: every N solved, its ' // &
                      'means (own stepper) e and tau_c = N h to 1e-8')

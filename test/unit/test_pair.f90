@@ -17,10 +17,10 @@
 !>   host achieves with it (hertzdamp_host_mean) against the target.
 program test_pair
     use hertzdamp_kinds, only: hertzdamp_rk
-    use hertzdamp_status, only: HD_OK, HD_BAD_LAW, HD_BAD_END, HD_BAD_RESTITUTION, HD_BAD_TIME, HD_BAD_MASS, &
+    use hertzdamp_registry, only: HD_OK, HD_BAD_LAW, HD_BAD_END, HD_BAD_RESTITUTION, HD_BAD_TIME, HD_BAD_MASS, &
                                 HD_BAD_VELOCITY, HD_BAD_KPHYS, HD_BAD_PAIR, HD_BAD_HOST, HD_BAD_STEPS, &
                                 HD_HOST_UNREACHABLE, HD_BAD_ARGUMENT
-    use hertzdamp_ends, only: HD_END_OVERLAP, HD_END_FORCE
+    use hertzdamp_registry, only: HD_END_OVERLAP, HD_END_FORCE
     use hertzdamp_laws, only: HD_DAMPING_LINEAR, HD_DAMPING_TSUJI, HD_DAMPING_KUWABARA_KONO, hertzdamp_law_q, &
                               hertzdamp_law_name
     use hertzdamp_methods, only: HD_METHOD_COMPACT, HD_METHOD_FIRST_ORDER

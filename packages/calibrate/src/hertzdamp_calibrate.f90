@@ -40,8 +40,8 @@
 !> Nothing is printed and nothing stops: a status (CAL_*) and a one-line message.
 module hertzdamp_calibrate
     use hertzdamp_kinds, only: hertzdamp_rk
-    use hertzdamp_status, only: HD_OK, HD_OUTSIDE_VALIDITY
-    use hertzdamp_ends, only: HD_END_OVERLAP, HD_END_FORCE
+    use hertzdamp_registry, only: HD_OK, HD_OUTSIDE_VALIDITY
+    use hertzdamp_registry, only: HD_END_OVERLAP, HD_END_FORCE
     use hertzdamp_fit_laws, only: hertzdamp_fit_forward_deriv
     use hertzdamp_methods, only: HD_METHOD_FIT, HD_METHOD_RK45
     use hertzdamp_rk45, only: hertzdamp_rk45_default_tol

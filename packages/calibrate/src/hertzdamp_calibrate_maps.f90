@@ -21,8 +21,8 @@
 !> No module state, nothing printed: a status (HD_*) says what went wrong.
 module hertzdamp_calibrate_maps
     use hertzdamp_kinds, only: hertzdamp_rk
-    use hertzdamp_status, only: HD_OK, HD_NO_REBOUND, HD_BAD_END, HD_BAD_ALPHA, HD_BAD_ARGUMENT, HD_OUTSIDE_VALIDITY
-    use hertzdamp_ends, only: HD_END_OVERLAP, HD_END_FORCE
+    use hertzdamp_registry, only: HD_OK, HD_NO_REBOUND, HD_BAD_END, HD_BAD_ALPHA, HD_BAD_ARGUMENT, HD_OUTSIDE_VALIDITY
+    use hertzdamp_registry, only: HD_END_OVERLAP, HD_END_FORCE
     use hertzdamp_methods, only: HD_METHOD_FIT, HD_METHOD_RK45, hertzdamp_forward_alpha
     use hertzdamp_rk45, only: hertzdamp_collision, hertzdamp_rk45_default_tol
     use hertzdamp_laws, only: CAL_LAW_LINEAR => HD_DAMPING_LINEAR, CAL_LAW_TSUJI => HD_DAMPING_TSUJI, &

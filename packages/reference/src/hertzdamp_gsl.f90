@@ -31,8 +31,8 @@ module hertzdamp_gsl
     use, intrinsic :: ieee_arithmetic, only: ieee_value, ieee_positive_inf, ieee_is_finite, &
         ieee_is_nan
     use hertzdamp_kinds, only: hertzdamp_rk
-    use hertzdamp_status, only: HD_OK, HD_NO_REBOUND, HD_MAX_STEPS, HD_BAD_ARGUMENT, HD_NO_CONVERGENCE, HD_BAD_LAW
-    use hertzdamp_ends, only: HD_END_OVERLAP, HD_END_FORCE
+    use hertzdamp_registry, only: HD_OK, HD_NO_REBOUND, HD_MAX_STEPS, HD_BAD_ARGUMENT, HD_NO_CONVERGENCE, HD_BAD_LAW
+    use hertzdamp_registry, only: HD_END_OVERLAP, HD_END_FORCE
     use hertzdamp_gsl_c, only: gsl_success, gsl_ebadfunc, gsl_odeiv2_system, gsl_odeiv2_step_rkf45, &
         gsl_odeiv2_step_rk8pd, gsl_sf_gamma, gsl_sf_beta, gsl_set_error_handler_off, gsl_odeiv2_step_alloc, &
         gsl_odeiv2_step_reset, gsl_odeiv2_step_free, gsl_odeiv2_control_y_new, gsl_odeiv2_control_free, &

@@ -84,8 +84,8 @@
 !> back as a status (hertzdamp_status codes) and a message.
 module hertzdamp_dem_engine
     use hertzdamp_kinds, only: hertzdamp_rk
-    use hertzdamp_status, only: HD_OK, HD_OUT_OF_RANGE, HD_HOST_UNREACHABLE, hertzdamp_message
-    use hertzdamp_ends, only: HD_END_FORCE
+    use hertzdamp_registry, only: HD_OK, HD_OUT_OF_RANGE, HD_HOST_UNREACHABLE, hertzdamp_message
+    use hertzdamp_registry, only: HD_END_FORCE
     use hertzdamp_host, only: HD_HOST_NONE, HD_HOST_LAMMPS, HD_HOST_MFIX_EULER, HD_HOST_MFIX_AB2, HD_HOST_VERLET, &
                               hertzdamp_host_name, hertzdamp_host_min_steps, hertzdamp_host_stats
     use hertzdamp_pair, only: hertzdamp_pair_t, hertzdamp_pair_init

@@ -2,7 +2,7 @@
 !> the choice of the rule for a scene (`--method auto`).
 module hertzdamp_dem_rules
     use hertzdamp_kinds, only: hertzdamp_rk
-    use hertzdamp_status, only: HD_OK, HD_NO_REBOUND
+    use hertzdamp_registry, only: HD_OK, HD_NO_REBOUND
     use hertzdamp_laws, only: HD_DAMPING_LINEAR
     use hertzdamp_rk45, only: hertzdamp_collision, hertzdamp_rk45_collide
     use hertzdamp_methods, only: HD_METHOD_SERIES, HD_METHOD_PADE, HD_METHOD_COMPACT, HD_METHOD_FIT, &

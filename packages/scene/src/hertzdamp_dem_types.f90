@@ -5,8 +5,8 @@
 !> (hertzdamp_materials).  No procedure here changes anything but its own result.
 module hertzdamp_dem_types
     use hertzdamp_kinds, only: hertzdamp_rk
-    use hertzdamp_status, only: HD_OK
-    use hertzdamp_ends, only: HD_END_OVERLAP
+    use hertzdamp_registry, only: HD_OK
+    use hertzdamp_registry, only: HD_END_OVERLAP
     use hertzdamp_laws, only: HD_DAMPING_LINEAR
     use hertzdamp_methods, only: HD_METHOD_FIT
     use hertzdamp_host, only: HD_HOST_NONE, HD_HOST_VERLET

@@ -19,8 +19,8 @@
 !> themselves never overflow.
 module hertzdamp_dem_validate
     use hertzdamp_kinds, only: hertzdamp_rk
-    use hertzdamp_status, only: HD_OK, HD_BAD_ARGUMENT, hertzdamp_message
-    use hertzdamp_ends, only: hertzdamp_end_name
+    use hertzdamp_registry, only: HD_OK, HD_BAD_ARGUMENT, hertzdamp_message
+    use hertzdamp_registry, only: hertzdamp_end_name
     use hertzdamp_methods, only: HD_METHOD_FIT
     use hertzdamp_constants, only: hertzdamp_tau_c0, hertzdamp_pi
     use hertzdamp_inverse, only: hertzdamp_invert_alpha

@@ -21,8 +21,8 @@
 !> failures return HD_BAD_ARGUMENT and a one-line message.
 module hertzdamp_scene_io
     use hertzdamp_kinds, only: hertzdamp_rk
-    use hertzdamp_status, only: HD_OK, HD_BAD_ARGUMENT
-    use hertzdamp_ends, only: HD_END_OVERLAP, HD_END_FORCE
+    use hertzdamp_registry, only: HD_OK, HD_BAD_ARGUMENT
+    use hertzdamp_registry, only: HD_END_OVERLAP, HD_END_FORCE
     use hertzdamp_laws, only: hertzdamp_law_code
     use hertzdamp_text_format, only: lower
     use hertzdamp_dem, only: hertzdamp_dem_scene, hertzdamp_dem_material, hertzdamp_dem_wall, &

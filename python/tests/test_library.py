@@ -1,0 +1,49 @@
+"""The package reads codes and sizes from the library: its registries equal the C
+header's #defines, the messages are the library's, python -m hertzdamp reports where
+the library came from."""
+import re
+import subprocess
+import sys
+from pathlib import Path
+
+import pytest
+
+import hertzdamp
+from hertzdamp._lib import lib
+
+HEADER = Path(__file__).resolve().parents[2] / "include" / "hertzdamp.h"
+
+
+def defines():
+    text = HEADER.read_text()
+    return {m.group(1): int(m.group(2)) for m in re.finditer(r"^#define HERTZDAMP_([A-Z0-9_]+) +([0-9]+)", text, re.M)}
+
+
+@pytest.mark.skipif(not HEADER.is_file(), reason="no include/hertzdamp.h beside the tests")
+@pytest.mark.parametrize("kind,prefix", [("status", ""), ("end", "END_"), ("law", "DAMPING_"), ("host", "HOST_")])
+def test_registries_equal_the_header(kind, prefix):
+    d = defines()
+    names = {n: c for n, c in lib.codes[kind].items()}
+    status = {k: v for k, v in d.items()
+              if not k.startswith(("END_", "DAMPING_", "HOST_")) or k == "HOST_UNREACHABLE"}
+    if kind == "status":   # the status codes: every #define that is not an end, law or host
+        want = status
+    else:
+        want = {k[len(prefix):]: v for k, v in d.items() if k.startswith(prefix) and k not in status}
+    assert {n.upper().replace("-", "_"): c for n, c in names.items()} == want
+
+
+def test_sizes_and_messages():
+    assert lib.codes["size"]["pair"] >= 8   # the doubles of hertzdamp_pair_t (8 today; the library's count)
+    assert lib.codes["size"]["stats"] == len(lib.codes["stats"])
+    assert lib.message(0) == "success"
+    assert lib.message(10 ** 6) == "unknown status code"
+    assert hertzdamp.METHODS[:5] == ("rk45", "series", "pade", "compact", "fit")
+
+
+def test_python_m_hertzdamp():
+    p = subprocess.run([sys.executable, "-m", "hertzdamp"], capture_output=True, text=True)
+    assert p.returncode == 0, p.stderr
+    assert p.stdout.startswith(f"hertzdamp {hertzdamp.__version__}\n")
+    assert f"library: {hertzdamp.library_path}\n" in p.stdout
+    assert Path(hertzdamp.library_path).is_file()

@@ -4,7 +4,9 @@
 # with git, make, python3, python3-pip and python3-venv, nothing else), into which a
 # fresh clone of this repository's HEAD is made (committed work only, not the work
 # tree).  Prints the time `make test` took (its installs included) and its final
-# `N passed, N failed` line; exits with make's status.
+# `N passed, N failed` line; then installs the Python wheel that make test built into a
+# fresh venv of a second copy of the base root (no gfortran) and runs the package's tests
+# there (log wheel-test.log).  Exits non-zero when either fails.
 #
 # DIR (default build/fresh-debian) keeps the debootstrapped root (base/, made once and
 # reused: delete it to start over) and the root of the last run (root/, replaced by
@@ -161,4 +163,42 @@ awk 'NR > 1 { d = $1 - t; if (d > 0) printf "%5d s  %.60s  ->  %.60s\n", d, prev
      { t = $1; prev = substr($0, 7) }' "$log" | sort -rn | head -n 15 | sed 's/^/    /'
 say "make test: exit $rc in $((elapsed / 60)) min $((elapsed % 60)) s (installs included)"
 say "summary: ${summary:-none (make test did not get to the summary)}"
-exit "$rc"
+
+# ------------------------------------------------------------ the wheel without a compiler
+# The repaired wheel that make test built (test/integration/python_wheel.sh) installed
+# into a fresh venv of another copy of the base root, which has python3 and no gfortran:
+# python -m hertzdamp and the package's tests that need neither the program nor LAMMPS.
+wheel_rc=1
+whl=$(ls "$root"/root/hertzdamp/build/python/wheelhouse/hertzdamp-*.whl 2>/dev/null | head -n 1 || true)
+if [ -z "$whl" ]; then
+  say "wheel: none in $root/root/hertzdamp/build/python/wheelhouse (make test did not build it)"
+else
+  wroot=$dir/root-wheel wlog=$dir/wheel-test.log
+  remove_root "$wroot"
+  cp -a "$base" "$wroot"
+  cp -L /etc/resolv.conf "$wroot/etc/resolv.conf" 2>/dev/null || true
+  cp "$root/etc/pip.conf" "$wroot/etc/pip.conf"
+  mkdir -p "$wroot/root/src/include"
+  cp "$whl" "$wroot/root/"
+  cp -r "$root/root/hertzdamp/python" "$root/root/hertzdamp/pyproject.toml" "$wroot/root/src/"
+  cp "$root/root/hertzdamp/include/hertzdamp.h" "$wroot/root/src/include/"
+  mount_in proc proc "$wroot/proc" nosuid,noexec,nodev
+  mount_in devtmpfs udev "$wroot/dev" mode=0755,nosuid
+  say "wheel: $(basename "$whl") ($(stat -c %s "$whl") bytes) in a fresh venv of a root without gfortran (log: $wlog)"
+  set +e
+  chroot "$wroot" /usr/bin/env -i HOME=/root TERM=dumb PATH=/usr/local/bin:/usr/bin:/bin "${pipenv[@]}" bash -c '
+    set -e
+    if command -v gfortran || ldconfig -p | grep -q libgfortran; then echo "wheel root: gfortran or libgfortran present"; exit 1; fi
+    echo "wheel root: no gfortran, no libgfortran; $(python3 --version)"
+    python3 -m venv /root/venv
+    /root/venv/bin/pip install -q /root/hertzdamp-*.whl pytest==9.2.0 hypothesis==6.170.17
+    cd /tmp && /root/venv/bin/python -m hertzdamp
+    PYTHONDONTWRITEBYTECODE=1 /root/venv/bin/python -m pytest -c /root/src/pyproject.toml --rootdir /root/src       -p no:cacheprovider -q -m "not cli and not lammps" /root/src/python/tests' </dev/null >"$wlog" 2>&1
+  wheel_rc=$?
+  set -e
+  unmount_all
+  sed 's/^/    /' "$wlog" | grep -vE '^ +\.+ *\[' | tail -n 12
+  say "wheel: exit $wheel_rc ($(grep -E '[0-9]+ passed' "$wlog" | tail -n 1))"
+fi
+[ "$rc" -eq 0 ] && [ "$wheel_rc" -eq 0 ]
+exit $?

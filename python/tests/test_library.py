@@ -1,6 +1,7 @@
 """The package reads codes and sizes from the library: its registries equal the C
 header's #defines, the messages are the library's, python -m hertzdamp reports where
 the library came from."""
+import os
 import re
 import subprocess
 import sys
@@ -47,3 +48,5 @@ def test_python_m_hertzdamp():
     assert p.stdout.startswith(f"hertzdamp {hertzdamp.__version__}\n")
     assert f"library: {hertzdamp.library_path}\n" in p.stdout
     assert Path(hertzdamp.library_path).is_file()
+    if not os.environ.get("HERTZDAMP_LIBRARY"):   # an installed package: its own library, beside it
+        assert Path(hertzdamp.library_path).parent == Path(hertzdamp.__file__).resolve().parent

@@ -607,8 +607,9 @@ contains
     ! copy).  The results are contiguous and must not overlap an input.  Each returns HD_OK when
     ! every contact succeeded, else the first non-zero status; n <= 0 does nothing; a NULL array
     ! that is required, or a negative stride, gives HD_BAD_ARGUMENT and touches nothing.  The
-    ! contacts go in passes of 256 (gathered into buffers on the stack) through the module's
-    ! array forms: the same bits as one call of the scalar C entry point per contact.
+    ! contacts go through the module's array forms, contiguous inputs all at once, strided ones
+    ! in blocks of up to 4096 gathered into buffers: the same bits as one call of the scalar C
+    ! entry point per contact.
 
     !> The registry `kind` of the library: its names in the order of their codes, and the
     !> codes.  law, end, host, method (HD_DAMPING_*, HD_END_*, HD_HOST_*, HD_METHOD_*), status
@@ -795,11 +796,12 @@ contains
         real(c_double), intent(out), optional :: k(*)                !! Hertz stiffnesses [N m^-3/2]
         real(c_double), intent(out), optional :: d(*)                !! damping coefficients [kg s^-1 m^-q]
         integer(c_int), intent(out), optional :: st(*)               !! status of each contact
-        integer, parameter :: nb = 256
-        real(c_double) :: eb(nb), tcb(nb), mb(nb), ub(nb), kpb(nb), sb(nb), last_e, last_s
-        integer(c_int) :: stb(nb)
-        integer :: pst(nb), last_st, nc, j
-        type(hertzdamp_pair_t) :: pb(nb), last_pair
+        real(c_double), allocatable :: eb(:), tcb(:), mb(:), ub(:), kpb(:), sb(:)
+        real(c_double) :: last_e, last_s
+        integer, allocatable :: pst(:)
+        integer :: last_st, nc, nb, j, ierr
+        type(hertzdamp_pair_t), allocatable :: pb(:)
+        type(hertzdamp_pair_t) :: last_pair
         logical :: have_last
         integer(c_ptrdiff_t) :: i0
         status = HD_OK
@@ -810,6 +812,18 @@ contains
         if (min(se, stc, sm, su, skp, ss) < 0) return
         status = HD_BAD_STEPS
         if (.not. present(steps) .and. host /= HD_HOST_NONE) return
+        if (.not. present(steps) .and. max(se, stc, sm, su) == 1 .and. min(se, stc, sm, su) == 1 .and. &
+            (.not. present(k_phys) .or. skp == 1)) then
+            ! contiguous: the module's array form over all of them at once (as hertzdamp_c_invert_law_n)
+            call invert_contiguous(n, e, tc, m, u, k_phys, law, iend, k, d, st)
+            status = first_failure(st(1:n))
+            return
+        end if
+        ! else in blocks of up to 4096 contacts, gathered into buffers
+        nb = int(min(n, 4096_c_ptrdiff_t))
+        status = HD_BAD_ARGUMENT
+        allocate (eb(nb), tcb(nb), mb(nb), ub(nb), kpb(nb), sb(nb), pst(nb), pb(nb), stat=ierr)
+        if (ierr /= 0) return
         have_last = .false.
         last_e = 0.0_c_double
         last_s = 0.0_c_double
@@ -825,32 +839,48 @@ contains
             if (.not. present(steps)) then
                 if (present(k_phys)) then
                     call hertzdamp_invert(eb(1:nc), tcb(1:nc), mb(1:nc), ub(1:nc), int(iend), k(i0 + 1:i0 + nc), &
-                                          d(i0 + 1:i0 + nc), stb(1:nc), k_phys=kpb(1:nc), law=int(law))
+                                          d(i0 + 1:i0 + nc), st(i0 + 1:i0 + nc), k_phys=kpb(1:nc), law=int(law))
                 else
                     call hertzdamp_invert(eb(1:nc), tcb(1:nc), mb(1:nc), ub(1:nc), int(iend), k(i0 + 1:i0 + nc), &
-                                          d(i0 + 1:i0 + nc), stb(1:nc), law=int(law))
+                                          d(i0 + 1:i0 + nc), st(i0 + 1:i0 + nc), law=int(law))
                 end if
-            else
-                call gather(steps, ss, i0, nc, sb)
-                do j = 1, nc
-                    ! one init per run of equal (e, steps): a broadcast e and N cost one
-                    if (.not. (have_last .and. eb(j) == last_e .and. sb(j) == last_s)) then
-                        call hertzdamp_pair_init(eb(j), int(law), int(iend), int(host), sb(j), last_pair, last_st)
-                        last_e = eb(j)
-                        last_s = sb(j)
-                        have_last = .true.
-                    end if
-                    pb(j) = last_pair
-                    pst(j) = last_st
-                end do
-                call pairs_kd(nc, pb, tcb, mb, ub, present(k_phys), kpb, k(i0 + 1:i0 + nc), d(i0 + 1:i0 + nc), stb)
-                ! a failed init: its status, where the contact's own arguments are valid
-                where (stb(1:nc) == HD_BAD_PAIR) stb(1:nc) = int(pst(1:nc), c_int)
+                cycle
             end if
-            st(i0 + 1:i0 + nc) = stb(1:nc)
+            call gather(steps, ss, i0, nc, sb)
+            do j = 1, nc
+                ! one init per run of equal (e, steps): a broadcast e and N cost one
+                if (.not. (have_last .and. eb(j) == last_e .and. sb(j) == last_s)) then
+                    call hertzdamp_pair_init(eb(j), int(law), int(iend), int(host), sb(j), last_pair, last_st)
+                    last_e = eb(j)
+                    last_s = sb(j)
+                    have_last = .true.
+                end if
+                pb(j) = last_pair
+                pst(j) = last_st
+            end do
+            call pairs_kd(nc, pb, tcb, mb, ub, present(k_phys), kpb, k(i0 + 1:i0 + nc), d(i0 + 1:i0 + nc), &
+                          st(i0 + 1:i0 + nc))
+            ! a failed init: its status, where the contact's own arguments are valid
+            where (st(i0 + 1:i0 + nc) == HD_BAD_PAIR) st(i0 + 1:i0 + nc) = int(pst(1:nc), c_int)
         end do
         status = first_failure(st(1:n))
     end function hertzdamp_c_invert_array
+
+    !> hertzdamp_c_invert_array of contiguous inputs: the module's array form over all n.
+    subroutine invert_contiguous(n, e, tc, m, u, k_phys, law, iend, k, d, st)
+        integer(c_ptrdiff_t), intent(in) :: n
+        real(c_double), intent(in) :: e(*), tc(*), m(*), u(*)
+        real(c_double), intent(in), optional :: k_phys(*)
+        integer(c_int), intent(in) :: law, iend
+        real(c_double), intent(out) :: k(*), d(*)
+        integer(c_int), intent(out) :: st(*)
+        if (present(k_phys)) then
+            call hertzdamp_invert(e(1:n), tc(1:n), m(1:n), u(1:n), int(iend), k(1:n), d(1:n), st(1:n), &
+                                  k_phys=k_phys(1:n), law=int(law))
+        else
+            call hertzdamp_invert(e(1:n), tc(1:n), m(1:n), u(1:n), int(iend), k(1:n), d(1:n), st(1:n), law=int(law))
+        end if
+    end subroutine invert_contiguous
 
     !> k and d of nc contacts, each of its own pair (hertzdamp_pair_kd, elemental).
     pure subroutine pairs_kd(nc, pb, tcb, mb, ub, has_kp, kpb, k, d, stb)
@@ -883,10 +913,8 @@ contains
         real(c_double), intent(out), optional :: k(*)                !! Hertz stiffnesses [N m^-3/2]
         real(c_double), intent(out), optional :: d(*)                !! damping coefficients [kg s^-1 m^-q]
         integer(c_int), intent(out), optional :: st(*)               !! status of each contact
-        integer, parameter :: nb = 256
-        real(c_double) :: tcb(nb), mb(nb), ub(nb), kpb(nb)
-        integer(c_int) :: stb(nb)
-        integer :: nc
+        real(c_double), allocatable :: tcb(:), mb(:), ub(:), kpb(:)
+        integer :: nc, nb, ierr
         integer(c_ptrdiff_t) :: i0
         status = HD_OK
         if (n <= 0) return
@@ -894,6 +922,9 @@ contains
         if (.not. (present(p) .and. present(tc) .and. present(m) .and. present(u) .and. present(k) .and. &
                    present(d) .and. present(st))) return
         if (min(stc, sm, su, skp) < 0) return
+        nb = int(min(n, 4096_c_ptrdiff_t))
+        allocate (tcb(nb), mb(nb), ub(nb), kpb(nb), stat=ierr)
+        if (ierr /= 0) return
         do i0 = 0, n - 1, nb
             nc = int(min(int(nb, c_ptrdiff_t), n - i0))
             call gather(tc, stc, i0, nc, tcb)
@@ -902,12 +933,11 @@ contains
             if (present(k_phys)) then
                 call gather(k_phys, skp, i0, nc, kpb)
                 call hertzdamp_pair_kd(p, tcb(1:nc), mb(1:nc), ub(1:nc), k(i0 + 1:i0 + nc), d(i0 + 1:i0 + nc), &
-                                       stb(1:nc), k_phys=kpb(1:nc))
+                                       st(i0 + 1:i0 + nc), k_phys=kpb(1:nc))
             else
                 call hertzdamp_pair_kd(p, tcb(1:nc), mb(1:nc), ub(1:nc), k(i0 + 1:i0 + nc), d(i0 + 1:i0 + nc), &
-                                       stb(1:nc))
+                                       st(i0 + 1:i0 + nc))
             end if
-            st(i0 + 1:i0 + nc) = stb(1:nc)
         end do
         status = first_failure(st(1:n))
     end function hertzdamp_c_pair_kd_array
@@ -953,9 +983,9 @@ contains
         real(c_double), intent(out), optional :: e(*)                !! restitution coefficients
         real(c_double), intent(out), optional :: tc(*)               !! contact times [s]
         integer(c_int), intent(out), optional :: st(*)               !! status of each contact
-        integer, parameter :: nb = 256
-        real(c_double) :: kb(nb), db(nb), mb(nb), ub(nb), ab(nb), tsb(nb), tol_, acc_
-        integer :: stb(nb), nc, order_
+        real(c_double), allocatable :: kb(:), db(:), mb(:), ub(:), ab(:), tsb(:)
+        real(c_double) :: tol_, acc_
+        integer :: nc, nb, order_, ierr
         integer(c_ptrdiff_t) :: i0
         status = HD_OK
         if (n <= 0) return
@@ -963,6 +993,9 @@ contains
         if (.not. (present(k) .and. present(d) .and. present(m) .and. present(u) .and. present(e) .and. &
                    present(tc) .and. present(st))) return
         if (min(sk, sd, sm, su) < 0) return
+        nb = int(min(n, 4096_c_ptrdiff_t))
+        allocate (kb(nb), db(nb), mb(nb), ub(nb), ab(nb), tsb(nb), stat=ierr)
+        if (ierr /= 0) return
         tol_ = merge(tol, hertzdamp_rk45_default_tol, tol /= 0.0_c_double)
         acc_ = merge(accuracy, hertzdamp_default_accuracy, accuracy /= 0.0_c_double)
         order_ = merge(int(order), hertzdamp_series_default_order, order /= 0)
@@ -974,11 +1007,10 @@ contains
             call gather(u, su, i0, nc, ub)
             ! without zeta_max, as hertzdamp_c_forward_law (the fit then skips the turning point)
             call hertzdamp_forward_dim(kb(1:nc), db(1:nc), mb(1:nc), ub(1:nc), int(iend), int(method), ab(1:nc), &
-                                       tsb(1:nc), e(i0 + 1:i0 + nc), tc(i0 + 1:i0 + nc), status=stb(1:nc), tol=tol_, &
-                                       order=order_, accuracy=acc_, law=int(law))
+                                       tsb(1:nc), e(i0 + 1:i0 + nc), tc(i0 + 1:i0 + nc), status=st(i0 + 1:i0 + nc), &
+                                       tol=tol_, order=order_, accuracy=acc_, law=int(law))
             ! the C convention of hertzdamp_c_forward_law: no rebound tc = DBL_MAX
-            where (stb(1:nc) == HD_NO_REBOUND) tc(i0 + 1:i0 + nc) = huge(1.0_c_double)
-            st(i0 + 1:i0 + nc) = int(stb(1:nc), c_int)
+            where (st(i0 + 1:i0 + nc) == HD_NO_REBOUND) tc(i0 + 1:i0 + nc) = huge(1.0_c_double)
         end do
         status = first_failure(st(1:n))
     end function hertzdamp_c_forward_array

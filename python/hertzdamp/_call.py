@@ -9,6 +9,7 @@ all contacts, and applies the error policy (finish).
 """
 from __future__ import annotations
 
+import ctypes
 import math
 import warnings
 from typing import Dict, Iterable, List, Optional, Sequence, Tuple
@@ -74,29 +75,47 @@ class Inputs:
 
     def __init__(self, fname: str, values: Dict[str, object]) -> None:
         self.fname = fname
-        self.arrays: Dict[str, np.ndarray] = {}
+        self.first = 1
+        self.views: Dict[str, object] = {}
+        self.args: Dict[str, Tuple[Optional[int], int]] = {}
+        self._numbers: List[ctypes.c_double] = []
+        arrays: Dict[str, np.ndarray] = {}
         for name, x in values.items():
             if x is None:
+                continue
+            if type(x) is int or isinstance(x, float):   # a plain number: a C double, no array
+                c = ctypes.c_double(x)
+                self._numbers.append(c)
+                self.views[name] = c.value
+                self.args[name] = (ctypes.addressof(c), 0)
                 continue
             a = np.asarray(x)
             if a.dtype.kind not in "iuf":
                 raise ValueError(f"hertzdamp.{fname}: {name} must be real numbers (got dtype {a.dtype})")
-            self.arrays[name] = a
-        try:
-            self.shape: Tuple[int, ...] = np.broadcast_shapes(*(a.shape for a in self.arrays.values()))
-        except ValueError:
-            shapes = ", ".join(f"{n} {a.shape}" for n, a in self.arrays.items())
-            raise ValueError(f"hertzdamp.{fname}: the shapes do not broadcast: {shapes}") from None
+            arrays[name] = a
+        shapes = {a.shape for a in arrays.values()}
+        if len(shapes) <= 1:
+            self.shape: Tuple[int, ...] = shapes.pop() if shapes else ()
+        else:
+            try:
+                self.shape = np.broadcast_shapes(*shapes)
+            except ValueError:
+                given = ", ".join(f"{n} {np.shape(values[n])}" for n in values if values[n] is not None)
+                raise ValueError(f"hertzdamp.{fname}: the shapes do not broadcast: {given}") from None
         self.n = math.prod(self.shape)
-        self.views: Dict[str, np.ndarray] = {}
-        self.args: Dict[str, Tuple[Optional[int], int]] = {}
-        for name, a in self.arrays.items():
+        for name, a in arrays.items():
             self.add(name, a)
 
     def add(self, name: str, a: np.ndarray) -> None:
         """Input `name` (a broadcast view, or a copy where no one stride walks it)."""
-        view = np.broadcast_to(np.asarray(a, dtype=np.float64), self.shape)
-        stride = _flat_stride(view)
+        a = np.asarray(a, dtype=np.float64)
+        if a.shape == self.shape and a.flags.c_contiguous:   # the usual array: as it is
+            view, stride = a, 1
+        elif a.size == 1:                                     # one value for all: stride 0
+            view, stride = np.broadcast_to(a, self.shape), 0
+        else:
+            view = np.broadcast_to(a, self.shape)
+            stride = _flat_stride(view)
         if stride is None:
             view = np.ascontiguousarray(view)
             stride = 1
@@ -111,7 +130,8 @@ class Inputs:
         return out
 
     def value(self, name: str, flat: int) -> float:
-        return float(self.views[name].reshape(-1)[flat]) if self.views[name].ndim else float(self.views[name])
+        v = self.views[name]
+        return float(v.reshape(-1)[flat]) if isinstance(v, np.ndarray) and v.ndim else float(v)
 
 
 def run(fname: str, entry: str, inputs: Inputs, order: Sequence[str], params: Sequence[object],
@@ -120,12 +140,19 @@ def run(fname: str, entry: str, inputs: Inputs, order: Sequence[str], params: Se
     entry(n, *prefix, (address, stride) of each input of `order`, *params, the result
     arrays of `outputs`, the statuses).  Returns the results and the statuses (arrays of
     the broadcast shape)."""
+    fn = getattr(lib, entry[len("hertzdamp_c_"):])
+    if not inputs.shape:   # one contact: C doubles in and out, no arrays
+        cs = [ctypes.c_double() for _ in outputs]
+        st = ctypes.c_int()
+        inputs.first = fn(1, *prefix, *inputs.c_args(order), *params, *(ctypes.addressof(c) for c in cs),
+                          ctypes.addressof(st))
+        return {name: np.array(c.value) for name, c in zip(outputs, cs)}, np.array(st.value, dtype=np.intc)
     res = {name: np.empty(inputs.shape) for name in outputs}
-    status = np.zeros(inputs.shape, dtype=np.intc)
+    status = np.empty(inputs.shape, dtype=np.intc)
+    inputs.first = 0   # the entry point's own status: 0 when every contact succeeded
     if inputs.n:
-        getattr(lib, entry[len("hertzdamp_c_"):])(
-            inputs.n, *prefix, *inputs.c_args(order), *params,
-            *(res[name].ctypes.data for name in outputs), status.ctypes.data)
+        inputs.first = fn(inputs.n, *prefix, *inputs.c_args(order), *params,
+                          *(res[name].ctypes.data for name in outputs), status.ctypes.data)
     return res, status
 
 
@@ -156,8 +183,13 @@ def finish(inputs: Inputs, results: Sequence[np.ndarray], status: np.ndarray, er
     status is not in `ok`; errors='nan' gives such contacts NaN and warns once
     (RuntimeWarning) with their count.  0-d results become Python floats; the statuses
     follow with return_status."""
-    good = np.isin(status, [lib.codes["status"][s] for s in ok])
-    if not good.all():
+    if inputs.first == 0:   # the library says every contact succeeded: no scan
+        good = None
+    else:
+        good = status == lib.codes["status"][ok[0]]
+        for name in ok[1:]:
+            good |= status == lib.codes["status"][name]
+    if good is not None and not good.all():
         failed = ~good
         err = describe(inputs, status, failed, blame, hint)
         if errors == "raise":

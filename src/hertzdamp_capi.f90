@@ -679,7 +679,7 @@ contains
 
     !> A NUL-terminated C string (at most 64 characters) as a Fortran string.
     pure function from_c(s) result(f)
-        character(kind=c_char), intent(in) :: s(*)
+        character(kind=c_char), intent(in) :: s(64)
         character(len=:), allocatable :: f
         integer :: i
         f = ''
@@ -694,8 +694,8 @@ contains
     !> ("law", "tsuji") -> HERTZDAMP_DAMPING_TSUJI, ("size", "pair") -> the doubles of
     !> hertzdamp_pair_t.  HD_BAD_ARGUMENT (and *code = -1) for an unknown kind or name or NULL.
     integer(c_int) function hertzdamp_c_code(kind, name, code) bind(c, name='hertzdamp_c_code') result(status)
-        character(kind=c_char), intent(in), optional :: kind(*)  !! the registry
-        character(kind=c_char), intent(in), optional :: name(*)  !! a name of it
+        character(kind=c_char), intent(in), optional :: kind(64)  !! the registry (NUL-terminated)
+        character(kind=c_char), intent(in), optional :: name(64)  !! a name of it (NUL-terminated)
         integer(c_int), intent(out), optional :: code            !! its code
         character(len=32) :: names(64)
         integer :: codes(64), count, i
@@ -717,7 +717,7 @@ contains
     !> buf[len].  HD_BAD_ARGUMENT for an unknown kind, NULL, or a buffer too short (then
     !> buf = "").
     integer(c_int) function hertzdamp_c_names(kind, buf, len) bind(c, name='hertzdamp_c_names') result(status)
-        character(kind=c_char), intent(in), optional :: kind(*)  !! the registry
+        character(kind=c_char), intent(in), optional :: kind(64)  !! the registry (NUL-terminated)
         integer(c_int), value, intent(in) :: len                 !! size of buf
         character(kind=c_char), intent(out), optional :: buf(len) !! the names
         character(len=32) :: names(64)
@@ -743,7 +743,7 @@ contains
 
     !> Contacts i0 + 1 .. i0 + nc of the strided input x into buf.
     pure subroutine gather(x, s, i0, nc, buf)
-        real(c_double), intent(in) :: x(*)
+        real(c_double), intent(in) :: x(:)
         integer(c_ptrdiff_t), intent(in) :: s, i0
         integer, intent(in) :: nc
         real(c_double), intent(out) :: buf(:)
@@ -783,23 +783,24 @@ contains
                                                      law, iend, host, k, d, st) &
             bind(c, name='hertzdamp_c_invert_array') result(status)
         integer(c_ptrdiff_t), value, intent(in) :: n                  !! number of contacts
-        real(c_double), intent(in), optional :: e(*)                 !! target restitution coefficients
-        real(c_double), intent(in), optional :: tc(*)                !! target contact times [s]
-        real(c_double), intent(in), optional :: m(*)                 !! effective masses [kg]
-        real(c_double), intent(in), optional :: u(*)                 !! impact velocities [m/s]
-        real(c_double), intent(in), optional :: k_phys(*)            !! physical stiffness bounds, or NULL
-        real(c_double), intent(in), optional :: steps(*)             !! steps per contact N, or NULL
-        integer(c_ptrdiff_t), value, intent(in) :: se, stc, sm, su, skp, ss  !! the strides
+        integer(c_ptrdiff_t), value, intent(in) :: se, stc, sm, su, skp, ss  !! the strides (elements)
+        real(c_double), intent(in), optional :: e((n - 1) * se + 1)  !! target restitution coefficients
+        real(c_double), intent(in), optional :: tc((n - 1) * stc + 1)  !! target contact times [s]
+        real(c_double), intent(in), optional :: m((n - 1) * sm + 1)  !! effective masses [kg]
+        real(c_double), intent(in), optional :: u((n - 1) * su + 1)  !! impact velocities [m/s]
+        real(c_double), intent(in), optional :: k_phys((n - 1) * skp + 1)  !! physical stiffness bounds, or NULL
+        real(c_double), intent(in), optional :: steps((n - 1) * ss + 1)  !! steps per contact N, or NULL
         integer(c_int), value, intent(in) :: law                     !! HERTZDAMP_DAMPING_*
         integer(c_int), value, intent(in) :: iend                    !! HERTZDAMP_END_*
         integer(c_int), value, intent(in) :: host                    !! HERTZDAMP_HOST_* (with steps)
-        real(c_double), intent(out), optional :: k(*)                !! Hertz stiffnesses [N m^-3/2]
-        real(c_double), intent(out), optional :: d(*)                !! damping coefficients [kg s^-1 m^-q]
-        integer(c_int), intent(out), optional :: st(*)               !! status of each contact
-        real(c_double), allocatable :: eb(:), tcb(:), mb(:), ub(:), kpb(:), sb(:)
+        real(c_double), intent(out), optional :: k(n)                !! Hertz stiffnesses [N m^-3/2]
+        real(c_double), intent(out), optional :: d(n)                !! damping coefficients [kg s^-1 m^-q]
+        integer(c_int), intent(out), optional :: st(n)               !! status of each contact
+        real(c_double), allocatable, target :: w(:, :)
+        real(c_double), pointer :: eb(:), tcb(:), mb(:), ub(:), kpb(:), sb(:)
         real(c_double) :: last_e, last_s
         integer, allocatable :: pst(:)
-        integer :: last_st, nc, nb, j, ierr
+        integer :: last_st, nc, nb, j, ierr, ierr2, ierr3
         type(hertzdamp_pair_t), allocatable :: pb(:)
         type(hertzdamp_pair_t) :: last_pair
         logical :: have_last
@@ -822,8 +823,16 @@ contains
         ! else in blocks of up to 4096 contacts, gathered into buffers
         nb = int(min(n, 4096_c_ptrdiff_t))
         status = HD_BAD_ARGUMENT
-        allocate (eb(nb), tcb(nb), mb(nb), ub(nb), kpb(nb), sb(nb), pst(nb), pb(nb), stat=ierr)
-        if (ierr /= 0) return
+        allocate (w(nb, 6), stat=ierr)
+        allocate (pst(nb), stat=ierr2)
+        allocate (pb(nb), stat=ierr3)
+        if (ierr /= 0 .or. ierr2 /= 0 .or. ierr3 /= 0) return
+        eb => w(:, 1)
+        tcb => w(:, 2)
+        mb => w(:, 3)
+        ub => w(:, 4)
+        kpb => w(:, 5)
+        sb => w(:, 6)
         have_last = .false.
         last_e = 0.0_c_double
         last_s = 0.0_c_double
@@ -869,11 +878,11 @@ contains
     !> hertzdamp_c_invert_array of contiguous inputs: the module's array form over all n.
     subroutine invert_contiguous(n, e, tc, m, u, k_phys, law, iend, k, d, st)
         integer(c_ptrdiff_t), intent(in) :: n
-        real(c_double), intent(in) :: e(*), tc(*), m(*), u(*)
-        real(c_double), intent(in), optional :: k_phys(*)
+        real(c_double), intent(in) :: e(n), tc(n), m(n), u(n)
+        real(c_double), intent(in), optional :: k_phys(n)
         integer(c_int), intent(in) :: law, iend
-        real(c_double), intent(out) :: k(*), d(*)
-        integer(c_int), intent(out) :: st(*)
+        real(c_double), intent(out) :: k(n), d(n)
+        integer(c_int), intent(out) :: st(n)
         if (present(k_phys)) then
             call hertzdamp_invert(e(1:n), tc(1:n), m(1:n), u(1:n), int(iend), k(1:n), d(1:n), st(1:n), &
                                   k_phys=k_phys(1:n), law=int(law))
@@ -904,16 +913,16 @@ contains
     integer(c_int) function hertzdamp_c_pair_kd_array(n, p, tc, stc, m, sm, u, su, k_phys, skp, k, d, st) &
             bind(c, name='hertzdamp_c_pair_kd_array') result(status)
         integer(c_ptrdiff_t), value, intent(in) :: n                  !! number of contacts
+        integer(c_ptrdiff_t), value, intent(in) :: stc, sm, su, skp  !! the strides (elements)
         type(hertzdamp_pair_t), intent(in), optional :: p             !! the pair (hertzdamp_c_pair_init)
-        real(c_double), intent(in), optional :: tc(*)                !! target contact times N dt [s]
-        real(c_double), intent(in), optional :: m(*)                 !! effective masses [kg]
-        real(c_double), intent(in), optional :: u(*)                 !! impact velocities [m/s]
-        real(c_double), intent(in), optional :: k_phys(*)            !! physical stiffness bounds, or NULL
-        integer(c_ptrdiff_t), value, intent(in) :: stc, sm, su, skp  !! the strides
-        real(c_double), intent(out), optional :: k(*)                !! Hertz stiffnesses [N m^-3/2]
-        real(c_double), intent(out), optional :: d(*)                !! damping coefficients [kg s^-1 m^-q]
-        integer(c_int), intent(out), optional :: st(*)               !! status of each contact
-        real(c_double), allocatable :: tcb(:), mb(:), ub(:), kpb(:)
+        real(c_double), intent(in), optional :: tc((n - 1) * stc + 1)  !! target contact times N dt [s]
+        real(c_double), intent(in), optional :: m((n - 1) * sm + 1)  !! effective masses [kg]
+        real(c_double), intent(in), optional :: u((n - 1) * su + 1)  !! impact velocities [m/s]
+        real(c_double), intent(in), optional :: k_phys((n - 1) * skp + 1)  !! physical stiffness bounds, or NULL
+        real(c_double), intent(out), optional :: k(n)                !! Hertz stiffnesses [N m^-3/2]
+        real(c_double), intent(out), optional :: d(n)                !! damping coefficients [kg s^-1 m^-q]
+        integer(c_int), intent(out), optional :: st(n)               !! status of each contact
+        real(c_double), allocatable :: w(:, :)
         integer :: nc, nb, ierr
         integer(c_ptrdiff_t) :: i0
         status = HD_OK
@@ -923,19 +932,19 @@ contains
                    present(d) .and. present(st))) return
         if (min(stc, sm, su, skp) < 0) return
         nb = int(min(n, 4096_c_ptrdiff_t))
-        allocate (tcb(nb), mb(nb), ub(nb), kpb(nb), stat=ierr)
+        allocate (w(nb, 4), stat=ierr)   ! T_c, m, u, k_phys of a block
         if (ierr /= 0) return
         do i0 = 0, n - 1, nb
             nc = int(min(int(nb, c_ptrdiff_t), n - i0))
-            call gather(tc, stc, i0, nc, tcb)
-            call gather(m, sm, i0, nc, mb)
-            call gather(u, su, i0, nc, ub)
+            call gather(tc, stc, i0, nc, w(:, 1))
+            call gather(m, sm, i0, nc, w(:, 2))
+            call gather(u, su, i0, nc, w(:, 3))
             if (present(k_phys)) then
-                call gather(k_phys, skp, i0, nc, kpb)
-                call hertzdamp_pair_kd(p, tcb(1:nc), mb(1:nc), ub(1:nc), k(i0 + 1:i0 + nc), d(i0 + 1:i0 + nc), &
-                                       st(i0 + 1:i0 + nc), k_phys=kpb(1:nc))
+                call gather(k_phys, skp, i0, nc, w(:, 4))
+                call hertzdamp_pair_kd(p, w(1:nc, 1), w(1:nc, 2), w(1:nc, 3), k(i0 + 1:i0 + nc), d(i0 + 1:i0 + nc), &
+                                       st(i0 + 1:i0 + nc), k_phys=w(1:nc, 4))
             else
-                call hertzdamp_pair_kd(p, tcb(1:nc), mb(1:nc), ub(1:nc), k(i0 + 1:i0 + nc), d(i0 + 1:i0 + nc), &
+                call hertzdamp_pair_kd(p, w(1:nc, 1), w(1:nc, 2), w(1:nc, 3), k(i0 + 1:i0 + nc), d(i0 + 1:i0 + nc), &
                                        st(i0 + 1:i0 + nc))
             end if
         end do
@@ -969,21 +978,21 @@ contains
                                                       accuracy, e, tc, st) &
             bind(c, name='hertzdamp_c_forward_array') result(status)
         integer(c_ptrdiff_t), value, intent(in) :: n                  !! number of contacts
-        real(c_double), intent(in), optional :: k(*)                 !! Hertz stiffnesses [N m^-3/2]
-        real(c_double), intent(in), optional :: d(*)                 !! damping coefficients [kg s^-1 m^-q]
-        real(c_double), intent(in), optional :: m(*)                 !! effective masses [kg]
-        real(c_double), intent(in), optional :: u(*)                 !! impact velocities [m/s]
-        integer(c_ptrdiff_t), value, intent(in) :: sk, sd, sm, su    !! the strides
+        integer(c_ptrdiff_t), value, intent(in) :: sk, sd, sm, su  !! the strides (elements)
+        real(c_double), intent(in), optional :: k((n - 1) * sk + 1)  !! Hertz stiffnesses [N m^-3/2]
+        real(c_double), intent(in), optional :: d((n - 1) * sd + 1)  !! damping coefficients [kg s^-1 m^-q]
+        real(c_double), intent(in), optional :: m((n - 1) * sm + 1)  !! effective masses [kg]
+        real(c_double), intent(in), optional :: u((n - 1) * su + 1)  !! impact velocities [m/s]
         integer(c_int), value, intent(in) :: law                     !! HERTZDAMP_DAMPING_*
         integer(c_int), value, intent(in) :: iend                    !! HERTZDAMP_END_*
         integer(c_int), value, intent(in) :: method                  !! a code of the "method" registry
         real(c_double), value, intent(in) :: tol                     !! rk45 tolerance, 0: default
         integer(c_int), value, intent(in) :: order                   !! series order, 0: default
         real(c_double), value, intent(in) :: accuracy                !! series/pade accuracy, 0: default
-        real(c_double), intent(out), optional :: e(*)                !! restitution coefficients
-        real(c_double), intent(out), optional :: tc(*)               !! contact times [s]
-        integer(c_int), intent(out), optional :: st(*)               !! status of each contact
-        real(c_double), allocatable :: kb(:), db(:), mb(:), ub(:), ab(:), tsb(:)
+        real(c_double), intent(out), optional :: e(n)                !! restitution coefficients
+        real(c_double), intent(out), optional :: tc(n)               !! contact times [s]
+        integer(c_int), intent(out), optional :: st(n)               !! status of each contact
+        real(c_double), allocatable :: w(:, :)
         real(c_double) :: tol_, acc_
         integer :: nc, nb, order_, ierr
         integer(c_ptrdiff_t) :: i0
@@ -994,20 +1003,20 @@ contains
                    present(tc) .and. present(st))) return
         if (min(sk, sd, sm, su) < 0) return
         nb = int(min(n, 4096_c_ptrdiff_t))
-        allocate (kb(nb), db(nb), mb(nb), ub(nb), ab(nb), tsb(nb), stat=ierr)
+        allocate (w(nb, 6), stat=ierr)   ! k, d, m, u of a block, then alpha and t* (not returned)
         if (ierr /= 0) return
         tol_ = merge(tol, hertzdamp_rk45_default_tol, tol /= 0.0_c_double)
         acc_ = merge(accuracy, hertzdamp_default_accuracy, accuracy /= 0.0_c_double)
         order_ = merge(int(order), hertzdamp_series_default_order, order /= 0)
         do i0 = 0, n - 1, nb
             nc = int(min(int(nb, c_ptrdiff_t), n - i0))
-            call gather(k, sk, i0, nc, kb)
-            call gather(d, sd, i0, nc, db)
-            call gather(m, sm, i0, nc, mb)
-            call gather(u, su, i0, nc, ub)
+            call gather(k, sk, i0, nc, w(:, 1))
+            call gather(d, sd, i0, nc, w(:, 2))
+            call gather(m, sm, i0, nc, w(:, 3))
+            call gather(u, su, i0, nc, w(:, 4))
             ! without zeta_max, as hertzdamp_c_forward_law (the fit then skips the turning point)
-            call hertzdamp_forward_dim(kb(1:nc), db(1:nc), mb(1:nc), ub(1:nc), int(iend), int(method), ab(1:nc), &
-                                       tsb(1:nc), e(i0 + 1:i0 + nc), tc(i0 + 1:i0 + nc), status=st(i0 + 1:i0 + nc), &
+            call hertzdamp_forward_dim(w(1:nc, 1), w(1:nc, 2), w(1:nc, 3), w(1:nc, 4), int(iend), int(method), &
+                                       w(1:nc, 5), w(1:nc, 6), e(i0 + 1:i0 + nc), tc(i0 + 1:i0 + nc), status=st(i0 + 1:i0 + nc), &
                                        tol=tol_, order=order_, accuracy=acc_, law=int(law))
             ! the C convention of hertzdamp_c_forward_law: no rebound tc = DBL_MAX
             where (st(i0 + 1:i0 + nc) == HD_NO_REBOUND) tc(i0 + 1:i0 + nc) = huge(1.0_c_double)
@@ -1031,16 +1040,22 @@ contains
                                                       t_rayleigh, dt_rayleigh, st) &
             bind(c, name='hertzdamp_c_contact_array') result(status)
         integer(c_ptrdiff_t), value, intent(in) :: n                  !! number of contacts
-        real(c_double), intent(in), optional :: r1(*), rho1(*), y1(*), nu1(*)  !! sphere 1: R [m], rho, E [Pa], nu
-        real(c_double), intent(in), optional :: r2(*), rho2(*), y2(*), nu2(*)  !! sphere 2 (or wall: E, nu)
         integer(c_ptrdiff_t), value, intent(in) :: sr1, srho1, sy1, snu1, sr2, srho2, sy2, snu2  !! the strides
+        real(c_double), intent(in), optional :: r1((n - 1) * sr1 + 1)      !! sphere 1: radius [m]
+        real(c_double), intent(in), optional :: rho1((n - 1) * srho1 + 1)  !! sphere 1: density [kg m^-3]
+        real(c_double), intent(in), optional :: y1((n - 1) * sy1 + 1)      !! sphere 1: Young's modulus [Pa]
+        real(c_double), intent(in), optional :: nu1((n - 1) * snu1 + 1)    !! sphere 1: Poisson's ratio
+        real(c_double), intent(in), optional :: r2((n - 1) * sr2 + 1)      !! sphere 2: radius [m] (not a wall's)
+        real(c_double), intent(in), optional :: rho2((n - 1) * srho2 + 1)  !! sphere 2: density (not a wall's)
+        real(c_double), intent(in), optional :: y2((n - 1) * sy2 + 1)      !! sphere 2 or wall: Young's modulus
+        real(c_double), intent(in), optional :: nu2((n - 1) * snu2 + 1)    !! sphere 2 or wall: Poisson's ratio
         integer(c_int), value, intent(in) :: wall                    !! body 2 is a wall when /= 0
-        real(c_double), intent(out), optional :: m_eff(*)            !! effective masses [kg]
-        real(c_double), intent(out), optional :: r_eff(*)            !! effective radii [m]
-        real(c_double), intent(out), optional :: k_phys(*)           !! physical stiffnesses [N m^-3/2]
-        real(c_double), intent(out), optional :: t_rayleigh(*)       !! Rayleigh times [s] (0: none), or NULL
-        real(c_double), intent(out), optional :: dt_rayleigh(*)      !! their time steps [s], or NULL
-        integer(c_int), intent(out), optional :: st(*)               !! status of each contact
+        real(c_double), intent(out), optional :: m_eff(n)            !! effective masses [kg]
+        real(c_double), intent(out), optional :: r_eff(n)            !! effective radii [m]
+        real(c_double), intent(out), optional :: k_phys(n)           !! physical stiffnesses [N m^-3/2]
+        real(c_double), intent(out), optional :: t_rayleigh(n)       !! Rayleigh times [s] (0: none), or NULL
+        real(c_double), intent(out), optional :: dt_rayleigh(n)      !! their time steps [s], or NULL
+        integer(c_int), intent(out), optional :: st(n)               !! status of each contact
         real(c_double) :: es, t1, t2
         integer :: s, s1, s2
         integer(c_ptrdiff_t) :: i
@@ -1093,22 +1108,22 @@ contains
                                                        host, alpha, tau_c, tc_damped, tc_elastic, st) &
             bind(c, name='hertzdamp_c_timestep_array') result(status)
         integer(c_ptrdiff_t), value, intent(in) :: n                  !! number of contacts
-        real(c_double), intent(in), optional :: e(*)                 !! restitution coefficients
-        real(c_double), intent(in), optional :: steps(*)             !! steps per contact N, or NULL
-        real(c_double), intent(in), optional :: m(*)                 !! effective masses [kg]
-        real(c_double), intent(in), optional :: k_phys(*)            !! physical stiffnesses [N m^-3/2]
-        real(c_double), intent(in), optional :: u(*)                 !! impact velocities [m/s]
-        integer(c_ptrdiff_t), value, intent(in) :: se, ss, sm, skp, su  !! the strides
+        integer(c_ptrdiff_t), value, intent(in) :: se, ss, sm, skp, su  !! the strides (elements)
+        real(c_double), intent(in), optional :: e((n - 1) * se + 1)  !! restitution coefficients
+        real(c_double), intent(in), optional :: steps((n - 1) * ss + 1)  !! steps per contact N, or NULL
+        real(c_double), intent(in), optional :: m((n - 1) * sm + 1)  !! effective masses [kg]
+        real(c_double), intent(in), optional :: k_phys((n - 1) * skp + 1)  !! physical stiffnesses [N m^-3/2]
+        real(c_double), intent(in), optional :: u((n - 1) * su + 1)  !! impact velocities [m/s]
         integer(c_int), value, intent(in) :: law                     !! HERTZDAMP_DAMPING_*
         integer(c_int), value, intent(in) :: iend                    !! HERTZDAMP_END_*
         integer(c_int), value, intent(in) :: host                    !! HERTZDAMP_HOST_* (with steps)
-        real(c_double), intent(out), optional :: alpha(*)            !! damping parameters
-        real(c_double), intent(out), optional :: tau_c(*)            !! dimensionless contact durations
-        real(c_double), intent(out), optional :: tc_damped(*)        !! damped contact times [s]
-        real(c_double), intent(out), optional :: tc_elastic(*)       !! elastic Hertz times [s]
-        integer(c_int), intent(out), optional :: st(*)               !! status of each contact
+        real(c_double), intent(out), optional :: alpha(n)            !! damping parameters
+        real(c_double), intent(out), optional :: tau_c(n)            !! dimensionless contact durations
+        real(c_double), intent(out), optional :: tc_damped(n)        !! damped contact times [s]
+        real(c_double), intent(out), optional :: tc_elastic(n)       !! elastic Hertz times [s]
+        integer(c_int), intent(out), optional :: st(n)               !! status of each contact
         type(hertzdamp_pair_t) :: pair
-        real(c_double) :: a, tau, a0, tstar, th, last_e, last_s
+        real(c_double) :: a, tau, a0, tstar, th, last_e, last_s, sn
         integer :: s, sc
         logical :: have_last
         integer(c_ptrdiff_t) :: i
@@ -1128,11 +1143,12 @@ contains
         tau = 0.0_c_double
         do i = 0, n - 1
             ! the constants of (e, N), once per run of equal values
-            if (.not. (have_last .and. e(1 + i * se) == last_e .and. (.not. present(steps) .or. &
-                                                                    steps(1 + i * ss) == last_s))) then
+            sn = 0.0_c_double
+            if (present(steps)) sn = steps(1 + i * ss)
+            if (.not. (have_last .and. e(1 + i * se) == last_e .and. sn == last_s)) then
                 last_e = e(1 + i * se)
+                last_s = sn
                 if (present(steps)) then
-                    last_s = steps(1 + i * ss)
                     call hertzdamp_pair_init(last_e, int(law), int(iend), int(host), last_s, pair, sc)
                     a = pair%alpha
                     tau = pair%tau_c
@@ -1150,8 +1166,9 @@ contains
             tau_c(i + 1) = tau
             tc_damped(i + 1) = tstar * tau
             tc_elastic(i + 1) = th
-            if (s == HD_OK .and. .not. (tc_damped(i + 1) > 0.0_c_double .and. tc_damped(i + 1) <= huge(1.0_c_double))) &
+            if (s == HD_OK .and. .not. (tc_damped(i + 1) > 0.0_c_double .and. tc_damped(i + 1) <= huge(1.0_c_double))) then
                 s = HD_OUT_OF_RANGE
+            end if
             if (s /= HD_OK) then
                 alpha(i + 1) = 0.0_c_double
                 tau_c(i + 1) = 0.0_c_double

@@ -632,39 +632,21 @@ contains
         integer :: i, n0
         names = ''
         codes = 0
+        n0 = 0
         select case (kind)
         case ('law')
             count = hertzdamp_max_law + 1
-            n0 = 0
-            do i = 1, count
-                names(i) = hertzdamp_law_name(i - 1 + n0)
-            end do
         case ('end')
             count = HD_END_FORCE + 1
-            n0 = 0
-            do i = 1, count
-                names(i) = hertzdamp_end_name(i - 1 + n0)
-            end do
         case ('host')
             count = hertzdamp_max_host + 1
-            n0 = 0
-            do i = 1, count
-                names(i) = hertzdamp_host_name(i - 1 + n0)
-            end do
         case ('method')
             count = HD_METHOD_FIRST_ORDER
             n0 = 1
-            do i = 1, count
-                names(i) = hertzdamp_method_name(i - 1 + n0)
-            end do
         case ('status')
             count = hertzdamp_max_status + 1
-            n0 = 0
-            names(1:count) = status_names
         case ('stats')
             count = size(stats_names)
-            n0 = 0
-            names(1:count) = stats_names
         case ('size')
             count = 2
             names(1:2) = [character(len=32) :: 'pair', 'stats']
@@ -674,7 +656,23 @@ contains
             count = -1
             return
         end select
-        codes(1:count) = [(i - 1 + n0, i=1, count)]
+        do i = 1, count
+            codes(i) = i - 1 + n0
+            select case (kind)
+            case ('law')
+                names(i) = hertzdamp_law_name(codes(i))
+            case ('end')
+                names(i) = hertzdamp_end_name(codes(i))
+            case ('host')
+                names(i) = hertzdamp_host_name(codes(i))
+            case ('method')
+                names(i) = hertzdamp_method_name(codes(i))
+            case ('status')
+                names(i) = status_names(codes(i))
+            case default
+                names(i) = stats_names(codes(i))
+            end select
+        end do
     end subroutine registry
 
     !> A NUL-terminated C string (at most 64 characters) as a Fortran string.

@@ -107,12 +107,11 @@ def forward(k: ArrayLike, d: ArrayLike, m: ArrayLike, u: ArrayLike, *, law: str 
                       (law_, end_, method_, float(tol or 0.0), int(order or 0), float(accuracy or 0.0)),
                       ("e", "tc"))
     res["tc"][status == lib.codes["status"]["no-rebound"]] = np.inf
-    blame = dict(_FORWARD, **{"bad-argument": (), "not-supported": ()})
     def hint(sname: str, flat: int) -> str:
         if sname in ("bad-argument", "not-supported", "bad-tol", "bad-order", "outside-validity", "inaccurate"):
             return f"method = {method!r}, law = {law!r}, end = {end!r}"
         return ""
-    return finish(inputs, [res["e"], res["tc"]], status, errors, return_status, blame,
+    return finish(inputs, [res["e"], res["tc"]], status, errors, return_status, _FORWARD,
                   ok=("ok", "no-rebound"), hint=hint)
 
 
@@ -178,7 +177,8 @@ def timestep(e: ArrayLike, u: ArrayLike, *, m: Optional[ArrayLike] = None, k_phy
     and the 2-suffixed ones, as materials) also m_eff, k_phys, t_rayleigh and
     dt_rayleigh = 0.2 t_rayleigh (0 where not representable).  Give m and k_phys, or the
     material data.  The program's dt_max over a velocity list is the smallest (the
-    fastest contact).  ``host``: the host scheme's constants at ``steps``."""
+    fastest contact).  ``host``: the host scheme's constants at ``steps``.  Bad material
+    data raise HertzdampError even with errors='nan' (they leave no contact to compute)."""
     check_errors(errors)
     law_, end_ = code("law", law, "law"), code("end", end, "end")
     host_ = code("host", "none" if host is None else host, "host")

@@ -50,3 +50,35 @@ def test_python_m_hertzdamp():
     assert Path(hertzdamp.library_path).is_file()
     if not os.environ.get("HERTZDAMP_LIBRARY"):   # an installed package: its own library, beside it
         assert Path(hertzdamp.library_path).parent == Path(hertzdamp.__file__).resolve().parent
+
+
+def test_c_block_refuses_bad_calls():
+    """The C block's contract (include/hertzdamp.h): unknown registries and names, short
+    buffers, NULL required arrays and negative strides give HERTZDAMP_BAD_ARGUMENT and
+    touch no result; n <= 0 does nothing."""
+    import ctypes
+    import numpy as np
+    bad = lib.codes["status"]["bad-argument"]
+    code = ctypes.c_int(7)
+    assert lib.code(b"laws", b"linear", ctypes.addressof(code)) == bad and code.value == -1
+    assert lib.code(b"law", b"hertz", ctypes.addressof(code)) == bad and code.value == -1
+    assert lib.code(b"law", b"tsuji", None) == bad
+    buf = ctypes.create_string_buffer(b"x" * 8)
+    assert lib.names(b"law", buf, 8) == bad and buf.value == b""
+    assert lib.names(b"law", buf, 0) == bad
+    e, k, d, st = np.full(3, 0.5), np.full(3, -1.0), np.full(3, -1.0), np.full(3, 99, dtype=np.intc)
+    args = [e.ctypes.data, 1] * 4 + [None, 0, None, 0, 0, 0, 0, k.ctypes.data, d.ctypes.data, st.ctypes.data]
+    assert lib.invert_array(3, *args) == 0 and np.all(st == 0) and np.all(k > 0)
+    k[:] = -1.0
+    st[:] = 99
+    for i, value in ((1, -1), (0, None), (len(args) - 1, None)):   # a negative stride, a NULL input, NULL statuses
+        a = list(args)
+        a[i] = value
+        assert lib.invert_array(3, *a) == bad
+        assert np.all(k == -1.0) and np.all(st == 99)
+    assert lib.invert_array(0, *[None, 0] * 6, 0, 0, 0, None, None, None) == 0
+    steps_missing = lib.invert_array(3, *args[:-3], k.ctypes.data, d.ctypes.data, st.ctypes.data)
+    assert steps_missing == 0   # host none without steps: the continuous model
+    a = list(args)
+    a[14] = 1   # host lammps without steps
+    assert lib.invert_array(3, *a) == lib.codes["status"]["bad-steps"]

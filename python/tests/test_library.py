@@ -82,3 +82,21 @@ def test_c_block_refuses_bad_calls():
     a = list(args)
     a[14] = 1   # host lammps without steps
     assert lib.invert_array(3, *a) == lib.codes["status"]["bad-steps"]
+
+
+def test_one_call_of_the_entry_point_per_array(monkeypatch):
+    """An array call runs the array entry point once (no Python loop over contacts), through
+    a ctypes.CDLL function (ctypes releases the GIL around it)."""
+    import ctypes
+    import numpy as np
+    assert type(lib._dll) is ctypes.CDLL
+    calls = []
+    for name in ("invert_array", "forward_array", "pair_kd_array", "timestep_array", "contact_array"):
+        fn = getattr(lib, name)
+        monkeypatch.setattr(lib, name, lambda *a, _fn=fn, _name=name: calls.append(_name) or _fn(*a))
+    u = np.linspace(0.1, 5, 10000)
+    k, d = hertzdamp.invert(0.9, 1e-5, 1e-6, u, host="lammps", steps=20)
+    hertzdamp.forward(k, d, 1e-6, u)
+    hertzdamp.Pair(0.9).kd(1e-5, 1e-6, u)
+    hertzdamp.timestep(0.9, u, radius=1e-3, density=2500, youngs_modulus=63e9, poisson_ratio=0.24)
+    assert calls == ["invert_array", "forward_array", "pair_kd_array", "contact_array", "timestep_array"]

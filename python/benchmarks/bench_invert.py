@@ -53,9 +53,10 @@ def main():
     m = 10 ** rng.uniform(-7, -3, n)
     u = 10 ** rng.uniform(-2, 1, n)
     k, d, st = np.empty(n), np.empty(n), np.empty(n, dtype=np.intc)
+    overlap = lib.codes["end"]["overlap"]
 
     def c_call():
-        lib.invert_n(n, e.ctypes.data, tc.ctypes.data, m.ctypes.data, u.ctypes.data, 0, k.ctypes.data,
+        lib.invert_n(n, e.ctypes.data, tc.ctypes.data, m.ctypes.data, u.ctypes.data, overlap, k.ctypes.data,
                      d.ctypes.data, st.ctypes.data)
 
     c_call()
@@ -69,7 +70,7 @@ def main():
     e_full, tc_full = np.full(n, 0.7), np.full(n, 1e-5)
 
     def c_full():
-        lib.invert_n(n, e_full.ctypes.data, tc_full.ctypes.data, m.ctypes.data, u.ctypes.data, 0, k.ctypes.data,
+        lib.invert_n(n, e_full.ctypes.data, tc_full.ctypes.data, m.ctypes.data, u.ctypes.data, overlap, k.ctypes.data,
                      d.ctypes.data, st.ctypes.data)
 
     tp2, tc2 = alternated(lambda: hertzdamp.invert(0.7, 1e-5, m, u), c_full, args.repeats)
@@ -77,10 +78,11 @@ def main():
           f"{tc2 * 1e3:.2f} ms: ratio {tp2 / tc2:.3f}")
 
     kk, dd = ctypes.c_double(), ctypes.c_double()
+    law, end = lib.codes["law"]["linear"], lib.codes["end"]["overlap"]
     pk, pd = ctypes.addressof(kk), ctypes.addressof(dd)
     calls = 20000
     one_py = lambda: [hertzdamp.invert(0.9, 1e-5, 5.2e-6, 1.0) for _ in range(calls)]
-    one_c = lambda: [lib.invert_law(0.9, 1e-5, 5.2e-6, 1.0, 0.0, 0, 0, pk, pd) for _ in range(calls)]
+    one_c = lambda: [lib.invert_law(0.9, 1e-5, 5.2e-6, 1.0, 0.0, law, end, pk, pd) for _ in range(calls)]
     t1, t0 = alternated(one_py, one_c, 7)
     print(f"one contact: hertzdamp.invert {t1 / calls * 1e6:.1f} us per call, a bare ctypes call of "
           f"hertzdamp_c_invert_law {t0 / calls * 1e6:.2f} us (medians of 7 runs of {calls} calls)")

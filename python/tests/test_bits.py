@@ -58,7 +58,8 @@ def test_invert_is_hertzdamp_c_invert_n(capi):
     k = np.empty_like(e)
     d = np.empty_like(e)
     st = np.empty(e.size, dtype=np.intc)
-    capi.invert_n(e.size, e.ctypes.data, tc.ctypes.data, m.ctypes.data, u.ctypes.data, 0, k.ctypes.data,
+    capi.invert_n(e.size, e.ctypes.data, tc.ctypes.data, m.ctypes.data, u.ctypes.data, capi.codes["end"]["overlap"],
+                  k.ctypes.data,
                   d.ctypes.data, st.ctypes.data)
     k2, d2, st2 = hertzdamp.invert(e, tc, m, u, return_status=True)
     assert np.array_equal(st, st2) and same_bits(k, k2) and same_bits(d, d2)
@@ -79,7 +80,8 @@ def test_invert_with_a_host_is_pair_init_and_pair_kd(capi, host):
     buf = np.zeros(capi.codes["size"]["pair"])
     kk, dd = ctypes.c_double(), ctypes.c_double()
     for i in range(n):
-        assert capi.pair_init(e[i], 0, 0, capi.codes["host"][host], steps[i], buf.ctypes.data) == 0
+        assert capi.pair_init(e[i], capi.codes["law"]["linear"], capi.codes["end"]["overlap"], capi.codes["host"][host],
+                              steps[i], buf.ctypes.data) == 0
         s = capi.pair_kd(buf.ctypes.data, tc[i], m[i], u[i], kp[i], ctypes.addressof(kk), ctypes.addressof(dd))
         assert s == st[i] == 0
         assert same_bits([k[i], d[i]], [kk.value, dd.value]), i

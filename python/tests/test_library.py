@@ -67,7 +67,8 @@ def test_c_block_refuses_bad_calls():
     assert lib.names(b"law", buf, 8) == bad and buf.value == b""
     assert lib.names(b"law", buf, 0) == bad
     e, k, d, st = np.full(3, 0.5), np.full(3, -1.0), np.full(3, -1.0), np.full(3, 99, dtype=np.intc)
-    args = [e.ctypes.data, 1] * 4 + [None, 0, None, 0, 0, 0, 0, k.ctypes.data, d.ctypes.data, st.ctypes.data]
+    law, end, none = lib.codes["law"]["linear"], lib.codes["end"]["overlap"], lib.codes["host"]["none"]
+    args = [e.ctypes.data, 1] * 4 + [None, 0, None, 0, law, end, none, k.ctypes.data, d.ctypes.data, st.ctypes.data]
     assert lib.invert_array(3, *args) == 0 and np.all(st == 0) and np.all(k > 0)
     k[:] = -1.0
     st[:] = 99
@@ -76,11 +77,11 @@ def test_c_block_refuses_bad_calls():
         a[i] = value
         assert lib.invert_array(3, *a) == bad
         assert np.all(k == -1.0) and np.all(st == 99)
-    assert lib.invert_array(0, *[None, 0] * 6, 0, 0, 0, None, None, None) == 0
+    assert lib.invert_array(0, *[None, 0] * 6, law, end, none, None, None, None) == 0
     steps_missing = lib.invert_array(3, *args[:-3], k.ctypes.data, d.ctypes.data, st.ctypes.data)
     assert steps_missing == 0   # host none without steps: the continuous model
     a = list(args)
-    a[14] = 1   # host lammps without steps
+    a[14] = lib.codes["host"]["lammps"]   # a host without steps
     assert lib.invert_array(3, *a) == lib.codes["status"]["bad-steps"]
 
 

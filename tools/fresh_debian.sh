@@ -4,7 +4,10 @@
 # with git, make, python3, python3-pip and python3-venv, nothing else), into which a
 # fresh clone of this repository's HEAD is made (committed work only, not the work
 # tree).  Prints the time `make test` took (its installs included) and its final
-# `N passed, N failed` line; exits with make's status.
+# `N passed, N failed` line; then installs the Python wheel that make test built into a
+# fresh venv of a second copy of the base root (no gfortran) and runs the package's tests
+# there (log wheel-test.log).  Exits non-zero when either fails.  `--wheel-only [DIR]`:
+# the wheel test alone, on the wheel of the last run's root.
 #
 # DIR (default build/fresh-debian) keeps the debootstrapped root (base/, made once and
 # reused: delete it to start over) and the root of the last run (root/, replaced by
@@ -25,6 +28,8 @@ set -euo pipefail
 
 if [ "$(id -u)" != 0 ]; then exec sudo -E bash "$0" "$@"; fi
 src=$(cd "$(dirname "$0")/.." && pwd)
+wheel_only=0
+if [ "${1:-}" = --wheel-only ]; then wheel_only=1; shift; fi
 dir=${1:-$src/build/fresh-debian}
 mkdir -p "$dir"; dir=$(cd "$dir" && pwd)
 base=$dir/base root=$dir/root log=$dir/make-test.log
@@ -90,7 +95,29 @@ if [ ! -f "$base/.hertzdamp-base-complete" ]; then
   touch "$base/.hertzdamp-base-complete"
 fi
 
+# pip in a root: the host's settings (pip config, PIP_* variables) and the files they name
+# (a CA bundle, a wheel directory), so that PyPI is reachable the same way.
+pipenv=()
+while IFS='=' read -r name value; do
+  case $name in PIP_*) pipenv+=("$name=$value") ;; esac
+done < <(env)
+pip_setup() {  # root: its /etc/pip.conf from the host's settings, with the files they name
+  {
+    echo "[global]"
+    if command -v pip3 >/dev/null; then
+      pip3 config list 2>/dev/null | sed -nE "s/^(global|install)\.([a-z-]+)='(.*)'$/\2 = \3/p"
+    fi
+  } >"$1/etc/pip.conf"
+  local f
+  for f in $(sed -nE 's/^(cert|client-cert|find-links) = (.*)$/\2/p' "$1/etc/pip.conf") \
+           $(printf '%s\n' "${pipenv[@]}" | sed -nE 's/^PIP_(CERT|CLIENT_CERT|FIND_LINKS)=(.*)$/\2/p'); do
+    case $f in /*) [ -e "$f" ] && { mkdir -p "$1$(dirname "$f")"; cp -a "$f" "$1$f"; } ;; esac
+  done
+}
+
 # ------------------------------------------------------------ this run's root
+# (--wheel-only: none; the wheel test below takes the wheel of the last run's root)
+if [ "$wheel_only" = 1 ]; then rc=0; else
 remove_root "$root"
 cp -a "$base" "$root"
 rm -f "$root/.hertzdamp-base-complete"
@@ -111,20 +138,7 @@ if [ ! -s "$root/etc/hosts" ]; then
     "$(cat "$root/etc/hostname" 2>/dev/null || hostname)" >"$root/etc/hosts"
 fi
 # pip: the host's settings, and the files they name (a CA bundle, a wheel directory).
-pipenv=()
-{
-  echo "[global]"
-  if command -v pip3 >/dev/null; then
-    pip3 config list 2>/dev/null | sed -nE "s/^(global|install)\.([a-z-]+)='(.*)'$/\2 = \3/p"
-  fi
-} >"$root/etc/pip.conf"
-while IFS='=' read -r name value; do
-  case $name in PIP_*) pipenv+=("$name=$value") ;; esac
-done < <(env)
-for f in $(sed -nE 's/^(cert|client-cert|find-links) = (.*)$/\2/p' "$root/etc/pip.conf") \
-         $(printf '%s\n' "${pipenv[@]}" | sed -nE 's/^PIP_(CERT|CLIENT_CERT|FIND_LINKS)=(.*)$/\2/p'); do
-  case $f in /*) [ -e "$f" ] && { mkdir -p "$root$(dirname "$f")"; cp -a "$f" "$root$f"; } ;; esac
-done
+pip_setup "$root"
 
 say "cloning $commit into $root/root/hertzdamp"
 git clone -q --no-hardlinks --no-checkout "$gitdir" "$root/root/hertzdamp"
@@ -161,4 +175,50 @@ awk 'NR > 1 { d = $1 - t; if (d > 0) printf "%5d s  %.60s  ->  %.60s\n", d, prev
      { t = $1; prev = substr($0, 7) }' "$log" | sort -rn | head -n 15 | sed 's/^/    /'
 say "make test: exit $rc in $((elapsed / 60)) min $((elapsed % 60)) s (installs included)"
 say "summary: ${summary:-none (make test did not get to the summary)}"
-exit "$rc"
+fi   # wheel_only
+
+# ------------------------------------------------------------ the wheel without a compiler
+# The repaired wheel that make test built (test/integration/python_wheel.sh) installed
+# into a fresh venv of another copy of the base root, which has python3 and no gfortran:
+# python -m hertzdamp and the package's tests that need neither the program nor LAMMPS.
+wheel_rc=1
+whl=$(ls "$root"/root/hertzdamp/build/python/wheelhouse/hertzdamp-*.whl 2>/dev/null | head -n 1 || true)
+if [ -z "$whl" ]; then
+  say "wheel: none in $root/root/hertzdamp/build/python/wheelhouse (make test did not build it)"
+else
+  wroot=$dir/root-wheel wlog=$dir/wheel-test.log
+  remove_root "$wroot"
+  cp -a "$base" "$wroot"
+  cp -L /etc/resolv.conf "$wroot/etc/resolv.conf" 2>/dev/null || true
+  pip_setup "$wroot"
+  mkdir -p "$wroot/root/src/include" "$wroot/root/src/doc"
+  cp "$whl" "$wroot/root/"
+  # the tests, and what they read: the header's codes, the README's and the guide's Python blocks
+  cp -r "$root/root/hertzdamp/python" "$root/root/hertzdamp/pyproject.toml" "$root/root/hertzdamp/README.md" \
+    "$wroot/root/src/"
+  cp "$root/root/hertzdamp/include/hertzdamp.h" "$wroot/root/src/include/"
+  cp "$root/root/hertzdamp/doc/python.md" "$wroot/root/src/doc/"
+  mount_in proc proc "$wroot/proc" nosuid,noexec,nodev
+  mount_in devtmpfs udev "$wroot/dev" mode=0755,nosuid
+  say "wheel: $(basename "$whl") ($(stat -c %s "$whl") bytes) in a fresh venv of a root without gfortran (log: $wlog)"
+  set +e
+  chroot "$wroot" /usr/bin/env -i HOME=/root TERM=dumb PATH=/usr/local/bin:/usr/bin:/bin "${pipenv[@]}" bash -c '
+    set -e
+    if command -v gfortran || find /usr /lib -name "libgfortran.so*" 2>/dev/null | grep -q .; then
+      echo "wheel root: gfortran or libgfortran present"; exit 1
+    fi
+    echo "wheel root: no gfortran, no libgfortran; $(python3 --version)"
+    python3 -m venv /root/venv
+    /root/venv/bin/pip install -q /root/hertzdamp-*.whl pytest==9.2.0 hypothesis==6.170.17
+    cd /tmp && /root/venv/bin/python -m hertzdamp
+    PYTHONDONTWRITEBYTECODE=1 /root/venv/bin/python -m pytest -c /root/src/pyproject.toml --rootdir /root/src       -p no:cacheprovider -q -rs -m "not cli and not lammps" /root/src/python/tests' </dev/null >"$wlog" 2>&1
+  wheel_rc=$?
+  set -e
+  unmount_all
+  # every selected test must have run
+  if [ "$wheel_rc" -eq 0 ] && tail -n 1 "$wlog" | grep -qE 'skipped|failed|error'; then wheel_rc=1; fi
+  sed 's/^/    /' "$wlog" | grep -vE '^ +\.+ *\[' | tail -n 12
+  say "wheel: exit $wheel_rc ($(grep -E '[0-9]+ passed' "$wlog" | tail -n 1))"
+fi
+[ "$rc" -eq 0 ] && [ "$wheel_rc" -eq 0 ]
+exit $?

@@ -5,9 +5,12 @@
 !> options (test/docs/cli_docs.sh checks it).
 module hertzdamp_cli_help
     use hertzdamp_cli, only: write_stdout, quit, EXIT_OK
+    use hertzdamp, only: hertzdamp_law_listing, hertzdamp_end_listing, hertzdamp_host_listing, &
+                         hertzdamp_method_listing, hertzdamp_law_choices, hertzdamp_end_choices, hertzdamp_host_choices, &
+                         hertzdamp_method_choices
     implicit none
     private
-    public :: print_help, wants_help, hertzdamp_version
+    public :: print_help, wants_help, hertzdamp_version, expand_help
 
     !> The program's version: the same as fpm.toml and CMakeLists.txt (test/docs/cli_docs.sh).
     character(len=*), parameter :: hertzdamp_version = '0.2.0'
@@ -57,12 +60,10 @@ module hertzdamp_cli_help
         'exit 2 (bad input), 3 or 4 (failed).'
 
     character(len=*), parameter :: method_help = &
-        '  --damping LAW         damping force d zeta^q zeta'': linear (q = 0, default; d in' // nl // &
-        '                        kg/s), tsuji (q = 1/4, e the same at every speed) or' // nl // &
-        '                        kuwabara-kono (q = 1/2); other laws: methods fit and rk45' // nl // &
-        '                        (inverse: fit, iterative).  doc/damping-laws.md' // nl // &
-        '  --end overlap|force   contact end: the overlap returns to zero (default), or' // nl // &
-        '                        the total contact force does' // nl // &
+        '  --damping LAW         damping force d zeta^q zeta'': {laws_help}; other' // nl // &
+        '                        laws: methods fit and rk45 (inverse: fit, iterative).' // nl // &
+        '                        doc/damping-laws.md' // nl // &
+        '  --end {ends|}   contact end: {ends_help}' // nl // &
         '  --accuracy A          relative accuracy asked of series and pade (default' // nl // &
         '                        1e-10): beyond it the row is inaccurate' // nl // &
         '  --format F            text (default; for people: units in the header, 7' // nl // &
@@ -74,21 +75,13 @@ module hertzdamp_cli_help
         '  --help                this text'
 
     character(len=*), parameter :: forward_methods_help = &
-        '  --method M            rk45 (reference integrator, default), fit (machine-' // nl // &
-        '                        precision approximant, ~1e-13), compact (closed form,' // nl // &
-        '                        ~1e-5), series (Taylor series in alpha, overlap only,' // nl // &
-        '                        |alpha| < 1), pade (Pade summation, overlap only,' // nl // &
-        '                        0 <= alpha <= 0.8)' // nl // &
+        '  --method M            {forward_methods_help}' // nl // &
         '  --order N             series truncation order, 0..24 (default 13: 1e-12 at' // nl // &
         '                        alpha <= 0.2)' // nl // &
         '  --tol T               rk45 tolerance, 1e-15 <= T <= 1e-2 (default 1e-13)'
 
     character(len=*), parameter :: inverse_methods_help = &
-        '  --method M            fit (default, ~1e-13, e >= 1e-3 overlap, 1e-4 force),' // nl // &
-        '                        compact (closed form, ~1e-5, e >= 0.05), series / pade' // nl // &
-        '                        (Newton on the series / Pade formula, overlap only,' // nl // &
-        '                        series alpha < 1, pade alpha <= 0.8) or iterative' // nl // &
-        '                        (secant over reference-integrator solves)' // nl // &
+        '  --method M            {inverse_methods_help}' // nl // &
         '  --tol T               tolerance of --method iterative, 1e-15 <= T <= 1e-2' // nl // &
         '                        (default 1e-10)'
 
@@ -177,17 +170,15 @@ module hertzdamp_cli_help
         '  z_max0   elastic deepest overlap (5/4)^(2/5), units of u_in t*' // nl // &
         '  e1       restitution slope: e = 1 - e1 alpha + O(alpha^2) (of the law)' // nl // &
         '' // nl // &
-        '  --damping LAW  linear (default), tsuji or kuwabara-kono' // nl // &
+        '  --damping LAW  {laws} (default linear)' // nl // &
         '  --format F   text (aligned, default), csv or json' // nl // &
         '  --help       this text' // nl // &
         'CSV columns: name,value.'
 
     !> The --host option of invert and timestep.
     character(len=*), parameter :: host_help = &
-        '  --host NAME           the DEM host''s time integrator: none (default: the' // nl // &
-        '                        continuous model), lammps (LAMMPS/LIGGGHTS velocity' // nl // &
-        '                        Verlet), mfix-euler, mfix-ab2, verlet (the scene engine),' // nl // &
-        '                        lammps-phase (lammps with the plugin''s onset correction):' // nl // &
+        '  --host NAME           the DEM host''s time integrator (default none):' // nl // &
+        '                        {hosts_help}:' // nl // &
         '                        alpha, tau_c make the achieved e and T_c of the host''s' // nl // &
         '                        N-step collision exact on average over the onset phase;' // nl // &
         '                        adds e_spread and tc_spread (their standard deviations' // nl // &
@@ -300,7 +291,7 @@ module hertzdamp_cli_help
         'The text output ends with ''figure:'' lines: ratios measured side by side.' // nl // &
         '' // nl // &
         '  --quick         short run (smoke test, rough timings)' // nl // &
-        '  --damping LAW   the rows of one law: linear, tsuji or kuwabara-kono (default all)' // nl // &
+        '  --damping LAW   the rows of one law: {laws} (default all)' // nl // &
         '  --format F      text (default), csv or json' // nl // &
         '  --plot FILE     also write a work-precision diagram (PNG, gnuplot): error' // nl // &
         '                  against ns per call, forward and inverse panels per law.' // nl // &
@@ -327,13 +318,12 @@ module hertzdamp_cli_help
         'the physical Hertz stiffness k_phys = (4/3) E* sqrt(R*) is the bound (k <= k_phys).' // nl // &
         'With report = ''restitution'' every contact keeps k = k_phys and only alpha(e) and d' // nl // &
         'are computed.  Contact force k zeta^(3/2) + d zeta^q zeta'', q of the damping law:' // nl // &
-        'linear (q = 0, default), tsuji (q = 1/4: alpha = d/sqrt(m k), e independent of the' // nl // &
-        'impact speed), kuwabara-kono (q = 1/2).' // nl // &
+        '{laws_help}.' // nl // &
         '' // nl // &
         'Groups and keys (all SI units):' // nl // &
         '  &scene    title, dt, steps_per_contact (N), end_time, gravity (.true./.false.),' // nl // &
-        '            g (3, default 0,0,-9.81), contact_end (''overlap''|''force''),' // nl // &
-        '            damping (''linear''|''tsuji''|''kuwabara-kono'', default linear),' // nl // &
+        '            g (3, default 0,0,-9.81), contact_end ({ends''}),' // nl // &
+        '            damping ({laws''}, default linear),' // nl // &
         '            report (''restitution''|''restitution duration''), accuracy (default 1e-3),' // nl // &
         '            domain_lo, domain_hi (3 each, optional box), rest_speed (default 1e-3),' // nl // &
         '            samples (trace points, default 1000)                       once' // nl // &
@@ -350,8 +340,8 @@ module hertzdamp_cli_help
         '               Or one of first-order compact series pade fit iterative.' // nl // &
         '               compact, series and pade exist for the linear law only (skipped' // nl // &
         '               by auto, refused when asked for with another law).' // nl // &
-        '  --damping LAW  linear, tsuji or kuwabara-kono: overrides the file''s damping' // nl // &
-        '               key (the report states the law)' // nl // &
+        '  --damping LAW  {laws}: overrides the file''s damping key (the report states' // nl // &
+        '               the law)' // nl // &
         '  --format F   text (default), csv (sections, each after a "# name" line), json' // nl // &
         '  --plot P     positions and velocities against time (gnuplot, PNG; never the' // nl // &
         '               scene file itself: exit 2)' // nl // &
@@ -359,7 +349,7 @@ module hertzdamp_cli_help
         '               without the option, once a run has taken 2 s)' // nl // &
         '  --no-compare skip the re-run with the iterative rule (no speed-up figures)' // nl // &
         '  --host H     none (default: the engine''s velocity Verlet, the rule of --method),' // nl // &
-        '               lammps, mfix-euler, mfix-ab2 or verlet: the contacts are integrated' // nl // &
+        '               {engine_hosts}: the contacts are integrated' // nl // &
         '               by that host''s scheme and get k, d from its per-pair constants' // nl // &
         '               (hertzdamp_pair_init at N; doc/host-schemes.md); needs --dt and' // nl // &
         '               --steps, which override the file''s dt and steps_per_contact' // nl // &
@@ -403,13 +393,13 @@ module hertzdamp_cli_help
         '  --youngs-modulus E --poisson-ratio NU [--youngs-modulus2 E2 --poisson-ratio2 NU2]' // nl // &
         '                  (with --radius): without contact times the fit takes k = k_phys' // nl // &
         '                  and gives d; with contact times k is fitted, k_phys shown beside' // nl // &
-        '  --damping D     linear (q = 0), tsuji (q = 1/4), kuwabara-kono (q = 1/2) or' // nl // &
-        '                  auto (default): every law, the one with the smallest AIC chosen' // nl // &
+        '  --damping D     {laws_help}, or auto (default): every law, the one with the' // nl // &
+        '                  smallest AIC chosen' // nl // &
         '                  (AIC = chi2 + 2p with sigmas, n ln(RSS/n) + 2p without; all laws' // nl // &
         '                  have the same p, so this is the smallest chi2 or RSS); a law' // nl // &
         '                  whose fit failed is passed over only where it already fits worse,' // nl // &
         '                  else none is chosen (exit 4)' // nl // &
-        '  --end overlap|force   contact-end definition (default overlap)' // nl // &
+        '  --end {ends|}   contact-end definition (default overlap)' // nl // &
         '  --method M      fit (default: machine-precision maps and their exact derivatives;' // nl // &
         '                  the reference integrator for measurements beyond the maps, e < 1e-5)' // nl // &
         '                  or rk45 (reference integrator in the loop, for checking; slow)' // nl // &
@@ -520,17 +510,17 @@ contains
     subroutine print_help(command)
         character(len=*), intent(in) :: command
         select case (command)
-        case ('table'); call write_stdout(table // nl)
-        case ('forward'); call write_stdout(forward // nl)
-        case ('constants'); call write_stdout(constants // nl)
-        case ('invert'); call write_stdout(invert // nl)
-        case ('timestep'); call write_stdout(timestep // nl)
-        case ('bench'); call write_stdout(bench // nl)
-        case ('scene'); call write_stdout(scene // nl)
-        case ('check'); call write_stdout(check // nl)
-        case ('calibrate'); call write_stdout(calibrate // nl)
+        case ('table'); call write_stdout(expand_help(table) // nl)
+        case ('forward'); call write_stdout(expand_help(forward) // nl)
+        case ('constants'); call write_stdout(expand_help(constants) // nl)
+        case ('invert'); call write_stdout(expand_help(invert) // nl)
+        case ('timestep'); call write_stdout(expand_help(timestep) // nl)
+        case ('bench'); call write_stdout(expand_help(bench) // nl)
+        case ('scene'); call write_stdout(expand_help(scene) // nl)
+        case ('check'); call write_stdout(expand_help(check) // nl)
+        case ('calibrate'); call write_stdout(expand_help(calibrate) // nl)
         case ('version'); call write_stdout('hertzdamp ' // hertzdamp_version // nl)
-        case default; call write_stdout(top // nl)
+        case default; call write_stdout(expand_help(top) // nl)
         end select
         call quit(EXIT_OK)
     end subroutine print_help
@@ -545,5 +535,239 @@ contains
             if (l <= 6 .and. (a == '--help' .or. a == '-h')) wants_help = .true.
         end do
     end function wants_help
+
+    !> A help text with the registry's values in place of its tokens (so that no help text
+    !> lists the laws, ends, hosts or methods by hand): {laws}, {ends}, {hosts}, {methods}
+    !> as prose ('a, b or c'); {laws_help}, {ends_help}, {hosts_help} each with its phrase;
+    !> {laws|}, {ends|}, {hosts|} the choices joined by |; {laws'} quoted; {engine_hosts} the
+    !> hosts the scene engine runs (without none); {forward_methods_help},
+    !> {inverse_methods_help} the methods of each problem with their phrases.  A block (a
+    !> line and the lines indented under it) that held a token is wrapped again at 80 columns
+    !> with its indents; every other line is kept as it is.
+    function expand_help(text) result(out)
+        character(len=*), intent(in) :: text
+        character(len=:), allocatable :: out, joined, first
+        integer, allocatable :: a(:), b(:)
+        integer :: i, j, k, n, ind0, ci, dc
+        logical :: tokens
+        call line_bounds(text, a, b, n)
+        out = ''
+        first = ''
+        joined = ''
+        i = 1
+        do while (i <= n)
+            ind0 = lead(text(a(i):b(i)))
+            dc = description_column(text(a(i):b(i)))
+            ci = -1
+            j = i
+            ! the lines indented under it, as far as they go
+            do while (j < n)
+                k = lead(text(a(j + 1):b(j + 1)))
+                if (b(j + 1) < a(j + 1) .or. k <= ind0 .or. (ci >= 0 .and. k /= ci)) exit
+                ! an option's line of its own (options sit two blanks in; text under them deeper)
+                if (text(a(j + 1) + k:a(j + 1) + k) == '-' .and. k <= ind0 + 2) exit
+                ci = k
+                j = j + 1
+            end do
+            tokens = .false.
+            do k = i, j
+                tokens = tokens .or. index(text(a(k):b(k)), '{') > 0
+            end do
+            if (.not. tokens) then
+                do k = i, j
+                    out = out // text(a(k):b(k)) // nl
+                end do
+            else
+                if (ci < 0) ci = merge(dc, ind0, dc > 0)
+                first = text(a(i):a(i) + max(dc, ind0) - 1)
+                joined = trim(adjustl(text(a(i) + max(dc, ind0):b(i))))
+                do k = i + 1, j
+                    ! two blanks after a full stop, as the texts have them
+                    if (joined(len(joined):) == '.') joined = joined // ' '
+                    joined = joined // ' ' // trim(adjustl(text(a(k):b(k))))
+                end do
+                first = substitute(first)
+                if (j == i .and. dc > 0) ci = len(first)
+                out = out // wrap(first, substitute(joined), ci)
+            end if
+            i = j + 1
+        end do
+        if (len(out) > 0) out = out(1:len(out) - 1)
+    end function expand_help
+
+    !> The bounds a(i):b(i) of the lines of a text (new_line separated; b < a: empty).
+    pure subroutine line_bounds(text, a, b, n)
+        character(len=*), intent(in) :: text
+        integer, allocatable, intent(out) :: a(:), b(:)
+        integer, intent(out) :: n
+        integer :: k, m
+        n = 1
+        do k = 1, len(text)
+            if (text(k:k) == nl) n = n + 1
+        end do
+        allocate (a(n), b(n))
+        m = 1
+        a(1) = 1
+        do k = 1, len(text)
+            if (text(k:k) == nl) then
+                b(m) = k - 1
+                m = m + 1
+                a(m) = k + 1
+            end if
+        end do
+        b(n) = len(text)
+    end subroutine line_bounds
+
+    !> Number of leading blanks of a line.
+    pure integer function lead(line)
+        character(len=*), intent(in) :: line
+        lead = verify(line, ' ') - 1
+        if (lead < 0) lead = len(line)
+    end function lead
+
+    !> Where the description of an option line starts (the column after the first run of two
+    !> or more blanks past the option), 0 for a line that is not an option's.
+    pure integer function description_column(line)
+        character(len=*), intent(in) :: line
+        integer :: k, start
+        description_column = 0
+        start = lead(line)
+        if (start == len(line)) return
+        if (line(start + 1:start + 1) /= '-') return
+        k = index(line(start + 1:), '  ')
+        if (k == 0) return
+        k = start + k
+        description_column = verify(line(k:), ' ') + k - 2
+    end function description_column
+
+    !> The text with the registry tokens replaced (see expand_help).
+    function substitute(text) result(s)
+        character(len=*), intent(in) :: text
+        character(len=:), allocatable :: s
+        s = text
+        call rep(s, '{laws_help}', hertzdamp_law_listing(with_help=.true.))
+        call rep(s, '{ends_help}', hertzdamp_end_listing(with_help=.true.))
+        call rep(s, '{hosts_help}', hertzdamp_host_listing(with_help=.true.))
+        call rep(s, '{engine_hosts}', engine_hosts())
+        call rep(s, '{forward_methods_help}', hertzdamp_method_listing(with_help=.true., which='forward'))
+        call rep(s, '{inverse_methods_help}', hertzdamp_method_listing(with_help=.true., which='inverse'))
+        call rep(s, '{laws}', hertzdamp_law_listing())
+        call rep(s, '{ends}', hertzdamp_end_listing())
+        call rep(s, '{hosts}', hertzdamp_host_listing())
+        call rep(s, '{methods}', hertzdamp_method_listing())
+        call rep(s, '{laws|}', piped(hertzdamp_law_choices(), ''))
+        call rep(s, '{ends|}', piped(hertzdamp_end_choices(), ''))
+        call rep(s, '{hosts|}', piped(hertzdamp_host_choices(), ''))
+        call rep(s, '{laws''}', piped(hertzdamp_law_choices(), ''''))
+        call rep(s, '{ends''}', piped(hertzdamp_end_choices(), ''''))
+    end function substitute
+
+    !> The hosts the scene engine integrates with, without none, as prose.
+    function engine_hosts() result(s)
+        character(len=:), allocatable :: s, c
+        integer :: k, n
+        c = hertzdamp_host_choices(engine_only=.true.)
+        ! drop 'none ' (the first): the engine's own scheme without a host
+        c = c(index(c, ' ') + 1:)
+        s = ''
+        n = 0
+        do k = 1, len(c)
+            if (c(k:k) == ' ') n = n + 1
+        end do
+        do k = 1, n + 1
+            if (k == 1) then
+                s = word(c, k)
+            else if (k == n + 1) then
+                s = s // ' or ' // word(c, k)
+            else
+                s = s // ', ' // word(c, k)
+            end if
+        end do
+    end function engine_hosts
+
+    !> The k-th blank-separated word of s.
+    pure function word(s, k) result(w)
+        character(len=*), intent(in) :: s
+        integer, intent(in) :: k
+        character(len=:), allocatable :: w
+        integer :: a, b, m
+        a = 1
+        do m = 1, k - 1
+            a = a + index(s(a:), ' ')
+        end do
+        b = index(s(a:), ' ')
+        if (b == 0) then
+            w = s(a:)
+        else
+            w = s(a:a + b - 2)
+        end if
+    end function word
+
+    !> Blank-separated choices joined by |, each between q and q.
+    pure function piped(choices, q) result(s)
+        character(len=*), intent(in) :: choices, q
+        character(len=:), allocatable :: s
+        integer :: k
+        s = q
+        do k = 1, len(choices)
+            if (choices(k:k) == ' ') then
+                s = s // q // '|' // q
+            else
+                s = s // choices(k:k)
+            end if
+        end do
+        s = s // q
+    end function piped
+
+    !> Replace every occurrence of key in s by val.
+    subroutine rep(s, key, val)
+        character(len=:), allocatable, intent(inout) :: s
+        character(len=*), intent(in) :: key, val
+        integer :: k
+        do
+            k = index(s, key)
+            if (k == 0) return
+            s = s(1:k - 1) // val // s(k + len(key):)
+        end do
+    end subroutine rep
+
+    !> Words of text wrapped at 80 columns: the first line after `first`, the others after
+    !> `indent` blanks; every line ends with a new line.
+    pure function wrap(first, text, indent) result(s)
+        character(len=*), intent(in) :: first, text
+        integer, intent(in) :: indent
+        character(len=:), allocatable :: s, cur, sep
+        integer, parameter :: width = 80
+        integer :: a, b, blanks
+        s = ''
+        sep = ''
+        cur = first
+        a = 1
+        blanks = 0
+        do while (a <= len(text))
+            if (text(a:a) == ' ') then
+                blanks = blanks + 1
+                a = a + 1
+                cycle
+            end if
+            b = index(text(a:), ' ')
+            if (b == 0) then
+                b = len(text)
+            else
+                b = a + b - 2
+            end if
+            sep = repeat(' ', min(blanks, 2))
+            if (len(cur) > max(len(first), indent) .and. len(cur) + len(sep) + (b - a + 1) > width) then
+                s = s // cur // nl
+                cur = repeat(' ', indent)
+                sep = ''
+            end if
+            if (len(cur) == 0 .or. cur(len(cur):len(cur)) == ' ') sep = ''
+            cur = cur // sep // text(a:b)
+            blanks = 0
+            a = b + 1
+        end do
+        s = s // cur // nl
+    end function wrap
 
 end module hertzdamp_cli_help

@@ -17,8 +17,10 @@ module hertzdamp_cli_model
                          hertzdamp_forward_alpha, hertzdamp_collision, hertzdamp_alpha_min, hertzdamp_alpha_max, &
                          hertzdamp_method_code, hertzdamp_law_code, hertzdamp_fit_law_e_min, &
                          HD_DAMPING_LINEAR, HD_DAMPING_TSUJI, HD_END_OVERLAP, HD_METHOD_RK45, HD_METHOD_SERIES, HD_METHOD_PADE, &
-                         HD_METHOD_COMPACT, HD_METHOD_FIT, HD_METHOD_ITERATIVE, HD_OK
-    use hertzdamp_fit_data, only: fit_law_e_min_forward
+                         HD_METHOD_COMPACT, HD_METHOD_FIT, HD_METHOD_ITERATIVE, HD_OK, hertzdamp_law_name, &
+                         hertzdamp_end_name, hertzdamp_end_code, hertzdamp_method_name, hertzdamp_law_choices, &
+                         hertzdamp_end_choices, hertzdamp_method_choices, hertzdamp_law_summary, &
+                         fit_law_e_min_forward => hertzdamp_fit_law_e_min_forward
     use hertzdamp_cli, only: cli_args, parse_real, parse_int, parse_choice, fail, EXIT_USAGE
     use hertzdamp_cli_text, only: fmt_short, itoa
     use hertzdamp_cli_output, only: format_choices
@@ -29,11 +31,6 @@ module hertzdamp_cli_model
 
     !> The valued options parse_model reads (list them in parse_args).
     character(len=*), parameter, public :: model_options = '--damping --end --method --tol --order --accuracy --format'
-    !> The damping laws (hertzdamp_laws): damping force d zeta^q zeta', q = 0, 1/4, 1/2.
-    character(len=*), parameter, public :: law_choices = 'linear tsuji kuwabara-kono'
-    !> Methods of the forward commands (table, forward) and of the inverse (invert, timestep).
-    character(len=*), parameter, public :: forward_methods = 'rk45 series pade compact fit'
-    character(len=*), parameter, public :: inverse_methods = 'fit compact series pade iterative'
 
     !> The parsed model options.
     type, public :: model_opts
@@ -50,7 +47,7 @@ module hertzdamp_cli_model
         character(len=:), allocatable :: tol_text, accuracy_text  !! as given (for the metadata)
     end type model_opts
 
-    public :: parse_model, method_accepts, instead, e_range_message, damping_unit, law_text
+    public :: parse_model, method_accepts, instead, e_range_message, damping_unit, law_text, parse_law, parse_end
 
 contains
 
@@ -63,23 +60,21 @@ contains
         character(len=:), allocatable :: tol_for
         integer :: k
         c%inverse = inverse
-        c%law_name = args%get('--damping', 'linear')
-        k = parse_choice(c%law_name, law_choices, 'damping law (--damping)')
-        c%law = hertzdamp_law_code(c%law_name)
-        c%iend = parse_choice(args%get('--end', 'overlap'), 'overlap force', 'contact-end definition (--end)') - 1
+        c%law_name = args%get('--damping', hertzdamp_law_name(HD_DAMPING_LINEAR))
+        c%law = parse_law(c%law_name, '--damping')
+        c%iend = parse_end(args%get('--end', hertzdamp_end_name(HD_END_OVERLAP)))
         c%fmt = parse_choice(args%get('--format', 'text'), format_choices, 'format (--format)')
         if (inverse) then
-            c%method_name = args%get('--method', 'fit')
-            c%method = hertzdamp_method_code(c%method_name)
-            k = parse_choice(c%method_name, inverse_methods, 'method (--method)')
+            c%method_name = args%get('--method', hertzdamp_method_name(HD_METHOD_FIT))
+            k = parse_choice(c%method_name, hertzdamp_method_choices('inverse'), 'method (--method)')
             c%tol = hertzdamp_invert_default_tol
-            tol_for = 'iterative'
+            tol_for = hertzdamp_method_name(HD_METHOD_ITERATIVE)
         else
-            c%method_name = args%get('--method', 'rk45')
-            c%method = hertzdamp_method_code(c%method_name)
-            k = parse_choice(c%method_name, forward_methods, 'method (--method)')
-            tol_for = 'rk45'
+            c%method_name = args%get('--method', hertzdamp_method_name(HD_METHOD_RK45))
+            k = parse_choice(c%method_name, hertzdamp_method_choices('forward'), 'method (--method)')
+            tol_for = hertzdamp_method_name(HD_METHOD_RK45)
         end if
+        c%method = hertzdamp_method_code(c%method_name)
         c%tol_text = args%get('--tol', fmt_short(c%tol))
         if (args%has('--tol')) then
             c%tol = parse_real(c%tol_text, '--tol')
@@ -112,7 +107,8 @@ contains
         if (c%law /= HD_DAMPING_LINEAR .and. (c%method == HD_METHOD_SERIES .or. c%method == HD_METHOD_PADE .or. &
                                               c%method == HD_METHOD_COMPACT)) then
             call fail(EXIT_USAGE, '--method ' // c%method_name // ' exists for --damping linear only; ' // &
-                      'use --method fit (or ' // trim(merge('iterative', 'rk45     ', inverse)) // ') with --damping ' // &
+                      'use --method ' // hertzdamp_method_name(HD_METHOD_FIT) // ' (or ' // &
+                      hertzdamp_method_name(merge(HD_METHOD_ITERATIVE, HD_METHOD_RK45, inverse)) // ') with --damping ' // &
                       c%law_name)
         end if
         if ((c%method == HD_METHOD_SERIES .or. c%method == HD_METHOD_PADE) .and. c%iend /= HD_END_OVERLAP) then
@@ -136,17 +132,24 @@ contains
     function law_text(law) result(s)
         integer, intent(in) :: law   !! HD_DAMPING_*
         character(len=:), allocatable :: s
-        select case (law)
-        case (HD_DAMPING_LINEAR)
-            s = 'linear: damping force d zeta'' (q = 0); alpha = d t*/m falls with speed as u^(-1/5)'
-        case (HD_DAMPING_TSUJI)
-            s = 'tsuji: damping force d zeta^(1/4) zeta'' (q = 1/4) with d = gamma sqrt(m k); alpha = gamma, ' // &
-                'the same at every speed'
-        case default
-            s = 'kuwabara-kono: damping force d zeta^(1/2) zeta'' (q = 1/2); alpha = d t* (u t*)^(1/2)/m rises ' // &
-                'with speed as u^(1/5)'
-        end select
+        s = hertzdamp_law_summary(law)
     end function law_text
+
+    !> The law code of a name given for an option (exit 2 naming it and the choices if it is none).
+    function parse_law(name, option) result(law)
+        character(len=*), intent(in) :: name, option
+        integer :: law, k
+        k = parse_choice(name, hertzdamp_law_choices(), 'damping law (' // option // ')')
+        law = hertzdamp_law_code(name)
+    end function parse_law
+
+    !> The contact-end code of a --end value (exit 2 naming --end and the choices if it is none).
+    function parse_end(name) result(iend)
+        character(len=*), intent(in) :: name
+        integer :: iend, k
+        k = parse_choice(name, hertzdamp_end_choices(), 'contact-end definition (--end)')
+        iend = hertzdamp_end_code(name)
+    end function parse_end
 
     !> The alpha range a forward method accepts, as text.
     function method_accepts(c) result(s)
@@ -223,7 +226,7 @@ contains
             emin = hertzdamp_fit_law_e_min(c%law, c%iend)
         end select
         s = '--e ' // e_text // ': --method ' // c%method_name // ' accepts ' // fmt_short(emin) // ' <= e <= 1 for ' // &
-            '--end ' // merge('overlap', 'force  ', c%iend == HD_END_OVERLAP)
+            '--end ' // hertzdamp_end_name(c%iend)
         s = trim(s)
         if (e < emin .and. c%iend == HD_END_OVERLAP .and. c%method /= HD_METHOD_COMPACT) then
             s = s // ' (e -> 0 has no finite contact time)'

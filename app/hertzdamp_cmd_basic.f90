@@ -2,7 +2,7 @@
 module hertzdamp_cmd_basic
     use hertzdamp, only: hertzdamp_rk, hertzdamp_collision, hertzdamp_forward_alpha, hertzdamp_forward_dim, &
                          hertzdamp_message, hertzdamp_alpha_c, hertzdamp_tau_c0, hertzdamp_z_max0, hertzdamp_e1, &
-                         hertzdamp_end_name, hertzdamp_alpha_max, hertzdamp_law_q, &
+                         hertzdamp_end_name, hertzdamp_alpha_max, hertzdamp_law_q, hertzdamp_law_name, HD_DAMPING_LINEAR, &
                          hertzdamp_law_has_alpha_c, hertzdamp_law_alpha_c, hertzdamp_law_code, &
                          HD_OK, HD_NO_REBOUND, HD_END_OVERLAP, HD_METHOD_RK45, HD_METHOD_SERIES, HD_METHOD_PADE, &
                          HD_BAD_ALPHA, HD_BAD_STIFFNESS, HD_BAD_DAMPING, HD_BAD_VELOCITY, HD_BAD_MASS, &
@@ -14,7 +14,7 @@ module hertzdamp_cmd_basic
     use hertzdamp_cli_text, only: fmt_short, itoa
     use hertzdamp_cli_output, only: out_table, format_choices
     use hertzdamp_cli_help, only: print_help, wants_help
-    use hertzdamp_cli_model, only: model_opts, parse_model, model_options, method_accepts, instead, law_choices, damping_unit
+    use hertzdamp_cli_model, only: model_opts, parse_model, model_options, method_accepts, instead, parse_law, damping_unit
     use hertzdamp_cli_rows, only: row_log, row_kind, row_word, row_has_result
     use hertzdamp_cli_materials, only: cli_contact, parse_contact, require_mass, contact_table, contact_options, contact_flags
     use hertzdamp_cli_progress, only: progress_reporter
@@ -264,10 +264,9 @@ contains
         if (wants_help()) call print_help('constants')
         call parse_args(2, '--format --damping', '', args)
         fmt = parse_choice(args%get('--format', 'text'), format_choices, 'format (--format)')
-        law = parse_choice(args%get('--damping', 'linear'), law_choices, 'damping law (--damping)')
-        law = hertzdamp_law_code(args%get('--damping', 'linear'))
+        law = parse_law(args%get('--damping', hertzdamp_law_name(HD_DAMPING_LINEAR)), '--damping')
         call t%set_columns('name,value')
-        call t%meta('damping', args%get('--damping', 'linear'))
+        call t%meta('damping', hertzdamp_law_name(law))
         call t%str('alpha_c')
         if (hertzdamp_law_has_alpha_c(law)) then
             call hertzdamp_alpha_c(ac, status, law=law)

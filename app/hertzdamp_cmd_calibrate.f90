@@ -3,7 +3,7 @@
 !> with `--damping auto`, the damping law the data support.  Parsing, reading the
 !> CSV and printing only: the fit is hertzdamp_calibrate (packages/calibrate).
 module hertzdamp_cmd_calibrate
-    use hertzdamp, only: hertzdamp_rk, hertzdamp_end_name, HD_METHOD_FIT, HD_METHOD_RK45, HD_OK
+    use hertzdamp, only: hertzdamp_rk, hertzdamp_end_name, HD_METHOD_FIT, HD_METHOD_RK45, HD_OK, HD_END_OVERLAP
     use hertzdamp_calibrate, only: cal_data, cal_options, cal_result, cal_check, cal_fit, cal_auto, cal_model, &
                                    CAL_OK, CAL_BAD_DATA, CAL_NOT_IDENTIFIED, CAL_NO_CONVERGENCE
     use hertzdamp_calibrate_maps, only: cal_law_name, cal_law_q, cal_max_law, CAL_LAW_LINEAR, CAL_LAW_TSUJI
@@ -14,7 +14,7 @@ module hertzdamp_cmd_calibrate
     use hertzdamp_cli_help, only: print_help, wants_help
     use hertzdamp_cli_text, only: g => fmt_text_short, itoa, one_line
     use hertzdamp_cli_materials, only: cli_contact, parse_contact, require_mass, contact_options, contact_flags
-    use hertzdamp_cli_model, only: damping_unit
+    use hertzdamp_cli_model, only: damping_unit, parse_end
     use hertzdamp_cli_plausible, only: warn_implausible, warn_value, quiet_flag
     implicit none
     private
@@ -66,7 +66,7 @@ contains
         dname = args%get('--damping', 'auto')
         law = parse_choice(dname, 'linear tsuji kuwabara-kono auto', 'damping law (--damping)') - 1
         if (law > cal_max_law) law = -1   ! auto
-        o%iend = parse_choice(args%get('--end', 'overlap'), 'overlap force', 'contact-end definition (--end)') - 1
+        o%iend = parse_end(args%get('--end', hertzdamp_end_name(HD_END_OVERLAP)))
         o%method = merge(HD_METHOD_FIT, HD_METHOD_RK45, &
                          parse_choice(args%get('--method', 'fit'), 'fit rk45', 'method (--method)') == 1)
         if (args%has('--tol')) then

@@ -7,7 +7,7 @@ module hertzdamp_cmd_invert
                          HD_OUT_OF_RANGE, HD_METHOD_ITERATIVE, HD_METHOD_FIT, HD_HOST_UNREACHABLE, HD_HOST_NONE, HD_BAD_PAIR, &
                          hertzdamp_pair_t, hertzdamp_pair_init, hertzdamp_pair_kd, hertzdamp_host_stats, &
                          hertzdamp_host_name, hertzdamp_host_min_steps, hertzdamp_host_mean, hertzdamp_forward_alpha, &
-                         hertzdamp_collision
+                         hertzdamp_collision, hertzdamp_host_choices, hertzdamp_host_code
     use hertzdamp_cli, only: cli_args, parse_args, parse_sweep, parse_choice, required_sweep, check_combinations, fail, &
                              EXIT_USAGE
     use hertzdamp_cli_text, only: itoa
@@ -28,7 +28,6 @@ module hertzdamp_cmd_invert
     integer, parameter :: wp = hertzdamp_rk
 
     !> The host schemes of --host, in the order of their codes (HD_HOST_* = 0, 1, ...).
-    character(len=*), parameter :: host_choices = 'none lammps mfix-euler mfix-ab2 verlet lammps-phase'
 
     !> The --host of a command: the scheme and whether it was given.
     type :: host_opts
@@ -45,9 +44,11 @@ contains
         type(cli_args), intent(in) :: args
         type(model_opts), intent(in) :: c
         type(host_opts), intent(out) :: h
+        integer :: k
         h%given = args%has('--host')
         if (.not. h%given) return
-        h%host = parse_choice(args%get('--host', ''), host_choices, 'host scheme (--host)') - 1
+        k = parse_choice(args%get('--host', ''), hertzdamp_host_choices(), 'host scheme (--host)')
+        h%host = hertzdamp_host_code(args%get('--host', ''))
         if (h%host /= HD_HOST_NONE .and. c%method /= HD_METHOD_FIT) then
             call fail(EXIT_USAGE, '--host ' // hertzdamp_host_name(h%host) // ': the host-exact constants come ' // &
                       'from the fit; --method applies to --host none')

@@ -8,7 +8,7 @@ module hertzdamp_cmd_scene
                          HD_METHOD_PADE, HD_METHOD_COMPACT, HD_METHOD_FIT, HD_METHOD_FIRST_ORDER, hertzdamp_method_name, &
                          hertzdamp_law_code, hertzdamp_law_name, HD_HOST_NONE, HD_HOST_VERLET, hertzdamp_host_name, &
                          hertzdamp_pair_t, hertzdamp_pair_init, HD_HOST_UNREACHABLE, HD_BAD_STEPS, hertzdamp_message, &
-                         hertzdamp_host_steps_min, hertzdamp_host_steps_max
+                         hertzdamp_host_steps_min, hertzdamp_host_steps_max, hertzdamp_host_choices, hertzdamp_host_code
     use hertzdamp_dem, only: hertzdamp_dem_scene, hertzdamp_dem_result, hertzdamp_dem_check, hertzdamp_dem_state, &
                              hertzdamp_dem_start, hertzdamp_dem_advance, hertzdamp_dem_finish, hertzdamp_dem_steps_done, &
                              hertzdamp_dem_steps_total, hertzdamp_dem_rule, hertzdamp_dem_host_rule, hertzdamp_dem_select, &
@@ -20,7 +20,7 @@ module hertzdamp_cmd_scene
                              EXIT_USAGE, EXIT_OK, EXIT_FAILURE, EXIT_NO_SOLUTION
     use hertzdamp_cli_output, only: out_table, format_choices, FORMAT_JSON, FORMAT_CSV, FORMAT_TEXT
     use hertzdamp_cli_help, only: print_help, wants_help
-    use hertzdamp_cli_model, only: law_choices, damping_unit, law_text
+    use hertzdamp_cli_model, only: parse_law, damping_unit, law_text
     use hertzdamp_cli_plot, only: plot_check_target, plot_scratch, plot_temp_name, gp_string
     use hertzdamp_cli_text, only: itoa, fmt_text_short, fmt_short
     use hertzdamp_cli_progress, only: progress_reporter
@@ -34,8 +34,6 @@ module hertzdamp_cmd_scene
     integer, parameter :: EXIT_CHECKS = 5
     !> --method choices; 'auto' first.
     character(len=*), parameter :: method_choices = 'auto first-order compact series pade fit iterative'
-    !> --host choices, in the order of the codes HD_HOST_* = 0, 1, ...
-    character(len=*), parameter :: host_choices = 'none lammps mfix-euler mfix-ab2 verlet'
     !> Most contact rows printed.
     integer, parameter :: max_rows = 200
     !> Most particles drawn by --plot.
@@ -77,14 +75,15 @@ contains
         plot = args%get('--plot', '')
         law = -1
         if (args%has('--damping')) then
-            c = parse_choice(args%get('--damping', ''), law_choices, 'damping law (--damping)')
-            law = hertzdamp_law_code(args%get('--damping', ''))
+            law = parse_law(args%get('--damping', ''), '--damping')
         end if
         compare = .not. args%has('--no-compare')
         if (args%has('--plot')) call plot_check_target(plot, terminal, [file])
         host = HD_HOST_NONE
         if (args%has('--host')) then
-            host = parse_choice(args%get('--host', ''), host_choices, 'host scheme (--host)') - 1
+            ! the hosts whose scheme the engine integrates with
+            c = parse_choice(args%get('--host', ''), hertzdamp_host_choices(engine_only=.true.), 'host scheme (--host)')
+            host = hertzdamp_host_code(args%get('--host', ''))
             if (.not. (args%has('--dt') .and. args%has('--steps'))) then
                 call fail(EXIT_USAGE, '--host needs --dt and --steps (the time step of the host and the steps per ' // &
                           'contact N it integrates with, T_c = N dt)')

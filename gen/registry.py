@@ -13,7 +13,10 @@ repository):
 - include/hertzdamp.fi: the PARAMETER constants, between "! BEGIN codes (gen/registry.py)"
   and "! END codes";
 - doc/library.md: the legacy-codes table, between "<!-- BEGIN legacy codes -->" and
-  "<!-- END legacy codes -->".
+  "<!-- END legacy codes -->";
+- src/hertzdamp.f90 (the umbrella): the use and public lines of the registry's names,
+  between "! BEGIN registry use" / "! END registry use" and "! BEGIN registry public" /
+  "! END registry public".
 
 Deterministic: the same table gives the same bytes.  test/docs/registry_sync.sh runs it
 into a copy of the tree and compares.
@@ -164,16 +167,18 @@ def fortran(reg, table_name):
                                                                                           for r in rows)))
             w("    logical, parameter :: host_engine_table(%d:%d) = [%s]" % (lo, hi, ", ".join(
                 ".true." if r["engine"] else ".false." for r in rows)))
-        if kind in ("law", "host"):
-            hl = max(len(r["help"]) for r in rows)
-            w("    character(len=%d), parameter :: %s_helps(%d:%d) = [character(len=%d) :: &" % (hl, kind, lo, hi, hl))
-            w(",  &\n".join("        " + fstr(r["help"]) for r in rows) + "]")
+        helps = [("helps", "help")] if kind != "method" else [("forward_helps", "forward_help"),
+                                                                 ("inverse_helps", "inverse_help")]
+        for arr, field in helps:
+            hl = max(1, max(len(r[field]) for r in rows))
+            w("    character(len=%d), parameter :: %s_%s(%d:%d) = [character(len=%d) :: &" % (hl, kind, arr, lo, hi, hl))
+            w(",  &\n".join("        " + fstr(r[field]) for r in rows) + "]")
         w("")
-    w("    public :: hertzdamp_message")
+    w("    public :: hertzdamp_message, hertzdamp_status_name")
     for kind in ("law", "end", "host", "method"):
         w("    public :: hertzdamp_%s_name, hertzdamp_%s_code, hertzdamp_%s_choices, hertzdamp_%s_listing" % (
             kind, kind, kind, kind))
-    w("    public :: hertzdamp_law_q, hertzdamp_law_summary, hertzdamp_law_help")
+    w("    public :: hertzdamp_law_q, hertzdamp_law_summary, hertzdamp_law_help, hertzdamp_end_help")
     w("    public :: hertzdamp_host_order, hertzdamp_host_in_engine, hertzdamp_host_help")
     w("")
     w("contains")
@@ -188,6 +193,28 @@ def fortran(reg, table_name):
     w("            msg = trim(hertzdamp_message_table(hertzdamp_max_status + 1))")
     w("        end if")
     w("    end function hertzdamp_message")
+    w("")
+    w("    !> The name of a status code: its HD_ name in lower case with dashes ('ok',")
+    w("    !> 'no-rebound', ...; 'unknown' for a code without a row).")
+    w("    pure function hertzdamp_status_name(status) result(name)")
+    w("        integer, intent(in) :: status   !! HD_*")
+    w("        character(len=:), allocatable :: name")
+    nl = max(len(r["const"]) for r in reg["status"])
+    w("        character(len=%d), parameter :: names(0:hertzdamp_max_status) = [character(len=%d) :: &" % (nl, nl))
+    names = [fstr(r["const"].lower().replace("_", "-")) for r in reg["status"]]
+    lines, cur = [], "            "
+    for i, n in enumerate(names):
+        add = n + (", " if i < len(names) - 1 else "]")
+        if len(cur) + len(add) > 110:
+            lines.append(cur.rstrip() + " &")
+            cur = "            "
+        cur += add
+    lines.append(cur)
+    for l in lines:
+        w(l)
+    w("        name = 'unknown'")
+    w("        if (status >= 0 .and. status <= hertzdamp_max_status) name = trim(names(status))")
+    w("    end function hertzdamp_status_name")
     for kind in ("law", "end", "host", "method"):
         pre = KINDS[kind][0]
         rows = reg[kind]
@@ -223,10 +250,19 @@ def fortran(reg, table_name):
             w("        end do")
         w("    end function hertzdamp_%s_code" % kind)
         w("")
-        w("    !> The %s names, blank-separated (a CLI's choices).  engine_only (hosts): those the scene" % kind)
-        w("    !> engine integrates with." if kind == "host" else "    !> (engine_only: not used.)")
-        w("    pure function hertzdamp_%s_choices(engine_only) result(s)" % kind)
-        w("        logical, intent(in), optional :: engine_only   !! hosts: the scene engine's only")
+        if kind == "host":
+            w("    !> The host names, blank-separated (a CLI's choices); engine_only: those the scene engine")
+            w("    !> integrates with.")
+            w("    pure function hertzdamp_host_choices(engine_only) result(s)")
+            w("        logical, intent(in), optional :: engine_only   !! the scene engine's only")
+        elif kind == "method":
+            w("    !> The method names, blank-separated (a CLI's choices); which = 'forward' or 'inverse':")
+            w("    !> the methods of that problem.")
+            w("    pure function hertzdamp_method_choices(which) result(s)")
+            w("        character(len=*), intent(in), optional :: which   !! 'forward' or 'inverse'")
+        else:
+            w("    !> The %s names, blank-separated (a CLI's choices)." % kind)
+            w("    pure function hertzdamp_%s_choices() result(s)" % kind)
         w("        character(len=:), allocatable :: s")
         w("        integer :: k")
         w("        s = ''")
@@ -235,42 +271,77 @@ def fortran(reg, table_name):
             w("            if (present(engine_only)) then")
             w("                if (engine_only .and. .not. host_engine_table(k)) cycle")
             w("            end if")
-        else:
-            w("            if (present(engine_only)) continue")
+        elif kind == "method":
+            w("            if (present(which)) then")
+            w("                if (which == 'forward' .and. len_trim(method_forward_helps(k)) == 0) cycle")
+            w("                if (which == 'inverse' .and. len_trim(method_inverse_helps(k)) == 0) cycle")
+            w("            end if")
         w("            s = s // trim(%s_names(k)) // ' '" % kind)
         w("        end do")
         w("        s = trim(s)")
         w("    end function hertzdamp_%s_choices" % kind)
         w("")
-        w("    !> The %s names as prose, 'a, b or c' (conj replaces 'or'); with_help: each followed by" % kind)
-        w("    !> its help phrase in parentheses (laws and hosts); first: the code to start from.")
-        w("    pure function hertzdamp_%s_listing(conj, with_help, first) result(s)" % kind)
+        w("    !> The %s names as prose, 'a, b or c' (conj replaces 'or'), from the code `first` on;" % kind)
+        w("    !> with_help: each followed by its help phrase in parentheses%s." % (
+            "; which = 'forward' or 'inverse': the methods of that\n    !> problem, with its phrases" if kind == "method"
+            else ""))
+        w("    pure function hertzdamp_%s_listing(conj, with_help, first%s) result(s)" % (
+            kind, ", which" if kind == "method" else ""))
         w("        character(len=*), intent(in), optional :: conj     !! the last joint (default 'or')")
         w("        logical, intent(in), optional :: with_help         !! add each value's help phrase")
         w("        integer, intent(in), optional :: first             !! first code listed")
-        w("        character(len=:), allocatable :: s, item, c")
-        w("        integer :: k, k0")
+        if kind == "method":
+            w("        character(len=*), intent(in), optional :: which    !! 'forward' or 'inverse'")
+        w("        character(len=:), allocatable :: s, item, c, hp")
+        w("        integer :: k, k0, n, nitems")
+        w("        logical :: help")
         w("        c = 'or'")
         w("        if (present(conj)) c = conj")
+        w("        help = .false.")
+        w("        if (present(with_help)) help = with_help")
         w("        k0 = hertzdamp_min_%s" % kind)
         w("        if (present(first)) k0 = max(first, hertzdamp_min_%s)" % kind)
-        w("        s = ''")
+        w("        nitems = 0")
         w("        do k = k0, hertzdamp_max_%s" % kind)
+        w("            if (.not. listed(k)) cycle")
+        w("            nitems = nitems + 1")
+        w("        end do")
+        w("        s = ''")
+        w("        n = 0")
+        w("        do k = k0, hertzdamp_max_%s" % kind)
+        w("            if (.not. listed(k)) cycle")
+        w("            n = n + 1")
         w("            item = trim(%s_names(k))" % kind)
-        if kind in ("law", "host"):
-            w("            if (present(with_help)) then")
-            w("                if (with_help) item = item // ' (' // trim(%s_helps(k)) // ')'" % kind)
-            w("            end if")
-        else:
-            w("            if (present(with_help)) continue")
-        w("            if (k == k0) then")
+        w("            hp = phrase(k)")
+        w("            if (help .and. len(hp) > 0) item = item // ' (' // hp // ')'")
+        w("            if (n == 1) then")
         w("                s = item")
-        w("            else if (k == hertzdamp_max_%s) then" % kind)
+        w("            else if (n == nitems) then")
         w("                s = s // ' ' // c // ' ' // item")
         w("            else")
         w("                s = s // ', ' // item")
         w("            end if")
         w("        end do")
+        w("    contains")
+        w("        pure logical function listed(kk)")
+        w("            integer, intent(in) :: kk")
+        if kind == "method":
+            w("            listed = .true.")
+            w("            if (present(which)) listed = len_trim(phrase(kk)) > 0")
+        else:
+            w("            listed = kk >= hertzdamp_min_%s" % kind)
+        w("        end function listed")
+        w("        pure function phrase(kk) result(t)")
+        w("            integer, intent(in) :: kk")
+        w("            character(len=:), allocatable :: t")
+        if kind == "method":
+            w("            t = ''")
+            w("            if (.not. present(which)) return")
+            w("            if (which == 'forward') t = trim(method_forward_helps(kk))")
+            w("            if (which == 'inverse') t = trim(method_inverse_helps(kk))")
+        else:
+            w("            t = trim(%s_helps(kk))" % kind)
+        w("        end function phrase")
         w("    end function hertzdamp_%s_listing" % kind)
     w("")
     w("    !> Exponent q of zeta in the damping force of a law (0 for an invalid code).")
@@ -287,7 +358,7 @@ def fortran(reg, table_name):
     w("        s = hertzdamp_law_name(law)")
     w("        if (law >= hertzdamp_min_law .and. law <= hertzdamp_max_law) s = s // ': ' // trim(law_summaries(law))")
     w("    end function hertzdamp_law_summary")
-    for kind in ("law", "host"):
+    for kind in ("law", "end", "host"):
         w("")
         w("    !> The short help phrase of a %s ('' for an invalid code)." % kind)
         w("    pure function hertzdamp_%s_help(code) result(s)" % kind)
@@ -315,6 +386,44 @@ def fortran(reg, table_name):
     w("")
     w("end module hertzdamp_registry")
     return "\n".join(o) + "\n"
+
+
+def umbrella_names(reg):
+    """The registry's names that the umbrella module hertzdamp exports."""
+    names = ["HD_" + r["const"] for r in reg["status"]] + ["hertzdamp_max_status", "hertzdamp_message",
+                                                           "hertzdamp_status_name"]
+    for kind in ("law", "end", "host", "method"):
+        pre = KINDS[kind][0]
+        names += ["HD_%s_%s" % (pre, r["const"]) for r in reg[kind]]
+        names += ["hertzdamp_min_%s" % kind, "hertzdamp_max_%s" % kind]
+        names += ["hertzdamp_%s_%s" % (kind, f) for f in ("name", "code", "choices", "listing")]
+    names += ["hertzdamp_law_q", "hertzdamp_law_summary", "hertzdamp_law_help", "hertzdamp_end_help",
+              "hertzdamp_host_order", "hertzdamp_host_in_engine", "hertzdamp_host_help",
+              "hertzdamp_pair_size", "hertzdamp_pair_oblique_size", "hertzdamp_pair_phase_size"]
+    return names
+
+
+def fortran_list(head, names, indent, width=110):
+    lines, cur = [], head
+    for i, n in enumerate(names):
+        add = n + (", " if i < len(names) - 1 else "")
+        if len(cur) + len(add) > width:
+            lines.append(cur.rstrip() + " &")
+            cur = " " * indent
+        cur += add
+    lines.append(cur)
+    return "\n".join(lines)
+
+
+def umbrella_blocks(reg):
+    names = umbrella_names(reg)
+    use = ("    ! BEGIN registry use (gen/registry.py)\n" +
+           fortran_list("    use hertzdamp_registry, only: ", names, 34) + "\n    ! END registry use\n")
+    pub = ("    ! BEGIN registry public (gen/registry.py)\n"
+           "    ! the codes, names, attributes and lookups of every enumeration, and the pair's size\n"
+           "    ! (hertzdamp_registry, from data/registry.toml)\n" +
+           fortran_list("    public :: ", names, 14) + "\n    ! END registry public\n")
+    return use, pub
 
 
 def c_block(reg):
@@ -399,6 +508,12 @@ def main():
              doc_block(reg))):
         with open(path, encoding="utf-8") as fh:
             outputs[path] = splice(fh.read(), begin, end, block, path)
+    umb = os.path.join(root, "src", "hertzdamp.f90")
+    with open(umb, encoding="utf-8") as fh:
+        text = fh.read()
+    use, pub = umbrella_blocks(reg)
+    text = splice(text, "    ! BEGIN registry use", "    ! END registry use", use, umb)
+    outputs[umb] = splice(text, "    ! BEGIN registry public", "    ! END registry public", pub, umb)
     for path, text in outputs.items():
         with open(path, "w", encoding="utf-8") as fh:
             fh.write(text)

@@ -52,11 +52,10 @@ module hertzdamp_capi
     use hertzdamp_host, only: HD_HOST_NONE, hertzdamp_host_stats, hertzdamp_host_mean, hertzdamp_host_min_steps
     ! ---- for the array and lookup entry points of the Python package (issue 35; the block at the end)
     use, intrinsic :: iso_c_binding, only: c_ptrdiff_t
-    use hertzdamp_status, only: HD_BAD_PAIR, HD_BAD_STEPS, HD_OUT_OF_RANGE
-    use hertzdamp_ends, only: HD_END_FORCE, hertzdamp_end_name
-    use hertzdamp_laws, only: hertzdamp_max_law, hertzdamp_law_name
-    use hertzdamp_host, only: hertzdamp_max_host, hertzdamp_host_name
-    use hertzdamp_methods, only: HD_METHOD_FIRST_ORDER, hertzdamp_method_name
+    use hertzdamp_registry, only: HD_BAD_PAIR, HD_BAD_STEPS, HD_OUT_OF_RANGE, HD_END_FORCE, hertzdamp_end_name, &
+                                  hertzdamp_min_law, hertzdamp_max_law, hertzdamp_law_name, hertzdamp_min_end, &
+                                  hertzdamp_max_end, hertzdamp_min_host, hertzdamp_max_host, hertzdamp_host_name, &
+                                  hertzdamp_min_method, hertzdamp_max_method, hertzdamp_method_name, hertzdamp_status_name
     use hertzdamp_rk45, only: hertzdamp_rk45_default_tol
     use hertzdamp_series, only: hertzdamp_series_default_order
     use hertzdamp_methods, only: hertzdamp_default_accuracy
@@ -635,12 +634,6 @@ contains
         integer, intent(out) :: count                 !! number of names; -1: no such registry
         character(len=32), intent(out) :: names(64)
         integer, intent(out) :: codes(64)
-        character(len=16), parameter :: status_names(0:hertzdamp_max_status) = [character(len=16) :: &
-            'ok', 'no-rebound', 'max-steps', 'step-underflow', 'bad-alpha', 'bad-end', 'bad-tol', 'bad-mass', &
-            'bad-velocity', 'bad-stiffness', 'bad-damping', 'bad-time', 'bad-restitution', 'out-of-range', &
-            'not-supported', 'no-convergence', 'bad-order', 'bad-kphys', 'bad-argument', 'outside-validity', &
-            'inaccurate', 'bad-radius', 'bad-density', 'bad-modulus', 'bad-poisson', 'bad-law', 'bad-host', &
-            'bad-steps', 'host-unreachable', 'bad-pair']
         character(len=8), parameter :: stats_names(0:7) = [character(len=8) :: &
             'e_mean', 'e_sd', 'e_min', 'e_max', 'tau_mean', 'tau_sd', 'tau_min', 'tau_max']
         integer :: i, n0
@@ -649,14 +642,17 @@ contains
         n0 = 0
         select case (kind)
         case ('law')
-            count = hertzdamp_max_law + 1
+            count = hertzdamp_max_law - hertzdamp_min_law + 1
+            n0 = hertzdamp_min_law
         case ('end')
-            count = HD_END_FORCE + 1
+            count = hertzdamp_max_end - hertzdamp_min_end + 1
+            n0 = hertzdamp_min_end
         case ('host')
-            count = hertzdamp_max_host + 1
+            count = hertzdamp_max_host - hertzdamp_min_host + 1
+            n0 = hertzdamp_min_host
         case ('method')
-            count = HD_METHOD_FIRST_ORDER
-            n0 = 1
+            count = hertzdamp_max_method - hertzdamp_min_method + 1
+            n0 = hertzdamp_min_method
         case ('status')
             count = hertzdamp_max_status + 1
         case ('stats')
@@ -664,7 +660,7 @@ contains
         case ('size')
             count = 2
             names(1:2) = [character(len=32) :: 'pair', 'stats']
-            codes(1:2) = [storage_size(hertzdamp_pair_t()) / storage_size(1.0_c_double), size(stats_names)]
+            codes(1:2) = [hertzdamp_pair_size, size(stats_names)]
             return
         case default
             count = -1
@@ -682,7 +678,7 @@ contains
             case ('method')
                 names(i) = hertzdamp_method_name(codes(i))
             case ('status')
-                names(i) = status_names(codes(i))
+                names(i) = hertzdamp_status_name(codes(i))
             case default
                 names(i) = stats_names(codes(i))
             end select

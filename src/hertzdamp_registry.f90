@@ -136,7 +136,7 @@ module hertzdamp_registry
         'damping force d zeta^(1/2) zeta'' (q = 1/2); alpha = d t* (u t*)^(1/2)/m rises with ' // &
             'speed as u^(1/5)']
     character(len=34), parameter :: law_helps(0:2) = [character(len=34) :: &
-        'q = 0, d in kg/s',  &
+        'q = 0, default; d in kg/s',  &
         'q = 1/4, e the same at every speed',  &
         'q = 1/2']
 
@@ -149,6 +149,9 @@ module hertzdamp_registry
     integer, parameter, public :: hertzdamp_min_end = 0, hertzdamp_max_end = 1
     character(len=7), parameter :: end_names(0:1) = [character(len=7) :: &
         'overlap', 'force']
+    character(len=39), parameter :: end_helps(0:1) = [character(len=39) :: &
+        'the overlap returns to zero, default',  &
+        'the total contact force returns to zero']
 
     ! ------------------------------------------------ hosts
     !> none: the continuous model: k, d exact for it
@@ -196,13 +199,29 @@ module hertzdamp_registry
     integer, parameter, public :: hertzdamp_min_method = 1, hertzdamp_max_method = 7
     character(len=11), parameter :: method_names(1:7) = [character(len=11) :: &
         'rk45', 'series', 'pade', 'compact', 'fit', 'iterative', 'first-order']
+    character(len=49), parameter :: method_forward_helps(1:7) = [character(len=49) :: &
+        'reference integrator, default',  &
+        'Taylor series in alpha, overlap only, |alpha| < 1',  &
+        'Pade summation, overlap only, 0 <= alpha <= 0.8',  &
+        'closed form, ~1e-5',  &
+        'machine-precision approximant, ~1e-13',  &
+        '',  &
+        '']
+    character(len=54), parameter :: method_inverse_helps(1:7) = [character(len=54) :: &
+        '',  &
+        'Newton on the series, overlap only, alpha < 1',  &
+        'Newton on the Pade formula, overlap only, alpha <= 0.8',  &
+        'closed form, ~1e-5, e >= 0.05',  &
+        'default, ~1e-13, e >= 1e-3 overlap, 1e-4 force',  &
+        'secant over reference-integrator solves',  &
+        '']
 
-    public :: hertzdamp_message
+    public :: hertzdamp_message, hertzdamp_status_name
     public :: hertzdamp_law_name, hertzdamp_law_code, hertzdamp_law_choices, hertzdamp_law_listing
     public :: hertzdamp_end_name, hertzdamp_end_code, hertzdamp_end_choices, hertzdamp_end_listing
     public :: hertzdamp_host_name, hertzdamp_host_code, hertzdamp_host_choices, hertzdamp_host_listing
     public :: hertzdamp_method_name, hertzdamp_method_code, hertzdamp_method_choices, hertzdamp_method_listing
-    public :: hertzdamp_law_q, hertzdamp_law_summary, hertzdamp_law_help
+    public :: hertzdamp_law_q, hertzdamp_law_summary, hertzdamp_law_help, hertzdamp_end_help
     public :: hertzdamp_host_order, hertzdamp_host_in_engine, hertzdamp_host_help
 
 contains
@@ -217,6 +236,22 @@ contains
             msg = trim(hertzdamp_message_table(hertzdamp_max_status + 1))
         end if
     end function hertzdamp_message
+
+    !> The name of a status code: its HD_ name in lower case with dashes ('ok',
+    !> 'no-rebound', ...; 'unknown' for a code without a row).
+    pure function hertzdamp_status_name(status) result(name)
+        integer, intent(in) :: status   !! HD_*
+        character(len=:), allocatable :: name
+        character(len=17), parameter :: names(0:hertzdamp_max_status) = [character(len=17) :: &
+            'ok', 'no-rebound', 'max-steps', 'step-underflow', 'bad-alpha', 'bad-end', 'bad-tol', 'bad-mass', &
+            'bad-velocity', 'bad-stiffness', 'bad-damping', 'bad-time', 'bad-restitution', 'out-of-range', &
+            'not-supported', 'no-convergence', 'bad-order', 'bad-kphys', 'bad-argument', 'outside-validity', &
+            'inaccurate', 'bad-radius', 'bad-density', 'bad-modulus', 'bad-poisson', 'bad-law', 'bad-host', &
+            'bad-steps', 'host-unreachable', 'bad-pair', 'phase-unreachable', 'bad-phase', 'no-phase-table', &
+            'bad-tangential', 'bad-oblique']
+        name = 'unknown'
+        if (status >= 0 .and. status <= hertzdamp_max_status) name = trim(names(status))
+    end function hertzdamp_status_name
 
     !> Name of a law code (linear, tsuji or kuwabara-kono; 'unknown' for others).
     pure function hertzdamp_law_name(code) result(name)
@@ -242,46 +277,63 @@ contains
         end do
     end function hertzdamp_law_code
 
-    !> The law names, blank-separated (a CLI's choices).  engine_only (hosts): those the scene
-    !> (engine_only: not used.)
-    pure function hertzdamp_law_choices(engine_only) result(s)
-        logical, intent(in), optional :: engine_only   !! hosts: the scene engine's only
+    !> The law names, blank-separated (a CLI's choices).
+    pure function hertzdamp_law_choices() result(s)
         character(len=:), allocatable :: s
         integer :: k
         s = ''
         do k = hertzdamp_min_law, hertzdamp_max_law
-            if (present(engine_only)) continue
             s = s // trim(law_names(k)) // ' '
         end do
         s = trim(s)
     end function hertzdamp_law_choices
 
-    !> The law names as prose, 'a, b or c' (conj replaces 'or'); with_help: each followed by
-    !> its help phrase in parentheses (laws and hosts); first: the code to start from.
+    !> The law names as prose, 'a, b or c' (conj replaces 'or'), from the code `first` on;
+    !> with_help: each followed by its help phrase in parentheses.
     pure function hertzdamp_law_listing(conj, with_help, first) result(s)
         character(len=*), intent(in), optional :: conj     !! the last joint (default 'or')
         logical, intent(in), optional :: with_help         !! add each value's help phrase
         integer, intent(in), optional :: first             !! first code listed
-        character(len=:), allocatable :: s, item, c
-        integer :: k, k0
+        character(len=:), allocatable :: s, item, c, hp
+        integer :: k, k0, n, nitems
+        logical :: help
         c = 'or'
         if (present(conj)) c = conj
+        help = .false.
+        if (present(with_help)) help = with_help
         k0 = hertzdamp_min_law
         if (present(first)) k0 = max(first, hertzdamp_min_law)
-        s = ''
+        nitems = 0
         do k = k0, hertzdamp_max_law
+            if (.not. listed(k)) cycle
+            nitems = nitems + 1
+        end do
+        s = ''
+        n = 0
+        do k = k0, hertzdamp_max_law
+            if (.not. listed(k)) cycle
+            n = n + 1
             item = trim(law_names(k))
-            if (present(with_help)) then
-                if (with_help) item = item // ' (' // trim(law_helps(k)) // ')'
-            end if
-            if (k == k0) then
+            hp = phrase(k)
+            if (help .and. len(hp) > 0) item = item // ' (' // hp // ')'
+            if (n == 1) then
                 s = item
-            else if (k == hertzdamp_max_law) then
+            else if (n == nitems) then
                 s = s // ' ' // c // ' ' // item
             else
                 s = s // ', ' // item
             end if
         end do
+    contains
+        pure logical function listed(kk)
+            integer, intent(in) :: kk
+            listed = kk >= hertzdamp_min_law
+        end function listed
+        pure function phrase(kk) result(t)
+            integer, intent(in) :: kk
+            character(len=:), allocatable :: t
+            t = trim(law_helps(kk))
+        end function phrase
     end function hertzdamp_law_listing
 
     !> Name of a end code (overlap or force; 'unknown' for others).
@@ -308,44 +360,63 @@ contains
         end do
     end function hertzdamp_end_code
 
-    !> The end names, blank-separated (a CLI's choices).  engine_only (hosts): those the scene
-    !> (engine_only: not used.)
-    pure function hertzdamp_end_choices(engine_only) result(s)
-        logical, intent(in), optional :: engine_only   !! hosts: the scene engine's only
+    !> The end names, blank-separated (a CLI's choices).
+    pure function hertzdamp_end_choices() result(s)
         character(len=:), allocatable :: s
         integer :: k
         s = ''
         do k = hertzdamp_min_end, hertzdamp_max_end
-            if (present(engine_only)) continue
             s = s // trim(end_names(k)) // ' '
         end do
         s = trim(s)
     end function hertzdamp_end_choices
 
-    !> The end names as prose, 'a, b or c' (conj replaces 'or'); with_help: each followed by
-    !> its help phrase in parentheses (laws and hosts); first: the code to start from.
+    !> The end names as prose, 'a, b or c' (conj replaces 'or'), from the code `first` on;
+    !> with_help: each followed by its help phrase in parentheses.
     pure function hertzdamp_end_listing(conj, with_help, first) result(s)
         character(len=*), intent(in), optional :: conj     !! the last joint (default 'or')
         logical, intent(in), optional :: with_help         !! add each value's help phrase
         integer, intent(in), optional :: first             !! first code listed
-        character(len=:), allocatable :: s, item, c
-        integer :: k, k0
+        character(len=:), allocatable :: s, item, c, hp
+        integer :: k, k0, n, nitems
+        logical :: help
         c = 'or'
         if (present(conj)) c = conj
+        help = .false.
+        if (present(with_help)) help = with_help
         k0 = hertzdamp_min_end
         if (present(first)) k0 = max(first, hertzdamp_min_end)
-        s = ''
+        nitems = 0
         do k = k0, hertzdamp_max_end
+            if (.not. listed(k)) cycle
+            nitems = nitems + 1
+        end do
+        s = ''
+        n = 0
+        do k = k0, hertzdamp_max_end
+            if (.not. listed(k)) cycle
+            n = n + 1
             item = trim(end_names(k))
-            if (present(with_help)) continue
-            if (k == k0) then
+            hp = phrase(k)
+            if (help .and. len(hp) > 0) item = item // ' (' // hp // ')'
+            if (n == 1) then
                 s = item
-            else if (k == hertzdamp_max_end) then
+            else if (n == nitems) then
                 s = s // ' ' // c // ' ' // item
             else
                 s = s // ', ' // item
             end if
         end do
+    contains
+        pure logical function listed(kk)
+            integer, intent(in) :: kk
+            listed = kk >= hertzdamp_min_end
+        end function listed
+        pure function phrase(kk) result(t)
+            integer, intent(in) :: kk
+            character(len=:), allocatable :: t
+            t = trim(end_helps(kk))
+        end function phrase
     end function hertzdamp_end_listing
 
     !> Name of a host code (none, lammps, mfix-euler, mfix-ab2, verlet or lammps-phase; 'unknown' for others).
@@ -372,10 +443,10 @@ contains
         end do
     end function hertzdamp_host_code
 
-    !> The host names, blank-separated (a CLI's choices).  engine_only (hosts): those the scene
-    !> engine integrates with.
+    !> The host names, blank-separated (a CLI's choices); engine_only: those the scene engine
+    !> integrates with.
     pure function hertzdamp_host_choices(engine_only) result(s)
-        logical, intent(in), optional :: engine_only   !! hosts: the scene engine's only
+        logical, intent(in), optional :: engine_only   !! the scene engine's only
         character(len=:), allocatable :: s
         integer :: k
         s = ''
@@ -388,32 +459,52 @@ contains
         s = trim(s)
     end function hertzdamp_host_choices
 
-    !> The host names as prose, 'a, b or c' (conj replaces 'or'); with_help: each followed by
-    !> its help phrase in parentheses (laws and hosts); first: the code to start from.
+    !> The host names as prose, 'a, b or c' (conj replaces 'or'), from the code `first` on;
+    !> with_help: each followed by its help phrase in parentheses.
     pure function hertzdamp_host_listing(conj, with_help, first) result(s)
         character(len=*), intent(in), optional :: conj     !! the last joint (default 'or')
         logical, intent(in), optional :: with_help         !! add each value's help phrase
         integer, intent(in), optional :: first             !! first code listed
-        character(len=:), allocatable :: s, item, c
-        integer :: k, k0
+        character(len=:), allocatable :: s, item, c, hp
+        integer :: k, k0, n, nitems
+        logical :: help
         c = 'or'
         if (present(conj)) c = conj
+        help = .false.
+        if (present(with_help)) help = with_help
         k0 = hertzdamp_min_host
         if (present(first)) k0 = max(first, hertzdamp_min_host)
-        s = ''
+        nitems = 0
         do k = k0, hertzdamp_max_host
+            if (.not. listed(k)) cycle
+            nitems = nitems + 1
+        end do
+        s = ''
+        n = 0
+        do k = k0, hertzdamp_max_host
+            if (.not. listed(k)) cycle
+            n = n + 1
             item = trim(host_names(k))
-            if (present(with_help)) then
-                if (with_help) item = item // ' (' // trim(host_helps(k)) // ')'
-            end if
-            if (k == k0) then
+            hp = phrase(k)
+            if (help .and. len(hp) > 0) item = item // ' (' // hp // ')'
+            if (n == 1) then
                 s = item
-            else if (k == hertzdamp_max_host) then
+            else if (n == nitems) then
                 s = s // ' ' // c // ' ' // item
             else
                 s = s // ', ' // item
             end if
         end do
+    contains
+        pure logical function listed(kk)
+            integer, intent(in) :: kk
+            listed = kk >= hertzdamp_min_host
+        end function listed
+        pure function phrase(kk) result(t)
+            integer, intent(in) :: kk
+            character(len=:), allocatable :: t
+            t = trim(host_helps(kk))
+        end function phrase
     end function hertzdamp_host_listing
 
     !> Name of a method code (rk45, series, pade, compact, fit, iterative or first-order; 'unknown' for others).
@@ -440,44 +531,75 @@ contains
         end do
     end function hertzdamp_method_code
 
-    !> The method names, blank-separated (a CLI's choices).  engine_only (hosts): those the scene
-    !> (engine_only: not used.)
-    pure function hertzdamp_method_choices(engine_only) result(s)
-        logical, intent(in), optional :: engine_only   !! hosts: the scene engine's only
+    !> The method names, blank-separated (a CLI's choices); which = 'forward' or 'inverse':
+    !> the methods of that problem.
+    pure function hertzdamp_method_choices(which) result(s)
+        character(len=*), intent(in), optional :: which   !! 'forward' or 'inverse'
         character(len=:), allocatable :: s
         integer :: k
         s = ''
         do k = hertzdamp_min_method, hertzdamp_max_method
-            if (present(engine_only)) continue
+            if (present(which)) then
+                if (which == 'forward' .and. len_trim(method_forward_helps(k)) == 0) cycle
+                if (which == 'inverse' .and. len_trim(method_inverse_helps(k)) == 0) cycle
+            end if
             s = s // trim(method_names(k)) // ' '
         end do
         s = trim(s)
     end function hertzdamp_method_choices
 
-    !> The method names as prose, 'a, b or c' (conj replaces 'or'); with_help: each followed by
-    !> its help phrase in parentheses (laws and hosts); first: the code to start from.
-    pure function hertzdamp_method_listing(conj, with_help, first) result(s)
+    !> The method names as prose, 'a, b or c' (conj replaces 'or'), from the code `first` on;
+    !> with_help: each followed by its help phrase in parentheses; which = 'forward' or 'inverse': the methods of that
+    !> problem, with its phrases.
+    pure function hertzdamp_method_listing(conj, with_help, first, which) result(s)
         character(len=*), intent(in), optional :: conj     !! the last joint (default 'or')
         logical, intent(in), optional :: with_help         !! add each value's help phrase
         integer, intent(in), optional :: first             !! first code listed
-        character(len=:), allocatable :: s, item, c
-        integer :: k, k0
+        character(len=*), intent(in), optional :: which    !! 'forward' or 'inverse'
+        character(len=:), allocatable :: s, item, c, hp
+        integer :: k, k0, n, nitems
+        logical :: help
         c = 'or'
         if (present(conj)) c = conj
+        help = .false.
+        if (present(with_help)) help = with_help
         k0 = hertzdamp_min_method
         if (present(first)) k0 = max(first, hertzdamp_min_method)
-        s = ''
+        nitems = 0
         do k = k0, hertzdamp_max_method
+            if (.not. listed(k)) cycle
+            nitems = nitems + 1
+        end do
+        s = ''
+        n = 0
+        do k = k0, hertzdamp_max_method
+            if (.not. listed(k)) cycle
+            n = n + 1
             item = trim(method_names(k))
-            if (present(with_help)) continue
-            if (k == k0) then
+            hp = phrase(k)
+            if (help .and. len(hp) > 0) item = item // ' (' // hp // ')'
+            if (n == 1) then
                 s = item
-            else if (k == hertzdamp_max_method) then
+            else if (n == nitems) then
                 s = s // ' ' // c // ' ' // item
             else
                 s = s // ', ' // item
             end if
         end do
+    contains
+        pure logical function listed(kk)
+            integer, intent(in) :: kk
+            listed = .true.
+            if (present(which)) listed = len_trim(phrase(kk)) > 0
+        end function listed
+        pure function phrase(kk) result(t)
+            integer, intent(in) :: kk
+            character(len=:), allocatable :: t
+            t = ''
+            if (.not. present(which)) return
+            if (which == 'forward') t = trim(method_forward_helps(kk))
+            if (which == 'inverse') t = trim(method_inverse_helps(kk))
+        end function phrase
     end function hertzdamp_method_listing
 
     !> Exponent q of zeta in the damping force of a law (0 for an invalid code).
@@ -502,6 +624,14 @@ contains
         s = ''
         if (code >= hertzdamp_min_law .and. code <= hertzdamp_max_law) s = trim(law_helps(code))
     end function hertzdamp_law_help
+
+    !> The short help phrase of a end ('' for an invalid code).
+    pure function hertzdamp_end_help(code) result(s)
+        integer, intent(in) :: code   !! HD_END_*
+        character(len=:), allocatable :: s
+        s = ''
+        if (code >= hertzdamp_min_end .and. code <= hertzdamp_max_end) s = trim(end_helps(code))
+    end function hertzdamp_end_help
 
     !> The short help phrase of a host ('' for an invalid code).
     pure function hertzdamp_host_help(code) result(s)

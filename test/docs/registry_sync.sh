@@ -1,8 +1,8 @@
 #!/usr/bin/env bash
 # The registry (data/registry.toml) is the one table of every enumeration: the files
 # generated from it must be what gen/registry.py makes of it (no hand edits, no stale
-# copy): src/hertzdamp_registry.f90 whole, and the generated blocks of include/hertzdamp.h,
-# include/hertzdamp.fi and doc/library.md.  Then the generated constants as their users
+# copy): src/hertzdamp_registry.f90 whole, and the generated blocks of the umbrella
+# src/hertzdamp.f90, include/hertzdamp.h, include/hertzdamp.fi and doc/library.md.  Then the generated constants as their users
 # see them: a C program prints every code of the table through hertzdamp.h's macros, and
 # fixed-form and free-form programs that include hertzdamp.fi use its PARAMETER codes and
 # declare a pair REAL(8) PAIR(HERTZDAMP_PAIR_SIZE) (issue 30: the legacy interface had no
@@ -16,9 +16,10 @@ tmp=$(mktemp -d); trap 'rm -rf "$tmp"' EXIT
 mkdir -p "$tmp/tree/src" "$tmp/tree/include" "$tmp/tree/doc" "$tmp/again/src" "$tmp/again/include" "$tmp/again/doc"
 for t in tree again; do
   cp include/hertzdamp.h include/hertzdamp.fi "$tmp/$t/include/"; cp doc/library.md "$tmp/$t/doc/"
+  cp src/hertzdamp.f90 "$tmp/$t/src/"
   python3 gen/registry.py data/registry.toml "$tmp/$t" || bad "gen/registry.py failed"
 done
-for file in src/hertzdamp_registry.f90 include/hertzdamp.h include/hertzdamp.fi doc/library.md; do
+for file in src/hertzdamp_registry.f90 src/hertzdamp.f90 include/hertzdamp.h include/hertzdamp.fi doc/library.md; do
   if cmp -s "$tmp/tree/$file" "$file"; then ok; else bad "$file differs from what gen/registry.py makes of data/registry.toml (run make registry)"; fi
   if cmp -s "$tmp/tree/$file" "$tmp/again/$file"; then ok; else bad "gen/registry.py is not deterministic ($file)"; fi
 done

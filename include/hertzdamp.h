@@ -151,6 +151,38 @@ int hertzdamp_c_pair_stats(const hertzdamp_pair_t *p, int host, double stats[8])
 int hertzdamp_c_host_min_steps(double e, int law, int end, int host, int *n_min);
 
 /*
+ * Per-contact constants from the onset phase (issue 32; doc/host-schemes.md section 6).
+ * hertzdamp_c_pair_init_phase: hertzdamp_c_pair_init plus the pair's onset-phase table
+ * (in the same HERTZDAMP_PAIR_SIZE doubles), per-contact constants that make each
+ * contact's own e and contact time exact in the host scheme, not only their mean over
+ * the phase; HERTZDAMP_PHASE_UNREACHABLE when some onset phase has none at this N
+ * (hertzdamp_c_phase_min_steps gives the fewest N that works).  The header keeps the
+ * mean-exact constants: hertzdamp_c_pair_kd gives the same bits with or without the table.
+ */
+int hertzdamp_c_pair_init_phase(double e, int law, int end, int host, double steps, hertzdamp_pair_t *p);
+
+/*
+ * At each contact onset: the onset phase phi = delta1 / (u dt) from the first positive
+ * overlap delta1 [m], the approach speed u [m/s] and the time step dt [s]; a contact
+ * detected late (phi > 1) gets phi = 1.  HERTZDAMP_BAD_PHASE for delta1 not finite and
+ * positive.  On failure *phi = 0.
+ */
+int hertzdamp_c_onset_phase(double delta1, double u, double dt, double *phi);
+
+/*
+ * Then *k and *d of that contact as hertzdamp_c_pair_kd, with the constants of its onset
+ * phase phi in (0, 1] (HERTZDAMP_BAD_PHASE otherwise; HERTZDAMP_NO_PHASE_TABLE for a pair
+ * initialised without the table).  k_phys <= 0: no bound; where k_phys <= k the contact
+ * keeps *k = k_phys and lasts longer than N steps.  On failure *k = *d = 0.
+ */
+int hertzdamp_c_pair_kd_phase(const hertzdamp_pair_t *p, double tc, double m, double u, double k_phys,
+                              double phi, double *k, double *d);
+
+/* The fewest whole N for which hertzdamp_c_pair_init_phase succeeds (every onset phase
+   reachable); HERTZDAMP_PHASE_UNREACHABLE when none up to 1024 does; on failure *n_min = 0. */
+int hertzdamp_c_phase_min_steps(double e, int law, int end, int host, int *n_min);
+
+/*
  * Inverse problem (adaptive collision time): the Hertz stiffness *k [N m^-3/2] and
  * linear damping *d [kg/s] that give restitution coefficient e (1e-3 <= e <= 1 for
  * the overlap end, 1e-4 <= e <= 1 for the force end) and contact time tc [s] to a

@@ -66,7 +66,9 @@ module hertzdamp
                               hertzdamp_host_stats, hertzdamp_host_collide, hertzdamp_host_mean, &
                               hertzdamp_host_solve, hertzdamp_host_min_steps, hertzdamp_host_alpha_for_e, &
                               hertzdamp_host_phase_force
-    use hertzdamp_pair, only: hertzdamp_pair_t, hertzdamp_pair_init, hertzdamp_pair_kd, hertzdamp_invert
+    use hertzdamp_pair, only: hertzdamp_pair_t, hertzdamp_pair_init, hertzdamp_pair_kd, hertzdamp_invert, &
+                              hertzdamp_pair_kd_phase, hertzdamp_pair_phase_status, hertzdamp_pair_phase_constants
+    use hertzdamp_phase, only: hertzdamp_onset_phase, hertzdamp_phase_point, hertzdamp_phase_min_steps
     use hertzdamp_materials, only: hertzdamp_sphere_mass, hertzdamp_effective_mass, &
                                    hertzdamp_effective_radius, hertzdamp_effective_modulus, &
                                    hertzdamp_plane_strain_modulus, hertzdamp_hertz_stiffness, &
@@ -138,6 +140,9 @@ module hertzdamp
               hertzdamp_host_min_steps, hertzdamp_host_alpha_for_e, hertzdamp_host_phase_force
     ! the per-pair API and the one-call inverse (hertzdamp_pair)
     public :: hertzdamp_pair_t, hertzdamp_pair_init, hertzdamp_pair_kd, hertzdamp_invert
+    ! per-contact constants from the onset phase (hertzdamp_pair, hertzdamp_phase; issue 32)
+    public :: hertzdamp_pair_kd_phase, hertzdamp_pair_phase_status, hertzdamp_pair_phase_constants, &
+              hertzdamp_onset_phase, hertzdamp_phase_point, hertzdamp_phase_min_steps
     ! material data to the contact (hertzdamp_materials)
     public :: hertzdamp_sphere_mass, hertzdamp_effective_mass, hertzdamp_effective_radius, &
               hertzdamp_effective_modulus, hertzdamp_plane_strain_modulus, hertzdamp_hertz_stiffness, &

@@ -48,7 +48,8 @@ module hertzdamp_capi
     use hertzdamp_methods, only: hertzdamp_forward_dim, HD_METHOD_FIT
     use hertzdamp_pair, only: hertzdamp_pair_t, hertzdamp_pair_size, hertzdamp_pair_init, hertzdamp_invert, hertzdamp_c_pair_kd, &
                               hertzdamp_pair_status, &
-                              hertzdamp_invert_contact
+                              hertzdamp_invert_contact, hertzdamp_pair_kd_phase
+    use hertzdamp_phase, only: hertzdamp_onset_phase, hertzdamp_phase_min_steps
     use hertzdamp_host, only: HD_HOST_NONE, hertzdamp_host_stats, hertzdamp_host_mean, hertzdamp_host_min_steps
     ! ---- for the array and lookup entry points of the Python package (issue 35; the block at the end)
     use, intrinsic :: iso_c_binding, only: c_ptrdiff_t
@@ -72,6 +73,8 @@ module hertzdamp_capi
               hertzdamp_c_forward, hertzdamp_c_strerror
     public :: hertzdamp_c_invert_law, hertzdamp_c_invert_law_n, hertzdamp_c_pair_law, hertzdamp_c_forward_law
     public :: hertzdamp_c_pair_init, hertzdamp_c_pair_kd, hertzdamp_c_pair_stats, hertzdamp_c_host_min_steps
+    public :: hertzdamp_c_pair_init_phase, hertzdamp_c_pair_kd_phase, hertzdamp_c_onset_phase, &
+              hertzdamp_c_phase_min_steps
     ! ---- the block at the end (issue 35)
     public :: hertzdamp_c_code, hertzdamp_c_names, hertzdamp_c_invert_array, hertzdamp_c_forward_array, &
               hertzdamp_c_pair_kd_array, hertzdamp_c_pair_constants, hertzdamp_c_contact_array, &
@@ -169,6 +172,88 @@ contains
         n_min = int(n, c_int)
         status = int(st, c_int)
     end function hertzdamp_c_host_min_steps
+
+    ! ================================================================ C: per-contact constants from the onset phase
+
+    !> `int hertzdamp_c_pair_init_phase(double e, int law, int end, int host, double steps,
+    !> hertzdamp_pair_t *p)`: hertzdamp_c_pair_init and the onset-phase table
+    !> (hertzdamp_pair_init with phase = .true.); HD_PHASE_UNREACHABLE when some onset phase
+    !> has no constants at this N (hertzdamp_c_phase_min_steps); on failure *p is invalid.
+    integer(c_int) function hertzdamp_c_pair_init_phase(e, law, iend, host, steps, p) &
+            bind(c, name='hertzdamp_c_pair_init_phase') result(status)
+        real(c_double), value, intent(in) :: e          !! target restitution
+        integer(c_int), value, intent(in) :: law        !! damping law: 0 linear, 1 tsuji, 2 kuwabara-kono
+        integer(c_int), value, intent(in) :: iend       !! contact end: 0 overlap, 1 force
+        integer(c_int), value, intent(in) :: host       !! host scheme (HERTZDAMP_HOST_*)
+        real(c_double), value, intent(in) :: steps      !! steps per contact N
+        type(hertzdamp_pair_t), intent(out), optional :: p !! the pair's constants and table
+        integer :: st
+        status = HD_BAD_ARGUMENT
+        if (.not. present(p)) return
+        call hertzdamp_pair_init(e, int(law), int(iend), int(host), steps, p, st, phase=.true.)
+        status = int(st, c_int)
+    end function hertzdamp_c_pair_init_phase
+
+    !> `int hertzdamp_c_pair_kd_phase(const hertzdamp_pair_t *p, double tc, double m,
+    !> double u, double k_phys, double phi, double *k, double *d)`: k and d of one contact
+    !> with onset phase phi (hertzdamp_pair_kd_phase); k_phys <= 0: no bound.  A pair without
+    !> its table gives HD_NO_PHASE_TABLE, phi outside (0, 1] HD_BAD_PHASE, NULL
+    !> HD_BAD_ARGUMENT; on failure *k = *d = 0.
+    integer(c_int) function hertzdamp_c_pair_kd_phase(p, tc, m, u, k_phys, phi, k, d) &
+            bind(c, name='hertzdamp_c_pair_kd_phase') result(status)
+        type(hertzdamp_pair_t), intent(in), optional :: p !! the pair (hertzdamp_c_pair_init_phase)
+        real(c_double), value, intent(in) :: tc         !! target contact time N dt [s]
+        real(c_double), value, intent(in) :: m          !! effective mass [kg]
+        real(c_double), value, intent(in) :: u          !! impact velocity [m/s]
+        real(c_double), value, intent(in) :: k_phys     !! physical stiffness bound [N m^-3/2], <= 0 for none
+        real(c_double), value, intent(in) :: phi        !! onset phase in (0, 1]
+        real(c_double), intent(out), optional :: k      !! Hertz stiffness [N m^-3/2]
+        real(c_double), intent(out), optional :: d      !! damping coefficient [kg s^-1 m^-q]
+        real(c_double) :: k_, d_
+        integer :: st
+        status = HD_BAD_ARGUMENT
+        if (.not. (present(p) .and. present(k) .and. present(d))) return
+        call hertzdamp_pair_kd_phase(p, tc, m, u, k_phys, phi, k_, d_, st)
+        k = k_
+        d = d_
+        status = int(st, c_int)
+    end function hertzdamp_c_pair_kd_phase
+
+    !> `int hertzdamp_c_onset_phase(double delta1, double u, double dt, double *phi)`: the
+    !> onset phase delta1 / (u dt) of a contact first seen with overlap delta1
+    !> (hertzdamp_onset_phase: a late detection, phi > 1, gives phi = 1); NULL HD_BAD_ARGUMENT.
+    integer(c_int) function hertzdamp_c_onset_phase(delta1, u, dt, phi) &
+            bind(c, name='hertzdamp_c_onset_phase') result(status)
+        real(c_double), value, intent(in) :: delta1     !! first positive overlap [m]
+        real(c_double), value, intent(in) :: u          !! approach speed [m/s]
+        real(c_double), value, intent(in) :: dt         !! time step [s]
+        real(c_double), intent(out), optional :: phi    !! onset phase in (0, 1]
+        real(c_double) :: ph
+        integer :: st
+        status = HD_BAD_ARGUMENT
+        if (.not. present(phi)) return
+        call hertzdamp_onset_phase(delta1, u, dt, ph, st)
+        phi = ph
+        status = int(st, c_int)
+    end function hertzdamp_c_onset_phase
+
+    !> `int hertzdamp_c_phase_min_steps(double e, int law, int end, int host, int *n_min)`: the
+    !> fewest whole N for which hertzdamp_c_pair_init_phase succeeds (hertzdamp_phase_min_steps);
+    !> HD_PHASE_UNREACHABLE when none up to 1024 does; on failure *n_min = 0.
+    integer(c_int) function hertzdamp_c_phase_min_steps(e, law, iend, host, n_min) &
+            bind(c, name='hertzdamp_c_phase_min_steps') result(status)
+        real(c_double), value, intent(in) :: e          !! target restitution
+        integer(c_int), value, intent(in) :: law        !! damping law
+        integer(c_int), value, intent(in) :: iend       !! contact end
+        integer(c_int), value, intent(in) :: host       !! host scheme (HERTZDAMP_HOST_*)
+        integer(c_int), intent(out), optional :: n_min  !! fewest steps per contact
+        integer :: n, st
+        status = HD_BAD_ARGUMENT
+        if (.not. present(n_min)) return
+        call hertzdamp_phase_min_steps(e, int(law), int(iend), int(host), n, st)
+        n_min = int(n, c_int)
+        status = int(st, c_int)
+    end function hertzdamp_c_phase_min_steps
 
     ! ================================================================ C: the one-call inverse
 
@@ -611,6 +696,58 @@ contains
         integer(c_int), intent(out) :: ierr          !! 0 on success, else a status code
         ierr = hertzdamp_c_pair_kd(pair, tc, m, u, kphys, k, d)
     end subroutine legacy_pair_kd
+
+    !> HERTZDAMP_PAIR_INIT_PHASE(E, ILAW, IEND, IHOST, STEPS, PAIR, IERR): HERTZDAMP_PAIR_INIT
+    !> and the onset-phase table (hertzdamp_c_pair_init_phase).
+    subroutine legacy_pair_init_phase(e, ilaw, iend, ihost, steps, pair, ierr) &
+            bind(c, name='hertzdamp_pair_init_phase_')
+        real(c_double), intent(in) :: e              !! target restitution coefficient
+        integer(c_int), intent(in) :: ilaw           !! damping law
+        integer(c_int), intent(in) :: iend           !! contact end
+        integer(c_int), intent(in) :: ihost          !! host scheme
+        real(c_double), intent(in) :: steps          !! steps per contact N
+        type(hertzdamp_pair_t), intent(out) :: pair    !! REAL(8) PAIR(HERTZDAMP_PAIR_SIZE)
+        integer(c_int), intent(out) :: ierr          !! 0 on success, else a status code
+        ierr = hertzdamp_c_pair_init_phase(e, ilaw, iend, ihost, steps, pair)
+    end subroutine legacy_pair_init_phase
+
+    !> HERTZDAMP_PAIR_KD_PHASE(PAIR, TC, M, U, KPHYS, PHI, K, D, IERR): k and d of one contact
+    !> with onset phase PHI from HERTZDAMP_PAIR_INIT_PHASE (hertzdamp_c_pair_kd_phase).
+    subroutine legacy_pair_kd_phase(pair, tc, m, u, kphys, phi, k, d, ierr) bind(c, name='hertzdamp_pair_kd_phase_')
+        type(hertzdamp_pair_t), intent(in) :: pair     !! REAL(8) PAIR(HERTZDAMP_PAIR_SIZE)
+        real(c_double), intent(in) :: tc             !! target contact time [s]
+        real(c_double), intent(in) :: m              !! effective mass [kg]
+        real(c_double), intent(in) :: u              !! impact velocity [m/s]
+        real(c_double), intent(in) :: kphys          !! physical stiffness bound, <= 0 for none
+        real(c_double), intent(in) :: phi            !! onset phase in (0, 1]
+        real(c_double), intent(out) :: k             !! Hertz stiffness [N m^-3/2]
+        real(c_double), intent(out) :: d             !! damping coefficient [kg s^-1 m^-q]
+        integer(c_int), intent(out) :: ierr          !! 0 on success, else a status code
+        ierr = hertzdamp_c_pair_kd_phase(pair, tc, m, u, kphys, phi, k, d)
+    end subroutine legacy_pair_kd_phase
+
+    !> HERTZDAMP_ONSET_PHASE(DELTA1, U, DT, PHI, IERR): the onset phase DELTA1/(U DT), at most 1
+    !> (hertzdamp_c_onset_phase).
+    subroutine legacy_onset_phase(delta1, u, dt, phi, ierr) bind(c, name='hertzdamp_onset_phase_')
+        real(c_double), intent(in) :: delta1         !! first positive overlap [m]
+        real(c_double), intent(in) :: u              !! approach speed [m/s]
+        real(c_double), intent(in) :: dt             !! time step [s]
+        real(c_double), intent(out) :: phi           !! onset phase in (0, 1]
+        integer(c_int), intent(out) :: ierr          !! 0 on success, else a status code
+        ierr = hertzdamp_c_onset_phase(delta1, u, dt, phi)
+    end subroutine legacy_onset_phase
+
+    !> HERTZDAMP_PHASE_MIN_STEPS(E, ILAW, IEND, IHOST, NMIN, IERR): the fewest N for which
+    !> HERTZDAMP_PAIR_INIT_PHASE succeeds (hertzdamp_c_phase_min_steps).
+    subroutine legacy_phase_min_steps(e, ilaw, iend, ihost, nmin, ierr) bind(c, name='hertzdamp_phase_min_steps_')
+        real(c_double), intent(in) :: e              !! target restitution coefficient
+        integer(c_int), intent(in) :: ilaw           !! damping law
+        integer(c_int), intent(in) :: iend           !! contact end
+        integer(c_int), intent(in) :: ihost          !! host scheme
+        integer(c_int), intent(out) :: nmin          !! fewest steps per contact
+        integer(c_int), intent(out) :: ierr          !! 0 on success, else a status code
+        ierr = hertzdamp_c_phase_min_steps(e, ilaw, iend, ihost, nmin)
+    end subroutine legacy_phase_min_steps
 
     ! ================================================================ C: for the Python package (issue 35)
     ! BEGIN python block.  The names and codes of the enumerations (hertzdamp_c_code,

@@ -43,7 +43,7 @@ module hertzdamp_pair
     use hertzdamp_kinds, only: hertzdamp_rk
     use hertzdamp_registry, only: hertzdamp_pair_size, hertzdamp_pair_oblique_size, hertzdamp_pair_phase_size
     use hertzdamp_registry, only: HD_OK, HD_BAD_TIME, HD_BAD_MASS, HD_BAD_VELOCITY, HD_BAD_KPHYS, HD_OUT_OF_RANGE, &
-                                HD_BAD_PAIR, HD_BAD_ARGUMENT
+                                HD_BAD_PAIR, HD_BAD_ARGUMENT, HD_BAD_PHASE, HD_NO_PHASE_TABLE
     use hertzdamp_laws, only: HD_DAMPING_LINEAR, HD_DAMPING_TSUJI, HD_DAMPING_KUWABARA_KONO, hertzdamp_law_q, &
                               hertzdamp_max_law
     use hertzdamp_constants, only: direct_lo => hertzdamp_direct_lo, direct_hi => hertzdamp_direct_hi
@@ -53,6 +53,8 @@ module hertzdamp_pair
     use hertzdamp_inverse, only: hertzdamp_invert_alpha, hertzdamp_invert_options
     use hertzdamp_host, only: HD_HOST_NONE, hertzdamp_host_order, hertzdamp_host_stats, hertzdamp_host_solve, &
                               hertzdamp_max_host, hertzdamp_host_steps_min, hertzdamp_host_steps_max
+    use hertzdamp_phase, only: hertzdamp_phase_build, hertzdamp_phase_eval, hertzdamp_phase_table_ok, &
+                               hertzdamp_phase_header
     implicit none
     private
 
@@ -123,6 +125,7 @@ module hertzdamp_pair
     end interface hertzdamp_invert
 
     public :: hertzdamp_pair_init, hertzdamp_pair_kd, hertzdamp_invert, hertzdamp_pair_status
+    public :: hertzdamp_pair_kd_phase, hertzdamp_pair_phase_status, hertzdamp_pair_phase_constants
     public :: hertzdamp_pair_size, hertzdamp_pair_oblique_size, hertzdamp_pair_phase_size
     ! the C entry of the per-contact call (see there; hertzdamp_capi re-exports it), and the
     ! one-contact inverse without optional arguments that the binding layer calls
@@ -141,7 +144,13 @@ contains
     !> contact end, e, then host and steps), or HD_HOST_UNREACHABLE when the host cannot
     !> reach e at so few steps (hertzdamp_host_min_steps tells which N can); on failure the
     !> pair is invalid (hertzdamp_pair_kd returns HD_BAD_PAIR) and stats are zero.
-    pure elemental subroutine hertzdamp_pair_init(e, law, iend, host, steps, pair, status, stats)
+    !> phase = .true.: also the onset-phase table (hertzdamp_phase_build: per-contact
+    !> constants alpha(phi), tau(phi) that make each contact's e and contact time exact,
+    !> read by hertzdamp_pair_kd_phase; the header stays the mean-exact constants, so that
+    !> hertzdamp_pair_kd gives the same bits with or without it); HD_PHASE_UNREACHABLE when
+    !> some onset phase has no such constants at this N (hertzdamp_phase_min_steps tells
+    !> which N can).  Host none: an empty table (the continuous model has no phase).
+    pure elemental subroutine hertzdamp_pair_init(e, law, iend, host, steps, pair, status, stats, phase)
         real(wp), intent(in) :: e                    !! target restitution coefficient
         integer, intent(in) :: law                   !! HD_DAMPING_*
         integer, intent(in) :: iend                  !! HD_END_OVERLAP or HD_END_FORCE
@@ -151,8 +160,10 @@ contains
         integer, intent(out) :: status               !! HD_OK or an error code
         type(hertzdamp_host_stats), intent(out), optional :: stats !! the host's phase statistics of e and
                                                                    !! the contact time (host none: no spread)
+        logical, intent(in), optional :: phase       !! also build the onset-phase table (default .false.)
         type(hertzdamp_host_stats) :: st
-        real(wp) :: a, tau, a_cont, tau_cont
+        real(wp) :: a, tau, a_cont, tau_cont, tab(hertzdamp_pair_phase_size)
+        logical :: want
         call hertzdamp_fit_inverse(e, iend, a_cont, tau_cont, status, law)
         a = a_cont
         tau = tau_cont
@@ -163,13 +174,108 @@ contains
                 call hertzdamp_host_solve(e, law, iend, host, steps, a, tau, st, status)
             end if
         end if
+        want = .false.
+        if (present(phase)) want = phase
+        if (status == HD_OK .and. want) call hertzdamp_phase_build(e, law, iend, host, steps, a, tau, tab, status)
         if (status == HD_OK) then
             call set_pair(a, tau, a_cont, steps, law, iend, host, pair)
+            if (want) then
+                pair%phase = tab
+                pair%phase(1) = transfer(phase_marker_of(pair), 1.0_wp)
+            end if
         else
             st = hertzdamp_host_stats()
         end if
         if (present(stats)) stats = st
     end subroutine hertzdamp_pair_init
+
+    !> The marker of a pair's onset-phase table (bit pattern): a keyed hash of the header's
+    !> marker and the table's layout entries (2 .. 10), as marker_of.  The node values are
+    !> not hashed (the per-contact check reads 10 doubles, not 240).
+    pure integer(int64) function phase_marker_of(pair) result(bits)
+        type(hertzdamp_pair_t), intent(in) :: pair
+        integer(int64) :: h
+        integer :: j
+        h = bits_of(pair%marker) * marker_keys(8)
+        do j = 2, hertzdamp_phase_header
+            h = h + bits_of(pair%phase(j)) * marker_keys(mod(j, 7) + 1)
+            h = ieor(h, shiftr(h, 27))
+        end do
+        h = ieor(h, shiftr(h, 31)) * marker_keys(8)
+        h = ieor(h, shiftr(h, 29))
+        bits = ior(iand(h, fraction_bits), one_bits)
+    end function phase_marker_of
+
+    !> The status of a pair's onset-phase table: HD_BAD_PAIR when the header is not valid
+    !> (hertzdamp_pair_status) or the table's marker does not match; HD_NO_PHASE_TABLE when
+    !> the pair was initialised without it (its marker 0); else HD_OK.
+    pure elemental integer function hertzdamp_pair_phase_status(pair) result(status)
+        type(hertzdamp_pair_t), intent(in) :: pair   !! constants of the material pair
+        status = hertzdamp_pair_status(pair)
+        if (status /= HD_OK) return
+        if (pair%phase(1) == 0.0_wp) then
+            status = HD_NO_PHASE_TABLE
+        else if (ieor(bits_of(pair%phase(1)), phase_marker_of(pair)) /= 0_int64 .or. &
+                 .not. hertzdamp_phase_table_ok(pair%phase)) then
+            status = HD_BAD_PAIR
+        end if
+    end function hertzdamp_pair_phase_status
+
+    !> The per-contact constants of onset phase phi from a pair's table: alpha(phi) and
+    !> tau(phi) (host none: the pair's own alpha and tau_c).  Status as
+    !> hertzdamp_pair_phase_status, then HD_BAD_PHASE (phi not in (0, 1]); 0 on failure.
+    pure elemental subroutine hertzdamp_pair_phase_constants(pair, phi, alpha, tau_c, status)
+        type(hertzdamp_pair_t), intent(in) :: pair   !! constants of the material pair (with its table)
+        real(wp), intent(in) :: phi                  !! onset phase in (0, 1] (hertzdamp_onset_phase)
+        real(wp), intent(out) :: alpha               !! alpha(phi)
+        real(wp), intent(out) :: tau_c               !! tau(phi): t* = T_c / tau(phi)
+        integer, intent(out) :: status               !! HD_OK or the failure
+        alpha = 0.0_wp
+        tau_c = 0.0_wp
+        status = hertzdamp_pair_phase_status(pair)
+        if (status == HD_OK .and. .not. (phi > 0.0_wp .and. phi <= 1.0_wp)) status = HD_BAD_PHASE
+        if (status /= HD_OK) return
+        if (pair%phase(2) == 0.0_wp) then
+            alpha = pair%alpha
+            tau_c = pair%tau_c
+        else
+            call hertzdamp_phase_eval(pair%phase, phi, alpha, tau_c)
+        end if
+    end subroutine hertzdamp_pair_phase_constants
+
+    !> k and d of one contact with onset phase phi (hertzdamp_onset_phase) from the pair's
+    !> onset-phase table (hertzdamp_pair_init with phase = .true.): the formulas of
+    !> hertzdamp_pair_kd with alpha(phi) and tau(phi) in place of the mean-exact alpha_N,
+    !> tau_N, so that this contact's e and contact time in the host are the targets.
+    !> k_phys > 0: the physical stiffness bound (<= 0: none); where k_phys <= k the contact
+    !> keeps k = k_phys and lasts longer than N steps, and d takes alpha_eff = alpha(e) +
+    !> (alpha(phi) - alpha(e)) (h'/h_phi)^p as hertzdamp_pair_kd does (continuous at
+    !> k_phys = k; the phase's share fades with the step ratio as the host's error does).
+    !> Status: the bad argument of T_c, m, u, k_phys (the last one wins), else that of
+    !> hertzdamp_pair_phase_constants; k = d = 0 on failure.
+    pure elemental subroutine hertzdamp_pair_kd_phase(pair, tc, m, u, k_phys, phi, k, d, status)
+        type(hertzdamp_pair_t), intent(in) :: pair   !! constants of the material pair (with its table)
+        real(wp), intent(in) :: tc                   !! target contact time T_c = N dt [s]
+        real(wp), intent(in) :: m                    !! effective mass [kg]
+        real(wp), intent(in) :: u                    !! impact velocity [m s^-1]
+        real(wp), intent(in) :: k_phys               !! physical stiffness bound [N m^-3/2]; <= 0: none
+        real(wp), intent(in) :: phi                  !! onset phase in (0, 1]
+        real(wp), intent(out) :: k                   !! Hertz stiffness [N m^-3/2]
+        real(wp), intent(out) :: d                   !! damping coefficient [kg s^-1 m^-q]
+        integer, intent(out) :: status               !! HD_OK or an error code
+        real(wp) :: a, tau, ts
+        integer :: given, law, host
+        logical :: bound
+        call hertzdamp_pair_phase_constants(pair, phi, a, tau, given)
+        law = HD_DAMPING_LINEAR
+        host = HD_HOST_NONE
+        if (given == HD_OK) then
+            law = int(pair%law)
+            host = int(pair%host)
+        end if
+        call contact_kd(a, tau, pair%alpha_cont, law, host, given, tc, m, u, .not. (k_phys <= 0.0_wp), k_phys, &
+                        .false., k, d, ts, bound, status)
+    end subroutine hertzdamp_pair_kd_phase
 
     !> A valid pair of the given constants (the caller has checked them).  steps is kept
     !> when it is a valid N (host none does not use it, but hertzdamp_c_pair_stats runs the

@@ -254,8 +254,9 @@ contains
                         call suite%check(all_ok, 'every contact computed and rebounds: ' // trim(label))
                         call suite%check(emax <= 1.0e-5_wp, 'every contact e within 1e-5: ' // trim(label))
                         call suite%check(tmax <= 1.0e-5_wp, 'every contact T_c within 1e-5: ' // trim(label))
-                        if (.not. (emax <= 1.0e-5_wp .and. tmax <= 1.0e-5_wp)) &
+                        if (.not. (emax <= 1.0e-5_wp .and. tmax <= 1.0e-5_wp)) then
                             write (*, '(a, 2es10.2)') '  ' // trim(label), emax, tmax
+                        end if
                         eall = max(eall, emax)
                         tall = max(tall, tmax)
                     end do

@@ -15,6 +15,10 @@ C     onset phases, with the per-pair API: HERTZDAMP_PAIR_INIT once per
 C     material pair for the host scheme (IHOST = 2, mfix-euler, exact
 C     for this scheme at NSTEP steps per contact; IHOST = 0 the
 C     continuous model) and HERTZDAMP_PAIR_KD at every contact onset.
+C     Last (subroutine EULERP) the same loop with per-contact constants:
+C     HERTZDAMP_PAIR_INIT_PHASE once, and at every onset the phase
+C     PHI = HERTZDAMP_ONSET_PHASE(first overlap, speed, DT) and
+C     HERTZDAMP_PAIR_KD_PHASE: every single contact exact (issue 32).
 C
 C     Build against an installed prefix:  make PREFIX=/path/to/prefix
 C     INCLUDE 'hertzdamp.fi' (from PREFIX/include) declares the library
@@ -94,6 +98,12 @@ C        contact end: the overlap has returned to zero
   200 CONTINUE
       CALL EULER(2)
       CALL EULER(0)
+      CALL EULERP(0.2D0, 10)
+      CALL EULERP(0.5D0, 10)
+      CALL EULERP(0.9D0, 10)
+      CALL EULERP(0.2D0, 20)
+      CALL EULERP(0.5D0, 20)
+      CALL EULERP(0.9D0, 20)
       END
 C
 C     EULER: head-on sphere-wall collisions (no gravity) integrated as
@@ -192,3 +202,79 @@ C              the overlap is gone: no force from here on
      &   ' e_err tc_err e_var/n tc_var/n', SE/NDONE - 1.0D0,
      &   ST/NDONE - 1.0D0, VE/NDONE, VT/NDONE
       END SUBROUTINE EULER
+C
+C     EULERP: the loop of EULER (mfix-euler, linear law, overlap end)
+C     with the constants of each contact's own onset phase: at the
+C     onset, PHI from the first overlap -X, the speed UIN and DT
+C     (HERTZDAMP_ONSET_PHASE), then K, D from HERTZDAMP_PAIR_KD_PHASE.
+C     Prints the largest |e/ETARG - 1| and |T_c/TC - 1| of a single
+C     contact over the NPH phases.
+      SUBROUTINE EULERP(ETARG, NSTEP)
+      IMPLICIT NONE
+      INCLUDE 'hertzdamp.fi'
+      REAL(8) ETARG
+      INTEGER NSTEP
+      DOUBLE PRECISION AM, DT, U, TC, X, XOLD, V, A, PHI
+      REAL(8) PAIR(HERTZDAMP_PAIR_SIZE)
+      DOUBLE PRECISION AK, D, UIN, T, TON, E1, T1, EMAX, TMAX
+      INTEGER NPH, J, ISTEP, IERR, NDONE
+      LOGICAL INCONT
+      CHARACTER*100 TEXT
+      PARAMETER (AM = 1.0D-3, DT = 1.0D-5, U = 1.0D0, NPH = 1000)
+      TC = NSTEP*DT
+      CALL HERTZDAMP_PAIR_INIT_PHASE(ETARG, 0, 0, 2, DBLE(NSTEP),
+     &                               PAIR, IERR)
+      IF (IERR .NE. 0) THEN
+         CALL HERTZDAMP_MESSAGE(IERR, TEXT)
+         WRITE (*,'(A,A)') 'hertzdamp_pair_init_phase failed: ', TEXT
+         STOP 1
+      END IF
+      EMAX = 0.0D0
+      TMAX = 0.0D0
+      NDONE = 0
+      AK = 0.0D0
+      D = 0.0D0
+      UIN = 0.0D0
+      TON = 0.0D0
+      DO 400 J = 1, NPH
+         X = (2.0D0 + (J - 0.5D0)/NPH)*U*DT
+         V = -U
+         A = 0.0D0
+         INCONT = .FALSE.
+         DO 350 ISTEP = 1, 1000
+            T = ISTEP*DT
+            V = V + DT*A
+            XOLD = X
+            X = X + DT*V
+            A = 0.0D0
+            IF (X .LT. 0.0D0) THEN
+               IF (.NOT. INCONT) THEN
+C                 onset: what the host knows here is the overlap -X,
+C                 the speed and DT
+                  INCONT = .TRUE.
+                  TON = T - DT + DT*XOLD/(XOLD - X)
+                  UIN = -V
+                  CALL HERTZDAMP_ONSET_PHASE(-X, UIN, DT, PHI, IERR)
+                  IF (IERR .EQ. 0) CALL HERTZDAMP_PAIR_KD_PHASE(PAIR,
+     &               TC, AM, UIN, 0.0D0, PHI, AK, D, IERR)
+                  IF (IERR .NE. 0) THEN
+                     CALL HERTZDAMP_MESSAGE(IERR, TEXT)
+                     WRITE (*,'(2A)') 'phase k, d failed: ', TEXT
+                     STOP 1
+                  END IF
+               END IF
+               A = (AK*(-X)**1.5D0 - D*V)/AM
+            ELSE IF (INCONT) THEN
+               E1 = V/UIN/ETARG
+               T1 = (T - DT + DT*XOLD/(XOLD - X) - TON)/TC
+               EMAX = MAX(EMAX, ABS(E1 - 1.0D0))
+               TMAX = MAX(TMAX, ABS(T1 - 1.0D0))
+               NDONE = NDONE + 1
+               GO TO 400
+            END IF
+  350    CONTINUE
+  400 CONTINUE
+      WRITE (*,'(A,F5.2,A,I5,A,I3,A,1P,2E12.4E2)') 'euler-phase e',
+     &   ETARG, ' phases', NDONE, ' steps', NSTEP,
+     &   ' max_e_err max_tc_err', EMAX, TMAX
+      END SUBROUTINE EULERP

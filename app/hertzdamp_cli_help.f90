@@ -189,7 +189,7 @@ module hertzdamp_cli_help
         'Usage: hertzdamp invert --e LIST (--tc LIST | --dt LIST --steps LIST)' // nl // &
         '                        --velocity LIST (--mass M | --radius R --density RHO ...)' // nl // &
         '                        [--k-phys K | --youngs-modulus E --poisson-ratio NU]' // nl // &
-        '                        [--host NAME] [--fixed] [options]' // nl // &
+        '                        [--host NAME [--onset-phase LIST]] [--fixed] [options]' // nl // &
         '' // nl // &
         'The inverse rule of the adaptive collision time model: the stiffness k and' // nl // &
         'damping d that give a contact with effective mass m*, hit at relative normal' // nl // &
@@ -208,6 +208,14 @@ module hertzdamp_cli_help
         '  --velocity LIST       relative normal impact velocity u_in [m s^-1]' // nl // &
         host_help // nl // &
         '                        (needs --dt and --steps; not with --fixed)' // nl // &
+        '  --onset-phase LIST    with --host (not none): per-contact constants for the' // nl // &
+        '                        onset phases phi in (0, 1] (the first overlap over' // nl // &
+        '                        u_in dt): one row per phase with alpha, tau_c, k and d' // nl // &
+        '                        that make that single contact''s e and T_c = N dt exact' // nl // &
+        '                        in the host''s scheme.  Columns: e, tc, velocity, mass,' // nl // &
+        '                        radius_eff, k_phys, onset_phase, alpha, tau_c, t_star, k,' // nl // &
+        '                        d, bound_active, status.  Some phase unreachable at N:' // nl // &
+        '                        outside-validity, saying which N can' // nl // &
         '  --fixed               one k and d for every contact, for engines that cannot set' // nl // &
         '                        them per contact: over the range of the --velocity list' // nl // &
         '                        the worst |e_fixed/e - 1| as small as one pair makes it' // nl // &

@@ -20,6 +20,7 @@ module hertzdamp_cmd_invert
     use hertzdamp_cli_progress, only: progress_reporter
     use hertzdamp_cli_plausible, only: warn_implausible, quiet_flag
     use hertzdamp_cmd_fixed, only: invert_fixed
+    use hertzdamp_cmd_phase, only: invert_phase
     use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
     implicit none
     private
@@ -118,8 +119,8 @@ contains
         character(len=:), allocatable :: columns, units, column_units
         allocate (es(0), tcs(0), us(0), tc_dt(0), tc_steps(0))   ! (defined descriptors for the reallocating assignments)
         if (wants_help()) call print_help('invert')
-        call parse_args(2, '--e --tc --dt --steps --velocity --host ' // contact_options // ' ' // model_options, &
-                        contact_flags // ' --progress --fixed ' // quiet_flag, args)
+        call parse_args(2, '--e --tc --dt --steps --velocity --host --onset-phase ' // contact_options // ' ' // &
+                        model_options, contact_flags // ' --progress --fixed ' // quiet_flag, args)
         call parse_model(args, c, inverse=.true.)
         call parse_host(args, c, h)
         if (h%given .and. .not. (args%has('--dt') .and. args%has('--steps') .and. .not. args%has('--tc'))) then
@@ -133,6 +134,13 @@ contains
         call require_mass(ct)
         call check_combinations([size(es), size(tcs), size(us)], '--e, the contact times and --velocity')
         call warn_implausible(args)
+        if (args%has('--onset-phase')) then
+            if (.not. h%given .or. h%host == HD_HOST_NONE) then
+                call fail(EXIT_USAGE, '--onset-phase needs --host with a scheme (and --dt, --steps): the onset ' // &
+                          'phase is that of the host''s time steps')
+            end if
+            call invert_phase(args, c, ct, h%host, es, tcs, tc_steps, us)
+        end if
         if (args%has('--fixed')) then
             if (h%given) call fail(EXIT_USAGE, '--fixed takes no --host (one k and d for every contact)')
             call invert_fixed(args, c, ct, es, tcs, tc_key, us)

@@ -190,20 +190,33 @@ contains
     end subroutine hertzdamp_pair_init
 
     !> The marker of a pair's onset-phase table (bit pattern): a keyed hash of the header's
-    !> marker and the table's layout entries (2 .. 10), as marker_of.  The node values are
-    !> not hashed (the per-contact check reads 10 doubles, not 240).
+    !> marker and the table's layout entries (2 .. 10), in two lanes of 32 bits (each step
+    !> (lane xor a 32-bit half) times a 31-bit key, a product below 2^63: no integer overflow,
+    !> whose wrap-around the optimiser need not keep), the lanes' 52 low bits the fraction of
+    !> a number in [1, 2).  The node values are not hashed (the per-contact check reads 10
+    !> doubles, not 240).
     pure integer(int64) function phase_marker_of(pair) result(bits)
         type(hertzdamp_pair_t), intent(in) :: pair
-        integer(int64) :: h
-        integer :: j
-        h = bits_of(pair%marker) * marker_keys(8)
-        do j = 2, hertzdamp_phase_header
-            h = h + bits_of(pair%phase(j)) * marker_keys(mod(j, 7) + 1)
-            h = ieor(h, shiftr(h, 27))
+        integer(int64), parameter :: low32 = int(z'FFFFFFFF', int64)
+        integer(int64) :: h1, h2, b, w(2)
+        integer :: j, i
+        h1 = marker_keys(1)
+        h2 = marker_keys(2)
+        do j = 1, hertzdamp_phase_header
+            if (j == 1) then
+                b = bits_of(pair%marker)
+            else
+                b = bits_of(pair%phase(j))
+            end if
+            w = [iand(b, low32), iand(shiftr(b, 32), low32)]
+            do i = 1, 2
+                h1 = iand(ieor(h1, w(i)) * marker_keys(mod(j + i, 8) + 1), low32)
+                h1 = ieor(h1, shiftr(h1, 15))
+                h2 = iand(ieor(h2, w(i)) * marker_keys(mod(j + i + 3, 8) + 1), low32)
+                h2 = ieor(h2, shiftr(h2, 13))
+            end do
         end do
-        h = ieor(h, shiftr(h, 31)) * marker_keys(8)
-        h = ieor(h, shiftr(h, 29))
-        bits = ior(iand(h, fraction_bits), one_bits)
+        bits = ior(iand(ieor(shiftl(h1, 20), h2), fraction_bits), one_bits)
     end function phase_marker_of
 
     !> The status of a pair's onset-phase table: HD_BAD_PAIR when the header is not valid

@@ -318,4 +318,35 @@ run timestep --mass 1e-3 --k-phys 1e9 --e 0.9 --velocity 1 --format csv
 check "rayleigh: without the materials, empty (status ok)" test "$(col t_rayleigh),$(col dt_rayleigh),$(col status)" = ",,ok"
 run timestep --radius 1e-3 --mass 1e-3 --k-phys 1e9 --e 0.9 --velocity 1 --format json
 check "rayleigh: JSON null without the materials" python3 -c 'import json, sys; r = json.load(open(sys.argv[1]))["rows"][0]; assert r["t_rayleigh"] is None and r["dt_rayleigh"] is None' "$OUT"
+# --onset-phase (issue 32): one row per phase, that contact's k and d; a stepper written
+# here (MFiX's EULER: v += h a; z += h v, a from the new z and v) gives each row's e and
+# T_c = N dt to 1e-5
+run invert --e 0.2,0.5 --dt 1e-6 --steps 10 --mass 1e-3 --velocity 1.5 --host mfix-euler \
+  --onset-phase 0.016,0.25,0.5,0.999 --format csv
+check "--onset-phase: exit 0, 8 rows (exit $RC: $(cat "$ERR"))" test "$RC" -eq 0 -a "$(wc -l <"$OUT")" -eq 9
+check "--onset-phase: the onset_phase column" test "$(head -n 1 "$OUT" | cut -d, -f7)" = "onset_phase"
+check "--onset-phase: every row's e and T_c exact in the host's Euler loop (own stepper, 1e-5)" python3 -c '
+import csv, sys
+rows = list(csv.DictReader(open(sys.argv[1])))
+dt, n = 1e-6, 10
+for r in rows:
+    e, m, u, phi, k, d = (float(r[c]) for c in ("e", "mass", "velocity", "onset_phase", "k", "d"))
+    z, v, a, t, zl = (phi - 1.0) * u * dt, u, 0.0, 0.0, 0.0
+    ton = (1.0 - phi) * dt
+    while True:
+        v += dt * a; z += dt * v; t += dt; a = 0.0
+        if z > 0:
+            a = -(k * z ** 1.5 + d * v) / m; zl = z
+        elif t > dt:
+            trel = t - dt + dt * zl / (zl - z); break
+    assert abs(-v / u / e - 1) < 1e-5 and abs((trel - ton) / (n * dt) - 1) < 1e-5, (r, -v / u, trel - ton)
+' "$OUT"
+expect_fail 2 "--onset-phase 1.5" invert --e 0.5 --dt 1e-6 --steps 10 --mass 1e-3 --velocity 1 --host lammps \
+  --onset-phase 0.5,1.5
+check "--onset-phase 1.5: names the option" grep -q -- '--onset-phase 1.5' "$ERR"
+expect_fail 2 "--onset-phase without --host" invert --e 0.5 --dt 1e-6 --steps 10 --mass 1e-3 --velocity 1 \
+  --onset-phase 0.5
+run invert --e 0.99 --end force --dt 1e-6 --steps 10 --mass 1e-3 --velocity 1 --host lammps --onset-phase 0.5
+check "--onset-phase unreachable at N = 10: exit 3, says which N can ($(cat "$ERR"))" \
+  bash -c "test $RC -eq 3 && grep -q 'cannot reach it at every onset phase with lammps; N >= [0-9]* can' '$ERR'"
 finish

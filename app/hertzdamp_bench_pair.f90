@@ -14,13 +14,20 @@
 !> - invert-each-tc-m: hertzdamp_invert, one contact per call, every contact with the same
 !>   T_c and m (what an elemental call with scalar T_c, m did before its broadcast forms);
 !> - invert-tc-m: hertzdamp_invert with scalar T_c and m over rank-1 arrays of e and u;
-!> - invert-tc: hertzdamp_invert with a scalar T_c over rank-1 arrays of e, m and u.
+!> - invert-tc: hertzdamp_invert with a scalar T_c over rank-1 arrays of e, m and u;
+!> - c-pair-kd-phase: hertzdamp_c_pair_kd_phase, one contact per call, with a pair's
+!>   onset-phase table (mfix-euler, N = 10, e = 0.5, linear law, overlap end; issue 32) and
+!>   an onset phase per contact;
+!> - pair-kd-phase: hertzdamp_pair_kd_phase, the same, one contact per call.
+!> And the time of one hertzdamp_pair_init with the table (mfix-euler, N = 10, e = 0.2 and
+!> 0.5; median of 7).
 !> The library's rows are compared bit for bit: C and array against the scalar pair-kd,
 !> the broadcast forms against one call per contact.
 module hertzdamp_bench_pair
     use hertzdamp, only: hertzdamp_rk, hertzdamp_pair_t, hertzdamp_pair_init, hertzdamp_pair_kd, hertzdamp_invert, &
-                         HD_OK, HD_END_OVERLAP, HD_DAMPING_LINEAR, HD_HOST_NONE
-    use hertzdamp_capi, only: hertzdamp_c_pair_kd
+                         HD_OK, HD_END_OVERLAP, HD_DAMPING_LINEAR, HD_HOST_NONE, HD_HOST_MFIX_EULER, &
+                         hertzdamp_pair_kd_phase
+    use hertzdamp_capi, only: hertzdamp_c_pair_kd, hertzdamp_c_pair_kd_phase
     use hertzdamp_bench_entry, only: entry_data
     use hertzdamp_bench_timer, only: bench_case, bench_slot, bench_rounds_all, median
     use, intrinsic :: iso_fortran_env, only: int64
@@ -30,11 +37,12 @@ module hertzdamp_bench_pair
     integer, parameter :: wp = hertzdamp_rk
 
     !> The rows, in order.
-    integer, parameter, public :: n_pw = 8
+    integer, parameter, public :: n_pw = 10
     integer, parameter, public :: PW_BARE = 1, PW_C = 2, PW_SCALAR = 3, PW_BARE_VEC = 4, PW_ARRAY = 5, &
-                                  PW_INVERT_EACH = 6, PW_INVERT_TC_M = 7, PW_INVERT_TC = 8
+                                  PW_INVERT_EACH = 6, PW_INVERT_TC_M = 7, PW_INVERT_TC = 8, PW_C_PHASE = 9, &
+                                  PW_PHASE = 10
     character(len=*), parameter, public :: pw_name(n_pw) = [character(len=16) :: 'bare', 'c-pair-kd', 'pair-kd', &
-        'bare-vec', 'pair-kd-array', 'invert-each-tc-m', 'invert-tc-m', 'invert-tc']
+        'bare-vec', 'pair-kd-array', 'invert-each-tc-m', 'invert-tc-m', 'invert-tc', 'c-pair-kd-phase', 'pair-kd-phase']
     character(len=*), parameter, public :: pw_label(n_pw) = [character(len=84) :: &
         'k = m r^(5/2) u^(-1/2), d = alpha m r, one contact per iteration (no vector code)', &
         'C hertzdamp_c_pair_kd, one contact per call', &
@@ -43,7 +51,9 @@ module hertzdamp_bench_pair
         'hertzdamp_pair_kd on rank-1 arrays', &
         'hertzdamp_invert, one contact per call, the same T_c and m for all', &
         'hertzdamp_invert, scalar T_c and m over rank-1 e, u', &
-        'hertzdamp_invert, scalar T_c over rank-1 e, m, u']
+        'hertzdamp_invert, scalar T_c over rank-1 e, m, u', &
+        'C hertzdamp_c_pair_kd_phase (onset-phase table, mfix-euler N = 10), one per call', &
+        'hertzdamp_pair_kd_phase, one contact per call']
     !> The restitution of the pair, and the T_c and m of the broadcast rows.
     real(wp), parameter, public :: pair_e = 0.5_wp, bcast_tc = 1.0e-5_wp, bcast_m = 1.0e-3_wp
 
@@ -52,6 +62,8 @@ module hertzdamp_bench_pair
         integer :: way = PW_BARE
         type(entry_data), pointer :: in => null()
         type(hertzdamp_pair_t) :: p
+        type(hertzdamp_pair_t) :: pp        !! the pair with its onset-phase table
+        real(wp), allocatable :: phi(:)     !! the onset phase of each contact
         real(wp), allocatable :: k(:), d(:)
         integer, allocatable :: status(:)
     contains
@@ -64,6 +76,8 @@ module hertzdamp_bench_pair
         real(wp) :: ns(n_pw) = -1.0_wp         !! ns per contact of each row (median over the rounds)
         real(wp) :: c_ratio = -1.0_wp          !! C over bare: the median of the rounds' ratios
         real(wp) :: array_ratio = -1.0_wp      !! pair-kd-array over bare-vec, the same way
+        real(wp) :: phase_ratio = -1.0_wp      !! c-pair-kd-phase over bare, the same way
+        real(wp) :: init_ms(2) = -1.0_wp       !! pair_init with the table, N = 10, e = 0.2 and 0.5 [ms]
         integer :: rounds = 0                  !! rounds timed
         integer :: mismatches = 0              !! contacts whose library results differ between rows that must agree
         integer :: failed = 0                  !! contacts whose status is not ok (library rows)
@@ -117,6 +131,19 @@ contains
         end do
     end subroutine c_each
 
+    !> hertzdamp_c_pair_kd_phase once per contact (as c_each).
+    subroutine c_phase_each(n, p, tc, m, u, phi, k, d, status)
+        integer, intent(in) :: n
+        type(hertzdamp_pair_t), intent(in) :: p
+        real(wp), intent(in) :: tc(n), m(n), u(n), phi(n)
+        real(wp), intent(out) :: k(n), d(n)
+        integer, intent(out) :: status(n)
+        integer :: i
+        do i = 1, n
+            status(i) = int(hertzdamp_c_pair_kd_phase(p, tc(i), m(i), u(i), 0.0_wp, phi(i), k(i), d(i)))
+        end do
+    end subroutine c_phase_each
+
     !> Every contact once through one row's way.
     subroutine pair_run(self)
         class(pair_case), intent(inout) :: self
@@ -143,7 +170,14 @@ contains
                 end do
             case (PW_INVERT_TC_M)
                 call hertzdamp_invert(e, bcast_tc, bcast_m, u, HD_END_OVERLAP, self%k, self%d, self%status)
-            case default
+            case (PW_C_PHASE)
+                call c_phase_each(n, self%pp, tc, m, u, self%phi, self%k, self%d, self%status)
+            case (PW_PHASE)
+                do i = 1, n
+                    call hertzdamp_pair_kd_phase(self%pp, tc(i), m(i), u(i), 0.0_wp, self%phi(i), self%k(i), &
+                                                 self%d(i), self%status(i))
+                end do
+            case (PW_INVERT_TC)
                 call hertzdamp_invert(e, bcast_tc, m, u, HD_END_OVERLAP, self%k, self%d, self%status)
             end select
         end associate
@@ -165,14 +199,22 @@ contains
         integer, intent(in) :: repeats
         type(pair_result), intent(out) :: res
         type(bench_slot) :: slots(n_pw)
-        type(hertzdamp_pair_t) :: p
-        real(wp) :: k(size(dat%e)), d(size(dat%e))
+        type(hertzdamp_pair_t) :: p, pp
+        real(wp) :: k(size(dat%e)), d(size(dat%e)), phi(size(dat%e))
         real(wp), allocatable :: t(:, :)
-        integer :: w, n, st, i, sti(size(dat%e))
+        integer :: w, n, st, i, sti(size(dat%e)), stp
         n = size(dat%e)
         call hertzdamp_pair_init(pair_e, HD_DAMPING_LINEAR, HD_END_OVERLAP, HD_HOST_NONE, 0.0_wp, p, st)
+        call hertzdamp_pair_init(pair_e, HD_DAMPING_LINEAR, HD_END_OVERLAP, HD_HOST_MFIX_EULER, 10.0_wp, pp, stp, &
+                                 phase=.true.)
+        if (stp /= HD_OK) st = stp
+        ! onset phases spread over (0, 1] (golden-ratio steps: no order the branch predictor learns)
+        do i = 1, n
+            phi(i) = 1.0_wp - modulo(real(i, wp) * 0.6180339887498949_wp, 1.0_wp)
+        end do
+        res%init_ms = [init_time(0.2_wp), init_time(pair_e)]
         do w = 1, n_pw
-            allocate (slots(w)%c, source=pair_case(way=w, in=dat, p=p))
+            allocate (slots(w)%c, source=pair_case(way=w, in=dat, p=p, pp=pp, phi=phi))
             select type (c => slots(w)%c)
             type is (pair_case)
                 allocate (c%k(n), c%d(n), c%status(n))
@@ -190,10 +232,11 @@ contains
         end do
         res%c_ratio = median(t(:, PW_C) / t(:, PW_BARE))
         res%array_ratio = median(t(:, PW_ARRAY) / t(:, PW_BARE_VEC))
+        res%phase_ratio = median(t(:, PW_C_PHASE) / t(:, PW_BARE))
         res%failed = merge(0, n, st == HD_OK)
         ! the pair's rows against its scalar call; the broadcast forms against one call per contact
         res%mismatches = differ(PW_C, PW_SCALAR) + differ(PW_ARRAY, PW_SCALAR) + &
-                         differ(PW_INVERT_TC_M, PW_INVERT_EACH)
+                         differ(PW_INVERT_TC_M, PW_INVERT_EACH) + differ(PW_C_PHASE, PW_PHASE)
         do i = 1, n
             call hertzdamp_invert(dat%e(i), bcast_tc, dat%m(i), dat%u(i), HD_END_OVERLAP, k(i), d(i), sti(i))
         end do
@@ -209,6 +252,24 @@ contains
             end select
         end do
     contains
+        !> One hertzdamp_pair_init with the onset-phase table (mfix-euler, N = 10, linear law,
+        !> overlap end) at e, in ms: the median of 7.
+        real(wp) function init_time(e) result(ms)
+            real(wp), intent(in) :: e
+            type(hertzdamp_pair_t) :: q
+            integer(int64) :: c0, c1, rate
+            real(wp) :: ts(7)
+            integer :: j, sq
+            do j = 1, 7
+                call system_clock(c0, rate)
+                call hertzdamp_pair_init(e, HD_DAMPING_LINEAR, HD_END_OVERLAP, HD_HOST_MFIX_EULER, 10.0_wp, q, sq, &
+                                         phase=.true.)
+                call system_clock(c1)
+                ts(j) = 1.0e3_wp * real(c1 - c0, wp) / real(rate, wp)
+            end do
+            ms = median(ts)
+        end function init_time
+
         !> Contacts whose k, d or status differ between two rows.
         integer function differ(w1, w2)
             integer, intent(in) :: w1, w2

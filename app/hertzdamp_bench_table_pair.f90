@@ -4,7 +4,8 @@
 module hertzdamp_bench_table_pair
     use hertzdamp, only: hertzdamp_rk, HD_DAMPING_LINEAR
     use hertzdamp_bench_pair, only: pair_result, n_pw, pw_name, pw_label, pair_e, bcast_tc, bcast_m, PW_BARE, PW_C, &
-                                    PW_SCALAR, PW_BARE_VEC, PW_ARRAY, PW_INVERT_EACH, PW_INVERT_TC_M, PW_INVERT_TC
+                                    PW_SCALAR, PW_BARE_VEC, PW_ARRAY, PW_INVERT_EACH, PW_INVERT_TC_M, PW_INVERT_TC, &
+                                    PW_C_PHASE, PW_PHASE
     use hertzdamp_bench_entry, only: entry_result, WAY_SCALAR, WAY_ARRAY
     use hertzdamp_bench_rows, only: bench_row, met, fratio, ftoa, FAMILY_FIT
     use hertzdamp_cli, only: cli_buffer
@@ -18,6 +19,9 @@ module hertzdamp_bench_table_pair
 
     !> The per-contact C call may cost at most this multiple of the bare formula.
     real(wp), parameter :: c_target = 1.5_wp
+    !> The per-contact phase form (issue 32) may cost at most this multiple of the bare
+    !> formula, and pair_init with its table at N = 10 at most this many ms.
+    real(wp), parameter :: phase_target = 2.0_wp, init_target_ms = 5.0_wp
 
 contains
 
@@ -66,6 +70,15 @@ contains
                       ftoa(pr%ns(PW_INVERT_TC), '(f6.1)') // ' ns; the all-array call of the entry table ' // &
                       ftoa(ent%ns(WAY_ARRAY), '(f6.1)') // ' ns, its one call per contact ' // &
                       ftoa(ent%ns(WAY_SCALAR), '(f6.1)') // ' ns')
+        call figs%add('pair: the onset-phase form (issue 32): C hertzdamp_c_pair_kd_phase ' // &
+                      ftoa(pr%ns(PW_C_PHASE), '(f6.1)') // ' ns (' // fratio(pr%phase_ratio) // ' x the bare formula; ' // &
+                      'target at most ' // fratio(phase_target) // ' x: ' // &
+                      met(pr%phase_ratio <= phase_target, 'short by ' // fratio(pr%phase_ratio / phase_target) // ' x') // &
+                      '), Fortran hertzdamp_pair_kd_phase ' // ftoa(pr%ns(PW_PHASE), '(f6.1)') // ' ns; ' // &
+                      'hertzdamp_pair_init with the table (mfix-euler, N = 10) ' // ftoa(pr%init_ms(1), '(f6.2)') // &
+                      ' ms at e = 0.2, ' // ftoa(pr%init_ms(2), '(f6.2)') // ' ms at e = 0.5 (target at most ' // &
+                      ftoa(init_target_ms, '(f4.1)') // ' ms: ' // met(maxval(pr%init_ms) <= init_target_ms, &
+                      'short by ' // fratio(maxval(pr%init_ms) / init_target_ms) // ' x') // ')')
         if (pr%mismatches == 0) then
             call figs%add('pair: C, scalar and array pair_kd bit-identical, the broadcast inverse bit-identical to one ' // &
                           'call per contact (' // itoa(pr%failed) // ' results not ok)')

@@ -38,8 +38,9 @@
 !> library module inside a procedure here; test/integration/fpenv_symbols.sh fails if an entry point
 !> calls those routines again.
 !>
-!> One entry point is defined elsewhere and re-exported here: hertzdamp_c_pair_kd, the
-!> per-contact call, lives in hertzdamp_pair so that the k, d code inlines into it (the
+!> Two entry points are defined elsewhere and re-exported here: hertzdamp_c_pair_kd and
+!> hertzdamp_c_pair_kd_phase, the per-contact calls, live in hertzdamp_pair so that the
+!> table and k, d code inline into them (the
 !> bare formula costs a few ns; a call between modules is not inlined without LTO).
 module hertzdamp_capi
     use, intrinsic :: iso_c_binding, only: c_double, c_int, c_char, c_ptr, c_loc, c_null_char, c_intptr_t
@@ -48,7 +49,7 @@ module hertzdamp_capi
     use hertzdamp_methods, only: hertzdamp_forward_dim, HD_METHOD_FIT
     use hertzdamp_pair, only: hertzdamp_pair_t, hertzdamp_pair_size, hertzdamp_pair_init, hertzdamp_invert, hertzdamp_c_pair_kd, &
                               hertzdamp_pair_status, &
-                              hertzdamp_invert_contact, hertzdamp_pair_kd_phase
+                              hertzdamp_invert_contact, hertzdamp_c_pair_kd_phase
     use hertzdamp_phase, only: hertzdamp_onset_phase, hertzdamp_phase_min_steps
     use hertzdamp_host, only: HD_HOST_NONE, hertzdamp_host_stats, hertzdamp_host_mean, hertzdamp_host_min_steps
     ! ---- for the array and lookup entry points of the Python package (issue 35; the block at the end)
@@ -193,31 +194,6 @@ contains
         call hertzdamp_pair_init(e, int(law), int(iend), int(host), steps, p, st, phase=.true.)
         status = int(st, c_int)
     end function hertzdamp_c_pair_init_phase
-
-    !> `int hertzdamp_c_pair_kd_phase(const hertzdamp_pair_t *p, double tc, double m,
-    !> double u, double k_phys, double phi, double *k, double *d)`: k and d of one contact
-    !> with onset phase phi (hertzdamp_pair_kd_phase); k_phys <= 0: no bound.  A pair without
-    !> its table gives HD_NO_PHASE_TABLE, phi outside (0, 1] HD_BAD_PHASE, NULL
-    !> HD_BAD_ARGUMENT; on failure *k = *d = 0.
-    integer(c_int) function hertzdamp_c_pair_kd_phase(p, tc, m, u, k_phys, phi, k, d) &
-            bind(c, name='hertzdamp_c_pair_kd_phase') result(status)
-        type(hertzdamp_pair_t), intent(in), optional :: p !! the pair (hertzdamp_c_pair_init_phase)
-        real(c_double), value, intent(in) :: tc         !! target contact time N dt [s]
-        real(c_double), value, intent(in) :: m          !! effective mass [kg]
-        real(c_double), value, intent(in) :: u          !! impact velocity [m/s]
-        real(c_double), value, intent(in) :: k_phys     !! physical stiffness bound [N m^-3/2], <= 0 for none
-        real(c_double), value, intent(in) :: phi        !! onset phase in (0, 1]
-        real(c_double), intent(out), optional :: k      !! Hertz stiffness [N m^-3/2]
-        real(c_double), intent(out), optional :: d      !! damping coefficient [kg s^-1 m^-q]
-        real(c_double) :: k_, d_
-        integer :: st
-        status = HD_BAD_ARGUMENT
-        if (.not. (present(p) .and. present(k) .and. present(d))) return
-        call hertzdamp_pair_kd_phase(p, tc, m, u, k_phys, phi, k_, d_, st)
-        k = k_
-        d = d_
-        status = int(st, c_int)
-    end function hertzdamp_c_pair_kd_phase
 
     !> `int hertzdamp_c_onset_phase(double delta1, double u, double dt, double *phi)`: the
     !> onset phase delta1 / (u dt) of a contact first seen with overlap delta1

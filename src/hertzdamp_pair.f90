@@ -53,8 +53,7 @@ module hertzdamp_pair
     use hertzdamp_inverse, only: hertzdamp_invert_alpha, hertzdamp_invert_options
     use hertzdamp_host, only: HD_HOST_NONE, hertzdamp_host_order, hertzdamp_host_stats, hertzdamp_host_solve, &
                               hertzdamp_max_host, hertzdamp_host_steps_min, hertzdamp_host_steps_max
-    use hertzdamp_phase, only: hertzdamp_phase_build, hertzdamp_phase_eval, hertzdamp_phase_table_ok, &
-                               hertzdamp_phase_header
+    use hertzdamp_phase, only: hertzdamp_phase_build, hertzdamp_phase_table_ok, hertzdamp_phase_header
     implicit none
     private
 
@@ -129,7 +128,7 @@ module hertzdamp_pair
     public :: hertzdamp_pair_size, hertzdamp_pair_oblique_size, hertzdamp_pair_phase_size
     ! the C entry of the per-contact call (see there; hertzdamp_capi re-exports it), and the
     ! one-contact inverse without optional arguments that the binding layer calls
-    public :: hertzdamp_c_pair_kd, hertzdamp_invert_contact
+    public :: hertzdamp_c_pair_kd, hertzdamp_c_pair_kd_phase, hertzdamp_invert_contact
 
 contains
 
@@ -189,35 +188,70 @@ contains
         if (present(stats)) stats = st
     end subroutine hertzdamp_pair_init
 
-    !> The marker of a pair's onset-phase table (bit pattern): a keyed hash of the header's
-    !> marker and the table's layout entries (2 .. 10), in two lanes of 32 bits (each step
-    !> (lane xor a 32-bit half) times a 31-bit key, a product below 2^63: no integer overflow,
-    !> whose wrap-around the optimiser need not keep), the lanes' 52 low bits the fraction of
-    !> a number in [1, 2).  The node values are not hashed (the per-contact check reads 10
-    !> doubles, not 240).
+    !> The marker of a pair's onset-phase table (bit pattern): the header's marker and the
+    !> table's layout entries (2 .. 10), each rotated by its own amount, xor-ed with a key and
+    !> each other, the sum's high bits folded down (xor-shift) and its 52 low bits the fraction
+    !> of a number in [1, 2).  Any change of one entry changes it.  No multiplication (no
+    !> integer overflow) and no dependent chain: about 25 integer operations per contact.
+    !> The node values are not hashed (the per-contact check reads 10 doubles, not 240).
     pure integer(int64) function phase_marker_of(pair) result(bits)
         type(hertzdamp_pair_t), intent(in) :: pair
-        integer(int64), parameter :: low32 = int(z'FFFFFFFF', int64)
-        integer(int64) :: h1, h2, b, w(2)
-        integer :: j, i
-        h1 = marker_keys(1)
-        h2 = marker_keys(2)
-        do j = 1, hertzdamp_phase_header
-            if (j == 1) then
-                b = bits_of(pair%marker)
-            else
-                b = bits_of(pair%phase(j))
-            end if
-            w = [iand(b, low32), iand(shiftr(b, 32), low32)]
-            do i = 1, 2
-                h1 = iand(ieor(h1, w(i)) * marker_keys(mod(j + i, 8) + 1), low32)
-                h1 = ieor(h1, shiftr(h1, 15))
-                h2 = iand(ieor(h2, w(i)) * marker_keys(mod(j + i + 3, 8) + 1), low32)
-                h2 = ieor(h2, shiftr(h2, 13))
-            end do
-        end do
-        bits = ior(iand(ieor(shiftl(h1, 20), h2), fraction_bits), one_bits)
+        integer(int64) :: h
+        h = ieor(ieor(ieor(bits_of(pair%marker), marker_keys(7)), ieor(ishftc(bits_of(pair%phase(2)), 7), &
+                 ishftc(bits_of(pair%phase(3)), 14))), ieor(ieor(ishftc(bits_of(pair%phase(4)), 21), &
+                 ishftc(bits_of(pair%phase(5)), 28)), ieor(ishftc(bits_of(pair%phase(6)), 35), &
+                 ishftc(bits_of(pair%phase(7)), 42))))
+        h = ieor(h, ieor(ieor(ishftc(bits_of(pair%phase(8)), 49), ishftc(bits_of(pair%phase(9)), 56)), &
+                         ishftc(bits_of(pair%phase(10)), 3)))
+        h = ieor(h, shiftr(h, 29))
+        bits = ior(iand(ieor(h, shiftr(h, 52)), fraction_bits), one_bits)
     end function phase_marker_of
+
+    !> The per-contact check of a pair's table: its marker matches and it has nodes (2 or 4
+    !> halves of 4 to 57 nodes: every index of phase_eval inside the block).
+    pure logical function phase_ready(pair) result(ok)
+        type(hertzdamp_pair_t), intent(in) :: pair
+        ok = ieor(bits_of(pair%phase(1)), phase_marker_of(pair)) == 0_int64 .and. &
+             (pair%phase(2) == 2.0_wp .or. pair%phase(2) == 4.0_wp) .and. pair%phase(3) >= 4.0_wp .and. &
+             pair%phase(3) * pair%phase(2) <= 114.0_wp
+    end function phase_ready
+
+    !> alpha(phi) and tau(phi) from a pair's table (phase_ready, phi in (0, 1]): the half
+    !> holding phi (hertzdamp_phase: pieces (0, phi_b], (phi_b, 1], each halved), its
+    !> t = (distance to the piece end / half length)^(1/r), the cubic through the four nodes
+    !> nearest t (Lagrange weights of the local coordinate).
+    pure subroutine phase_eval(tab, phi, alpha, tau)
+        real(wp), intent(in) :: tab(hertzdamp_pair_phase_size), phi
+        real(wp), intent(out) :: alpha, tau
+        real(wp) :: a, b, il, dd, t, x, u, w0, w1, w2, w3, um1, um2, um3
+        integer :: s, nn, j, i
+        logical :: hi, upper
+        nn = int(tab(3))
+        ! the piece and the half without a branch (the half of a random phase is a coin toss)
+        hi = phi > tab(4)
+        a = merge(tab(4), 0.0_wp, hi)
+        b = merge(1.0_wp, tab(4), hi)
+        il = merge(tab(8), tab(7), hi)
+        dd = (phi - a) * il
+        upper = dd > 1.0_wp
+        dd = merge((b - phi) * il, dd, upper)
+        s = merge(2, 0, hi) + merge(1, 0, upper)
+        t = sqrt(dd)
+        if (tab(10) == 4.0_wp) t = sqrt(t)
+        x = (t - tab(5)) * tab(9)
+        j = min(max(int(x) - 1, 0), nn - 4)
+        u = x - real(j, wp)
+        um1 = u - 1.0_wp
+        um2 = u - 2.0_wp
+        um3 = u - 3.0_wp
+        w0 = -(um1 * um2) * (um3 * (1.0_wp / 6.0_wp))
+        w1 = (u * um2) * (um3 * 0.5_wp)
+        w2 = -(u * um1) * (um3 * 0.5_wp)
+        w3 = (u * um1) * (um2 * (1.0_wp / 6.0_wp))
+        i = hertzdamp_phase_header + 2 * (nn * s + j)
+        alpha = (w0 * tab(i + 1) + w1 * tab(i + 3)) + (w2 * tab(i + 5) + w3 * tab(i + 7))
+        tau = (w0 * tab(i + 2) + w1 * tab(i + 4)) + (w2 * tab(i + 6) + w3 * tab(i + 8))
+    end subroutine phase_eval
 
     !> The status of a pair's onset-phase table: HD_BAD_PAIR when the header is not valid
     !> (hertzdamp_pair_status) or the table's marker does not match; HD_NO_PHASE_TABLE when
@@ -252,7 +286,7 @@ contains
             alpha = pair%alpha
             tau_c = pair%tau_c
         else
-            call hertzdamp_phase_eval(pair%phase, phi, alpha, tau_c)
+            call phase_eval(pair%phase, phi, alpha, tau_c)
         end if
     end subroutine hertzdamp_pair_phase_constants
 
@@ -276,6 +310,39 @@ contains
         real(wp), intent(out) :: k                   !! Hertz stiffness [N m^-3/2]
         real(wp), intent(out) :: d                   !! damping coefficient [kg s^-1 m^-q]
         integer, intent(out) :: status               !! HD_OK or an error code
+        logical :: ok
+        call kd_phase_usual(pair, tc, m, u, k_phys, phi, k, d, ok)
+        if (ok) then
+            status = HD_OK
+        else
+            call kd_phase_rest(pair, tc, m, u, k_phys, phi, k, d, status)
+        end if
+    end subroutine hertzdamp_pair_kd_phase
+
+    !> The usual contact of the phase form: a valid pair with its table, phi in (0, 1], T_c,
+    !> m, u in the direct range and no bound met: k and d, and true.  (Inlined into both
+    !> entry points; every other contact takes kd_phase_rest, which gives the same bits.)
+    pure subroutine kd_phase_usual(pair, tc, m, u, k_phys, phi, k, d, ok)
+        type(hertzdamp_pair_t), intent(in) :: pair
+        real(wp), intent(in) :: tc, m, u, k_phys, phi
+        real(wp), intent(out) :: k, d
+        logical, intent(out) :: ok
+        real(wp) :: a, tau
+        k = 0.0_wp
+        d = 0.0_wp
+        ok = header_valid(pair) .and. phase_ready(pair) .and. phi > 0.0_wp .and. phi <= 1.0_wp .and. direct(tc, m, u)
+        if (.not. ok) return
+        call phase_eval(pair%phase, phi, a, tau)
+        call direct_kd(int(pair%law), a, tau, tc, m, u, k, d)
+        ok = k_phys <= 0.0_wp .or. (k_phys <= huge(k_phys) .and. k_phys > k)
+    end subroutine kd_phase_usual
+
+    !> hertzdamp_pair_kd_phase for every contact: the statuses, the bound, the logarithmic path.
+    pure subroutine kd_phase_rest(pair, tc, m, u, k_phys, phi, k, d, status)
+        type(hertzdamp_pair_t), intent(in) :: pair
+        real(wp), value :: tc, m, u, k_phys, phi
+        real(wp), intent(out) :: k, d
+        integer, intent(out) :: status
         real(wp) :: a, tau, ts
         integer :: given, law, host
         logical :: bound
@@ -286,9 +353,41 @@ contains
             law = int(pair%law)
             host = int(pair%host)
         end if
-        call contact_kd(a, tau, pair%alpha_cont, law, host, given, tc, m, u, .not. (k_phys <= 0.0_wp), k_phys, &
-                        .false., k, d, ts, bound, status)
-    end subroutine hertzdamp_pair_kd_phase
+        call contact_rest(a, tau, pair%alpha_cont, law, host, given, tc, m, u, .not. (k_phys <= 0.0_wp), k_phys, &
+                          .false., k, d, ts, bound, status)
+    end subroutine kd_phase_rest
+
+    !> `int hertzdamp_c_pair_kd_phase(const hertzdamp_pair_t *p, double tc, double m,
+    !> double u, double k_phys, double phi, double *k, double *d)`: k and d of one contact
+    !> with onset phase phi (hertzdamp_pair_kd_phase); k_phys <= 0: no bound.  A pair without
+    !> its table gives HD_NO_PHASE_TABLE, phi outside (0, 1] HD_BAD_PHASE, NULL
+    !> HD_BAD_ARGUMENT; on failure *k = *d = 0.  Defined here, as hertzdamp_c_pair_kd, so that
+    !> the table and k, d code inline into it (hertzdamp_capi re-exports it).
+    integer(c_int) function hertzdamp_c_pair_kd_phase(p, tc, m, u, k_phys, phi, k, d) &
+            bind(c, name='hertzdamp_c_pair_kd_phase') result(status)
+        type(hertzdamp_pair_t), intent(in), optional :: p !! the pair (hertzdamp_c_pair_init_phase)
+        real(c_double), value, intent(in) :: tc         !! target contact time N dt [s]
+        real(c_double), value, intent(in) :: m          !! effective mass [kg]
+        real(c_double), value, intent(in) :: u          !! impact velocity [m/s]
+        real(c_double), value, intent(in) :: k_phys     !! physical stiffness bound [N m^-3/2], <= 0 for none
+        real(c_double), value, intent(in) :: phi        !! onset phase in (0, 1]
+        real(c_double), intent(out), optional :: k      !! Hertz stiffness [N m^-3/2]
+        real(c_double), intent(out), optional :: d      !! damping coefficient [kg s^-1 m^-q]
+        real(wp) :: k_, d_
+        integer :: st
+        logical :: ok
+        status = HD_BAD_ARGUMENT
+        if (.not. (present(p) .and. present(k) .and. present(d))) return
+        call kd_phase_usual(p, tc, m, u, k_phys, phi, k_, d_, ok)
+        if (ok) then
+            status = HD_OK
+        else
+            call kd_phase_rest(p, tc, m, u, k_phys, phi, k_, d_, st)
+            status = int(st, c_int)
+        end if
+        k = k_
+        d = d_
+    end function hertzdamp_c_pair_kd_phase
 
     !> A valid pair of the given constants (the caller has checked them).  steps is kept
     !> when it is a valid N (host none does not use it, but hertzdamp_c_pair_stats runs the

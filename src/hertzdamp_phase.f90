@@ -20,20 +20,22 @@
 !> singularities at the ends of a piece (a tiny first or last overlap: powers
 !> phi^(3/2), phi^q, (phi_b - phi)^q, ... with q in {0, 1/4, 1/2}, all multiples of 1/4).
 !> Each piece is cut at its middle into two halves; in each half the variable
-!> t = (distance to the half's piece end / half length)^(1/4) in [0, 1] makes those powers
-!> polynomials, and alpha, tau are tabulated at equidistant t_j from t_0 = 1e-3 to 1 and
-!> interpolated by the cubic through the four nearest nodes (Lagrange).  A whole N: two
-!> halves of 57 nodes each; otherwise four of 28.
+!> t = (distance to the half's piece end / half length)^(1/r) in [0, 1] (r = 4 for tsuji,
+!> whose powers are multiples of 1/4; r = 2 for q = 0 and 1/2, multiples of 1/2) makes those
+!> powers polynomials, and alpha, tau are tabulated at equidistant t_j from t_0 = 1e-3 to 1
+!> and interpolated by the cubic through the four nearest nodes (Lagrange; hertzdamp_pair
+!> evaluates it per contact).  A whole N: two halves of 57 nodes each; otherwise four of 28.
 !>
 !> Layout of the table (hertzdamp_pair_phase_size = 240 doubles): (1) the marker (set by
 !> hertzdamp_pair); (2) number of halves (0: host none, no phase dependence; 2 or 4);
 !> (3) nodes per half; (4) phi_b (1 for a whole N); (5) t_0; (6) N; (7) 2/phi_b;
-!> (8) 2/(1 - phi_b) (0 for a whole N); (9) (nodes - 1)/(1 - t_0); (10) reserved (0);
+!> (8) 2/(1 - phi_b) (0 for a whole N); (9) (nodes - 1)/(1 - t_0); (10) the root r;
 !> from (11): per half, per node, alpha then tau.
 module hertzdamp_phase
     use hertzdamp_kinds, only: hertzdamp_rk
     use hertzdamp_registry, only: HD_OK, HD_PHASE_UNREACHABLE, HD_BAD_PHASE, HD_BAD_VELOCITY, HD_BAD_TIME, &
                                 HD_BAD_STEPS, HD_HOST_UNREACHABLE, hertzdamp_pair_phase_size
+    use hertzdamp_laws, only: HD_DAMPING_TSUJI
     use hertzdamp_host, only: HD_HOST_NONE, hertzdamp_host_collide, hertzdamp_host_solve, hertzdamp_host_stats, &
                               hertzdamp_host_steps_min, hertzdamp_host_steps_max, hertzdamp_host_h_min, &
                               hertzdamp_host_h_max, hertzdamp_host_alpha_max
@@ -42,7 +44,7 @@ module hertzdamp_phase
 
     integer, parameter :: wp = hertzdamp_rk
 
-    public :: hertzdamp_onset_phase, hertzdamp_phase_point, hertzdamp_phase_build, hertzdamp_phase_eval
+    public :: hertzdamp_onset_phase, hertzdamp_phase_point, hertzdamp_phase_build
     public :: hertzdamp_phase_min_steps, hertzdamp_phase_table_ok
 
     !> Size of the table header (doubles before the nodes).
@@ -380,6 +382,9 @@ contains
         tab(7) = 2.0_wp / pb
         if (nsub == 4) tab(8) = 2.0_wp / (1.0_wp - pb)
         tab(9) = real(nn - 1, wp) / (1.0_wp - t_first)
+        ! the root of t: 4 for tsuji (powers of phi^(1/4)), 2 for q = 0 and 1/2 (powers of
+        ! phi^(1/2) only: one square root per contact less)
+        tab(10) = merge(4.0_wp, 2.0_wp, law == HD_DAMPING_TSUJI)
         do p = 1, nsub / 2
             ! the middle of the piece first (shared by its two halves)
             phi = merge(0.5_wp * pb, 0.5_wp * (1.0_wp + pb), p == 1)
@@ -438,7 +443,7 @@ contains
             b = 1.0_wp
         end if
         l = 0.5_wp * (b - a)
-        d = l * t**4
+        d = l * t**nint(tab(10))
         if (mod(s, 2) == 1) then
             phi = a + d
         else
@@ -462,63 +467,10 @@ contains
         if (.not. (tab(3) >= 4.0_wp .and. tab(3) <= 64.0_wp)) return
         nn = int(tab(3))
         ok = 2 * nsub * nn <= hertzdamp_pair_phase_size - hertzdamp_phase_header .and. tab(4) > 0.0_wp .and. &
+             (tab(10) == 2.0_wp .or. tab(10) == 4.0_wp) .and. &
              tab(4) <= 1.0_wp .and. tab(9) > 0.0_wp .and. tab(9) < 1.0e3_wp .and. tab(7) > 0.0_wp .and. &
              tab(7) <= huge(1.0_wp) .and. tab(8) >= 0.0_wp .and. tab(8) <= huge(1.0_wp)
     end function hertzdamp_phase_table_ok
-
-    !> alpha(phi) and tau(phi) from a table built by hertzdamp_phase_build (layout checked
-    !> by the caller, phi in (0, 1]): the half holding phi, t = (distance to its piece end /
-    !> half length)^(1/4), the cubic through the four nearest nodes.
-    pure subroutine eval_half(t4, base, tab, alpha, tau)
-        real(wp), intent(in) :: t4
-        integer, intent(in) :: base
-        real(wp), intent(in) :: tab(hertzdamp_pair_phase_size)
-        real(wp), intent(out) :: alpha, tau
-        real(wp) :: x, u, w0, w1, w2, w3, um1, um2, um3
-        integer :: j, nn, i
-        nn = int(tab(3))
-        x = (sqrt(sqrt(t4)) - tab(5)) * tab(9)
-        j = min(max(int(x) - 1, 0), nn - 4)
-        u = x - real(j, wp)
-        um1 = u - 1.0_wp
-        um2 = u - 2.0_wp
-        um3 = u - 3.0_wp
-        w0 = -(um1 * um2 * um3) * (1.0_wp / 6.0_wp)
-        w1 = (u * um2 * um3) * 0.5_wp
-        w2 = -(u * um1 * um3) * 0.5_wp
-        w3 = (u * um1 * um2) * (1.0_wp / 6.0_wp)
-        i = base + 2 * j
-        alpha = ((w0 * tab(i + 1) + w1 * tab(i + 3)) + (w2 * tab(i + 5) + w3 * tab(i + 7)))
-        tau = ((w0 * tab(i + 2) + w1 * tab(i + 4)) + (w2 * tab(i + 6) + w3 * tab(i + 8)))
-    end subroutine eval_half
-
-    !> alpha(phi), tau(phi) of a table (layout valid, phi in (0, 1], 2nd entry > 0).
-    pure subroutine hertzdamp_phase_eval(tab, phi, alpha, tau)
-        real(wp), intent(in) :: tab(hertzdamp_pair_phase_size)  !! the table
-        real(wp), intent(in) :: phi                            !! onset phase
-        real(wp), intent(out) :: alpha                         !! alpha(phi)
-        real(wp), intent(out) :: tau                           !! tau(phi)
-        real(wp) :: a, b, il, d
-        integer :: s, nn
-        nn = int(tab(3))
-        if (phi > tab(4)) then
-            a = tab(4)
-            b = 1.0_wp
-            il = tab(8)
-            s = 3
-        else
-            a = 0.0_wp
-            b = tab(4)
-            il = tab(7)
-            s = 1
-        end if
-        d = (phi - a) * il
-        if (d > 1.0_wp) then
-            d = (b - phi) * il
-            s = s + 1
-        end if
-        call eval_half(d, hertzdamp_phase_header + 2 * nn * (s - 1), tab, alpha, tau)
-    end subroutine hertzdamp_phase_eval
 
     ! ================================================================ fewest steps
 

@@ -126,7 +126,8 @@ below "$ed" 1e-14; check "closed-form: bounded d within $ed < 1e-14 of alpha sqr
 
 # the per-pair rows (linear law): the bare formula, the C and Fortran pair_kd, the arrays,
 # the broadcast inverse (timed, never asserted)
-for w in bare c-pair-kd pair-kd bare-vec pair-kd-array invert-each-tc-m invert-tc-m invert-tc; do
+for w in bare c-pair-kd pair-kd bare-vec pair-kd-array invert-each-tc-m invert-tc-m invert-tc c-pair-kd-phase \
+    pair-kd-phase; do
   check "pair $w row present" \
     $([ -n "$(awk -F, -v w=$w '$1 == "pair" && $2 == "linear" && $3 == w && $10 != ""' "$tmp/out.csv")" ]; echo $?)
 done

@@ -177,7 +177,7 @@ contains
                     call hertzdamp_pair_kd_phase(self%pp, tc(i), m(i), u(i), 0.0_wp, self%phi(i), self%k(i), &
                                                  self%d(i), self%status(i))
                 end do
-            case (PW_INVERT_TC)
+            case default
                 call hertzdamp_invert(e, bcast_tc, m, u, HD_END_OVERLAP, self%k, self%d, self%status)
             end select
         end associate

@@ -53,6 +53,7 @@ contains
         integer :: ie, it, iu, ip, st, st_pair, kind, s2
         logical :: have
         character(len=:), allocatable :: why
+        allocate (ph(0))   ! (a defined descriptor for the reallocating assignment)
         if (args%has('--fixed')) call fail(EXIT_USAGE, '--onset-phase takes no --fixed (per-contact constants)')
         ph = parse_phases(args)
         call check_combinations([size(es), size(tcs), size(us), size(ph)], &

@@ -216,42 +216,9 @@ contains
              pair%phase(3) * pair%phase(2) <= 114.0_wp
     end function phase_ready
 
-    !> alpha(phi) and tau(phi) from a pair's table (phase_ready, phi in (0, 1]): the half
-    !> holding phi (hertzdamp_phase: pieces (0, phi_b], (phi_b, 1], each halved), its
-    !> t = (distance to the piece end / half length)^(1/r), the cubic through the four nodes
-    !> nearest t (Lagrange weights of the local coordinate).
-    pure subroutine phase_eval(tab, phi, alpha, tau)
-        real(wp), intent(in) :: tab(hertzdamp_pair_phase_size), phi
-        real(wp), intent(out) :: alpha, tau
-        real(wp) :: a, b, il, dd, t, x, u, w0, w1, w2, w3, um1, um2, um3
-        integer :: s, nn, j, i
-        logical :: hi, upper
-        nn = int(tab(3))
-        ! the piece and the half without a branch (the half of a random phase is a coin toss)
-        hi = phi > tab(4)
-        a = merge(tab(4), 0.0_wp, hi)
-        b = merge(1.0_wp, tab(4), hi)
-        il = merge(tab(8), tab(7), hi)
-        dd = (phi - a) * il
-        upper = dd > 1.0_wp
-        dd = merge((b - phi) * il, dd, upper)
-        s = merge(2, 0, hi) + merge(1, 0, upper)
-        t = sqrt(dd)
-        if (tab(10) == 4.0_wp) t = sqrt(t)
-        x = (t - tab(5)) * tab(9)
-        j = min(max(int(x) - 1, 0), nn - 4)
-        u = x - real(j, wp)
-        um1 = u - 1.0_wp
-        um2 = u - 2.0_wp
-        um3 = u - 3.0_wp
-        w0 = -(um1 * um2) * (um3 * (1.0_wp / 6.0_wp))
-        w1 = (u * um2) * (um3 * 0.5_wp)
-        w2 = -(u * um1) * (um3 * 0.5_wp)
-        w3 = (u * um1) * (um2 * (1.0_wp / 6.0_wp))
-        i = hertzdamp_phase_header + 2 * (nn * s + j)
-        alpha = (w0 * tab(i + 1) + w1 * tab(i + 3)) + (w2 * tab(i + 5) + w3 * tab(i + 7))
-        tau = (w0 * tab(i + 2) + w1 * tab(i + 4)) + (w2 * tab(i + 6) + w3 * tab(i + 8))
-    end subroutine phase_eval
+    ! phase_eval: the per-contact lookup of the table, one text for this module (inlined into
+    ! the entry points) and hertzdamp_phase (the check of the table at init)
+    include 'hertzdamp_phase_eval.inc'
 
     !> The status of a pair's onset-phase table: HD_BAD_PAIR when the header is not valid
     !> (hertzdamp_pair_status) or the table's marker does not match; HD_NO_PHASE_TABLE when

@@ -57,6 +57,9 @@ module hertzdamp_phase
     !> Relative tolerance of the per-phase solve (both residuals), and the floor it accepts
     !> when round-off keeps Newton from going lower (long contacts).
     real(wp), parameter :: point_tol = 1.0e-13_wp, point_floor = 1.0e-10_wp
+    !> The largest relative error of e and of the contact time that the check of a new table
+    !> accepts at the middles of its cells.
+    real(wp), parameter :: check_tol = 1.0e-4_wp
     !> Largest N of hertzdamp_phase_min_steps.
     integer, parameter :: n_search_max = 1024
 
@@ -358,9 +361,10 @@ contains
         real(wp), intent(out) :: tab(hertzdamp_pair_phase_size)  !! the table (layout: module note)
         integer, intent(out) :: status              !! HD_OK or the failure
         real(wp) :: pb, guess(2), t, phi, a, ta, mid(2)
-        integer :: nsub, nn, p, s, j, base, i
+        integer :: nsub, nn, p, s, j, base, i, jx(4)
         tab = 0.0_wp
         status = HD_OK
+        jx = 0
         if (host == HD_HOST_NONE) return
         if (.not. (steps >= hertzdamp_host_steps_min .and. steps <= hertzdamp_host_steps_max)) then
             status = HD_BAD_STEPS
@@ -413,6 +417,7 @@ contains
                             a = 4.0_wp * (tab(i + 3) + tab(i + 7)) - 6.0_wp * tab(i + 5) - tab(i + 9)
                             ta = 4.0_wp * (tab(i + 4) + tab(i + 8)) - 6.0_wp * tab(i + 6) - tab(i + 10)
                             status = HD_OK
+                            jx(s) = max(jx(s), j)
                         end if
                         if (status /= HD_OK) exit
                     end if
@@ -424,11 +429,42 @@ contains
             end do
             if (status /= HD_OK) exit
         end do
+        if (status == HD_OK) call check_table(e, law, iend, host, steps, tab, jx, status)
         if (status /= HD_OK) then
             tab = 0.0_wp
             status = HD_PHASE_UNREACHABLE
         end if
     end subroutine hertzdamp_phase_build
+
+    !> The check of a built table: at the middle of every cell of a half (the cell j between
+    !> t_j and t_(j+1)) but those next to the piece end whose cubic reads an extrapolated node
+    !> (j <= jx + 1, jx the highest extrapolated node of the half; at least the end cell
+    !> j = 0), the collision with the interpolated constants has e and the contact time
+    !> within check_tol of the targets (relative); HD_PHASE_UNREACHABLE otherwise (a phase
+    !> between the nodes the host cannot serve at this N, or an interpolation error beyond it).
+    pure subroutine check_table(e, law, iend, host, steps, tab, jx, status)
+        real(wp), intent(in) :: e, steps, tab(hertzdamp_pair_phase_size)
+        integer, intent(in) :: law, iend, host, jx(4)
+        integer, intent(out) :: status
+        real(wp) :: t, phi, a, ta, ee, tt
+        integer :: s, j, nn, st
+        nn = int(tab(3))
+        status = HD_OK
+        do s = 1, int(tab(2))
+            do j = merge(jx(s) + 2, 1, jx(s) > 0), nn - 2
+                t = t_first + (real(j, wp) + 0.5_wp) / tab(9)
+                phi = node_phase(tab, s, t)
+                call phase_eval(tab, phi, a, ta)
+                call hertzdamp_host_collide(a, ta / steps, phi, law, iend, host, ee, tt, st)
+                if (st /= HD_OK) then
+                    status = HD_PHASE_UNREACHABLE
+                else if (.not. (abs(ee - e) <= check_tol * e .and. abs(tt - ta) <= check_tol * ta)) then
+                    status = HD_PHASE_UNREACHABLE
+                end if
+                if (status /= HD_OK) return
+            end do
+        end do
+    end subroutine check_table
 
     !> The phase of the point t of half s of a table.
     pure real(wp) function node_phase(tab, s, t) result(phi)
@@ -552,5 +588,7 @@ contains
             if (st == HD_OK) call hertzdamp_phase_build(e, law, iend, host, real(nn, wp), a, t, tab, st)
         end subroutine try
     end subroutine hertzdamp_phase_min_steps
+
+    include 'hertzdamp_phase_eval.inc'
 
 end module hertzdamp_phase

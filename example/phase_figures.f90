@@ -10,7 +10,8 @@
 !>    and scheme, linear law, both contact ends, with the largest single-contact error of e
 !>    there over 1000 phases (in parentheses).
 !>
-!> Run: fpm run --example phase_figures --flag "-O3 -march=x86-64-v2 -funroll-loops -fPIC"
+!> Run: fpm run --example phase_figures --flag "-O3 -march=x86-64-v2 -funroll-loops -fPIC" [-- min-steps]
+!> (figure 2 only with an argument: it searches N for every case, about a minute)
 program phase_figures
     use hertzdamp, only: hertzdamp_rk, HD_OK, HD_HOST_LAMMPS, HD_HOST_MFIX_EULER, HD_HOST_MFIX_AB2, &
                          HD_DAMPING_LINEAR, HD_DAMPING_KUWABARA_KONO, HD_END_OVERLAP, HD_END_FORCE, hertzdamp_pair_t, &
@@ -65,6 +66,7 @@ program phase_figures
             ' | ', met, ' | ', unreach, ' | ', emax, ' | ', tmax, ' | ', 100.0_wp * mmax, ' % |'
     end do
     write (*, '(a)') '<!-- END phase_figures 1 -->'
+    if (command_argument_count() < 1) stop
     write (*, '(a)') ''
     write (*, '(a)') '<!-- BEGIN phase_figures 2 -->'
     write (*, '(a)') '| e | lammps, mfix-euler: overlap | force | mfix-ab2: overlap | force |'

@@ -26,7 +26,7 @@ program phase_figures
     type(hertzdamp_pair_t) :: pair
     real(wp) :: emax, tmax, mmax, err(3), phi, k, d, a, ts, e, tau
     integer :: ih, law, iend, ie, in, j, st, met, unreach, nmin(2)
-    character(len=16) :: cell(4)
+    character(len=24) :: cell(4)
 
     write (*, '(a)') '<!-- BEGIN phase_figures 1 -->'
     write (*, '(a)') '| host | targets met | unreachable at N | phase form: max err e | max err T_c | ' // &
@@ -91,7 +91,11 @@ program phase_figures
                         emax = max(emax, err(1))
                     end do
                 end if
-                write (cell(2 * (ih - 2) + iend + 1), '(i4, a, es7.1, a)') nmin(iend + 1), ' (', emax, ')'
+                if (emax < 1.0_wp) then
+                    write (cell(2 * (ih - 2) + iend + 1), '(i4, a, es7.1, a)') nmin(iend + 1), ' (', emax, ')'
+                else
+                    write (cell(2 * (ih - 2) + iend + 1), '(i4, a)') nmin(iend + 1), ' (a phase fails)'
+                end if
             end do
         end do
         write (*, '(a, f4.2, 5a)') '| ', es(ie), (' | ' // trim(adjustl(cell(j))), j = 1, 4), ' |'

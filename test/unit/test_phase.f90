@@ -4,14 +4,15 @@
 !>
 !> - every contact exact: for lammps, mfix-euler and mfix-ab2, every law and both contact
 !>   ends, e from 0.1 to 0.99 and N from 10 to 1000 (a representative set of (e, N) per
-!>   law and end, one non-whole N), at 256 stratified onset phases plus the extremes and the
-!>   issue's phase 0.016: k and d of hertzdamp_pair_kd_phase for a contact in SI units,
+!>   law and end, one non-whole N), at 256 stratified onset phases plus 1e-5, 1e-3, 0.2,
+!>   1 - 1e-5 and the issue's phase 0.016: k and d of hertzdamp_pair_kd_phase for a contact in SI units,
 !>   reduced to (alpha, h) by the definitions here, run by this program's own steppers
 !>   (LAMMPS's velocity Verlet with two half kicks, MFiX's EULER and ADAMS_BASHFORTH as
 !>   cfnewvalues.f writes them; no code shared with the library): e within 1e-5 (relative)
-!>   of the target and T_c within 1e-5 of N dt (the brief asks 1e-4 and 1e-3);
-!> - a target some phase cannot reach gives HD_PHASE_UNREACHABLE, with
-!>   hertzdamp_phase_min_steps above N; the fewest N itself: init fails at N_min - 1;
+!>   of the target and T_c within 1e-5 of N dt (issue 32 asks 1e-4 and 1e-3);
+!> - a target some phase cannot reach (or whose table fails the init's check) gives
+!>   HD_PHASE_UNREACHABLE, with hertzdamp_phase_min_steps above N (nine in ten of the grid
+!>   are served); the fewest N itself: init fails at N_min - 1;
 !> - the mean-exact constants give a spread of e over the phase at least 100 times the
 !>   phase form's (the regression of issue 32: 5.5 % at e = 0.5, N = 10);
 !> - k and d against the closed forms with ** (k = m r^(5/2) u^(-1/2), d = alpha m r

@@ -8,7 +8,7 @@ the time step its physical contact needs (timestep).  Every function runs one ca
 the core library (the Fortran hertzdamp, loaded through ctypes, the GIL released) over
 all contacts and broadcasts like a numpy ufunc.  Guide: doc/python.md.
 """
-from ._api import Contact, forward, invert, materials, min_steps, timestep
+from ._api import Contact, forward, invert, materials, min_steps, onset_phase, phase_min_steps, timestep
 from ._call import HertzdampError
 from ._lib import lib as _lib
 from ._pair import Pair
@@ -31,5 +31,6 @@ ENDS = tuple(_lib.names_of("end"))
 HOSTS = tuple(_lib.names_of("host"))
 METHODS = tuple(_lib.names_of("method"))
 
-__all__ = ["invert", "forward", "Pair", "materials", "timestep", "min_steps", "Contact", "HertzdampError",
+__all__ = ["invert", "forward", "Pair", "materials", "timestep", "min_steps", "onset_phase", "phase_min_steps",
+           "Contact", "HertzdampError",
            "LAWS", "ENDS", "HOSTS", "METHODS", "library_path", "__version__"]

@@ -35,6 +35,31 @@ def min_steps(e: float, law: str = "linear", end: str = "overlap", host: str = "
     return n.value
 
 
+def onset_phase(delta1: float, u: float, dt: float) -> float:
+    """The onset phase delta1 / (u dt) of a contact first seen with overlap delta1 [m] after a
+    step dt [s] at approach speed u [m/s] (hertzdamp_c_onset_phase): in (0, 1], a contact
+    detected late (phi > 1) gets 1.  HertzdampError for delta1, u or dt not finite and positive."""
+    phi = ctypes.c_double()
+    st = lib.onset_phase(float(delta1), float(u), float(dt), ctypes.addressof(phi))
+    if st:
+        from ._call import HertzdampError
+        raise HertzdampError(f"hertzdamp.onset_phase: delta1 = {float(delta1)!r}, u = {float(u)!r}, "
+                             f"dt = {float(dt)!r}: {lib.message(st)}", st)
+    return phi.value
+
+
+def phase_min_steps(e: float, law: str = "linear", end: str = "overlap", host: str = "lammps") -> int:
+    """The fewest whole N at which every onset phase has per-contact constants
+    (hertzdamp_c_phase_min_steps, the N of ``Pair(..., phase=True)``)."""
+    n = ctypes.c_int()
+    st = lib.phase_min_steps(float(e), code("law", law, "law"), code("end", end, "end"),
+                             code("host", host, "host"), ctypes.addressof(n))
+    if st:
+        from ._call import HertzdampError
+        raise HertzdampError(f"hertzdamp.phase_min_steps: e = {float(e)!r}, host = {host!r}: {lib.message(st)}", st)
+    return n.value
+
+
 def _steps_hint(inputs: Inputs, law: str, end: str, host: Optional[str]):
     """For a host that cannot reach e at so few steps: which N can (as the program says)."""
     def hint(sname: str, flat: int) -> str:

@@ -37,6 +37,11 @@ SIGNATURES = {
     "hertzdamp_c_pair_constants": (_I, [_P, _P, _P]),
     "hertzdamp_c_pair_stats": (_I, [_P, _I, _P]),
     "hertzdamp_c_host_min_steps": (_I, [_F, _I, _I, _I, _P]),
+    # per-contact constants from the onset phase (issue 32)
+    "hertzdamp_c_pair_init_phase": (_I, [_F, _I, _I, _I, _F, _P]),
+    "hertzdamp_c_pair_kd_phase": (_I, [_P, _F, _F, _F, _F, _F, _P, _P]),
+    "hertzdamp_c_onset_phase": (_I, [_F, _F, _F, _P]),
+    "hertzdamp_c_phase_min_steps": (_I, [_F, _I, _I, _I, _P]),
     # the scalar and array entry points of C programs (the tests compare against them)
     "hertzdamp_c_invert_law": (_I, [_F, _F, _F, _F, _F, _I, _I, _P, _P]),
     "hertzdamp_c_invert_n": (_I, [_I, _P, _P, _P, _P, _I, _P, _P, _P]),

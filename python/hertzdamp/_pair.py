@@ -6,7 +6,7 @@ from typing import Dict, Optional
 
 import numpy as np
 
-from ._api import _CONTACT, ArrayLike, min_steps
+from ._api import _CONTACT, ArrayLike, min_steps, phase_min_steps
 from ._call import HertzdampError, Inputs, check_errors, code, finish, run
 from ._lib import lib
 
@@ -16,29 +16,35 @@ class Pair:
     damping law, contact end, and the host scheme with its steps per contact N (host
     None: the continuous model, no steps).  ``kd`` gives every contact its k and d;
     ``stats`` what the constants achieve in a host scheme; ``min_steps`` the fewest N at
-    which the host reaches e.  The constants live in the library's opaque pair (its size
-    read from the library), so a Pair is a small copyable value."""
+    which the host reaches e.  ``phase=True`` also builds the onset-phase table
+    (hertzdamp_c_pair_init_phase): ``kd_phase`` then gives each contact the constants of its
+    own onset phase, which make that contact's e and T_c exact in the host's scheme.  The
+    constants live in the library's opaque pair (its size read from the library), so a
+    Pair is a small copyable value."""
 
     def __init__(self, e: float, *, law: str = "linear", end: str = "overlap", host: Optional[str] = None,
-                 steps: Optional[float] = None) -> None:
+                 steps: Optional[float] = None, phase: bool = False) -> None:
         if np.ndim(e) != 0:
             raise ValueError("hertzdamp.Pair: one e per pair (hertzdamp.invert takes arrays of e)")
         if host not in (None, "none") and steps is None:
             raise ValueError(f"hertzdamp.Pair: host = {host!r} needs steps (the steps per contact N)")
         self.e, self.law, self.end, self.host = float(e), law, end, host
         self.steps = None if steps is None else float(steps)
+        self.phase = bool(phase)
         self._codes = (code("law", law, "law"), code("end", end, "end"),
                        code("host", "none" if host is None else host, "host"))
         self._buf = np.zeros(lib.codes["size"]["pair"])
-        st = lib.pair_init(self.e, *self._codes, self.steps or 0.0, self._buf.ctypes.data)
+        init = lib.pair_init_phase if self.phase else lib.pair_init
+        st = init(self.e, *self._codes, self.steps or 0.0, self._buf.ctypes.data)
         if st:
             msg = f"hertzdamp.Pair: e = {self.e!r}, law = {law!r}, end = {end!r}, host = {host!r}"
             if steps is not None:
                 msg += f", steps = {self.steps:g}"
             msg += f": {lib.message(st)}"
-            if lib.status_names.get(st) == "host-unreachable":
+            if lib.status_names.get(st) in ("host-unreachable", "phase-unreachable"):
                 try:
-                    msg += f" (N >= {min_steps(self.e, law, end, host)} can)"
+                    n = (phase_min_steps if self.phase else min_steps)(self.e, law, end, host)
+                    msg += f" (N >= {n} can)"
                 except ValueError:
                     pass
             raise HertzdampError(msg, st)
@@ -61,6 +67,29 @@ class Pair:
         res, status = run("Pair.kd", "hertzdamp_c_pair_kd_array", inputs, ("tc", "m", "u", "k_phys"), (),
                           ("k", "d"), prefix=(self._buf.ctypes.data,))
         return finish(inputs, [res["k"], res["d"]], status, errors, return_status, _CONTACT)
+
+    def kd_phase(self, tc: ArrayLike, m: ArrayLike, u: ArrayLike, phi: ArrayLike,
+                 k_phys: Optional[ArrayLike] = None):
+        """k and d of contacts with onset phases phi in (0, 1] (hertzdamp.onset_phase), from
+        the pair's onset-phase table (``phase=True``): one hertzdamp_c_pair_kd_phase call per
+        contact over the broadcast arrays; k_phys as for ``kd``.  HertzdampError at the first
+        contact the library refuses (no table, a bad phase or argument)."""
+        arrays = np.broadcast_arrays(*(np.asarray(x, dtype=float) for x in
+                                       (tc, m, u, phi, 0.0 if k_phys is None else k_phys)))
+        k = np.empty(arrays[0].shape)
+        d = np.empty(arrays[0].shape)
+        kk, dd = ctypes.c_double(), ctypes.c_double()
+        for idx in np.ndindex(k.shape):
+            t, mm, uu, ph, kp = (float(a[idx]) for a in arrays)
+            st = lib.pair_kd_phase(self._buf.ctypes.data, t, mm, uu, kp, ph, ctypes.addressof(kk),
+                                   ctypes.addressof(dd))
+            if st:
+                raise HertzdampError(f"hertzdamp.Pair.kd_phase: contact {idx}: {lib.message(st)}", st,
+                                     idx if k.ndim else None)
+            k[idx], d[idx] = kk.value, dd.value
+        if k.ndim == 0:
+            return float(k), float(d)
+        return k, d
 
     def stats(self, host: Optional[str] = None) -> Dict[str, float]:
         """What the constants achieve in the host scheme `host` (default: the pair's own;

@@ -60,6 +60,8 @@ module hertzdamp_phase
     !> The largest relative error of e and of the contact time that the check of a new table
     !> accepts at the middles of its cells.
     real(wp), parameter :: check_tol = 1.0e-4_wp
+    !> The check leaves out the cell middles closer than this to a piece end (in phase).
+    real(wp), parameter :: check_band = 1.0e-6_wp
     !> Largest N of hertzdamp_phase_min_steps.
     integer, parameter :: n_search_max = 1024
 
@@ -439,7 +441,7 @@ contains
     !> The check of a built table: at the middle of every cell of a half (the cell j between
     !> t_j and t_(j+1)) but those next to the piece end whose cubic reads an extrapolated node
     !> (j <= jx + 1, jx the highest extrapolated node of the half; at least the end cell
-    !> j = 0), the collision with the interpolated constants has e and the contact time
+    !> j = 0) or that lie within check_band of it, the collision with the interpolated constants has e and the contact time
     !> within check_tol of the targets (relative); HD_PHASE_UNREACHABLE otherwise (a phase
     !> between the nodes the host cannot serve at this N, or an interpolation error beyond it).
     pure subroutine check_table(e, law, iend, host, steps, tab, jx, status)
@@ -454,6 +456,9 @@ contains
             do j = merge(jx(s) + 2, 1, jx(s) > 0), nn - 2
                 t = t_first + (real(j, wp) + 0.5_wp) / tab(9)
                 phi = node_phase(tab, s, t)
+                ! within check_band of the piece end the collision itself has an infinite
+                ! slope or a jump in the constants (doc/host-schemes.md section 6.3)
+                if (t**nint(tab(10)) / merge(tab(7), tab(8), s <= 2) < check_band) cycle
                 call phase_eval(tab, phi, a, ta)
                 call hertzdamp_host_collide(a, ta / steps, phi, law, iend, host, ee, tt, st)
                 if (st /= HD_OK) then

@@ -11,8 +11,8 @@
 !>   cfnewvalues.f writes them; no code shared with the library): e within 1e-5 (relative)
 !>   of the target and T_c within 1e-5 of N dt (issue 32 asks 1e-4 and 1e-3);
 !> - a target some phase cannot reach (or whose table fails the init's check) gives
-!>   HD_PHASE_UNREACHABLE, with hertzdamp_phase_min_steps above N (nine in ten of the grid
-!>   are served); the fewest N itself: init fails at N_min - 1;
+!>   HD_PHASE_UNREACHABLE, with hertzdamp_phase_min_steps above N (every target of the grid
+!>   is served); the fewest N itself: init fails at N_min - 1;
 !> - the mean-exact constants give a spread of e over the phase at least 100 times the
 !>   phase form's (the regression of issue 32: 5.5 % at e = 0.5, N = 10);
 !> - k and d against the closed forms with ** (k = m r^(5/2) u^(-1/2), d = alpha m r
@@ -267,10 +267,7 @@ contains
         write (*, '(a, i0, a, i0, a, es9.2, a, es9.2)') '  targets reached: ', reached, ', unreachable: ', &
             unreachable, '; largest error of a contact: e ', eall, ', T_c ', tall
         call suite%check(min_ok, 'unreachable targets: hertzdamp_phase_min_steps above N')
-        ! the init's check of the table (every cell middle within 1e-4) refuses a few targets at
-        ! N = 10 (tsuji, e = 0.1); at least 9 in 10 of the grid are served at their N
-        call suite%check(reached + unreachable == 3 * 3 * 2 * n_case .and. 10 * reached >= 9 * (3 * 3 * 2 * n_case), &
-                         'nine in ten targets of the grid reachable at their N')
+        call suite%check(reached == 3 * 3 * 2 * n_case, 'every target of the grid reachable at its N')
     end subroutine check_every_contact
 
     !> The mean-exact constants scatter e over the phase; the phase form does not.

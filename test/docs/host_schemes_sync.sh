@@ -43,5 +43,14 @@ for d in "$tmp"/doc.*; do
   k=${d##*.}
   if [ -f "$tmp/ex.$k" ]; then ok; else bad "doc/host-schemes.md marks a table $k the example does not print"; fi
 done
+# section 6.3's first table (issue 32) is what `fpm run --example phase_figures` prints
+# between its markers (the second, a search of N per case, is printed with -- min-steps and
+# not rerun here)
+"$fpm" run --example phase_figures --flag "${HERTZDAMP_RELEASE_FLAGS:-}" >"$tmp/phase" 2>/dev/null
+sed -n '/^<!-- BEGIN phase_figures 1 -->$/,/^<!-- END phase_figures 1 -->$/p' "$tmp/phase" >"$tmp/phase.ex"
+sed -n '/^<!-- BEGIN phase_figures 1 -->$/,/^<!-- END phase_figures 1 -->$/p' doc/host-schemes.md >"$tmp/phase.doc"
+if [ -s "$tmp/phase.ex" ] && cmp -s "$tmp/phase.ex" "$tmp/phase.doc"; then ok; else
+  bad "doc/host-schemes.md's phase_figures 1 table is not what the example phase_figures prints"
+fi
 echo "host_schemes_sync: $p passed, $f failed"
 [ "$f" -eq 0 ]

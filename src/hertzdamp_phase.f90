@@ -120,7 +120,8 @@ contains
     !> The per-phase constants alpha(phi) and tau(phi) = N h of one onset phase phi in (0, 1]
     !> (module note): the host's discrete collision at (alpha, h = tau/N, phi) has the
     !> restitution e and lasts N steps (its contact time, measured as hertzdamp_host_collide
-    !> does, is tau), both to 1e-13 relative (1e-10 where round-off stops the iteration).
+    !> does, is tau), both to 1e-13 relative (1e-10 where round-off stops Newton, 1e-9 where it
+    !> cannot polish the bracketing result).
     !> guess = (alpha, tau) to start from (e.g. the mean-exact constants of
     !> hertzdamp_host_solve).  Status HD_OK, HD_BAD_PHASE (phi outside (0, 1]), or
     !> HD_PHASE_UNREACHABLE (no constants found: too few steps for this phase).  The other

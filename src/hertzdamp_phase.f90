@@ -25,6 +25,9 @@
 !> powers polynomials, and alpha, tau are tabulated at equidistant t_j from t_0 = 1e-3 to 1
 !> and interpolated by the cubic through the four nearest nodes (Lagrange; hertzdamp_pair
 !> evaluates it per contact).  A whole N: two halves of 57 nodes each; otherwise four of 28.
+!> At init every cell middle (but those next to extrapolated end nodes and those within 1e-6
+!> of a piece end, where the collision itself jumps or has an infinite slope in the
+!> constants) is checked: e and the contact time within 1e-4 (check_table).
 !>
 !> Layout of the table (hertzdamp_pair_phase_size = 240 doubles): (1) the marker (set by
 !> hertzdamp_pair); (2) number of halves (0: host none, no phase dependence; 2 or 4);

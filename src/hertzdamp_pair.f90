@@ -239,7 +239,9 @@ contains
     ! ================================================================ k, d of one contact
 
     !> k and d of one contact from the constants of its pair (see the module note).
-    !> The status names the bad argument (checked in this order, the last one wins: T_c,
+    !> A host-exact pair's constants hold only for tc = N dt, with N the pair's steps and dt
+    !> the step the host integrates this contact with (a host that changes dt initialises
+    !> the pair again).  The status names the bad argument (checked in this order, the last one wins: T_c,
     !> m, u, k_phys) or HD_BAD_PAIR; on failure k = d = 0 (tstar = 0, bound_active false).
     pure elemental subroutine pair_kd_one(pair, tc, m, u, k, d, status, k_phys, bound_active, tstar)
         type(hertzdamp_pair_t), intent(in) :: pair          !! constants of the material pair

@@ -89,12 +89,16 @@ check "the legacy and C names were found" test "$(wc -w <<<"$legacy $cnames")" -
 check "no C name equals a legacy external's name" bash -c "! grep -Fxq -f <(echo '$legacy') <<<'$cnames'"
 
 # ------------------------------------------------------------ header constants = Fortran constants
-hdr=$(sed -nE 's/^#define HERTZDAMP_([A-Z_]+) +([0-9]+).*/\1=\2/p' include/hertzdamp.h | sort)
+hdr=$(sed -nE 's/^#define HERTZDAMP_([A-Z_]+) +([0-9]+).*/\1=\2/p' include/hertzdamp.h | grep -v '^PAIR_SIZE=' | sort)
 # (every code a C caller passes or gets: statuses, contact ends, laws, hosts; not the
 # Fortran-only method and integrator codes)
 fortran=$(sed -nE 's/.*integer, parameter, public :: HD_([A-Z_]+) = ([0-9]+).*/\1=\2/p' src/*.f90 |
           grep -Ev '^(METHOD|MODEL|EVENT)_' | sort -u)
 check "hertzdamp.h HERTZDAMP_* equal the library's HD_* codes (status, end, law, host)" test "$hdr" = "$fortran"
+# the pair's size: the header's HERTZDAMP_PAIR_SIZE is the module's hertzdamp_pair_size
+check "hertzdamp.h HERTZDAMP_PAIR_SIZE = hertzdamp_pair_size of the registry" test \
+  "$(sed -nE 's/^#define HERTZDAMP_PAIR_SIZE +([0-9]+).*/\1/p' include/hertzdamp.h)" = \
+  "$(sed -nE 's/.*integer, parameter, public :: hertzdamp_pair_size = ([0-9]+).*/\1/p' src/hertzdamp_registry.f90)"
 check "hertzdamp.h has the status codes" test "$(wc -l <<<"$hdr")" -ge 20
 check "hertzdamp.h: no unprefixed macro" bash -c "! grep -E '^#define ' include/hertzdamp.h | grep -Ev '^#define HERTZDAMP_'"
 check "hertzdamp.h compiles as C99 and C++ with -Wall -Werror" bash -c \

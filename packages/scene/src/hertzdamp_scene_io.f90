@@ -20,10 +20,10 @@
 !> such as /dev/zero fails after its first 1025 characters).  Nothing is printed:
 !> failures return HD_BAD_ARGUMENT and a one-line message.
 module hertzdamp_scene_io
-    use hertzdamp_kinds, only: hertzdamp_rk
-    use hertzdamp_registry, only: HD_OK, HD_BAD_ARGUMENT
-    use hertzdamp_registry, only: HD_END_OVERLAP, HD_END_FORCE
-    use hertzdamp_laws, only: hertzdamp_law_code
+    use hertzdamp, only: hertzdamp_rk
+    use hertzdamp, only: HD_OK, HD_BAD_ARGUMENT
+    use hertzdamp, only: HD_END_OVERLAP, HD_END_FORCE
+    use hertzdamp, only: hertzdamp_law_code
     use hertzdamp_text_format, only: lower
     use hertzdamp_dem, only: hertzdamp_dem_scene, hertzdamp_dem_material, hertzdamp_dem_wall, &
                              hertzdamp_dem_max_particles

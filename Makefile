@@ -179,5 +179,5 @@ LAMMPS_CORE := $(CURDIR)/build/lammps/core
 lammps: deps $(LAMMPS_CORE)/lib/libhertzdamp.so
 	@$(MAKE) --no-print-directory -C integrations/lammps HERTZDAMP_PREFIX=$(LAMMPS_CORE)
 
-$(LAMMPS_CORE)/lib/libhertzdamp.so: $(wildcard src/*.f90) include/hertzdamp.h CMakeLists.txt
+$(LAMMPS_CORE)/lib/libhertzdamp.so: $(wildcard src/*.f90 src/*.inc) include/hertzdamp.h CMakeLists.txt
 	@$(MAKE) --no-print-directory install PREFIX=$(LAMMPS_CORE) >/dev/null

@@ -32,6 +32,12 @@ if ! make --no-print-directory install PREFIX="$prefix" >"$tmp/install.log" 2>&1
   cat "$tmp/install.log"; check "make install" false; finish
 fi
 check "make install" true
+# one source of the release flags (issue 31): the installed library is compiled with the
+# flags of data/release_flags.txt, which the Makefile hands to fpm (what the benchmarks run)
+want_flags=$(make -s --no-print-directory --eval='print-flags: ; @echo $(RELEASE_FLAGS)' print-flags)
+check "CMake compiles the core with the Makefile's RELEASE_FLAGS ($want_flags)" \
+  grep -qF "Fortran_FLAGS = $want_flags -" build/cmake/CMakeFiles/hertzdamp_objects.dir/flags.make
+check "the Makefile's RELEASE_FLAGS are data/release_flags.txt's" test "$want_flags" = "$(grep -v '^#' data/release_flags.txt)"
 for f in lib/libhertzdamp.a lib/libhertzdamp.so lib/libhertzdamp.so.0 include/hertzdamp.h include/hertzdamp.fi \
          include/hertzdamp/hertzdamp.mod include/hertzdamp/hertzdamp_capi.mod lib/pkgconfig/hertzdamp.pc \
          lib/pkgconfig/hertzdamp-static.pc lib/cmake/hertzdamp/hertzdampConfig.cmake \

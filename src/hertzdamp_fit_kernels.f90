@@ -34,8 +34,8 @@ module hertzdamp_fit_kernels
                                 HD_NO_REBOUND
     use hertzdamp_constants, only: tau_c0 => hertzdamp_tau_c0_value, hertzdamp_pi, &
                                    direct_lo => hertzdamp_direct_lo, direct_hi => hertzdamp_direct_hi
-    use hertzdamp_laws, only: HD_DAMPING_LINEAR, HD_DAMPING_TSUJI, HD_DAMPING_KUWABARA_KONO, &
-                              hertzdamp_alpha_c_tsuji
+    use hertzdamp_registry, only: HD_DAMPING_LINEAR, HD_DAMPING_TSUJI, HD_DAMPING_KUWABARA_KONO
+    use hertzdamp_laws, only: hertzdamp_alpha_c_tsuji
     use hertzdamp_fit_data, only: fit_alpha_c, fit_alpha_max_force, fit_e_min_force, fit_e_min_overlap, fit_fwd_c, &
                                   fit_fwd_first, fit_fwd_np, fit_fwd_scale, fit_fwd_x0, fit_fwd_x1, fit_inv_c, &
                                   fit_inv_first, fit_inv_np, fit_inv_scale, fit_inv_x0, fit_law_e_min, fit_linv_c, &

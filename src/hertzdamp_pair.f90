@@ -44,15 +44,16 @@ module hertzdamp_pair
     use hertzdamp_registry, only: hertzdamp_pair_size, hertzdamp_pair_oblique_size, hertzdamp_pair_phase_size
     use hertzdamp_registry, only: HD_OK, HD_BAD_TIME, HD_BAD_MASS, HD_BAD_VELOCITY, HD_BAD_KPHYS, HD_OUT_OF_RANGE, &
                                 HD_BAD_PAIR, HD_BAD_ARGUMENT
-    use hertzdamp_laws, only: HD_DAMPING_LINEAR, HD_DAMPING_TSUJI, HD_DAMPING_KUWABARA_KONO, hertzdamp_law_q, &
-                              hertzdamp_max_law
+    use hertzdamp_registry, only: HD_DAMPING_LINEAR, HD_DAMPING_TSUJI, HD_DAMPING_KUWABARA_KONO, hertzdamp_law_q, &
+                                  hertzdamp_max_law
     use hertzdamp_constants, only: direct_lo => hertzdamp_direct_lo, direct_hi => hertzdamp_direct_hi
     use hertzdamp_scaling, only: hertzdamp_safe_exp, hertzdamp_log_tstar, hertzdamp_log_k, hertzdamp_scale_log_d
-    use hertzdamp_methods, only: HD_METHOD_FIT
+    use hertzdamp_registry, only: HD_METHOD_FIT
     use hertzdamp_fit, only: hertzdamp_fit_inverse, hertzdamp_fit_inverse_n, hertzdamp_fit_invert_kd_n
     use hertzdamp_inverse, only: hertzdamp_invert_alpha, hertzdamp_invert_options
-    use hertzdamp_host, only: HD_HOST_NONE, hertzdamp_host_order, hertzdamp_host_stats, hertzdamp_host_solve, &
-                              hertzdamp_max_host, hertzdamp_host_steps_min, hertzdamp_host_steps_max
+    use hertzdamp_registry, only: HD_HOST_NONE, hertzdamp_host_order, hertzdamp_max_host
+    use hertzdamp_host, only: hertzdamp_host_stats, hertzdamp_host_solve, hertzdamp_host_steps_min, &
+                              hertzdamp_host_steps_max
     implicit none
     private
 

@@ -16,7 +16,7 @@
 !>   (h'/h_N)^p with h' and h_N computed here from their definitions, and the mean e the
 !>   host achieves with it (hertzdamp_host_mean) against the target.
 program test_pair
-    use hertzdamp, only: hertzdamp_rk
+    use hertzdamp, only: hertzdamp_rk, hertzdamp_max_host
     use hertzdamp, only: HD_OK, HD_BAD_LAW, HD_BAD_END, HD_BAD_RESTITUTION, HD_BAD_TIME, HD_BAD_MASS, &
                        HD_BAD_VELOCITY, HD_BAD_KPHYS, HD_BAD_PAIR, HD_BAD_HOST, HD_BAD_STEPS, &
                        HD_HOST_UNREACHABLE, HD_BAD_ARGUMENT
@@ -522,7 +522,7 @@ contains
         call expect(0.0_wp, 1, HD_END_FORCE, HD_HOST_NONE, 0.0_wp, HD_BAD_RESTITUTION, 'e 0')
         call expect(nan, 0, HD_END_OVERLAP, HD_HOST_LAMMPS, 20.0_wp, HD_BAD_RESTITUTION, 'e NaN')
         call expect(0.5_wp, 0, HD_END_OVERLAP, -1, 20.0_wp, HD_BAD_HOST, 'host -1')
-        call expect(0.5_wp, 0, HD_END_OVERLAP, HD_HOST_LAMMPS_PHASE + 1, 20.0_wp, HD_BAD_HOST, 'host 6')
+        call expect(0.5_wp, 0, HD_END_OVERLAP, hertzdamp_max_host + 1, 20.0_wp, HD_BAD_HOST, 'host max + 1')
         call expect(0.5_wp, 0, HD_END_OVERLAP, HD_HOST_LAMMPS, 0.0_wp, HD_BAD_STEPS, 'steps 0')
         call expect(0.5_wp, 0, HD_END_OVERLAP, HD_HOST_LAMMPS, -5.0_wp, HD_BAD_STEPS, 'steps -5')
         call expect(0.5_wp, 0, HD_END_OVERLAP, HD_HOST_LAMMPS, nan, HD_BAD_STEPS, 'steps NaN')

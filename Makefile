@@ -11,8 +11,9 @@ PYTHON ?= python3
 APT_PKGS := gfortran liblapack-dev libblas-dev libgsl-dev gnuplot-nox cmake pkg-config lammps-examples liggghts-doc
 SUDO := $(shell [ "$$(id -u)" = 0 ] || echo sudo)
 
-# Optimised build of the library and the program (what users run and benchmark).
-RELEASE_FLAGS := -O3 -march=x86-64-v2 -funroll-loops -fPIC
+# Optimised build of the library and the program (what users run and benchmark): the
+# flags of data/release_flags.txt, which CMake reads too.
+RELEASE_FLAGS := $(shell grep -v '^\#' data/release_flags.txt)
 # Test build: warnings on and fatal, standard conformance, run-time checks that are
 # cheap.  -Wno-compare-reals: the exact comparisons left (x == 0 in root finders and
 # guards) are intended.  fpm hides compiler output unless a build fails, so -Werror
@@ -179,5 +180,5 @@ LAMMPS_CORE := $(CURDIR)/build/lammps/core
 lammps: deps $(LAMMPS_CORE)/lib/libhertzdamp.so
 	@$(MAKE) --no-print-directory -C integrations/lammps HERTZDAMP_PREFIX=$(LAMMPS_CORE)
 
-$(LAMMPS_CORE)/lib/libhertzdamp.so: $(wildcard src/*.f90) include/hertzdamp.h CMakeLists.txt
+$(LAMMPS_CORE)/lib/libhertzdamp.so: $(wildcard src/*.f90 src/*.inc) include/hertzdamp.h CMakeLists.txt
 	@$(MAKE) --no-print-directory install PREFIX=$(LAMMPS_CORE) >/dev/null

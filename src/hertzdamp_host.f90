@@ -41,13 +41,12 @@ module hertzdamp_host
     use hertzdamp_kinds, only: hertzdamp_rk
     use hertzdamp_registry, only: HD_OK, HD_NO_REBOUND, HD_NO_CONVERGENCE, HD_BAD_ALPHA, HD_BAD_END, HD_BAD_ARGUMENT, &
                                 HD_BAD_HOST, HD_BAD_STEPS, HD_HOST_UNREACHABLE
-    use hertzdamp_registry, only: HD_END_OVERLAP, HD_END_FORCE, HD_HOST_NONE, HD_HOST_LAMMPS, HD_HOST_MFIX_EULER, &
-                                  HD_HOST_MFIX_AB2, HD_HOST_VERLET, HD_HOST_LAMMPS_PHASE, hertzdamp_min_host, &
-                                  hertzdamp_max_host, hertzdamp_host_name, hertzdamp_host_code, hertzdamp_host_order, &
-                                  hertzdamp_host_in_engine
+    use hertzdamp_registry, only: HD_END_OVERLAP, HD_END_FORCE, HD_HOST_NONE, HD_HOST_MFIX_AB2, HD_HOST_VERLET, &
+                                  HD_HOST_LAMMPS_PHASE, hertzdamp_min_host, hertzdamp_max_host, hertzdamp_host_name, &
+                                  hertzdamp_host_order
     use hertzdamp_constants, only: hertzdamp_pi
-    use hertzdamp_laws, only: hertzdamp_law_status, hertzdamp_law_q, HD_DAMPING_LINEAR, HD_DAMPING_TSUJI, &
-                              HD_DAMPING_KUWABARA_KONO
+    use hertzdamp_registry, only: hertzdamp_law_q, HD_DAMPING_LINEAR, HD_DAMPING_TSUJI, HD_DAMPING_KUWABARA_KONO
+    use hertzdamp_laws, only: hertzdamp_law_status
     use hertzdamp_fit, only: hertzdamp_fit_inverse
     use hertzdamp_rk45, only: hertzdamp_rk45_collide, hertzdamp_collision
     implicit none
@@ -56,9 +55,8 @@ module hertzdamp_host
     integer, parameter :: wp = hertzdamp_rk
 
     ! The host codes, names and attributes (the order of their error, whether the scene
-    ! engine runs them) are rows of data/registry.toml (hertzdamp_registry).
-    public :: HD_HOST_NONE, HD_HOST_LAMMPS, HD_HOST_MFIX_EULER, HD_HOST_MFIX_AB2, HD_HOST_VERLET, HD_HOST_LAMMPS_PHASE
-    public :: hertzdamp_max_host, hertzdamp_host_name, hertzdamp_host_code, hertzdamp_host_order, hertzdamp_host_in_engine
+    ! engine runs them) are rows of data/registry.toml: hertzdamp_registry has them (and the
+    ! umbrella exports them); the schemes' steppers below are dispatched by code.
 
     !> Smallest and largest number of steps per contact of hertzdamp_host_solve.
     real(wp), parameter, public :: hertzdamp_host_steps_min = 2.0_wp, hertzdamp_host_steps_max = 1.0e5_wp

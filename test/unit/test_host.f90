@@ -63,7 +63,8 @@ contains
         end do
         call s%check(hertzdamp_host_name(HD_HOST_MFIX_AB2) == 'mfix-ab2' .and. &
                      hertzdamp_host_name(HD_HOST_LAMMPS_PHASE) == 'lammps-phase', 'host names')
-        call s%check(hertzdamp_host_code('liggghts') == -1 .and. hertzdamp_host_name(6) == 'unknown', 'unknown host')
+        call s%check(hertzdamp_host_code('liggghts') == -1 .and. hertzdamp_host_name(hertzdamp_max_host + 1) == 'unknown', &
+                     'unknown host')
         call s%check(HD_BAD_HOST == 26 .and. HD_BAD_STEPS == 27 .and. HD_HOST_UNREACHABLE == 28, 'status numbers')
         do k = 26, 28
             call s%check(len(hertzdamp_message(k)) > 30 .and. hertzdamp_message(k) /= 'unknown status code', &
@@ -655,7 +656,7 @@ contains
         integer :: st, nmin
         x = 0.0_wp
         ! collide: host, law, end, alpha, h, phi (in this order)
-        call hertzdamp_host_collide(0.3_wp, 0.1_wp, 0.5_wp, 0, 0, 6, e, tau, st)
+        call hertzdamp_host_collide(0.3_wp, 0.1_wp, 0.5_wp, 0, 0, hertzdamp_max_host + 1, e, tau, st)
         call s%check(st == HD_BAD_HOST .and. e == 0.0_wp .and. tau == 0.0_wp, 'collide: bad host')
         call hertzdamp_host_collide(0.3_wp, 0.1_wp, 0.5_wp, 3, 0, 1, e, tau, st)
         call s%check(st == HD_BAD_LAW, 'collide: bad law')

@@ -79,12 +79,11 @@ int RuleSettings::parse(LAMMPS *lmp, const char *cmd, int narg, char **arg, int 
     need(1);
     tcmode = TC_STEPS;
     const char *v = arg[iarg + 1];
-    if (!LAMMPS_NS::utils::is_integer(v)) {
-      parse_number(lmp, cmd, "steps", v);
+    // any number utils::numeric() reads (20, 1e5, 100.0) whose value is whole
+    nsteps = parse_number(lmp, cmd, "steps", v);
+    if (std::floor(nsteps) != nsteps)
       fail_all(lmp, __FILE__, __LINE__,
                std::string(cmd) + ": steps N must be a whole number of time steps, not " + v);
-    }
-    nsteps = parse_number(lmp, cmd, "steps", v);
     // the fewest N that reach e depend on e (pair_coeff) and the scheme: checked at the
     // run's start (pair_constants)
     if (!(nsteps >= 1.0)) fail_all(lmp, __FILE__, __LINE__, std::string(cmd) + ": steps must be >= 1, not " + v);

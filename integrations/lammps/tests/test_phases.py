@@ -121,8 +121,8 @@ def run(c):
     c.check("C host_min_steps: host none needs 2", api.min_steps(0.1, "overlap", "none") == 2)
     for e, scheme in ((0.1, "lammps"), (0.2, "lammps-phase")):
         nmin = api.min_steps(e, "overlap", scheme)
-        st_lo = api._pinit(e, 0, 0, api.HOSTS[scheme], nmin - 1, ctypes.byref((ctypes.c_double * 8)()))
-        st_hi = api._pinit(e, 0, 0, api.HOSTS[scheme], nmin, ctypes.byref((ctypes.c_double * 8)()))
+        st_lo = api._pinit(e, 0, 0, api.HOSTS[scheme], nmin - 1, ctypes.byref(api.PAIR()))
+        st_hi = api._pinit(e, 0, 0, api.HOSTS[scheme], nmin, ctypes.byref(api.PAIR()))
         c.check("C host_min_steps e=%g %s = %d: pair_init fails at N - 1 (28), succeeds at N" % (e, scheme, nmin),
                 st_lo == 28 and st_hi == 0, repr((st_lo, st_hi)))
 

@@ -162,14 +162,27 @@ void FixHertzdampWall::contact(int i, int side, double ov, int setup)
   double *p = s + 1;
   if (ov <= 0.0) {
     if (s[0] == 0.0) return;
+    if (s[0] == ENDED) {
+      // ended at step P_TPREV with the closing correction P_FN: the set-up of a run
+      // recomputing that step (after read_restart, run N pre no) applies it again
+      if (setup && p[P_TPREV] == step)
+        f[i][axis] += sgn * p[P_FN];
+      else
+        s[0] = 0.0;
+      return;
+    }
     const ContactEnd ce = payload_end(p, ov, -approach, step, force_end, rule.phase);
     const double fc = ce.f_end;
     book.finish(p, static_cast<double>(atom->tag[i]), side == 0 ? -1.0 : -2.0, ce.tend,
                 -approach + fc * dt / p[P_M], dt);
     f[i][axis] += sgn * fc;
-    s[0] = 0.0;
+    // kept until the next step with the correction it applied (restart files)
+    s[0] = fc != 0.0 ? static_cast<double>(ENDED) : 0.0;
+    p[P_FN] = fc;
+    p[P_TPREV] = step;
     return;
   }
+  if (s[0] == ENDED) s[0] = 0.0;    // touching again after a contact ended: a new contact
   double f_phase = 0.0;
   bool replay = false;
   if (s[0] == 0.0) {
@@ -177,7 +190,7 @@ void FixHertzdampWall::contact(int i, int side, double ov, int setup)
     const double m = rmass[i];
     const double kphys = estar > 0.0 ? 4.0 / 3.0 * estar * sqrt(radius[i]) : 0.0;
     const Onset o = contact_rule(lmp, rule, pc, kphys, m, approach, dt);
-    s[0] = 1.0;
+    s[0] = static_cast<double>(ACTIVE);
     f_phase = payload_onset(p, o, approach, m, ov, step, dt, rule.phase);
     book.onset(o, approach);
   } else {
@@ -185,7 +198,7 @@ void FixHertzdampWall::contact(int i, int side, double ov, int setup)
   }
   // not isolated: the other side of the wall, or pair contacts in this step
   const auto *pair = dynamic_cast<PairGranularHertzdamp *>(force->pair);
-  if (wst[i][(1 - side) * SLOT] != 0.0 || (pair && pair->contacts_of(i) > 0.0))
+  if (wst[i][(1 - side) * SLOT] == ACTIVE || (pair && pair->contacts_of(i) > 0.0))
     p[P_FLAGS] = static_cast<double>(static_cast<int>(p[P_FLAGS]) | FLAG_NOT_ISOLATED);
   const double fn = replay ? p[P_FN] : payload_force(p, ov, approach, step, force_end, f_phase);
   p[P_FN] = fn;

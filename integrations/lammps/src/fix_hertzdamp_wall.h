@@ -30,7 +30,9 @@ class FixHertzdampWall : public LAMMPS_NS::Fix {
   void post_run() override;
   double compute_vector(int n) override;
   // wall contacts of local atom i at the end of the last step (they move with the atom)
-  double active_contacts(int i) const { return wst[i][0] + wst[i][SLOT]; }
+  double active_contacts(int i) const { return (wst[i][0] == ACTIVE ? 1.0 : 0.0) + (wst[i][SLOT] == ACTIVE ? 1.0 : 0.0); }
+  // per side: 0 no contact, ACTIVE, ENDED (at the last step, its closing correction kept)
+  enum { ACTIVE = 1, ENDED = 2 };
 
   void grow_arrays(int nmax) override;
   void copy_arrays(int i, int j, int delflag) override;

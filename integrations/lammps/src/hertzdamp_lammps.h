@@ -153,7 +153,8 @@ enum Payload {
   P_PREV_F,     // unclipped total normal force at the last step computed
   P_TPREV,      // that step
   P_TEND,       // force end: time in steps when the total force reached 0 (-1: not yet)
-  P_FLAGS,      // bit 0: k_phys bound active; bit 1: not an isolated binary collision
+  P_FLAGS,      // bit 0: k_phys bound active; bit 1: not an isolated binary collision;
+                // bit 2: ended at step P_TPREV, P_FN = the closing correction applied then
   P_HIST,       // friction history: 3 tangential, 3 rolling, 1 twisting (contact_models.h)
   P_FN = P_HIST + 7,    // forces of the step P_TPREV, replayed when a run's set-up
   P_FS,                 // recomputes that step (after read_restart, or run N; run M):
@@ -161,7 +162,7 @@ enum Payload {
   P_MT = P_FR + 3,
   NPAYLOAD
 };
-enum { FLAG_BOUNDED = 1, FLAG_NOT_ISOLATED = 2 };
+enum { FLAG_BOUNDED = 1, FLAG_NOT_ISOLATED = 2, FLAG_ENDED = 4 };
 
 // Time in steps at which a quantity that was prev > 0 at step tprev and is now <= 0
 // at step `step` crossed zero (linear interpolation; `step` when there is nothing to

@@ -342,9 +342,20 @@ void PairGranularHertzdamp::compute(int eflag, int vflag)
 
       if (rsq >= radsum * radsum) {
         if (c < 0) continue;
-        // contact over: the overlap has returned to zero
         double *p = &pool[static_cast<size_t>(c) * NPAYLOAD];
         const double r = sqrt(rsq), rinv = 1.0 / r, ov = radsum - r;
+        if (static_cast<int>(p[P_FLAGS]) & FLAG_ENDED) {
+          // a contact that ended at step P_TPREV with a closing correction: the set-up of
+          // a run recomputing that step (after read_restart, run N pre no) applies it again
+          if (setup && p[P_TPREV] == step) {
+            add_central(i, j, p[P_FN] * rinv, delx, dely, delz);
+          } else {
+            free_contact(c);
+            ci[jj] = -1;
+          }
+          continue;
+        }
+        // contact over: the overlap has returned to zero
         const double u_out = ((v[i][0] - v[j][0]) * delx + (v[i][1] - v[j][1]) * dely +
                               (v[i][2] - v[j][2]) * delz) * rinv;
         const ContactEnd ce = payload_end(p, ov, u_out, step, force_end, rule.phase);
@@ -354,9 +365,16 @@ void PairGranularHertzdamp::compute(int eflag, int vflag)
           // separation speed once the kick f_end (applied now) is complete
           book.finish(p, ta, tb, ce.tend, u_out + f_end * dt / p[P_M], dt);
         }
-        if (f_end != 0.0) add_central(i, j, f_end * rinv, delx, dely, delz);
-        free_contact(c);
-        ci[jj] = -1;
+        if (f_end != 0.0) {
+          add_central(i, j, f_end * rinv, delx, dely, delz);
+          // kept until the next step with the correction it applied (restart files)
+          p[P_FLAGS] = static_cast<double>(static_cast<int>(p[P_FLAGS]) | FLAG_ENDED);
+          p[P_FN] = f_end;
+          p[P_TPREV] = step;
+        } else {
+          free_contact(c);
+          ci[jj] = -1;
+        }
         continue;
       }
 
@@ -368,6 +386,11 @@ void PairGranularHertzdamp::compute(int eflag, int vflag)
       double *p;
       double f_phase = 0.0;
       bool replay = false;
+      if (c >= 0 && (static_cast<int>(pool[static_cast<size_t>(c) * NPAYLOAD + P_FLAGS]) & FLAG_ENDED)) {
+        // the pair overlaps again after its contact ended: a new contact
+        free_contact(c);
+        ci[jj] = c = -1;
+      }
       if (c < 0) {
         // contact onset: first step with overlap > 0 for a pair without history
         const double mi = rmass[i], mj = rmass[j];
@@ -748,7 +771,7 @@ void PairGranularHertzdamp::history_from_atoms(FixHertzdampHistory *fix)
         std::memcpy(&pool[static_cast<size_t>(c) * NPAYLOAD], r, sizeof(double) * NPAYLOAD);
         cidx[offset[ii] + jj] = c;
         fix->transferred++;
-        book.carried += 1;
+        if (!(static_cast<int>(r[P_FLAGS]) & FLAG_ENDED)) book.carried += 1;
       }
     }
   }

@@ -43,8 +43,8 @@ CASES = [
     ("pair_style granular/hertzdamp steps 1.05e1\n", P + ": steps N must be a whole number of time steps, not 1.05e1"),
     ("pair_style granular/hertzdamp steps 0.5\n", P + ": steps N must be a whole number of time steps, not 0.5"),
     ("pair_style granular/hertzdamp steps 0\n", P + ": steps must be >= 1, not 0"),
-    ("pair_style granular/hertzdamp steps 3\npair_coeff * * e 0.2\nrun 0\n",
-     P + " (types 1 1): steps 3: N = 3 steps cannot reach e = 0.2 with lammps-phase; N >= 4 can"),
+    ("pair_style granular/hertzdamp steps 3\npair_coeff * * e 0.1\nrun 0\n",
+     P + " (types 1 1): steps 3: N = 3 steps cannot reach e = 0.1 with lammps-phase; N >= 4 can"),
     ("pair_style granular/hertzdamp steps 20 host exact\n", P + ": host must be lammps or none, not 'exact'"),
     ("pair_style granular/hertzdamp steps 200000\npair_coeff * * e 0.5\nrun 0\n",
      P + " (types 1 1): e 0.5, steps 200000, host lammps-phase: invalid steps per contact: must be finite with "
@@ -53,9 +53,9 @@ CASES = [
     ("pair_style granular/hertzdamp steps 0x10\n", P + ": steps needs a number, not '0x10'"),
     ("pair_style granular/hertzdamp tc 1e-6x\n", P + ": tc needs a number, not '1e-6x'"),
     ("pair_style granular/hertzdamp tc nan\n", P + ": tc needs a number, not 'nan'"),
-    ("pair_style granular/hertzdamp tc 3e-7\npair_coeff * * e 0.2\nrun 1\n",
+    ("pair_style granular/hertzdamp tc 3e-7\npair_coeff * * e 0.1\nrun 1\n",
      P + " (types 1 1): tc 2.9999999999999999e-07 (3 time steps of 9.9999999999999995e-08): N = 3 steps cannot "
-     "reach e = 0.2 with lammps-phase; N >= 4 can"),
+     "reach e = 0.1 with lammps-phase; N >= 4 can"),
     ("pair_style granular/hertzdamp steps 20 vmin -1\n", P + ": vmin must be >= 0"),
     ("pair_style granular/hertzdamp steps 20 log /dev/full\n", "hertzdamp: log /dev/full: cannot write"),
     ("pair_style granular/hertzdamp steps 20\npair_coeff * * e 1.5\n", C + ": e must be in (0, 1]"),

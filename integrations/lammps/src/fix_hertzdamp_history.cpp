@@ -71,6 +71,8 @@ void FixHertzdampHistory::end_of_step()
 {
   if (pair && output->restart_flag && output->next_restart == update->ntimestep)
     pair->history_to_atoms(this, true);
+  // the per-contact log, streamed: the rows of all ranks written every LOG_FLUSH_EVERY steps
+  if (pair) pair->book.flush_log_every(lmp, update->ntimestep);
 }
 
 /* restart files: each atom's records (count, then partner ID + payload per contact) */

@@ -112,7 +112,13 @@ FixHertzdampWall::~FixHertzdampWall()
 
 int FixHertzdampWall::setmask()
 {
-  return POST_FORCE | POST_RUN;
+  return POST_FORCE | POST_RUN | (rule.logfile.empty() ? 0 : END_OF_STEP);
+}
+
+// the per-contact log, streamed: the rows of all ranks written every LOG_FLUSH_EVERY steps
+void FixHertzdampWall::end_of_step()
+{
+  book.flush_log_every(lmp, update->ntimestep);
 }
 
 void FixHertzdampWall::init()

@@ -28,6 +28,7 @@ class FixHertzdampWall : public LAMMPS_NS::Fix {
   void setup(int vflag) override;
   void post_force(int vflag) override;
   void post_run() override;
+  void end_of_step() override;
   double compute_vector(int n) override;
   // wall contacts of local atom i at the end of the last step (they move with the atom)
   double active_contacts(int i) const { return (wst[i][0] == ACTIVE ? 1.0 : 0.0) + (wst[i][SLOT] == ACTIVE ? 1.0 : 0.0); }

@@ -147,6 +147,7 @@ int RuleSettings::parse(LAMMPS *lmp, const char *cmd, int narg, char **arg, int 
   if (key == "log") {
     need(1);
     logfile = arg[iarg + 1];
+    if (logfile == "none") logfile.clear();    // log none: no per-contact log (the default)
     return 2;
   }
   return 0;
@@ -316,6 +317,16 @@ void ContactBook::reset()
   logbuf.clear();
 }
 
+namespace {
+// one row of the per-contact log
+void write_row(FILE *fp, const double *row)
+{
+  fprintf(fp, "%.17g %.0f %.0f", row[0], row[1], row[2]);
+  for (int c = 3; c < LOG_NCOL - 1; c++) fprintf(fp, " %.17g", row[c]);
+  fprintf(fp, " %.0f\n", row[LOG_NCOL - 1]);
+}
+}    // namespace
+
 void ContactBook::finish(const double *p, double tag_a, double tag_b, double tend_steps,
                          double u_out, double dt)
 {
@@ -337,13 +348,18 @@ void ContactBook::finish(const double *p, double tag_a, double tag_b, double ten
                                 p[P_D],   static_cast<double>(flags & FLAG_BOUNDED),
                                 (tend_steps - p[P_TON]) * dt, u_out, e, tend_steps,
                                 isolated ? 1.0 : 0.0};
-  logbuf.insert(logbuf.end(), row, row + LOG_NCOL);
+  if (rank0 && logfp) {
+    write_row(logfp, row);    // streamed: errors are seen at the next flush
+    rows_written += 1;
+  } else {
+    logbuf.insert(logbuf.end(), row, row + LOG_NCOL);
+  }
 }
 
 void ContactBook::vector(LAMMPS *lmp, double *out) const
 {
   enum { NSUM = 8, NEXT = 4 };
-  double sums[NSUM] = {n_onset, n_bounded, n_end, static_cast<double>(logbuf.size() / LOG_NCOL),
+  double sums[NSUM] = {n_onset, n_bounded, n_end, static_cast<double>(logbuf.size() / LOG_NCOL) + rows_written,
                        carried, n_iso,     e_sum, e_sumsq};
   double mins[NEXT] = {umin, kmin, dmin, emin};
   double maxs[NEXT] = {umax, kmax, dmax, emax};
@@ -386,22 +402,30 @@ void log_io_status(LAMMPS *lmp, int ok, const std::string &what, const std::stri
 }
 }    // namespace
 
+void ContactBook::close_log()
+{
+  if (logfp) fclose(logfp);
+  logfp = nullptr;
+}
+
 void ContactBook::open_log(LAMMPS *lmp, const std::string &file, const std::string &header, bool append)
 {
+  close_log();
   logfile = file;
   logbuf.clear();
+  rows_written = 0;
+  rank0 = lmp->comm->me == 0;
   if (file.empty()) return;
   int ok = 1;
-  if (lmp->comm->me == 0) {
+  if (rank0) {
     errno = 0;
-    FILE *fp = fopen(file.c_str(), append ? "a" : "w");
-    if (!fp) {
+    logfp = fopen(file.c_str(), append ? "a" : "w");
+    if (!logfp) {
       ok = 0;
     } else {
-      fprintf(fp, "%s\n", header.c_str());
-      fprintf(fp, "# t_on_step tag_i tag_j m u_in u_used k d bounded tc u_out e t_end_step isolated\n");
-      if (ferror(fp)) ok = 0;
-      if (fclose(fp) != 0) ok = 0;
+      fprintf(logfp, "%s\n", header.c_str());
+      fprintf(logfp, "# t_on_step tag_i tag_j m u_in u_used k d bounded tc u_out e t_end_step isolated\n");
+      if (fflush(logfp) != 0 || ferror(logfp)) ok = 0;
     }
   }
   log_io_status(lmp, ok, "write", file);
@@ -411,37 +435,35 @@ void ContactBook::flush_log(LAMMPS *lmp)
 {
   if (logfile.empty()) return;
   const int me = lmp->comm->me, nprocs = lmp->comm->nprocs;
-  int n = static_cast<int>(logbuf.size());
-  std::vector<int> counts(nprocs), displs(nprocs);
-  MPI_Gather(&n, 1, MPI_INT, counts.data(), 1, MPI_INT, 0, lmp->world);
   std::vector<double> all;
   int total = 0;
-  if (me == 0) {
-    for (int p = 0; p < nprocs; p++) {
-      displs[p] = total;
-      total += counts[p];
+  if (nprocs > 1) {
+    // the rows of the other ranks (rank 0 wrote its own as they came)
+    int n = static_cast<int>(logbuf.size());
+    std::vector<int> counts(nprocs), displs(nprocs);
+    MPI_Gather(&n, 1, MPI_INT, counts.data(), 1, MPI_INT, 0, lmp->world);
+    if (me == 0) {
+      for (int p = 0; p < nprocs; p++) {
+        displs[p] = total;
+        total += counts[p];
+      }
+      all.resize(total > 0 ? total : 1);
     }
-    all.resize(total > 0 ? total : 1);
+    MPI_Gatherv(logbuf.data(), n, MPI_DOUBLE, all.data(), counts.data(), displs.data(), MPI_DOUBLE,
+                0, lmp->world);
+    logbuf.clear();
+    logbuf.shrink_to_fit();
   }
-  MPI_Gatherv(logbuf.data(), n, MPI_DOUBLE, all.data(), counts.data(), displs.data(), MPI_DOUBLE,
-              0, lmp->world);
-  logbuf.clear();
   int ok = 1;
-  if (me == 0 && total > 0) {
+  if (me == 0) {
     errno = 0;
-    FILE *fp = fopen(logfile.c_str(), "a");
-    if (!fp) {
+    if (!logfp) {
       ok = 0;
     } else {
-      for (int r = 0; r < total; r += LOG_NCOL) {
-        const double *row = &all[r];
-        fprintf(fp, "%.17g %.0f %.0f", row[0], row[1], row[2]);
-        for (int c = 3; c < LOG_NCOL - 1; c++) fprintf(fp, " %.17g", row[c]);
-        fprintf(fp, " %.0f\n", row[LOG_NCOL - 1]);
-      }
-      if (ferror(fp)) ok = 0;
-      if (fclose(fp) != 0) ok = 0;
+      for (int r = 0; r < total; r += LOG_NCOL) write_row(logfp, &all[r]);
+      if (fflush(logfp) != 0 || ferror(logfp)) ok = 0;
     }
+    rows_written = 0;
   }
   log_io_status(lmp, ok, "append to", logfile);
 }

@@ -21,6 +21,7 @@
 #include <hertzdamp.h>
 
 #include <cmath>
+#include <cstdio>
 #include <string>
 #include <vector>
 
@@ -245,7 +246,15 @@ inline double payload_force(double *p, double ov, double u, double step, bool fo
 class ContactBook {
  public:
   enum { NSTATS = 17 };
+  // the log is streamed: rank 0 writes its rows as its contacts end, the other ranks'
+  // rows are gathered every LOG_FLUSH_EVERY steps (flush_log, collective) and at the end
+  // of each run, so the rows in memory are at most those of LOG_FLUSH_EVERY steps
+  enum { LOG_FLUSH_EVERY = 1000 };
   static const char *stat_name(int i);
+  ContactBook() = default;
+  ContactBook(const ContactBook &) = delete;
+  ContactBook &operator=(const ContactBook &) = delete;
+  ~ContactBook() { close_log(); }
 
   void reset();
   void onset(const Onset &o, double u_raw)
@@ -262,7 +271,13 @@ class ContactBook {
   void vector(LAMMPS *lmp, double *out) const;    // reduced over all processors
   // append: go on in an existing log (after read_restart)
   void open_log(LAMMPS *lmp, const std::string &file, const std::string &header, bool append = false);
-  void flush_log(LAMMPS *lmp);                     // gather to rank 0 and append
+  void flush_log(LAMMPS *lmp);                     // gather to rank 0, write, flush (collective)
+  // the periodic flush, at the end of a step (collective: every rank calls it)
+  void flush_log_every(LAMMPS *lmp, LAMMPS_NS::bigint step)
+  {
+    if (!logfile.empty() && step % LOG_FLUSH_EVERY == 0) flush_log(lmp);
+  }
+  bool logging() const { return !logfile.empty(); }
   void summary(LAMMPS *lmp, const char *who);      // one line to screen and log
 
  private:
@@ -279,8 +294,12 @@ class ContactBook {
  private:
   double umin = 1e300, umax = -1e300, kmin = 1e300, kmax = -1e300, dmin = 1e300, dmax = -1e300;
   double emin = 1e300, emax = -1e300;
+  void close_log();
   std::string logfile;
-  std::vector<double> logbuf;
+  FILE *logfp = nullptr;         // rank 0: the open log
+  bool rank0 = true;
+  double rows_written = 0;       // by rank 0 since the last flush (not yet flushed)
+  std::vector<double> logbuf;    // rows of ranks > 0 not yet gathered
 };
 
 enum { LOG_NCOL = 14 };

@@ -56,7 +56,8 @@ def run(c):
     for np in (1, 2):
         # flatwall: 2 x 300 beads, 4000 steps
         tag = "flatwall np %d" % np
-        hdlmp.lmp(os.path.join(hdlmp.EXAMPLES, "in.pour"), {"npour": 300, "steps": 4000}, tmp, np=np)
+        hdlmp.lmp(os.path.join(hdlmp.EXAMPLES, "in.pour"), {"npour": 300, "steps": 4000, "log": "pour_contacts.txt"},
+                  tmp, np=np)
         rows = read_final(os.path.join(tmp, "pour.dump"))
         ov = worst_overlap(rows, 20.0)
         below = max((r[2] - r[5]) / r[2] for r in rows)
@@ -85,6 +86,9 @@ def run(c):
                            stdout=subprocess.PIPE, stderr=subprocess.STDOUT, universal_newlines=True)
         c.check(tag + ": analyse_contacts.py reads the log", r.returncode == 0 and "contacts" in r.stdout,
                 r.stdout[-500:])
+        nlog = len(hdlmp.read_log(os.path.join(tmp, "pour_contacts.txt")))
+        c.check(tag + ": the streamed log has a row per ended contact, none left unwritten",
+                nlog == pair[8] and pair[11] == 0, "%d rows, %r ended, %r unwritten" % (nlog, pair[8], pair[11]))
 
         # drum: 2 x 200 beads, 2000 steps pouring, 1500 steps turning
         tag = "drum np %d" % np

@@ -42,7 +42,8 @@ def run(c):
     obl = os.path.join(hdlmp.EXAMPLES, "in.oblique")
     # the beads touch 0.3 of a step after step 100 (not on a step: the detection step is then
     # the first after the onset time the log gives)
-    common = {"nrun": NRUN, "s0": S0, "s1": S1, "file": "scan.restart", "touch": 100.3}
+    common = {"nrun": NRUN, "s0": S0, "s1": S1, "file": "scan.restart", "touch": 100.3,
+              "log": "oblique_contacts.txt"}
     hdlmp.lmp(obl, dict(common, final="ref.dump"), tmp)
     rows = hdlmp.read_log(os.path.join(tmp, "oblique_contacts.txt"))
     c.check("reference: one contact, ended", len(rows) == 1, repr(len(rows)))

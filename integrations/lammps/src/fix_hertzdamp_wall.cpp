@@ -87,7 +87,7 @@ FixHertzdampWall::FixHertzdampWall(LAMMPS *lmp, int narg, char **arg) : Fix(lmp,
   }
 
   vector_flag = 1;
-  size_vector = ContactBook::NSTATS + NHOSTSTATS;
+  size_vector = ContactBook::NSTATS + NHOSTSTATS + ContactBook::NEXTRA;
   global_freq = 1;
   extvector = 0;
   maxexchange = NCOL;
@@ -198,6 +198,8 @@ void FixHertzdampWall::contact(int i, int side, double ov, int setup)
     const Onset o = contact_rule(lmp, rule, pc, kphys, m, approach, dt);
     s[0] = static_cast<double>(ACTIVE);
     f_phase = payload_onset(p, o, approach, m, ov, step, dt, rule.phase);
+    // the wall's normal is the same at the touch point: the impact angle from |v|
+    p[P_VTOUCH] = std::sqrt(v[i][0] * v[i][0] + v[i][1] * v[i][1] + v[i][2] * v[i][2]);
     book.onset(o, approach);
   } else {
     replay = setup && p[P_TPREV] == step;    // set-up of a run recomputing a stored step
@@ -206,6 +208,8 @@ void FixHertzdampWall::contact(int i, int side, double ov, int setup)
   const auto *pair = dynamic_cast<PairGranularHertzdamp *>(force->pair);
   if (wst[i][(1 - side) * SLOT] == ACTIVE || (pair && pair->contacts_of(i) > 0.0))
     p[P_FLAGS] = static_cast<double>(static_cast<int>(p[P_FLAGS]) | FLAG_NOT_ISOLATED);
+  if (pair && pair->stock_wall_contacts_of(i) > 0.0)
+    p[P_FLAGS] = static_cast<double>(static_cast<int>(p[P_FLAGS]) | FLAG_NOT_ISOLATED | FLAG_STOCK_WALL);
   const double fn = replay ? p[P_FN] : payload_force(p, ov, approach, step, force_end, f_phase);
   p[P_FN] = fn;
   if (!fm.any()) {
@@ -252,8 +256,12 @@ void FixHertzdampWall::post_run()
 double FixHertzdampWall::compute_vector(int n)
 {
   if (cache_step != update->ntimestep) {
-    book.vector(lmp, cache);
+    // 1-17 the book's, 18-21 the constants', 22-25 the book's extras
+    double v[ContactBook::NSTATS + ContactBook::NEXTRA];
+    book.vector(lmp, v);
+    for (int k = 0; k < ContactBook::NSTATS; k++) cache[k] = v[k];
     constants_stats(pc, cache + ContactBook::NSTATS);
+    for (int k = 0; k < ContactBook::NEXTRA; k++) cache[ContactBook::NSTATS + NHOSTSTATS + k] = v[ContactBook::NSTATS + k];
     cache_step = update->ntimestep;
   }
   return cache[n];

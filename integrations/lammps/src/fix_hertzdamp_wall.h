@@ -59,7 +59,7 @@ class FixHertzdampWall : public LAMMPS_NS::Fix {
   int has_lo = 0, has_hi = 0;
   double lo = 0.0, hi = 0.0;
   double **wst = nullptr;
-  double cache[ContactBook::NSTATS + NHOSTSTATS];
+  double cache[ContactBook::NSTATS + NHOSTSTATS + ContactBook::NEXTRA];
   LAMMPS_NS::bigint cache_step = -1;
 };
 

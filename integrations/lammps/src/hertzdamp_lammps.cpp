@@ -302,16 +302,19 @@ Onset contact_rule(LAMMPS *lmp, const RuleSettings &rs, const PairConstants &pc,
 
 const char *ContactBook::stat_name(int i)
 {
-  static const char *names[NSTATS] = {"contacts", "u_min",   "u_max",   "k_min",    "k_max",
+  static const char *names[NSTATS + NEXTRA] = {"contacts", "u_min",   "u_max",   "k_min",    "k_max",
                                       "d_min",    "d_max",   "bounded", "ended",    "e_min",
                                       "e_max",    "log_rows", "carried", "isolated", "e_mean",
-                                      "e_spread", "not_isolated"};
-  return (i >= 0 && i < NSTATS) ? names[i] : "?";
+                                      "e_spread", "not_isolated", "e_median", "headon",
+                                      "e_headon", "stock_wall"};
+  return (i >= 0 && i < NSTATS + NEXTRA) ? names[i] : "?";
 }
 
 void ContactBook::reset()
 {
   n_onset = n_bounded = n_end = n_iso = e_sum = e_sumsq = carried = 0;
+  n_headon = e_headon = n_stockwall = 0;
+  ehist.assign(ENBIN, 0.0);
   umin = kmin = dmin = emin = 1e300;
   umax = kmax = dmax = emax = -1e300;
   logbuf.clear();
@@ -331,8 +334,10 @@ void ContactBook::finish(const double *p, double tag_a, double tag_b, double ten
                          double u_out, double dt)
 {
   n_end += 1;
-  const double e = p[P_UIN] > 0.0 ? u_out / p[P_UIN] : 0.0;
+  // e from the normal speeds at the touch and release points
+  const double e = p[P_UTOUCH] > 0.0 ? u_out / p[P_UTOUCH] : 0.0;
   const int flags = static_cast<int>(p[P_FLAGS]);
+  if (flags & FLAG_STOCK_WALL) n_stockwall += 1;
   // a collision of its own: no other contact meanwhile, and an impact speed the rule saw
   // (not raised to vmin: a resting or grazing contact has no restitution coefficient)
   const bool isolated = !(flags & FLAG_NOT_ISOLATED) && std::isfinite(e) && p[P_UIN] > 0.0 &&
@@ -342,9 +347,16 @@ void ContactBook::finish(const double *p, double tag_a, double tag_b, double ten
     e_sum += e;
     e_sumsq += e * e;
     lo_hi(emin, emax, e);
+    if (ehist.size() != ENBIN) ehist.assign(ENBIN, 0.0);
+    const double b = e / EBIN;
+    ehist[b <= 0.0 ? 0 : b >= ENBIN - 1 ? ENBIN - 1 : static_cast<int>(b)] += 1.0;
+    if (p[P_UTOUCH] >= COS_HEADON * p[P_VTOUCH]) {
+      n_headon += 1;
+      e_headon += e;
+    }
   }
   if (logfile.empty()) return;
-  const double row[LOG_NCOL] = {p[P_TON], tag_a,  tag_b,  p[P_M], p[P_UIN], p[P_UUSED], p[P_K],
+  const double row[LOG_NCOL] = {p[P_TON], tag_a,  tag_b,  p[P_M], p[P_UTOUCH], p[P_UUSED], p[P_K],
                                 p[P_D],   static_cast<double>(flags & FLAG_BOUNDED),
                                 (tend_steps - p[P_TON]) * dt, u_out, e, tend_steps,
                                 isolated ? 1.0 : 0.0};
@@ -388,6 +400,29 @@ void ContactBook::vector(LAMMPS *lmp, double *out) const
   out[14] = mean;
   out[15] = var > 0.0 ? std::sqrt(var) : 0.0;
   out[16] = gs[2] - niso;
+  // median e (from the histogram, to EBIN), near-head-on collisions and their mean e,
+  // contacts left out because a bead touched a stock wall
+  double ex[3] = {n_headon, e_headon, n_stockwall}, gx[3];
+  MPI_Allreduce(ex, gx, 3, MPI_DOUBLE, MPI_SUM, lmp->world);
+  std::vector<double> h(ENBIN, 0.0);
+  if (ehist.size() == ENBIN) h = ehist;
+  std::vector<double> gh(ENBIN, 0.0);
+  MPI_Allreduce(h.data(), gh.data(), ENBIN, MPI_DOUBLE, MPI_SUM, lmp->world);
+  double median = 0.0;
+  if (niso > 0) {
+    double below = 0.0;
+    for (int b = 0; b < ENBIN; b++) {
+      if (below + gh[b] >= 0.5 * niso) {
+        median = (b + (0.5 * niso - below) / gh[b]) * EBIN;
+        break;
+      }
+      below += gh[b];
+    }
+  }
+  out[17] = median;
+  out[18] = gx[0];
+  out[19] = gx[0] > 0 ? gx[1] / gx[0] : 0.0;
+  out[20] = gx[2];
 }
 
 namespace {
@@ -470,7 +505,7 @@ void ContactBook::flush_log(LAMMPS *lmp)
 
 void ContactBook::summary(LAMMPS *lmp, const char *who)
 {
-  double v[NSTATS];
+  double v[NSTATS + NEXTRA];
   vector(lmp, v);
   std::string s = std::string(who) + ": " + fmt_g(v[0]) + " contacts (" + fmt_g(v[8]) +
                   " ended, " + fmt_g(v[7]) + " with k = k_phys)";
@@ -482,7 +517,11 @@ void ContactBook::summary(LAMMPS *lmp, const char *who)
     if (v[13] > 0)
       s += ": mean " + fmt_g(v[14]) + ", spread " + fmt_g(v[15]) + ", " + fmt_g(v[9]) + " .. " +
            fmt_g(v[10]);
-    s += " (" + fmt_g(v[16]) + " contacts left out: other contacts at the same time, or impact speed below vmin)";
+    if (v[13] > 0)
+      s += ", median " + fmt_g(v[17]) + ", near head-on (< 15 degrees) " + fmt_g(v[18]) + " with mean " +
+           fmt_g(v[19]);
+    s += " (" + fmt_g(v[16]) + " contacts left out: other contacts at the same time (" + fmt_g(v[20]) +
+         " of them with a stock wall), or impact speed below vmin)";
   }
   logmesg(lmp, s + "\n");
 }

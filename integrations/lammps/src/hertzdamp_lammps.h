@@ -161,9 +161,31 @@ enum Payload {
   P_FS,                 // recomputes that step (after read_restart, or run N; run M):
   P_FR = P_FS + 3,      // normal, tangential (3), rolling (3), twisting torque
   P_MT = P_FR + 3,
+  P_UTOUCH,     // normal approach speed at the touch point (free-flight path of the last step)
+  P_VTOUCH,     // relative speed there (|v_i - v_j|; wall: |v_i|): the impact angle
   NPAYLOAD
 };
-enum { FLAG_BOUNDED = 1, FLAG_NOT_ISOLATED = 2, FLAG_ENDED = 4 };
+// bit 3: a bead of the contact touched a stock wall (fix wall/gran, wall/gran/region)
+enum { FLAG_BOUNDED = 1, FLAG_NOT_ISOLATED = 2, FLAG_ENDED = 4, FLAG_STOCK_WALL = 8 };
+
+// The touch (release) point of a pair contact detected (ended) at this step: the beads
+// moved over the last step on the straight path x - tau w, w = v_i - v_j (the half-step
+// velocity that moved them), and the touch (release) is where |r - tau w| = R_i + R_j
+// for the largest (smallest) tau in [0, dt].  Returns false when the path does not reach
+// it within the step (then the detection step's normal stays); n = the unit normal there.
+inline bool contact_point_normal(const double *r, const double *w, double radsum, double dt, bool touch,
+                                 double *n)
+{
+  const double ww = w[0] * w[0] + w[1] * w[1] + w[2] * w[2];
+  const double rw = r[0] * w[0] + r[1] * w[1] + r[2] * w[2];
+  const double rr = r[0] * r[0] + r[1] * r[1] + r[2] * r[2];
+  const double disc = rw * rw - ww * (rr - radsum * radsum);
+  if (!(ww > 0.0) || !(disc >= 0.0)) return false;
+  const double tau = touch ? (rw + std::sqrt(disc)) / ww : (rw - std::sqrt(disc)) / ww;
+  if (!(tau >= 0.0 && tau <= dt)) return false;
+  for (int k = 0; k < 3; k++) n[k] = (r[k] - tau * w[k]) / radsum;
+  return true;
+}
 
 // Time in steps at which a quantity that was prev > 0 at step tprev and is now <= 0
 // at step `step` crossed zero (linear interpolation; `step` when there is nothing to
@@ -193,6 +215,8 @@ inline double payload_onset(double *p, const Onset &o, double u, double m, doubl
   p[P_TEND] = -1.0;
   p[P_FLAGS] = o.bounded ? FLAG_BOUNDED : 0;
   for (int k = P_HIST; k < NPAYLOAD; k++) p[k] = 0.0;
+  p[P_UTOUCH] = u;    // the caller sets the touch point's values where it knows them
+  p[P_VTOUCH] = u;
   return (phase && u > 0.0) ? o.d * u * phase_weight(ov / (u * dt)) : 0.0;
 }
 
@@ -245,7 +269,14 @@ inline double payload_force(double *p, double ov, double u, double step, bool fo
 // restitution coefficient of their own.
 class ContactBook {
  public:
-  enum { NSTATS = 17 };
+  // NSTATS: the statistics 1-17; NEXTRA more follow (after the host statistics of a wall
+  // fix): median e, near-head-on collisions, their mean e, contacts left out for a stock wall
+  enum { NSTATS = 17, NEXTRA = 4 };
+  // e histogram for the median: bins of EBIN over [0, ENBIN EBIN), the last one open
+  enum { ENBIN = 20000 };
+  static constexpr double EBIN = 1e-4;
+  // near head-on: impact angle at the touch point below 15 degrees
+  static constexpr double COS_HEADON = 0.96592582628906831;
   // the log is streamed: rank 0 writes its rows as its contacts end, the other ranks'
   // rows are gathered every LOG_FLUSH_EVERY steps (flush_log, collective) and at the end
   // of each run, so the rows in memory are at most those of LOG_FLUSH_EVERY steps
@@ -268,7 +299,8 @@ class ContactBook {
   // A finished contact: p = payload, tag_a/tag_b identify it, tend_steps = end time.
   void finish(const double *p, double tag_a, double tag_b, double tend_steps, double u_out,
               double dt);
-  void vector(LAMMPS *lmp, double *out) const;    // reduced over all processors
+  // reduced over all processors: NSTATS + NEXTRA values
+  void vector(LAMMPS *lmp, double *out) const;
   // append: go on in an existing log (after read_restart)
   void open_log(LAMMPS *lmp, const std::string &file, const std::string &header, bool append = false);
   void flush_log(LAMMPS *lmp);                     // gather to rank 0, write, flush (collective)
@@ -287,6 +319,8 @@ class ContactBook {
     if (x > hi) hi = x;
   }
   double n_onset = 0, n_bounded = 0, n_end = 0, n_iso = 0, e_sum = 0, e_sumsq = 0;
+  double n_headon = 0, e_headon = 0, n_stockwall = 0;
+  std::vector<double> ehist;    // isolated collisions' e, ENBIN bins
 
  public:
   double carried = 0;    // contacts carried through per-atom records (neighbor-list builds)

@@ -41,7 +41,7 @@ PairGranularHertzdamp::PairGranularHertzdamp(LAMMPS *lmp) : Pair(lmp)
   single_enable = 0;
   restartinfo = 1;
   no_virial_fdotr_compute = 1;    // forces tallied pair by pair (ev_tally)
-  comm_forward = 1;               // contacts per atom (isolation of contacts)
+  comm_forward = 2;               // contacts and stock wall contacts per atom (isolation)
   comm_reverse = 1;
 }
 
@@ -219,6 +219,7 @@ void PairGranularHertzdamp::init_style()
   }
   for (int i = 1; i <= n; i++) maxrad[i] = global[i];
 
+  find_stock_walls();
   logmesg(lmp, "granular/hertzdamp: " + rule.describe() + "\n");
 }
 
@@ -362,8 +363,16 @@ void PairGranularHertzdamp::compute(int eflag, int vflag)
         const double f_end = ce.f_end;
         if (newton_pair || j < nlocal || tag[i] < tag[j]) {
           const double ta = tag[i] < tag[j] ? tag[i] : tag[j], tb = tag[i] < tag[j] ? tag[j] : tag[i];
-          // separation speed once the kick f_end (applied now) is complete
-          book.finish(p, ta, tb, ce.tend, u_out + f_end * dt / p[P_M], dt);
+          // separation speed at the release point on the last step's path, once the kick
+          // f_end (applied now, along this step's normal) is complete
+          const double rr[3] = {delx, dely, delz}, w[3] = {v[i][0] - v[j][0], v[i][1] - v[j][1], v[i][2] - v[j][2]};
+          double nr[3];
+          double u_rel = u_out + f_end * dt / p[P_M];
+          if (contact_point_normal(rr, w, radsum, dt, false, nr)) {
+            const double kick = f_end * dt / p[P_M] * rinv;
+            u_rel = (w[0] + kick * delx) * nr[0] + (w[1] + kick * dely) * nr[1] + (w[2] + kick * delz) * nr[2];
+          }
+          book.finish(p, ta, tb, ce.tend, u_rel, dt);
         }
         if (f_end != 0.0) {
           add_central(i, j, f_end * rinv, delx, dely, delz);
@@ -402,6 +411,13 @@ void PairGranularHertzdamp::compute(int eflag, int vflag)
         ci[jj] = c;
         p = &pool[static_cast<size_t>(c) * NPAYLOAD];
         f_phase = payload_onset(p, o, approach, m, ov, step, dt, rule.phase);
+        {
+          // normal speed and angle at the touch point, on the last step's free-flight path
+          const double rr[3] = {delx, dely, delz}, w[3] = {v[i][0] - v[j][0], v[i][1] - v[j][1], v[i][2] - v[j][2]};
+          double nt[3];
+          if (contact_point_normal(rr, w, radsum, dt, true, nt)) p[P_UTOUCH] = -(w[0] * nt[0] + w[1] * nt[1] + w[2] * nt[2]);
+          p[P_VTOUCH] = sqrt(w[0] * w[0] + w[1] * w[1] + w[2] * w[2]);
+        }
         if (newton_pair || j < nlocal || tag[i] < tag[j]) book.onset(o, approach);
       } else {
         p = &pool[static_cast<size_t>(c) * NPAYLOAD];
@@ -502,9 +518,18 @@ void PairGranularHertzdamp::mark_isolation()
 {
   if (force->newton_pair) HD_REVERSE_COMM_PAIR(this);
   // pair contacts of the local atoms (for the walls), then with the wall contacts
-  // (fix hertzdamp/wall) of the step before, to every ghost atom
+  // (fix hertzdamp/wall, and stock walls through their per-atom `contacts` output) of
+  // the step before, to every ghost atom
   const int nlocal = atom->nlocal;
+  nstock.assign(ncontact.size(), 0.0);
+  for (LAMMPS_NS::Fix *w : stock_walls) {
+    double **a = w->array_atom;
+    if (!a) continue;
+    for (int i = 0; i < nlocal; i++)
+      if (a[i][0] != 0.0) nstock[i] += 1.0;
+  }
   npair.assign(ncontact.begin(), ncontact.begin() + nlocal);
+  for (int i = 0; i < nlocal; i++) ncontact[i] += nstock[i];
   for (int k = 0; k < modify->nfix; k++) {
     const auto *wall = dynamic_cast<const FixHertzdampWall *>(modify->fix[k]);
     if (!wall) continue;
@@ -515,20 +540,50 @@ void PairGranularHertzdamp::mark_isolation()
     const int i = touching[t + 1], j = touching[t + 2];
     if (ncontact[i] > 1.0 || ncontact[j] > 1.0) {
       double &flags = pool[static_cast<size_t>(touching[t]) * NPAYLOAD + P_FLAGS];
-      flags = static_cast<double>(static_cast<int>(flags) | FLAG_NOT_ISOLATED);
+      const int stock = (nstock[i] > 0.0 || nstock[j] > 0.0) ? FLAG_STOCK_WALL : 0;
+      flags = static_cast<double>(static_cast<int>(flags) | FLAG_NOT_ISOLATED | stock);
+    }
+  }
+}
+
+// The stock wall fixes (fix wall/gran, wall/gran/region): with their `contacts` keyword
+// their per-atom output tells the beads that touch them (column 1); without it their
+// contacts are not seen, and a warning says that the isolation test is unsound.
+void PairGranularHertzdamp::find_stock_walls()
+{
+  stock_walls.clear();
+  stock_walls_blind = 0;
+  for (int k = 0; k < modify->nfix; k++) {
+    LAMMPS_NS::Fix *f = modify->fix[k];
+    if (std::string(f->style).compare(0, 9, "wall/gran") != 0) continue;
+    if (f->peratom_flag && f->size_peratom_cols >= 1) {
+      stock_walls.push_back(f);
+    } else {
+      stock_walls_blind++;
+      if (comm->me == 0)
+        warn(lmp, __FILE__, __LINE__,
+             std::string("granular/hertzdamp: fix ") + f->id + " (" + f->style +
+                 ") without its contacts keyword: contacts with it are not seen, so the e statistics "
+                 "count beads touching it as isolated collisions (unsound); add `contacts`");
     }
   }
 }
 
 int PairGranularHertzdamp::pack_forward_comm(int n, int *list, double *buf, int, int *)
 {
-  for (int k = 0; k < n; k++) buf[k] = ncontact[list[k]];
-  return n;
+  for (int k = 0; k < n; k++) {
+    buf[2 * k] = ncontact[list[k]];
+    buf[2 * k + 1] = nstock[list[k]];
+  }
+  return 2 * n;
 }
 
 void PairGranularHertzdamp::unpack_forward_comm(int n, int first, double *buf)
 {
-  for (int k = 0; k < n; k++) ncontact[first + k] = buf[k];
+  for (int k = 0; k < n; k++) {
+    ncontact[first + k] = buf[2 * k];
+    nstock[first + k] = buf[2 * k + 1];
+  }
 }
 
 int PairGranularHertzdamp::pack_reverse_comm(int n, int first, double *buf)

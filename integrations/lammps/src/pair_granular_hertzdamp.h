@@ -10,6 +10,7 @@
 
 #include "contact_models.h"
 #include "hertzdamp_lammps.h"
+#include "fix.h"
 #include "pair.h"
 
 #include <vector>
@@ -48,6 +49,9 @@ class PairGranularHertzdamp : public LAMMPS_NS::Pair {
 
   // pair contacts of local atom i in this step's force computation (isolation flag of walls)
   double contacts_of(int i) const { return i < static_cast<int>(npair.size()) ? npair[i] : 0.0; }
+  // stock wall contacts (fix wall/gran, wall/gran/region with `contacts`) of local atom i
+  // at the step before
+  double stock_wall_contacts_of(int i) const { return i < static_cast<int>(nstock.size()) ? nstock[i] : 0.0; }
 
   ContactBook book;
   RuleSettings rule;
@@ -61,6 +65,7 @@ class PairGranularHertzdamp : public LAMMPS_NS::Pair {
   void free_contact(int c);
   void clear_contacts();
   void mark_isolation();
+  void find_stock_walls();
   void add_central(int i, int j, double fpair, double delx, double dely, double delz);
 
   // per type pair
@@ -86,6 +91,9 @@ class PairGranularHertzdamp : public LAMMPS_NS::Pair {
   std::vector<double> ncontact;
   std::vector<double> npair;      // pair contacts of the local atoms
   std::vector<int> touching;      // (contact, i, j) triples of this step
+  std::vector<double> nstock;     // stock wall contacts per atom (local + ghost)
+  std::vector<LAMMPS_NS::Fix *> stock_walls;    // stock wall fixes with per-atom contacts (init)
+  int stock_walls_blind = 0;      // stock wall fixes without `contacts`: not seen
 
   FixHertzdampHistory *fix_history = nullptr;
   bool history_initialized = false;

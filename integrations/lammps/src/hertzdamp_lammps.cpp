@@ -8,6 +8,7 @@
 #include "utils.h"
 
 #include <cerrno>
+#include <charconv>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -321,12 +322,19 @@ void ContactBook::reset()
 }
 
 namespace {
-// one row of the per-contact log
+// one row of the per-contact log: the doubles in their shortest form that reads back to
+// the same value (std::to_chars; printf's %.17g cost the pour deck 25 % of its run time)
 void write_row(FILE *fp, const double *row)
 {
-  fprintf(fp, "%.17g %.0f %.0f", row[0], row[1], row[2]);
-  for (int c = 3; c < LOG_NCOL - 1; c++) fprintf(fp, " %.17g", row[c]);
-  fprintf(fp, " %.0f\n", row[LOG_NCOL - 1]);
+  char buf[LOG_NCOL * 32];
+  char *p = buf, *end = buf + sizeof(buf);
+  for (int c = 0; c < LOG_NCOL; c++) {
+    if (c > 0) *p++ = ' ';
+    const bool whole = c == 1 || c == 2 || c == LOG_NCOL - 1;    // atom IDs, isolated flag
+    p = whole ? std::to_chars(p, end, static_cast<long long>(row[c])).ptr : std::to_chars(p, end, row[c]).ptr;
+  }
+  *p++ = '\n';
+  fwrite(buf, 1, static_cast<size_t>(p - buf), fp);
 }
 }    // namespace
 

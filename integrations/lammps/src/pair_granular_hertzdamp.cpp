@@ -766,12 +766,8 @@ void PairGranularHertzdamp::history_to_atoms(FixHertzdampHistory *fix, bool keep
   } else if (active_contacts() > 0) {
     lost = active_contacts();
   }
-  int lost_all = 0;
-  MPI_Allreduce(&lost, &lost_all, 1, MPI_INT, MPI_SUM, world);
-  if (lost_all > 0)
-    warn(lmp, __FILE__, __LINE__,
-         "granular/hertzdamp: " + std::to_string(lost_all) +
-             " contacts lost (atoms changed between runs); they restart as new contacts");
+  // counted here, reported at the end of the run (no collective at every neighbor-list build)
+  lost_contacts += lost;
 
   if (newton_pair) {
 #if HERTZDAMP_LAMMPS_NUM < 20220000
@@ -836,16 +832,13 @@ void PairGranularHertzdamp::history_from_atoms(FixHertzdampHistory *fix)
   cached_inum = inum;
 
   // every atom within the cutoff: no radius above the largest one known at the run's start
-  int big = -1;
-  for (int i = 0; i < atom->nlocal && big < 0; i++)
-    if (atom->radius[i] > maxrad[atom->type[i]]) big = i;
-  double worst[2] = {big >= 0 ? atom->radius[big] : 0.0, big >= 0 ? static_cast<double>(atom->type[big]) : 0.0}, all[2];
-  MPI_Allreduce(worst, all, 2, MPI_DOUBLE, MPI_MAX, world);
-  if (all[0] > 0.0)
-    fail_all(lmp, __FILE__, __LINE__,
-             "granular/hertzdamp: an atom of radius " + fmt_g(all[0]) +
-                 " is larger than the radii known at the start of the run (atoms, fix pour, fix deposit), "
-                 "which set the cutoff: its contacts would be missed");
+  // (checked by each process for its atoms: no collective at every neighbor-list build)
+  for (int i = 0; i < atom->nlocal; i++)
+    if (atom->radius[i] > maxrad[atom->type[i]])
+      fail_one(lmp, __FILE__, __LINE__,
+               "granular/hertzdamp: an atom of radius " + fmt_g(atom->radius[i]) +
+                   " is larger than the radii known at the start of the run (atoms, fix pour, fix deposit), "
+                   "which set the cutoff: its contacts would be missed");
 }
 
 void PairGranularHertzdamp::end_of_run(FixHertzdampHistory *fix)
@@ -854,6 +847,13 @@ void PairGranularHertzdamp::end_of_run(FixHertzdampHistory *fix)
   // the contacts stay indexed by the neighbor list for a following `run N pre no`
   history_to_atoms(fix, true);
   records_fresh = true;
+  int lost_all = 0;
+  MPI_Allreduce(&lost_contacts, &lost_all, 1, MPI_INT, MPI_SUM, world);
+  lost_contacts = 0;
+  if (lost_all > 0)
+    warn(lmp, __FILE__, __LINE__,
+         "granular/hertzdamp: " + std::to_string(lost_all) +
+             " contacts lost (atoms changed between runs); they restarted as new contacts");
   book.flush_log(lmp);
   book.summary(lmp, "granular/hertzdamp");
 }

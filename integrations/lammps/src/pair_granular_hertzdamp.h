@@ -97,6 +97,7 @@ class PairGranularHertzdamp : public LAMMPS_NS::Pair {
 
   FixHertzdampHistory *fix_history = nullptr;
   bool history_initialized = false;
+  int lost_contacts = 0;          // contacts lost in transfers this run (reported at its end)
 };
 
 }    // namespace HertzdampLammps

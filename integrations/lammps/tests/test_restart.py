@@ -15,6 +15,11 @@ one LAMMPS process for the whole scan).  Checked:
 - the continued runs count the contact once: restarted before the onset step they see
   1 onset and 1 end, inside the contact 0 and 1, from its end step on 0 and 0;
 - the scan covers at least 24 steps and the whole contact, one step either side.
+
+The same for a wall contact: a bead landing on fix hertzdamp/wall (examples/in.slide,
+N = 20), restart files at steps 96..135 around its first contact (detected at 99, its
+end at 119), the wall fix re-specified after read_restart: all 40 continued runs bit for
+bit (before: the end step 119 differed), each counting the contact once.
 """
 import atexit
 import glob
@@ -78,6 +83,41 @@ def run(c):
     c.check("every continued run ends bit for bit as the uninterrupted one", same == len(steps),
             "%d of %d: %s" % (same, len(steps), ", ".join(bad)))
     c.check("every continued run counts the contact once", counted == len(steps), ", ".join(bad))
+
+    # the same for a wall contact: a bead landing on fix hertzdamp/wall (examples/in.slide,
+    # the wall fix re-specified after read_restart as LAMMPS fixes are)
+    slide = os.path.join(hdlmp.EXAMPLES, "in.slide")
+    common = {"steps": 300, "s0": 95, "s1": 135, "file": "wscan.restart"}
+    out = hdlmp.lmp(slide, dict(common, final="wref.dump", log="wall_contacts.txt"), tmp)
+    rows = hdlmp.read_log(os.path.join(tmp, "wall_contacts.txt"))
+    ref = final_atoms(os.path.join(tmp, "wref.dump"))
+    nref = float([l for l in out.splitlines() if l.startswith("RESULT")][0].split()[4])
+    on_step, end_step = math.floor(rows[0]["t_on"]) + 1, math.floor(rows[0]["t_end"]) + 1
+    hdlmp.lmp(slide, dict(common, part=4, final="wwriter.dump"), tmp)
+    c.check("wall: writing a restart file at every step leaves the run unchanged",
+            final_atoms(os.path.join(tmp, "wwriter.dump")) == ref)
+    steps = sorted(int(f.rsplit(".", 1)[1]) for f in glob.glob(os.path.join(tmp, "wscan.restart.*")))
+    c.check("wall: the scan covers the first contact, a step either side, >= 24 steps",
+            steps and steps[0] <= on_step - 1 and end_step + 1 <= steps[-1] and len(steps) >= 24,
+            "%r %d %d" % (steps[:1] + steps[-1:], on_step, end_step))
+    out = hdlmp.lmp(slide, dict(common, part=5), tmp)
+    results = [l.split() for l in out.splitlines() if l.startswith("RESULT")]
+    same, counted, bad = 0, 0, []
+    for k, s in enumerate(steps):
+        path = os.path.join(tmp, "scan.%d.dump" % s)
+        ok = os.path.exists(path) and final_atoms(path) == ref
+        same += ok
+        want = nref if s < on_step else nref - 1    # onsets after the restart
+        got = float(results[k][4]) if k < len(results) else None
+        counted += got == want
+        if not ok or got != want:
+            bad.append("%d%s%s" % (s, "" if ok else " differs", "" if got == want else " onsets %r" % got))
+    print("wall: restart at steps %d..%d (contact detected at %d, end detected at %d): %d of %d continued runs "
+          "bit for bit, %d count the contact once%s" % (steps[0], steps[-1], on_step, end_step, same, len(steps),
+                                                       counted, (": " + ", ".join(bad)) if bad else ""))
+    c.check("wall: every continued run ends bit for bit as the uninterrupted one", same == len(steps),
+            ", ".join(bad))
+    c.check("wall: every continued run counts the contact once", counted == len(steps), ", ".join(bad))
 
 
 if __name__ == "__main__":

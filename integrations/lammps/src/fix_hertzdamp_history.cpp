@@ -40,7 +40,7 @@ FixHertzdampHistory::~FixHertzdampHistory()
 
 int FixHertzdampHistory::setmask()
 {
-  return PRE_EXCHANGE | POST_NEIGHBOR | POST_RUN | END_OF_STEP | MIN_PRE_EXCHANGE | MIN_POST_NEIGHBOR;
+  return PRE_EXCHANGE | POST_NEIGHBOR | POST_FORCE | POST_RUN | END_OF_STEP | MIN_PRE_EXCHANGE | MIN_POST_NEIGHBOR;
 }
 
 void FixHertzdampHistory::init()
@@ -58,6 +58,11 @@ void FixHertzdampHistory::pre_exchange()
 void FixHertzdampHistory::post_neighbor()
 {
   if (pair) pair->history_from_atoms(this);
+}
+
+void FixHertzdampHistory::post_force(int)
+{
+  if (pair) pair->mark_isolation();
 }
 
 void FixHertzdampHistory::post_run()

@@ -138,6 +138,9 @@ void FixHertzdampWall::setup(int vflag)
 
 void FixHertzdampWall::post_force(int /*vflag*/)
 {
+  // the pair contacts per atom of this step, whichever of the history fix and this fix
+  // comes first in the fix list
+  if (auto *pr = dynamic_cast<PairGranularHertzdamp *>(force->pair)) pr->mark_isolation();
   const double *radius = atom->radius;
   const int *mask = atom->mask;
   const int nlocal = atom->nlocal;

@@ -488,7 +488,9 @@ void PairGranularHertzdamp::compute(int eflag, int vflag)
       if (evflag) ev_tally_xyz(i, j, nlocal, newton_pair, 0.0, 0.0, fx, fy, fz, delx, dely, delz);
     }
   }
-  mark_isolation();
+  // the isolation of this step's contacts (two communications) is marked after the force
+  // computation, by the history fix (post_force, before the wall fixes' post_force)
+  isolation_pending = true;
 }
 
 // A central force fpair (x_i - x_j) on i and its opposite on j (when j is local or
@@ -516,6 +518,8 @@ void PairGranularHertzdamp::add_central(int i, int j, double fpair, double delx,
 
 void PairGranularHertzdamp::mark_isolation()
 {
+  if (!isolation_pending) return;
+  isolation_pending = false;
   if (force->newton_pair) HD_REVERSE_COMM_PAIR(this);
   // pair contacts of the local atoms (for the walls), then with the wall contacts
   // (fix hertzdamp/wall, and stock walls through their per-atom `contacts` output) of

@@ -43,6 +43,9 @@ class PairGranularHertzdamp : public LAMMPS_NS::Pair {
   void history_to_atoms(FixHertzdampHistory *fix, bool keep);    // keep: leave the contacts in place
   void history_from_atoms(FixHertzdampHistory *fix);             // after the list is rebuilt (post_neighbor)
   void end_of_run(FixHertzdampHistory *fix);
+  // marks this step's contacts that are not isolated collisions (after compute(): the
+  // history fix's post_force; communicates the contacts per atom)
+  void mark_isolation();
 
   // constants of type pair i j (valid after the run's init)
   const PairConstants &constants(int i, int j) const;
@@ -64,7 +67,6 @@ class PairGranularHertzdamp : public LAMMPS_NS::Pair {
   int new_contact();
   void free_contact(int c);
   void clear_contacts();
-  void mark_isolation();
   void find_stock_walls();
   void add_central(int i, int j, double fpair, double delx, double dely, double delz);
 
@@ -97,6 +99,7 @@ class PairGranularHertzdamp : public LAMMPS_NS::Pair {
 
   FixHertzdampHistory *fix_history = nullptr;
   bool history_initialized = false;
+  bool isolation_pending = false;  // compute() ran, mark_isolation() not yet
   int lost_contacts = 0;          // contacts lost in transfers this run (reported at its end)
 };
 

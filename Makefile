@@ -79,10 +79,14 @@ $(VENV)/.python-modules: $(FPM) Makefile
 # object without refreshing the archive (seen again with this layout), so programs
 # could link stale code: drop the archives before every build.  fpm 0.12 puts the
 # objects of every package (src/, packages/*/src/) into the root's libhertzdamp.a;
-# the pattern also drops a per-package archive (libhertzdamp-scene.a, ...) should a
+# the pattern also drops a per-package archive (libhertzdamp-dem.a, ...) should a
 # later fpm write one.  A fresh clone is unaffected; `make install` (CMake) does not
-# need this.
-STALE_ARCHIVES = rm -f build/gfortran_*/hertzdamp*/libhertzdamp*.a
+# need this.  fpm's dependency cache (build/cache.toml) names the packages by path: one
+# that names a package directory no longer there (packages/scene became packages/dem)
+# stops fpm, so it is dropped then (fpm writes it anew).
+STALE_ARCHIVES = rm -f build/gfortran_*/hertzdamp*/libhertzdamp*.a; \
+  if [ -f build/cache.toml ]; then for d in $$(sed -n 's/^proj-dir = "\(.*\)"$$/\1/p' build/cache.toml); do \
+    [ -f "$$d/fpm.toml" ] || { rm -f build/cache.toml; break; }; done; fi
 
 # The program needs the Debian packages and fpm only (fortitude and ford are for
 # lint and docs).

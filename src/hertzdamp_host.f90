@@ -16,7 +16,7 @@
 !> - `mfix-ab2`: v_(n+1) = v_n + h (3 a_n - a_(n-1))/2, z_(n+1) = z_n + h (v_n + v_(n+1))/2,
 !>   a_(n-1) = 0 before the contact, the last contact acceleration acting once more
 !>   after the release;
-!> - `verlet`: the scene engine of this repository (packages/scene/src/hertzdamp_dem_engine.f90):
+!> - `verlet`: the scene engine of this repository (packages/dem/src/hertzdamp_dem_engine.f90):
 !>   velocity Verlet with the extrapolated velocity in the damping and its onset and
 !>   release impulse corrections;
 !> - `lammps-phase`: `lammps` with the onset/release correction of the LAMMPS plugin
@@ -481,7 +481,7 @@ contains
         r%status = HD_NO_REBOUND
     end subroutine run_ab2
 
-    !> The verlet scheme, the scene engine's sequence for one contact (packages/scene/src/hertzdamp_dem_engine.f90,
+    !> The verlet scheme, the scene engine's sequence for one contact (packages/dem/src/hertzdamp_dem_engine.f90,
     !> doc/host-schemes.md): half kick, drift, the velocity v_pred = v_half + h/2 A +
     !> h/2 (A - A_prev) in the damping, the force, the closing half kick plus the impulse
     !> corrections of the onset step (the part of the step in contact, the Hertz and
@@ -559,7 +559,7 @@ contains
 
     !> The engine's trapezoid error g_p(theta) = zeta_H(-p, theta) + theta^(p+1)/(p+1) -
     !> theta^p/2 of a force c s^p starting (or ending) a fraction theta of a step away
-    !> (packages/scene/src/hertzdamp_dem_engine.f90: start_error p = 3/2, trapezoid_error p = q).
+    !> (packages/dem/src/hertzdamp_dem_engine.f90: start_error p = 3/2, trapezoid_error p = q).
     pure real(wp) function trapezoid_g(p, theta) result(g)
         real(wp), intent(in) :: p, theta
         real(wp) :: tp

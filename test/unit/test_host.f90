@@ -4,7 +4,7 @@
 !>   with two half kicks, MFiX's EULER and ADAMS_BASHFORTH in MFiX's form, the scene
 !>   engine's sequence with its corrections, the plugin's phase force with this program's
 !>   own Hurwitz zeta) agrees with hertzdamp_host_collide at random phases;
-!> - the real engines: the scene engine of packages/scene/ (verlet) and Debian's LAMMPS (`lmp`,
+!> - the real engines: the scene engine of packages/dem/ (verlet) and Debian's LAMMPS (`lmp`,
 !>   pair_style granular hertz with damping velocity and viscoelastic, with and without
 !>   limit_damping) give the same e per phase;
 !> - the phase means against this program's own breakpoint search and quadrature
@@ -180,7 +180,7 @@ contains
 
     ! ================================================================ the real engines
 
-    !> The scene engine of packages/scene/ (hertzdamp_dem_run), two steel spheres head-on at 1 m/s
+    !> The scene engine of packages/dem/ (hertzdamp_dem_run), two steel spheres head-on at 1 m/s
     !> with T_c = N dt: its contact's e = u_out/u_in and (t_end - t_start)/t* against
     !> hertzdamp_host_collide with the contact's alpha and t* (from its k and d) and the
     !> phase of its touch.  Agreement within 1e-10 (the engine's start_error keeps three

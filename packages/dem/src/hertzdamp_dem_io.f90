@@ -19,7 +19,7 @@
 !> characters and files of more than 1,000,000 lines are refused (an endless input
 !> such as /dev/zero fails after its first 1025 characters).  Nothing is printed:
 !> failures return HD_BAD_ARGUMENT and a one-line message.
-module hertzdamp_scene_io
+module hertzdamp_dem_io
     use hertzdamp, only: hertzdamp_rk
     use hertzdamp, only: HD_OK, HD_BAD_ARGUMENT
     use hertzdamp, only: hertzdamp_law_code, hertzdamp_law_choices, hertzdamp_end_code, hertzdamp_end_choices
@@ -630,4 +630,4 @@ contains
 
     end subroutine read_wall
 
-end module hertzdamp_scene_io
+end module hertzdamp_dem_io

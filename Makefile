@@ -11,8 +11,9 @@ PYTHON ?= python3
 APT_PKGS := gfortran liblapack-dev libblas-dev libgsl-dev gnuplot-nox cmake pkg-config lammps-examples liggghts-doc
 SUDO := $(shell [ "$$(id -u)" = 0 ] || echo sudo)
 
-# Optimised build of the library and the program (what users run and benchmark).
-RELEASE_FLAGS := -O3 -march=x86-64-v2 -funroll-loops -fPIC
+# Optimised build of the library and the program (what users run and benchmark): the
+# flags of data/release_flags.txt, which CMake reads too.
+RELEASE_FLAGS := $(shell grep -v '^\#' data/release_flags.txt)
 # Test build: warnings on and fatal, standard conformance, run-time checks that are
 # cheap.  -Wno-compare-reals: the exact comparisons left (x == 0 in root finders and
 # guards) are intended.  fpm hides compiler output unless a build fails, so -Werror
@@ -78,10 +79,14 @@ $(VENV)/.python-modules: $(FPM) Makefile
 # object without refreshing the archive (seen again with this layout), so programs
 # could link stale code: drop the archives before every build.  fpm 0.12 puts the
 # objects of every package (src/, packages/*/src/) into the root's libhertzdamp.a;
-# the pattern also drops a per-package archive (libhertzdamp-scene.a, ...) should a
+# the pattern also drops a per-package archive (libhertzdamp-dem.a, ...) should a
 # later fpm write one.  A fresh clone is unaffected; `make install` (CMake) does not
-# need this.
-STALE_ARCHIVES = rm -f build/gfortran_*/hertzdamp*/libhertzdamp*.a
+# need this.  fpm's dependency cache (build/cache.toml) names the packages by path: one
+# that names a package directory no longer there (packages/scene became packages/dem)
+# stops fpm, so it is dropped then (fpm writes it anew).
+STALE_ARCHIVES = rm -f build/gfortran_*/hertzdamp*/libhertzdamp*.a; \
+  if [ -f build/cache.toml ]; then for d in $$(sed -n 's/^proj-dir = "\(.*\)"$$/\1/p' build/cache.toml); do \
+    [ -f "$$d/fpm.toml" ] || { rm -f build/cache.toml; break; }; done; fi
 
 # The program needs the Debian packages and fpm only (fortitude and ford are for
 # lint and docs).
@@ -179,5 +184,5 @@ LAMMPS_CORE := $(CURDIR)/build/lammps/core
 lammps: deps $(LAMMPS_CORE)/lib/libhertzdamp.so
 	@$(MAKE) --no-print-directory -C integrations/lammps HERTZDAMP_PREFIX=$(LAMMPS_CORE)
 
-$(LAMMPS_CORE)/lib/libhertzdamp.so: $(wildcard src/*.f90) include/hertzdamp.h CMakeLists.txt
+$(LAMMPS_CORE)/lib/libhertzdamp.so: $(wildcard src/*.f90 src/*.inc) include/hertzdamp.h CMakeLists.txt
 	@$(MAKE) --no-print-directory install PREFIX=$(LAMMPS_CORE) >/dev/null

@@ -6,7 +6,7 @@
 !> host calls a library (no inlining across files) and the array forms run a loop the
 !> compiler may vectorise (glibc's libmvec for `log`).
 module hertzdamp_bench_closed
-    use hertzdamp_kinds, only: hertzdamp_rk
+    use hertzdamp, only: hertzdamp_rk
     implicit none
     private
 

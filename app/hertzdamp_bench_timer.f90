@@ -8,7 +8,7 @@
 !> batch of every case in turn, so that a change of the machine's load (the machines
 !> are shared) hits all of them alike and their ratios stay meaningful.
 module hertzdamp_bench_timer
-    use hertzdamp_kinds, only: hertzdamp_rk
+    use hertzdamp, only: hertzdamp_rk
     use, intrinsic :: iso_fortran_env, only: int64
     implicit none
     private

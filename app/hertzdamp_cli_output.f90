@@ -22,7 +22,7 @@
 !> `# mass [kg] = 5.235988e-06`); a table of one row as one `name [unit] = value` line
 !> per column.  CSV and JSON do not depend on any of this.
 module hertzdamp_cli_output
-    use hertzdamp_kinds, only: hertzdamp_rk
+    use hertzdamp, only: hertzdamp_rk
     use hertzdamp_cli, only: cli_buffer, cli_line
     use hertzdamp_cli_text, only: fmt_csv, fmt_text, fmt_text_short, fmt_json, json_string, csv_field, &
                                   one_line, itoa

@@ -14,7 +14,7 @@
 !> `warn_implausible(args)` once its options are parsed (bad values have exited
 !> already); `warn_value` checks one value from elsewhere (a data file).
 module hertzdamp_cli_plausible
-    use hertzdamp_kinds, only: hertzdamp_rk
+    use hertzdamp, only: hertzdamp_rk
     use hertzdamp_cli, only: cli_args, parse_real, parse_sweep, error_line
     use hertzdamp_cli_text, only: fmt_short, itoa
     implicit none

@@ -31,7 +31,7 @@
 !> that such a write fails instead of killing the program before its results reach
 !> stdout, and stays ignored after a failed one (the runtime would retry the write).
 module hertzdamp_cli_progress
-    use hertzdamp_kinds, only: hertzdamp_rk
+    use hertzdamp, only: hertzdamp_rk
     use, intrinsic :: iso_fortran_env, only: error_unit, int64
     use, intrinsic :: iso_c_binding, only: c_int, c_funptr, c_intptr_t, c_size_t, c_long
     ! write(2): a report goes to stderr unbuffered, and a failed write is seen (the

@@ -24,9 +24,9 @@
 !> ROW_* constant, message naming the option and value that is wrong, '' for rows
 !> with a result), then `call log%emit(table, fmt)`, which never returns.
 module hertzdamp_cli_rows
-    use hertzdamp_registry, only: HD_OK, HD_NO_REBOUND, HD_OUTSIDE_VALIDITY, HD_NOT_SUPPORTED, HD_INACCURATE, &
-                                HD_OUT_OF_RANGE, &
-                                HD_MAX_STEPS, HD_STEP_UNDERFLOW, HD_NO_CONVERGENCE
+    use hertzdamp, only: HD_OK, HD_NO_REBOUND, HD_OUTSIDE_VALIDITY, HD_NOT_SUPPORTED, HD_INACCURATE, &
+                       HD_OUT_OF_RANGE, &
+                       HD_MAX_STEPS, HD_STEP_UNDERFLOW, HD_NO_CONVERGENCE
     use hertzdamp_cli, only: cli_buffer, fail, quit, error_line, EXIT_OK, EXIT_USAGE, EXIT_NO_SOLUTION, EXIT_FAILURE
     use hertzdamp_cli_text, only: itoa
     use hertzdamp_cli_output, only: out_table

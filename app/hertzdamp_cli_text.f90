@@ -3,7 +3,7 @@
 !> number formats of the CSV and JSON outputs (fmt_short, for messages, and fmt_text,
 !> fmt_text_short, for the text output, are the applications' own, hertzdamp_text_format).
 module hertzdamp_cli_text
-    use hertzdamp_kinds, only: hertzdamp_rk
+    use hertzdamp, only: hertzdamp_rk
     use hertzdamp_text_format, only: fmt_short, itoa, ROUND_TRIP, fmt_text, fmt_text_short, is_whole_text
     use, intrinsic :: ieee_arithmetic, only: ieee_is_finite, ieee_is_nan
     implicit none

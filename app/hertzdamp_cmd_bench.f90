@@ -22,6 +22,7 @@
 !> To add a table: write its builder module and call it in measure, describe and figures
 !> below.
 module hertzdamp_cmd_bench
+    use hertzdamp, only: hertzdamp_law_choices
     use hertzdamp, only: hertzdamp_rk, HD_DAMPING_LINEAR, HD_DAMPING_TSUJI, HD_DAMPING_KUWABARA_KONO, &
                          hertzdamp_law_name
     use hertzdamp_bench_entry, only: entry_data, entry_result, tsuji_result, entry_contacts, entry_measure, &
@@ -116,7 +117,7 @@ contains
         end if
         call parse_args(2, '--format --plot --damping', '--quick --progress', args)
         o%fmt = parse_choice(args%get('--format', 'text'), format_choices, 'format (--format)')
-        sel = parse_choice(args%get('--damping', 'all'), 'all linear tsuji kuwabara-kono', 'damping law (--damping)')
+        sel = parse_choice(args%get('--damping', 'all'), 'all ' // hertzdamp_law_choices(), 'damping law (--damping)')
         o%quick = args%has('--quick')
         o%want_plot = args%has('--plot')
         o%progress = args%has('--progress')

@@ -4,6 +4,7 @@
 !> CSV and printing only: the fit is hertzdamp_calibrate (packages/calibrate).
 module hertzdamp_cmd_calibrate
     use hertzdamp, only: hertzdamp_rk, hertzdamp_end_name, HD_METHOD_FIT, HD_METHOD_RK45, HD_OK, HD_END_OVERLAP
+    use hertzdamp, only: hertzdamp_law_choices, hertzdamp_law_name, hertzdamp_law_q, hertzdamp_min_law, hertzdamp_max_law
     use hertzdamp_calibrate, only: cal_data, cal_options, cal_result, cal_check, cal_fit, cal_auto, cal_model, &
                                    CAL_OK, CAL_BAD_DATA, CAL_NOT_IDENTIFIED, CAL_NO_CONVERGENCE
     use hertzdamp_calibrate_maps, only: cal_law_name, cal_law_q, cal_max_law, CAL_LAW_LINEAR, CAL_LAW_TSUJI
@@ -64,7 +65,7 @@ contains
         call require_mass(ct)
         o%mass = ct%mass
         dname = args%get('--damping', 'auto')
-        law = parse_choice(dname, 'linear tsuji kuwabara-kono auto', 'damping law (--damping)') - 1
+        law = parse_choice(dname, hertzdamp_law_choices() // ' auto', 'damping law (--damping)') - 1
         if (law > cal_max_law) law = -1   ! auto
         o%iend = parse_end(args%get('--end', hertzdamp_end_name(HD_END_OVERLAP)))
         o%method = merge(HD_METHOD_FIT, HD_METHOD_RK45, &
@@ -450,7 +451,7 @@ contains
                          itoa(res(l)%n_par) // ') here, so the smallest ' // trim(merge('chi2', 'RSS ', dat%weighted)) // &
                          ' (BIC agrees)')
         end if
-        call buf%add('# uncertainties: standard (1 sigma); q of each law: 0 linear, 1/4 tsuji, 1/2 kuwabara-kono')
+        call buf%add('# uncertainties: standard (1 sigma); q of each law: ' // law_q_listing())
         call summary_table(res, order, chosen, auto, dat%weighted, FORMAT_TEXT, buf)
         do i = 1, size(order)
             if (res(order(i))%status /= CAL_OK) then
@@ -667,5 +668,27 @@ contains
         call s%close(u)
         call s%draw(gp, plot)
     end subroutine write_plot
+
+    !> 'q1 law1, q2 law2, ...' from the registry, each q as a fraction of quarters (0, 1/4,
+    !> 1/2: the exponents the laws have).
+    function law_q_listing() result(s)
+        character(len=:), allocatable :: s
+        integer :: l, n, den
+        s = ''
+        do l = hertzdamp_min_law, hertzdamp_max_law
+            n = nint(4.0_wp * hertzdamp_law_q(l))
+            den = 4
+            do while (n > 0 .and. mod(n, 2) == 0 .and. den > 1)
+                n = n / 2
+                den = den / 2
+            end do
+            if (l > hertzdamp_min_law) s = s // ', '
+            if (n == 0 .or. den == 1) then
+                s = s // itoa(n) // ' ' // hertzdamp_law_name(l)
+            else
+                s = s // itoa(n) // '/' // itoa(den) // ' ' // hertzdamp_law_name(l)
+            end if
+        end do
+    end function law_q_listing
 
 end module hertzdamp_cmd_calibrate

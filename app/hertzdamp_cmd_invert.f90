@@ -393,21 +393,7 @@ contains
         steps = parse_steps(args, 10.0_wp)
         call check_combinations([size(es), size(steps)], '--e and --steps')
         call warn_implausible(args)
-        ! the time unit t* and the elastic Hertz time at every velocity; both fall as u^(-1/5)
-        tmin = huge(1.0_wp)
-        thertz = huge(1.0_wp)
-        umax = 0.0_wp
-        do iu = 1, size(us)
-            call hertzdamp_reduce(ct%k_phys, 0.0_wp, ct%mass, us(iu), a0, tstar, st)
-            if (st == HD_OK) call hertzdamp_hertz_time(ct%mass, ct%k_phys, us(iu), th, st)
-            if (st == HD_BAD_VELOCITY) call fail(EXIT_USAGE, '--velocity ' // fmt_short(us(iu)) // ': ' // &
-                                                 hertzdamp_message(st))
-            if (st /= HD_OK) call fail(EXIT_USAGE, '--velocity ' // fmt_short(us(iu)) // &
-                                       ': the contact time is outside the double-precision range')
-            if (tstar < tmin) umax = us(iu)
-            tmin = min(tmin, tstar)
-            thertz = min(thertz, th)
-        end do
+        call fastest_contact()
 
         columns = 'e,steps,velocity_max,mass,radius_eff,k_phys,alpha,tau_c,tc_damped,tc_elastic,elastic_excess,' // &
                   'dt_max,dt_elastic,t_rayleigh,dt_rayleigh,'
@@ -446,25 +432,7 @@ contains
                 end if
                 if (.not. dt_el > 0.0_wp) rkind = ROW_OUT_OF_RANGE
                 rhave = row_has_result(rkind)
-                call t%num(es(ie))
-                call t%num(steps(is))
-                call t%num(umax)
-                call t%num(ct%mass)
-                call t%num_or_none(ct%radius, ct%has_radius)
-                call t%num(ct%k_phys)
-                call t%num_or_none(alpha, have)
-                call t%num_or_none(tau, have)
-                call t%num_or_none(tcd, rhave)
-                call t%num(thertz)
-                call t%num_or_none(excess, rhave)
-                call t%num_or_none(dtmax, rhave)
-                call t%num_or_none(dt_el, dt_el > 0.0_wp)
-                call t%num_or_none(ct%t_rayleigh, ct%has_rayleigh)
-                call t%num_or_none(hertzdamp_rayleigh_fraction * ct%t_rayleigh, ct%has_rayleigh)
-                if (h%given) then
-                    call t%num_or_none(relative_spread(stats%e_sd, stats%e_mean), rhave)
-                    call t%num_or_none(relative_spread(stats%tau_sd, stats%tau_mean), rhave)
-                end if
+                call row_numbers()
                 call t%str(row_word(rkind))
                 if (rhave) then
                     call rows%add(rkind, '')
@@ -481,6 +449,48 @@ contains
         end do
         call rows%emit(t, c%fmt)
     contains
+        !> The time unit t* and the elastic Hertz time at every velocity (both fall as
+        !> u^(-1/5)): their smallest values tmin, thertz and the fastest speed umax.
+        subroutine fastest_contact()
+    tmin = huge(1.0_wp)
+    thertz = huge(1.0_wp)
+    umax = 0.0_wp
+    do iu = 1, size(us)
+        call hertzdamp_reduce(ct%k_phys, 0.0_wp, ct%mass, us(iu), a0, tstar, st)
+        if (st == HD_OK) call hertzdamp_hertz_time(ct%mass, ct%k_phys, us(iu), th, st)
+        if (st == HD_BAD_VELOCITY) call fail(EXIT_USAGE, '--velocity ' // fmt_short(us(iu)) // ': ' // &
+                                             hertzdamp_message(st))
+        if (st /= HD_OK) call fail(EXIT_USAGE, '--velocity ' // fmt_short(us(iu)) // &
+                                   ': the contact time is outside the double-precision range')
+        if (tstar < tmin) umax = us(iu)
+        tmin = min(tmin, tstar)
+        thertz = min(thertz, th)
+    end do
+        end subroutine fastest_contact
+
+        !> The numbers of one row (e, steps, ..., the host's spreads), before its status.
+        subroutine row_numbers()
+        call t%num(es(ie))
+        call t%num(steps(is))
+        call t%num(umax)
+        call t%num(ct%mass)
+        call t%num_or_none(ct%radius, ct%has_radius)
+        call t%num(ct%k_phys)
+        call t%num_or_none(alpha, have)
+        call t%num_or_none(tau, have)
+        call t%num_or_none(tcd, rhave)
+        call t%num(thertz)
+        call t%num_or_none(excess, rhave)
+        call t%num_or_none(dtmax, rhave)
+        call t%num_or_none(dt_el, dt_el > 0.0_wp)
+        call t%num_or_none(ct%t_rayleigh, ct%has_rayleigh)
+        call t%num_or_none(hertzdamp_rayleigh_fraction * ct%t_rayleigh, ct%has_rayleigh)
+        if (h%given) then
+            call t%num_or_none(relative_spread(stats%e_sd, stats%e_mean), rhave)
+            call t%num_or_none(relative_spread(stats%tau_sd, stats%tau_mean), rhave)
+        end if
+        end subroutine row_numbers
+
         !> The row kind of the constants' status.
         subroutine row_of(st)
             integer, intent(in) :: st

@@ -15,7 +15,7 @@ module hertzdamp_cmd_scene
                              hertzdamp_dem_cost_order, hertzdamp_dem_check_row, hertzdamp_dem_checks_of, &
                              hertzdamp_dem_ratio, hertzdamp_dem_verlet_energy, hertzdamp_dem_min_resolved, &
                              hertzdamp_dem_supports, HD_CHECK_PASS, HD_CHECK_FAIL, HD_CHECK_GRAVITY
-    use hertzdamp_scene_io, only: hertzdamp_scene_read
+    use hertzdamp_dem_io, only: hertzdamp_scene_read
     use hertzdamp_cli, only: cli_args, cli_buffer, parse_args, parse_choice, parse_real, fail, quit, fmt_csv, &
                              EXIT_USAGE, EXIT_OK, EXIT_FAILURE, EXIT_NO_SOLUTION
     use hertzdamp_cli_output, only: out_table, format_choices, FORMAT_JSON, FORMAT_CSV, FORMAT_TEXT

@@ -425,25 +425,7 @@ def inverse_dispatch(one=False):
 
 
 # ------------------------------------------------------------------ fused with k, d
-PAIR_SOURCE = os.path.join(os.path.dirname(os.path.abspath(__file__)), '..', 'src', 'hertzdamp_pair.f90')
 LAW_CODE = {'linear': 'HD_DAMPING_LINEAR', 'tsuji': 'HD_DAMPING_TSUJI', 'kuwabara-kono': 'HD_DAMPING_KUWABARA_KONO'}
-
-
-def kd_formula():
-    """The text between '! BEGIN kd formula' and '! END kd formula' of src/hertzdamp_pair.f90
-    (the one place of the direct k, d formulas and the masks of the array forms: direct_kd,
-    direct_flags, direct_outside, direct_harmless), marker lines included, dedented."""
-    with open(PAIR_SOURCE) as f:
-        lines = f.read().split('\n')
-    first = [i for i, line in enumerate(lines) if line.strip() == '! BEGIN kd formula']
-    last = [i for i, line in enumerate(lines) if line.strip() == '! END kd formula']
-    if len(first) != 1 or len(last) != 1 or last[0] < first[0]:
-        raise SystemExit('%s: expected one "! BEGIN kd formula" ... "! END kd formula" block' % PAIR_SOURCE)
-    block = lines[first[0]:last[0] + 1]
-    pad = len(block[0]) - len(block[0].lstrip())
-    if any(line[:pad].strip() for line in block):
-        raise SystemExit('%s: the kd formula block is indented less than its marker' % PAIR_SOURCE)
-    return '\n'.join(line[pad:] for line in block)
 
 
 def fused_procedure(kernel, degs):
@@ -457,8 +439,9 @@ def fused_procedure(kernel, degs):
     code, name, law, end, emin, kind, maps = kernel
     local = 'x, l, v, t, a, p2' if kind != 'exact' else 'x, l, t, a, p2'
     head = """\
-!> Inverse kernel %d fused with the direct k, d formulas (direct_kd, copied from
-!> hertzdamp_pair) for n values all valid: alpha, tau_c, status as kernel_inverse_%s, then
+!> Inverse kernel %d fused with the direct k, d formulas (direct_kd of
+!> hertzdamp_kd_formula.inc, as hertzdamp_pair)
+!> for n values all valid: alpha, tau_c, status as kernel_inverse_%s, then
 !> k, d and the flags (0) of contacts_kd, in one loop; done = .false. and no outputs when a
 !> value is invalid (e outside [e_min, 1], or T_c, m or u outside the direct range).
 pure subroutine kernel_invert_kd_%s(n, e, tc, m, u, alpha, tau_c, status, k, d, flags, done)
@@ -828,8 +811,8 @@ def main(argv):
            '                                HD_NO_REBOUND',
            '    use hertzdamp_constants, only: tau_c0 => hertzdamp_tau_c0_value, hertzdamp_pi, &',
            '                                   direct_lo => hertzdamp_direct_lo, direct_hi => hertzdamp_direct_hi',
-           '    use hertzdamp_laws, only: HD_DAMPING_LINEAR, HD_DAMPING_TSUJI, HD_DAMPING_KUWABARA_KONO, &',
-           '                              hertzdamp_alpha_c_tsuji',
+           '    use hertzdamp_registry, only: HD_DAMPING_LINEAR, HD_DAMPING_TSUJI, HD_DAMPING_KUWABARA_KONO',
+           '    use hertzdamp_laws, only: hertzdamp_alpha_c_tsuji',
            '    use hertzdamp_fit_data',
            '    use, intrinsic :: iso_fortran_env, only: int64, real128',
            '    implicit none',
@@ -865,7 +848,7 @@ def main(argv):
     out.append('')
     out.append('    ! ================================================================ inverse kernels fused with k, d')
     out.append('')
-    out.append(indent(kd_formula(), 4))
+    out.append("    include 'hertzdamp_kd_formula.inc'   ! direct_kd and the masks (one source with hertzdamp_pair)")
     out.append('')
     for k in INVERSE_KERNELS:
         out.append(indent(fused_procedure(k, degs), 4))
@@ -881,8 +864,7 @@ def main(argv):
     text = '\n'.join(out) + '\n'
     # the names of hertzdamp_fit_data that the kernels read, listed in its use statement
 
-    # (the kd formula block of hertzdamp_pair reads none of them; its comments may name files)
-    names = sorted(set(re.findall(r'\bfit_\w+', text.split('contains', 1)[1].replace(indent(kd_formula(), 4), '') + CONSTANTS)))
+    names = sorted(set(re.findall(r'\bfit_\w+', text.split('contains', 1)[1] + CONSTANTS)))
     lines, cur = [], '    use hertzdamp_fit_data, only: '
     for k, name in enumerate(names):
         item = name + (', ' if k < len(names) - 1 else '')

@@ -377,7 +377,7 @@ def fortran(reg, table_name):
     w("        if (host >= hertzdamp_min_host .and. host <= hertzdamp_max_host) p = host_order_table(host)")
     w("    end function hertzdamp_host_order")
     w("")
-    w("    !> Whether the scene engine (packages/scene) integrates contacts with a host scheme.")
+    w("    !> Whether the scene engine (packages/dem) integrates contacts with a host scheme.")
     w("    pure elemental logical function hertzdamp_host_in_engine(host) result(yes)")
     w("        integer, intent(in) :: host   !! HD_HOST_*")
     w("        yes = .false.")

@@ -116,6 +116,10 @@ int hertzdamp_c_pair_size(void);
  * those that make the phase-averaged e and contact time of the host's own N-step
  * collision exact; when no constants reach e at so few steps the status is
  * HERTZDAMP_HOST_UNREACHABLE (a larger N can).  On failure *p is invalid.
+ * The host-exact constants hold only when every hertzdamp_c_pair_kd gets tc = N dt with
+ * the dt the host integrates that contact with: a host that changes dt during a run
+ * initialises the pair again (or keeps tc/dt = N).  An Adams-Bashforth host
+ * (HERTZDAMP_HOST_MFIX_AB2) reads e one step after the first step without overlap.
  */
 int hertzdamp_c_pair_init(double e, int law, int end, int host, double steps, hertzdamp_pair_t *p);
 

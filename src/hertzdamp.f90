@@ -43,8 +43,9 @@ module hertzdamp
                               hertzdamp_law_reversal_exponent, hertzdamp_law_has_alpha_c, hertzdamp_tsuji_e, &
                               hertzdamp_tsuji_l, hertzdamp_tsuji_alpha
     use hertzdamp_constants, only: hertzdamp_z_max0, hertzdamp_tau_c0, hertzdamp_e1, hertzdamp_pi
-    use hertzdamp_scaling, only: hertzdamp_reduce, hertzdamp_expand
+    use hertzdamp_scaling, only: hertzdamp_reduce, hertzdamp_expand, hertzdamp_log_tstar, hertzdamp_safe_exp
     use hertzdamp_rk45, only: hertzdamp_collision, hertzdamp_rk45_collide, hertzdamp_rk45_default_tol, &
+                              hertzdamp_rk45_options, &
                               hertzdamp_alpha_min, hertzdamp_alpha_max, hertzdamp_alpha_c, &
                               hertzdamp_law_alpha_c
     use hertzdamp_series, only: hertzdamp_series_eval, hertzdamp_pade_eval, hertzdamp_series_max_order, &
@@ -108,10 +109,12 @@ module hertzdamp
               hertzdamp_law_has_alpha_c, hertzdamp_tsuji_e, hertzdamp_tsuji_l, hertzdamp_tsuji_alpha
     ! closed forms of the elastic limit (hertzdamp_constants)
     public :: hertzdamp_z_max0, hertzdamp_tau_c0, hertzdamp_e1, hertzdamp_pi
-    ! the dimensionless reduction (hertzdamp_scaling)
-    public :: hertzdamp_reduce, hertzdamp_expand
+    ! the dimensionless reduction, the log form of t* and the exponential that reports
+    ! overflow (hertzdamp_scaling)
+    public :: hertzdamp_reduce, hertzdamp_expand, hertzdamp_log_tstar, hertzdamp_safe_exp
     ! the reference integrator and the critical damping (hertzdamp_rk45)
-    public :: hertzdamp_collision, hertzdamp_rk45_collide, hertzdamp_rk45_default_tol, hertzdamp_alpha_min, &
+    public :: hertzdamp_collision, hertzdamp_rk45_collide, hertzdamp_rk45_default_tol, hertzdamp_rk45_options, &
+              hertzdamp_alpha_min, &
               hertzdamp_alpha_max, hertzdamp_alpha_c, hertzdamp_law_alpha_c
     ! the series in alpha and its Pade summation (hertzdamp_series)
     public :: hertzdamp_series_eval, hertzdamp_pade_eval, hertzdamp_series_max_order, &

@@ -46,12 +46,14 @@ module hertzdamp_capi
     use, intrinsic :: iso_c_binding, only: c_double, c_int, c_char, c_ptr, c_loc, c_null_char, c_intptr_t
     use hertzdamp_registry, only: HD_OK, HD_NO_REBOUND, HD_BAD_ARGUMENT, hertzdamp_message_table, hertzdamp_max_status, &
                                 hertzdamp_message_len
-    use hertzdamp_methods, only: hertzdamp_forward_dim, HD_METHOD_FIT
+    use hertzdamp_registry, only: HD_METHOD_FIT
+    use hertzdamp_methods, only: hertzdamp_forward_dim
     use hertzdamp_pair, only: hertzdamp_pair_t, hertzdamp_pair_size, hertzdamp_pair_init, hertzdamp_invert, hertzdamp_c_pair_kd, &
                               hertzdamp_pair_status, &
                               hertzdamp_invert_contact, hertzdamp_c_pair_kd_phase
     use hertzdamp_phase, only: hertzdamp_onset_phase, hertzdamp_phase_min_steps
-    use hertzdamp_host, only: HD_HOST_NONE, hertzdamp_host_stats, hertzdamp_host_mean, hertzdamp_host_min_steps
+    use hertzdamp_registry, only: HD_HOST_NONE
+    use hertzdamp_host, only: hertzdamp_host_stats, hertzdamp_host_mean, hertzdamp_host_min_steps
     ! ---- for the array and lookup entry points of the Python package (issue 35; the block at the end)
     use, intrinsic :: iso_c_binding, only: c_ptrdiff_t
     use hertzdamp_registry, only: HD_BAD_PAIR, HD_BAD_STEPS, HD_OUT_OF_RANGE, HD_END_FORCE, hertzdamp_end_name, &

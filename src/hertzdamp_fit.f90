@@ -50,7 +50,8 @@ module hertzdamp_fit
     use, intrinsic :: iso_fortran_env, only: int64
     use hertzdamp_registry, only: HD_OK, HD_BAD_END, HD_BAD_ALPHA, HD_OUTSIDE_VALIDITY
     use hertzdamp_registry, only: HD_END_OVERLAP, HD_END_FORCE
-    use hertzdamp_laws, only: HD_DAMPING_LINEAR, HD_DAMPING_TSUJI, HD_DAMPING_KUWABARA_KONO, hertzdamp_law_status
+    use hertzdamp_registry, only: HD_DAMPING_LINEAR, HD_DAMPING_TSUJI, HD_DAMPING_KUWABARA_KONO
+    use hertzdamp_laws, only: hertzdamp_law_status
     use hertzdamp_fit_data, only: fit_e_min_overlap, fit_e_min_force, fit_alpha_c, fit_alpha_max_force
     use hertzdamp_fit_kernels, only: hertzdamp_fit_neg_log, hertzdamp_fit_cbrt, hertzdamp_fit_exp_neg, &
                                      hertzdamp_fit_root5, kernel_inverse, kernel_inverse_one, kernel_invert_kd, &

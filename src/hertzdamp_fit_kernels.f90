@@ -34,8 +34,8 @@ module hertzdamp_fit_kernels
                                 HD_NO_REBOUND
     use hertzdamp_constants, only: tau_c0 => hertzdamp_tau_c0_value, hertzdamp_pi, &
                                    direct_lo => hertzdamp_direct_lo, direct_hi => hertzdamp_direct_hi
-    use hertzdamp_laws, only: HD_DAMPING_LINEAR, HD_DAMPING_TSUJI, HD_DAMPING_KUWABARA_KONO, &
-                              hertzdamp_alpha_c_tsuji
+    use hertzdamp_registry, only: HD_DAMPING_LINEAR, HD_DAMPING_TSUJI, HD_DAMPING_KUWABARA_KONO
+    use hertzdamp_laws, only: hertzdamp_alpha_c_tsuji
     use hertzdamp_fit_data, only: fit_alpha_c, fit_alpha_max_force, fit_e_min_force, fit_e_min_overlap, fit_fwd_c, &
                                   fit_fwd_first, fit_fwd_np, fit_fwd_scale, fit_fwd_x0, fit_fwd_x1, fit_inv_c, &
                                   fit_inv_first, fit_inv_np, fit_inv_scale, fit_inv_x0, fit_law_e_min, fit_linv_c, &
@@ -1202,67 +1202,11 @@ contains
 
     ! ================================================================ inverse kernels fused with k, d
 
-    ! BEGIN kd formula
-    ! The one place of the direct k, d formulas and of the masks of the array forms:
-    ! gen/fit_kernels_f90.py copies the text between these markers into the fused inverse
-    ! kernels of src/hertzdamp_fit_kernels.f90 (test/docs/cli_sync_fit.sh checks the copy).
+    include 'hertzdamp_kd_formula.inc'   ! direct_kd and the masks (one source with hertzdamp_pair)
 
-    !> The direct formulas (T_c, m, u in [1e-30, 1e30]: every intermediate a normal
-    !> double): r = tau_c (1/T_c) = 1/t*, s = (r/u)^(1/2), k = m r^2 s, d = alpha m r (r/u)^q.
-    !> 1/T_c and 1/(T_c u) do not depend on the pair, so that their divisions overlap
-    !> with the rest: only products and square roots follow.
-    pure elemental subroutine direct_kd(law, a, tau, tc, m, u, k, d)
-        integer, value :: law
-        real(wp), intent(in) :: a, tau, tc, m, u
-        real(wp), intent(out) :: k, d
-        real(wp) :: r, s
-        r = tau * (1.0_wp / tc)
-        s = sqrt(tau * (1.0_wp / (tc * u)))
-        k = m * (r * r) * s
-        if (law == HD_DAMPING_LINEAR) then
-            d = a * m * r
-        else if (law == HD_DAMPING_TSUJI) then
-            d = a * m * r * sqrt(s)
-        else
-            d = a * m * r * s
-        end if
-    end subroutine direct_kd
-
-    !> The flags of one contact of the array forms: sign bit set where T_c, m or u is
-    !> outside the direct range or given /= HD_OK (the contact is then redone by
-    !> contact_rest; its inputs to direct_kd are replaced by harmless ones, direct_harmless).
-    pure elemental integer(int64) function direct_flags(given, tc, m, u) result(flags)
-        integer, intent(in) :: given
-        real(wp), intent(in) :: tc, m, u
-        flags = ior(ior(direct_outside(tc), direct_outside(m)), ior(direct_outside(u), -int(given, int64)))
-    end function direct_flags
-
-    !> Sign bit set when x is outside the direct range [1e-30, 1e30] (NaN, infinities, zero,
-    !> negatives included), in integer arithmetic: the magnitude's bit pattern minus that
-    !> of the range's low end is negative below it, and (high - low) minus it is negative
-    !> above it; the sign bit of x itself flags negatives.
-    pure elemental integer(int64) function direct_outside(x)
-        real(wp), intent(in) :: x
-        integer(int64), parameter :: lo_bits = transfer(direct_lo, 0_int64), hi_bits = transfer(direct_hi, 0_int64)
-        integer(int64) :: ix, dx
-        ix = transfer(x, 0_int64)
-        dx = iand(ix, huge(ix)) - lo_bits
-        direct_outside = ior(ix, ior(dx, (hi_bits - lo_bits) - dx))
-    end function direct_outside
-
-    !> x where the sign bit of flags is clear, else 1 (bitwise, no branch): a harmless input
-    !> for a contact the direct formulas do not serve.
-    pure elemental real(wp) function direct_harmless(x, flags)
-        real(wp), intent(in) :: x
-        integer(int64), intent(in) :: flags
-        integer(int64) :: keep
-        keep = not(shifta(flags, 63))
-        direct_harmless = transfer(ior(iand(transfer(x, 0_int64), keep), iand(one_bits, not(keep))), 1.0_wp)
-    end function direct_harmless
-    ! END kd formula
-
-    !> Inverse kernel 1 fused with the direct k, d formulas (direct_kd, copied from
-    !> hertzdamp_pair) for n values all valid: alpha, tau_c, status as kernel_inverse_linear_overlap, then
+    !> Inverse kernel 1 fused with the direct k, d formulas (direct_kd of
+    !> hertzdamp_kd_formula.inc, as hertzdamp_pair)
+    !> for n values all valid: alpha, tau_c, status as kernel_inverse_linear_overlap, then
     !> k, d and the flags (0) of contacts_kd, in one loop; done = .false. and no outputs when a
     !> value is invalid (e outside [e_min, 1], or T_c, m or u outside the direct range).
     pure subroutine kernel_invert_kd_linear_overlap(n, e, tc, m, u, alpha, tau_c, status, k, d, flags, done)
@@ -1345,8 +1289,9 @@ contains
         end associate
     end subroutine kernel_invert_kd_linear_overlap
 
-    !> Inverse kernel 2 fused with the direct k, d formulas (direct_kd, copied from
-    !> hertzdamp_pair) for n values all valid: alpha, tau_c, status as kernel_inverse_linear_force, then
+    !> Inverse kernel 2 fused with the direct k, d formulas (direct_kd of
+    !> hertzdamp_kd_formula.inc, as hertzdamp_pair)
+    !> for n values all valid: alpha, tau_c, status as kernel_inverse_linear_force, then
     !> k, d and the flags (0) of contacts_kd, in one loop; done = .false. and no outputs when a
     !> value is invalid (e outside [e_min, 1], or T_c, m or u outside the direct range).
     pure subroutine kernel_invert_kd_linear_force(n, e, tc, m, u, alpha, tau_c, status, k, d, flags, done)
@@ -1449,8 +1394,9 @@ contains
         end associate
     end subroutine kernel_invert_kd_linear_force
 
-    !> Inverse kernel 3 fused with the direct k, d formulas (direct_kd, copied from
-    !> hertzdamp_pair) for n values all valid: alpha, tau_c, status as kernel_inverse_tsuji_overlap, then
+    !> Inverse kernel 3 fused with the direct k, d formulas (direct_kd of
+    !> hertzdamp_kd_formula.inc, as hertzdamp_pair)
+    !> for n values all valid: alpha, tau_c, status as kernel_inverse_tsuji_overlap, then
     !> k, d and the flags (0) of contacts_kd, in one loop; done = .false. and no outputs when a
     !> value is invalid (e outside [e_min, 1], or T_c, m or u outside the direct range).
     pure subroutine kernel_invert_kd_tsuji_overlap(n, e, tc, m, u, alpha, tau_c, status, k, d, flags, done)
@@ -1532,8 +1478,9 @@ contains
         end associate
     end subroutine kernel_invert_kd_tsuji_overlap
 
-    !> Inverse kernel 4 fused with the direct k, d formulas (direct_kd, copied from
-    !> hertzdamp_pair) for n values all valid: alpha, tau_c, status as kernel_inverse_tsuji_force, then
+    !> Inverse kernel 4 fused with the direct k, d formulas (direct_kd of
+    !> hertzdamp_kd_formula.inc, as hertzdamp_pair)
+    !> for n values all valid: alpha, tau_c, status as kernel_inverse_tsuji_force, then
     !> k, d and the flags (0) of contacts_kd, in one loop; done = .false. and no outputs when a
     !> value is invalid (e outside [e_min, 1], or T_c, m or u outside the direct range).
     pure subroutine kernel_invert_kd_tsuji_force(n, e, tc, m, u, alpha, tau_c, status, k, d, flags, done)
@@ -1652,8 +1599,9 @@ contains
         end associate
     end subroutine kernel_invert_kd_tsuji_force
 
-    !> Inverse kernel 5 fused with the direct k, d formulas (direct_kd, copied from
-    !> hertzdamp_pair) for n values all valid: alpha, tau_c, status as kernel_inverse_kuwabara_kono_overlap, then
+    !> Inverse kernel 5 fused with the direct k, d formulas (direct_kd of
+    !> hertzdamp_kd_formula.inc, as hertzdamp_pair)
+    !> for n values all valid: alpha, tau_c, status as kernel_inverse_kuwabara_kono_overlap, then
     !> k, d and the flags (0) of contacts_kd, in one loop; done = .false. and no outputs when a
     !> value is invalid (e outside [e_min, 1], or T_c, m or u outside the direct range).
     pure subroutine kernel_invert_kd_kuwabara_kono_overlap(n, e, tc, m, u, alpha, tau_c, status, k, d, flags, done)
@@ -1740,8 +1688,9 @@ contains
         end associate
     end subroutine kernel_invert_kd_kuwabara_kono_overlap
 
-    !> Inverse kernel 6 fused with the direct k, d formulas (direct_kd, copied from
-    !> hertzdamp_pair) for n values all valid: alpha, tau_c, status as kernel_inverse_kuwabara_kono_force, then
+    !> Inverse kernel 6 fused with the direct k, d formulas (direct_kd of
+    !> hertzdamp_kd_formula.inc, as hertzdamp_pair)
+    !> for n values all valid: alpha, tau_c, status as kernel_inverse_kuwabara_kono_force, then
     !> k, d and the flags (0) of contacts_kd, in one loop; done = .false. and no outputs when a
     !> value is invalid (e outside [e_min, 1], or T_c, m or u outside the direct range).
     pure subroutine kernel_invert_kd_kuwabara_kono_force(n, e, tc, m, u, alpha, tau_c, status, k, d, flags, done)

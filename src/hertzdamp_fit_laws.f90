@@ -32,8 +32,8 @@ module hertzdamp_fit_laws
     use hertzdamp_kinds, only: hertzdamp_rk
     use hertzdamp_registry, only: HD_OK, HD_NO_REBOUND, HD_BAD_END, HD_OUTSIDE_VALIDITY, HD_OUT_OF_RANGE
     use hertzdamp_registry, only: HD_END_OVERLAP, HD_END_FORCE
-    use hertzdamp_laws, only: HD_DAMPING_LINEAR, HD_DAMPING_TSUJI, hertzdamp_law_status, hertzdamp_alpha_c_tsuji, &
-                              hertzdamp_tsuji_l
+    use hertzdamp_registry, only: HD_DAMPING_LINEAR, HD_DAMPING_TSUJI
+    use hertzdamp_laws, only: hertzdamp_law_status, hertzdamp_alpha_c_tsuji, hertzdamp_tsuji_l
     use hertzdamp_fit, only: hertzdamp_fit_inverse, hertzdamp_fit_forward, hertzdamp_approx_alpha_status, &
                              hertzdamp_fit_e_min_overlap, hertzdamp_fit_e_min_force, hertzdamp_fit_neg_log, &
                              hertzdamp_fit_cbrt

@@ -16,7 +16,7 @@
 !> - `mfix-ab2`: v_(n+1) = v_n + h (3 a_n - a_(n-1))/2, z_(n+1) = z_n + h (v_n + v_(n+1))/2,
 !>   a_(n-1) = 0 before the contact, the last contact acceleration acting once more
 !>   after the release;
-!> - `verlet`: the scene engine of this repository (packages/scene/src/hertzdamp_dem_engine.f90):
+!> - `verlet`: the scene engine of this repository (packages/dem/src/hertzdamp_dem_engine.f90):
 !>   velocity Verlet with the extrapolated velocity in the damping and its onset and
 !>   release impulse corrections;
 !> - `lammps-phase`: `lammps` with the onset/release correction of the LAMMPS plugin
@@ -41,13 +41,12 @@ module hertzdamp_host
     use hertzdamp_kinds, only: hertzdamp_rk
     use hertzdamp_registry, only: HD_OK, HD_NO_REBOUND, HD_NO_CONVERGENCE, HD_BAD_ALPHA, HD_BAD_END, HD_BAD_ARGUMENT, &
                                 HD_BAD_HOST, HD_BAD_STEPS, HD_HOST_UNREACHABLE
-    use hertzdamp_registry, only: HD_END_OVERLAP, HD_END_FORCE, HD_HOST_NONE, HD_HOST_LAMMPS, HD_HOST_MFIX_EULER, &
-                                  HD_HOST_MFIX_AB2, HD_HOST_VERLET, HD_HOST_LAMMPS_PHASE, hertzdamp_min_host, &
-                                  hertzdamp_max_host, hertzdamp_host_name, hertzdamp_host_code, hertzdamp_host_order, &
-                                  hertzdamp_host_in_engine
+    use hertzdamp_registry, only: HD_END_OVERLAP, HD_END_FORCE, HD_HOST_NONE, HD_HOST_MFIX_AB2, HD_HOST_VERLET, &
+                                  HD_HOST_LAMMPS_PHASE, hertzdamp_min_host, hertzdamp_max_host, hertzdamp_host_name, &
+                                  hertzdamp_host_order
     use hertzdamp_constants, only: hertzdamp_pi
-    use hertzdamp_laws, only: hertzdamp_law_status, hertzdamp_law_q, HD_DAMPING_LINEAR, HD_DAMPING_TSUJI, &
-                              HD_DAMPING_KUWABARA_KONO
+    use hertzdamp_registry, only: hertzdamp_law_q, HD_DAMPING_LINEAR, HD_DAMPING_TSUJI, HD_DAMPING_KUWABARA_KONO
+    use hertzdamp_laws, only: hertzdamp_law_status
     use hertzdamp_fit, only: hertzdamp_fit_inverse
     use hertzdamp_rk45, only: hertzdamp_rk45_collide, hertzdamp_collision
     implicit none
@@ -56,9 +55,8 @@ module hertzdamp_host
     integer, parameter :: wp = hertzdamp_rk
 
     ! The host codes, names and attributes (the order of their error, whether the scene
-    ! engine runs them) are rows of data/registry.toml (hertzdamp_registry).
-    public :: HD_HOST_NONE, HD_HOST_LAMMPS, HD_HOST_MFIX_EULER, HD_HOST_MFIX_AB2, HD_HOST_VERLET, HD_HOST_LAMMPS_PHASE
-    public :: hertzdamp_max_host, hertzdamp_host_name, hertzdamp_host_code, hertzdamp_host_order, hertzdamp_host_in_engine
+    ! engine runs them) are rows of data/registry.toml: hertzdamp_registry has them (and the
+    ! umbrella exports them); the schemes' steppers below are dispatched by code.
 
     !> Smallest and largest number of steps per contact of hertzdamp_host_solve.
     real(wp), parameter, public :: hertzdamp_host_steps_min = 2.0_wp, hertzdamp_host_steps_max = 1.0e5_wp
@@ -483,7 +481,7 @@ contains
         r%status = HD_NO_REBOUND
     end subroutine run_ab2
 
-    !> The verlet scheme, the scene engine's sequence for one contact (packages/scene/src/hertzdamp_dem_engine.f90,
+    !> The verlet scheme, the scene engine's sequence for one contact (packages/dem/src/hertzdamp_dem_engine.f90,
     !> doc/host-schemes.md): half kick, drift, the velocity v_pred = v_half + h/2 A +
     !> h/2 (A - A_prev) in the damping, the force, the closing half kick plus the impulse
     !> corrections of the onset step (the part of the step in contact, the Hertz and
@@ -561,7 +559,7 @@ contains
 
     !> The engine's trapezoid error g_p(theta) = zeta_H(-p, theta) + theta^(p+1)/(p+1) -
     !> theta^p/2 of a force c s^p starting (or ending) a fraction theta of a step away
-    !> (packages/scene/src/hertzdamp_dem_engine.f90: start_error p = 3/2, trapezoid_error p = q).
+    !> (packages/dem/src/hertzdamp_dem_engine.f90: start_error p = 3/2, trapezoid_error p = q).
     pure real(wp) function trapezoid_g(p, theta) result(g)
         real(wp), intent(in) :: p, theta
         real(wp) :: tp

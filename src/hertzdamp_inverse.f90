@@ -22,11 +22,13 @@ module hertzdamp_inverse
     use hertzdamp_registry, only: HD_END_OVERLAP, HD_END_FORCE
     use hertzdamp_constants, only: hertzdamp_e1, hertzdamp_tau_c0
     use hertzdamp_rk45, only: hertzdamp_collision, hertzdamp_rk45_collide, hertzdamp_law_alpha_c
-    use hertzdamp_methods, only: HD_METHOD_SERIES, HD_METHOD_PADE, HD_METHOD_COMPACT, HD_METHOD_FIT, HD_METHOD_ITERATIVE, &
-                                 HD_METHOD_RK45, HD_METHOD_FIRST_ORDER, hertzdamp_forward_alpha, hertzdamp_default_accuracy
+    use hertzdamp_registry, only: HD_METHOD_SERIES, HD_METHOD_PADE, HD_METHOD_COMPACT, HD_METHOD_FIT, &
+                                  HD_METHOD_ITERATIVE, HD_METHOD_RK45, HD_METHOD_FIRST_ORDER
+    use hertzdamp_methods, only: hertzdamp_forward_alpha, hertzdamp_default_accuracy
     use hertzdamp_fit, only: hertzdamp_fit_inverse
     use hertzdamp_fit_laws, only: hertzdamp_fit_law_e_min
-    use hertzdamp_laws, only: HD_DAMPING_LINEAR, hertzdamp_law_status, hertzdamp_law_has_alpha_c
+    use hertzdamp_registry, only: HD_DAMPING_LINEAR
+    use hertzdamp_laws, only: hertzdamp_law_status, hertzdamp_law_has_alpha_c
     use hertzdamp_compact, only: hertzdamp_compact_inverse, hertzdamp_compact_e_min_overlap, &
                                  hertzdamp_compact_e_min_force
     use hertzdamp_series, only: hertzdamp_pade_alpha_max

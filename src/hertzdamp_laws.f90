@@ -24,9 +24,8 @@ module hertzdamp_laws
 
     integer, parameter :: wp = hertzdamp_rk
 
-    ! The law codes, names and exponents are rows of data/registry.toml (hertzdamp_registry).
-    public :: HD_DAMPING_LINEAR, HD_DAMPING_TSUJI, HD_DAMPING_KUWABARA_KONO, hertzdamp_max_law
-    public :: hertzdamp_law_name, hertzdamp_law_code, hertzdamp_law_q
+    ! The law codes, names and exponents are rows of data/registry.toml: hertzdamp_registry
+    ! has them (and the umbrella exports them); the laws' exact facts follow.
 
     !> Critical damping of the tsuji law with the overlap end: alpha_c = sqrt(5) exactly
     !> (the law maps onto a linear oscillator of damping ratio alpha/sqrt(5)).

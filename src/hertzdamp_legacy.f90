@@ -1,7 +1,7 @@
 !> HERTZDAMP_MESSAGE(IERR, TEXT): the message of a status code, copied into text
 !> (truncated or blank-padded).  The one legacy entry point that is an external
 !> subroutine: a character argument has no binding-label form.  It uses
-!> hertzdamp_status only, which sees no IEEE module (see hertzdamp_capi on the
+!> hertzdamp_registry only, which sees no IEEE module (see hertzdamp_capi on the
 !> floating-point environment).  Every other legacy entry point (HERTZDAMP_INVERT ...)
 !> is a module procedure of hertzdamp_capi with the external's link name.
 subroutine hertzdamp_message(ierr, text)

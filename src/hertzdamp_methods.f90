@@ -8,7 +8,8 @@ module hertzdamp_methods
     use hertzdamp_registry, only: HD_OK, HD_NO_REBOUND, HD_NOT_SUPPORTED, HD_BAD_ARGUMENT, HD_OUT_OF_RANGE, &
                                 HD_OUTSIDE_VALIDITY, HD_BAD_ORDER, HD_BAD_END, HD_INACCURATE
     use hertzdamp_registry, only: HD_END_OVERLAP, HD_END_FORCE
-    use hertzdamp_laws, only: HD_DAMPING_LINEAR, hertzdamp_law_status
+    use hertzdamp_registry, only: HD_DAMPING_LINEAR
+    use hertzdamp_laws, only: hertzdamp_law_status
     use hertzdamp_series, only: hertzdamp_series_eval, hertzdamp_pade_eval
     use hertzdamp_scaling, only: hertzdamp_reduce
     use hertzdamp_rk45, only: hertzdamp_collision, hertzdamp_rk45_collide, hertzdamp_rk45_default_tol
@@ -22,9 +23,8 @@ module hertzdamp_methods
 
     integer, parameter :: wp = hertzdamp_rk
 
-    ! The method codes and names are rows of data/registry.toml (hertzdamp_registry).
-    public :: HD_METHOD_RK45, HD_METHOD_SERIES, HD_METHOD_PADE, HD_METHOD_COMPACT, HD_METHOD_FIT, HD_METHOD_ITERATIVE, &
-              HD_METHOD_FIRST_ORDER, hertzdamp_method_name, hertzdamp_method_code
+    ! The method codes and names are rows of data/registry.toml: hertzdamp_registry has them
+    ! (and the umbrella exports them).
 
     !> Default accuracy asked of the series and Pade formulas (relative): where their own
     !> error estimate exceeds it, they answer HD_INACCURATE instead of HD_OK.

@@ -44,15 +44,16 @@ module hertzdamp_pair
     use hertzdamp_registry, only: hertzdamp_pair_size, hertzdamp_pair_oblique_size, hertzdamp_pair_phase_size
     use hertzdamp_registry, only: HD_OK, HD_BAD_TIME, HD_BAD_MASS, HD_BAD_VELOCITY, HD_BAD_KPHYS, HD_OUT_OF_RANGE, &
                                 HD_BAD_PAIR, HD_BAD_ARGUMENT, HD_BAD_PHASE, HD_NO_PHASE_TABLE
-    use hertzdamp_laws, only: HD_DAMPING_LINEAR, HD_DAMPING_TSUJI, HD_DAMPING_KUWABARA_KONO, hertzdamp_law_q, &
-                              hertzdamp_max_law
+    use hertzdamp_registry, only: HD_DAMPING_LINEAR, HD_DAMPING_TSUJI, HD_DAMPING_KUWABARA_KONO, hertzdamp_law_q, &
+                                  hertzdamp_max_law
     use hertzdamp_constants, only: direct_lo => hertzdamp_direct_lo, direct_hi => hertzdamp_direct_hi
     use hertzdamp_scaling, only: hertzdamp_safe_exp, hertzdamp_log_tstar, hertzdamp_log_k, hertzdamp_scale_log_d
-    use hertzdamp_methods, only: HD_METHOD_FIT
+    use hertzdamp_registry, only: HD_METHOD_FIT
     use hertzdamp_fit, only: hertzdamp_fit_inverse, hertzdamp_fit_inverse_n, hertzdamp_fit_invert_kd_n
     use hertzdamp_inverse, only: hertzdamp_invert_alpha, hertzdamp_invert_options
-    use hertzdamp_host, only: HD_HOST_NONE, hertzdamp_host_order, hertzdamp_host_stats, hertzdamp_host_solve, &
-                              hertzdamp_max_host, hertzdamp_host_steps_min, hertzdamp_host_steps_max
+    use hertzdamp_registry, only: HD_HOST_NONE, hertzdamp_host_order, hertzdamp_max_host
+    use hertzdamp_host, only: hertzdamp_host_stats, hertzdamp_host_solve, hertzdamp_host_steps_min, &
+                              hertzdamp_host_steps_max
     use hertzdamp_phase, only: hertzdamp_phase_build, hertzdamp_phase_table_ok, hertzdamp_phase_header
     implicit none
     private
@@ -424,7 +425,9 @@ contains
     ! ================================================================ k, d of one contact
 
     !> k and d of one contact from the constants of its pair (see the module note).
-    !> The status names the bad argument (checked in this order, the last one wins: T_c,
+    !> A host-exact pair's constants hold only for tc = N dt, with N the pair's steps and dt
+    !> the step the host integrates this contact with (a host that changes dt initialises
+    !> the pair again).  The status names the bad argument (checked in this order, the last one wins: T_c,
     !> m, u, k_phys) or HD_BAD_PAIR; on failure k = d = 0 (tstar = 0, bound_active false).
     pure elemental subroutine pair_kd_one(pair, tc, m, u, k, d, status, k_phys, bound_active, tstar)
         type(hertzdamp_pair_t), intent(in) :: pair          !! constants of the material pair
@@ -596,64 +599,9 @@ contains
         end if
     end subroutine contact_rest
 
-    ! BEGIN kd formula
-    ! The one place of the direct k, d formulas and of the masks of the array forms:
-    ! gen/fit_kernels_f90.py copies the text between these markers into the fused inverse
-    ! kernels of src/hertzdamp_fit_kernels.f90 (test/docs/cli_sync_fit.sh checks the copy).
-
-    !> The direct formulas (T_c, m, u in [1e-30, 1e30]: every intermediate a normal
-    !> double): r = tau_c (1/T_c) = 1/t*, s = (r/u)^(1/2), k = m r^2 s, d = alpha m r (r/u)^q.
-    !> 1/T_c and 1/(T_c u) do not depend on the pair, so that their divisions overlap
-    !> with the rest: only products and square roots follow.
-    pure elemental subroutine direct_kd(law, a, tau, tc, m, u, k, d)
-        integer, value :: law
-        real(wp), intent(in) :: a, tau, tc, m, u
-        real(wp), intent(out) :: k, d
-        real(wp) :: r, s
-        r = tau * (1.0_wp / tc)
-        s = sqrt(tau * (1.0_wp / (tc * u)))
-        k = m * (r * r) * s
-        if (law == HD_DAMPING_LINEAR) then
-            d = a * m * r
-        else if (law == HD_DAMPING_TSUJI) then
-            d = a * m * r * sqrt(s)
-        else
-            d = a * m * r * s
-        end if
-    end subroutine direct_kd
-
-    !> The flags of one contact of the array forms: sign bit set where T_c, m or u is
-    !> outside the direct range or given /= HD_OK (the contact is then redone by
-    !> contact_rest; its inputs to direct_kd are replaced by harmless ones, direct_harmless).
-    pure elemental integer(int64) function direct_flags(given, tc, m, u) result(flags)
-        integer, intent(in) :: given
-        real(wp), intent(in) :: tc, m, u
-        flags = ior(ior(direct_outside(tc), direct_outside(m)), ior(direct_outside(u), -int(given, int64)))
-    end function direct_flags
-
-    !> Sign bit set when x is outside the direct range [1e-30, 1e30] (NaN, infinities, zero,
-    !> negatives included), in integer arithmetic: the magnitude's bit pattern minus that
-    !> of the range's low end is negative below it, and (high - low) minus it is negative
-    !> above it; the sign bit of x itself flags negatives.
-    pure elemental integer(int64) function direct_outside(x)
-        real(wp), intent(in) :: x
-        integer(int64), parameter :: lo_bits = transfer(direct_lo, 0_int64), hi_bits = transfer(direct_hi, 0_int64)
-        integer(int64) :: ix, dx
-        ix = transfer(x, 0_int64)
-        dx = iand(ix, huge(ix)) - lo_bits
-        direct_outside = ior(ix, ior(dx, (hi_bits - lo_bits) - dx))
-    end function direct_outside
-
-    !> x where the sign bit of flags is clear, else 1 (bitwise, no branch): a harmless input
-    !> for a contact the direct formulas do not serve.
-    pure elemental real(wp) function direct_harmless(x, flags)
-        real(wp), intent(in) :: x
-        integer(int64), intent(in) :: flags
-        integer(int64) :: keep
-        keep = not(shifta(flags, 63))
-        direct_harmless = transfer(ior(iand(transfer(x, 0_int64), keep), iand(one_bits, not(keep))), 1.0_wp)
-    end function direct_harmless
-    ! END kd formula
+    ! the direct k, d formulas and the masks of the array forms (also included by the
+    ! fused kernels of hertzdamp_fit_kernels)
+    include 'hertzdamp_kd_formula.inc'
 
     !> The bound on the direct path (k_phys <= k): k = k_phys, t* = (m/k_phys)^(2/5) u^(-1/5),
     !> d = alpha_eff m t*^(-1) (u t*)^(-q) (tsuji: alpha_eff sqrt(m k_phys), which needs no t*

@@ -38,8 +38,8 @@ module hertzdamp_phase
     use hertzdamp_kinds, only: hertzdamp_rk
     use hertzdamp_registry, only: HD_OK, HD_PHASE_UNREACHABLE, HD_BAD_PHASE, HD_BAD_VELOCITY, HD_BAD_TIME, &
                                 HD_BAD_STEPS, HD_HOST_UNREACHABLE, hertzdamp_pair_phase_size
-    use hertzdamp_laws, only: HD_DAMPING_TSUJI
-    use hertzdamp_host, only: HD_HOST_NONE, hertzdamp_host_collide, hertzdamp_host_solve, hertzdamp_host_stats, &
+    use hertzdamp_registry, only: HD_DAMPING_TSUJI, HD_HOST_NONE
+    use hertzdamp_host, only: hertzdamp_host_collide, hertzdamp_host_solve, hertzdamp_host_stats, &
                               hertzdamp_host_steps_min, hertzdamp_host_steps_max, hertzdamp_host_h_min, &
                               hertzdamp_host_h_max, hertzdamp_host_alpha_max
     implicit none

@@ -649,7 +649,7 @@ contains
         if (host >= hertzdamp_min_host .and. host <= hertzdamp_max_host) p = host_order_table(host)
     end function hertzdamp_host_order
 
-    !> Whether the scene engine (packages/scene) integrates contacts with a host scheme.
+    !> Whether the scene engine (packages/dem) integrates contacts with a host scheme.
     pure elemental logical function hertzdamp_host_in_engine(host) result(yes)
         integer, intent(in) :: host   !! HD_HOST_*
         yes = .false.

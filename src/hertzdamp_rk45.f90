@@ -34,9 +34,9 @@ module hertzdamp_rk45
     use hertzdamp_registry, only: HD_OK, HD_NO_REBOUND, HD_MAX_STEPS, HD_STEP_UNDERFLOW, HD_BAD_ALPHA, HD_BAD_END, &
                                 HD_BAD_TOL, HD_NO_CONVERGENCE, HD_INACCURATE, HD_NOT_SUPPORTED, HD_BAD_LAW
     use hertzdamp_registry, only: HD_END_OVERLAP, HD_END_FORCE
-    use hertzdamp_laws, only: HD_DAMPING_LINEAR, HD_DAMPING_TSUJI, HD_DAMPING_KUWABARA_KONO, hertzdamp_law_status, &
-                              hertzdamp_law_has_alpha_c, hertzdamp_law_q, &
-                              hertzdamp_alpha_c_tsuji, hertzdamp_tsuji_alpha
+    use hertzdamp_registry, only: HD_DAMPING_LINEAR, HD_DAMPING_TSUJI, HD_DAMPING_KUWABARA_KONO, hertzdamp_law_q
+    use hertzdamp_laws, only: hertzdamp_law_status, hertzdamp_law_has_alpha_c, hertzdamp_alpha_c_tsuji, &
+                              hertzdamp_tsuji_alpha
     use hertzdamp_fit_data, only: fit_alpha_c
     use hertzdamp_rk45_kernel, only: hertzdamp_rk45_stats, hertzdamp_local_series_t, HD_MODEL_HERTZ, &
                                      HD_MODEL_FORCE, HD_EVENT_TURN, HD_EVENT_FORCE, HD_EVENT_SWITCH, &

@@ -19,7 +19,8 @@ module hertzdamp_scaling
     use hertzdamp_kinds, only: hertzdamp_rk
     use hertzdamp_registry, only: HD_OK, HD_BAD_MASS, HD_BAD_VELOCITY, HD_BAD_STIFFNESS, &
                                 HD_BAD_DAMPING, HD_BAD_ALPHA, HD_BAD_TIME, HD_OUT_OF_RANGE
-    use hertzdamp_laws, only: hertzdamp_law_q, hertzdamp_law_status
+    use hertzdamp_registry, only: hertzdamp_law_q
+    use hertzdamp_laws, only: hertzdamp_law_status
     use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
     implicit none
     private

@@ -14,7 +14,7 @@ runs=3
 if [ "${1:-}" = "-n" ]; then runs=$2; shift 2; fi
 [ $# -gt 0 ] || set -- "$root/src"
 fpm=${FPM:-$root/.venv/bin/fpm}
-flags=$(sed -n 's/^RELEASE_FLAGS := //p' "$root/Makefile")
+flags=$(grep -v '^#' "$root/data/release_flags.txt")
 tmp=$(mktemp -d); trap 'rm -rf "$tmp"' EXIT
 source "$root/tools/core_package.bash"
 n=0

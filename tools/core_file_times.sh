@@ -9,7 +9,7 @@
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 src=$(cd "${1:-$root/src}" && pwd)
-flags=$(sed -n 's/^RELEASE_FLAGS := //p' "$root/Makefile")
+flags=$(grep -v '^#' "$root/data/release_flags.txt")
 tmp=$(mktemp -d); trap 'rm -rf "$tmp"' EXIT
 cp -r "$src"/. "$tmp"/
 cd "$tmp"

@@ -11,7 +11,7 @@ set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 ref=${1:-main}
 shift || true
-release=$(sed -n 's/^RELEASE_FLAGS := //p' "$root/Makefile")
+release=$(grep -v '^#' "$root/data/release_flags.txt")
 if [ $# -gt 0 ]; then flagsets=("$@"); else flagsets=("$release" "-O2 -g -fPIC"); fi
 fpm=${FPM:-$root/.venv/bin/fpm}
 tmp=$(mktemp -d); trap 'rm -rf "$tmp"' EXIT

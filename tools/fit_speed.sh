@@ -10,7 +10,7 @@ root=$(cd "$(dirname "$0")/.." && pwd)
 ref=${1:-main}
 rounds=${2:-5}
 fpm=${FPM:-$root/.venv/bin/fpm}
-flags=$(sed -n 's/^RELEASE_FLAGS := //p' "$root/Makefile")
+flags=$(grep -v '^#' "$root/data/release_flags.txt")
 tmp=$(mktemp -d); trap 'rm -rf "$tmp"' EXIT
 mkdir -p "$tmp/refsrc"
 git -C "$root" archive "$ref" src | tar -x -C "$tmp/refsrc"

@@ -6,6 +6,8 @@ from pathlib import Path
 import numpy as np
 import pytest
 
+import hertzdamp
+
 ROOT = Path(__file__).resolve().parents[2]
 
 
@@ -36,5 +38,11 @@ def test_guide_first_session():
     assert np.all(np.abs(ns["e"] - 0.9) < 1e-12)
     assert (f"{ns['m']:.3e}", f"{ns['r']:.0e}", f"{ns['k_phys']:.3e}") == ("5.236e-06", "5e-04", "9.965e+08")
     assert f"{ns['dt_max']:.6e}" == "4.578466e-07"
-    assert (round(ns["spread"], 4), ns["n_min"]) == (0.0165, 4)
+    assert (round(ns["spread"], 4), ns["n_min"]) == (0.0165, 3)
+    # n_min is the fewest N the pair init accepts: N - 1 is refused, N .. N + 3 are not
+    n_min = ns["n_min"]
+    with pytest.raises(hertzdamp.HertzdampError):
+        hertzdamp.Pair(0.2, host="lammps", steps=n_min - 1)
+    for n in range(n_min, n_min + 4):
+        hertzdamp.Pair(0.2, host="lammps", steps=n)
     assert ns["k20"].shape == (5,)

@@ -11,7 +11,7 @@
 !> with the functions sqrt, ln, abs, max, min, beta, P6, thornton, Vstar, the constants pi and eps_d,
 !> the derived name tstar = (m/(k*sqrt(u)))^(2/5) and any names bound by the caller.
 module hertzdamp_test_expr
-    use hertzdamp_kinds, only: hertzdamp_rk
+    use hertzdamp, only: hertzdamp_rk
     implicit none
     private
 

@@ -201,7 +201,7 @@ contains
         end do
     end function mfix
 
-    !> The scene engine (packages/scene/src/hertzdamp_dem_engine.f90) for one contact, in its own
+    !> The scene engine (packages/dem/src/hertzdamp_dem_engine.f90) for one contact, in its own
     !> order: drift with the opening half kick, the extrapolated velocity, the force and
     !> its end (overlap: impulse of the partial step and the trapezoid errors; force:
     !> bisection for the force zero on the step's linear model), the onset with its

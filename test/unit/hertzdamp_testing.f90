@@ -2,7 +2,7 @@
 !> and ends with `call suite%finish()`, which prints `<name>: P passed, F failed`
 !> and exits non-zero when any check failed.  (test-drive cannot be fetched here.)
 module hertzdamp_testing
-    use hertzdamp_kinds, only: hertzdamp_rk
+    use hertzdamp, only: hertzdamp_rk
     use, intrinsic :: ieee_arithmetic, only: ieee_is_finite, ieee_is_nan
     use, intrinsic :: iso_fortran_env, only: output_unit
     implicit none

@@ -3,11 +3,11 @@
 !> agreement of the two GSL steppers, the no-rebound certificate and the force
 !> definition.  Prints only the summary line on success.
 program test_gsl_peer
-    use hertzdamp_kinds, only: hertzdamp_rk
+    use hertzdamp, only: hertzdamp_rk
     use hertzdamp_testing, only: test_suite, new_suite
     use hertzdamp_gsl, only: hertzdamp_gsl_collide, gsl_sf_beta, HERTZDAMP_GSL_RKF45, HERTZDAMP_GSL_RK8PD
-    use hertzdamp_registry, only: HD_OK, HD_NO_REBOUND, HD_BAD_ARGUMENT, HD_BAD_LAW
-    use hertzdamp_registry, only: HD_END_OVERLAP, HD_END_FORCE
+    use hertzdamp, only: HD_OK, HD_NO_REBOUND, HD_BAD_ARGUMENT, HD_BAD_LAW
+    use hertzdamp, only: HD_END_OVERLAP, HD_END_FORCE
     use, intrinsic :: ieee_arithmetic, only: ieee_is_finite, ieee_is_nan
     implicit none
 

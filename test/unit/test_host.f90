@@ -4,7 +4,7 @@
 !>   with two half kicks, MFiX's EULER and ADAMS_BASHFORTH in MFiX's form, the scene
 !>   engine's sequence with its corrections, the plugin's phase force with this program's
 !>   own Hurwitz zeta) agrees with hertzdamp_host_collide at random phases;
-!> - the real engines: the scene engine of packages/scene/ (verlet) and Debian's LAMMPS (`lmp`,
+!> - the real engines: the scene engine of packages/dem/ (verlet) and Debian's LAMMPS (`lmp`,
 !>   pair_style granular hertz with damping velocity and viscoelastic, with and without
 !>   limit_damping) give the same e per phase;
 !> - the phase means against this program's own breakpoint search and quadrature
@@ -63,7 +63,8 @@ contains
         end do
         call s%check(hertzdamp_host_name(HD_HOST_MFIX_AB2) == 'mfix-ab2' .and. &
                      hertzdamp_host_name(HD_HOST_LAMMPS_PHASE) == 'lammps-phase', 'host names')
-        call s%check(hertzdamp_host_code('liggghts') == -1 .and. hertzdamp_host_name(6) == 'unknown', 'unknown host')
+        call s%check(hertzdamp_host_code('liggghts') == -1 .and. hertzdamp_host_name(hertzdamp_max_host + 1) == 'unknown', &
+                     'unknown host')
         call s%check(HD_BAD_HOST == 26 .and. HD_BAD_STEPS == 27 .and. HD_HOST_UNREACHABLE == 28, 'status numbers')
         do k = 26, 28
             call s%check(len(hertzdamp_message(k)) > 30 .and. hertzdamp_message(k) /= 'unknown status code', &
@@ -179,7 +180,7 @@ contains
 
     ! ================================================================ the real engines
 
-    !> The scene engine of packages/scene/ (hertzdamp_dem_run), two steel spheres head-on at 1 m/s
+    !> The scene engine of packages/dem/ (hertzdamp_dem_run), two steel spheres head-on at 1 m/s
     !> with T_c = N dt: its contact's e = u_out/u_in and (t_end - t_start)/t* against
     !> hertzdamp_host_collide with the contact's alpha and t* (from its k and d) and the
     !> phase of its touch.  Agreement within 1e-10 (the engine's start_error keeps three
@@ -655,7 +656,7 @@ contains
         integer :: st, nmin
         x = 0.0_wp
         ! collide: host, law, end, alpha, h, phi (in this order)
-        call hertzdamp_host_collide(0.3_wp, 0.1_wp, 0.5_wp, 0, 0, 6, e, tau, st)
+        call hertzdamp_host_collide(0.3_wp, 0.1_wp, 0.5_wp, 0, 0, hertzdamp_max_host + 1, e, tau, st)
         call s%check(st == HD_BAD_HOST .and. e == 0.0_wp .and. tau == 0.0_wp, 'collide: bad host')
         call hertzdamp_host_collide(0.3_wp, 0.1_wp, 0.5_wp, 3, 0, 1, e, tau, st)
         call s%check(st == HD_BAD_LAW, 'collide: bad law')

@@ -23,7 +23,7 @@ program test_scene
                              hertzdamp_dem_check_row, hertzdamp_dem_checks_of, hertzdamp_dem_verlet_energy, &
                              HD_CHECK_FAIL, HD_CHECK_PASS, hertzdamp_dem_state, hertzdamp_dem_start, hertzdamp_dem_advance, &
                              hertzdamp_dem_finish, hertzdamp_dem_steps_done, hertzdamp_dem_steps_total
-    use hertzdamp_scene_io, only: hertzdamp_scene_read
+    use hertzdamp_dem_io, only: hertzdamp_scene_read
     use hertzdamp_testing, only: test_suite, new_suite
     use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
     use, intrinsic :: iso_fortran_env, only: output_unit

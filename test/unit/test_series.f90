@@ -5,7 +5,7 @@
 !> independent reference computed here (RK4 with Richardson extrapolation,
 !> local series at both ends of the contact).
 module test_series_support
-    use hertzdamp_kinds, only: hertzdamp_rk
+    use hertzdamp, only: hertzdamp_rk
     implicit none (type, external)
     private
     integer, parameter :: wp = hertzdamp_rk
@@ -317,11 +317,11 @@ contains
 end module test_series_support
 
 program test_series
-    use hertzdamp_kinds, only: hertzdamp_rk
+    use hertzdamp, only: hertzdamp_rk
     use hertzdamp_testing, only: test_suite, new_suite
-    use hertzdamp_series, only: hertzdamp_series_eval, hertzdamp_pade_eval, &
-                                hertzdamp_series_default_order, hertzdamp_series_max_order
-    use hertzdamp_registry, only: HD_OK, HD_INACCURATE, HD_OUTSIDE_VALIDITY, HD_BAD_ORDER, hertzdamp_message
+    use hertzdamp, only: hertzdamp_series_eval, hertzdamp_pade_eval, &
+                         hertzdamp_series_default_order, hertzdamp_series_max_order
+    use hertzdamp, only: HD_OK, HD_INACCURATE, HD_OUTSIDE_VALIDITY, HD_BAD_ORDER, hertzdamp_message
     use hertzdamp_series_data, only: series_e, series_e_err, series_tau_c, series_tau_c_err, &
                                      series_z_max, series_tau_max
     use test_series_support, only: tr_residual, beta_ln_e, beta_tce, sensitivity_tolerance, &

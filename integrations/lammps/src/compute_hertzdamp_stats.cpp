@@ -16,9 +16,9 @@ ComputeHertzdampStats::ComputeHertzdampStats(LAMMPS *lmp, int narg, char **arg) 
 {
   if (narg != 3) fail_all(lmp, __FILE__, __LINE__, "compute hertzdamp/stats takes no arguments");
   vector_flag = 1;
-  size_vector = ContactBook::NSTATS;
+  size_vector = ContactBook::NSTATS + ContactBook::NEXTRA;
   extvector = 0;
-  vector = new double[ContactBook::NSTATS]();
+  vector = new double[ContactBook::NSTATS + ContactBook::NEXTRA]();
   array_flag = 1;
   extarray = 0;
   size_array_cols = 3 + NHOSTSTATS;

@@ -40,7 +40,7 @@ FixHertzdampHistory::~FixHertzdampHistory()
 
 int FixHertzdampHistory::setmask()
 {
-  return PRE_EXCHANGE | POST_NEIGHBOR | POST_RUN | END_OF_STEP | MIN_PRE_EXCHANGE | MIN_POST_NEIGHBOR;
+  return PRE_EXCHANGE | POST_NEIGHBOR | POST_FORCE | POST_RUN | END_OF_STEP | MIN_PRE_EXCHANGE | MIN_POST_NEIGHBOR;
 }
 
 void FixHertzdampHistory::init()
@@ -60,6 +60,11 @@ void FixHertzdampHistory::post_neighbor()
   if (pair) pair->history_from_atoms(this);
 }
 
+void FixHertzdampHistory::post_force(int)
+{
+  if (pair) pair->mark_isolation();
+}
+
 void FixHertzdampHistory::post_run()
 {
   if (pair) pair->end_of_run(this);
@@ -71,6 +76,8 @@ void FixHertzdampHistory::end_of_step()
 {
   if (pair && output->restart_flag && output->next_restart == update->ntimestep)
     pair->history_to_atoms(this, true);
+  // the per-contact log, streamed: the rows of all ranks written every LOG_FLUSH_EVERY steps
+  if (pair) pair->book.flush_log_every(lmp, update->ntimestep);
 }
 
 /* restart files: each atom's records (count, then partner ID + payload per contact) */

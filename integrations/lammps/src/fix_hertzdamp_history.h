@@ -31,6 +31,10 @@ class FixHertzdampHistory : public LAMMPS_NS::Fix {
   void pre_exchange() override;
   void min_pre_exchange() override { pre_exchange(); }
   void setup_post_neighbor() override { post_neighbor(); }
+  // the isolation of the step's contacts, after the force computation (before the wall
+  // fixes, which read the pair contacts per atom)
+  void setup(int) override { post_force(0); }
+  void post_force(int) override;
   void post_neighbor() override;
   void min_post_neighbor() override { post_neighbor(); }
   void post_run() override;

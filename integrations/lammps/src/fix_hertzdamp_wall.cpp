@@ -87,7 +87,7 @@ FixHertzdampWall::FixHertzdampWall(LAMMPS *lmp, int narg, char **arg) : Fix(lmp,
   }
 
   vector_flag = 1;
-  size_vector = ContactBook::NSTATS + NHOSTSTATS;
+  size_vector = ContactBook::NSTATS + NHOSTSTATS + ContactBook::NEXTRA;
   global_freq = 1;
   extvector = 0;
   maxexchange = NCOL;
@@ -112,7 +112,13 @@ FixHertzdampWall::~FixHertzdampWall()
 
 int FixHertzdampWall::setmask()
 {
-  return POST_FORCE | POST_RUN;
+  return POST_FORCE | POST_RUN | (rule.logfile.empty() ? 0 : END_OF_STEP);
+}
+
+// the per-contact log, streamed: the rows of all ranks written every LOG_FLUSH_EVERY steps
+void FixHertzdampWall::end_of_step()
+{
+  book.flush_log_every(lmp, update->ntimestep);
 }
 
 void FixHertzdampWall::init()
@@ -132,6 +138,9 @@ void FixHertzdampWall::setup(int vflag)
 
 void FixHertzdampWall::post_force(int /*vflag*/)
 {
+  // the pair contacts per atom of this step, whichever of the history fix and this fix
+  // comes first in the fix list
+  if (auto *pr = dynamic_cast<PairGranularHertzdamp *>(force->pair)) pr->mark_isolation();
   const double *radius = atom->radius;
   const int *mask = atom->mask;
   const int nlocal = atom->nlocal;
@@ -162,14 +171,27 @@ void FixHertzdampWall::contact(int i, int side, double ov, int setup)
   double *p = s + 1;
   if (ov <= 0.0) {
     if (s[0] == 0.0) return;
+    if (s[0] == ENDED) {
+      // ended at step P_TPREV with the closing correction P_FN: the set-up of a run
+      // recomputing that step (after read_restart, run N pre no) applies it again
+      if (setup && p[P_TPREV] == step)
+        f[i][axis] += sgn * p[P_FN];
+      else
+        s[0] = 0.0;
+      return;
+    }
     const ContactEnd ce = payload_end(p, ov, -approach, step, force_end, rule.phase);
     const double fc = ce.f_end;
     book.finish(p, static_cast<double>(atom->tag[i]), side == 0 ? -1.0 : -2.0, ce.tend,
                 -approach + fc * dt / p[P_M], dt);
     f[i][axis] += sgn * fc;
-    s[0] = 0.0;
+    // kept until the next step with the correction it applied (restart files)
+    s[0] = fc != 0.0 ? static_cast<double>(ENDED) : 0.0;
+    p[P_FN] = fc;
+    p[P_TPREV] = step;
     return;
   }
+  if (s[0] == ENDED) s[0] = 0.0;    // touching again after a contact ended: a new contact
   double f_phase = 0.0;
   bool replay = false;
   if (s[0] == 0.0) {
@@ -177,16 +199,20 @@ void FixHertzdampWall::contact(int i, int side, double ov, int setup)
     const double m = rmass[i];
     const double kphys = estar > 0.0 ? 4.0 / 3.0 * estar * sqrt(radius[i]) : 0.0;
     const Onset o = contact_rule(lmp, rule, pc, kphys, m, approach, dt);
-    s[0] = 1.0;
+    s[0] = static_cast<double>(ACTIVE);
     f_phase = payload_onset(p, o, approach, m, ov, step, dt, rule.phase);
+    // the wall's normal is the same at the touch point: the impact angle from |v|
+    p[P_VTOUCH] = std::sqrt(v[i][0] * v[i][0] + v[i][1] * v[i][1] + v[i][2] * v[i][2]);
     book.onset(o, approach);
   } else {
     replay = setup && p[P_TPREV] == step;    // set-up of a run recomputing a stored step
   }
   // not isolated: the other side of the wall, or pair contacts in this step
   const auto *pair = dynamic_cast<PairGranularHertzdamp *>(force->pair);
-  if (wst[i][(1 - side) * SLOT] != 0.0 || (pair && pair->contacts_of(i) > 0.0))
+  if (wst[i][(1 - side) * SLOT] == ACTIVE || (pair && pair->contacts_of(i) > 0.0))
     p[P_FLAGS] = static_cast<double>(static_cast<int>(p[P_FLAGS]) | FLAG_NOT_ISOLATED);
+  if (pair && pair->stock_wall_contacts_of(i) > 0.0)
+    p[P_FLAGS] = static_cast<double>(static_cast<int>(p[P_FLAGS]) | FLAG_NOT_ISOLATED | FLAG_STOCK_WALL);
   const double fn = replay ? p[P_FN] : payload_force(p, ov, approach, step, force_end, f_phase);
   p[P_FN] = fn;
   if (!fm.any()) {
@@ -233,8 +259,12 @@ void FixHertzdampWall::post_run()
 double FixHertzdampWall::compute_vector(int n)
 {
   if (cache_step != update->ntimestep) {
-    book.vector(lmp, cache);
+    // 1-17 the book's, 18-21 the constants', 22-25 the book's extras
+    double v[ContactBook::NSTATS + ContactBook::NEXTRA];
+    book.vector(lmp, v);
+    for (int k = 0; k < ContactBook::NSTATS; k++) cache[k] = v[k];
     constants_stats(pc, cache + ContactBook::NSTATS);
+    for (int k = 0; k < ContactBook::NEXTRA; k++) cache[ContactBook::NSTATS + NHOSTSTATS + k] = v[ContactBook::NSTATS + k];
     cache_step = update->ntimestep;
   }
   return cache[n];

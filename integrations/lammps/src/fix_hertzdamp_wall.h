@@ -28,9 +28,12 @@ class FixHertzdampWall : public LAMMPS_NS::Fix {
   void setup(int vflag) override;
   void post_force(int vflag) override;
   void post_run() override;
+  void end_of_step() override;
   double compute_vector(int n) override;
   // wall contacts of local atom i at the end of the last step (they move with the atom)
-  double active_contacts(int i) const { return wst[i][0] + wst[i][SLOT]; }
+  double active_contacts(int i) const { return (wst[i][0] == ACTIVE ? 1.0 : 0.0) + (wst[i][SLOT] == ACTIVE ? 1.0 : 0.0); }
+  // per side: 0 no contact, ACTIVE, ENDED (at the last step, its closing correction kept)
+  enum { ACTIVE = 1, ENDED = 2 };
 
   void grow_arrays(int nmax) override;
   void copy_arrays(int i, int j, int delflag) override;
@@ -56,7 +59,7 @@ class FixHertzdampWall : public LAMMPS_NS::Fix {
   int has_lo = 0, has_hi = 0;
   double lo = 0.0, hi = 0.0;
   double **wst = nullptr;
-  double cache[ContactBook::NSTATS + NHOSTSTATS];
+  double cache[ContactBook::NSTATS + NHOSTSTATS + ContactBook::NEXTRA];
   LAMMPS_NS::bigint cache_step = -1;
 };
 

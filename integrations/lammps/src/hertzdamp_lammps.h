@@ -21,6 +21,7 @@
 #include <hertzdamp.h>
 
 #include <cmath>
+#include <cstdio>
 #include <string>
 #include <vector>
 
@@ -153,15 +154,38 @@ enum Payload {
   P_PREV_F,     // unclipped total normal force at the last step computed
   P_TPREV,      // that step
   P_TEND,       // force end: time in steps when the total force reached 0 (-1: not yet)
-  P_FLAGS,      // bit 0: k_phys bound active; bit 1: not an isolated binary collision
+  P_FLAGS,      // bit 0: k_phys bound active; bit 1: not an isolated binary collision;
+                // bit 2: ended at step P_TPREV, P_FN = the closing correction applied then
   P_HIST,       // friction history: 3 tangential, 3 rolling, 1 twisting (contact_models.h)
   P_FN = P_HIST + 7,    // forces of the step P_TPREV, replayed when a run's set-up
   P_FS,                 // recomputes that step (after read_restart, or run N; run M):
   P_FR = P_FS + 3,      // normal, tangential (3), rolling (3), twisting torque
   P_MT = P_FR + 3,
+  P_UTOUCH,     // normal approach speed at the touch point (free-flight path of the last step)
+  P_VTOUCH,     // relative speed there (|v_i - v_j|; wall: |v_i|): the impact angle
   NPAYLOAD
 };
-enum { FLAG_BOUNDED = 1, FLAG_NOT_ISOLATED = 2 };
+// bit 3: a bead of the contact touched a stock wall (fix wall/gran, wall/gran/region)
+enum { FLAG_BOUNDED = 1, FLAG_NOT_ISOLATED = 2, FLAG_ENDED = 4, FLAG_STOCK_WALL = 8 };
+
+// The touch (release) point of a pair contact detected (ended) at this step: the beads
+// moved over the last step on the straight path x - tau w, w = v_i - v_j (the half-step
+// velocity that moved them), and the touch (release) is where |r - tau w| = R_i + R_j
+// for the largest (smallest) tau in [0, dt].  Returns false when the path does not reach
+// it within the step (then the detection step's normal stays); n = the unit normal there.
+inline bool contact_point_normal(const double *r, const double *w, double radsum, double dt, bool touch,
+                                 double *n)
+{
+  const double ww = w[0] * w[0] + w[1] * w[1] + w[2] * w[2];
+  const double rw = r[0] * w[0] + r[1] * w[1] + r[2] * w[2];
+  const double rr = r[0] * r[0] + r[1] * r[1] + r[2] * r[2];
+  const double disc = rw * rw - ww * (rr - radsum * radsum);
+  if (!(ww > 0.0) || !(disc >= 0.0)) return false;
+  const double tau = touch ? (rw + std::sqrt(disc)) / ww : (rw - std::sqrt(disc)) / ww;
+  if (!(tau >= 0.0 && tau <= dt)) return false;
+  for (int k = 0; k < 3; k++) n[k] = (r[k] - tau * w[k]) / radsum;
+  return true;
+}
 
 // Time in steps at which a quantity that was prev > 0 at step tprev and is now <= 0
 // at step `step` crossed zero (linear interpolation; `step` when there is nothing to
@@ -191,6 +215,8 @@ inline double payload_onset(double *p, const Onset &o, double u, double m, doubl
   p[P_TEND] = -1.0;
   p[P_FLAGS] = o.bounded ? FLAG_BOUNDED : 0;
   for (int k = P_HIST; k < NPAYLOAD; k++) p[k] = 0.0;
+  p[P_UTOUCH] = u;    // the caller sets the touch point's values where it knows them
+  p[P_VTOUCH] = u;
   return (phase && u > 0.0) ? o.d * u * phase_weight(ov / (u * dt)) : 0.0;
 }
 
@@ -243,8 +269,23 @@ inline double payload_force(double *p, double ov, double u, double step, bool fo
 // restitution coefficient of their own.
 class ContactBook {
  public:
-  enum { NSTATS = 17 };
+  // NSTATS: the statistics 1-17; NEXTRA more follow (after the host statistics of a wall
+  // fix): median e, near-head-on collisions, their mean e, contacts left out for a stock wall
+  enum { NSTATS = 17, NEXTRA = 4 };
+  // e histogram for the median: bins of EBIN over [0, ENBIN EBIN), the last one open
+  enum { ENBIN = 20000 };
+  static constexpr double EBIN = 1e-4;
+  // near head-on: impact angle at the touch point below 15 degrees
+  static constexpr double COS_HEADON = 0.96592582628906831;
+  // the log is streamed: rank 0 writes its rows as its contacts end, the other ranks'
+  // rows are gathered every LOG_FLUSH_EVERY steps (flush_log, collective) and at the end
+  // of each run, so the rows in memory are at most those of LOG_FLUSH_EVERY steps
+  enum { LOG_FLUSH_EVERY = 1000 };
   static const char *stat_name(int i);
+  ContactBook() = default;
+  ContactBook(const ContactBook &) = delete;
+  ContactBook &operator=(const ContactBook &) = delete;
+  ~ContactBook() { close_log(); }
 
   void reset();
   void onset(const Onset &o, double u_raw)
@@ -258,10 +299,17 @@ class ContactBook {
   // A finished contact: p = payload, tag_a/tag_b identify it, tend_steps = end time.
   void finish(const double *p, double tag_a, double tag_b, double tend_steps, double u_out,
               double dt);
-  void vector(LAMMPS *lmp, double *out) const;    // reduced over all processors
+  // reduced over all processors: NSTATS + NEXTRA values
+  void vector(LAMMPS *lmp, double *out) const;
   // append: go on in an existing log (after read_restart)
   void open_log(LAMMPS *lmp, const std::string &file, const std::string &header, bool append = false);
-  void flush_log(LAMMPS *lmp);                     // gather to rank 0 and append
+  void flush_log(LAMMPS *lmp);                     // gather to rank 0, write, flush (collective)
+  // the periodic flush, at the end of a step (collective: every rank calls it)
+  void flush_log_every(LAMMPS *lmp, LAMMPS_NS::bigint step)
+  {
+    if (!logfile.empty() && step % LOG_FLUSH_EVERY == 0) flush_log(lmp);
+  }
+  bool logging() const { return !logfile.empty(); }
   void summary(LAMMPS *lmp, const char *who);      // one line to screen and log
 
  private:
@@ -271,6 +319,8 @@ class ContactBook {
     if (x > hi) hi = x;
   }
   double n_onset = 0, n_bounded = 0, n_end = 0, n_iso = 0, e_sum = 0, e_sumsq = 0;
+  double n_headon = 0, e_headon = 0, n_stockwall = 0;
+  std::vector<double> ehist;    // isolated collisions' e, ENBIN bins
 
  public:
   double carried = 0;    // contacts carried through per-atom records (neighbor-list builds)
@@ -278,8 +328,12 @@ class ContactBook {
  private:
   double umin = 1e300, umax = -1e300, kmin = 1e300, kmax = -1e300, dmin = 1e300, dmax = -1e300;
   double emin = 1e300, emax = -1e300;
+  void close_log();
   std::string logfile;
-  std::vector<double> logbuf;
+  FILE *logfp = nullptr;         // rank 0: the open log
+  bool rank0 = true;
+  double rows_written = 0;       // by rank 0 since the last flush (not yet flushed)
+  std::vector<double> logbuf;    // rows of ranks > 0 not yet gathered
 };
 
 enum { LOG_NCOL = 14 };

@@ -41,7 +41,7 @@ PairGranularHertzdamp::PairGranularHertzdamp(LAMMPS *lmp) : Pair(lmp)
   single_enable = 0;
   restartinfo = 1;
   no_virial_fdotr_compute = 1;    // forces tallied pair by pair (ev_tally)
-  comm_forward = 1;               // contacts per atom (isolation of contacts)
+  comm_forward = 2;               // contacts and stock wall contacts per atom (isolation)
   comm_reverse = 1;
 }
 
@@ -219,6 +219,7 @@ void PairGranularHertzdamp::init_style()
   }
   for (int i = 1; i <= n; i++) maxrad[i] = global[i];
 
+  find_stock_walls();
   logmesg(lmp, "granular/hertzdamp: " + rule.describe() + "\n");
 }
 
@@ -342,21 +343,47 @@ void PairGranularHertzdamp::compute(int eflag, int vflag)
 
       if (rsq >= radsum * radsum) {
         if (c < 0) continue;
-        // contact over: the overlap has returned to zero
         double *p = &pool[static_cast<size_t>(c) * NPAYLOAD];
         const double r = sqrt(rsq), rinv = 1.0 / r, ov = radsum - r;
+        if (static_cast<int>(p[P_FLAGS]) & FLAG_ENDED) {
+          // a contact that ended at step P_TPREV with a closing correction: the set-up of
+          // a run recomputing that step (after read_restart, run N pre no) applies it again
+          if (setup && p[P_TPREV] == step) {
+            add_central(i, j, p[P_FN] * rinv, delx, dely, delz);
+          } else {
+            free_contact(c);
+            ci[jj] = -1;
+          }
+          continue;
+        }
+        // contact over: the overlap has returned to zero
         const double u_out = ((v[i][0] - v[j][0]) * delx + (v[i][1] - v[j][1]) * dely +
                               (v[i][2] - v[j][2]) * delz) * rinv;
         const ContactEnd ce = payload_end(p, ov, u_out, step, force_end, rule.phase);
         const double f_end = ce.f_end;
         if (newton_pair || j < nlocal || tag[i] < tag[j]) {
           const double ta = tag[i] < tag[j] ? tag[i] : tag[j], tb = tag[i] < tag[j] ? tag[j] : tag[i];
-          // separation speed once the kick f_end (applied now) is complete
-          book.finish(p, ta, tb, ce.tend, u_out + f_end * dt / p[P_M], dt);
+          // separation speed at the release point on the last step's path, once the kick
+          // f_end (applied now, along this step's normal) is complete
+          const double rr[3] = {delx, dely, delz}, w[3] = {v[i][0] - v[j][0], v[i][1] - v[j][1], v[i][2] - v[j][2]};
+          double nr[3];
+          double u_rel = u_out + f_end * dt / p[P_M];
+          if (contact_point_normal(rr, w, radsum, dt, false, nr)) {
+            const double kick = f_end * dt / p[P_M] * rinv;
+            u_rel = (w[0] + kick * delx) * nr[0] + (w[1] + kick * dely) * nr[1] + (w[2] + kick * delz) * nr[2];
+          }
+          book.finish(p, ta, tb, ce.tend, u_rel, dt);
         }
-        if (f_end != 0.0) add_central(i, j, f_end * rinv, delx, dely, delz);
-        free_contact(c);
-        ci[jj] = -1;
+        if (f_end != 0.0) {
+          add_central(i, j, f_end * rinv, delx, dely, delz);
+          // kept until the next step with the correction it applied (restart files)
+          p[P_FLAGS] = static_cast<double>(static_cast<int>(p[P_FLAGS]) | FLAG_ENDED);
+          p[P_FN] = f_end;
+          p[P_TPREV] = step;
+        } else {
+          free_contact(c);
+          ci[jj] = -1;
+        }
         continue;
       }
 
@@ -368,6 +395,11 @@ void PairGranularHertzdamp::compute(int eflag, int vflag)
       double *p;
       double f_phase = 0.0;
       bool replay = false;
+      if (c >= 0 && (static_cast<int>(pool[static_cast<size_t>(c) * NPAYLOAD + P_FLAGS]) & FLAG_ENDED)) {
+        // the pair overlaps again after its contact ended: a new contact
+        free_contact(c);
+        ci[jj] = c = -1;
+      }
       if (c < 0) {
         // contact onset: first step with overlap > 0 for a pair without history
         const double mi = rmass[i], mj = rmass[j];
@@ -379,6 +411,13 @@ void PairGranularHertzdamp::compute(int eflag, int vflag)
         ci[jj] = c;
         p = &pool[static_cast<size_t>(c) * NPAYLOAD];
         f_phase = payload_onset(p, o, approach, m, ov, step, dt, rule.phase);
+        {
+          // normal speed and angle at the touch point, on the last step's free-flight path
+          const double rr[3] = {delx, dely, delz}, w[3] = {v[i][0] - v[j][0], v[i][1] - v[j][1], v[i][2] - v[j][2]};
+          double nt[3];
+          if (contact_point_normal(rr, w, radsum, dt, true, nt)) p[P_UTOUCH] = -(w[0] * nt[0] + w[1] * nt[1] + w[2] * nt[2]);
+          p[P_VTOUCH] = sqrt(w[0] * w[0] + w[1] * w[1] + w[2] * w[2]);
+        }
         if (newton_pair || j < nlocal || tag[i] < tag[j]) book.onset(o, approach);
       } else {
         p = &pool[static_cast<size_t>(c) * NPAYLOAD];
@@ -449,7 +488,9 @@ void PairGranularHertzdamp::compute(int eflag, int vflag)
       if (evflag) ev_tally_xyz(i, j, nlocal, newton_pair, 0.0, 0.0, fx, fy, fz, delx, dely, delz);
     }
   }
-  mark_isolation();
+  // the isolation of this step's contacts (two communications) is marked after the force
+  // computation, by the history fix (post_force, before the wall fixes' post_force)
+  isolation_pending = true;
 }
 
 // A central force fpair (x_i - x_j) on i and its opposite on j (when j is local or
@@ -477,11 +518,22 @@ void PairGranularHertzdamp::add_central(int i, int j, double fpair, double delx,
 
 void PairGranularHertzdamp::mark_isolation()
 {
+  if (!isolation_pending) return;
+  isolation_pending = false;
   if (force->newton_pair) HD_REVERSE_COMM_PAIR(this);
   // pair contacts of the local atoms (for the walls), then with the wall contacts
-  // (fix hertzdamp/wall) of the step before, to every ghost atom
+  // (fix hertzdamp/wall, and stock walls through their per-atom `contacts` output) of
+  // the step before, to every ghost atom
   const int nlocal = atom->nlocal;
+  nstock.assign(ncontact.size(), 0.0);
+  for (LAMMPS_NS::Fix *w : stock_walls) {
+    double **a = w->array_atom;
+    if (!a) continue;
+    for (int i = 0; i < nlocal; i++)
+      if (a[i][0] != 0.0) nstock[i] += 1.0;
+  }
   npair.assign(ncontact.begin(), ncontact.begin() + nlocal);
+  for (int i = 0; i < nlocal; i++) ncontact[i] += nstock[i];
   for (int k = 0; k < modify->nfix; k++) {
     const auto *wall = dynamic_cast<const FixHertzdampWall *>(modify->fix[k]);
     if (!wall) continue;
@@ -492,20 +544,50 @@ void PairGranularHertzdamp::mark_isolation()
     const int i = touching[t + 1], j = touching[t + 2];
     if (ncontact[i] > 1.0 || ncontact[j] > 1.0) {
       double &flags = pool[static_cast<size_t>(touching[t]) * NPAYLOAD + P_FLAGS];
-      flags = static_cast<double>(static_cast<int>(flags) | FLAG_NOT_ISOLATED);
+      const int stock = (nstock[i] > 0.0 || nstock[j] > 0.0) ? FLAG_STOCK_WALL : 0;
+      flags = static_cast<double>(static_cast<int>(flags) | FLAG_NOT_ISOLATED | stock);
+    }
+  }
+}
+
+// The stock wall fixes (fix wall/gran, wall/gran/region): with their `contacts` keyword
+// their per-atom output tells the beads that touch them (column 1); without it their
+// contacts are not seen, and a warning says that the isolation test is unsound.
+void PairGranularHertzdamp::find_stock_walls()
+{
+  stock_walls.clear();
+  stock_walls_blind = 0;
+  for (int k = 0; k < modify->nfix; k++) {
+    LAMMPS_NS::Fix *f = modify->fix[k];
+    if (std::string(f->style).compare(0, 9, "wall/gran") != 0) continue;
+    if (f->peratom_flag && f->size_peratom_cols >= 1) {
+      stock_walls.push_back(f);
+    } else {
+      stock_walls_blind++;
+      if (comm->me == 0)
+        warn(lmp, __FILE__, __LINE__,
+             std::string("granular/hertzdamp: fix ") + f->id + " (" + f->style +
+                 ") without its contacts keyword: contacts with it are not seen, so the e statistics "
+                 "count beads touching it as isolated collisions (unsound); add `contacts`");
     }
   }
 }
 
 int PairGranularHertzdamp::pack_forward_comm(int n, int *list, double *buf, int, int *)
 {
-  for (int k = 0; k < n; k++) buf[k] = ncontact[list[k]];
-  return n;
+  for (int k = 0; k < n; k++) {
+    buf[2 * k] = ncontact[list[k]];
+    buf[2 * k + 1] = nstock[list[k]];
+  }
+  return 2 * n;
 }
 
 void PairGranularHertzdamp::unpack_forward_comm(int n, int first, double *buf)
 {
-  for (int k = 0; k < n; k++) ncontact[first + k] = buf[k];
+  for (int k = 0; k < n; k++) {
+    ncontact[first + k] = buf[2 * k];
+    nstock[first + k] = buf[2 * k + 1];
+  }
 }
 
 int PairGranularHertzdamp::pack_reverse_comm(int n, int first, double *buf)
@@ -688,12 +770,8 @@ void PairGranularHertzdamp::history_to_atoms(FixHertzdampHistory *fix, bool keep
   } else if (active_contacts() > 0) {
     lost = active_contacts();
   }
-  int lost_all = 0;
-  MPI_Allreduce(&lost, &lost_all, 1, MPI_INT, MPI_SUM, world);
-  if (lost_all > 0)
-    warn(lmp, __FILE__, __LINE__,
-         "granular/hertzdamp: " + std::to_string(lost_all) +
-             " contacts lost (atoms changed between runs); they restart as new contacts");
+  // counted here, reported at the end of the run (no collective at every neighbor-list build)
+  lost_contacts += lost;
 
   if (newton_pair) {
 #if HERTZDAMP_LAMMPS_NUM < 20220000
@@ -748,7 +826,7 @@ void PairGranularHertzdamp::history_from_atoms(FixHertzdampHistory *fix)
         std::memcpy(&pool[static_cast<size_t>(c) * NPAYLOAD], r, sizeof(double) * NPAYLOAD);
         cidx[offset[ii] + jj] = c;
         fix->transferred++;
-        book.carried += 1;
+        if (!(static_cast<int>(r[P_FLAGS]) & FLAG_ENDED)) book.carried += 1;
       }
     }
   }
@@ -758,16 +836,13 @@ void PairGranularHertzdamp::history_from_atoms(FixHertzdampHistory *fix)
   cached_inum = inum;
 
   // every atom within the cutoff: no radius above the largest one known at the run's start
-  int big = -1;
-  for (int i = 0; i < atom->nlocal && big < 0; i++)
-    if (atom->radius[i] > maxrad[atom->type[i]]) big = i;
-  double worst[2] = {big >= 0 ? atom->radius[big] : 0.0, big >= 0 ? static_cast<double>(atom->type[big]) : 0.0}, all[2];
-  MPI_Allreduce(worst, all, 2, MPI_DOUBLE, MPI_MAX, world);
-  if (all[0] > 0.0)
-    fail_all(lmp, __FILE__, __LINE__,
-             "granular/hertzdamp: an atom of radius " + fmt_g(all[0]) +
-                 " is larger than the radii known at the start of the run (atoms, fix pour, fix deposit), "
-                 "which set the cutoff: its contacts would be missed");
+  // (checked by each process for its atoms: no collective at every neighbor-list build)
+  for (int i = 0; i < atom->nlocal; i++)
+    if (atom->radius[i] > maxrad[atom->type[i]])
+      fail_one(lmp, __FILE__, __LINE__,
+               "granular/hertzdamp: an atom of radius " + fmt_g(atom->radius[i]) +
+                   " is larger than the radii known at the start of the run (atoms, fix pour, fix deposit), "
+                   "which set the cutoff: its contacts would be missed");
 }
 
 void PairGranularHertzdamp::end_of_run(FixHertzdampHistory *fix)
@@ -776,6 +851,13 @@ void PairGranularHertzdamp::end_of_run(FixHertzdampHistory *fix)
   // the contacts stay indexed by the neighbor list for a following `run N pre no`
   history_to_atoms(fix, true);
   records_fresh = true;
+  int lost_all = 0;
+  MPI_Allreduce(&lost_contacts, &lost_all, 1, MPI_INT, MPI_SUM, world);
+  lost_contacts = 0;
+  if (lost_all > 0)
+    warn(lmp, __FILE__, __LINE__,
+         "granular/hertzdamp: " + std::to_string(lost_all) +
+             " contacts lost (atoms changed between runs); they restarted as new contacts");
   book.flush_log(lmp);
   book.summary(lmp, "granular/hertzdamp");
 }

@@ -10,6 +10,7 @@
 
 #include "contact_models.h"
 #include "hertzdamp_lammps.h"
+#include "fix.h"
 #include "pair.h"
 
 #include <vector>
@@ -42,12 +43,18 @@ class PairGranularHertzdamp : public LAMMPS_NS::Pair {
   void history_to_atoms(FixHertzdampHistory *fix, bool keep);    // keep: leave the contacts in place
   void history_from_atoms(FixHertzdampHistory *fix);             // after the list is rebuilt (post_neighbor)
   void end_of_run(FixHertzdampHistory *fix);
+  // marks this step's contacts that are not isolated collisions (after compute(): the
+  // history fix's post_force; communicates the contacts per atom)
+  void mark_isolation();
 
   // constants of type pair i j (valid after the run's init)
   const PairConstants &constants(int i, int j) const;
 
   // pair contacts of local atom i in this step's force computation (isolation flag of walls)
   double contacts_of(int i) const { return i < static_cast<int>(npair.size()) ? npair[i] : 0.0; }
+  // stock wall contacts (fix wall/gran, wall/gran/region with `contacts`) of local atom i
+  // at the step before
+  double stock_wall_contacts_of(int i) const { return i < static_cast<int>(nstock.size()) ? nstock[i] : 0.0; }
 
   ContactBook book;
   RuleSettings rule;
@@ -60,7 +67,7 @@ class PairGranularHertzdamp : public LAMMPS_NS::Pair {
   int new_contact();
   void free_contact(int c);
   void clear_contacts();
-  void mark_isolation();
+  void find_stock_walls();
   void add_central(int i, int j, double fpair, double delx, double dely, double delz);
 
   // per type pair
@@ -86,9 +93,14 @@ class PairGranularHertzdamp : public LAMMPS_NS::Pair {
   std::vector<double> ncontact;
   std::vector<double> npair;      // pair contacts of the local atoms
   std::vector<int> touching;      // (contact, i, j) triples of this step
+  std::vector<double> nstock;     // stock wall contacts per atom (local + ghost)
+  std::vector<LAMMPS_NS::Fix *> stock_walls;    // stock wall fixes with per-atom contacts (init)
+  int stock_walls_blind = 0;      // stock wall fixes without `contacts`: not seen
 
   FixHertzdampHistory *fix_history = nullptr;
   bool history_initialized = false;
+  bool isolation_pending = false;  // compute() ran, mark_isolation() not yet
+  int lost_contacts = 0;          // contacts lost in transfers this run (reported at its end)
 };
 
 }    // namespace HertzdampLammps

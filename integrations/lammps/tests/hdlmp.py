@@ -70,14 +70,17 @@ class CApi:
     def __init__(self):
         self.lib = ctypes.CDLL(os.path.join(BUILD, "core", "lib", "libhertzdamp.so"))
         D, P, I = ctypes.c_double, ctypes.POINTER(ctypes.c_double), ctypes.c_int
+        # hertzdamp_pair_t: the size the library was built with (not a fixed 8)
+        self.lib.hertzdamp_c_pair_size.restype = I
+        self.PAIR = D * self.lib.hertzdamp_c_pair_size()
         self._inv = self.lib.hertzdamp_c_invert
         self._inv.argtypes = [D, D, D, D, I, P, P]
         self._fwd = self.lib.hertzdamp_c_forward
         self._fwd.argtypes = [D, D, D, D, I, P, P]
         self._pinit = self.lib.hertzdamp_c_pair_init
-        self._pinit.argtypes = [D, I, I, I, D, ctypes.POINTER(D * 8)]
+        self._pinit.argtypes = [D, I, I, I, D, ctypes.POINTER(self.PAIR)]
         self._pkd = self.lib.hertzdamp_c_pair_kd
-        self._pkd.argtypes = [ctypes.POINTER(D * 8), D, D, D, D, P, P]
+        self._pkd.argtypes = [ctypes.POINTER(self.PAIR), D, D, D, D, P, P]
         self._pstats = self.lib.hertzdamp_c_pair_stats
         self._pstats.argtypes = [ctypes.c_void_p, I, ctypes.c_void_p]
         self._nmin = self.lib.hertzdamp_c_host_min_steps
@@ -101,7 +104,7 @@ class CApi:
         """k, d of one contact from the per-pair API (linear law, no bound): the
         constants of (e, end, host, steps) (hertzdamp_c_pair_init), then
         hertzdamp_c_pair_kd."""
-        pair = (ctypes.c_double * 8)()
+        pair = self.PAIR()
         st = self._pinit(e, 0, self._end(end), self.HOSTS[host], steps, ctypes.byref(pair))
         if st != 0:
             raise RuntimeError("pair_init status %d" % st)
@@ -114,7 +117,7 @@ class CApi:
     def pair_stats(self, e, end, host, steps, run_host, valid=True):
         """(status, stats[8]) of hertzdamp_c_pair_stats for the pair (e, end, host, steps)
         run by run_host (valid=False: a pair never set; None: a NULL pair)."""
-        pair = (ctypes.c_double * 8)()
+        pair = self.PAIR()
         if valid:
             st = self._pinit(e, 0, self._end(end), self.HOSTS[host], steps, ctypes.byref(pair))
             if st != 0:

@@ -2,7 +2,8 @@
 LAMMPS with an ERROR line that names the keyword, on each LAMMPS version; borderline
 good input (poisson 0.5, numbers as LAMMPS writes them) runs.  Numbers are read as
 LAMMPS's utils::numeric()/is_double() read them: `1e5`, `.5`, `5.` are numbers, `0x10`,
-`1e5x`, `nan` are not; N must be an integer (`10.0` is refused, as utils::inumeric does).
+`1e5x`, `nan` are not; N may be written as any such number whose value is whole (`20`,
+`2e1`, `20.`, `1e5`; `10.5` and `1.05e1` are refused: a clear message, issue 30 item 10).
 """
 import atexit
 import os
@@ -38,11 +39,12 @@ W = "fix hertzdamp/wall"
 # (input lines after HEAD, expected text after "ERROR: " or None for a clean run)
 CASES = [
     ("pair_style granular/hertzdamp steps 2.5\n", P + ": steps N must be a whole number of time steps, not 2.5"),
-    ("pair_style granular/hertzdamp steps 10.0\n", P + ": steps N must be a whole number of time steps, not 10.0"),
+    ("pair_style granular/hertzdamp steps 10.5\n", P + ": steps N must be a whole number of time steps, not 10.5"),
+    ("pair_style granular/hertzdamp steps 1.05e1\n", P + ": steps N must be a whole number of time steps, not 1.05e1"),
     ("pair_style granular/hertzdamp steps 0.5\n", P + ": steps N must be a whole number of time steps, not 0.5"),
     ("pair_style granular/hertzdamp steps 0\n", P + ": steps must be >= 1, not 0"),
-    ("pair_style granular/hertzdamp steps 3\npair_coeff * * e 0.2\nrun 0\n",
-     P + " (types 1 1): steps 3: N = 3 steps cannot reach e = 0.2 with lammps-phase; N >= 4 can"),
+    ("pair_style granular/hertzdamp steps 3\npair_coeff * * e 0.1\nrun 0\n",
+     P + " (types 1 1): steps 3: N = 3 steps cannot reach e = 0.1 with lammps-phase; N >= 4 can"),
     ("pair_style granular/hertzdamp steps 20 host exact\n", P + ": host must be lammps or none, not 'exact'"),
     ("pair_style granular/hertzdamp steps 200000\npair_coeff * * e 0.5\nrun 0\n",
      P + " (types 1 1): e 0.5, steps 200000, host lammps-phase: invalid steps per contact: must be finite with "
@@ -51,9 +53,9 @@ CASES = [
     ("pair_style granular/hertzdamp steps 0x10\n", P + ": steps needs a number, not '0x10'"),
     ("pair_style granular/hertzdamp tc 1e-6x\n", P + ": tc needs a number, not '1e-6x'"),
     ("pair_style granular/hertzdamp tc nan\n", P + ": tc needs a number, not 'nan'"),
-    ("pair_style granular/hertzdamp tc 3e-7\npair_coeff * * e 0.2\nrun 1\n",
+    ("pair_style granular/hertzdamp tc 3e-7\npair_coeff * * e 0.1\nrun 1\n",
      P + " (types 1 1): tc 2.9999999999999999e-07 (3 time steps of 9.9999999999999995e-08): N = 3 steps cannot "
-     "reach e = 0.2 with lammps-phase; N >= 4 can"),
+     "reach e = 0.1 with lammps-phase; N >= 4 can"),
     ("pair_style granular/hertzdamp steps 20 vmin -1\n", P + ": vmin must be >= 0"),
     ("pair_style granular/hertzdamp steps 20 log /dev/full\n", "hertzdamp: log /dev/full: cannot write"),
     ("pair_style granular/hertzdamp steps 20\npair_coeff * * e 1.5\n", C + ": e must be in (0, 1]"),
@@ -83,7 +85,12 @@ CASES = [
      W + ": steps N must be a whole number of time steps, not 7.5"),
     (PAIR + "fix w all hertzdamp/wall steps 20 e 0.5 zplane 0 NULL log /dev/full\n",
      "hertzdamp: log /dev/full: cannot write"),
-    # good input
+    # good input (RUNS: a clean run whose screen output has the text)
+    ("pair_style granular/hertzdamp steps 1e5\n", "RUNS:"),
+    ("pair_style granular/hertzdamp steps 2e1\npair_coeff * * e 0.5\nfix w all hertzdamp/wall steps 20.0 e 0.5 "
+     "zplane 0 NULL\nrun 0\n", "RUNS:granular/hertzdamp: contact time 20 steps,"),
+    ("pair_style granular/hertzdamp steps 20.\npair_coeff * * e 0.5\nfix w all hertzdamp/wall steps 2.0e1 e 0.5 "
+     "zplane 0 NULL\nrun 0\n", "RUNS:fix hertzdamp/wall w: contact time 20 steps,"),
     ("pair_style granular/hertzdamp steps 20 vmin .5 tc 2e-6\n", P + ": give only one of steps N, tc T, fixed K D"),
     ("pair_style granular/hertzdamp tc 2.e-6 vmin .5\npair_coeff * * e 5e-1 youngs 1e9 poisson 0.5 "
      "tangential mindlin NULL 0.5 0.3\nfix w all hertzdamp/wall steps 20 e 0.5 youngs 1e9 poisson 0.5 "
@@ -102,6 +109,9 @@ def run(c):
         first = lines.strip().split("\n")[-1] if msg is None else lines.strip().split("\n")[-1]
         if msg is None:
             c.check("good input runs: " + first, "ERROR" not in out and "Loop time" in out, out[-400:])
+        elif msg.startswith("RUNS:"):
+            c.check("good input runs: " + lines.strip().split("\n")[0], "ERROR" not in out and msg[5:] in out,
+                    "want '%s' in: %s" % (msg[5:], out[-400:]))
         else:
             c.check("bad input: " + first, ("ERROR: " + msg) in out, "want '%s' in: %s" % (msg, out[-400:]))
 

@@ -121,8 +121,8 @@ def run(c):
     c.check("C host_min_steps: host none needs 2", api.min_steps(0.1, "overlap", "none") == 2)
     for e, scheme in ((0.1, "lammps"), (0.2, "lammps-phase")):
         nmin = api.min_steps(e, "overlap", scheme)
-        st_lo = api._pinit(e, 0, 0, api.HOSTS[scheme], nmin - 1, ctypes.byref((ctypes.c_double * 8)()))
-        st_hi = api._pinit(e, 0, 0, api.HOSTS[scheme], nmin, ctypes.byref((ctypes.c_double * 8)()))
+        st_lo = api._pinit(e, 0, 0, api.HOSTS[scheme], nmin - 1, ctypes.byref(api.PAIR()))
+        st_hi = api._pinit(e, 0, 0, api.HOSTS[scheme], nmin, ctypes.byref(api.PAIR()))
         c.check("C host_min_steps e=%g %s = %d: pair_init fails at N - 1 (28), succeeds at N" % (e, scheme, nmin),
                 st_lo == 28 and st_hi == 0, repr((st_lo, st_hi)))
 
@@ -154,15 +154,16 @@ def run(c):
                     c.check(tag + ": error", ("ERROR: " + msg) in out, out[-400:])
                 else:
                     c.check(tag + ": runs", "ERROR" not in out and "Total wall time" in out, out[-400:])
-    # tc T: N = T/dt
+    # tc T: N = T/dt, one step below the fewest that reach e = 0.1
+    nmin = api.min_steps(0.1, "overlap", "lammps-phase")
+    tc = (nmin - 1) * 1e-7
     path = os.path.join(tmp, "tc.lmp")
     with open(path, "w") as f:
-        f.write(box + "%s tc 5e-7\npair_coeff * * e 0.1\nrun 0\n" % P)
+        f.write(box + "%s tc %r\npair_coeff * * e 0.1\nrun 0\n" % (P, tc))
     out = hdlmp.lmp(path, {}, tmp, check=False)
-    nmin = api.min_steps(0.1, "overlap", "lammps-phase")
-    msg = "%s (types 1 1): tc %.17g (5 time steps of %.17g): N = 5 steps cannot reach e = 0.1 with " \
-          "lammps-phase; N >= %d can" % (P, 5e-7, 1e-7, nmin)
-    c.check("tc 5e-7 at dt 1e-7, e = 0.1: error", ("ERROR: " + msg) in out, out[-400:])
+    msg = "%s (types 1 1): tc %.17g (%d time steps of %.17g): N = %d steps cannot reach e = 0.1 with " \
+          "lammps-phase; N >= %d can" % (P, tc, nmin - 1, 1e-7, nmin - 1, nmin)
+    c.check("tc (N - 1) dt at dt 1e-7, e = 0.1: error", ("ERROR: " + msg) in out, out[-400:])
 
 
 if __name__ == "__main__":

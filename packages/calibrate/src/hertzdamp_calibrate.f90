@@ -39,14 +39,14 @@
 !>
 !> Nothing is printed and nothing stops: a status (CAL_*) and a one-line message.
 module hertzdamp_calibrate
-    use hertzdamp_kinds, only: hertzdamp_rk
-    use hertzdamp_registry, only: HD_OK, HD_OUTSIDE_VALIDITY
-    use hertzdamp_registry, only: HD_END_OVERLAP, HD_END_FORCE
-    use hertzdamp_fit_laws, only: hertzdamp_fit_forward_deriv
-    use hertzdamp_methods, only: HD_METHOD_FIT, HD_METHOD_RK45
-    use hertzdamp_rk45, only: hertzdamp_rk45_default_tol
-    use hertzdamp_inverse, only: hertzdamp_invert_alpha
-    use hertzdamp_scaling, only: hertzdamp_reduce
+    use hertzdamp, only: hertzdamp_rk
+    use hertzdamp, only: HD_OK, HD_OUTSIDE_VALIDITY
+    use hertzdamp, only: HD_END_OVERLAP, HD_END_FORCE
+    use hertzdamp, only: hertzdamp_fit_forward_deriv
+    use hertzdamp, only: HD_METHOD_FIT, HD_METHOD_RK45
+    use hertzdamp, only: hertzdamp_rk45_default_tol
+    use hertzdamp, only: hertzdamp_invert_alpha
+    use hertzdamp, only: hertzdamp_reduce
     use hertzdamp_calibrate_maps, only: cal_forward, cal_law_name, cal_law_q, cal_law_speed_exponent, &
                                         cal_law_supported, cal_max_law
     use hertzdamp_text_format, only: fmt_short
@@ -595,6 +595,24 @@ contains
         call dgesvd('S', 'A', m, n, a, m, sv, u, m, vt, n, work, lwork, info)
     end subroutine scaled_svd
 
+    !> The checks of cal_fit's input (cal_check, then the law and method) and the default
+    !> xtol (o%xtol <= 0: by the method).
+    subroutine fit_check(dat, law, o, st, msg)
+        type(cal_data), intent(in) :: dat
+        integer, intent(in) :: law
+        type(cal_options), intent(inout) :: o
+        integer, intent(out) :: st
+        character(len=:), allocatable, intent(out) :: msg
+        call cal_check(dat, o, st, msg)
+        if (st /= CAL_OK) return
+        if (.not. (o%xtol > 0.0_wp)) o%xtol = merge(1.0e-10_wp, 1.0e-9_wp * max(1.0_wp, o%tol / 1.0e-13_wp), &
+                                                     o%method == HD_METHOD_FIT)
+        if (cal_law_supported(law, o%method) /= HD_OK) then
+            st = CAL_BAD_DATA
+            msg = 'unknown damping law or method'
+        end if
+    end subroutine fit_check
+
     !> Fit one law to the data.  res%status CAL_OK, or the failure with res%message.
     subroutine cal_fit(dat, law, opts, res)
         type(cal_data), intent(in) :: dat       !! measurements
@@ -604,47 +622,32 @@ contains
         type(cal_options) :: o
         real(wp), allocatable :: we(:), wt(:), r(:), jac(:, :), rn(:), jn(:, :), u(:, :), alpha(:), efit(:), tcfit(:)
         real(wp), allocatable :: an(:), en(:), tn(:), theta(:), tn_(:), g(:), step(:), gn(:), pred_r(:)
-        real(wp) :: sv(2), vt(2, 2), colnorm(2), lambda, nu, cost, cost_new, pred, rho, lnk_fixed, cov(2, 2)
-        real(wp) :: q, bm, bk, stepmax, sd(2), gn_last, ln_sd(3), dir(2, 3), var_lnd
-        integer :: n, nobs, np, st, info, it, inner, i, j
+        real(wp) :: sv(2), vt(2, 2), colnorm(2), lambda, nu, cost, cost_new, pred, rho, lnk_fixed
+        real(wp) :: stepmax, sd(2), gn_last
+        integer :: n, nobs, np, st, info, it, inner, j
         logical :: use_tc, fit_k, accepted, polishing, full_rank, stalled
         logical, allocatable :: beyond(:)
         character(len=:), allocatable :: msg
-        character(len=32) :: b
 
         res%law = law
         res%message = ''
         res%note = ''
         o = opts
-        call cal_check(dat, o, st, msg)
+        call fit_check(dat, law, o, st, msg)
         if (st /= CAL_OK) then
             res%status = st
             res%message = msg
             return
         end if
-        if (.not. (o%xtol > 0.0_wp)) o%xtol = merge(1.0e-10_wp, 1.0e-9_wp * max(1.0_wp, o%tol / 1.0e-13_wp), &
-                                                     o%method == HD_METHOD_FIT)
-        if (cal_law_supported(law, o%method) /= HD_OK) then
-            res%status = CAL_BAD_DATA
-            res%message = 'unknown damping law or method'
-            return
-        end if
         n = size(dat%u)
-        q = cal_law_q(law)
-        bm = (3.0_wp - 2.0_wp * q) / 5.0_wp        ! d = A m^bm k^bk
-        bk = 2.0_wp * (1.0_wp + q) / 5.0_wp
         fit_k = any(dat%has_tc) .and. .not. (o%k_known > 0.0_wp)
         use_tc = any(dat%has_tc) .and. (fit_k .or. o%k_known > 0.0_wp)
         lnk_fixed = 0.0_wp
         if (o%k_known > 0.0_wp) lnk_fixed = log(o%k_known)
         np = merge(2, 1, fit_k)
-        res%n_e = n
-        res%n_tc = merge(count(dat%has_tc), 0, use_tc)
-        nobs = res%n_e + res%n_tc
-        res%n_par = np
-        res%dof = nobs - np
-        res%k_fitted = fit_k
-        res%kd_known = fit_k .or. o%k_known > 0.0_wp
+        nobs = n + merge(count(dat%has_tc), 0, use_tc)
+        res = cal_result(law=law, message='', note='', n_e=n, n_tc=nobs - n, n_par=np, dof=nobs - np, k_fitted=fit_k, &
+                         kd_known=fit_k .or. o%k_known > 0.0_wp)
         allocate (beyond(n), we(n), wt(n), r(nobs), jac(nobs, np), rn(nobs), jn(nobs, np), u(nobs, np), alpha(n), efit(n), &
                   tcfit(n), an(n), en(n), tn(n), theta(np), tn_(np), g(np), step(np), gn(np), pred_r(nobs))
         call weights(dat, we, wt)
@@ -676,79 +679,14 @@ contains
             end if
             g = matmul(transpose(u), r)   ! U^T r
             full_rank = sv(np) > rank_tol * sv(1)
-            ! Gauss-Newton correction J^+ r (ln-parameters): the distance to the optimum.
-            ! Converged when it is below xtol; with the given sigmas also when it is below
-            ! stat_tol of every parameter's standard uncertainty (then the sum of squares
-            ! cannot resolve it: its relative change is ~ stat_tol^2 / dof), and that last
-            ! correction is applied as well.  Without sigmas that uncertainty is itself
-            ! estimated from the residuals, so it grows with a poor fit: there only xtol.
             if (full_rank) then
                 gn = matmul(transpose(vt(1:np, 1:np)), g / sv(1:np)) / colnorm(1:np)
                 res%gn_step = maxval(abs(gn))
-                do j = 1, np
-                    sd(j) = sqrt(sum((vt(1:np, j) / sv(1:np))**2)) / colnorm(j)
-                end do
-                if (res%gn_step <= o%xtol .or. (dat%weighted .and. all(abs(gn) <= stat_tol * sd(1:np)))) then
-                    ! converged: apply the last Gauss-Newton correction too (the sum of
-                    ! squares may no longer resolve it, the correction itself is exact)
-                    tn_ = theta - gn
-                    call evaluate(dat, law, o, use_tc, beyond, tn_, lnk_fixed, we, wt, rn, jn, an, en, tn, st)
-                    if (st == CAL_OK) then
-                        call scaled_svd(jn, colnorm(1:np), u, sv(1:np), vt(1:np, 1:np), info)
-                        if (info == 0) then
-                            call take_trial()
-                            cost = sum(r**2)
-                        else
-                            call scaled_svd(jac, colnorm(1:np), u, sv(1:np), vt(1:np, 1:np), info)
-                        end if
-                    end if
-                    res%status = CAL_OK
-                    exit
-                end if
+                if (gauss_newton_converged()) exit
             end if
             accepted = .false.
-            if (.not. polishing) then
-                do inner = 1, 80
-                    ! damped step in the scaled variables: -V diag(sv/(sv^2 + lambda)) U^T r
-                    step = -matmul(transpose(vt(1:np, 1:np)), g * sv(1:np) / (sv(1:np)**2 + lambda)) / colnorm(1:np)
-                    stepmax = maxval(abs(step))
-                    if (stepmax > 2.0_wp) step = step * (2.0_wp / stepmax)   ! at most a factor e^2 per step
-                    tn_ = theta + step
-                    pred_r = r + matmul(jac, step)
-                    pred = cost - sum(pred_r**2)
-                    call evaluate(dat, law, o, use_tc, beyond, tn_, lnk_fixed, we, wt, rn, jn, an, en, tn, st)
-                    rho = -1.0_wp
-                    if (st == CAL_OK .and. pred > 0.0_wp) then
-                        cost_new = sum(rn**2)
-                        rho = (cost - cost_new) / pred
-                    end if
-                    if (rho > 1.0e-4_wp) then
-                        accepted = .true.
-                        lambda = lambda * max(1.0_wp / 3.0_wp, 1.0_wp - (2.0_wp * rho - 1.0_wp)**3)
-                        nu = 2.0_wp
-                        exit
-                    end if
-                    lambda = lambda * nu
-                    nu = 2.0_wp * nu
-                    if (lambda > 1.0e30_wp) exit
-                end do
-            end if
-            ! No step lowers the sum of squares any more, though the Gauss-Newton correction
-            ! is above xtol.  Close to the optimum (a correction below polish_max) that is
-            ! the rounding of the sum of squares, or the noise of the reference integrator in
-            ! the model, not the optimum: continue with plain Gauss-Newton corrections,
-            ! computed from J and r alone, as long as each is at most half the one before
-            ! (then they converge to xtol, or the fit stops here, not converged).
-            if (.not. accepted .and. full_rank) then
-                if (res%gn_step < 0.5_wp * gn_last .and. res%gn_step <= polish_max) then
-                    tn_ = theta - gn
-                    call evaluate(dat, law, o, use_tc, beyond, tn_, lnk_fixed, we, wt, rn, jn, an, en, tn, st)
-                    accepted = st == CAL_OK
-                    if (accepted) cost_new = sum(rn**2)
-                    polishing = accepted
-                    gn_last = res%gn_step
-                end if
-            end if
+            if (.not. polishing) accepted = damped_step()
+            if (.not. accepted .and. full_rank) accepted = polish_step()
             stalled = .not. accepted
             if (stalled) exit
             call take_trial()
@@ -759,18 +697,9 @@ contains
         res%tc_fit = tcfit
         ! the sum of squares reached and its AIC, also when the fit failed (cal_auto)
         res%chi2 = cost
-        if (dat%weighted) then
-            res%aic = cost + 2.0_wp * np
-        else
-            res%aic = nobs * log(max(cost, tiny(1.0_wp)) / nobs) + 2.0_wp * np
-        end if
+        res%aic = merge(cost, nobs * log(max(cost, tiny(1.0_wp)) / nobs), dat%weighted) + 2.0_wp * np
         if (res%status /= CAL_OK) then
-            write (b, '(i0)') res%iterations
-            res%message = 'the fit of the ' // cal_law_name(law) // ' law did not converge after ' // trim(b) // &
-                          ' iterations (Gauss-Newton correction ' // fmt_short(res%gn_step) // ' > ' // fmt_short(o%xtol) // ')'
-            if (stalled) res%message = res%message // ': no step lowers the sum of squares (RMS residual of e ' // &
-                                       fmt_short(sqrt(sum((dat%e - efit)**2) / n)) // '), yet the Gauss-Newton ' // &
-                                       'correction does not vanish: the law does not reproduce these data'
+            res%message = not_converged(law, res, o%xtol, stalled, sqrt(sum((dat%e - efit)**2) / n))
             return
         end if
         ! identifiability: the scaled Jacobian must have full rank
@@ -781,6 +710,132 @@ contains
             return
         end if
 
+        call fit_uncertainties(dat, law, o%mass, o%k_known, np, fit_k, use_tc, theta, cost, sv, vt, colnorm, efit, tcfit, res)
+        res%status = CAL_OK
+    contains
+        !> The Gauss-Newton correction J^+ r (ln-parameters): the distance to the optimum.
+        !> Converged (done, res%status CAL_OK) when it is below xtol; with the given sigmas
+        !> also when it is below stat_tol of every parameter's standard uncertainty (then the
+        !> sum of squares cannot resolve it: its relative change is ~ stat_tol^2 / dof), and
+        !> that last correction is applied as well.  Without sigmas that uncertainty is
+        !> itself estimated from the residuals, so it grows with a poor fit: there only xtol.
+        logical function gauss_newton_converged() result(done)
+            done = .false.
+            do j = 1, np
+                sd(j) = sqrt(sum((vt(1:np, j) / sv(1:np))**2)) / colnorm(j)
+            end do
+            if (res%gn_step <= o%xtol .or. (dat%weighted .and. all(abs(gn) <= stat_tol * sd(1:np)))) then
+                ! converged: apply the last Gauss-Newton correction too (the sum of
+                ! squares may no longer resolve it, the correction itself is exact)
+                tn_ = theta - gn
+                call evaluate(dat, law, o, use_tc, beyond, tn_, lnk_fixed, we, wt, rn, jn, an, en, tn, st)
+                if (st == CAL_OK) then
+                    call scaled_svd(jn, colnorm(1:np), u, sv(1:np), vt(1:np, 1:np), info)
+                    if (info == 0) then
+                        call take_trial()
+                        cost = sum(r**2)
+                    else
+                        call scaled_svd(jac, colnorm(1:np), u, sv(1:np), vt(1:np, 1:np), info)
+                    end if
+                end if
+                res%status = CAL_OK
+                done = .true.
+            end if
+        end function gauss_newton_converged
+
+        !> Levenberg-Marquardt's damped step from theta: a trial point (tn_, rn, jn, ...)
+        !> that lowers the sum of squares (ok), lambda and nu updated.
+        logical function damped_step() result(ok)
+            ok = .false.
+            do inner = 1, 80
+                ! damped step in the scaled variables: -V diag(sv/(sv^2 + lambda)) U^T r
+                step = -matmul(transpose(vt(1:np, 1:np)), g * sv(1:np) / (sv(1:np)**2 + lambda)) / colnorm(1:np)
+                stepmax = maxval(abs(step))
+                if (stepmax > 2.0_wp) step = step * (2.0_wp / stepmax)   ! at most a factor e^2 per step
+                tn_ = theta + step
+                pred_r = r + matmul(jac, step)
+                pred = cost - sum(pred_r**2)
+                call evaluate(dat, law, o, use_tc, beyond, tn_, lnk_fixed, we, wt, rn, jn, an, en, tn, st)
+                rho = -1.0_wp
+                if (st == CAL_OK .and. pred > 0.0_wp) then
+                    cost_new = sum(rn**2)
+                    rho = (cost - cost_new) / pred
+                end if
+                if (rho > 1.0e-4_wp) then
+                    ok = .true.
+                    lambda = lambda * max(1.0_wp / 3.0_wp, 1.0_wp - (2.0_wp * rho - 1.0_wp)**3)
+                    nu = 2.0_wp
+                    exit
+                end if
+                lambda = lambda * nu
+                nu = 2.0_wp * nu
+                if (lambda > 1.0e30_wp) exit
+            end do
+        end function damped_step
+
+        !> No step lowers the sum of squares any more, though the Gauss-Newton correction
+        !> is above xtol.  Close to the optimum (a correction below polish_max) that is
+        !> the rounding of the sum of squares, or the noise of the reference integrator in
+        !> the model, not the optimum: continue with plain Gauss-Newton corrections,
+        !> computed from J and r alone, as long as each is at most half the one before
+        !> (then they converge to xtol, or the fit stops here, not converged).
+        logical function polish_step() result(ok)
+            ok = .false.
+            if (res%gn_step < 0.5_wp * gn_last .and. res%gn_step <= polish_max) then
+                tn_ = theta - gn
+                call evaluate(dat, law, o, use_tc, beyond, tn_, lnk_fixed, we, wt, rn, jn, an, en, tn, st)
+                ok = st == CAL_OK
+                if (ok) cost_new = sum(rn**2)
+                polishing = ok
+                gn_last = res%gn_step
+            end if
+        end function polish_step
+
+        !> The trial point (tn_ and what evaluate gave there) becomes the current one.
+        subroutine take_trial()
+            theta = tn_
+            r = rn
+            jac = jn
+            alpha = an
+            efit = en
+            tcfit = tn
+        end subroutine take_trial
+    end subroutine cal_fit
+
+    !> The message of a fit that did not converge after res%iterations (stalled: no step
+    !> lowered the sum of squares, rms_e the RMS residual of e there).
+    function not_converged(law, res, xtol, stalled, rms_e) result(msg)
+        integer, intent(in) :: law
+        type(cal_result), intent(in) :: res
+        real(wp), intent(in) :: xtol, rms_e
+        logical, intent(in) :: stalled
+        character(len=:), allocatable :: msg
+        character(len=32) :: b
+        write (b, '(i0)') res%iterations
+        msg = 'the fit of the ' // cal_law_name(law) // ' law did not converge after ' // trim(b) // &
+              ' iterations (Gauss-Newton correction ' // fmt_short(res%gn_step) // ' > ' // fmt_short(xtol) // ')'
+        if (stalled) msg = msg // ': no step lowers the sum of squares (RMS residual of e ' // &
+                           fmt_short(rms_e) // '), yet the Gauss-Newton ' // &
+                           'correction does not vanish: the law does not reproduce these data'
+    end function not_converged
+
+    !> The uncertainties of a converged fit (res%status set by the caller): the scale and
+    !> p-value, the covariance of theta from the SVD (in logarithms where its products
+    !> over- or underflow), a, c, k, d with their errors, the RMS residuals and the
+    !> chi2 note.
+    subroutine fit_uncertainties(dat, law, mass, k_known, np, fit_k, use_tc, theta, cost, sv, vt, colnorm, efit, tcfit, &
+                                 res)
+        type(cal_data), intent(in) :: dat
+        integer, intent(in) :: law, np
+        real(wp), intent(in) :: mass, k_known, theta(:), cost, sv(:), vt(:, :), colnorm(:), efit(:), tcfit(:)
+        logical, intent(in) :: fit_k, use_tc
+        type(cal_result), intent(inout) :: res
+        real(wp) :: q, bm, bk, cov(2, 2), var_lnd, ln_sd(3), dir(2, 3)
+        integer :: i, j, n
+        n = size(dat%u)
+        q = cal_law_q(law)
+        bm = (3.0_wp - 2.0_wp * q) / 5.0_wp        ! d = A m^bm k^bk
+        bk = 2.0_wp * (1.0_wp + q) / 5.0_wp
         if (dat%weighted) then
             res%scale = 1.0_wp
             res%p_value = cal_gamma_q(0.5_wp * res%dof, 0.5_wp * cost)
@@ -798,7 +853,7 @@ contains
         cov(1:np, 1:np) = cov(1:np, 1:np) * res%scale**2
         res%a = exp(theta(1))
         res%a_err = res%a * sqrt(cov(1, 1))
-        res%c = exp(theta(1) + bm * log(o%mass))
+        res%c = exp(theta(1) + bm * log(mass))
         res%c_err = res%c * sqrt(cov(1, 1))
         var_lnd = cov(1, 1)
         if (res%kd_known) then
@@ -810,10 +865,10 @@ contains
                     res%corr_kd = (cov(1, 2) + bk * cov(2, 2)) / sqrt(var_lnd * cov(2, 2))
                 end if
             else
-                res%k = o%k_known
+                res%k = k_known
                 res%k_err = 0.0_wp
             end if
-            res%d = exp(theta(1) + bm * log(o%mass) + bk * log(res%k))
+            res%d = exp(theta(1) + bm * log(mass) + bk * log(res%k))
             res%d_err = res%d * sqrt(max(var_lnd, 0.0_wp))
         end if
         ! Where a product above over- or underflowed (sigmas of 1e300: J ~ 1e-300 and
@@ -825,7 +880,7 @@ contains
                    .and. res%scale > 0.0_wp)) then
             call log_sd([1.0_wp, 0.0_wp], vt, sv, colnorm, np, res%scale, ln_sd(1), dir(:, 1))
             res%a_err = exp(theta(1) + ln_sd(1))
-            res%c_err = exp(theta(1) + bm * log(o%mass) + ln_sd(1))
+            res%c_err = exp(theta(1) + bm * log(mass) + ln_sd(1))
             if (res%kd_known) then
                 ln_sd(3) = ln_sd(1)
                 if (fit_k) then
@@ -834,7 +889,7 @@ contains
                     res%k_err = exp(theta(2) + ln_sd(2))
                     res%corr_kd = dot_product(dir(1:np, 2), dir(1:np, 3))
                 end if
-                res%d_err = exp(theta(1) + bm * log(o%mass) + bk * log(res%k) + ln_sd(3))
+                res%d_err = exp(theta(1) + bm * log(mass) + bk * log(res%k) + ln_sd(3))
             end if
         end if
         res%rms_e = sqrt(sum((dat%e - efit)**2) / n)
@@ -843,18 +898,7 @@ contains
             call add_note(res, 'chi2/dof = ' // fmt_short(cost / res%dof) // ', p = ' // fmt_short(res%p_value) // &
                        ': the data are far from the ' // cal_law_name(law) // ' law (see the residuals)')
         end if
-        res%status = CAL_OK
-    contains
-        !> The trial point (tn_ and what evaluate gave there) becomes the current one.
-        subroutine take_trial()
-            theta = tn_
-            r = rn
-            jac = jn
-            alpha = an
-            efit = en
-            tcfit = tn
-        end subroutine take_trial
-    end subroutine cal_fit
+    end subroutine fit_uncertainties
 
     !> Fit every law and choose the one with the smallest AIC among the fits that
     !> converged.  A law whose fit failed is passed over only when the sum of squares

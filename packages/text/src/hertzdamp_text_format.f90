@@ -16,9 +16,52 @@ module hertzdamp_text_format
     !> `digits` of fmt_short that always read back as the same double (the shortest such form).
     integer, parameter, public :: ROUND_TRIP = 17
 
-    public :: lower, upper, itoa, fmt_short, fmt_text, fmt_text_short, is_whole_text
+    public :: lower, upper, itoa, fmt_short, fmt_text, fmt_text_short, is_whole_text, prose
 
 contains
+
+    !> Space-separated words as prose: 'a, b or c' (conj replaces 'or'), each word between
+    !> quote characters when quote is given (a registry's choices as a message lists them).
+    pure function prose(words, conj, quote) result(s)
+        character(len=*), intent(in) :: words             !! the words, blank-separated
+        character(len=*), intent(in), optional :: conj    !! the last joint (default 'or')
+        character(len=*), intent(in), optional :: quote   !! put around each word
+        character(len=:), allocatable :: s, c, q, w
+        integer :: i, j, n, k
+        c = 'or'
+        if (present(conj)) c = conj
+        q = ''
+        if (present(quote)) q = quote
+        n = 0
+        i = 1
+        do while (i <= len(words))          ! count the words
+            if (words(i:i) /= ' ') then
+                n = n + 1
+                j = index(words(i:) // ' ', ' ') + i - 1
+                i = j
+            end if
+            i = i + 1
+        end do
+        s = ''
+        k = 0
+        i = 1
+        do while (i <= len(words))
+            if (words(i:i) /= ' ') then
+                j = index(words(i:) // ' ', ' ') + i - 1
+                w = q // words(i:j - 1) // q
+                k = k + 1
+                if (k == 1) then
+                    s = w
+                else if (k == n) then
+                    s = s // ' ' // c // ' ' // w
+                else
+                    s = s // ', ' // w
+                end if
+                i = j
+            end if
+            i = i + 1
+        end do
+    end function prose
 
     !> `s` with the ASCII letters A-Z in lower case (other bytes unchanged).
     pure function lower(s) result(r)

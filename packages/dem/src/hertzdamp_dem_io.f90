@@ -19,12 +19,11 @@
 !> characters and files of more than 1,000,000 lines are refused (an endless input
 !> such as /dev/zero fails after its first 1025 characters).  Nothing is printed:
 !> failures return HD_BAD_ARGUMENT and a one-line message.
-module hertzdamp_scene_io
-    use hertzdamp_kinds, only: hertzdamp_rk
-    use hertzdamp_registry, only: HD_OK, HD_BAD_ARGUMENT
-    use hertzdamp_registry, only: HD_END_OVERLAP, HD_END_FORCE
-    use hertzdamp_laws, only: hertzdamp_law_code
-    use hertzdamp_text_format, only: lower
+module hertzdamp_dem_io
+    use hertzdamp, only: hertzdamp_rk
+    use hertzdamp, only: HD_OK, HD_BAD_ARGUMENT
+    use hertzdamp, only: hertzdamp_law_code, hertzdamp_law_choices, hertzdamp_end_code, hertzdamp_end_choices
+    use hertzdamp_text_format, only: lower, prose
     use hertzdamp_dem, only: hertzdamp_dem_scene, hertzdamp_dem_material, hertzdamp_dem_wall, &
                              hertzdamp_dem_max_particles
     implicit none
@@ -375,16 +374,14 @@ contains
         sc%accuracy = accuracy
         sc%rest_speed = rest_speed
         sc%samples = samples
-        select case (trim(lower(contact_end)))
-        case ('overlap'); sc%iend = HD_END_OVERLAP
-        case ('force'); sc%iend = HD_END_FORCE
-        case default
-            msg = at(first) // '&scene: contact_end must be ''overlap'' or ''force'''
+        sc%iend = hertzdamp_end_code(trim(adjustl(lower(contact_end))))
+        if (sc%iend < 0) then
+            msg = at(first) // '&scene: contact_end must be ' // prose(hertzdamp_end_choices(), quote="'")
             return
-        end select
+        end if
         sc%law = hertzdamp_law_code(trim(adjustl(lower(damping))))
         if (sc%law < 0) then
-            msg = at(first) // '&scene: damping must be ''linear'', ''tsuji'' or ''kuwabara-kono'' (got ''' // &
+            msg = at(first) // '&scene: damping must be ' // prose(hertzdamp_law_choices(), quote="'") // ' (got ''' // &
                   trim(adjustl(damping)) // ''')'
             return
         end if
@@ -633,4 +630,4 @@ contains
 
     end subroutine read_wall
 
-end module hertzdamp_scene_io
+end module hertzdamp_dem_io

@@ -18,18 +18,19 @@
 !> precision.  Magnitudes are compared through their logarithms, so the checks
 !> themselves never overflow.
 module hertzdamp_dem_validate
-    use hertzdamp_kinds, only: hertzdamp_rk
-    use hertzdamp_registry, only: HD_OK, HD_BAD_ARGUMENT, hertzdamp_message
-    use hertzdamp_registry, only: hertzdamp_end_name
-    use hertzdamp_methods, only: HD_METHOD_FIT
-    use hertzdamp_constants, only: hertzdamp_tau_c0, hertzdamp_pi
-    use hertzdamp_inverse, only: hertzdamp_invert_alpha
-    use hertzdamp_laws, only: hertzdamp_law_status, hertzdamp_law_name
-    use hertzdamp_host, only: HD_HOST_NONE, HD_HOST_LAMMPS, HD_HOST_MFIX_EULER, HD_HOST_MFIX_AB2, HD_HOST_VERLET, &
-                              hertzdamp_host_name
-    use hertzdamp_fit_laws, only: hertzdamp_fit_law_e_min
-    use hertzdamp_materials, only: hertzdamp_sphere_mass, hertzdamp_effective_mass, hertzdamp_effective_radius, &
-                                   hertzdamp_effective_modulus
+    use hertzdamp, only: hertzdamp_rk
+    use hertzdamp, only: HD_OK, HD_BAD_ARGUMENT, hertzdamp_message
+    use hertzdamp, only: hertzdamp_end_name
+    use hertzdamp, only: HD_METHOD_FIT
+    use hertzdamp, only: hertzdamp_tau_c0, hertzdamp_pi
+    use hertzdamp, only: hertzdamp_invert_alpha
+    use hertzdamp, only: hertzdamp_law_status, hertzdamp_law_name
+    use hertzdamp, only: HD_HOST_NONE, hertzdamp_host_name, hertzdamp_host_in_engine, hertzdamp_host_choices, &
+                         hertzdamp_law_choices
+    use hertzdamp_text_format, only: prose
+    use hertzdamp, only: hertzdamp_fit_law_e_min
+    use hertzdamp, only: hertzdamp_sphere_mass, hertzdamp_effective_mass, hertzdamp_effective_radius, &
+                         hertzdamp_effective_modulus
     use hertzdamp_dem_types, only: hertzdamp_dem_scene, hertzdamp_dem_material, hertzdamp_dem_max_particles, &
                                    hertzdamp_dem_max_steps, hertzdamp_dem_max_samples, hertzdamp_dem_max_trace_values, &
                                    hertzdamp_dem_big, hertzdamp_dem_u_floor, hertzdamp_dem_pair_e, hertzdamp_dem_pairs_met, &
@@ -183,14 +184,14 @@ contains
         message = ''
         n = size(sc%radius)
         if (hertzdamp_law_status(sc%law) /= HD_OK) then
-            message = '&scene: damping must be ''linear'', ''tsuji'' or ''kuwabara-kono'''
-        else if (.not. any(sc%scheme == [HD_HOST_LAMMPS, HD_HOST_MFIX_EULER, HD_HOST_MFIX_AB2, HD_HOST_VERLET])) then
-            message = 'scheme: the engine integrates with lammps, mfix-euler, mfix-ab2 or verlet (HD_HOST_*), not ' // &
-                      hertzdamp_host_name(sc%scheme)
-        else if (.not. any(sc%host == [HD_HOST_NONE, HD_HOST_LAMMPS, HD_HOST_MFIX_EULER, HD_HOST_MFIX_AB2, &
-                                       HD_HOST_VERLET])) then
-            message = 'host: the per-pair constants of none, lammps, mfix-euler, mfix-ab2 or verlet (HD_HOST_*), not ' // &
-                      hertzdamp_host_name(sc%host)
+            message = '&scene: damping must be ' // prose(hertzdamp_law_choices(), quote="'")
+        else if (.not. hertzdamp_host_in_engine(sc%scheme)) then
+            message = 'scheme: the engine integrates with ' // prose(hertzdamp_host_choices(engine_only=.true.)) // &
+                      ' (HD_HOST_*), not ' // hertzdamp_host_name(sc%scheme)
+        else if (.not. (sc%host == HD_HOST_NONE .or. hertzdamp_host_in_engine(sc%host))) then
+            message = 'host: the per-pair constants of ' // &
+                      prose(hertzdamp_host_name(HD_HOST_NONE) // ' ' // hertzdamp_host_choices(engine_only=.true.)) // &
+                      ' (HD_HOST_*), not ' // hertzdamp_host_name(sc%host)
         else if (.not. (sc%dt > 0.0_wp)) then
             message = '&scene: dt must be positive'
         else if (.not. (sc%end_time > 0.0_wp)) then

@@ -21,18 +21,22 @@ for gen in "fit_csv_to_f90 hertzdamp_fit_data" "fit_kernels_f90 hertzdamp_fit_ke
      head -3 "src/$2.f90" | grep -q 'do not edit' && head -3 "src/$2.f90" | grep -q 'make fit-source'; then
     p=$((p + 1)); else echo "FAIL sync_fit: src/$2.f90 header"; f=$((f + 1)); fi
 done
-# the generated kernels: one named procedure per inverse kernel; the one include of src/
-# is the k, d formulas (src/hertzdamp_kd_formula.inc, issue 31: one source instead of a
-# copy kept equal), in the contains part of hertzdamp_pair and of the kernels, which call
-# direct_kd six times; direct_kd is defined nowhere else
-incs=$(grep -il "^ *include " src/*.f90 | xargs -n1 basename | sort | xargs)
+# the generated kernels: one named procedure per inverse kernel; their one include is
+# the k, d formulas (src/hertzdamp_kd_formula.inc, issue 31: one source instead of a copy
+# kept equal), which hertzdamp_pair includes too; the kernels call direct_kd six times and
+# direct_kd is defined nowhere else.  (The other include of src/, the onset-phase lookup
+# hertzdamp_phase_eval.inc, serves hertzdamp_pair and hertzdamp_phase.)
+incs() { grep -hiE "^ *include +'" "$@" | sed -E "s/^ *include +'([^']*)'.*/\1/I" | sort -u | xargs; }
 if [ "$(grep -c '^    pure subroutine kernel_inverse_' src/hertzdamp_fit_kernels.f90)" -eq 6 ] &&
-   [ "$incs" = "hertzdamp_fit_kernels.f90 hertzdamp_pair.f90" ] &&
-   [ "$(ls src/*.inc | xargs -n1 basename)" = "hertzdamp_kd_formula.inc" ] &&
-   [ "$(grep -hi "^ *include " src/*.f90 | sed -E "s/^ *include +'([^']*)'.*/\1/I" | sort -u)" = "hertzdamp_kd_formula.inc" ] &&
+   [ "$(incs src/hertzdamp_fit_kernels.f90)" = "hertzdamp_kd_formula.inc" ] &&
+   grep -qiE "^ *include +'hertzdamp_kd_formula.inc'" src/hertzdamp_pair.f90 &&
+   [ "$(grep -ilE "^ *include +'hertzdamp_kd_formula.inc'" src/*.f90 | xargs -n1 basename | xargs)" = "hertzdamp_fit_kernels.f90 hertzdamp_pair.f90" ] &&
    [ "$(grep -c 'call direct_kd(' src/hertzdamp_fit_kernels.f90)" -eq 6 ] &&
    [ "$(grep -il 'subroutine direct_kd' src/* | xargs -n1 basename)" = "hertzdamp_kd_formula.inc" ]; then
-  p=$((p + 1)); else echo "FAIL sync_fit: kernels not one procedure each, or an include other than the k, d formulas"; f=$((f + 1)); fi
+  p=$((p + 1)); else echo "FAIL sync_fit: kernels not one procedure each, or not the one k, d formula include"; f=$((f + 1)); fi
+# every include file of src/ is included by a module of src/ (none left over)
+left=""; for inc in src/*.inc; do grep -qiE "^ *include +'$(basename "$inc")'" src/*.f90 || left="$left $inc"; done
+if [ -z "$left" ]; then p=$((p + 1)); else echo "FAIL sync_fit: include files no module includes:$left"; f=$((f + 1)); fi
 # header of the CSV names the generator and the reference tolerance
 if grep -q '^# .*gen/fit/gen_fit.f90' data/fit_coefficients.csv && grep -q 'tolerance 1.000E-15' data/fit_coefficients.csv; then
   p=$((p + 1)); else echo "FAIL sync_fit: CSV header"; f=$((f + 1)); fi

@@ -72,8 +72,8 @@ extern "C" {
 #define HERTZDAMP_PHASE_UNREACHABLE  30  /* some onset phase cannot reach e and T_c at so few steps */
 #define HERTZDAMP_BAD_PHASE          31  /* onset phase not finite or outside (0, 1] */
 #define HERTZDAMP_NO_PHASE_TABLE     32  /* the pair was initialised without its onset-phase table */
-#define HERTZDAMP_BAD_TANGENTIAL     33  /* tangential model or its parameters invalid */
-#define HERTZDAMP_BAD_OBLIQUE        34  /* oblique-contact argument invalid (tangential speed, radii, angle) */
+#define HERTZDAMP_BAD_TANGENTIAL     33  /* tangential model or its parameters invalid (model, k_t, x_gammat, friction, lever arm) */
+#define HERTZDAMP_BAD_OBLIQUE        34  /* oblique-contact argument invalid (angle, radii, masses, tangential speed) */
 
 /* Contact-end definitions (argument `end`). */
 #define HERTZDAMP_END_OVERLAP 0  /* overlap: contact ends when the overlap returns to zero (the default) */
@@ -91,6 +91,14 @@ extern "C" {
 #define HERTZDAMP_HOST_MFIX_AB2     3  /* mfix-ab2: MFiX DES_INTG_METHOD = 'ADAMS_BASHFORTH' */
 #define HERTZDAMP_HOST_VERLET       4  /* verlet: the scene engine of this repository (velocity Verlet with onset/release corrections) */
 #define HERTZDAMP_HOST_LAMMPS_PHASE 5  /* lammps-phase: lammps with the hertzdamp plugin's onset/release phase correction (phase yes) */
+
+/* Tangential force models (argument `tangential`; doc/oblique.md). */
+#define HERTZDAMP_TANGENTIAL_LINEAR_HISTORY 0  /* linear_history: F_t = -k_t xi - eta_t v_t, Coulomb-limited (LAMMPS tangential linear_history) */
+#define HERTZDAMP_TANGENTIAL_MINDLIN        1  /* mindlin: F_t = -k_t a xi - eta_t v_t, a = sqrt(R* delta) (LAMMPS tangential mindlin) */
+
+/* Torque lever arms of an oblique contact (argument `lever`; doc/oblique.md). */
+#define HERTZDAMP_LEVER_RADIUS  0  /* radius: lever arm R (LAMMPS's wall code) */
+#define HERTZDAMP_LEVER_CONTACT 1  /* contact: lever arm R - delta/2 (LAMMPS's pair styles) */
 /* END codes */
 
 /*

@@ -34,10 +34,18 @@ module hertzdamp
                                   HD_METHOD_SERIES, HD_METHOD_PADE, HD_METHOD_COMPACT, HD_METHOD_FIT, &
                                   HD_METHOD_ITERATIVE, HD_METHOD_FIRST_ORDER, hertzdamp_min_method, &
                                   hertzdamp_max_method, hertzdamp_method_name, hertzdamp_method_code, &
-                                  hertzdamp_method_choices, hertzdamp_method_listing, hertzdamp_law_q, &
+                                  hertzdamp_method_choices, hertzdamp_method_listing, &
+                                  HD_TANGENTIAL_LINEAR_HISTORY, HD_TANGENTIAL_MINDLIN, &
+                                  hertzdamp_min_tangential, hertzdamp_max_tangential, &
+                                  hertzdamp_tangential_name, hertzdamp_tangential_code, &
+                                  hertzdamp_tangential_choices, hertzdamp_tangential_listing, &
+                                  HD_LEVER_RADIUS, HD_LEVER_CONTACT, hertzdamp_min_lever, &
+                                  hertzdamp_max_lever, hertzdamp_lever_name, hertzdamp_lever_code, &
+                                  hertzdamp_lever_choices, hertzdamp_lever_listing, hertzdamp_law_q, &
                                   hertzdamp_law_summary, hertzdamp_law_help, hertzdamp_end_help, &
-                                  hertzdamp_host_order, hertzdamp_host_in_engine, hertzdamp_host_help, &
-                                  hertzdamp_pair_size, hertzdamp_pair_oblique_size, hertzdamp_pair_phase_size
+                                  hertzdamp_tangential_help, hertzdamp_lever_help, hertzdamp_host_order, &
+                                  hertzdamp_host_in_engine, hertzdamp_host_help, hertzdamp_pair_size, &
+                                  hertzdamp_pair_oblique_size, hertzdamp_pair_phase_size
     ! END registry use
     use hertzdamp_laws, only: hertzdamp_law_status, hertzdamp_law_speed_exponent, &
                               hertzdamp_law_reversal_exponent, hertzdamp_law_has_alpha_c, hertzdamp_tsuji_e, &
@@ -97,9 +105,15 @@ module hertzdamp
               HD_METHOD_RK45, HD_METHOD_SERIES, HD_METHOD_PADE, HD_METHOD_COMPACT, HD_METHOD_FIT, &
               HD_METHOD_ITERATIVE, HD_METHOD_FIRST_ORDER, hertzdamp_min_method, hertzdamp_max_method, &
               hertzdamp_method_name, hertzdamp_method_code, hertzdamp_method_choices, &
-              hertzdamp_method_listing, hertzdamp_law_q, hertzdamp_law_summary, hertzdamp_law_help, &
-              hertzdamp_end_help, hertzdamp_host_order, hertzdamp_host_in_engine, hertzdamp_host_help, &
-              hertzdamp_pair_size, hertzdamp_pair_oblique_size, hertzdamp_pair_phase_size
+              hertzdamp_method_listing, HD_TANGENTIAL_LINEAR_HISTORY, HD_TANGENTIAL_MINDLIN, &
+              hertzdamp_min_tangential, hertzdamp_max_tangential, hertzdamp_tangential_name, &
+              hertzdamp_tangential_code, hertzdamp_tangential_choices, hertzdamp_tangential_listing, &
+              HD_LEVER_RADIUS, HD_LEVER_CONTACT, hertzdamp_min_lever, hertzdamp_max_lever, &
+              hertzdamp_lever_name, hertzdamp_lever_code, hertzdamp_lever_choices, hertzdamp_lever_listing, &
+              hertzdamp_law_q, hertzdamp_law_summary, hertzdamp_law_help, hertzdamp_end_help, &
+              hertzdamp_tangential_help, hertzdamp_lever_help, hertzdamp_host_order, &
+              hertzdamp_host_in_engine, hertzdamp_host_help, hertzdamp_pair_size, &
+              hertzdamp_pair_oblique_size, hertzdamp_pair_phase_size
     ! END registry public
     ! the damping laws' exact facts (hertzdamp_laws)
     public :: hertzdamp_law_status, hertzdamp_law_speed_exponent, hertzdamp_law_reversal_exponent, &

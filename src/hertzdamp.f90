@@ -80,6 +80,9 @@ module hertzdamp
                                    hertzdamp_plane_strain_modulus, hertzdamp_hertz_stiffness, &
                                    hertzdamp_hertz_time, hertzdamp_pair_contact, hertzdamp_wall_contact, &
                                    hertzdamp_rayleigh_time, hertzdamp_rayleigh_fraction
+    use hertzdamp_oblique, only: hertzdamp_oblique_t, hertzdamp_oblique_result, hertzdamp_oblique_impact, &
+                                 hertzdamp_oblique_status, hertzdamp_oblique_default_tol, hertzdamp_tangential_kt, &
+                                 hertzdamp_oblique_correct
     implicit none
     private
 
@@ -157,4 +160,7 @@ module hertzdamp
               hertzdamp_effective_modulus, hertzdamp_plane_strain_modulus, hertzdamp_hertz_stiffness, &
               hertzdamp_hertz_time, hertzdamp_pair_contact, hertzdamp_wall_contact, hertzdamp_rayleigh_time, &
               hertzdamp_rayleigh_fraction
+    ! the oblique frictional contact (hertzdamp_oblique)
+    public :: hertzdamp_oblique_t, hertzdamp_oblique_result, hertzdamp_oblique_impact, hertzdamp_oblique_status, &
+              hertzdamp_oblique_default_tol, hertzdamp_tangential_kt, hertzdamp_oblique_correct
 end module hertzdamp

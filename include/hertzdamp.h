@@ -240,6 +240,37 @@ int hertzdamp_c_forward_law(double k, double d, double m, double u, int law, int
  */
 const char *hertzdamp_c_strerror(int status);
 
+/* ==================================================================== the oblique contact (doc/oblique.md) */
+
+/* The tangential stiffness of a softened contact (normal stiffness k instead of k_phys)
+ * whose outcome is a time-stretched copy of the physical one: mindlin
+ * kt_phys k/k_phys, linear_history kt_phys (k/k_phys)^(4/5) (exact on a wall with the
+ * lever arm R).  eta_t = x_gammat d needs no change.  NULL kt: HERTZDAMP_BAD_ARGUMENT.
+ */
+int hertzdamp_c_tangential_kt(int tangential, double kt_phys, double k, double k_phys, double *kt);
+
+/*
+ * The oblique impact of sphere 1 (m1, r1) on sphere 2 at rest (m2 = r2 = 0: a wall) at
+ * speed [m/s] and angle [degrees from the normal]: out = e_n, e_t (contact point),
+ * vt_ratio (centres), rebound angle [degrees], omega1, omega2 [rad/s], sliding fraction,
+ * contact time [s]; 0 on failure.  tangential HERTZDAMP_TANGENTIAL_*, lever
+ * HERTZDAMP_LEVER_*.
+ */
+int hertzdamp_c_oblique_impact(double m1, double r1, double m2, double r2, double k, double d,
+                               int law, int end, int tangential, double kt, double xgammat, double mu,
+                               int lever, double speed, double angle, double out[8]);
+
+/*
+ * The oblique normal correction of one contact: the k, d (at contact time tc, with the
+ * bound k_phys) of the corrected target e' for which the oblique e_n equals e, and the
+ * k_t scaled to that k; out = k, d, k_t, e' (0 on failure).  A secant solve of the
+ * oblique contact (a few impacts per call).
+ */
+int hertzdamp_c_oblique_correct(double m1, double r1, double m2, double r2, double k_phys,
+                                int law, int end, int tangential, double kt_phys, double xgammat,
+                                double mu, int lever, double e, double tc, double speed, double angle,
+                                double out[4]);
+
 /* ==================================================================== for bindings (issue 35)
  * (ptrdiff_t: <stddef.h>, included here to keep this block in one place)
  * The Python package's entry points; a binding reads every code and size from the

@@ -21,14 +21,42 @@
 !> - every bad argument gives its status.
 program test_oblique
     use hertzdamp, only: hertzdamp_rk, HD_OK, HD_BAD_MASS, HD_BAD_RADIUS, HD_BAD_STIFFNESS, HD_BAD_TANGENTIAL, &
-                         HD_BAD_OBLIQUE, HD_BAD_VELOCITY, HD_BAD_TOL, HD_BAD_KPHYS, HD_BAD_LAW, HD_END_OVERLAP, &
+                         HD_BAD_OBLIQUE, HD_BAD_VELOCITY, HD_BAD_TOL, HD_BAD_KPHYS, HD_BAD_ARGUMENT, HD_BAD_LAW, HD_END_OVERLAP, &
                          HD_END_FORCE, HD_DAMPING_LINEAR, HD_DAMPING_TSUJI, HD_DAMPING_KUWABARA_KONO, &
                          HD_TANGENTIAL_LINEAR_HISTORY, HD_TANGENTIAL_MINDLIN, HD_LEVER_RADIUS, HD_LEVER_CONTACT, &
                          hertzdamp_pi, hertzdamp_oblique_t, hertzdamp_oblique_result, hertzdamp_oblique_impact, &
                          hertzdamp_tangential_kt, hertzdamp_oblique_correct, hertzdamp_invert, hertzdamp_law_q, &
                          hertzdamp_rk45_collide, hertzdamp_reduce, hertzdamp_collision
+    use hertzdamp_capi, only: hertzdamp_c_tangential_kt, hertzdamp_c_oblique_impact, hertzdamp_c_oblique_correct
     use hertzdamp_testing, only: test_suite, new_suite
+    use, intrinsic :: iso_c_binding, only: c_double, c_int
     implicit none
+    ! the legacy externals as a fixed-form caller declares them (include/hertzdamp.fi)
+    interface
+        subroutine legacy_tangential_kt(itang, ktphys, k, kphys, kt, ierr) bind(c, name='hertzdamp_tangential_kt_')
+            import :: c_double, c_int
+            integer(c_int), intent(in) :: itang
+            real(c_double), intent(in) :: ktphys, k, kphys
+            real(c_double), intent(out) :: kt
+            integer(c_int), intent(out) :: ierr
+        end subroutine legacy_tangential_kt
+        subroutine legacy_oblique(m1, r1, m2, r2, k, d, ilaw, iend, itang, kt, xgt, mu, ilever, u, theta, out, ierr) &
+                bind(c, name='hertzdamp_oblique_')
+            import :: c_double, c_int
+            real(c_double), intent(in) :: m1, r1, m2, r2, k, d, kt, xgt, mu, u, theta
+            integer(c_int), intent(in) :: ilaw, iend, itang, ilever
+            real(c_double), intent(out) :: out(8)
+            integer(c_int), intent(out) :: ierr
+        end subroutine legacy_oblique
+        subroutine legacy_oblique_correct(m1, r1, m2, r2, kphys, ilaw, iend, itang, ktphys, xgt, mu, ilever, e, tc, &
+                                          u, theta, out, ierr) bind(c, name='hertzdamp_oblique_correct_')
+            import :: c_double, c_int
+            real(c_double), intent(in) :: m1, r1, m2, r2, kphys, ktphys, xgt, mu, e, tc, u, theta
+            integer(c_int), intent(in) :: ilaw, iend, itang, ilever
+            real(c_double), intent(out) :: out(4)
+            integer(c_int), intent(out) :: ierr
+        end subroutine legacy_oblique_correct
+    end interface
     integer, parameter :: wp = hertzdamp_rk
     type(test_suite) :: s
     ! the glass sphere of issue 33: R = 1 mm, rho = 2500, E = 63 GPa, nu = 0.24
@@ -52,6 +80,7 @@ program test_oblique
     call stretch_invariance()
     call correction()
     call bad_arguments()
+    call entry_points()
     call s%finish()
 
 contains
@@ -640,5 +669,49 @@ contains
         call hertzdamp_oblique_correct(c, 0.5_wp, 1.0e-5_wp, 1.0_wp, 95.0_wp, k, d, kt, et, st)
         call s%check(st == HD_BAD_OBLIQUE .and. k == 0.0_wp, 'correct: bad angle')
     end subroutine bad_arguments
+
+    !> The C and legacy entry points give the module's bits.
+    subroutine entry_points()
+        type(hertzdamp_oblique_t) :: c
+        type(hertzdamp_oblique_result) :: r
+        real(wp) :: out(8), outl(8), o4(4), o4l(4), kt, ktc, ktl, k, d, et
+        integer :: st, stc, model
+        integer(c_int) :: ierr
+        do model = HD_TANGENTIAL_LINEAR_HISTORY, HD_TANGENTIAL_MINDLIN
+            call hertzdamp_tangential_kt(model, 3.0_wp, 7.0_wp, 11.0_wp, kt, st)
+            stc = hertzdamp_c_tangential_kt(int(model, c_int), 3.0_wp, 7.0_wp, 11.0_wp, ktc)
+            call legacy_tangential_kt(int(model, c_int), 3.0_wp, 7.0_wp, 11.0_wp, ktl, ierr)
+            call s%check(st == HD_OK .and. stc == st .and. ierr == st .and. ktc == kt .and. ktl == kt, &
+                         'C and legacy tangential_kt: the module bits')
+        end do
+        c = glass_wall(0.5_wp, HD_DAMPING_TSUJI, HD_END_OVERLAP, HD_TANGENTIAL_MINDLIN, 0.3_wp, 0.2_wp, &
+                       HD_LEVER_CONTACT)
+        c%m2 = 2.0_wp * c%m1
+        c%r2 = 1.5_wp * c%r1
+        call hertzdamp_oblique_impact(c, 2.0_wp, 35.0_wp, r, st)
+        stc = hertzdamp_c_oblique_impact(c%m1, c%r1, c%m2, c%r2, c%k, c%d, int(c%law, c_int), int(c%iend, c_int), &
+                                         int(c%tangential, c_int), c%kt, c%xgammat, c%mu, int(c%lever, c_int), &
+                                         2.0_wp, 35.0_wp, out)
+        call legacy_oblique(c%m1, c%r1, c%m2, c%r2, c%k, c%d, int(c%law, c_int), int(c%iend, c_int), &
+                            int(c%tangential, c_int), c%kt, c%xgammat, c%mu, int(c%lever, c_int), 2.0_wp, 35.0_wp, &
+                            outl, ierr)
+        call s%check(st == HD_OK .and. stc == st .and. ierr == st .and. &
+                     all(out == [r%e_n, r%e_t, r%vt_ratio, r%rebound_angle, r%omega1, r%omega2, r%slide_fraction, &
+                                 r%t_c]) .and. all(outl == out), 'C and legacy oblique impact: the module bits')
+        stc = hertzdamp_c_oblique_impact(c%m1, c%r1, c%m2, c%r2, c%k, c%d, int(c%law, c_int), int(c%iend, c_int), &
+                                         int(c%tangential, c_int), c%kt, c%xgammat, c%mu, int(c%lever, c_int), &
+                                         2.0_wp, 35.0_wp)
+        call s%check(stc == HD_BAD_ARGUMENT, 'C oblique impact: NULL out gives HD_BAD_ARGUMENT')
+        c%k = kphys * sqrt(0.6_wp)
+        call hertzdamp_oblique_correct(c, 0.5_wp, 2.0e-5_wp, 2.0_wp, 35.0_wp, k, d, kt, et, st)
+        stc = hertzdamp_c_oblique_correct(c%m1, c%r1, c%m2, c%r2, c%k, int(c%law, c_int), int(c%iend, c_int), &
+                                          int(c%tangential, c_int), c%kt, c%xgammat, c%mu, int(c%lever, c_int), &
+                                          0.5_wp, 2.0e-5_wp, 2.0_wp, 35.0_wp, o4)
+        call legacy_oblique_correct(c%m1, c%r1, c%m2, c%r2, c%k, int(c%law, c_int), int(c%iend, c_int), &
+                                    int(c%tangential, c_int), c%kt, c%xgammat, c%mu, int(c%lever, c_int), 0.5_wp, &
+                                    2.0e-5_wp, 2.0_wp, 35.0_wp, o4l, ierr)
+        call s%check(st == HD_OK .and. stc == st .and. ierr == st .and. all(o4 == [k, d, kt, et]) .and. &
+                     all(o4l == o4), 'C and legacy oblique correction: the module bits')
+    end subroutine entry_points
 
 end program test_oblique

@@ -82,7 +82,7 @@ module hertzdamp
                                    hertzdamp_rayleigh_time, hertzdamp_rayleigh_fraction
     use hertzdamp_oblique, only: hertzdamp_oblique_t, hertzdamp_oblique_result, hertzdamp_oblique_impact, &
                                  hertzdamp_oblique_status, hertzdamp_oblique_default_tol, hertzdamp_tangential_kt, &
-                                 hertzdamp_oblique_correct
+                                 hertzdamp_oblique_correct, hertzdamp_mindlin_kt
     implicit none
     private
 
@@ -162,5 +162,6 @@ module hertzdamp
               hertzdamp_rayleigh_fraction
     ! the oblique frictional contact (hertzdamp_oblique)
     public :: hertzdamp_oblique_t, hertzdamp_oblique_result, hertzdamp_oblique_impact, hertzdamp_oblique_status, &
-              hertzdamp_oblique_default_tol, hertzdamp_tangential_kt, hertzdamp_oblique_correct
+              hertzdamp_oblique_default_tol, hertzdamp_tangential_kt, hertzdamp_oblique_correct, &
+              hertzdamp_mindlin_kt
 end module hertzdamp

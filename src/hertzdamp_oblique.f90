@@ -43,7 +43,7 @@ module hertzdamp_oblique
                                   hertzdamp_max_tangential, HD_LEVER_RADIUS, HD_LEVER_CONTACT, &
                                   hertzdamp_min_lever, hertzdamp_max_lever, hertzdamp_law_q
     use hertzdamp_laws, only: HD_DAMPING_LINEAR, hertzdamp_law_status
-    use hertzdamp_registry, only: HD_BAD_KPHYS
+    use hertzdamp_registry, only: HD_BAD_KPHYS, HD_BAD_MODULUS, HD_BAD_POISSON
     use hertzdamp_constants, only: hertzdamp_pi
     use hertzdamp_pair, only: hertzdamp_invert
     implicit none
@@ -100,6 +100,7 @@ module hertzdamp_oblique
     integer, parameter :: max_steps = 200000, max_switches = 1000
 
     public :: hertzdamp_oblique_impact, hertzdamp_oblique_status, hertzdamp_tangential_kt, hertzdamp_oblique_correct
+    public :: hertzdamp_mindlin_kt
 
 contains
 
@@ -541,6 +542,26 @@ contains
     end subroutine first_event
 
     ! ================================================================ softened contacts
+
+    !> Mindlin's tangential stiffness from the moduli, k_t = 8 G* (LAMMPS `mindlin NULL`),
+    !> 1/G* = 2 (2 - nu1)(1 + nu1)/E1 + 2 (2 - nu2)(1 + nu2)/E2 [N/m^2; times the contact
+    !> radius a, N/m].  Status HD_BAD_MODULUS (E not finite and positive) or HD_BAD_POISSON
+    !> (nu outside (-1, 0.5]); kt = 0 then.
+    pure elemental subroutine hertzdamp_mindlin_kt(e1, nu1, e2, nu2, kt, status)
+        real(wp), intent(in) :: e1, nu1    !! body 1: Young's modulus [Pa], Poisson's ratio
+        real(wp), intent(in) :: e2, nu2    !! body 2 (or the wall)
+        real(wp), intent(out) :: kt        !! 8 G* [N/m^2]
+        integer, intent(out) :: status     !! HD_OK or an error code
+        kt = 0.0_wp
+        status = HD_OK
+        if (.not. (e1 > 0.0_wp .and. e1 < huge(1.0_wp) .and. e2 > 0.0_wp .and. e2 < huge(1.0_wp))) then
+            status = HD_BAD_MODULUS
+        else if (.not. (nu1 > -1.0_wp .and. nu1 <= 0.5_wp .and. nu2 > -1.0_wp .and. nu2 <= 0.5_wp)) then
+            status = HD_BAD_POISSON
+        else
+            kt = 8.0_wp / (2.0_wp * (2.0_wp - nu1) * (1.0_wp + nu1) / e1 + 2.0_wp * (2.0_wp - nu2) * (1.0_wp + nu2) / e2)
+        end if
+    end subroutine hertzdamp_mindlin_kt
 
     !> The tangential stiffness of a softened contact (normal stiffness k instead of the
     !> physical k_phys) whose outcome is a time-stretched copy of the physical contact's:

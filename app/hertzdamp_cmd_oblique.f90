@@ -118,6 +118,7 @@ contains
         type(oblique_opts), intent(out) :: o
         integer :: k, tang, lever
         real(wp) :: kt
+        kt = 0.0_wp
         if (.not. ct%has_bodies) call fail(EXIT_USAGE, 'oblique needs each body''s mass and radius: --radius ' // &
                                            'and --density (and --radius2, --density2 or --wall)')
         if (.not. ct%has_kphys) call fail(EXIT_USAGE, 'oblique needs the physical stiffness: --youngs-modulus ' // &

@@ -410,6 +410,8 @@ contains
                 call to_stick(p, sigma, y)
                 mode = stick
                 res%switches = res%switches + 1
+            case default
+                ! no event, or F_n = 0 (the step only stops there)
             end select
             if (res%switches > max_switches) then
                 status = HD_NO_CONVERGENCE

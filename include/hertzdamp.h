@@ -278,7 +278,8 @@ int hertzdamp_c_oblique_correct(double m1, double r1, double m2, double r2, doub
  *
  * Registries: the names of an enumeration in the order of their codes.  kind is one of
  * "law", "end", "host" (the HERTZDAMP_DAMPING_, _END_, _HOST_ codes), "method" (the
- * forward methods of hertzdamp_c_forward_array: fit, rk45, ...), "status" (the status
+ * forward methods of hertzdamp_c_forward_array: fit, rk45, ...), "tangential", "lever"
+ * (the HERTZDAMP_TANGENTIAL_, _LEVER_ codes), "status" (the status
  * codes, lower case with dashes: "ok", "no-rebound", "bad-mass", ...), "stats" (the
  * fields of hertzdamp_c_pair_stats, codes their index) and "size" ("pair": the doubles
  * of hertzdamp_pair_t; "stats": those of hertzdamp_c_pair_stats).  An unknown kind or

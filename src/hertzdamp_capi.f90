@@ -56,6 +56,8 @@ module hertzdamp_capi
                                   hertzdamp_min_law, hertzdamp_max_law, hertzdamp_law_name, hertzdamp_min_end, &
                                   hertzdamp_max_end, hertzdamp_min_host, hertzdamp_max_host, hertzdamp_host_name, &
                                   hertzdamp_min_method, hertzdamp_max_method, hertzdamp_method_name, hertzdamp_status_name
+    use hertzdamp_registry, only: hertzdamp_min_tangential, hertzdamp_max_tangential, hertzdamp_tangential_name, &
+                                  hertzdamp_min_lever, hertzdamp_max_lever, hertzdamp_lever_name
     use hertzdamp_rk45, only: hertzdamp_rk45_default_tol
     use hertzdamp_series, only: hertzdamp_series_default_order
     use hertzdamp_methods, only: hertzdamp_default_accuracy
@@ -749,7 +751,8 @@ contains
     ! entry point per contact.
 
     !> The registry `kind` of the library: its names in the order of their codes, and the
-    !> codes.  law, end, host, method (HD_DAMPING_*, HD_END_*, HD_HOST_*, HD_METHOD_*), status
+    !> codes.  law, end, host, method, tangential, lever (HD_DAMPING_*, HD_END_*, HD_HOST_*,
+    !> HD_METHOD_*, HD_TANGENTIAL_*, HD_LEVER_*), status
     !> (the HD_* codes of hertzdamp_status, lower case with dashes), stats (the fields of
     !> hertzdamp_c_pair_stats, codes their index from 0), size (pair: the doubles of
     !> hertzdamp_pair_t; stats: those of hertzdamp_c_pair_stats).
@@ -777,6 +780,12 @@ contains
         case ('method')
             count = hertzdamp_max_method - hertzdamp_min_method + 1
             n0 = hertzdamp_min_method
+        case ('tangential')
+            count = hertzdamp_max_tangential - hertzdamp_min_tangential + 1
+            n0 = hertzdamp_min_tangential
+        case ('lever')
+            count = hertzdamp_max_lever - hertzdamp_min_lever + 1
+            n0 = hertzdamp_min_lever
         case ('status')
             count = hertzdamp_max_status + 1
         case ('stats')
@@ -799,6 +808,10 @@ contains
                 names(i) = hertzdamp_end_name(codes(i))
             case ('host')
                 names(i) = hertzdamp_host_name(codes(i))
+            case ('tangential')
+                names(i) = hertzdamp_tangential_name(codes(i))
+            case ('lever')
+                names(i) = hertzdamp_lever_name(codes(i))
             case ('method')
                 names(i) = hertzdamp_method_name(codes(i))
             case ('status')
@@ -822,8 +835,8 @@ contains
     end function from_c
 
     !> `int hertzdamp_c_code(const char *kind, const char *name, int *code)`: the code of `name`
-    !> in the registry `kind` (law, end, host, method, status, stats, size; see registry), e.g.
-    !> ("law", "tsuji") -> HERTZDAMP_DAMPING_TSUJI, ("size", "pair") -> the doubles of
+    !> in the registry `kind` (law, end, host, method, tangential, lever, status, stats, size;
+    !> see registry), e.g. ("law", "tsuji") -> HERTZDAMP_DAMPING_TSUJI, ("size", "pair") -> the doubles of
     !> hertzdamp_pair_t.  HD_BAD_ARGUMENT (and *code = -1) for an unknown kind or name or NULL.
     integer(c_int) function hertzdamp_c_code(kind, name, code) bind(c, name='hertzdamp_c_code') result(status)
         character(kind=c_char), intent(in), optional :: kind(64)  !! the registry (NUL-terminated)

@@ -78,6 +78,7 @@ program test_oblique
     kphys = 4.0_wp / 3.0_wp * young / (2.0_wp * (1.0_wp - nu**2)) * sqrt(rad)
     gstar = young / (2.0_wp * 2.0_wp * (2.0_wp - nu) * (1.0_wp + nu))
     call against_independent()
+    call tolerance_study()
     call maw_barber_fawcett()
     call normal_part()
     call stretch_invariance()
@@ -419,6 +420,35 @@ contains
         c%r2 = 2.0_wp**(1.0_wp / 3) * c%r1
         call compare('pair, linear_history, lever contact, 30 deg', c, 1.0_wp, 30.0_wp, 1.0e-6_wp, .true.)
     end subroutine against_independent
+
+    !> Convergence in the tolerance: the outcome against tol = 1e-14 (glass on a glass wall,
+    !> 1 m/s, mu = 0.3, e = 0.5: four stick-slip switches) falls with the tolerance, within
+    !> 100 tol from 1e-8 to 1e-13 (doc/oblique.md's table is this output).
+    subroutine tolerance_study()
+        type(hertzdamp_oblique_t) :: c
+        type(hertzdamp_oblique_result) :: r, ref
+        integer :: st, ia, it
+        real(wp) :: th, tol, err, prev
+        do ia = 1, 2
+            th = merge(20.0_wp, 45.0_wp, ia == 1)
+            c = glass_wall(0.5_wp, HD_DAMPING_LINEAR, HD_END_OVERLAP, HD_TANGENTIAL_MINDLIN, 0.3_wp, 0.0_wp, &
+                           HD_LEVER_RADIUS, cos(th * hertzdamp_pi / 180))
+            call hertzdamp_oblique_impact(c, 1.0_wp, th, ref, st, tol=1.0e-14_wp)
+            prev = huge(1.0_wp)
+            do it = 8, 13
+                tol = 10.0_wp**(-it)
+                call hertzdamp_oblique_impact(c, 1.0_wp, th, r, st, tol=tol)
+                err = maxval(abs([r%e_n - ref%e_n, r%e_t - ref%e_t, r%vt_ratio - ref%vt_ratio]))
+                print '(2x,a,f4.0,a,es8.1,a,es9.2,a,i5)', 'tolerance study', th, ' deg: tol', tol, ' error', err, &
+                    ' steps', r%steps
+                call s%check(st == HD_OK .and. err <= 100.0_wp * tol, 'tolerance study: error <= 100 tol')
+                if (mod(it, 2) == 0) then
+                    call s%check(err < prev, 'tolerance study: the error falls with the tolerance')
+                    prev = err
+                end if
+            end do
+        end do
+    end subroutine tolerance_study
 
     !> The constants of restitution e and contact time tc at normal speed un (the bound
     !> k_phys = c%k), k_t scaled by hertzdamp_tangential_kt.

@@ -41,8 +41,8 @@ module hertzdamp_oblique
                                   HD_END_OVERLAP, HD_END_FORCE, hertzdamp_min_end, hertzdamp_max_end, &
                                   HD_TANGENTIAL_LINEAR_HISTORY, HD_TANGENTIAL_MINDLIN, hertzdamp_min_tangential, &
                                   hertzdamp_max_tangential, HD_LEVER_RADIUS, HD_LEVER_CONTACT, &
-                                  hertzdamp_min_lever, hertzdamp_max_lever, hertzdamp_law_q
-    use hertzdamp_laws, only: HD_DAMPING_LINEAR, hertzdamp_law_status
+                                  hertzdamp_min_lever, hertzdamp_max_lever, hertzdamp_law_q, HD_DAMPING_LINEAR
+    use hertzdamp_laws, only: hertzdamp_law_status
     use hertzdamp_registry, only: HD_BAD_KPHYS, HD_BAD_MODULUS, HD_BAD_POISSON
     use hertzdamp_constants, only: hertzdamp_pi
     use hertzdamp_pair, only: hertzdamp_invert

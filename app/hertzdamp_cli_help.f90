@@ -7,7 +7,7 @@ module hertzdamp_cli_help
     use hertzdamp_cli, only: write_stdout, quit, EXIT_OK
     use hertzdamp, only: hertzdamp_law_listing, hertzdamp_end_listing, hertzdamp_host_listing, &
                          hertzdamp_method_listing, hertzdamp_law_choices, hertzdamp_end_choices, hertzdamp_host_choices, &
-                         hertzdamp_method_choices
+                         hertzdamp_method_choices, hertzdamp_tangential_listing, hertzdamp_lever_listing
     implicit none
     private
     public :: print_help, wants_help, hertzdamp_version, expand_help
@@ -105,6 +105,7 @@ module hertzdamp_cli_help
         '  scene      run a DEM scene file (namelist), the inverse rule at every contact' // nl // &
         '  check      what a peer engine''s deck really does: e, contact time, time step, a fix' // nl // &
         '  calibrate  k, d and the damping law fitted to measured e(u) and T_c(u) (CSV)' // nl // &
+        '  oblique    oblique frictional impact: e_n, e_t, spin, physical or softened' // nl // &
         '' // nl // &
         'Definitions (SI units; body 1 and body 2 touch):' // nl // &
         '  effective mass m*     m1 m2 / (m1 + m2); against a wall, or a particle held' // nl // &
@@ -270,6 +271,51 @@ module hertzdamp_cli_help
         'dt_max [s], dt_elastic [s] (tc_elastic / N), t_rayleigh [s], dt_rayleigh [s]' // nl // &
         '(empty without the materials), with --host e_spread and tc_spread, status.' // nl // &
         '' // nl // list_syntax // nl // nl // status_help
+
+    character(len=*), parameter :: oblique = &
+        'Usage: hertzdamp oblique --e E --velocity U --angle LIST --friction MU' // nl // &
+        '                         --radius R --density RHO (--radius2 R2 --density2 RHO2 | --wall)' // nl // &
+        '                         --youngs-modulus E --poisson-ratio NU [options]' // nl // &
+        '' // nl // &
+        'The oblique impact of sphere 1 (radius, density) at speed U and angle theta from' // nl // &
+        'the normal on sphere 2 at rest or on a wall, neither spinning, in the plane of' // nl // &
+        'impact (doc/oblique.md).  Normal force k delta^(3/2) + d delta^q delta'' of the' // nl // &
+        'law; tangential force of LAMMPS pair_style granular: mindlin -k_t a xi - eta_t v_t' // nl // &
+        '(a = sqrt(R* delta)) or linear_history -k_t xi - eta_t v_t, eta_t = x_gammat d,' // nl // &
+        'Coulomb limit mu |F_n| (damping included), the history carried along the turning' // nl // &
+        'tangent; solid spheres; the line of centres recomputed continuously.  The' // nl // &
+        'physical contact has k = k_phys and d of e at the normal speed U cos(theta).' // nl // &
+        'With --dt and --steps the softened contact of the adaptive rule instead: k, d of' // nl // &
+        'T_c = N dt at U cos(theta) (k_phys when it is softer), and k_t adapted so that a' // nl // &
+        'sphere on a wall (lever arm R) is a time-stretched copy of the physical contact:' // nl // &
+        'mindlin k_t k/k_phys, linear_history k_t (k/k_phys)^(4/5).' // nl // &
+        '' // nl // &
+        '  --e E                 restitution coefficient of the normal contact [-]' // nl // &
+        '  --velocity U          impact speed |v_in| [m s^-1] (its normal part U cos theta)' // nl // &
+        '  --angle LIST          impact angles theta from the normal [degrees], 0 <= theta < 90' // nl // &
+        '  --friction MU         Coulomb friction coefficient (0: frictionless)' // nl // &
+        '  --tangential MODEL    {tangentials} (default mindlin)' // nl // &
+        '  --kt KT               tangential stiffness (mindlin: default 8 G* from the moduli,' // nl // &
+        '                        1/G* = 2(2-nu1)(1+nu1)/E1 + 2(2-nu2)(1+nu2)/E2 [N m^-2];' // nl // &
+        '                        linear_history: required [N m^-1])' // nl // &
+        '  --xgammat X           tangential damping eta_t = X d (default 0)' // nl // &
+        '  --lever ARM           torque lever arm: {levers} (default: radius on a wall,' // nl // &
+        '                        contact for two spheres, as LAMMPS)' // nl // &
+        '  --dt DT --steps N     the softened contact, T_c = N dt [s]' // nl // &
+        '  --tangential-stiffness adapted|physical' // nl // &
+        '                        k_t of the softened contact (default adapted)' // nl // &
+        '  --normal-correction   two spheres: the constants whose oblique e_n equals e' // nl // &
+        '                        (a secant solve of the oblique contact per row)' // nl // &
+        contact_help // nl // &
+        '  --damping LAW, --end END, --format FMT    as invert' // nl // &
+        '' // nl // &
+        'Columns: angle [deg], e_n (line-of-centres velocity ratio at touch and release),' // nl // &
+        'e_t (the contact point''s -v_c,out/v_c,in: -1 smooth, +1 rough), vt_ratio (the' // nl // &
+        'centres'' v_t,out/v_t,in), rebound_angle [deg], omega [rad/s] (sphere 1), with' // nl // &
+        '--dt/--steps the softened contact''s, then k, d, kt, eta_t (x_gammat d) it used' // nl // &
+        'and diff_* (softened - physical); with --normal-correction e_target (the' // nl // &
+        'corrected target of the normal rule); status.  At angle 0 e_t and vt_ratio are 0.' // nl // &
+        '' // nl // status_help
 
     character(len=*), parameter :: bench = &
         'Usage: hertzdamp bench [--quick] [--damping LAW|all] [--format text|csv|json]' // nl // &
@@ -527,6 +573,7 @@ contains
         case ('scene'); call write_stdout(expand_help(scene) // nl)
         case ('check'); call write_stdout(expand_help(check) // nl)
         case ('calibrate'); call write_stdout(expand_help(calibrate) // nl)
+        case ('oblique'); call write_stdout(expand_help(oblique) // nl)
         case ('version'); call write_stdout('hertzdamp ' // hertzdamp_version // nl)
         case default; call write_stdout(expand_help(top) // nl)
         end select
@@ -663,6 +710,8 @@ contains
         call rep(s, '{ends}', hertzdamp_end_listing())
         call rep(s, '{hosts}', hertzdamp_host_listing())
         call rep(s, '{methods}', hertzdamp_method_listing())
+        call rep(s, '{tangentials}', hertzdamp_tangential_listing(with_help=.true.))
+        call rep(s, '{levers}', hertzdamp_lever_listing(with_help=.true.))
         call rep(s, '{laws|}', piped(hertzdamp_law_choices(), ''))
         call rep(s, '{ends|}', piped(hertzdamp_end_choices(), ''))
         call rep(s, '{hosts|}', piped(hertzdamp_host_choices(), ''))

@@ -24,7 +24,7 @@ module hertzdamp_cli_materials
     use hertzdamp, only: hertzdamp_rk, hertzdamp_sphere_mass, hertzdamp_effective_mass, hertzdamp_effective_radius, &
                          hertzdamp_plane_strain_modulus, hertzdamp_effective_modulus, hertzdamp_hertz_stiffness, &
                          hertzdamp_rayleigh_time, hertzdamp_message, hertzdamp_end_name, HD_OK, HD_OUT_OF_RANGE, &
-                         HD_BAD_DENSITY, HD_BAD_POISSON
+                         HD_BAD_DENSITY, HD_BAD_POISSON, hertzdamp_mindlin_kt
     use hertzdamp_cli, only: cli_args, parse_real, fail, EXIT_USAGE
     use hertzdamp_cli_output, only: out_table
     use hertzdamp_cli_model, only: model_opts
@@ -53,6 +53,11 @@ module hertzdamp_cli_materials
         logical :: has_rayleigh = .false.   !! t_rayleigh known (radii, densities and elastic constants)
         real(wp) :: t_rayleigh = 0.0_wp     !! the shorter Rayleigh time of the spheres (not of a wall) [s]
         character(len=:), allocatable :: description   !! e.g. 'two spheres', 'sphere and wall'
+        logical :: has_bodies = .false.     !! each body's mass and radius known (--radius, --density)
+        real(wp) :: m1 = 0.0_wp, r1 = 0.0_wp !! body 1's mass [kg] and radius [m]
+        real(wp) :: m2 = 0.0_wp, r2 = 0.0_wp !! body 2's (a wall: 0, 0)
+        logical :: has_mindlin = .false.    !! Mindlin's 8 G* known (the elastic constants)
+        real(wp) :: kt_mindlin = 0.0_wp     !! 8 G* [N/m^2] (hertzdamp_mindlin_kt)
     end type cli_contact
 
     public :: parse_contact, require_mass, contact_table
@@ -99,6 +104,9 @@ contains
             rho1 = value(args, '--density')
             call hertzdamp_sphere_mass(r1, rho1, m1, st)
             call check(args, st, '--radius', '--density', ' sphere mass (4/3) pi rho R^3')
+            ct%has_bodies = .true.
+            ct%m1 = m1
+            ct%r1 = r1
             if (ct%wall) then
                 ct%mass = m1
             else
@@ -108,6 +116,8 @@ contains
                 call check(args, st, '--radius2', '--density2', ' sphere mass (4/3) pi rho R^3')
                 call hertzdamp_effective_mass(m1, m2, ct%mass, st)
                 call check(args, st, '--radius', '--density', ' effective mass')
+                ct%m2 = m2
+                ct%r2 = r2
             end if
             ct%has_mass = .true.
             ct%from_materials = .true.
@@ -156,6 +166,8 @@ contains
             call check(args, st, '--youngs-modulus' // sfx, '--radius', ' stiffness k_phys = (4/3) E* sqrt(R*)')
             ct%has_kphys = .true.
             ct%from_materials = .true.
+            call hertzdamp_mindlin_kt(ym1, nu1, ym2, nu2, ct%kt_mindlin, st)
+            ct%has_mindlin = st == HD_OK
             if (args%has('--density')) call rayleigh(args, ct, ym1, nu1, ym2, nu2)
         end if
         if (.not. (ct%wall .or. ct%has_radius)) ct%description = 'effective mass given'

@@ -9,6 +9,7 @@ program main
     use hertzdamp_cmd_bench, only: cmd_bench
     use hertzdamp_cmd_check, only: cmd_check
     use hertzdamp_cmd_calibrate, only: cmd_calibrate
+    use hertzdamp_cmd_oblique, only: cmd_oblique
     implicit none
     character(len=:), allocatable :: command
     integer :: l
@@ -30,9 +31,10 @@ program main
     case ('scene'); call cmd_scene()
     case ('check'); call cmd_check()
     case ('calibrate'); call cmd_calibrate()
+    case ('oblique'); call cmd_oblique()
     case default
         call fail(EXIT_USAGE, 'unknown command "' // command // '"' // did_you_mean(command, 'invert forward ' // &
-                  'timestep table constants bench scene check calibrate help version --help --version') // &
+                  'timestep table constants bench scene check calibrate oblique help version --help --version') // &
                   ' (see hertzdamp --help)')
     end select
 end program main

@@ -30,7 +30,8 @@ ROOT = os.path.dirname(HERE)
 
 # C/Fortran constant prefix of each kind (HD_<P>_<CONST>, HERTZDAMP_<P>_<CONST>) and the
 # legacy argument it is the code of
-KINDS = {"law": ("DAMPING", "ILAW"), "end": ("END", "IEND"), "host": ("HOST", "IHOST"), "method": ("METHOD", None)}
+KINDS = {"law": ("DAMPING", "ILAW"), "end": ("END", "IEND"), "host": ("HOST", "IHOST"), "method": ("METHOD", None),
+         "tangential": ("TANGENTIAL", "ITANG"), "lever": ("LEVER", "ILEVER")}
 
 
 def fstr(s):
@@ -62,15 +63,16 @@ def listing(values, conj="or"):
 
 
 def expand(text, reg):
-    """A message's {law_codes}, {end_codes}, {host_codes}: '0 (linear), 1 (tsuji) or 2 (...)'."""
-    for kind in ("law", "end", "host"):
+    """A message's {law_codes}, {end_codes}, {host_codes}, {tangential_codes}, {lever_codes}:
+    '0 (linear), 1 (tsuji) or 2 (...)'."""
+    for kind in ("law", "end", "host", "tangential", "lever"):
         text = text.replace("{%s_codes}" % kind,
                             listing("%d (%s)" % (r["code"], r["name"]) for r in reg[kind]))
     return text
 
 
 def check(reg):
-    for kind in ("status", "law", "end", "host", "method"):
+    for kind in ("status", "law", "end", "host", "method", "tangential", "lever"):
         codes = [r["code"] for r in reg[kind]]
         if sorted(codes) != list(range(min(codes), min(codes) + len(codes))):
             sys.exit("registry: the %s codes are not consecutive: %s" % (kind, codes))
@@ -135,7 +137,7 @@ def fortran(reg, table_name):
         w("        " + wrap_fortran_literal(m, 8) + (", &" if i < len(msgs) - 1 else "]"))
     w("")
     # enumerations
-    for kind in ("law", "end", "host", "method"):
+    for kind in ("law", "end", "host", "method", "tangential", "lever"):
         pre = KINDS[kind][0]
         rows = reg[kind]
         w("    ! ------------------------------------------------ %ss" % kind)
@@ -175,10 +177,11 @@ def fortran(reg, table_name):
             w(",  &\n".join("        " + fstr(r[field]) for r in rows) + "]")
         w("")
     w("    public :: hertzdamp_message, hertzdamp_status_name")
-    for kind in ("law", "end", "host", "method"):
-        w("    public :: hertzdamp_%s_name, hertzdamp_%s_code, hertzdamp_%s_choices, hertzdamp_%s_listing" % (
-            kind, kind, kind, kind))
+    for kind in ("law", "end", "host", "method", "tangential", "lever"):
+        w("    public :: hertzdamp_%s_name, hertzdamp_%s_code" % (kind, kind))
+        w("    public :: hertzdamp_%s_choices, hertzdamp_%s_listing" % (kind, kind))
     w("    public :: hertzdamp_law_q, hertzdamp_law_summary, hertzdamp_law_help, hertzdamp_end_help")
+    w("    public :: hertzdamp_tangential_help, hertzdamp_lever_help")
     w("    public :: hertzdamp_host_order, hertzdamp_host_in_engine, hertzdamp_host_help")
     w("")
     w("contains")
@@ -215,7 +218,7 @@ def fortran(reg, table_name):
     w("        name = 'unknown'")
     w("        if (status >= 0 .and. status <= hertzdamp_max_status) name = trim(names(status))")
     w("    end function hertzdamp_status_name")
-    for kind in ("law", "end", "host", "method"):
+    for kind in ("law", "end", "host", "method", "tangential", "lever"):
         pre = KINDS[kind][0]
         rows = reg[kind]
         names = listing(r["name"] for r in rows)
@@ -358,7 +361,7 @@ def fortran(reg, table_name):
     w("        s = hertzdamp_law_name(law)")
     w("        if (law >= hertzdamp_min_law .and. law <= hertzdamp_max_law) s = s // ': ' // trim(law_summaries(law))")
     w("    end function hertzdamp_law_summary")
-    for kind in ("law", "end", "host"):
+    for kind in ("law", "end", "host", "tangential", "lever"):
         w("")
         w("    !> The short help phrase of a %s ('' for an invalid code)." % kind)
         w("    pure function hertzdamp_%s_help(code) result(s)" % kind)
@@ -392,12 +395,13 @@ def umbrella_names(reg):
     """The registry's names that the umbrella module hertzdamp exports."""
     names = ["HD_" + r["const"] for r in reg["status"]] + ["hertzdamp_max_status", "hertzdamp_message",
                                                            "hertzdamp_status_name"]
-    for kind in ("law", "end", "host", "method"):
+    for kind in ("law", "end", "host", "method", "tangential", "lever"):
         pre = KINDS[kind][0]
         names += ["HD_%s_%s" % (pre, r["const"]) for r in reg[kind]]
         names += ["hertzdamp_min_%s" % kind, "hertzdamp_max_%s" % kind]
         names += ["hertzdamp_%s_%s" % (kind, f) for f in ("name", "code", "choices", "listing")]
     names += ["hertzdamp_law_q", "hertzdamp_law_summary", "hertzdamp_law_help", "hertzdamp_end_help",
+              "hertzdamp_tangential_help", "hertzdamp_lever_help",
               "hertzdamp_host_order", "hertzdamp_host_in_engine", "hertzdamp_host_help",
               "hertzdamp_pair_size", "hertzdamp_pair_oblique_size", "hertzdamp_pair_phase_size"]
     return names
@@ -438,8 +442,10 @@ def c_block(reg):
     heads = {"end": "Contact-end definitions (argument `end`).",
              "law": "Damping laws (argument `law`; doc/damping-laws.md): damping force d zeta^q zeta', "
                     "d in kg s^-1 m^-q.",
-             "host": "Host time integrators (argument `host`; doc/host-schemes.md)."}
-    for kind in ("end", "law", "host"):
+             "host": "Host time integrators (argument `host`; doc/host-schemes.md).",
+             "tangential": "Tangential force models (argument `tangential`; doc/oblique.md).",
+             "lever": "Torque lever arms of an oblique contact (argument `lever`; doc/oblique.md)."}
+    for kind in ("end", "law", "host", "tangential", "lever"):
         pre = KINDS[kind][0]
         o.append("")
         o.append("/* %s */" % heads[kind])
@@ -468,16 +474,17 @@ def continued(head, names, tail):
 def fi_block(reg):
     o = ["! BEGIN codes (gen/registry.py)",
          "! GENERATED from data/registry.toml by gen/registry.py: edit the",
-         "! table, run `make registry`.  The IEND, ILAW, IHOST codes and the",
+         "! table, run `make registry`.  The IEND, ILAW, IHOST, ITANG, ILEVER",
+         "! codes and the",
          "! IERR statuses (HERTZDAMP_MESSAGE explains them).  A pair of",
          "! HERTZDAMP_PAIR_INIT: REAL(8) PAIR(HERTZDAMP_PAIR_SIZE).",
          "      INTEGER(4), PARAMETER :: HERTZDAMP_PAIR_SIZE = %d" % reg["pair"]["size"]]
-    for kind in ("end", "law", "host"):
+    for kind in ("end", "law", "host", "tangential", "lever"):
         pre = KINDS[kind][0]
         for r in reg[kind]:
             o.append("      INTEGER(4), PARAMETER :: HERTZDAMP_%s_%s = %d" % (pre, r["const"], r["code"]))
     names = []
-    for kind in ("end", "law", "host"):
+    for kind in ("end", "law", "host", "tangential", "lever"):
         names += ["HERTZDAMP_%s_%s" % (KINDS[kind][0], r["const"]) for r in reg[kind]]
     for r in reg["status"]:
         o.append("      INTEGER(4), PARAMETER :: HERTZDAMP_%s = %d" % (r["const"], r["code"]))
@@ -504,7 +511,7 @@ def doc_block(reg):
     o = ["<!-- BEGIN legacy codes -->",
          "| argument | code | meaning | C macro and hertzdamp.fi PARAMETER |",
          "|---|---|---|---|"]
-    for kind in ("end", "law", "host"):
+    for kind in ("end", "law", "host", "tangential", "lever"):
         pre, arg = KINDS[kind]
         for r in reg[kind]:
             o.append("| `%s` | %d | %s: %s | `HERTZDAMP_%s_%s` |" % (arg, r["code"], r["name"], r["doc"], pre,

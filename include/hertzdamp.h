@@ -72,8 +72,8 @@ extern "C" {
 #define HERTZDAMP_PHASE_UNREACHABLE  30  /* some onset phase cannot reach e and T_c at so few steps */
 #define HERTZDAMP_BAD_PHASE          31  /* onset phase not finite or outside (0, 1] */
 #define HERTZDAMP_NO_PHASE_TABLE     32  /* the pair was initialised without its onset-phase table */
-#define HERTZDAMP_BAD_TANGENTIAL     33  /* tangential model or its parameters invalid */
-#define HERTZDAMP_BAD_OBLIQUE        34  /* oblique-contact argument invalid (tangential speed, radii, angle) */
+#define HERTZDAMP_BAD_TANGENTIAL     33  /* tangential model or its parameters invalid (model, k_t, x_gammat, friction, lever arm) */
+#define HERTZDAMP_BAD_OBLIQUE        34  /* oblique-contact argument invalid (angle, radii, masses, tangential speed) */
 
 /* Contact-end definitions (argument `end`). */
 #define HERTZDAMP_END_OVERLAP 0  /* overlap: contact ends when the overlap returns to zero (the default) */
@@ -91,6 +91,14 @@ extern "C" {
 #define HERTZDAMP_HOST_MFIX_AB2     3  /* mfix-ab2: MFiX DES_INTG_METHOD = 'ADAMS_BASHFORTH' */
 #define HERTZDAMP_HOST_VERLET       4  /* verlet: the scene engine of this repository (velocity Verlet with onset/release corrections) */
 #define HERTZDAMP_HOST_LAMMPS_PHASE 5  /* lammps-phase: lammps with the hertzdamp plugin's onset/release phase correction (phase yes) */
+
+/* Tangential force models (argument `tangential`; doc/oblique.md). */
+#define HERTZDAMP_TANGENTIAL_LINEAR_HISTORY 0  /* linear_history: F_t = -k_t xi - eta_t v_t, Coulomb-limited (LAMMPS tangential linear_history) */
+#define HERTZDAMP_TANGENTIAL_MINDLIN        1  /* mindlin: F_t = -k_t a xi - eta_t v_t, a = sqrt(R* delta) (LAMMPS tangential mindlin) */
+
+/* Torque lever arms of an oblique contact (argument `lever`; doc/oblique.md). */
+#define HERTZDAMP_LEVER_RADIUS  0  /* radius: lever arm R (LAMMPS's wall code) */
+#define HERTZDAMP_LEVER_CONTACT 1  /* contact: lever arm R - delta/2 (LAMMPS's pair styles) */
 /* END codes */
 
 /*
@@ -268,6 +276,37 @@ int hertzdamp_c_forward_law(double k, double d, double m, double u, int law, int
  */
 const char *hertzdamp_c_strerror(int status);
 
+/* ==================================================================== the oblique contact (doc/oblique.md) */
+
+/* The tangential stiffness of a softened contact (normal stiffness k instead of k_phys)
+ * whose outcome is a time-stretched copy of the physical one: mindlin
+ * kt_phys k/k_phys, linear_history kt_phys (k/k_phys)^(4/5) (exact on a wall with the
+ * lever arm R).  eta_t = x_gammat d needs no change.  NULL kt: HERTZDAMP_BAD_ARGUMENT.
+ */
+int hertzdamp_c_tangential_kt(int tangential, double kt_phys, double k, double k_phys, double *kt);
+
+/*
+ * The oblique impact of sphere 1 (m1, r1) on sphere 2 at rest (m2 = r2 = 0: a wall) at
+ * speed [m/s] and angle [degrees from the normal]: out = e_n, e_t (contact point),
+ * vt_ratio (centres), rebound angle [degrees], omega1, omega2 [rad/s], sliding fraction,
+ * contact time [s]; 0 on failure.  tangential HERTZDAMP_TANGENTIAL_*, lever
+ * HERTZDAMP_LEVER_*.
+ */
+int hertzdamp_c_oblique_impact(double m1, double r1, double m2, double r2, double k, double d,
+                               int law, int end, int tangential, double kt, double xgammat, double mu,
+                               int lever, double speed, double angle, double out[8]);
+
+/*
+ * The oblique normal correction of one contact: the k, d (at contact time tc, with the
+ * bound k_phys) of the corrected target e' for which the oblique e_n equals e, and the
+ * k_t scaled to that k; out = k, d, k_t, e' (0 on failure).  A secant solve of the
+ * oblique contact (a few impacts per call).
+ */
+int hertzdamp_c_oblique_correct(double m1, double r1, double m2, double r2, double k_phys,
+                                int law, int end, int tangential, double kt_phys, double xgammat,
+                                double mu, int lever, double e, double tc, double speed, double angle,
+                                double out[4]);
+
 /* ==================================================================== for bindings (issue 35)
  * (ptrdiff_t: <stddef.h>, included here to keep this block in one place)
  * The Python package's entry points; a binding reads every code and size from the
@@ -275,7 +314,8 @@ const char *hertzdamp_c_strerror(int status);
  *
  * Registries: the names of an enumeration in the order of their codes.  kind is one of
  * "law", "end", "host" (the HERTZDAMP_DAMPING_, _END_, _HOST_ codes), "method" (the
- * forward methods of hertzdamp_c_forward_array: fit, rk45, ...), "status" (the status
+ * forward methods of hertzdamp_c_forward_array: fit, rk45, ...), "tangential", "lever"
+ * (the HERTZDAMP_TANGENTIAL_, _LEVER_ codes), "status" (the status
  * codes, lower case with dashes: "ok", "no-rebound", "bad-mass", ...), "stats" (the
  * fields of hertzdamp_c_pair_stats, codes their index) and "size" ("pair": the doubles
  * of hertzdamp_pair_t; "stats": those of hertzdamp_c_pair_stats).  An unknown kind or

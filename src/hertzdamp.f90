@@ -34,10 +34,18 @@ module hertzdamp
                                   HD_METHOD_SERIES, HD_METHOD_PADE, HD_METHOD_COMPACT, HD_METHOD_FIT, &
                                   HD_METHOD_ITERATIVE, HD_METHOD_FIRST_ORDER, hertzdamp_min_method, &
                                   hertzdamp_max_method, hertzdamp_method_name, hertzdamp_method_code, &
-                                  hertzdamp_method_choices, hertzdamp_method_listing, hertzdamp_law_q, &
+                                  hertzdamp_method_choices, hertzdamp_method_listing, &
+                                  HD_TANGENTIAL_LINEAR_HISTORY, HD_TANGENTIAL_MINDLIN, &
+                                  hertzdamp_min_tangential, hertzdamp_max_tangential, &
+                                  hertzdamp_tangential_name, hertzdamp_tangential_code, &
+                                  hertzdamp_tangential_choices, hertzdamp_tangential_listing, &
+                                  HD_LEVER_RADIUS, HD_LEVER_CONTACT, hertzdamp_min_lever, &
+                                  hertzdamp_max_lever, hertzdamp_lever_name, hertzdamp_lever_code, &
+                                  hertzdamp_lever_choices, hertzdamp_lever_listing, hertzdamp_law_q, &
                                   hertzdamp_law_summary, hertzdamp_law_help, hertzdamp_end_help, &
-                                  hertzdamp_host_order, hertzdamp_host_in_engine, hertzdamp_host_help, &
-                                  hertzdamp_pair_size, hertzdamp_pair_oblique_size, hertzdamp_pair_phase_size
+                                  hertzdamp_tangential_help, hertzdamp_lever_help, hertzdamp_host_order, &
+                                  hertzdamp_host_in_engine, hertzdamp_host_help, hertzdamp_pair_size, &
+                                  hertzdamp_pair_oblique_size, hertzdamp_pair_phase_size
     ! END registry use
     use hertzdamp_laws, only: hertzdamp_law_status, hertzdamp_law_speed_exponent, &
                               hertzdamp_law_reversal_exponent, hertzdamp_law_has_alpha_c, hertzdamp_tsuji_e, &
@@ -75,6 +83,9 @@ module hertzdamp
                                    hertzdamp_plane_strain_modulus, hertzdamp_hertz_stiffness, &
                                    hertzdamp_hertz_time, hertzdamp_pair_contact, hertzdamp_wall_contact, &
                                    hertzdamp_rayleigh_time, hertzdamp_rayleigh_fraction
+    use hertzdamp_oblique, only: hertzdamp_oblique_t, hertzdamp_oblique_result, hertzdamp_oblique_impact, &
+                                 hertzdamp_oblique_status, hertzdamp_oblique_default_tol, hertzdamp_tangential_kt, &
+                                 hertzdamp_oblique_correct, hertzdamp_mindlin_kt
     implicit none
     private
 
@@ -100,9 +111,15 @@ module hertzdamp
               HD_METHOD_RK45, HD_METHOD_SERIES, HD_METHOD_PADE, HD_METHOD_COMPACT, HD_METHOD_FIT, &
               HD_METHOD_ITERATIVE, HD_METHOD_FIRST_ORDER, hertzdamp_min_method, hertzdamp_max_method, &
               hertzdamp_method_name, hertzdamp_method_code, hertzdamp_method_choices, &
-              hertzdamp_method_listing, hertzdamp_law_q, hertzdamp_law_summary, hertzdamp_law_help, &
-              hertzdamp_end_help, hertzdamp_host_order, hertzdamp_host_in_engine, hertzdamp_host_help, &
-              hertzdamp_pair_size, hertzdamp_pair_oblique_size, hertzdamp_pair_phase_size
+              hertzdamp_method_listing, HD_TANGENTIAL_LINEAR_HISTORY, HD_TANGENTIAL_MINDLIN, &
+              hertzdamp_min_tangential, hertzdamp_max_tangential, hertzdamp_tangential_name, &
+              hertzdamp_tangential_code, hertzdamp_tangential_choices, hertzdamp_tangential_listing, &
+              HD_LEVER_RADIUS, HD_LEVER_CONTACT, hertzdamp_min_lever, hertzdamp_max_lever, &
+              hertzdamp_lever_name, hertzdamp_lever_code, hertzdamp_lever_choices, hertzdamp_lever_listing, &
+              hertzdamp_law_q, hertzdamp_law_summary, hertzdamp_law_help, hertzdamp_end_help, &
+              hertzdamp_tangential_help, hertzdamp_lever_help, hertzdamp_host_order, &
+              hertzdamp_host_in_engine, hertzdamp_host_help, hertzdamp_pair_size, &
+              hertzdamp_pair_oblique_size, hertzdamp_pair_phase_size
     ! END registry public
     ! the damping laws' exact facts (hertzdamp_laws)
     public :: hertzdamp_law_status, hertzdamp_law_speed_exponent, hertzdamp_law_reversal_exponent, &
@@ -151,4 +168,8 @@ module hertzdamp
               hertzdamp_effective_modulus, hertzdamp_plane_strain_modulus, hertzdamp_hertz_stiffness, &
               hertzdamp_hertz_time, hertzdamp_pair_contact, hertzdamp_wall_contact, hertzdamp_rayleigh_time, &
               hertzdamp_rayleigh_fraction
+    ! the oblique frictional contact (hertzdamp_oblique)
+    public :: hertzdamp_oblique_t, hertzdamp_oblique_result, hertzdamp_oblique_impact, hertzdamp_oblique_status, &
+              hertzdamp_oblique_default_tol, hertzdamp_tangential_kt, hertzdamp_oblique_correct, &
+              hertzdamp_mindlin_kt
 end module hertzdamp

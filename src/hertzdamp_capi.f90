@@ -60,6 +60,8 @@ module hertzdamp_capi
                                   hertzdamp_min_law, hertzdamp_max_law, hertzdamp_law_name, hertzdamp_min_end, &
                                   hertzdamp_max_end, hertzdamp_min_host, hertzdamp_max_host, hertzdamp_host_name, &
                                   hertzdamp_min_method, hertzdamp_max_method, hertzdamp_method_name, hertzdamp_status_name
+    use hertzdamp_registry, only: hertzdamp_min_tangential, hertzdamp_max_tangential, hertzdamp_tangential_name, &
+                                  hertzdamp_min_lever, hertzdamp_max_lever, hertzdamp_lever_name
     use hertzdamp_rk45, only: hertzdamp_rk45_default_tol
     use hertzdamp_series, only: hertzdamp_series_default_order
     use hertzdamp_methods, only: hertzdamp_default_accuracy
@@ -69,6 +71,8 @@ module hertzdamp_capi
     use hertzdamp_materials, only: hertzdamp_pair_contact, hertzdamp_wall_contact, hertzdamp_rayleigh_time, &
                                    hertzdamp_hertz_time, hertzdamp_rayleigh_fraction
     ! ---- end of the block's use lines
+    use hertzdamp_oblique, only: hertzdamp_oblique_t, hertzdamp_oblique_result, hertzdamp_oblique_impact, &
+                                 hertzdamp_tangential_kt, hertzdamp_oblique_correct
     implicit none
     private
 
@@ -78,6 +82,7 @@ module hertzdamp_capi
     public :: hertzdamp_c_pair_init, hertzdamp_c_pair_kd, hertzdamp_c_pair_stats, hertzdamp_c_host_min_steps
     public :: hertzdamp_c_pair_init_phase, hertzdamp_c_pair_kd_phase, hertzdamp_c_onset_phase, &
               hertzdamp_c_phase_min_steps
+    public :: hertzdamp_c_tangential_kt, hertzdamp_c_oblique_impact, hertzdamp_c_oblique_correct
     ! ---- the block at the end (issue 35)
     public :: hertzdamp_c_code, hertzdamp_c_names, hertzdamp_c_invert_array, hertzdamp_c_forward_array, &
               hertzdamp_c_pair_kd_array, hertzdamp_c_pair_constants, hertzdamp_c_contact_array, &
@@ -726,6 +731,126 @@ contains
         integer(c_int), intent(out) :: ierr          !! 0 on success, else a status code
         ierr = hertzdamp_c_phase_min_steps(e, ilaw, iend, ihost, nmin)
     end subroutine legacy_phase_min_steps
+    ! ================================================================ the oblique contact (C and legacy)
+
+    !> The contact of the flat arguments (m2 = r2 = 0: a wall).
+    pure function oblique_contact(m1, r1, m2, r2, k, d, law, iend, tangential, kt, xgammat, mu, lever) result(c)
+        real(c_double), intent(in) :: m1, r1, m2, r2, k, d, kt, xgammat, mu
+        integer(c_int), intent(in) :: law, iend, tangential, lever
+        type(hertzdamp_oblique_t) :: c
+        c = hertzdamp_oblique_t(m1=m1, r1=r1, m2=m2, r2=r2, k=k, d=d, law=int(law), iend=int(iend), &
+                                tangential=int(tangential), kt=kt, xgammat=xgammat, mu=mu, lever=int(lever))
+    end function oblique_contact
+
+    !> `int hertzdamp_c_tangential_kt(int tangential, double kt_phys, double k, double k_phys,
+    !> double *kt)`: the tangential stiffness of a softened contact (hertzdamp_tangential_kt:
+    !> mindlin kt_phys k/k_phys, linear_history kt_phys (k/k_phys)^(4/5)); NULL kt gives
+    !> HD_BAD_ARGUMENT.
+    integer(c_int) function hertzdamp_c_tangential_kt(tangential, kt_phys, k, k_phys, kt) &
+            bind(c, name='hertzdamp_c_tangential_kt') result(status)
+        integer(c_int), value, intent(in) :: tangential !! HERTZDAMP_TANGENTIAL_*
+        real(c_double), value, intent(in) :: kt_phys    !! the physical contact's k_t
+        real(c_double), value, intent(in) :: k          !! the softened normal stiffness [N m^-3/2]
+        real(c_double), value, intent(in) :: k_phys     !! the physical normal stiffness [N m^-3/2]
+        real(c_double), intent(out), optional :: kt     !! the softened contact's k_t
+        integer :: st
+        real(c_double) :: v
+        status = HD_BAD_ARGUMENT
+        if (.not. present(kt)) return
+        call hertzdamp_tangential_kt(int(tangential), kt_phys, k, k_phys, v, st)
+        kt = v
+        status = int(st, c_int)
+    end function hertzdamp_c_tangential_kt
+
+    !> `int hertzdamp_c_oblique_impact(double m1, double r1, double m2, double r2, double k,
+    !> double d, int law, int end, int tangential, double kt, double xgammat, double mu,
+    !> int lever, double speed, double angle, double out[8])`: the oblique impact of sphere 1
+    !> on sphere 2 (m2 = r2 = 0: a wall) at speed and angle [degrees]
+    !> (hertzdamp_oblique_impact, default tolerance): out = e_n, e_t, vt_ratio, rebound
+    !> angle [degrees], omega1, omega2 [rad/s], sliding fraction, t_c [s]; 0 on failure.
+    integer(c_int) function hertzdamp_c_oblique_impact(m1, r1, m2, r2, k, d, law, iend, tangential, kt, xgammat, &
+                                                       mu, lever, speed, angle, out) &
+            bind(c, name='hertzdamp_c_oblique_impact') result(status)
+        real(c_double), value, intent(in) :: m1, r1, m2, r2 !! masses [kg] and radii [m]
+        real(c_double), value, intent(in) :: k, d           !! normal stiffness and damping
+        integer(c_int), value, intent(in) :: law, iend      !! HERTZDAMP_DAMPING_*, HERTZDAMP_END_*
+        integer(c_int), value, intent(in) :: tangential     !! HERTZDAMP_TANGENTIAL_*
+        real(c_double), value, intent(in) :: kt, xgammat, mu !! k_t, x_gammat, friction coefficient
+        integer(c_int), value, intent(in) :: lever          !! HERTZDAMP_LEVER_*
+        real(c_double), value, intent(in) :: speed, angle   !! impact speed [m/s], angle [degrees]
+        real(c_double), intent(out), optional :: out(8)     !! the outcome
+        type(hertzdamp_oblique_result) :: r
+        integer :: st
+        status = HD_BAD_ARGUMENT
+        if (.not. present(out)) return
+        call hertzdamp_oblique_impact(oblique_contact(m1, r1, m2, r2, k, d, law, iend, tangential, kt, xgammat, mu, &
+                                                      lever), speed, angle, r, st)
+        out = [r%e_n, r%e_t, r%vt_ratio, r%rebound_angle, r%omega1, r%omega2, r%slide_fraction, r%t_c]
+        status = int(st, c_int)
+    end function hertzdamp_c_oblique_impact
+
+    !> `int hertzdamp_c_oblique_correct(double m1, double r1, double m2, double r2,
+    !> double k_phys, int law, int end, int tangential, double kt_phys, double xgammat,
+    !> double mu, int lever, double e, double tc, double speed, double angle, double out[4])`:
+    !> the oblique normal correction of one contact (hertzdamp_oblique_correct): out = k, d,
+    !> k_t of the corrected target and that target e'; 0 on failure.
+    integer(c_int) function hertzdamp_c_oblique_correct(m1, r1, m2, r2, k_phys, law, iend, tangential, kt_phys, &
+                                                        xgammat, mu, lever, e, tc, speed, angle, out) &
+            bind(c, name='hertzdamp_c_oblique_correct') result(status)
+        real(c_double), value, intent(in) :: m1, r1, m2, r2 !! masses [kg] and radii [m]
+        real(c_double), value, intent(in) :: k_phys         !! physical normal stiffness (bound, k_t scale)
+        integer(c_int), value, intent(in) :: law, iend      !! HERTZDAMP_DAMPING_*, HERTZDAMP_END_*
+        integer(c_int), value, intent(in) :: tangential     !! HERTZDAMP_TANGENTIAL_*
+        real(c_double), value, intent(in) :: kt_phys, xgammat, mu !! physical k_t, x_gammat, friction
+        integer(c_int), value, intent(in) :: lever          !! HERTZDAMP_LEVER_*
+        real(c_double), value, intent(in) :: e, tc          !! target restitution and contact time [s]
+        real(c_double), value, intent(in) :: speed, angle   !! impact speed [m/s], angle [degrees]
+        real(c_double), intent(out), optional :: out(4)     !! k, d, k_t, e'
+        real(c_double) :: k, d, kt, et
+        integer :: st
+        status = HD_BAD_ARGUMENT
+        if (.not. present(out)) return
+        call hertzdamp_oblique_correct(oblique_contact(m1, r1, m2, r2, k_phys, 0.0_c_double, law, iend, tangential, &
+                                                       kt_phys, xgammat, mu, lever), e, tc, speed, angle, k, d, kt, et, st)
+        out = [k, d, kt, et]
+        status = int(st, c_int)
+    end function hertzdamp_c_oblique_correct
+
+    !> HERTZDAMP_TANGENTIAL_KT(ITANG, KTPHYS, K, KPHYS, KT, IERR): the legacy form of
+    !> hertzdamp_c_tangential_kt.
+    subroutine legacy_tangential_kt(itang, ktphys, k, kphys, kt, ierr) bind(c, name='hertzdamp_tangential_kt_')
+        integer(c_int), intent(in) :: itang   !! tangential model: 0 linear_history, 1 mindlin
+        real(c_double), intent(in) :: ktphys  !! the physical k_t
+        real(c_double), intent(in) :: k       !! the softened normal stiffness [N m^-3/2]
+        real(c_double), intent(in) :: kphys   !! the physical normal stiffness [N m^-3/2]
+        real(c_double), intent(out) :: kt     !! the softened k_t
+        integer(c_int), intent(out) :: ierr   !! 0 on success, else a status code
+        ierr = hertzdamp_c_tangential_kt(itang, ktphys, k, kphys, kt)
+    end subroutine legacy_tangential_kt
+
+    !> HERTZDAMP_OBLIQUE(M1, R1, M2, R2, K, D, ILAW, IEND, ITANG, KT, XGT, MU, ILEVER, U,
+    !> THETA, OUT, IERR): the legacy form of hertzdamp_c_oblique_impact, OUT(8).
+    subroutine legacy_oblique(m1, r1, m2, r2, k, d, ilaw, iend, itang, kt, xgt, mu, ilever, u, theta, out, ierr) &
+            bind(c, name='hertzdamp_oblique_')
+        real(c_double), intent(in) :: m1, r1, m2, r2, k, d, kt, xgt, mu, u, theta !! as the C form
+        integer(c_int), intent(in) :: ilaw, iend, itang, ilever                    !! as the C form
+        real(c_double), intent(out) :: out(8)                                      !! the outcome
+        integer(c_int), intent(out) :: ierr                                        !! 0 on success
+        ierr = hertzdamp_c_oblique_impact(m1, r1, m2, r2, k, d, ilaw, iend, itang, kt, xgt, mu, ilever, u, theta, out)
+    end subroutine legacy_oblique
+
+    !> HERTZDAMP_OBLIQUE_CORRECT(M1, R1, M2, R2, KPHYS, ILAW, IEND, ITANG, KTPHYS, XGT, MU,
+    !> ILEVER, E, TC, U, THETA, OUT, IERR): the legacy form of hertzdamp_c_oblique_correct,
+    !> OUT(4) = K, D, KT, E'.
+    subroutine legacy_oblique_correct(m1, r1, m2, r2, kphys, ilaw, iend, itang, ktphys, xgt, mu, ilever, e, tc, u, &
+                                      theta, out, ierr) bind(c, name='hertzdamp_oblique_correct_')
+        real(c_double), intent(in) :: m1, r1, m2, r2, kphys, ktphys, xgt, mu, e, tc, u, theta !! as the C form
+        integer(c_int), intent(in) :: ilaw, iend, itang, ilever                                 !! as the C form
+        real(c_double), intent(out) :: out(4)                                                   !! K, D, KT, E'
+        integer(c_int), intent(out) :: ierr                                                     !! 0 on success
+        ierr = hertzdamp_c_oblique_correct(m1, r1, m2, r2, kphys, ilaw, iend, itang, ktphys, xgt, mu, ilever, e, tc, &
+                                           u, theta, out)
+    end subroutine legacy_oblique_correct
 
     ! ================================================================ C: for the Python package (issue 35)
     ! BEGIN python block.  The names and codes of the enumerations (hertzdamp_c_code,
@@ -740,7 +865,8 @@ contains
     ! entry point per contact.
 
     !> The registry `kind` of the library: its names in the order of their codes, and the
-    !> codes.  law, end, host, method (HD_DAMPING_*, HD_END_*, HD_HOST_*, HD_METHOD_*), status
+    !> codes.  law, end, host, method, tangential, lever (HD_DAMPING_*, HD_END_*, HD_HOST_*,
+    !> HD_METHOD_*, HD_TANGENTIAL_*, HD_LEVER_*), status
     !> (the HD_* codes of hertzdamp_status, lower case with dashes), stats (the fields of
     !> hertzdamp_c_pair_stats, codes their index from 0), size (pair: the doubles of
     !> hertzdamp_pair_t; stats: those of hertzdamp_c_pair_stats).
@@ -768,6 +894,12 @@ contains
         case ('method')
             count = hertzdamp_max_method - hertzdamp_min_method + 1
             n0 = hertzdamp_min_method
+        case ('tangential')
+            count = hertzdamp_max_tangential - hertzdamp_min_tangential + 1
+            n0 = hertzdamp_min_tangential
+        case ('lever')
+            count = hertzdamp_max_lever - hertzdamp_min_lever + 1
+            n0 = hertzdamp_min_lever
         case ('status')
             count = hertzdamp_max_status + 1
         case ('stats')
@@ -790,6 +922,10 @@ contains
                 names(i) = hertzdamp_end_name(codes(i))
             case ('host')
                 names(i) = hertzdamp_host_name(codes(i))
+            case ('tangential')
+                names(i) = hertzdamp_tangential_name(codes(i))
+            case ('lever')
+                names(i) = hertzdamp_lever_name(codes(i))
             case ('method')
                 names(i) = hertzdamp_method_name(codes(i))
             case ('status')
@@ -813,8 +949,8 @@ contains
     end function from_c
 
     !> `int hertzdamp_c_code(const char *kind, const char *name, int *code)`: the code of `name`
-    !> in the registry `kind` (law, end, host, method, status, stats, size; see registry), e.g.
-    !> ("law", "tsuji") -> HERTZDAMP_DAMPING_TSUJI, ("size", "pair") -> the doubles of
+    !> in the registry `kind` (law, end, host, method, tangential, lever, status, stats, size;
+    !> see registry), e.g. ("law", "tsuji") -> HERTZDAMP_DAMPING_TSUJI, ("size", "pair") -> the doubles of
     !> hertzdamp_pair_t.  HD_BAD_ARGUMENT (and *code = -1) for an unknown kind or name or NULL.
     integer(c_int) function hertzdamp_c_code(kind, name, code) bind(c, name='hertzdamp_c_code') result(status)
         character(kind=c_char), intent(in), optional :: kind(64)  !! the registry (NUL-terminated)

@@ -56,13 +56,14 @@ module hertzdamp_registry
     integer, parameter, public :: HD_PHASE_UNREACHABLE = 30  !! some onset phase cannot reach e and T_c at so few steps
     integer, parameter, public :: HD_BAD_PHASE = 31  !! onset phase not finite or outside (0, 1]
     integer, parameter, public :: HD_NO_PHASE_TABLE = 32  !! the pair was initialised without its onset-phase table
-    integer, parameter, public :: HD_BAD_TANGENTIAL = 33  !! tangential model or its parameters invalid
-    !> oblique-contact argument invalid (tangential speed, radii, angle)
+    !> tangential model or its parameters invalid (model, k_t, x_gammat, friction, lever arm)
+    integer, parameter, public :: HD_BAD_TANGENTIAL = 33
+    !> oblique-contact argument invalid (angle, radii, masses, tangential speed)
     integer, parameter, public :: HD_BAD_OBLIQUE = 34
     !> Largest status code with a message of its own.
     integer, parameter, public :: hertzdamp_max_status = 34
     !> Length of the stored messages (each fits, blank-padded).
-    integer, parameter, public :: hertzdamp_message_len = 192
+    integer, parameter, public :: hertzdamp_message_len = 222
     !> The message of every status code 0..hertzdamp_max_status, then that of unknown codes.
     character(len=hertzdamp_message_len), parameter, public :: &
         hertzdamp_message_table(0:hertzdamp_max_status + 1) = [character(len=hertzdamp_message_len) :: &
@@ -113,8 +114,12 @@ module hertzdamp_registry
             'from the first overlap)', &
         'the pair has no onset-phase table: initialise it with the phase form ' // &
             '(hertzdamp_pair_init with phase = .true., hertzdamp_c_pair_init_phase)', &
-        'invalid tangential model or parameters', &
-        'invalid oblique-contact argument', &
+        'invalid tangential model or parameter: the model must be 0 (linear_history) or 1 ' // &
+            '(mindlin), the lever arm 0 (radius) or 1 (contact), k_t finite and positive, ' // &
+            'x_gammat and the friction coefficient mu finite and non-negative', &
+        'invalid oblique-contact argument: the impact angle must be in [0, 90) degrees, the ' // &
+            'radii and masses finite and positive (a wall: second radius and mass 0), the ' // &
+            'tangential speed finite', &
         'unknown status code']
 
     ! ------------------------------------------------ laws
@@ -216,12 +221,47 @@ module hertzdamp_registry
         'secant over reference-integrator solves',  &
         '']
 
+    ! ------------------------------------------------ tangentials
+    !> linear_history: F_t = -k_t xi - eta_t v_t, Coulomb-limited (LAMMPS tangential linear_history)
+    integer, parameter, public :: HD_TANGENTIAL_LINEAR_HISTORY = 0
+    !> mindlin: F_t = -k_t a xi - eta_t v_t, a = sqrt(R* delta) (LAMMPS tangential mindlin)
+    integer, parameter, public :: HD_TANGENTIAL_MINDLIN = 1
+    !> Smallest and largest tangential code.
+    integer, parameter, public :: hertzdamp_min_tangential = 0, hertzdamp_max_tangential = 1
+    character(len=14), parameter :: tangential_names(0:1) = [character(len=14) :: &
+        'linear_history', 'mindlin']
+    character(len=56), parameter :: tangential_helps(0:1) = [character(len=56) :: &
+        'k_t xi, k_t in N/m',  &
+        'k_t a xi, a = sqrt(R* delta), k_t in N/m^2, default 8 G*']
+
+    ! ------------------------------------------------ levers
+    !> radius: lever arm R (LAMMPS's wall code)
+    integer, parameter, public :: HD_LEVER_RADIUS = 0
+    !> contact: lever arm R - delta/2 (LAMMPS's pair styles)
+    integer, parameter, public :: HD_LEVER_CONTACT = 1
+    !> Smallest and largest lever code.
+    integer, parameter, public :: hertzdamp_min_lever = 0, hertzdamp_max_lever = 1
+    character(len=7), parameter :: lever_names(0:1) = [character(len=7) :: &
+        'radius', 'contact']
+    character(len=30), parameter :: lever_helps(0:1) = [character(len=30) :: &
+        'R, as LAMMPS''s walls',  &
+        'R - delta/2, as LAMMPS''s pairs']
+
     public :: hertzdamp_message, hertzdamp_status_name
-    public :: hertzdamp_law_name, hertzdamp_law_code, hertzdamp_law_choices, hertzdamp_law_listing
-    public :: hertzdamp_end_name, hertzdamp_end_code, hertzdamp_end_choices, hertzdamp_end_listing
-    public :: hertzdamp_host_name, hertzdamp_host_code, hertzdamp_host_choices, hertzdamp_host_listing
-    public :: hertzdamp_method_name, hertzdamp_method_code, hertzdamp_method_choices, hertzdamp_method_listing
+    public :: hertzdamp_law_name, hertzdamp_law_code
+    public :: hertzdamp_law_choices, hertzdamp_law_listing
+    public :: hertzdamp_end_name, hertzdamp_end_code
+    public :: hertzdamp_end_choices, hertzdamp_end_listing
+    public :: hertzdamp_host_name, hertzdamp_host_code
+    public :: hertzdamp_host_choices, hertzdamp_host_listing
+    public :: hertzdamp_method_name, hertzdamp_method_code
+    public :: hertzdamp_method_choices, hertzdamp_method_listing
+    public :: hertzdamp_tangential_name, hertzdamp_tangential_code
+    public :: hertzdamp_tangential_choices, hertzdamp_tangential_listing
+    public :: hertzdamp_lever_name, hertzdamp_lever_code
+    public :: hertzdamp_lever_choices, hertzdamp_lever_listing
     public :: hertzdamp_law_q, hertzdamp_law_summary, hertzdamp_law_help, hertzdamp_end_help
+    public :: hertzdamp_tangential_help, hertzdamp_lever_help
     public :: hertzdamp_host_order, hertzdamp_host_in_engine, hertzdamp_host_help
 
 contains
@@ -602,6 +642,172 @@ contains
         end function phrase
     end function hertzdamp_method_listing
 
+    !> Name of a tangential code (linear_history or mindlin; 'unknown' for others).
+    pure function hertzdamp_tangential_name(code) result(name)
+        integer, intent(in) :: code   !! HD_TANGENTIAL_*
+        character(len=:), allocatable :: name
+        if (code >= hertzdamp_min_tangential .and. code <= hertzdamp_max_tangential) then
+            name = trim(tangential_names(code))
+        else
+            name = 'unknown'
+        end if
+    end function hertzdamp_tangential_name
+
+    !> Code of a tangential name (HD_TANGENTIAL_*), -1 when the name is not one.
+    pure integer function hertzdamp_tangential_code(name) result(code)
+        character(len=*), intent(in) :: name   !! a name of hertzdamp_tangential_name
+        integer :: k
+        code = -1
+        do k = hertzdamp_min_tangential, hertzdamp_max_tangential
+            if (trim(tangential_names(k)) == name) then
+                code = k
+                return
+            end if
+        end do
+    end function hertzdamp_tangential_code
+
+    !> The tangential names, blank-separated (a CLI's choices).
+    pure function hertzdamp_tangential_choices() result(s)
+        character(len=:), allocatable :: s
+        integer :: k
+        s = ''
+        do k = hertzdamp_min_tangential, hertzdamp_max_tangential
+            s = s // trim(tangential_names(k)) // ' '
+        end do
+        s = trim(s)
+    end function hertzdamp_tangential_choices
+
+    !> The tangential names as prose, 'a, b or c' (conj replaces 'or'), from the code `first` on;
+    !> with_help: each followed by its help phrase in parentheses.
+    pure function hertzdamp_tangential_listing(conj, with_help, first) result(s)
+        character(len=*), intent(in), optional :: conj     !! the last joint (default 'or')
+        logical, intent(in), optional :: with_help         !! add each value's help phrase
+        integer, intent(in), optional :: first             !! first code listed
+        character(len=:), allocatable :: s, item, c, hp
+        integer :: k, k0, n, nitems
+        logical :: help
+        c = 'or'
+        if (present(conj)) c = conj
+        help = .false.
+        if (present(with_help)) help = with_help
+        k0 = hertzdamp_min_tangential
+        if (present(first)) k0 = max(first, hertzdamp_min_tangential)
+        nitems = 0
+        do k = k0, hertzdamp_max_tangential
+            if (.not. listed(k)) cycle
+            nitems = nitems + 1
+        end do
+        s = ''
+        n = 0
+        do k = k0, hertzdamp_max_tangential
+            if (.not. listed(k)) cycle
+            n = n + 1
+            item = trim(tangential_names(k))
+            hp = phrase(k)
+            if (help .and. len(hp) > 0) item = item // ' (' // hp // ')'
+            if (n == 1) then
+                s = item
+            else if (n == nitems) then
+                s = s // ' ' // c // ' ' // item
+            else
+                s = s // ', ' // item
+            end if
+        end do
+    contains
+        pure logical function listed(kk)
+            integer, intent(in) :: kk
+            listed = kk >= hertzdamp_min_tangential
+        end function listed
+        pure function phrase(kk) result(t)
+            integer, intent(in) :: kk
+            character(len=:), allocatable :: t
+            t = trim(tangential_helps(kk))
+        end function phrase
+    end function hertzdamp_tangential_listing
+
+    !> Name of a lever code (radius or contact; 'unknown' for others).
+    pure function hertzdamp_lever_name(code) result(name)
+        integer, intent(in) :: code   !! HD_LEVER_*
+        character(len=:), allocatable :: name
+        if (code >= hertzdamp_min_lever .and. code <= hertzdamp_max_lever) then
+            name = trim(lever_names(code))
+        else
+            name = 'unknown'
+        end if
+    end function hertzdamp_lever_name
+
+    !> Code of a lever name (HD_LEVER_*), -1 when the name is not one.
+    pure integer function hertzdamp_lever_code(name) result(code)
+        character(len=*), intent(in) :: name   !! a name of hertzdamp_lever_name
+        integer :: k
+        code = -1
+        do k = hertzdamp_min_lever, hertzdamp_max_lever
+            if (trim(lever_names(k)) == name) then
+                code = k
+                return
+            end if
+        end do
+    end function hertzdamp_lever_code
+
+    !> The lever names, blank-separated (a CLI's choices).
+    pure function hertzdamp_lever_choices() result(s)
+        character(len=:), allocatable :: s
+        integer :: k
+        s = ''
+        do k = hertzdamp_min_lever, hertzdamp_max_lever
+            s = s // trim(lever_names(k)) // ' '
+        end do
+        s = trim(s)
+    end function hertzdamp_lever_choices
+
+    !> The lever names as prose, 'a, b or c' (conj replaces 'or'), from the code `first` on;
+    !> with_help: each followed by its help phrase in parentheses.
+    pure function hertzdamp_lever_listing(conj, with_help, first) result(s)
+        character(len=*), intent(in), optional :: conj     !! the last joint (default 'or')
+        logical, intent(in), optional :: with_help         !! add each value's help phrase
+        integer, intent(in), optional :: first             !! first code listed
+        character(len=:), allocatable :: s, item, c, hp
+        integer :: k, k0, n, nitems
+        logical :: help
+        c = 'or'
+        if (present(conj)) c = conj
+        help = .false.
+        if (present(with_help)) help = with_help
+        k0 = hertzdamp_min_lever
+        if (present(first)) k0 = max(first, hertzdamp_min_lever)
+        nitems = 0
+        do k = k0, hertzdamp_max_lever
+            if (.not. listed(k)) cycle
+            nitems = nitems + 1
+        end do
+        s = ''
+        n = 0
+        do k = k0, hertzdamp_max_lever
+            if (.not. listed(k)) cycle
+            n = n + 1
+            item = trim(lever_names(k))
+            hp = phrase(k)
+            if (help .and. len(hp) > 0) item = item // ' (' // hp // ')'
+            if (n == 1) then
+                s = item
+            else if (n == nitems) then
+                s = s // ' ' // c // ' ' // item
+            else
+                s = s // ', ' // item
+            end if
+        end do
+    contains
+        pure logical function listed(kk)
+            integer, intent(in) :: kk
+            listed = kk >= hertzdamp_min_lever
+        end function listed
+        pure function phrase(kk) result(t)
+            integer, intent(in) :: kk
+            character(len=:), allocatable :: t
+            t = trim(lever_helps(kk))
+        end function phrase
+    end function hertzdamp_lever_listing
+
     !> Exponent q of zeta in the damping force of a law (0 for an invalid code).
     pure elemental real(wp) function hertzdamp_law_q(law) result(q)
         integer, intent(in) :: law   !! HD_DAMPING_*
@@ -640,6 +846,22 @@ contains
         s = ''
         if (code >= hertzdamp_min_host .and. code <= hertzdamp_max_host) s = trim(host_helps(code))
     end function hertzdamp_host_help
+
+    !> The short help phrase of a tangential ('' for an invalid code).
+    pure function hertzdamp_tangential_help(code) result(s)
+        integer, intent(in) :: code   !! HD_TANGENTIAL_*
+        character(len=:), allocatable :: s
+        s = ''
+        if (code >= hertzdamp_min_tangential .and. code <= hertzdamp_max_tangential) s = trim(tangential_helps(code))
+    end function hertzdamp_tangential_help
+
+    !> The short help phrase of a lever ('' for an invalid code).
+    pure function hertzdamp_lever_help(code) result(s)
+        integer, intent(in) :: code   !! HD_LEVER_*
+        character(len=:), allocatable :: s
+        s = ''
+        if (code >= hertzdamp_min_lever .and. code <= hertzdamp_max_lever) s = trim(lever_helps(code))
+    end function hertzdamp_lever_help
 
     !> Order p of a host scheme's error in h of the phase-mean e (1 or 2; none: 0, an
     !> invalid code: -1).

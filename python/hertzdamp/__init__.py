@@ -11,6 +11,7 @@ all contacts and broadcasts like a numpy ufunc.  Guide: doc/python.md.
 from ._api import Contact, forward, invert, materials, min_steps, onset_phase, phase_min_steps, timestep
 from ._call import HertzdampError
 from ._lib import lib as _lib
+from ._oblique import oblique_correct, oblique_impact, tangential_kt
 from ._pair import Pair
 
 try:
@@ -30,7 +31,11 @@ LAWS = tuple(_lib.names_of("law"))
 ENDS = tuple(_lib.names_of("end"))
 HOSTS = tuple(_lib.names_of("host"))
 METHODS = tuple(_lib.names_of("method"))
+#: the tangential models and torque lever arms of the oblique contact
+TANGENTIALS = tuple(_lib.names_of("tangential"))
+LEVERS = tuple(_lib.names_of("lever"))
 
 __all__ = ["invert", "forward", "Pair", "materials", "timestep", "min_steps", "onset_phase", "phase_min_steps",
            "Contact", "HertzdampError",
-           "LAWS", "ENDS", "HOSTS", "METHODS", "library_path", "__version__"]
+           "LAWS", "ENDS", "HOSTS", "METHODS", "library_path", "__version__", "tangential_kt", "oblique_impact",
+           "oblique_correct", "TANGENTIALS", "LEVERS"]

@@ -47,10 +47,14 @@ SIGNATURES = {
     "hertzdamp_c_invert_n": (_I, [_I, _P, _P, _P, _P, _I, _P, _P, _P]),
     "hertzdamp_c_forward_law": (_I, [_F, _F, _F, _F, _I, _I, _P, _P]),
     "hertzdamp_c_pair_kd": (_I, [_P, _F, _F, _F, _F, _P, _P]),
+    # the oblique contact (doc/oblique.md)
+    "hertzdamp_c_tangential_kt": (_I, [_I, _F, _F, _F, _P]),
+    "hertzdamp_c_oblique_impact": (_I, [_F] * 6 + [_I] * 3 + [_F] * 3 + [_I, _F, _F, _P]),
+    "hertzdamp_c_oblique_correct": (_I, [_F] * 5 + [_I] * 3 + [_F] * 3 + [_I] + [_F] * 4 + [_P]),
 }
 
 #: The registries read at import: kind -> {name: code}.
-REGISTRIES = ("law", "end", "host", "method", "status", "stats", "size")
+REGISTRIES = ("law", "end", "host", "method", "tangential", "lever", "status", "stats", "size")
 
 
 def library_path() -> Path:

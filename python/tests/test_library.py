@@ -21,13 +21,15 @@ def defines():
 
 
 @pytest.mark.skipif(not HEADER.is_file(), reason="no include/hertzdamp.h beside the tests")
-@pytest.mark.parametrize("kind,prefix", [("status", ""), ("end", "END_"), ("law", "DAMPING_"), ("host", "HOST_")])
+@pytest.mark.parametrize("kind,prefix", [("status", ""), ("end", "END_"), ("law", "DAMPING_"), ("host", "HOST_"),
+                                         ("tangential", "TANGENTIAL_"), ("lever", "LEVER_")])
 def test_registries_equal_the_header(kind, prefix):
     d = defines()
     names = {n: c for n, c in lib.codes[kind].items()}
     status = {k: v for k, v in d.items()
-              if not k.startswith(("END_", "DAMPING_", "HOST_", "PAIR_SIZE")) or k == "HOST_UNREACHABLE"}
-    if kind == "status":   # the status codes: every #define that is not an end, law, host or the pair size
+              if not k.startswith(("END_", "DAMPING_", "HOST_", "PAIR_SIZE", "TANGENTIAL_", "LEVER_"))
+              or k == "HOST_UNREACHABLE"}
+    if kind == "status":   # the status codes: every #define that is not an end, law, host, tangential or lever
         want = status
     else:
         want = {k[len(prefix):]: v for k, v in d.items() if k.startswith(prefix) and k not in status}

@@ -22,8 +22,9 @@ while IFS= read -r row; do
 done <<<"$rows"
 
 # ------------------------------------------------------------ the README stays a README (issue 25)
-# (400 until section 7, From Python, of issue 35 came: 20 lines with its figures)
-check "README.md has at most 420 lines ($(wc -l <README.md))" test "$(wc -l <README.md)" -le 420
+# (400 until section 7, From Python, of issue 35 came: 20 lines with its figures; 420 until
+# section 8, Oblique contacts, of issue 33: 16 lines with its figures)
+check "README.md has at most 436 lines ($(wc -l <README.md))" test "$(wc -l <README.md)" -le 436
 
 # ------------------------------------------------------------ README section 6: the spread figure
 # The README rounds the rows of doc/host-schemes.md's table 3 (synced with the example by

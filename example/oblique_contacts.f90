@@ -1,0 +1,104 @@
+!> Oblique contacts (doc/oblique.md): a glass sphere on a glass wall at 1 m/s, mu = 0.3,
+!> e = 0.5, physical and softened 100x in time with the adapted k_t
+!> (hertzdamp_tangential_kt), and the per-contact cost of the k_t rule and of the two-sphere
+!> normal correction against the bare k, d formula (medians of 7 repeats in one process;
+!> state the load from `uptime` with the figures).
+!>
+!>     fpm run --example oblique_contacts --flag "-O3 -march=x86-64-v2 -funroll-loops -fPIC"
+program oblique_contacts
+    use, intrinsic :: iso_fortran_env, only: int64
+    use hertzdamp, only: hertzdamp_rk, hertzdamp_pi, hertzdamp_oblique_t, hertzdamp_oblique_result, &
+                         hertzdamp_oblique_impact, hertzdamp_tangential_kt, hertzdamp_oblique_correct, &
+                         hertzdamp_invert, hertzdamp_mindlin_kt, HD_TANGENTIAL_MINDLIN, HD_LEVER_CONTACT
+    implicit none
+    integer, parameter :: wp = hertzdamp_rk
+    real(wp), parameter :: rad = 1.0e-3_wp, rho = 2500.0_wp, ym = 63.0e9_wp, nu = 0.24_wp
+    type(hertzdamp_oblique_t) :: c, cs
+    type(hertzdamp_oblique_result) :: r, rs
+    real(wp) :: m, kphys, kt, k, d, kts, th, un, et, t(4, 7), acc
+    integer :: st, i, rep
+    integer(int64) :: c0, c1, rate
+    m = rho * 4.0_wp / 3.0_wp * hertzdamp_pi * rad**3
+    kphys = 4.0_wp / 3.0_wp * ym / (2.0_wp * (1.0_wp - nu**2)) * sqrt(rad)
+    call hertzdamp_mindlin_kt(ym, nu, ym, nu, kt, st)
+    print '(a)', 'angle      e_n      e_t (physical)  e_t (100x, adapted k_t)  e_t (100x, physical k_t)'
+    do i = 1, 8
+        th = 10.0_wp * i
+        un = cos(th * hertzdamp_pi / 180.0_wp)
+        call hertzdamp_invert(0.5_wp, 1.0e-9_wp, m, un, 0, k, d, st, k_phys=kphys)
+        c = hertzdamp_oblique_t(m1=m, r1=rad, k=k, d=d, tangential=HD_TANGENTIAL_MINDLIN, kt=kt, mu=0.3_wp)
+        call hertzdamp_oblique_impact(c, 1.0_wp, th, r, st)
+        cs = c
+        cs%k = k * 100.0_wp**(-2.5_wp)
+        cs%d = d / 100.0_wp
+        call hertzdamp_tangential_kt(HD_TANGENTIAL_MINDLIN, kt, cs%k, k, kts, st)
+        cs%kt = kts
+        call hertzdamp_oblique_impact(cs, 1.0_wp, th, rs, st)
+        write (*, '(f5.0, f9.5, f12.6, f20.6)', advance='no') th, r%e_n, r%e_t, rs%e_t
+        cs%kt = kt
+        call hertzdamp_oblique_impact(cs, 1.0_wp, th, rs, st)
+        print '(f24.6)', rs%e_t
+    end do
+    ! cost per contact
+    acc = 0.0_wp
+    call system_clock(count_rate=rate)
+    c = hertzdamp_oblique_t(m1=m, r1=rad, m2=m, r2=rad, k=kphys * sqrt(0.5_wp), kt=kt, lever=HD_LEVER_CONTACT)
+    do rep = 1, 7
+        call system_clock(c0)
+        do i = 1, 100000
+            call hertzdamp_invert(0.5_wp, 1.0e-5_wp, m, 1.0_wp + 1.0e-6_wp * i, 0, k, d, st, k_phys=kphys)
+            acc = acc + k
+        end do
+        call system_clock(c1)
+        t(1, rep) = real(c1 - c0, wp) / rate / 1.0e5_wp
+        call system_clock(c0)
+        do i = 1, 100000
+            call hertzdamp_invert(0.5_wp, 1.0e-5_wp, m, 1.0_wp + 1.0e-6_wp * i, 0, k, d, st, k_phys=kphys)
+            call hertzdamp_tangential_kt(HD_TANGENTIAL_MINDLIN, kt, k, kphys, kts, st)
+            acc = acc + k + kts
+        end do
+        call system_clock(c1)
+        t(2, rep) = real(c1 - c0, wp) / rate / 1.0e5_wp
+        call system_clock(c0)
+        do i = 1, 20
+            call hertzdamp_oblique_impact(c, 5.0_wp, 45.0_wp + 1.0e-3_wp * i, r, st)
+            acc = acc + r%e_n
+        end do
+        call system_clock(c1)
+        t(3, rep) = real(c1 - c0, wp) / rate / 20.0_wp
+        call system_clock(c0)
+        do i = 1, 20
+            call hertzdamp_oblique_correct(c, 0.5_wp, 2.0e-5_wp, 5.0_wp, 45.0_wp + 1.0e-3_wp * i, k, d, kts, et, st)
+            acc = acc + k
+        end do
+        call system_clock(c1)
+        t(4, rep) = real(c1 - c0, wp) / rate / 20.0_wp
+    end do
+    print '(a)', 'per contact (median of 7)            time       / bare k, d'
+    print '(a, es10.3, a, f10.2)', 'hertzdamp_invert (bare k, d)    ', median(t(1, :)), ' s', 1.0_wp
+    print '(a, es10.3, a, f10.2)', ' + hertzdamp_tangential_kt      ', median(t(2, :)), ' s', &
+        median(t(2, :)) / median(t(1, :))
+    print '(a, es10.3, a, f10.0)', 'hertzdamp_oblique_impact (45)   ', median(t(3, :)), ' s', &
+        median(t(3, :)) / median(t(1, :))
+    print '(a, es10.3, a, f10.0)', 'hertzdamp_oblique_correct (45)  ', median(t(4, :)), ' s', &
+        median(t(4, :)) / median(t(1, :))
+    if (.not. acc > 0.0_wp) print '(a)', '(unexpected)'
+contains
+    pure real(wp) function median(x)
+        real(wp), intent(in) :: x(:)
+        real(wp) :: y(size(x)), v
+        integer :: i, j
+        y = x
+        do i = 2, size(y)
+            v = y(i)
+            j = i - 1
+            do while (j >= 1)
+                if (y(j) <= v) exit
+                y(j + 1) = y(j)
+                j = j - 1
+            end do
+            y(j + 1) = v
+        end do
+        median = y((size(y) + 1) / 2)
+    end function median
+end program oblique_contacts

@@ -87,7 +87,7 @@ module hertzdamp_pair
     integer, parameter :: chunk = 256
 
     ! The marker: a keyed hash of the seven header fields' bit patterns.  Each pattern's two
-    ! 32-bit halves are multiplied by the field's key (odd, 31-bit: the products stay below
+    ! 32-bit halves are multiplied by keys of the field (odd, 31-bit: the products stay below
     ! 2^63, so no integer multiplication overflows, which Fortran leaves undefined and an
     ! optimiser may exploit), the high product rotated, the two combined by exclusive or: a
     ! change of either half of one field changes its share; distinct keys make two fields
@@ -101,6 +101,7 @@ module hertzdamp_pair
         int(z'20B428DB', int64), int(z'1C88C6E3', int64)]
     integer(int64), parameter :: fraction_bits = int(z'000FFFFFFFFFFFFF', int64)
     integer(int64), parameter :: low32 = int(z'00000000FFFFFFFF', int64)
+    integer(int64), parameter :: high_key = int(z'2545F490', int64)
     integer(int64), parameter :: one_bits = transfer(1.0_wp, 0_int64)
     !> Largest tau_c and alpha a valid pair holds (the range checks of the header).
     real(wp), parameter :: pair_tau_max = 1.0e4_wp, pair_alpha_max = 1.0e4_wp
@@ -389,14 +390,16 @@ contains
         bits = ior(iand(h, fraction_bits), one_bits)
     end function marker_of
 
-    !> One field's share of the marker: the two 32-bit halves of its bit pattern times the
-    !> key (each product below 2^63), the high one rotated by 31 bits, combined by exclusive or.
+    !> One field's share of the marker: the low 32-bit half of its bit pattern times the key,
+    !> the high half times another key (the key xor high_key, odd too: with one key a field
+    !> 0 with its bits 31 and 32 flipped would keep its share), each product below 2^63, the
+    !> high one rotated by 31 bits, combined by exclusive or.
     pure elemental integer(int64) function share(x, key)
         real(c_double), intent(in) :: x
         integer(int64), intent(in) :: key
         integer(int64) :: b
         b = transfer(x, 0_int64)
-        share = ieor(iand(b, low32) * key, ishftc(shiftr(b, 32) * key, 31))
+        share = ieor(iand(b, low32) * key, ishftc(shiftr(b, 32) * ieor(key, high_key), 31))
     end function share
 
     !> The bit pattern of a double.

@@ -700,6 +700,7 @@ contains
             if (st /= HD_BAD_PAIR) nbad = nbad + 1
         end do
         call s%check(nbad == 0, 'two bits of alpha (i, i + 32) or tau_c (i, i + 20) flipped, i = 0..31: HD_BAD_PAIR')
+        call every_flip()
         ! forged with a matching marker: the range checks
         q = p
         call seal(q)
@@ -734,6 +735,43 @@ contains
         q%host = 99.0_wp
         call forged(q, 'host 99')
     end subroutine tampered_pairs
+
+    !> Every one- and two-bit flip of the eight header doubles (the marker included: 512
+    !> bits, 131,328 flips per pair), for pairs whose fields are partly zero (law, end and
+    !> host 0: the adversarial round found the first marker accepting flips of bits 31 and 32
+    !> of one such field, the additive one flips of two fields' high exponent bits):
+    !> hertzdamp_pair_kd refuses every one (HD_BAD_PAIR).
+    subroutine every_flip()
+        type(hertzdamp_pair_t) :: p, q
+        real(wp) :: k, d, f(8), g(8)
+        integer :: st, i, j, c, nacc
+        integer, parameter :: laws(3) = [HD_DAMPING_LINEAR, HD_DAMPING_TSUJI, HD_DAMPING_KUWABARA_KONO]
+        integer, parameter :: ends(3) = [HD_END_OVERLAP, HD_END_FORCE, HD_END_OVERLAP]
+        integer, parameter :: hosts(3) = [HD_HOST_NONE, HD_HOST_LAMMPS, HD_HOST_MFIX_AB2]
+        real(wp), parameter :: es(3) = [0.9_wp, 0.5_wp, 0.2_wp], ns(3) = [10.0_wp, 10.0_wp, 11.0_wp]
+        nacc = 0
+        do c = 1, 3
+            call hertzdamp_pair_init(es(c), laws(c), ends(c), hosts(c), ns(c), p, st)
+            call s%check(st == HD_OK, 'every_flip: the pair is valid')
+            f = [p%alpha, p%tau_c, p%alpha_cont, p%steps, p%law, p%iend, p%host, p%marker]
+            do i = 0, 511
+                do j = i, 511
+                    g = f
+                    g(shiftr(i, 6) + 1) = transfer(ieor(transfer(g(shiftr(i, 6) + 1), 0_int64), &
+                                                        shiftl(1_int64, iand(i, 63))), 1.0_wp)
+                    if (j > i) g(shiftr(j, 6) + 1) = transfer(ieor(transfer(g(shiftr(j, 6) + 1), 0_int64), &
+                                                                  shiftl(1_int64, iand(j, 63))), 1.0_wp)
+                    q = p
+                    q%alpha = g(1); q%tau_c = g(2); q%alpha_cont = g(3); q%steps = g(4)
+                    q%law = g(5); q%iend = g(6); q%host = g(7); q%marker = g(8)
+                    call hertzdamp_pair_kd(q, 1.0e-5_wp, 1.0e-3_wp, 1.0_wp, k, d, st)
+                    if (st /= HD_BAD_PAIR) nacc = nacc + 1
+                end do
+            end do
+        end do
+        call s%check(nacc == 0, 'every one- and two-bit flip of the header of three pairs: HD_BAD_PAIR')
+        if (nacc /= 0) print '(a, i0)', '  flips accepted: ', nacc
+    end subroutine every_flip
 
     !> The pair pp with its eight header fields replaced by h.
     pure type(hertzdamp_pair_t) function header(h, pp) result(q)
@@ -776,8 +814,8 @@ contains
     end subroutine forged
 
     !> The marker of the module note, written again here (without integer overflow): each
-    !> of the seven header fields' bit patterns split into 32-bit halves, each half times
-    !> the field's key, the high product rotated by 31, the two and the fields combined by
+    !> of the seven header fields' bit patterns split into 32-bit halves, the low half times
+    !> the field's key, the high half times the key xor z'2545F490', that product rotated by 31, the two and the fields combined by
     !> exclusive or; finalised by folding the halves, times key 8, rotated by 20 into the
     !> hash, xor-shift 29; the low 52 bits as the fraction of a number in [1, 2).
     subroutine seal(pp)
@@ -793,7 +831,7 @@ contains
         h = 0_int64
         do j = 1, 7
             x = transfer(f(j), x)
-            h = ieor(h, ieor(iand(x, lo) * keys(j), ishftc(shiftr(x, 32) * keys(j), 31)))
+            h = ieor(h, ieor(iand(x, lo) * keys(j), ishftc(shiftr(x, 32) * ieor(keys(j), int(z'2545F490', int64)), 31)))
         end do
         g = iand(ieor(h, shiftr(h, 32)), lo) * keys(8)
         h = ieor(h, ishftc(g, 20))

@@ -61,8 +61,9 @@ contains
     pure function utf8_clean(s) result(r)
         character(len=*), intent(in) :: s
         character(len=:), allocatable :: r
-        character(len=3 * len(s)) :: buf
+        character(len=:), allocatable :: buf   ! on the heap (see one_line)
         integer :: i, j, n
+        allocate (character(len=3 * len(s)) :: buf)
         i = 1
         j = 0
         do while (i <= len(s))
@@ -85,8 +86,9 @@ contains
     pure function one_line(s) result(r)
         character(len=*), intent(in) :: s
         character(len=:), allocatable :: r
-        character(len=4 * len(s)) :: buf
+        character(len=:), allocatable :: buf   ! on the heap: a message may quote a token of megabytes
         integer :: i, j, n, c
+        allocate (character(len=4 * len(s)) :: buf)
         i = 1
         j = 0
         do while (i <= len(s))

@@ -277,6 +277,12 @@ expect_fail 2 "a missing second deck file" check lammps "$D/lammps_include.in" n
 check "message names the second file: $(cat "$ERR")" grep -q '^hertzdamp: nonexist.in: no such deck file' "$ERR"
 run check lammps "hertz/material 1e8 0.5 0.3 damping tsuji" --radius 1e-3 --density 2500 --velocity 1
 check "LAMMPS's own words that name no file are still words (exit $RC)" test "$RC" -eq 0
+# a deck whose one token is 4 MB long (the adversarial round: a message quoting it
+# overflowed the stack, SIGSEGV): the engines' readers report it, exit 2, one line
+head -c 4000000 /dev/zero | tr '\0' a >"$TMP/long_token.in"
+for engine in lammps liggghts mfix; do
+  expect_fail 2 "a 4 MB token ($engine)" check "$engine" "$TMP/long_token.in"
+done
 # item 7: the whole deck notes what the other LAMMPS releases give (LAMMPS's own example:
 # the 2021 fix wall/gran stiffness); the note's e_host is the --release 2021 row's
 cd "$LEX/granular" || exit 1

@@ -187,27 +187,7 @@ contains
                     if (status == HD_BAD_RESTITUTION .and. e >= 0.0_wp .and. e <= 1.0_wp) kind = ROW_OUTSIDE_VALIDITY
                     if (status == HD_HOST_UNREACHABLE) kind = ROW_OUTSIDE_VALIDITY
                     have = row_has_result(kind)
-                    call t%num(e)
-                    call t%num_or_none(tc, tc_ok)
-                    call t%num(u)
-                    call t%num(ct%mass)
-                    call t%num_or_none(ct%radius, ct%has_radius)
-                    call t%num_or_none(ct%k_phys, ct%has_kphys)
-                    call t%num_or_none(alpha, have)
-                    call t%num_or_none(tau, have)
-                    call t%num_or_none(tstar, have)
-                    call t%num_or_none(k, have)
-                    call t%num_or_none(d, have)
-                    if (have) then
-                        call t%bool(bound)
-                    else
-                        call t%none()
-                    end if
-                    call t%num_or_none(tc_act, have)
-                    if (h%given) then
-                        call t%num_or_none(relative_spread(rstats%e_sd, rstats%e_mean), have)
-                        call t%num_or_none(relative_spread(rstats%tau_sd, rstats%tau_mean), have)
-                    end if
+                    call row_numbers()
                     call t%str(row_word(kind))
                     if (have) then
                         call rows%add(kind, '')
@@ -227,6 +207,31 @@ contains
         end do
         call p%finish()
         call rows%emit(t, c%fmt)
+    contains
+        !> The numbers of one row (e, T_c, ..., the host's spreads), before its status.
+        subroutine row_numbers()
+        call t%num(e)
+        call t%num_or_none(tc, tc_ok)
+        call t%num(u)
+        call t%num(ct%mass)
+        call t%num_or_none(ct%radius, ct%has_radius)
+        call t%num_or_none(ct%k_phys, ct%has_kphys)
+        call t%num_or_none(alpha, have)
+        call t%num_or_none(tau, have)
+        call t%num_or_none(tstar, have)
+        call t%num_or_none(k, have)
+        call t%num_or_none(d, have)
+        if (have) then
+            call t%bool(bound)
+        else
+            call t%none()
+        end if
+        call t%num_or_none(tc_act, have)
+        if (h%given) then
+            call t%num_or_none(relative_spread(rstats%e_sd, rstats%e_mean), have)
+            call t%num_or_none(relative_spread(rstats%tau_sd, rstats%tau_mean), have)
+        end if
+        end subroutine row_numbers
     end subroutine cmd_invert
 
     !> A host's contact where the bound is active (issue 30, defect 3): it keeps k = k_phys and

@@ -112,31 +112,7 @@ contains
         call hertzdamp_dem_check(sc, status, msg)
         if (status /= HD_OK) call fail(EXIT_USAGE, file // ': ' // msg)
 
-        ! method: measured errors of every candidate at the scene's targets
-        call system_clock(c0, rate)
-        call hertzdamp_dem_select(sc, chosen, err, avail, status)
-        call system_clock(c1)
-        t_select = real(c1 - c0, wp) / real(rate, wp)
-        if (status /= HD_OK) call fail(EXIT_FAILURE, 'reference solver failed while choosing the method')
-        if (host /= HD_HOST_NONE) then
-            method = HD_METHOD_FIT
-            reason = 'host ' // hertzdamp_host_name(host) // ': the per-pair constants of the fit for the host''s ' // &
-                     'scheme at N = ' // itoa(sc%steps_per_contact) // ' (hertzdamp_pair_init)'
-        else if (mchoice == 1) then
-            if (chosen < 0) call fail(EXIT_NO_SOLUTION, 'no contact rule meets the accuracy ' // &
-                                      trim(fmt_csv(sc%accuracy)) // ' of the scene')
-            method = chosen
-            c = findloc(hertzdamp_dem_cost_order, method, dim=1)
-            reason = 'auto: cheapest rule (cost order first-order < compact < series < pade < fit < iterative) ' // &
-                     'whose measured error in e and tau_c ' // number(err(c), fmt) // ' <= accuracy ' // &
-                     number(sc%accuracy, fmt)
-        else
-            method = method_code(mchoice)
-            c = findloc(hertzdamp_dem_cost_order, method, dim=1)
-            if (.not. avail(c)) call fail(EXIT_USAGE, 'method ' // hertzdamp_method_name(method) // &
-                                          ' is not available in this build of the library')
-            reason = 'requested; measured error in e and tau_c ' // number(err(c), fmt)
-        end if
+        call choose_method()
         tol_it = min(1.0e-2_wp, max(1.0e-10_wp, 0.1_wp * sc%accuracy))
         compare = compare .and. method /= HD_METHOD_ITERATIVE .and. host == HD_HOST_NONE
         nruns = merge(2, 1, compare)
@@ -173,6 +149,35 @@ contains
                       ' failed (see the report): ' // failed_names)
         end if
         call quit(EXIT_OK)
+    contains
+        !> The method: the measured errors of every candidate at the scene's targets, then the
+        !> host's fit, the cheapest that meets the accuracy (auto) or the one asked for.
+        subroutine choose_method()
+            call system_clock(c0, rate)
+            call hertzdamp_dem_select(sc, chosen, err, avail, status)
+            call system_clock(c1)
+            t_select = real(c1 - c0, wp) / real(rate, wp)
+            if (status /= HD_OK) call fail(EXIT_FAILURE, 'reference solver failed while choosing the method')
+            if (host /= HD_HOST_NONE) then
+                method = HD_METHOD_FIT
+                reason = 'host ' // hertzdamp_host_name(host) // ': the per-pair constants of the fit for the host''s ' // &
+                         'scheme at N = ' // itoa(sc%steps_per_contact) // ' (hertzdamp_pair_init)'
+            else if (mchoice == 1) then
+                if (chosen < 0) call fail(EXIT_NO_SOLUTION, 'no contact rule meets the accuracy ' // &
+                                          trim(fmt_csv(sc%accuracy)) // ' of the scene')
+                method = chosen
+                c = findloc(hertzdamp_dem_cost_order, method, dim=1)
+                reason = 'auto: cheapest rule (cost order first-order < compact < series < pade < fit < iterative) ' // &
+                         'whose measured error in e and tau_c ' // number(err(c), fmt) // ' <= accuracy ' // &
+                         number(sc%accuracy, fmt)
+            else
+                method = method_code(mchoice)
+                c = findloc(hertzdamp_dem_cost_order, method, dim=1)
+                if (.not. avail(c)) call fail(EXIT_USAGE, 'method ' // hertzdamp_method_name(method) // &
+                                              ' is not available in this build of the library')
+                reason = 'requested; measured error in e and tau_c ' // number(err(c), fmt)
+            end if
+        end subroutine choose_method
     end subroutine cmd_scene
 
     !> --dt and --steps override the scene file's dt and steps_per_contact (validated with

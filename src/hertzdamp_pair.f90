@@ -86,22 +86,25 @@ module hertzdamp_pair
     !> Contacts per pass of the array forms (buffers on the stack).
     integer, parameter :: chunk = 256
 
-    ! The marker: a keyed hash of the seven header fields' bit patterns.  Each pattern's two
-    ! 32-bit halves are multiplied by keys of the field (odd, 31-bit: the products stay below
-    ! 2^63, so no integer multiplication overflows, which Fortran leaves undefined and an
-    ! optimiser may exploit), the high product rotated, the two combined by exclusive or: a
-    ! change of either half of one field changes its share; distinct keys make two fields
-    ! swapped change it.  The shares are combined by exclusive or, the result finalised
-    ! (its halves folded, times the eighth key, rotated in, xor-shift) and its low 52 bits
-    ! put into the fraction of a number in [1, 2) (a finite double).  With the range checks
-    ! of the fields the per-contact path reads (header_valid) about 60 integer operations,
-    ! no branch, off the floating-point units that the k, d formulas use.
-    integer(int64), parameter :: marker_keys(8) = [int(z'4F6CDD1D', int64), int(z'7F4A7C15', int64), &
-        int(z'1CE4E5B9', int64), int(z'133111EB', int64), int(z'6659FD93', int64), int(z'78BD642F', int64), &
-        int(z'20B428DB', int64), int(z'1C88C6E3', int64)]
+    ! The marker: a hash of the seven header fields' bit patterns x_i, linear over GF(2) and
+    ! without integer arithmetic (nothing can overflow): each pattern xored with itself rotated
+    ! by an amount of its own, the seven results xored, the top 12 bits
+    ! folded onto the low ones, and those 52 bits put into the fraction of a number in [1, 2)
+    ! (a finite double).  The rotations were chosen so that the 448 bits of the seven
+    ! fields map to 448 distinct patterns of at least two bits each: any one or two flipped
+    ! bits of the header (the marker included) change the marker or break its match
+    ! (test_pair flips every one and two bits of three pairs); a swap of two fields x, y
+    ! changes it unless the bits in which they differ form a pattern that the difference of
+    ! their rotations maps onto itself (test_pair swaps alpha and tau_c, law and host).  The
+    ! amounts are public: the marker detects changes, not a forger who recomputes it, for
+    ! which the range checks remain.  With the range checks of the fields the
+    ! per-contact path reads (header_valid) about 40 integer operations, no branch and no
+    ! multiplication, off the floating-point units that the k, d formulas use.
+    ! (the amounts, field by field: alpha 51, tau_c 46, alpha_cont 24, steps 48, law 42,
+    ! iend 21, host 35: written out in marker_of)
     integer(int64), parameter :: fraction_bits = int(z'000FFFFFFFFFFFFF', int64)
-    integer(int64), parameter :: low32 = int(z'00000000FFFFFFFF', int64)
-    integer(int64), parameter :: high_key = int(z'2545F490', int64)
+    !> The constant the onset-phase table's marker starts from (phase_marker_of).
+    integer(int64), parameter :: phase_key = int(z'20B428DB', int64)
     integer(int64), parameter :: one_bits = transfer(1.0_wp, 0_int64)
     !> Largest tau_c and alpha a valid pair holds (the range checks of the header).
     real(wp), parameter :: pair_tau_max = 1.0e4_wp, pair_alpha_max = 1.0e4_wp
@@ -201,7 +204,7 @@ contains
     pure integer(int64) function phase_marker_of(pair) result(bits)
         type(hertzdamp_pair_t), intent(in) :: pair
         integer(int64) :: h
-        h = ieor(ieor(ieor(bits_of(pair%marker), marker_keys(7)), ieor(ishftc(bits_of(pair%phase(2)), 7), &
+        h = ieor(ieor(ieor(bits_of(pair%marker), phase_key), ieor(ishftc(bits_of(pair%phase(2)), 7), &
                  ishftc(bits_of(pair%phase(3)), 14))), ieor(ieor(ishftc(bits_of(pair%phase(4)), 21), &
                  ishftc(bits_of(pair%phase(5)), 28)), ieor(ishftc(bits_of(pair%phase(6)), 35), &
                  ishftc(bits_of(pair%phase(7)), 42))))
@@ -378,29 +381,18 @@ contains
     !> The marker that a valid pair with these seven header fields carries (bit pattern).
     pure integer(int64) function marker_of(pair) result(bits)
         type(hertzdamp_pair_t), intent(in) :: pair
-        integer(int64) :: h
-        integer(int64) :: f
-        h = ieor(ieor(share(pair%alpha, marker_keys(1)), share(pair%tau_c, marker_keys(2))), &
-                 ieor(share(pair%alpha_cont, marker_keys(3)), share(pair%steps, marker_keys(4))))
-        h = ieor(h, ieor(ieor(share(pair%law, marker_keys(5)), share(pair%iend, marker_keys(6))), &
-                         share(pair%host, marker_keys(7))))
-        f = iand(ieor(h, shiftr(h, 32)), low32) * marker_keys(8)
-        h = ieor(h, ishftc(f, 20))
-        h = ieor(h, shiftr(h, 29))
-        bits = ior(iand(h, fraction_bits), one_bits)
+        integer(int64) :: a, t, c, s, l, n, o, h
+        a = bits_of(pair%alpha)
+        t = bits_of(pair%tau_c)
+        c = bits_of(pair%alpha_cont)
+        s = bits_of(pair%steps)
+        l = bits_of(pair%law)
+        n = bits_of(pair%iend)
+        o = bits_of(pair%host)
+        h = ieor(ieor(ieor(a, ishftc(a, 51)), ieor(t, ishftc(t, 46))), ieor(ieor(c, ishftc(c, 24)), ieor(s, ishftc(s, 48))))
+        h = ieor(h, ieor(ieor(ieor(l, ishftc(l, 42)), ieor(n, ishftc(n, 21))), ieor(o, ishftc(o, 35))))
+        bits = ior(iand(ieor(h, shiftr(h, 52)), fraction_bits), one_bits)
     end function marker_of
-
-    !> One field's share of the marker: the low 32-bit half of its bit pattern times the key,
-    !> the high half times another key (the key xor high_key, odd too: with one key a field
-    !> 0 with its bits 31 and 32 flipped would keep its share), each product below 2^63, the
-    !> high one rotated by 31 bits, combined by exclusive or.
-    pure elemental integer(int64) function share(x, key)
-        real(c_double), intent(in) :: x
-        integer(int64), intent(in) :: key
-        integer(int64) :: b
-        b = transfer(x, 0_int64)
-        share = ieor(iand(b, low32) * key, ishftc(shiftr(b, 32) * ieor(key, high_key), 31))
-    end function share
 
     !> The bit pattern of a double.
     pure elemental integer(int64) function bits_of(x)

@@ -813,29 +813,23 @@ contains
                      'C hertzdamp_c_pair_kd: forged pair (' // what // '): HD_BAD_PAIR')
     end subroutine forged
 
-    !> The marker of the module note, written again here (without integer overflow): each
-    !> of the seven header fields' bit patterns split into 32-bit halves, the low half times
-    !> the field's key, the high half times the key xor z'2545F490', that product rotated by 31, the two and the fields combined by
-    !> exclusive or; finalised by folding the halves, times key 8, rotated by 20 into the
-    !> hash, xor-shift 29; the low 52 bits as the fraction of a number in [1, 2).
+    !> The marker of the module note, written again here: each of the seven header fields'
+    !> bit patterns xored with itself rotated by the field's amount (51, 46, 24, 48, 42, 21,
+    !> 35), the seven xored, the top 12 bits folded onto the low ones; the low 52 bits as the
+    !> fraction of a number in [1, 2).
     subroutine seal(pp)
         type(hertzdamp_pair_t), intent(inout) :: pp
-        integer(int64), parameter :: keys(8) = [int(z'4F6CDD1D', int64), int(z'7F4A7C15', int64), &
-            int(z'1CE4E5B9', int64), int(z'133111EB', int64), int(z'6659FD93', int64), int(z'78BD642F', int64), &
-            int(z'20B428DB', int64), int(z'1C88C6E3', int64)]
-        integer(int64), parameter :: lo = int(z'FFFFFFFF', int64)
+        integer, parameter :: r(7) = [51, 46, 24, 48, 42, 21, 35]
         real(wp) :: f(7)
-        integer(int64) :: h, x, g
+        integer(int64) :: h, x
         integer :: j
         f = [pp%alpha, pp%tau_c, pp%alpha_cont, pp%steps, pp%law, pp%iend, pp%host]
         h = 0_int64
         do j = 1, 7
             x = transfer(f(j), x)
-            h = ieor(h, ieor(iand(x, lo) * keys(j), ishftc(shiftr(x, 32) * ieor(keys(j), int(z'2545F490', int64)), 31)))
+            h = ieor(h, ieor(x, ishftc(x, r(j))))
         end do
-        g = iand(ieor(h, shiftr(h, 32)), lo) * keys(8)
-        h = ieor(h, ishftc(g, 20))
-        h = ieor(h, shiftr(h, 29))
+        h = ieor(h, shiftr(h, 52))
         pp%marker = transfer(ior(iand(h, int(z'000FFFFFFFFFFFFF', int64)), transfer(1.0_wp, h)), 1.0_wp)
     end subroutine seal
 

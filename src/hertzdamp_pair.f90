@@ -90,7 +90,8 @@ module hertzdamp_pair
     ! without integer arithmetic (nothing can overflow): each pattern xored with itself rotated
     ! by an amount of its own, the seven results xored, the top 12 bits
     ! folded onto the low ones, and those 52 bits put into the fraction of a number in [1, 2)
-    ! (a finite double).  The rotations were chosen so that the 448 bits of the seven
+    ! (a finite double).  The rotations (tools/marker_rotations.py finds and checks them)
+    ! were chosen so that the 448 bits of the seven
     ! fields map to 448 distinct patterns of at least two bits each: any one or two flipped
     ! bits of the header (the marker included) change the marker or break its match
     ! (test_pair flips every one and two bits of three pairs); a swap of two fields x, y

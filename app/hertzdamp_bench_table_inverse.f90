@@ -7,10 +7,8 @@
 module hertzdamp_bench_table_inverse
     use hertzdamp, only: hertzdamp_rk, hertzdamp_message, hertzdamp_law_name, HD_OK, HD_END_OVERLAP, &
                          HD_METHOD_SERIES, HD_METHOD_PADE, HD_METHOD_COMPACT, HD_METHOD_FIT, HD_METHOD_ITERATIVE, &
-                         HD_DAMPING_LINEAR, HD_DAMPING_TSUJI, hertzdamp_tsuji_alpha
-    use hertzdamp, only: hertzdamp_invert
-    use hertzdamp, only: hertzdamp_expand
-    use hertzdamp, only: hertzdamp_invert_options
+                         HD_DAMPING_LINEAR, HD_DAMPING_TSUJI, hertzdamp_tsuji_alpha, hertzdamp_invert, &
+                         hertzdamp_expand, hertzdamp_invert_options
     use hertzdamp_gsl_secant, only: hertzdamp_gsl_secant_invert
     use hertzdamp_bench_timer, only: bench_case, bench_measure
     use hertzdamp_bench_entry, only: entry_result, n_ways, way_name

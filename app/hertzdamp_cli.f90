@@ -5,9 +5,8 @@
 !> prints anything: on bad usage (exit 2) or no solution (exit 3) stdout stays empty
 !> and stderr gets one line.
 module hertzdamp_cli
-    use hertzdamp, only: hertzdamp_rk
-    use hertzdamp, only: HD_OK, HD_NO_REBOUND, HD_BAD_RESTITUTION, HD_OUTSIDE_VALIDITY, HD_OUT_OF_RANGE, &
-                       HD_MAX_STEPS, HD_STEP_UNDERFLOW, HD_NO_CONVERGENCE
+    use hertzdamp, only: hertzdamp_rk, HD_OK, HD_NO_REBOUND, HD_BAD_RESTITUTION, HD_OUTSIDE_VALIDITY, &
+                         HD_OUT_OF_RANGE, HD_MAX_STEPS, HD_STEP_UNDERFLOW, HD_NO_CONVERGENCE
     use, intrinsic :: iso_fortran_env, only: output_unit, error_unit
     use, intrinsic :: iso_c_binding, only: c_int, c_char, c_size_t, c_long, c_funptr, c_intptr_t
     use, intrinsic :: ieee_arithmetic, only: ieee_is_finite

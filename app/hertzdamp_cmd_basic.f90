@@ -2,13 +2,12 @@
 module hertzdamp_cmd_basic
     use hertzdamp, only: hertzdamp_rk, hertzdamp_collision, hertzdamp_forward_alpha, hertzdamp_forward_dim, &
                          hertzdamp_message, hertzdamp_alpha_c, hertzdamp_tau_c0, hertzdamp_z_max0, hertzdamp_e1, &
-                         hertzdamp_end_name, hertzdamp_alpha_max, hertzdamp_law_q, hertzdamp_law_name, HD_DAMPING_LINEAR, &
-                         hertzdamp_law_has_alpha_c, hertzdamp_law_alpha_c, hertzdamp_law_code, &
+                         hertzdamp_end_name, hertzdamp_alpha_max, hertzdamp_law_q, hertzdamp_law_name, &
+                         HD_DAMPING_LINEAR, hertzdamp_law_has_alpha_c, hertzdamp_law_alpha_c, hertzdamp_law_code, &
                          HD_OK, HD_NO_REBOUND, HD_END_OVERLAP, HD_METHOD_RK45, HD_METHOD_SERIES, HD_METHOD_PADE, &
                          HD_BAD_ALPHA, HD_BAD_STIFFNESS, HD_BAD_DAMPING, HD_BAD_VELOCITY, HD_BAD_MASS, &
-                         HD_OUT_OF_RANGE, HD_OUTSIDE_VALIDITY, HD_INACCURATE, HD_MAX_STEPS, hertzdamp_reduce
-    use hertzdamp, only: hertzdamp_safe_exp, hertzdamp_log_tstar
-    use hertzdamp, only: hertzdamp_rk45_options
+                         HD_OUT_OF_RANGE, HD_OUTSIDE_VALIDITY, HD_INACCURATE, HD_MAX_STEPS, hertzdamp_reduce, &
+                         hertzdamp_safe_exp, hertzdamp_log_tstar, hertzdamp_rk45_options
     use hertzdamp_cli, only: cli_args, cli_buffer, parse_args, parse_choice, parse_sweep, parse_range, fail, quit, &
                              required_sweep, check_combinations, EXIT_USAGE, EXIT_OK, EXIT_FAILURE, max_list_length
     use hertzdamp_cli_text, only: fmt_short, itoa

@@ -22,9 +22,8 @@
 !> To add a table: write its builder module and call it in measure, describe and figures
 !> below.
 module hertzdamp_cmd_bench
-    use hertzdamp, only: hertzdamp_law_choices
-    use hertzdamp, only: hertzdamp_rk, HD_DAMPING_LINEAR, HD_DAMPING_TSUJI, HD_DAMPING_KUWABARA_KONO, &
-                         hertzdamp_law_name
+    use hertzdamp, only: hertzdamp_law_choices, hertzdamp_rk, HD_DAMPING_LINEAR, HD_DAMPING_TSUJI, &
+                         HD_DAMPING_KUWABARA_KONO, hertzdamp_law_name
     use hertzdamp_bench_entry, only: entry_data, entry_result, tsuji_result, entry_contacts, entry_measure, &
                                      tsuji_measure
     use hertzdamp_bench_rows, only: bench_row, n_laws, ftoa

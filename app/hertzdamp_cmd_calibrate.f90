@@ -3,8 +3,9 @@
 !> with `--damping auto`, the damping law the data support.  Parsing, reading the
 !> CSV and printing only: the fit is hertzdamp_calibrate (packages/calibrate).
 module hertzdamp_cmd_calibrate
-    use hertzdamp, only: hertzdamp_rk, hertzdamp_end_name, HD_METHOD_FIT, HD_METHOD_RK45, HD_OK, HD_END_OVERLAP
-    use hertzdamp, only: hertzdamp_law_choices, hertzdamp_law_name, hertzdamp_law_q, hertzdamp_min_law, hertzdamp_max_law
+    use hertzdamp, only: hertzdamp_rk, hertzdamp_end_name, HD_METHOD_FIT, HD_METHOD_RK45, HD_OK, HD_END_OVERLAP, &
+                         hertzdamp_law_choices, hertzdamp_law_name, hertzdamp_law_q, hertzdamp_min_law, &
+                         hertzdamp_max_law
     use hertzdamp_calibrate, only: cal_data, cal_options, cal_result, cal_check, cal_fit, cal_auto, cal_model, &
                                    CAL_OK, CAL_BAD_DATA, CAL_NOT_IDENTIFIED, CAL_NO_CONVERGENCE
     use hertzdamp_calibrate_maps, only: cal_law_name, cal_law_q, cal_max_law, CAL_LAW_LINEAR, CAL_LAW_TSUJI

@@ -15,10 +15,8 @@ program test_entry_points
     use hertzdamp, only: hertzdamp_rk, hertzdamp_invert, hertzdamp_invert_options, hertzdamp_fit_inverse, &
                          hertzdamp_fit_inverse_n, hertzdamp_fit_forward, hertzdamp_fit_forward_n, &
                          hertzdamp_fit_alpha_c, HD_OK, HD_END_OVERLAP, HD_END_FORCE, HD_METHOD_FIT, HD_BAD_LAW, &
-                         HD_DAMPING_LINEAR, HD_DAMPING_KUWABARA_KONO, hertzdamp_law_name
-    use hertzdamp, only: hertzdamp_pair_t, hertzdamp_pair_init, hertzdamp_pair_kd
-    use hertzdamp, only: HD_HOST_NONE
-    use hertzdamp, only: HD_BAD_PAIR
+                         HD_DAMPING_LINEAR, HD_DAMPING_KUWABARA_KONO, hertzdamp_law_name, hertzdamp_pair_t, &
+                         hertzdamp_pair_init, hertzdamp_pair_kd, HD_HOST_NONE, HD_BAD_PAIR
     use hertzdamp_capi, only: hertzdamp_c_invert, hertzdamp_c_invert_n, hertzdamp_c_invert_bounded, &
                               hertzdamp_c_invert_law, hertzdamp_c_invert_law_n
     use hertzdamp_testing, only: test_suite, new_suite

@@ -6,8 +6,7 @@ program test_gsl_peer
     use hertzdamp, only: hertzdamp_rk
     use hertzdamp_testing, only: test_suite, new_suite
     use hertzdamp_gsl, only: hertzdamp_gsl_collide, gsl_sf_beta, HERTZDAMP_GSL_RKF45, HERTZDAMP_GSL_RK8PD
-    use hertzdamp, only: HD_OK, HD_NO_REBOUND, HD_BAD_ARGUMENT, HD_BAD_LAW
-    use hertzdamp, only: HD_END_OVERLAP, HD_END_FORCE
+    use hertzdamp, only: HD_OK, HD_NO_REBOUND, HD_BAD_ARGUMENT, HD_BAD_LAW, HD_END_OVERLAP, HD_END_FORCE
     use, intrinsic :: ieee_arithmetic, only: ieee_is_finite, ieee_is_nan
     implicit none
 

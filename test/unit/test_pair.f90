@@ -16,20 +16,15 @@
 !>   (h'/h_N)^p with h' and h_N computed here from their definitions, and the mean e the
 !>   host achieves with it (hertzdamp_host_mean) against the target.
 program test_pair
-    use hertzdamp, only: hertzdamp_rk, hertzdamp_max_host
-    use hertzdamp, only: HD_OK, HD_BAD_LAW, HD_BAD_END, HD_BAD_RESTITUTION, HD_BAD_TIME, HD_BAD_MASS, &
-                       HD_BAD_VELOCITY, HD_BAD_KPHYS, HD_BAD_PAIR, HD_BAD_HOST, HD_BAD_STEPS, &
-                       HD_HOST_UNREACHABLE, HD_BAD_ARGUMENT
-    use hertzdamp, only: HD_END_OVERLAP, HD_END_FORCE
-    use hertzdamp, only: HD_DAMPING_LINEAR, HD_DAMPING_TSUJI, HD_DAMPING_KUWABARA_KONO, hertzdamp_law_q, &
-                         hertzdamp_law_name
-    use hertzdamp, only: HD_METHOD_COMPACT, HD_METHOD_FIRST_ORDER
-    use hertzdamp, only: hertzdamp_fit_inverse
-    use hertzdamp, only: hertzdamp_invert_options
-    use hertzdamp, only: hertzdamp_pair_t, hertzdamp_pair_init, hertzdamp_pair_kd, hertzdamp_invert
-    use hertzdamp, only: HD_HOST_NONE, HD_HOST_LAMMPS, HD_HOST_MFIX_AB2, HD_HOST_VERLET, HD_HOST_LAMMPS_PHASE, &
-                         hertzdamp_host_stats, hertzdamp_host_solve, hertzdamp_host_min_steps, hertzdamp_host_name, &
-                         hertzdamp_host_mean
+    use hertzdamp, only: hertzdamp_rk, hertzdamp_max_host, HD_OK, HD_BAD_LAW, HD_BAD_END, HD_BAD_RESTITUTION, &
+                         HD_BAD_TIME, HD_BAD_MASS, HD_BAD_VELOCITY, HD_BAD_KPHYS, HD_BAD_PAIR, HD_BAD_HOST, &
+                         HD_BAD_STEPS, HD_HOST_UNREACHABLE, HD_BAD_ARGUMENT, HD_END_OVERLAP, HD_END_FORCE, &
+                         HD_DAMPING_LINEAR, HD_DAMPING_TSUJI, HD_DAMPING_KUWABARA_KONO, hertzdamp_law_q, &
+                         hertzdamp_law_name, HD_METHOD_COMPACT, HD_METHOD_FIRST_ORDER, hertzdamp_fit_inverse, &
+                         hertzdamp_invert_options, hertzdamp_pair_t, hertzdamp_pair_init, hertzdamp_pair_kd, &
+                         hertzdamp_invert, HD_HOST_NONE, HD_HOST_LAMMPS, HD_HOST_MFIX_AB2, HD_HOST_VERLET, &
+                         HD_HOST_LAMMPS_PHASE, hertzdamp_host_stats, hertzdamp_host_solve, hertzdamp_host_min_steps, &
+                         hertzdamp_host_name, hertzdamp_host_mean
     use hertzdamp_capi, only: hertzdamp_c_pair_init, hertzdamp_c_pair_kd, hertzdamp_c_invert_law, &
                               hertzdamp_c_pair_stats, hertzdamp_c_host_min_steps
     use hertzdamp_testing, only: test_suite, new_suite, rel_err

@@ -319,9 +319,9 @@ end module test_series_support
 program test_series
     use hertzdamp, only: hertzdamp_rk
     use hertzdamp_testing, only: test_suite, new_suite
-    use hertzdamp, only: hertzdamp_series_eval, hertzdamp_pade_eval, &
-                         hertzdamp_series_default_order, hertzdamp_series_max_order
-    use hertzdamp, only: HD_OK, HD_INACCURATE, HD_OUTSIDE_VALIDITY, HD_BAD_ORDER, hertzdamp_message
+    use hertzdamp, only: hertzdamp_series_eval, hertzdamp_pade_eval, hertzdamp_series_default_order, &
+                         hertzdamp_series_max_order, HD_OK, HD_INACCURATE, HD_OUTSIDE_VALIDITY, HD_BAD_ORDER, &
+                         hertzdamp_message
     use hertzdamp_series_data, only: series_e, series_e_err, series_tau_c, series_tau_c_err, &
                                      series_z_max, series_tau_max
     use test_series_support, only: tr_residual, beta_ln_e, beta_tce, sensitivity_tolerance, &

@@ -39,14 +39,9 @@
 !>
 !> Nothing is printed and nothing stops: a status (CAL_*) and a one-line message.
 module hertzdamp_calibrate
-    use hertzdamp, only: hertzdamp_rk
-    use hertzdamp, only: HD_OK, HD_OUTSIDE_VALIDITY
-    use hertzdamp, only: HD_END_OVERLAP, HD_END_FORCE
-    use hertzdamp, only: hertzdamp_fit_forward_deriv
-    use hertzdamp, only: HD_METHOD_FIT, HD_METHOD_RK45
-    use hertzdamp, only: hertzdamp_rk45_default_tol
-    use hertzdamp, only: hertzdamp_invert_alpha
-    use hertzdamp, only: hertzdamp_reduce
+    use hertzdamp, only: hertzdamp_rk, HD_OK, HD_OUTSIDE_VALIDITY, HD_END_OVERLAP, HD_END_FORCE, &
+                         hertzdamp_fit_forward_deriv, HD_METHOD_FIT, HD_METHOD_RK45, hertzdamp_rk45_default_tol, &
+                         hertzdamp_invert_alpha, hertzdamp_reduce
     use hertzdamp_calibrate_maps, only: cal_forward, cal_law_name, cal_law_q, cal_law_speed_exponent, &
                                         cal_law_supported, cal_max_law
     use hertzdamp_text_format, only: fmt_short

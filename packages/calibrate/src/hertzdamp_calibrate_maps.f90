@@ -20,17 +20,14 @@
 !>
 !> No module state, nothing printed: a status (HD_*) says what went wrong.
 module hertzdamp_calibrate_maps
-    use hertzdamp, only: hertzdamp_rk
-    use hertzdamp, only: HD_OK, HD_NO_REBOUND, HD_BAD_END, HD_BAD_ALPHA, HD_BAD_ARGUMENT, HD_OUTSIDE_VALIDITY
-    use hertzdamp, only: HD_END_OVERLAP, HD_END_FORCE
-    use hertzdamp, only: HD_METHOD_FIT, HD_METHOD_RK45, hertzdamp_forward_alpha
-    use hertzdamp, only: hertzdamp_collision, hertzdamp_rk45_default_tol
-    use hertzdamp, only: CAL_LAW_LINEAR => HD_DAMPING_LINEAR, CAL_LAW_TSUJI => HD_DAMPING_TSUJI, &
+    use hertzdamp, only: hertzdamp_rk, HD_OK, HD_NO_REBOUND, HD_BAD_END, HD_BAD_ALPHA, HD_BAD_ARGUMENT, &
+                         HD_OUTSIDE_VALIDITY, HD_END_OVERLAP, HD_END_FORCE, HD_METHOD_FIT, HD_METHOD_RK45, &
+                         hertzdamp_forward_alpha, hertzdamp_collision, hertzdamp_rk45_default_tol, &
+                         CAL_LAW_LINEAR => HD_DAMPING_LINEAR, CAL_LAW_TSUJI => HD_DAMPING_TSUJI, &
                          CAL_LAW_KUWABARA_KONO => HD_DAMPING_KUWABARA_KONO, cal_max_law => hertzdamp_max_law, &
                          cal_law_name => hertzdamp_law_name, cal_law_code => hertzdamp_law_code, &
                          cal_law_q => hertzdamp_law_q, cal_law_speed_exponent => hertzdamp_law_speed_exponent, &
-                         hertzdamp_law_status
-    use hertzdamp, only: hertzdamp_fit_forward_deriv
+                         hertzdamp_law_status, hertzdamp_fit_forward_deriv
     implicit none
     private
 

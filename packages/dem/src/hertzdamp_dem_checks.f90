@@ -36,8 +36,7 @@
 !>   approach 0 as the contacts sample the phase).  The energy row is information: the
 !>   host schemes are first order, or not symplectic (mfix-ab2).
 module hertzdamp_dem_checks
-    use hertzdamp, only: hertzdamp_rk
-    use hertzdamp, only: hertzdamp_tau_c0
+    use hertzdamp, only: hertzdamp_rk, hertzdamp_tau_c0
     use hertzdamp_dem_types, only: hertzdamp_dem_scene, hertzdamp_dem_result, hertzdamp_dem_u_floor
     use hertzdamp_dem_rules, only: hertzdamp_dem_targets
     use hertzdamp, only: HD_HOST_NONE, HD_HOST_VERLET

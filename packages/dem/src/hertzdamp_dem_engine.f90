@@ -83,15 +83,11 @@
 !> All procedures are pure, keep no state of their own, never print: failures come
 !> back as a status (hertzdamp_status codes) and a message.
 module hertzdamp_dem_engine
-    use hertzdamp, only: hertzdamp_rk
-    use hertzdamp, only: HD_OK, HD_OUT_OF_RANGE, HD_HOST_UNREACHABLE, hertzdamp_message
-    use hertzdamp, only: HD_END_FORCE
-    use hertzdamp, only: HD_HOST_NONE, HD_HOST_LAMMPS, HD_HOST_MFIX_EULER, HD_HOST_MFIX_AB2, HD_HOST_VERLET, &
-                         hertzdamp_host_name, hertzdamp_host_min_steps, hertzdamp_host_stats
-    use hertzdamp, only: hertzdamp_pair_t, hertzdamp_pair_init
-    use hertzdamp, only: hertzdamp_law_q
-    use hertzdamp, only: hertzdamp_sphere_mass, hertzdamp_effective_mass, hertzdamp_effective_radius, &
-                         hertzdamp_effective_modulus, hertzdamp_hertz_stiffness
+    use hertzdamp, only: hertzdamp_rk, HD_OK, HD_OUT_OF_RANGE, HD_HOST_UNREACHABLE, hertzdamp_message, HD_END_FORCE, &
+                         HD_HOST_NONE, HD_HOST_LAMMPS, HD_HOST_MFIX_EULER, HD_HOST_MFIX_AB2, HD_HOST_VERLET, &
+                         hertzdamp_host_name, hertzdamp_host_min_steps, hertzdamp_host_stats, hertzdamp_pair_t, &
+                         hertzdamp_pair_init, hertzdamp_law_q, hertzdamp_sphere_mass, hertzdamp_effective_mass, &
+                         hertzdamp_effective_radius, hertzdamp_effective_modulus, hertzdamp_hertz_stiffness
     use hertzdamp_dem_types, only: hertzdamp_dem_scene, hertzdamp_dem_contact, hertzdamp_dem_result, &
                                    hertzdamp_dem_pair_e, hertzdamp_dem_nsteps, hertzdamp_dem_trace_size, hertzdamp_dem_u_floor, &
                                    hertzdamp_dem_pairs_met, HD_CONTACT_ACTIVE, HD_CONTACT_RELEASED, HD_CONTACT_CLOSED

@@ -20,9 +20,8 @@
 !> such as /dev/zero fails after its first 1025 characters).  Nothing is printed:
 !> failures return HD_BAD_ARGUMENT and a one-line message.
 module hertzdamp_dem_io
-    use hertzdamp, only: hertzdamp_rk
-    use hertzdamp, only: HD_OK, HD_BAD_ARGUMENT
-    use hertzdamp, only: hertzdamp_law_code, hertzdamp_law_choices, hertzdamp_end_code, hertzdamp_end_choices
+    use hertzdamp, only: hertzdamp_rk, HD_OK, HD_BAD_ARGUMENT, hertzdamp_law_code, hertzdamp_law_choices, &
+                         hertzdamp_end_code, hertzdamp_end_choices
     use hertzdamp_text_format, only: lower, prose
     use hertzdamp_dem, only: hertzdamp_dem_scene, hertzdamp_dem_material, hertzdamp_dem_wall, &
                              hertzdamp_dem_max_particles

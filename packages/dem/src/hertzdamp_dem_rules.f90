@@ -1,14 +1,10 @@
 !> The contact rule of the DEM engine (k and d of one contact from the inverse) and
 !> the choice of the rule for a scene (`--method auto`).
 module hertzdamp_dem_rules
-    use hertzdamp, only: hertzdamp_rk
-    use hertzdamp, only: HD_OK, HD_NO_REBOUND
-    use hertzdamp, only: HD_DAMPING_LINEAR
-    use hertzdamp, only: hertzdamp_collision, hertzdamp_rk45_collide
-    use hertzdamp, only: HD_METHOD_SERIES, HD_METHOD_PADE, HD_METHOD_COMPACT, HD_METHOD_FIT, &
-                         HD_METHOD_ITERATIVE, HD_METHOD_FIRST_ORDER
-    use hertzdamp, only: hertzdamp_invert_alpha, hertzdamp_invert_options
-    use hertzdamp, only: hertzdamp_invert, hertzdamp_pair_t, hertzdamp_pair_kd
+    use hertzdamp, only: hertzdamp_rk, HD_OK, HD_NO_REBOUND, HD_DAMPING_LINEAR, hertzdamp_collision, &
+                         hertzdamp_rk45_collide, HD_METHOD_SERIES, HD_METHOD_PADE, HD_METHOD_COMPACT, HD_METHOD_FIT, &
+                         HD_METHOD_ITERATIVE, HD_METHOD_FIRST_ORDER, hertzdamp_invert_alpha, &
+                         hertzdamp_invert_options, hertzdamp_invert, hertzdamp_pair_t, hertzdamp_pair_kd
     use hertzdamp_dem_types, only: hertzdamp_dem_scene, hertzdamp_dem_pairs_met, hertzdamp_dem_pair_e
     implicit none
     private

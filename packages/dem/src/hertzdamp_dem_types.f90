@@ -4,12 +4,8 @@
 !> meet).  Masses, effective masses and radii, E* and k_phys come from the core
 !> (hertzdamp_materials).  No procedure here changes anything but its own result.
 module hertzdamp_dem_types
-    use hertzdamp, only: hertzdamp_rk
-    use hertzdamp, only: HD_OK
-    use hertzdamp, only: HD_END_OVERLAP
-    use hertzdamp, only: HD_DAMPING_LINEAR
-    use hertzdamp, only: HD_METHOD_FIT
-    use hertzdamp, only: HD_HOST_NONE, HD_HOST_VERLET
+    use hertzdamp, only: hertzdamp_rk, HD_OK, HD_END_OVERLAP, HD_DAMPING_LINEAR, HD_METHOD_FIT, HD_HOST_NONE, &
+                         HD_HOST_VERLET
     implicit none
     private
 

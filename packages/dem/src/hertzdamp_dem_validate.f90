@@ -18,19 +18,13 @@
 !> precision.  Magnitudes are compared through their logarithms, so the checks
 !> themselves never overflow.
 module hertzdamp_dem_validate
-    use hertzdamp, only: hertzdamp_rk
-    use hertzdamp, only: HD_OK, HD_BAD_ARGUMENT, hertzdamp_message
-    use hertzdamp, only: hertzdamp_end_name
-    use hertzdamp, only: HD_METHOD_FIT
-    use hertzdamp, only: hertzdamp_tau_c0, hertzdamp_pi
-    use hertzdamp, only: hertzdamp_invert_alpha
-    use hertzdamp, only: hertzdamp_law_status, hertzdamp_law_name
-    use hertzdamp, only: HD_HOST_NONE, hertzdamp_host_name, hertzdamp_host_in_engine, hertzdamp_host_choices, &
-                         hertzdamp_law_choices
+    use hertzdamp, only: hertzdamp_rk, HD_OK, HD_BAD_ARGUMENT, hertzdamp_message, hertzdamp_end_name, HD_METHOD_FIT, &
+                         hertzdamp_tau_c0, hertzdamp_pi, hertzdamp_invert_alpha, hertzdamp_law_status, &
+                         hertzdamp_law_name, HD_HOST_NONE, hertzdamp_host_name, hertzdamp_host_in_engine, &
+                         hertzdamp_host_choices, hertzdamp_law_choices
     use hertzdamp_text_format, only: prose
-    use hertzdamp, only: hertzdamp_fit_law_e_min
-    use hertzdamp, only: hertzdamp_sphere_mass, hertzdamp_effective_mass, hertzdamp_effective_radius, &
-                         hertzdamp_effective_modulus
+    use hertzdamp, only: hertzdamp_fit_law_e_min, hertzdamp_sphere_mass, hertzdamp_effective_mass, &
+                         hertzdamp_effective_radius, hertzdamp_effective_modulus
     use hertzdamp_dem_types, only: hertzdamp_dem_scene, hertzdamp_dem_material, hertzdamp_dem_max_particles, &
                                    hertzdamp_dem_max_steps, hertzdamp_dem_max_samples, hertzdamp_dem_max_trace_values, &
                                    hertzdamp_dem_big, hertzdamp_dem_u_floor, hertzdamp_dem_pair_e, hertzdamp_dem_pairs_met, &

@@ -30,9 +30,8 @@ module hertzdamp_gsl
         c_funptr, c_null_ptr, c_null_funptr, c_funloc, c_loc, c_f_pointer, c_associated
     use, intrinsic :: ieee_arithmetic, only: ieee_value, ieee_positive_inf, ieee_is_finite, &
         ieee_is_nan
-    use hertzdamp, only: hertzdamp_rk
-    use hertzdamp, only: HD_OK, HD_NO_REBOUND, HD_MAX_STEPS, HD_BAD_ARGUMENT, HD_NO_CONVERGENCE, HD_BAD_LAW
-    use hertzdamp, only: HD_END_OVERLAP, HD_END_FORCE
+    use hertzdamp, only: hertzdamp_rk, HD_OK, HD_NO_REBOUND, HD_MAX_STEPS, HD_BAD_ARGUMENT, HD_NO_CONVERGENCE, &
+                         HD_BAD_LAW, HD_END_OVERLAP, HD_END_FORCE
     use hertzdamp_gsl_c, only: gsl_success, gsl_ebadfunc, gsl_odeiv2_system, gsl_odeiv2_step_rkf45, &
         gsl_odeiv2_step_rk8pd, gsl_sf_gamma, gsl_sf_beta, gsl_set_error_handler_off, gsl_odeiv2_step_alloc, &
         gsl_odeiv2_step_reset, gsl_odeiv2_step_free, gsl_odeiv2_control_y_new, gsl_odeiv2_control_free, &

@@ -22,13 +22,10 @@
 module hertzdamp_gsl_secant
     use, intrinsic :: iso_c_binding, only: c_int, c_long, c_double, c_size_t, c_ptr, c_funptr, c_null_ptr, &
                                            c_null_funptr, c_funloc, c_loc, c_f_pointer, c_associated
-    use hertzdamp, only: hertzdamp_rk
-    use hertzdamp, only: HD_OK, HD_NO_REBOUND, HD_MAX_STEPS, HD_BAD_ARGUMENT, HD_BAD_END, HD_BAD_TOL, &
-                       HD_BAD_RESTITUTION, HD_NO_CONVERGENCE
-    use hertzdamp, only: HD_END_OVERLAP, HD_END_FORCE
-    use hertzdamp, only: hertzdamp_tau_c0, hertzdamp_e1
-    use hertzdamp, only: hertzdamp_secant, hertzdamp_secant_start, hertzdamp_secant_next
-    use hertzdamp, only: hertzdamp_fit_e_min_overlap, hertzdamp_fit_e_min_force
+    use hertzdamp, only: hertzdamp_rk, HD_OK, HD_NO_REBOUND, HD_MAX_STEPS, HD_BAD_ARGUMENT, HD_BAD_END, HD_BAD_TOL, &
+                         HD_BAD_RESTITUTION, HD_NO_CONVERGENCE, HD_END_OVERLAP, HD_END_FORCE, hertzdamp_tau_c0, &
+                         hertzdamp_e1, hertzdamp_secant, hertzdamp_secant_start, hertzdamp_secant_next, &
+                         hertzdamp_fit_e_min_overlap, hertzdamp_fit_e_min_force
     use hertzdamp_gsl_c, only: gsl_odeiv2_system, gsl_odeiv2_step_rk8pd, gsl_set_error_handler_off, &
         gsl_odeiv2_step_alloc, gsl_odeiv2_step_apply, gsl_odeiv2_step_free, gsl_odeiv2_control_y_new, &
         gsl_odeiv2_control_free, gsl_odeiv2_evolve_alloc, gsl_odeiv2_evolve_apply, gsl_odeiv2_evolve_free

@@ -956,7 +956,7 @@ contains
         real(wp), intent(out) :: tau_c                    !! contact duration (units of t*): t* = T_c / tau_c
         type(hertzdamp_host_stats), intent(out) :: stats  !! phase statistics at the solution
         integer, intent(out) :: status                    !! HD_OK or the failure
-        real(wp) :: a0, t0, x(2), xp(2)
+        real(wp) :: a0, t0, x(2)
         type(ctx_t) :: cx
         alpha = 0.0_wp
         tau_c = 0.0_wp
@@ -974,13 +974,8 @@ contains
             return
         end if
         cx = ctx_t(0.0_wp, 0.0_wp, law, iend, host)
-        call newton_solve(cx, e, steps, [a0, t0 / steps], max_means, x, stats, status)
-        if (status /= HD_OK) then
-            ! the bracketing solve on the proxy means, then Newton on the exact ones from there
-            call nested_solve(cx, e, steps, a0, t0 / steps, x, stats, status)
-            xp = x
-            if (status == HD_OK) call newton_solve(cx, e, steps, xp, polish_means, x, stats, status)
-        end if
+        call first_solves(cx, e, steps, a0, t0, x, stats, status)
+        if (status /= HD_OK) call continuation_solve(cx, e, steps, a0, t0, x, stats, status)
         if (status == HD_OK) then
             alpha = x(1)
             tau_c = steps * x(2)
@@ -988,6 +983,52 @@ contains
             stats = hertzdamp_host_stats()
         end if
     end subroutine hertzdamp_host_solve
+
+    !> The solve at steps from the continuous constants (a0, tau_c0 = t0): Newton on the
+    !> phase means, and where it does not converge the bracketing solve on the proxy means
+    !> polished by Newton on the exact ones.
+    pure subroutine first_solves(cx, e, steps, a0, t0, x, stats, status)
+        type(ctx_t), intent(in) :: cx
+        real(wp), intent(in) :: e, steps, a0, t0
+        real(wp), intent(out) :: x(2)
+        type(hertzdamp_host_stats), intent(out) :: stats
+        integer, intent(out) :: status
+        real(wp) :: xp(2)
+        call newton_solve(cx, e, steps, [a0, t0 / steps], max_means, x, stats, status)
+        if (status == HD_OK) return
+        call nested_solve(cx, e, steps, a0, t0 / steps, x, stats, status)
+        xp = x
+        if (status == HD_OK) call newton_solve(cx, e, steps, xp, polish_means, x, stats, status)
+    end subroutine first_solves
+
+    !> Continuation in N where first_solves fails at steps: near a scheme's limit the phase
+    !> means are steep (mfix-ab2, force end, e = 0.0053: tau_mean / (N h) runs from 3 to 0.4
+    !> over 1e-4 of h), and a start from the continuous constants can miss a solution that
+    !> exists.  The solution moves little from one N to the next, so Newton at steps starts
+    !> from the solution that first_solves finds at steps + 1 or steps - 1 (within the valid
+    !> N), with a budget of polish_means phase statistics.  HD_HOST_UNREACHABLE when neither
+    !> leads to a solution.
+    pure subroutine continuation_solve(cx, e, steps, a0, t0, x, stats, status)
+        type(ctx_t), intent(in) :: cx
+        real(wp), intent(in) :: e, steps, a0, t0
+        real(wp), intent(out) :: x(2)
+        type(hertzdamp_host_stats), intent(out) :: stats
+        integer, intent(out) :: status
+        integer, parameter :: shifts(2) = [1, -1]
+        real(wp) :: sn, xn(2)
+        integer :: i
+        status = HD_HOST_UNREACHABLE
+        x = 0.0_wp
+        do i = 1, size(shifts)
+            sn = steps + real(shifts(i), wp)
+            if (sn < hertzdamp_host_steps_min .or. sn > hertzdamp_host_steps_max) cycle
+            call first_solves(cx, e, sn, a0, t0, xn, stats, status)
+            if (status /= HD_OK) cycle
+            call newton_solve(cx, e, steps, xn, polish_means, x, stats, status)
+            if (status == HD_OK) return
+        end do
+        status = HD_HOST_UNREACHABLE
+    end subroutine continuation_solve
 
     !> The residual of the per-pair solve at x = (alpha, h): (e_mean - e, tau_mean / (N h) - 1)
     !> and the statistics there; sv /= HD_OK where the phase statistics fail.
@@ -1496,19 +1537,25 @@ contains
                 lo = mid
             end if
         end do
-        ! confirmed by the solve itself: up until it succeeds at N .. N + min_steps_window,
-        ! then down while N - 1 succeeds
+        ! confirmed by the solve itself: the first N from the candidate up at which it
+        ! succeeds (galloping, then bisection: a proxy candidate can lie far below), and
+        ! again until it succeeds at N .. N + min_steps_window; then down while N - 1 succeeds
         n = hi
         k = 0
         do while (k <= min_steps_window)
+            if (k == 0) then
+                call first_success(n, st)
+                if (st /= HD_OK) then
+                    status = HD_HOST_UNREACHABLE
+                    return
+                end if
+                k = 1
+                cycle
+            end if
             call try(n + k, .false., st)
             if (st == HD_OK) then
                 k = k + 1
             else
-                if (n + k >= n_search_max) then
-                    status = HD_HOST_UNREACHABLE
-                    return
-                end if
                 n = n + k + 1
                 k = 0
             end if
@@ -1521,6 +1568,45 @@ contains
         n_min = n
         status = HD_OK
     contains
+        !> The least whole nn >= nn on entry at which the solve succeeds, if the solve fails
+        !> at the one before (galloping up by 1, 2, 4, .. from nn, then bisection between the
+        !> last failure and the first success); st = HD_HOST_UNREACHABLE beyond n_search_max.
+        pure subroutine first_success(nn, st)
+            integer, intent(inout) :: nn
+            integer, intent(out) :: st
+            integer :: bad, good, stride, m
+            if (nn > n_search_max) then
+                st = HD_HOST_UNREACHABLE
+                return
+            end if
+            call try(nn, .false., st)
+            if (st == HD_OK) return
+            bad = nn
+            stride = 1
+            do
+                if (bad >= n_search_max) then
+                    st = HD_HOST_UNREACHABLE
+                    return
+                end if
+                good = min(bad + stride, n_search_max)
+                call try(good, .false., st)
+                if (st == HD_OK) exit
+                bad = good
+                stride = 2 * stride
+            end do
+            do while (good - bad > 1)
+                m = (bad + good) / 2
+                call try(m, .false., st)
+                if (st == HD_OK) then
+                    good = m
+                else
+                    bad = m
+                end if
+            end do
+            nn = good
+            st = HD_OK
+        end subroutine first_success
+
         !> The solve at nn (proxy: the bracketing solve on the proxy means only).
         pure subroutine try(nn, proxy, st)
             integer, intent(in) :: nn

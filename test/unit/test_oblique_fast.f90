@@ -186,7 +186,9 @@ contains
     end subroutine full_solve
 
     !> On a wall the correction is the normal rule itself: e' = e, and the constants are
-    !> hertzdamp_invert's bits at e (with friction too).
+    !> hertzdamp_invert's bits at e (with friction too).  The former correction (commit
+    !> 39d5a6b) fails this from 35 deg (mindlin, mu 0.3, x_gammat 0.5): it solved the
+    !> oblique contact, and the reference integrator returns HD_STEP_UNDERFLOW there.
     subroutine wall_exact()
         type(hertzdamp_oblique_t) :: c
         real(wp) :: k, d, kt, et, k0, d0, kt0, un

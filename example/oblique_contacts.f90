@@ -77,11 +77,11 @@ program oblique_contacts
         end do
         call system_clock(c1)
         t(3, rep) = real(c1 - c0, wp) / rate / 20.0_wp
-        t(4, rep) = correct_time(c, 90, .false.)
-        t(5, rep) = correct_time(cf, 90, .false.)
+        t(4, rep) = correct_time(c, 900, .false.)
+        t(5, rep) = correct_time(cf, 900, .false.)
         t(6, rep) = correct_time(cw, 90000, .false.)
-        t(7, rep) = correct_time(c, 18, .true.)
-        t(8, rep) = correct_time(cf, 18, .true.)
+        t(7, rep) = correct_time(c, 180, .true.)
+        t(8, rep) = correct_time(cf, 180, .true.)
     end do
     print '(a)', 'per contact (median of 7)                          time       / bare k, d'
     print '(a, es10.3, a, f10.2)', 'hertzdamp_invert (bare k, d)                  ', median(t(1, :)), ' s', 1.0_wp

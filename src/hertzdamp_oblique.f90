@@ -735,9 +735,9 @@ contains
         d = 0.0_wp
     end subroutine zero4
 
-    !> The frictionless shift e_n - e' of two spheres at the rule's target e' (a fit to
-    !> hertzdamp_oblique_impact at lambda = v_t^2 T_c / (u_n (R1 + R2)) up to 0.6, e' 0.1-0.99,
-    !> within about 10%; only its shape in e' is used, by map_start).
+    !> The frictionless shift e_n - e' of two spheres at the rule's target e' (a rough fit to
+    !> hertzdamp_oblique_impact at lambda = v_t^2 T_c / (u_n (R1 + R2)) up to 0.6, e' 0.1-0.99;
+    !> only its shape in e' is used, by map_start).
     pure real(wp) function map_shift(x, lam) result(g)
         real(wp), intent(in) :: x, lam
         real(wp) :: w

@@ -792,8 +792,8 @@ contains
     !> `int hertzdamp_c_oblique_correct(double m1, double r1, double m2, double r2,
     !> double k_phys, int law, int end, int tangential, double kt_phys, double xgammat,
     !> double mu, int lever, double e, double tc, double speed, double angle, double out[4])`:
-    !> the oblique normal correction of one contact (hertzdamp_oblique_correct): out = k, d,
-    !> k_t of the corrected target and that target e'; 0 on failure.
+    !> the oblique normal correction of one contact (hertzdamp_oblique_correct, its fast
+    !> default): out = k, d, k_t of the corrected target and that target e'; 0 on failure.
     integer(c_int) function hertzdamp_c_oblique_correct(m1, r1, m2, r2, k_phys, law, iend, tangential, kt_phys, &
                                                         xgammat, mu, lever, e, tc, speed, angle, out) &
             bind(c, name='hertzdamp_c_oblique_correct') result(status)

@@ -49,7 +49,7 @@ def test_stretch_identity_and_gross_sliding():
 def test_two_sphere_correction():
     c = hertzdamp.oblique_correct(M, R, M, R, KPHYS * math.sqrt(0.5), KT, 0.0, 0.5, 2e-5, 5.0, [30.0, 75.0])
     r = hertzdamp.oblique_impact(M, R, M, R, c["k"], c["d"], c["kt"], 0.0, 5.0, [30.0, 75.0], lever="contact")
-    assert np.max(np.abs(r["e_n"] - 0.5)) < 1e-9
+    assert np.max(np.abs(r["e_n"] - 0.5)) < 2e-5   # the fast correction (doc/oblique.md section 4)
     assert np.all(c["e_target"] < 0.5)
 
 

@@ -64,7 +64,7 @@ import csv, sys
 r = list(csv.DictReader(open(sys.argv[1])))
 u = list(csv.DictReader(open(sys.argv[2])))
 assert len(r) == 6 and all(x["status"] == "ok" for x in r)
-assert all(abs(float(x["e_n"]) - 0.5) < 1e-9 for x in r)
+assert all(abs(float(x["e_n"]) - 0.5) < 2e-5 for x in r)   # the fast correction: doc/oblique.md section 4
 assert max(abs(float(x["e_n"]) - 0.5) for x in u) > 0.02
 for x, y in zip(r[1:], u[1:]):
     assert (float(x["e_target"]) - 0.5) * (float(y["e_n"]) - 0.5) < 0, (x["e_target"], y["e_n"])

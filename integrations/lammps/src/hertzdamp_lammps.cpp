@@ -474,6 +474,7 @@ void ContactBook::reset()
 {
   n_onset = n_bounded = n_end = n_iso = e_sum = e_sumsq = carried = 0;
   n_headon = e_headon = n_stockwall = 0;
+  n_corrected = n_uncorrected = 0;
   ehist.assign(ENBIN, 0.0);
   umin = kmin = dmin = emin = 1e300;
   umax = kmax = dmax = emax = -1e300;
@@ -690,6 +691,13 @@ void ContactBook::summary(LAMMPS *lmp, const char *who)
     s += " (" + fmt_g(v[16]) + " contacts left out: other contacts at the same time (" + fmt_g(v[20]) +
          " of them with a stock wall), or impact speed below vmin)";
   }
+  // the oblique normal correction: contacts it corrected, and those where the library's
+  // solve failed (they keep the uncorrected constants)
+  double nc[2] = {n_corrected, n_uncorrected}, ncall[2];
+  MPI_Allreduce(nc, ncall, 2, MPI_DOUBLE, MPI_SUM, lmp->world);
+  if (ncall[0] + ncall[1] > 0)
+    s += "; oblique normal correction: " + fmt_g(ncall[0]) + " contacts corrected, " + fmt_g(ncall[1]) +
+         " not (the library's solve failed: uncorrected constants)";
   logmesg(lmp, s + "\n");
 }
 

@@ -353,6 +353,8 @@ class ContactBook {
     lo_hi(umin, umax, u_raw);
     lo_hi(kmin, kmax, o.k);
     lo_hi(dmin, dmax, o.d);
+    if (o.corrected > 0) n_corrected += 1;
+    if (o.corrected < 0) n_uncorrected += 1;
   }
   // A finished contact: p = payload, tag_a/tag_b identify it, tend_steps = end time.
   void finish(const double *p, double tag_a, double tag_b, double tend_steps, double u_out,
@@ -378,6 +380,7 @@ class ContactBook {
   }
   double n_onset = 0, n_bounded = 0, n_end = 0, n_iso = 0, e_sum = 0, e_sumsq = 0;
   double n_headon = 0, e_headon = 0, n_stockwall = 0;
+  double n_corrected = 0, n_uncorrected = 0;    // oblique normal correction: applied, failed
   std::vector<double> ehist;    // isolated collisions' e, ENBIN bins
 
  public:

@@ -419,11 +419,13 @@ Onset contact_rule(LAMMPS *lmp, const RuleSettings &rs, const PairConstants &pc,
                  (rs.phase_exact() ? ", onset phase " + fmt_g(o.phi) : std::string()) +
                  "): " + hertzdamp_c_strerror(st));
   if (ob && cn && rs.normal_correction && ob->vt > 0.0) {
-    // the oblique normal correction: lambda = v_t^2 T_c / (u_n (R_1 + R_2)); below 1e-8
-    // its shift (about 0.4 lambda) is negligible, above 1 (grazing, resting contacts)
-    // the binary-collision model does not describe the contact
+    // the oblique normal correction: lambda = v_t^2 T_c / (u_n (R_1 + R_2)); the shift it
+    // corrects is c lambda with c below 0.4 (about 0.4 (1 - e), doc/oblique.md): below
+    // LAMBDA_MIN it is under 1e-4 and not solved for (the solve costs about 0.2 ms); above
+    // 1 (grazing, resting contacts) the binary-collision model does not describe the contact
+    constexpr double LAMBDA_MIN = 2.5e-4;
     const double lambda = ob->vt * ob->vt * tc / (o.u_used * (ob->r1 + ob->r2));
-    if (lambda > 1e-8 && lambda <= 1.0) {
+    if (lambda > LAMBDA_MIN && lambda <= 1.0) {
       const double speed = std::sqrt(o.u_used * o.u_used + ob->vt * ob->vt);
       const double angle = std::atan2(ob->vt, o.u_used) * 57.295779513082321;
       // the library's model scales k_t with its k: give it the k_t that yields, at the

@@ -418,7 +418,8 @@ Onset contact_rule(LAMMPS *lmp, const RuleSettings &rs, const PairConstants &pc,
                  fmt_g(tc) + ", m " + fmt_g(m) + ", u " + fmt_g(o.u_used) +
                  (rs.phase_exact() ? ", onset phase " + fmt_g(o.phi) : std::string()) +
                  "): " + hertzdamp_c_strerror(st));
-  if (ob && cn && rs.normal_correction && ob->vt > 0.0) {
+  // (not for a contact whose approach speed was raised to vmin: no free binary collision)
+  if (ob && cn && rs.normal_correction && ob->vt > 0.0 && o.u_used == u_raw) {
     // the oblique normal correction: lambda = v_t^2 T_c / (u_n (R_1 + R_2)); the shift it
     // corrects is c lambda with c below 0.4 (about 0.4 (1 - e), doc/oblique.md): below
     // LAMBDA_MIN it is under 1e-4 and not solved for (the solve costs about 0.2 ms); above

@@ -33,6 +33,28 @@ namespace HertzdampLammps {
 
 namespace {
 const char *CMD = "pair_style granular/hertzdamp";
+
+// What the oblique normal correction needs of a pair contact at its onset: the two spheres,
+// the friction model (frictionless: mindlin with mu 0) and the centres' relative tangential
+// speed (del = x_i - x_j, rinv = 1/|del|, approach = -(v_i - v_j) . del/|del|).
+ObliqueOnset oblique_onset(const FrictionModel &fo, double kt_phys, double mi, double ri, double mj, double rj,
+                           const double *vi, const double *vj, const double *del, double rinv, double approach)
+{
+  ObliqueOnset ob;
+  ob.m1 = mi, ob.r1 = ri, ob.m2 = mj, ob.r2 = rj;
+  double tt = 0.0;
+  for (int k = 0; k < 3; k++) {
+    const double t = vi[k] - vj[k] + approach * del[k] * rinv;    // w - (w . n) n
+    tt += t * t;
+  }
+  ob.vt = std::sqrt(tt);
+  ob.tangential = fo.tangential == TANG_LINEAR_HISTORY ? HERTZDAMP_TANGENTIAL_LINEAR_HISTORY
+                                                       : HERTZDAMP_TANGENTIAL_MINDLIN;
+  ob.kt_phys = fo.any() ? kt_phys : 1.0;
+  ob.xgammat = fo.any() ? fo.xt : 0.0;
+  ob.mu = fo.any() ? fo.mut : 0.0;
+  return ob;
+}
 const char *COEFF = "pair_coeff granular/hertzdamp";
 }    // namespace
 
@@ -409,21 +431,8 @@ void PairGranularHertzdamp::compute(int eflag, int vflag)
         if (estar_ij[ti][tj] > 0.0) kphys = 4.0 / 3.0 * estar_ij[ti][tj] * sqrt(radi * radius[j] / radsum);
         const FrictionModel &fo = fm[ti * nt + tj];
         const double kt_phys = fo.kt < 0.0 ? 8.0 * gstar_ij[ti][tj] : fo.kt;
-        // the oblique normal correction: the two spheres, the friction model and the
-        // centres' relative tangential speed at the onset
-        ObliqueOnset ob;
-        ob.m1 = mi, ob.r1 = radi, ob.m2 = mj, ob.r2 = radius[j];
-        {
-          const double w0 = v[i][0] - v[j][0], w1 = v[i][1] - v[j][1], w2 = v[i][2] - v[j][2];
-          const double wn = -approach;    // (v_i - v_j) . n, n = del / r
-          const double t0 = w0 - wn * delx * rinv, t1 = w1 - wn * dely * rinv, t2 = w2 - wn * delz * rinv;
-          ob.vt = sqrt(t0 * t0 + t1 * t1 + t2 * t2);
-        }
-        ob.tangential = fo.tangential == TANG_LINEAR_HISTORY ? HERTZDAMP_TANGENTIAL_LINEAR_HISTORY
-                                                             : HERTZDAMP_TANGENTIAL_MINDLIN;
-        ob.kt_phys = fo.any() ? kt_phys : 1.0;
-        ob.xgammat = fo.any() ? fo.xt : 0.0;
-        ob.mu = fo.any() ? fo.mut : 0.0;
+        const double del[3] = {delx, dely, delz};
+        const ObliqueOnset ob = oblique_onset(fo, kt_phys, mi, radi, mj, radius[j], v[i], v[j], del, rinv, approach);
         CorrectionNodes &cn = cns[(ti < tj ? ti : tj) * nt + (ti < tj ? tj : ti)];
         const Onset o = contact_rule(lmp, rule, pcs[ti * nt + tj], kphys, m, approach, dt, ov, &ob, &cn);
         c = new_contact();

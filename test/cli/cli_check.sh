@@ -267,6 +267,48 @@ bad '--radius' check yade young=1e7 poisson=0.3 en=0.5 $M --radius 2e-3
 bad '--table' check --table lammps
 }
 
+# --- a softened normal contact that keeps a physical tangential stiffness (issue 33): stock
+# pair_style granular with mindlin kt far above what any material gives for its kn (8 G* =
+# 1 to 2 times (4/3) E*), and the hertzdamp plugin with tangential_stiffness physical
+run check lammps "hertz 1e7 0.01 tangential mindlin 5.77e10 0.5 0.3 damping velocity" --radius 1e-3 \
+  --density 2500 --velocity 1 --e 0.5
+check "lammps: softened kn 1e7 with the physical mindlin kt 5.77e10: warning with the ratio 5770" \
+  grep -q '^# note.*warning: tangential mindlin kt = 5.77e10 is 5770 times the normal kn = 1e7' "$OUT"
+for d in "hertz 1e7 0.01 tangential mindlin 1.3e7 0.5 0.3 damping velocity" \
+         "hertz/material 1e8 0.01 0.3 tangential mindlin NULL 0.5 0.3 damping velocity" \
+         "hertz 1e7 0.01 tangential linear_nohistory 0 0.5 damping velocity"; do
+  run check lammps "$d" --radius 1e-3 --density 2500 --velocity 1 --e 0.5
+  check "lammps '$d': exit 0, no tangential warning (kt in the materials' range, NULL, or no mindlin)" \
+    test "$RC" -eq 0 -a "$(grep -c 'tangential mindlin kt' "$OUT")" -eq 0
+done
+plugin_deck() {  # the pair style's and the wall fix's extra keywords
+  cat >"$TMP/plugin.in" <<EOF2
+units si
+atom_style sphere
+region b block 0 0.01 0 0.01 0 0.01
+create_box 1 b
+create_atoms 1 single 0.005 0.005 0.005
+set type 1 diameter 0.002
+set type 1 density 2500
+pair_style granular/hertzdamp steps 20 $1
+pair_coeff * * e 0.5 youngs 63e9 poisson 0.24 tangential mindlin NULL 0.5 0.3
+fix w all hertzdamp/wall steps 20 e 0.5 $2 youngs 63e9 poisson 0.24 tangential mindlin NULL 0.5 0.3 zplane 0 NULL
+EOF2
+}
+plugin_deck "tangential_stiffness physical" ""
+run check lammps "$TMP/plugin.in" --velocity 1
+check "plugin deck, pair_style tangential_stiffness physical: the warning names the pair style" \
+  grep -q 'plugin.in:9: warning: pair_style granular/hertzdamp (the hertzdamp LAMMPS plugin) softens the normal contact and keeps the physical tangential stiffness' "$ERR"
+plugin_deck "" "tangential_stiffness physical"
+sed -i 's/^pair_style.*/pair_style granular/; s/^pair_coeff.*/pair_coeff * * hertz 1e7 0.01 damping velocity tangential linear_nohistory 0 0.3/' "$TMP/plugin.in"
+run check lammps "$TMP/plugin.in" --velocity 1 --e 0.5
+check "plugin deck, fix hertzdamp/wall tangential_stiffness physical: the warning names the wall fix" \
+  grep -q 'plugin.in:10: warning: fix hertzdamp/wall (the hertzdamp LAMMPS plugin) softens' "$OUT"
+plugin_deck "" ""
+run check lammps "$TMP/plugin.in" --velocity 1
+check "plugin deck with the default tangential_stiffness adapted: no warning" \
+  test "$(grep -c 'tangential stiffness' "$OUT" "$ERR" | awk -F: '{s += $2} END {print s}')" -eq 0
+
 # --- options through the shared parser and contact options (as invert, forward, timestep)
 M1="--density 2500 --velocity 1"
 # shellcheck disable=SC2086

@@ -180,7 +180,7 @@ void FixHertzdampWall::contact(int i, int side, double ov, int setup)
         s[0] = 0.0;
       return;
     }
-    const ContactEnd ce = payload_end(p, ov, -approach, step, force_end, rule.phase);
+    const ContactEnd ce = payload_end(p, ov, -approach, step, force_end, rule.phase_force());
     const double fc = ce.f_end;
     book.finish(p, static_cast<double>(atom->tag[i]), side == 0 ? -1.0 : -2.0, ce.tend,
                 -approach + fc * dt / p[P_M], dt);
@@ -198,9 +198,11 @@ void FixHertzdampWall::contact(int i, int side, double ov, int setup)
     // onset: first step with overlap > 0 for an atom without wall history
     const double m = rmass[i];
     const double kphys = estar > 0.0 ? 4.0 / 3.0 * estar * sqrt(radius[i]) : 0.0;
-    const Onset o = contact_rule(lmp, rule, pc, kphys, m, approach, dt);
+    // a wall's normal does not turn: no oblique normal correction
+    const Onset o = contact_rule(lmp, rule, pc, kphys, m, approach, dt, ov);
     s[0] = static_cast<double>(ACTIVE);
-    f_phase = payload_onset(p, o, approach, m, ov, step, dt, rule.phase);
+    f_phase = payload_onset(p, o, approach, m, ov, step, dt, rule.phase_force());
+    p[P_KT] = fm.any() ? contact_kt(rule, fm.tangential, fm.kt < 0.0 ? 8.0 * gstar : fm.kt, o.k, kphys) : 0.0;
     // the wall's normal is the same at the touch point: the impact angle from |v|
     p[P_VTOUCH] = std::sqrt(v[i][0] * v[i][0] + v[i][1] * v[i][1] + v[i][2] * v[i][2]);
     book.onset(o, approach);
@@ -239,7 +241,7 @@ void FixHertzdampWall::contact(int i, int side, double ov, int setup)
     cs.damp_n = p[P_D];
     cs.dt = dt;
     cs.history_update = setup ? 0 : 1;
-    friction_forces(fm, fm.kt < 0.0 ? 8.0 * gstar : fm.kt, cs, p + P_HIST, fs, fr, p[P_MT]);
+    friction_forces(fm, p[P_KT], cs, p + P_HIST, fs, fr, p[P_MT]);
   }
   for (int k = 0; k < 3; k++) f[i][k] += fn * n[k] + fs[k];
   const double tor[3] = {n[1] * fs[2] - n[2] * fs[1], n[2] * fs[0] - n[0] * fs[2], n[0] * fs[1] - n[1] * fs[0]};

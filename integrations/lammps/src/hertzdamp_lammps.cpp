@@ -1,6 +1,8 @@
 /* hertzdamp LAMMPS plugin: rule settings, the per-contact rule, statistics and log. */
 #include "hertzdamp_lammps.h"
 
+#include "contact_models.h"
+
 #include "comm.h"
 #include "error.h"
 #include "universe.h"
@@ -127,11 +129,35 @@ int RuleSettings::parse(LAMMPS *lmp, const char *cmd, int narg, char **arg, int 
     need(1);
     const std::string v = arg[iarg + 1];
     if (v == "yes")
-      phase = 1;
+      phase = PHASE_YES;
     else if (v == "no")
-      phase = 0;
+      phase = PHASE_NO;
+    else if (v == "exact")
+      phase = PHASE_EXACT;
     else
-      fail_all(lmp, __FILE__, __LINE__, std::string(cmd) + ": phase must be yes or no");
+      fail_all(lmp, __FILE__, __LINE__, std::string(cmd) + ": phase must be yes, no or exact");
+    return 2;
+  }
+  if (key == "tangential_stiffness") {
+    need(1);
+    const std::string v = arg[iarg + 1];
+    if (v == "adapted")
+      kt_adapted = 1;
+    else if (v == "physical")
+      kt_adapted = 0;
+    else
+      fail_all(lmp, __FILE__, __LINE__, std::string(cmd) + ": tangential_stiffness must be adapted or physical");
+    return 2;
+  }
+  if (key == "normal_correction") {
+    need(1);
+    const std::string v = arg[iarg + 1];
+    if (v == "yes")
+      normal_correction = 1;
+    else if (v == "no")
+      normal_correction = 0;
+    else
+      fail_all(lmp, __FILE__, __LINE__, std::string(cmd) + ": normal_correction must be yes or no");
     return 2;
   }
   if (key == "host") {
@@ -158,6 +184,9 @@ void RuleSettings::check(LAMMPS *lmp, const char *cmd) const
 {
   if (ntimes == 0)
     fail_all(lmp, __FILE__, __LINE__, std::string(cmd) + ": one of steps N, tc T or fixed K D is required");
+  if (phase == PHASE_EXACT && host == HOST_NONE_MODE)
+    fail_all(lmp, __FILE__, __LINE__,
+             std::string(cmd) + ": phase exact makes each contact exact in LAMMPS's integrator: it needs host lammps");
 }
 
 std::string RuleSettings::describe() const
@@ -171,8 +200,13 @@ std::string RuleSettings::describe() const
     s = "fixed k " + fmt_g(kfix) + " d " + fmt_g(dfix) + " (no rule)";
   s += std::string(", end ") + (end == HERTZDAMP_END_FORCE ? "force" : "overlap");
   s += ", vmin " + fmt_g(vmin);
-  s += std::string(", phase correction ") + (phase ? "yes" : "no");
-  if (tcmode != TC_FIXED) s += std::string(", constants for host ") + scheme_name(pair_scheme());
+  s += std::string(", phase ") + (phase == PHASE_YES ? "yes (onset/release force correction)"
+                                  : phase == PHASE_EXACT ? "exact (per-contact constants from the onset phase)" : "no");
+  if (tcmode != TC_FIXED) {
+    s += std::string(", constants for host ") + scheme_name(pair_scheme());
+    s += std::string(", tangential_stiffness ") + (kt_adapted ? "adapted" : "physical");
+    s += std::string(", normal_correction ") + (normal_correction ? "yes" : "no");
+  }
   return s;
 }
 
@@ -203,23 +237,30 @@ bool pair_constants(LAMMPS *lmp, const RuleSettings &rs, double e, double dt, co
   if (rs.tcmode == TC_FIXED) return false;
   const double n = rs.steps_per_contact(dt);
   const int scheme = rs.pair_scheme();
-  if (pc.valid && pc.e == e && pc.steps == n && pc.end == rs.end && pc.scheme == scheme) return false;
+  const int table = rs.phase_exact() ? 1 : 0;
+  if (pc.valid && pc.e == e && pc.steps == n && pc.end == rs.end && pc.scheme == scheme && pc.table == table)
+    return false;
   pc.valid = false;
   const std::string key = rs.tcmode == TC_STEPS
       ? "steps " + fmt_short(n)
       : "tc " + fmt_g(rs.tc) + " (" + fmt_short(n) + " time steps of " + fmt_g(dt) + ")";
   // below the fewest N of LAMMPS's scheme no constants reach e; with host none the
   // continuous constants would run anyway, so the same bound applies to them
-  int st = hertzdamp_c_pair_init(e, HERTZDAMP_DAMPING_LINEAR, rs.end, scheme, n, &pc.pair);
-  bool too_few = st == HERTZDAMP_HOST_UNREACHABLE || (st == HERTZDAMP_BAD_STEPS && n < 2.0);
+  // phase exact: every onset phase must be reachable (hertzdamp_c_phase_min_steps)
+  int st = table ? hertzdamp_c_pair_init_phase(e, HERTZDAMP_DAMPING_LINEAR, rs.end, scheme, n, &pc.pair)
+                 : hertzdamp_c_pair_init(e, HERTZDAMP_DAMPING_LINEAR, rs.end, scheme, n, &pc.pair);
+  bool too_few = st == HERTZDAMP_HOST_UNREACHABLE || st == HERTZDAMP_PHASE_UNREACHABLE ||
+      (st == HERTZDAMP_BAD_STEPS && n < 2.0);
   int nmin = 0;
   const int st_min = (too_few || (st == HERTZDAMP_OK && scheme == HERTZDAMP_HOST_NONE))
-      ? hertzdamp_c_host_min_steps(e, HERTZDAMP_DAMPING_LINEAR, rs.end, rs.run_scheme(), &nmin)
+      ? (table ? hertzdamp_c_phase_min_steps(e, HERTZDAMP_DAMPING_LINEAR, rs.end, scheme, &nmin)
+               : hertzdamp_c_host_min_steps(e, HERTZDAMP_DAMPING_LINEAR, rs.end, rs.run_scheme(), &nmin))
       : HERTZDAMP_OK;
   if (st_min == HERTZDAMP_OK && nmin > 0 && n < nmin) too_few = true;
   if (too_few) {
     std::string msg = who + ": " + key + ": N = " + fmt_short(n) + " steps cannot reach e = " + fmt_short(e) +
-        " with " + scheme_name(rs.run_scheme());
+        " with " + scheme_name(rs.run_scheme()) + (table ? " at every onset phase (phase exact): " +
+        std::string(hertzdamp_c_strerror(st == HERTZDAMP_OK ? HERTZDAMP_PHASE_UNREACHABLE : st)) : "");
     msg += st_min == HERTZDAMP_OK ? "; N >= " + std::to_string(nmin) + " can"
                                   : std::string(" (") + hertzdamp_c_strerror(st_min) + ")";
     fail_all(lmp, __FILE__, __LINE__, msg);
@@ -232,6 +273,14 @@ bool pair_constants(LAMMPS *lmp, const RuleSettings &rs, double e, double dt, co
   // what LAMMPS achieves with them (zero when the library cannot tell, e.g. N > 1e5)
   if (hertzdamp_c_pair_stats(&pc.pair, rs.run_scheme(), pc.stats) != HERTZDAMP_OK)
     for (double &x : pc.stats) x = 0.0;
+  if (table && pc.stats[0] > 0.0) {
+    // phase exact: each contact has its own constants, whose e and T_c the library's init
+    // checked within 1e-4 at every phase (doc/host-schemes.md section 6): the statistics are
+    // those of the targets (the mean-exact constants' stats above are not what runs)
+    const double st8[8] = {e, 0.0, e, e, 1.0, 0.0, 1.0, 1.0};
+    for (int k = 0; k < 8; k++) pc.stats[k] = st8[k];
+  }
+  pc.table = table;
   pc.e = e;
   pc.steps = n;
   pc.end = rs.end;
@@ -263,6 +312,9 @@ std::string describe_constants(const RuleSettings &rs, const PairConstants &pc)
   const double *s = pc.stats;
   std::string t = "e " + fmt_short(pc.e) + ", host " + scheme_name(pc.scheme) + " at N = " + fmt_short(pc.steps);
   if (s[0] <= 0.0) return t + " (achieved e not known at this N)";
+  if (pc.table == 1)
+    return t + ": phase exact: per-contact constants from the onset phase (the library's table: each contact's e "
+               "and T_c within 1e-4 of the targets at every phase)";
   auto pct = [](double x) { return fmt_short(100.0 * x) + " %"; };
   t += std::string(": ") + scheme_name(rs.run_scheme()) + " achieves e mean " + fmt_short(s[0]) + " (" +
        pct(s[0] / pc.e - 1.0) + "), spread " + pct(s[1] / s[0]) + " (" + fmt_short(s[2]) + " .. " +
@@ -273,8 +325,72 @@ std::string describe_constants(const RuleSettings &rs, const PairConstants &pc)
 
 /* ---------------------------------------------------------------------- */
 
+namespace {
+// k and d of one pair's constants at the onset phase phi (0: the mean-exact constants)
+int pair_kd_at(const PairConstants &pc, double tc, double m, double u, double kphys, double phi, double *k,
+               double *d)
+{
+  return phi > 0.0 ? hertzdamp_c_pair_kd_phase(&pc.pair, tc, m, u, kphys, phi, k, d)
+                   : hertzdamp_c_pair_kd(&pc.pair, tc, m, u, kphys, k, d);
+}
+
+// The node j of the correction (host constants at e' = j H), made on first use; false
+// when it cannot be made (e' unreachable at this N).
+bool correction_node(const RuleSettings &rs, double steps, CorrectionNodes &cn, int j)
+{
+  if (cn.made_for_steps != steps || cn.made_for_modes != static_cast<int>(rs.pack_modes()) ||
+      cn.made_for_end != rs.end || cn.node.empty()) {
+    cn.node.assign(CorrectionNodes::NODES + 1, PairConstants());
+    cn.state.assign(CorrectionNodes::NODES + 1, 0);
+    cn.made_for_steps = steps;
+    cn.made_for_modes = static_cast<int>(rs.pack_modes());
+    cn.made_for_end = rs.end;
+  }
+  if (j < 1 || j > CorrectionNodes::NODES) return false;
+  if (cn.state[j] == 0) {
+    const double ej = j == CorrectionNodes::NODES ? 1.0 : j * CorrectionNodes::H;
+    PairConstants &pc = cn.node[j];
+    const int scheme = rs.pair_scheme();
+    const int st = rs.phase_exact()
+        ? hertzdamp_c_pair_init_phase(ej, HERTZDAMP_DAMPING_LINEAR, rs.end, scheme, steps, &pc.pair)
+        : hertzdamp_c_pair_init(ej, HERTZDAMP_DAMPING_LINEAR, rs.end, scheme, steps, &pc.pair);
+    cn.state[j] = st == HERTZDAMP_OK ? 1 : -1;
+    pc.valid = st == HERTZDAMP_OK;
+    pc.e = ej;
+  }
+  return cn.state[j] == 1;
+}
+
+// k, d at target x from the linear interpolant between the nodes around x
+bool interpolated_kd(const RuleSettings &rs, double steps, CorrectionNodes &cn, double x, double tc, double m,
+                     double u, double kphys, double phi, double *k, double *d)
+{
+  const double t = x / CorrectionNodes::H;
+  int j = static_cast<int>(std::floor(t));
+  if (j >= CorrectionNodes::NODES) j = CorrectionNodes::NODES - 1;
+  const double w = t - j;
+  double k0, d0, k1, d1;
+  if (!(w >= 0.0 && w <= 1.0) || !correction_node(rs, steps, cn, j) || !correction_node(rs, steps, cn, j + 1) ||
+      pair_kd_at(cn.node[j], tc, m, u, kphys, phi, &k0, &d0) != HERTZDAMP_OK ||
+      pair_kd_at(cn.node[j + 1], tc, m, u, kphys, phi, &k1, &d1) != HERTZDAMP_OK)
+    return false;
+  *k = k0 + w * (k1 - k0);
+  *d = d0 + w * (d1 - d0);
+  return true;
+}
+}    // namespace
+
+double contact_kt(const RuleSettings &rs, int tang_model, double kt_phys, double k, double kphys)
+{
+  if (!rs.kt_adapted || rs.tcmode == TC_FIXED || !(kphys > 0.0) || !(kt_phys > 0.0)) return kt_phys;
+  double kt = kt_phys;
+  const int model = tang_model == TANG_LINEAR_HISTORY ? HERTZDAMP_TANGENTIAL_LINEAR_HISTORY : HERTZDAMP_TANGENTIAL_MINDLIN;
+  if (hertzdamp_c_tangential_kt(model, kt_phys, k, kphys, &kt) != HERTZDAMP_OK) return kt_phys;
+  return kt;
+}
+
 Onset contact_rule(LAMMPS *lmp, const RuleSettings &rs, const PairConstants &pc, double kphys, double m,
-                   double u_raw, double dt)
+                   double u_raw, double dt, double ov, const ObliqueOnset *ob, CorrectionNodes *cn)
 {
   Onset o;
   o.bounded = 0;
@@ -289,13 +405,59 @@ Onset contact_rule(LAMMPS *lmp, const RuleSettings &rs, const PairConstants &pc,
              "hertzdamp: contact onset with approach speed " + fmt_g(u_raw) +
                  " <= 0 (overlapping at creation, or grazing); set a speed floor with vmin V");
   const double tc = rs.contact_time(dt);
-  const int st = hertzdamp_c_pair_kd(&pc.pair, tc, m, o.u_used, kphys, &o.k, &o.d);
-  o.bounded = (kphys > 0.0 && st == HERTZDAMP_OK && o.k == kphys) ? 1 : 0;
+  if (rs.phase_exact()) {
+    // the onset phase from the first overlap and the approach speed (a contact whose
+    // approach speed was raised to vmin, or detected late, gets phi = 1)
+    const int sp = u_raw > 0.0 ? hertzdamp_c_onset_phase(ov, u_raw, dt, &o.phi) : HERTZDAMP_BAD_VELOCITY;
+    if (sp != HERTZDAMP_OK || o.u_used != u_raw) o.phi = 1.0;
+  }
+  int st = pair_kd_at(pc, tc, m, o.u_used, kphys, o.phi, &o.k, &o.d);
   if (st != HERTZDAMP_OK)
     fail_one(lmp, __FILE__, __LINE__,
              std::string("hertzdamp: the rule failed at a contact onset (e ") + fmt_g(pc.e) + ", tc " +
                  fmt_g(tc) + ", m " + fmt_g(m) + ", u " + fmt_g(o.u_used) +
+                 (rs.phase_exact() ? ", onset phase " + fmt_g(o.phi) : std::string()) +
                  "): " + hertzdamp_c_strerror(st));
+  // (not for a contact whose approach speed was raised to vmin: no free binary collision)
+  if (ob && cn && rs.normal_correction && ob->vt > 0.0 && o.u_used == u_raw) {
+    // the oblique normal correction: lambda = v_t^2 T_c / (u_n (R_1 + R_2)); the shift it
+    // corrects is c lambda with c below 0.4 (about 0.4 (1 - e), doc/oblique.md): below
+    // LAMBDA_MIN it is under 1e-4 and not solved for (the solve costs about 0.2 ms); above
+    // 1 (grazing, resting contacts) the binary-collision model does not describe the contact
+    constexpr double LAMBDA_MIN = 2.5e-4;
+    const double lambda = ob->vt * ob->vt * tc / (o.u_used * (ob->r1 + ob->r2));
+    if (lambda > LAMBDA_MIN && lambda <= 1.0) {
+      const double speed = std::sqrt(o.u_used * o.u_used + ob->vt * ob->vt);
+      const double angle = std::atan2(ob->vt, o.u_used) * 57.295779513082321;
+      // the library's model scales k_t with its k: give it the k_t that yields, at the
+      // uncorrected k, the one this contact uses (where no k_phys is known, a bound far
+      // above k that never acts)
+      const int model = ob->tangential;
+      const double pw = model == HERTZDAMP_TANGENTIAL_LINEAR_HISTORY ? 0.8 : 1.0;
+      const double kref = kphys > 0.0 ? kphys : o.k * 1e12;
+      const int tmodel = model == HERTZDAMP_TANGENTIAL_LINEAR_HISTORY ? TANG_LINEAR_HISTORY : TANG_MINDLIN;
+      const double kt_use = ob->mu > 0.0 ? contact_kt(rs, tmodel, ob->kt_phys, o.k, kphys) : 1.0;
+      const double kt_arg = kt_use * std::pow(kref / o.k, pw);
+      double out[4];
+      const int sc = hertzdamp_c_oblique_correct(ob->m1, ob->r1, ob->m2, ob->r2, kref, HERTZDAMP_DAMPING_LINEAR,
+                                                 rs.end, model, kt_arg, ob->xgammat, ob->mu,
+                                                 HERTZDAMP_LEVER_CONTACT, pc.e, tc, speed, angle, out);
+      o.corrected = -1;
+      const double ep = out[3];
+      // the host constants at e' from the nodes around it, as a difference to those at e
+      // (k(e') = k(e) + k_lin(e') - k_lin(e), k_lin the linear interpolant between the
+      // nodes): exact where e' = e, and the interpolation errors at e and e' cancel to first order
+      double ka, da, kb, db;
+      if (sc == HERTZDAMP_OK && ep > 0.0 && ep <= 1.0 && interpolated_kd(rs, pc.steps, *cn, ep, tc, m, o.u_used, kphys, o.phi, &ka, &da) &&
+          interpolated_kd(rs, pc.steps, *cn, pc.e, tc, m, o.u_used, kphys, o.phi, &kb, &db)) {
+        o.k += ka - kb;
+        o.d += da - db;
+        o.e_target = ep;
+        o.corrected = 1;
+      }
+    }
+  }
+  o.bounded = (kphys > 0.0 && o.k == kphys) ? 1 : 0;
   return o;
 }
 
@@ -315,6 +477,7 @@ void ContactBook::reset()
 {
   n_onset = n_bounded = n_end = n_iso = e_sum = e_sumsq = carried = 0;
   n_headon = e_headon = n_stockwall = 0;
+  n_corrected = n_uncorrected = 0;
   ehist.assign(ENBIN, 0.0);
   umin = kmin = dmin = emin = 1e300;
   umax = kmax = dmax = emax = -1e300;
@@ -531,6 +694,13 @@ void ContactBook::summary(LAMMPS *lmp, const char *who)
     s += " (" + fmt_g(v[16]) + " contacts left out: other contacts at the same time (" + fmt_g(v[20]) +
          " of them with a stock wall), or impact speed below vmin)";
   }
+  // the oblique normal correction: contacts it corrected, and those where the library's
+  // solve failed (they keep the uncorrected constants)
+  double nc[2] = {n_corrected, n_uncorrected}, ncall[2];
+  MPI_Allreduce(nc, ncall, 2, MPI_DOUBLE, MPI_SUM, lmp->world);
+  if (ncall[0] + ncall[1] > 0)
+    s += "; oblique normal correction: " + fmt_g(ncall[0]) + " contacts corrected, " + fmt_g(ncall[1]) +
+         " not (the library's solve failed: uncorrected constants)";
   logmesg(lmp, s + "\n");
 }
 

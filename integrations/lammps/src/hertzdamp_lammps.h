@@ -48,6 +48,11 @@ enum TcMode { TC_STEPS, TC_TIME, TC_FIXED };
 // ODE, LAMMPS's first-order error stays).
 enum HostMode { HOST_NONE_MODE, HOST_LAMMPS_MODE };
 
+// Keyword phase: no (the plain force law), yes (the onset/release force correction,
+// scheme lammps-phase), exact (per-contact constants from the onset phase, no force
+// correction: hertzdamp_c_pair_init_phase / hertzdamp_c_pair_kd_phase, scheme lammps).
+enum PhaseMode { PHASE_NO = 0, PHASE_YES = 1, PHASE_EXACT = 2 };
+
 struct RuleSettings {
   int tcmode = TC_STEPS;
   double nsteps = 0.0;       // steps N: T_c = N dt
@@ -55,8 +60,10 @@ struct RuleSettings {
   double kfix = 0.0, dfix = 0.0;    // fixed K D (comparison mode: no rule)
   int end = HERTZDAMP_END_OVERLAP;
   double vmin = 0.0;         // floor of the impact speed used by the rule
-  int phase = 1;             // 1: weight the damping force's jumps by the contact phase (see README)
+  int phase = PHASE_YES;     // PhaseMode (see README)
   int host = HOST_LAMMPS_MODE;    // host lammps|none
+  int kt_adapted = 1;        // tangential_stiffness adapted (1, default) | physical (0)
+  int normal_correction = 1; // normal_correction yes (1, default) | no (0): oblique pair contacts
   std::string logfile;       // per-contact log ("" = none)
   int ntimes = 0;            // timing keywords given (steps, tc, fixed): exactly one
 
@@ -70,7 +77,20 @@ struct RuleSettings {
   double steps_per_contact(double dt) const { return tcmode == TC_STEPS ? nsteps : tc / dt; }
   // The scheme LAMMPS runs the contact with (fix nve/sphere, with or without the phase
   // correction), and the one the constants are made exact for (none with host none).
-  int run_scheme() const { return phase ? HERTZDAMP_HOST_LAMMPS_PHASE : HERTZDAMP_HOST_LAMMPS; }
+  int run_scheme() const { return phase == PHASE_YES ? HERTZDAMP_HOST_LAMMPS_PHASE : HERTZDAMP_HOST_LAMMPS; }
+  bool phase_force() const { return phase == PHASE_YES; }     // the onset/release force correction
+  bool phase_exact() const { return phase == PHASE_EXACT; }   // per-contact constants from the phase
+  // settings packed in one number for restart files (phase, host, tangential_stiffness,
+  // normal_correction)
+  double pack_modes() const { return phase + 4 * (host + 2 * (kt_adapted + 2 * normal_correction)); }
+  void unpack_modes(double x)
+  {
+    const int c = static_cast<int>(x);
+    phase = c % 4;
+    host = (c / 4) % 2;
+    kt_adapted = (c / 8) % 2;
+    normal_correction = (c / 16) % 2;
+  }
   int pair_scheme() const { return host == HOST_NONE_MODE ? HERTZDAMP_HOST_NONE : run_scheme(); }
   std::string describe() const;
 };
@@ -80,6 +100,9 @@ struct Onset {
   double k, d;      // stiffness [F/L^1.5], damping [M/T]
   double u_used;    // impact speed given to the rule (after the vmin floor)
   int bounded;      // 1 if k = k_phys (physical stiffness bound active)
+  double phi = 0.0;         // onset phase (phase exact; 0 otherwise)
+  double e_target = 0.0;    // the corrected target e' of an oblique pair contact (0: not corrected)
+  int corrected = 0;        // 1: the oblique normal correction set k and d; -1: it was tried and failed
 };
 
 // Name of a HERTZDAMP_HOST_* scheme the plugin uses (as the CLI's --host names them).
@@ -96,9 +119,34 @@ struct PairConstants {
   // what they were made for: recomputed when one of these changes (a new time step with
   // tc T, another e, settings read from a restart file)
   double e = -1.0, steps = -1.0;
-  int end = -1, scheme = -1;
+  int end = -1, scheme = -1, table = -1;    // table: with the onset-phase table (phase exact)
   bool valid = false;
 };
+
+// The oblique normal correction of a type pair: host constants at corrected targets
+// e' = j h (j = 1 .. NODES), made when a contact first needs them; a contact's k and d
+// are interpolated linearly in e' between the two nodes around its e'.
+struct CorrectionNodes {
+  static constexpr double H = 0.005;
+  enum { NODES = 200 };
+  std::vector<PairConstants> node;    // NODES + 1 (index j), valid once made
+  std::vector<int> state;             // 0 not made, 1 made, -1 failed
+  double made_for_steps = -1.0;       // cleared when the run's N or the settings change
+  int made_for_modes = -1;
+  int made_for_end = -1;
+};
+
+// What the oblique normal correction needs of a pair contact at its onset: the two
+// spheres, the tangential model with the k_t the contact uses at the uncorrected k (or
+// frictionless), and the centres' relative tangential speed.
+struct ObliqueOnset {
+  double m1, r1, m2, r2;
+  double vt;              // relative tangential speed of the centres at the onset
+  int tangential;         // HERTZDAMP_TANGENTIAL_* (frictionless: mindlin with mu 0)
+  double kt_phys;         // the physical k_t (mindlin NULL: 8 G*; as given otherwise)
+  double xgammat, mu;
+};
+
 
 // Set pc for restitution e with the rule's settings at time step dt (unchanged when
 // already made for them).  N too small for the scheme (or, with host none, for any
@@ -118,8 +166,17 @@ void constants_stats(const PairConstants &pc, double *out);
 // k and d of the pair constants pc at impact speed u_raw (relative normal approach
 // speed) with effective mass m.  kphys > 0: bound by the physical Hertz stiffness.
 // Errors (bad input) stop the run on this processor with a message.
+// ov: the first overlap (the onset phase of phase exact).  ob (pair contacts, may be
+// null) and cn: the oblique normal correction (normal_correction yes).
 Onset contact_rule(LAMMPS *lmp, const RuleSettings &rs, const PairConstants &pc, double kphys, double m,
-                   double u_raw, double dt);
+                   double u_raw, double dt, double ov, const ObliqueOnset *ob = nullptr,
+                   CorrectionNodes *cn = nullptr);
+
+// The tangential stiffness coefficient a contact with normal stiffness k uses: the
+// physical kt_phys scaled to k (tangential_stiffness adapted: mindlin kt_phys k/k_phys,
+// linear_history kt_phys (k/k_phys)^(4/5), hertzdamp_c_tangential_kt) where k_phys is
+// known (> 0) and the rule sets k; kt_phys as it is otherwise.
+double contact_kt(const RuleSettings &rs, int tang_model, double kt_phys, double k, double kphys);
 
 // Contact phase correction.  The damping force jumps from 0 to d u at the onset
 // and (overlap end) from d zeta' to 0 at the end.  Velocity Verlet applies the
@@ -163,6 +220,7 @@ enum Payload {
   P_MT = P_FR + 3,
   P_UTOUCH,     // normal approach speed at the touch point (free-flight path of the last step)
   P_VTOUCH,     // relative speed there (|v_i - v_j|; wall: |v_i|): the impact angle
+  P_KT,         // the tangential stiffness coefficient of this contact (contact_kt)
   NPAYLOAD
 };
 // bit 3: a bead of the contact touched a stock wall (fix wall/gran, wall/gran/region)
@@ -295,6 +353,8 @@ class ContactBook {
     lo_hi(umin, umax, u_raw);
     lo_hi(kmin, kmax, o.k);
     lo_hi(dmin, dmax, o.d);
+    if (o.corrected > 0) n_corrected += 1;
+    if (o.corrected < 0) n_uncorrected += 1;
   }
   // A finished contact: p = payload, tag_a/tag_b identify it, tend_steps = end time.
   void finish(const double *p, double tag_a, double tag_b, double tend_steps, double u_out,
@@ -320,6 +380,7 @@ class ContactBook {
   }
   double n_onset = 0, n_bounded = 0, n_end = 0, n_iso = 0, e_sum = 0, e_sumsq = 0;
   double n_headon = 0, e_headon = 0, n_stockwall = 0;
+  double n_corrected = 0, n_uncorrected = 0;    // oblique normal correction: applied, failed
   std::vector<double> ehist;    // isolated collisions' e, ENBIN bins
 
  public:

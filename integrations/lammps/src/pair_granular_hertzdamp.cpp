@@ -33,6 +33,28 @@ namespace HertzdampLammps {
 
 namespace {
 const char *CMD = "pair_style granular/hertzdamp";
+
+// What the oblique normal correction needs of a pair contact at its onset: the two spheres,
+// the friction model (frictionless: mindlin with mu 0) and the centres' relative tangential
+// speed (del = x_i - x_j, rinv = 1/|del|, approach = -(v_i - v_j) . del/|del|).
+ObliqueOnset oblique_onset(const FrictionModel &fo, double kt_phys, double mi, double ri, double mj, double rj,
+                           const double *vi, const double *vj, const double *del, double rinv, double approach)
+{
+  ObliqueOnset ob;
+  ob.m1 = mi, ob.r1 = ri, ob.m2 = mj, ob.r2 = rj;
+  double tt = 0.0;
+  for (int k = 0; k < 3; k++) {
+    const double t = vi[k] - vj[k] + approach * del[k] * rinv;    // w - (w . n) n
+    tt += t * t;
+  }
+  ob.vt = std::sqrt(tt);
+  ob.tangential = fo.tangential == TANG_LINEAR_HISTORY ? HERTZDAMP_TANGENTIAL_LINEAR_HISTORY
+                                                       : HERTZDAMP_TANGENTIAL_MINDLIN;
+  ob.kt_phys = fo.any() ? kt_phys : 1.0;
+  ob.xgammat = fo.any() ? fo.xt : 0.0;
+  ob.mu = fo.any() ? fo.mut : 0.0;
+  return ob;
+}
 const char *COEFF = "pair_coeff granular/hertzdamp";
 }    // namespace
 
@@ -75,6 +97,7 @@ void PairGranularHertzdamp::allocate()
   memory->create(maxrad, n + 1, "pair:maxrad");
   fm.assign(static_cast<size_t>(n + 1) * (n + 1), FrictionModel());
   pcs.assign(static_cast<size_t>(n + 1) * (n + 1), PairConstants());
+  cns.assign(static_cast<size_t>(n + 1) * (n + 1), CorrectionNodes());
   for (int i = 0; i <= n; i++) {
     y_i[i] = nu_i[i] = maxrad[i] = 0.0;
     for (int j = 0; j <= n; j++) {
@@ -359,7 +382,7 @@ void PairGranularHertzdamp::compute(int eflag, int vflag)
         // contact over: the overlap has returned to zero
         const double u_out = ((v[i][0] - v[j][0]) * delx + (v[i][1] - v[j][1]) * dely +
                               (v[i][2] - v[j][2]) * delz) * rinv;
-        const ContactEnd ce = payload_end(p, ov, u_out, step, force_end, rule.phase);
+        const ContactEnd ce = payload_end(p, ov, u_out, step, force_end, rule.phase_force());
         const double f_end = ce.f_end;
         if (newton_pair || j < nlocal || tag[i] < tag[j]) {
           const double ta = tag[i] < tag[j] ? tag[i] : tag[j], tb = tag[i] < tag[j] ? tag[j] : tag[i];
@@ -406,11 +429,17 @@ void PairGranularHertzdamp::compute(int eflag, int vflag)
         const double m = mi * mj / (mi + mj);
         double kphys = 0.0;
         if (estar_ij[ti][tj] > 0.0) kphys = 4.0 / 3.0 * estar_ij[ti][tj] * sqrt(radi * radius[j] / radsum);
-        const Onset o = contact_rule(lmp, rule, pcs[ti * nt + tj], kphys, m, approach, dt);
+        const FrictionModel &fo = fm[ti * nt + tj];
+        const double kt_phys = fo.kt < 0.0 ? 8.0 * gstar_ij[ti][tj] : fo.kt;
+        const double del[3] = {delx, dely, delz};
+        const ObliqueOnset ob = oblique_onset(fo, kt_phys, mi, radi, mj, radius[j], v[i], v[j], del, rinv, approach);
+        CorrectionNodes &cn = cns[(ti < tj ? ti : tj) * nt + (ti < tj ? tj : ti)];
+        const Onset o = contact_rule(lmp, rule, pcs[ti * nt + tj], kphys, m, approach, dt, ov, &ob, &cn);
         c = new_contact();
         ci[jj] = c;
         p = &pool[static_cast<size_t>(c) * NPAYLOAD];
-        f_phase = payload_onset(p, o, approach, m, ov, step, dt, rule.phase);
+        f_phase = payload_onset(p, o, approach, m, ov, step, dt, rule.phase_force());
+        p[P_KT] = fo.any() ? contact_kt(rule, fo.tangential, kt_phys, o.k, kphys) : 0.0;
         {
           // normal speed and angle at the touch point, on the last step's free-flight path
           const double rr[3] = {delx, dely, delz}, w[3] = {v[i][0] - v[j][0], v[i][1] - v[j][1], v[i][2] - v[j][2]};
@@ -463,8 +492,7 @@ void PairGranularHertzdamp::compute(int eflag, int vflag)
         cs.damp_n = p[P_D];
         cs.dt = dt;
         cs.history_update = setup ? 0 : 1;
-        const double kt = fmij.kt < 0.0 ? 8.0 * gstar_ij[ti][tj] : fmij.kt;
-        friction_forces(fmij, kt, cs, p + P_HIST, fs, fr, p[P_MT]);
+        friction_forces(fmij, p[P_KT], cs, p + P_HIST, fs, fr, p[P_MT]);
       }
       const double *n = cs.nx;
       const double fx = fn * n[0] + fs[0], fy = fn * n[1] + fs[1], fz = fn * n[2] + fs[2];
@@ -607,10 +635,10 @@ void PairGranularHertzdamp::unpack_reverse_comm(int n, int *list, double *buf)
 
 void PairGranularHertzdamp::write_restart_settings(FILE *fp)
 {
-  // phase and host in one number (phase + 2 host; files written before the host keyword
-  // have 0 or 1 there: host none, what those runs used)
+  // phase, host, tangential_stiffness and normal_correction in one number
+  // (RuleSettings::pack_modes)
   const double d[7] = {static_cast<double>(rule.tcmode), rule.nsteps, rule.tc, rule.kfix, rule.dfix,
-                       rule.vmin, static_cast<double>(rule.phase + 2 * rule.host)};
+                       rule.vmin, rule.pack_modes()};
   const int end = rule.end, nlog = static_cast<int>(rule.logfile.size());
   fwrite(d, sizeof(double), 7, fp);
   fwrite(&end, sizeof(int), 1, fp);
@@ -643,8 +671,7 @@ void PairGranularHertzdamp::read_restart_settings(FILE *fp)
   rule.kfix = d[3];
   rule.dfix = d[4];
   rule.vmin = d[5];
-  rule.phase = static_cast<int>(d[6]) % 2;
-  rule.host = static_cast<int>(d[6]) / 2;
+  rule.unpack_modes(d[6]);
   rule.end = end;
   rule.ntimes = 1;
   // the log goes on in the same file (appended, with a header line of its own)

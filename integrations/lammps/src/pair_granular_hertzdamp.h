@@ -78,6 +78,7 @@ class PairGranularHertzdamp : public LAMMPS_NS::Pair {
   double *maxrad = nullptr;       // largest radius of each type (for the cutoff)
   std::vector<FrictionModel> fm;  // (ntypes+1)^2 friction sub-models
   std::vector<PairConstants> pcs; // (ntypes+1)^2 constants of the rule (hertzdamp_c_pair_init)
+  std::vector<CorrectionNodes> cns;    // (ntypes+1)^2, used at [min(I,J)][max(I,J)]: the oblique correction
   bool friction = false;          // any type pair with a tangential model
 
   // contacts: payload pool, indexed per neighbor-list entry

@@ -85,6 +85,8 @@ class CApi:
         self._pstats.argtypes = [ctypes.c_void_p, I, ctypes.c_void_p]
         self._nmin = self.lib.hertzdamp_c_host_min_steps
         self._nmin.argtypes = [D, I, I, I, ctypes.POINTER(I)]
+        self._pmin = self.lib.hertzdamp_c_phase_min_steps
+        self._pmin.argtypes = [D, I, I, I, ctypes.POINTER(I)]
 
     @staticmethod
     def _end(end):
@@ -132,6 +134,14 @@ class CApi:
         st = self._nmin(e, 0, self._end(end), self.HOSTS[host], ctypes.byref(n))
         if st != 0:
             raise RuntimeError("min_steps status %d" % st)
+        return n.value
+
+    def phase_min_steps(self, e, end, host):
+        """The fewest steps per contact at which every onset phase reaches e (phase exact)."""
+        n = ctypes.c_int()
+        st = self._pmin(e, 0, self._end(end), self.HOSTS[host], ctypes.byref(n))
+        if st != 0:
+            raise RuntimeError("phase_min_steps status %d" % st)
         return n.value
 
     def forward(self, k, d, m, u, end):

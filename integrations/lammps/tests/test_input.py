@@ -57,6 +57,11 @@ CASES = [
      P + " (types 1 1): tc 2.9999999999999999e-07 (3 time steps of 9.9999999999999995e-08): N = 3 steps cannot "
      "reach e = 0.1 with lammps-phase; N >= 4 can"),
     ("pair_style granular/hertzdamp steps 20 vmin -1\n", P + ": vmin must be >= 0"),
+    ("pair_style granular/hertzdamp steps 20 phase maybe\n", P + ": phase must be yes, no or exact"),
+    ("pair_style granular/hertzdamp steps 20 tangential_stiffness scaled\n",
+     P + ": tangential_stiffness must be adapted or physical"),
+    ("pair_style granular/hertzdamp steps 20 normal_correction on\n", P + ": normal_correction must be yes or no"),
+    ("pair_style granular/hertzdamp steps 20 normal_correction\n", P + ": keyword 'normal_correction' needs 1 value(s)"),
     ("pair_style granular/hertzdamp steps 20 log /dev/full\n", "hertzdamp: log /dev/full: cannot write"),
     ("pair_style granular/hertzdamp steps 20\npair_coeff * * e 1.5\n", C + ": e must be in (0, 1]"),
     ("pair_style granular/hertzdamp steps 20\npair_coeff * * e 0.5 youngs 1e9 poisson 0.6\n",

@@ -21,7 +21,12 @@ initial gap; phase j of n: (j - 1/2)/n), 1 processor.
   continuous model; a host pair run by its scheme: e and N dt; bad pairs refused) and
   hertzdamp_c_host_min_steps (pair_init fails at one step fewer, succeeds at it);
 - N too small: a LAMMPS error naming the keyword and the fewest N that can (the C API's
-  hertzdamp_c_host_min_steps); that N runs, for the pair style and the wall fix.
+  hertzdamp_c_host_min_steps); that N runs, for the pair style and the wall fix;
+- phase exact (per-contact constants from the onset phase, no force correction), N = 10
+  and 20, overlap and force end (force end at e = 0.9 needs N >= 19: N = 20 only), 16 phases:
+  EVERY contact's e within 1e-7 of the target and its T_c within 1e-7 (relative), pair and
+  wall (observed at most 1.9e-9 and 5.5e-10; phase yes: 4.3e-3 and 1.3e-2 at N = 10); N below
+  hertzdamp_c_phase_min_steps stops the run naming that N, which runs.
 """
 import atexit
 import ctypes
@@ -60,9 +65,9 @@ def run_phases(tmp, nphase=16, **variables):
     return res, pred
 
 
-def means(rows):
+def means(rows, n_steps=N):
     n = len(rows)
-    return sum(r["e"] for r in rows) / n, sum(r["tc"] for r in rows) / n / (N * DT)
+    return sum(r["e"] for r in rows) / n, sum(r["tc"] for r in rows) / n / (n_steps * DT)
 
 
 def run(c):
@@ -73,7 +78,10 @@ def run(c):
                ("host lammps (default), end force", 16, {"end": "force"}, True),
                ("host lammps, phase no", 64, {"phase": "no"}, True),
                ("host none, phase no", 64, {"host": "none", "phase": "no"}, False),
-               ("host none, phase yes", 16, {"host": "none"}, False)]
+               ("host none, phase yes", 16, {"host": "none"}, False),
+               ("host lammps, phase exact, N = 20", 16, {"phase": "exact"}, "each"),
+               ("host lammps, phase exact, N = 20, end force", 16, {"phase": "exact", "end": "force"}, "each"),
+               ("host lammps, phase exact, N = 10", 16, {"phase": "exact", "N": 10}, "each")]
     for name, nphase, v, exact in configs:
         res, pred = run_phases(tmp, nphase, **v)
         for key in TARGETS + ("wall",):
@@ -82,8 +90,18 @@ def run(c):
             tag = "%s, %s" % (name, "wall e=0.5" if key == "wall" else "e=%g" % e)
             if not c.check(tag + ": %d contacts" % nphase, len(rows) == nphase, str(len(rows))):
                 continue
-            me, mt = means(rows)
+            nst = v.get("N", N)
+            me, mt = means(rows, nst)
             p = pred.get(key, [0, 0, 0, 0])
+            if exact == "each":
+                # every single contact exact, not only the mean over the phases
+                de = max(abs(r["e"] - e) for r in rows)
+                dt_ = max(abs(r["tc"] / (nst * DT) - 1) for r in rows)
+                print("%-44s largest single-contact error: e %.2e, T_c %.2e" % (tag, de, dt_))
+                c.check(tag + ": every contact's e within 1e-7 of the target", de <= 1e-7, repr(de))
+                c.check(tag + ": every contact's T_c within 1e-7 of N dt", dt_ <= 1e-7, repr(dt_))
+                c.check(tag + ": reported mean e = target", p[0] == e and p[2] == 1.0, repr(p))
+                continue
             # every contact's k, d: the per-pair API's, bit for bit
             scheme = "none" if v.get("host") == "none" else \
                 ("lammps" if v.get("phase") == "no" else "lammps-phase")
@@ -154,6 +172,35 @@ def run(c):
                     c.check(tag + ": error", ("ERROR: " + msg) in out, out[-400:])
                 else:
                     c.check(tag + ": runs", "ERROR" not in out and "Total wall time" in out, out[-400:])
+    # phase exact: N below the fewest at which every onset phase reaches e stops the run
+    for e in (0.2, 0.1):
+        nmin = api.phase_min_steps(e, "overlap", "lammps")
+        for n in (nmin - 1, nmin):
+            for who in ("pair", "wall"):
+                if who == "pair":
+                    line = "%s steps %d phase exact\npair_coeff * * e %g\n" % (P, n, e)
+                    msg = "%s (types 1 1): steps %d: " % (P, n)
+                else:
+                    line = ("pair_style granular/hertzdamp steps 20\npair_coeff * * e 0.5\n"
+                            "fix w all hertzdamp/wall steps %d phase exact e %g zplane 0 NULL\n" % (n, e))
+                    msg = "%s w: steps %d: " % (W, n)
+                msg += "N = %d steps cannot reach e = %g with lammps at every onset phase (phase exact): " % (n, e)
+                path = os.path.join(tmp, "small.lmp")
+                with open(path, "w") as f:
+                    f.write(box + line + "run 0\n")
+                out = hdlmp.lmp(path, {}, tmp, check=False)
+                tag = "phase exact %s e=%g steps %d (phase_min_steps %d)" % (who, e, n, nmin)
+                if n < nmin:
+                    c.check(tag + ": error", ("ERROR: " + msg) in out and ("N >= %d can" % nmin) in out, out[-400:])
+                else:
+                    c.check(tag + ": runs", "ERROR" not in out and "Total wall time" in out, out[-400:])
+    path = os.path.join(tmp, "nonehost.lmp")
+    with open(path, "w") as f:
+        f.write(box + "%s steps 20 host none phase exact\npair_coeff * * e 0.5\nrun 0\n" % P)
+    out = hdlmp.lmp(path, {}, tmp, check=False)
+    c.check("phase exact with host none: error", "phase exact makes each contact exact in LAMMPS's integrator: "
+            "it needs host lammps" in out, out[-400:])
+
     # tc T: N = T/dt, one step below the fewest that reach e = 0.1
     nmin = api.min_steps(0.1, "overlap", "lammps-phase")
     tc = (nmin - 1) * 1e-7

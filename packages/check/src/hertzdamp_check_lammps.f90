@@ -40,6 +40,7 @@ module hertzdamp_check_lammps
         character(len=:), allocatable :: damping       !! damping model (default viscoelastic)
         character(len=:), allocatable :: wall_text     !! the wall's words (fix)
         real(wp) :: kn = 0.0_wp, c = 0.0_wp, ymod = 0.0_wp, nu = 0.0_wp
+        real(wp) :: kt_mindlin = 0.0_wp  !! tangential mindlin*: its kt when given as a number (0: NULL or none)
         logical :: limit = .false.       !! limit_damping
         logical :: is_fix = .false.      !! fix wall/gran
         logical :: after_wall = .false.  !! the wall style has been read
@@ -202,6 +203,8 @@ contains
                 msg = t // ' ' // tok(i + 1)%s // ' needs ' // itoa(na) // ' values'
             else
                 call check_values(tok(i + 2:i + 1 + na), t // ' ' // tok(i + 1)%s, msg)
+                if (len(msg) == 0 .and. t == 'tangential' .and. index(tok(i + 1)%s, 'mindlin') == 1 .and. &
+                    tok(i + 2)%s /= 'NULL') call number(tok(i + 2)%s, 'tangential kt', a%kt_mindlin, msg)
             end if
             i = i + 2 + na
         case ('cutoff')
@@ -349,6 +352,7 @@ contains
         call bodies(mat, deck, msg)
         if (len(msg) > 0) return
         call stiffness(a, release, deck)
+        call tangential_note(a, deck)
         deck%deck_text = a%normal_text
         if (a%normal /= 'hertz/history') deck%deck_text = deck%deck_text // ' damping ' // a%damping
         if (a%limit) deck%deck_text = deck%deck_text // ' limit_damping'
@@ -408,6 +412,26 @@ contains
             deck%row = peer_spec_row('lammps-' // rel // '-' // a%damping // '-' // end_word(a%limit))
         end if
     end subroutine damping_parameter
+
+    !> A warning when mindlin's kt is far stiffer than any material gives for the normal
+    !> stiffness (a physical k_t kept with a softened normal contact, issue 33): mindlin's
+    !> F_t = kt a xi with kt = 8 G*, against the normal kn = k / sqrt(R*) (hertz kn, or
+    !> (4/3) E* for hertz/material); 8 G* / ((4/3) E*) = 3 (1 - nu)/(2 - nu) is 1 to 2 for
+    !> every isotropic material (-1 < nu <= 0.5, and any two materials lie in between).
+    !> mindlin NULL takes G* from the deck's own E and nu, which scales with them.
+    subroutine tangential_note(a, deck)
+        type(lammps_args), intent(in) :: a
+        type(peer_deck), intent(inout) :: deck
+        real(wp) :: kn, ratio
+        if (.not. (a%kt_mindlin > 0.0_wp) .or. .not. (deck%k > 0.0_wp .and. deck%radius > 0.0_wp)) return
+        kn = deck%k / sqrt(deck%radius)
+        ratio = a%kt_mindlin / kn
+        if (ratio > 2.0_wp) call add_note(deck, 'warning: tangential mindlin kt = ' // fmt_short(a%kt_mindlin) // &
+            ' is ' // fmt_short(ratio) // ' times the normal kn = ' // fmt_short(kn) // ', where any material ' // &
+            'gives 1 to 2 (8 G*/((4/3) E*) = 3(1-nu)/(2-nu)): a physical k_t kept with a softened normal ' // &
+            'contact; a softened contact needs k_t scaled by k/k_phys (doc/oblique.md; the hertzdamp LAMMPS ' // &
+            'plugin scales it: tangential_stiffness adapted)')
+    end subroutine tangential_note
 
     !> k as the release builds it (the 2021 wall's 1 - nu).
     subroutine stiffness(a, release, deck)

@@ -2,7 +2,8 @@
 !> from the onset phase.
 !>
 !> 1. The largest single-contact error of e and T_c with hertzdamp_pair_kd_phase, over 1000
-!>    stratified onset phases and the tie's phases 1e-15, 1 - 1e-15 and 1, for lammps, mfix-euler and mfix-ab2, every law and contact end,
+!>    stratified onset phases and the tie's phases 1e-15, 1 - 1e-15 and 1, for lammps,
+!>    mfix-euler and mfix-ab2, every law and contact end,
 !>    e = 0.1, 0.2, 0.5, 0.9, 0.99 and N = 10, 20, 100 (each contact's k and d reduced to
 !>    alpha, h and run by hertzdamp_host_collide; test/unit/test_phase.f90 checks a grid of
 !>    them with steppers of its own), beside the mean-exact constants' largest error.

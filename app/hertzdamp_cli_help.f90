@@ -362,7 +362,7 @@ module hertzdamp_cli_help
     character(len=*), parameter :: scene = &
         'Usage: hertzdamp scene FILE [--method M] [--damping LAW] [--format text|csv|json]' // nl // &
         '                            [--plot FILE.png] [--progress] [--no-compare]' // nl // &
-        '                            [--host H --dt DT --steps N]' // nl // &
+        '                            [--host H --dt DT --steps N [--onset-phase]]' // nl // &
         '' // nl // &
         'Runs the DEM scene in FILE (Fortran namelist, see data/scenes/*.nml): spheres and' // nl // &
         'plane walls, normal forces only (tangential forces, friction and rotation are out' // nl // &
@@ -407,6 +407,9 @@ module hertzdamp_cli_help
         '               by that host''s scheme and get k, d from its per-pair constants' // nl // &
         '               (hertzdamp_pair_init at N; doc/host-schemes.md); needs --dt and' // nl // &
         '               --steps, which override the file''s dt and steps_per_contact' // nl // &
+        '  --onset-phase  with --host: each contact gets its own k, d from its onset' // nl // &
+        '               phase phi = first overlap / (u_in dt) (hertzdamp_pair_kd_phase;' // nl // &
+        '               every contact''s e exact, not only the mean over the phase)' // nl // &
         '' // nl // &
         'Reports: the method choice; for every binary contact (no other contact on either' // nl // &
         'body meanwhile) the achieved restitution (separation/impact normal speed) and' // nl // &

@@ -66,7 +66,8 @@ contains
             call print_help('scene')
             call quit(EXIT_OK)
         end if
-        call parse_args(2, '--method --format --plot --damping --host --dt --steps', '--progress --no-compare', args, &
+        call parse_args(2, '--method --format --plot --damping --host --dt --steps', '--progress --no-compare --onset-phase', &
+                        args, &
                         allow_positional=.true.)
         if (.not. allocated(args%positional)) call fail(EXIT_USAGE, 'scene needs a FILE (see hertzdamp scene --help)')
         file = args%positional
@@ -94,8 +95,14 @@ contains
             end if
         end if
 
+        if (args%has('--onset-phase') .and. host == HD_HOST_NONE) then
+            call fail(EXIT_USAGE, '--onset-phase needs --host S (the per-contact constants of the onset phase are ' // &
+                      'those of a host scheme)')
+        end if
+
         call hertzdamp_scene_read(file, sc, status, msg)
         if (status /= HD_OK) call fail(EXIT_USAGE, file // ': ' // msg)
+        sc%onset_phase = args%has('--onset-phase')
         if (law >= 0) sc%law = law   ! --damping overrides the file's damping key
         call scene_overrides(args, host, sc)
         if (host /= HD_HOST_NONE .and. .not. sc%want_duration) then

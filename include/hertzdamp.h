@@ -166,8 +166,9 @@ int hertzdamp_c_host_min_steps(double e, int law, int end, int host, int *n_min)
  * Per-contact constants from the onset phase (issue 32; doc/host-schemes.md section 6).
  * hertzdamp_c_pair_init_phase: hertzdamp_c_pair_init plus the pair's onset-phase table
  * (in the same HERTZDAMP_PAIR_SIZE doubles), per-contact constants that make each
- * contact's own e and contact time exact in the host scheme, not only their mean over
- * the phase; HERTZDAMP_PHASE_UNREACHABLE when some onset phase has none at this N
+ * contact's own e exact in the host scheme, not only their mean over the phase, and its
+ * contact time N dt to within 2.5e-5/N relative (every release is kept 1e-5 of a step or
+ * more off a step boundary: doc/host-schemes.md 6.1, the tie); HERTZDAMP_PHASE_UNREACHABLE when some onset phase has none at this N
  * (hertzdamp_c_phase_min_steps gives the fewest N that works).  The header keeps the
  * mean-exact constants: hertzdamp_c_pair_kd gives the same bits with or without the table.
  */

@@ -54,7 +54,8 @@ module hertzdamp_pair
     use hertzdamp_registry, only: HD_HOST_NONE, hertzdamp_host_order, hertzdamp_max_host
     use hertzdamp_host, only: hertzdamp_host_stats, hertzdamp_host_solve, hertzdamp_host_steps_min, &
                               hertzdamp_host_steps_max
-    use hertzdamp_phase, only: hertzdamp_phase_build, hertzdamp_phase_table_ok, hertzdamp_phase_header
+    use hertzdamp_phase, only: hertzdamp_phase_build, hertzdamp_phase_table_ok, hertzdamp_phase_header, &
+                               hertzdamp_phase_half_max
     implicit none
     private
 
@@ -215,13 +216,13 @@ contains
         bits = ior(iand(ieor(h, shiftr(h, 52)), fraction_bits), one_bits)
     end function phase_marker_of
 
-    !> The per-contact check of a pair's table: its marker matches and it has nodes (2 or 4
-    !> halves of 4 to 57 nodes: every index of phase_eval inside the block).
+    !> The per-contact check of a pair's table: its marker matches and it has nodes (4
+    !> halves of at most 45 nodes; phase_eval clamps every index into the block).
     pure logical function phase_ready(pair) result(ok)
         type(hertzdamp_pair_t), intent(in) :: pair
         ok = ieor(bits_of(pair%phase(1)), phase_marker_of(pair)) == 0_int64 .and. &
-             (pair%phase(2) == 2.0_wp .or. pair%phase(2) == 4.0_wp) .and. pair%phase(3) >= 4.0_wp .and. &
-             pair%phase(3) * pair%phase(2) <= 114.0_wp
+             pair%phase(2) == 4.0_wp .and. pair%phase(3) >= 4.0_wp .and. &
+             pair%phase(3) <= real(hertzdamp_phase_half_max, wp)
     end function phase_ready
 
     ! phase_eval: the per-contact lookup of the table, one text for this module (inlined into

@@ -14,26 +14,41 @@
 !> for the contact time).
 !>
 !> The table (hertzdamp_phase_build, the pair's `phase` block): with the contact time
-!> pinned to N steps, the release happens at the same step for every phase except where
-!> frac(N) + phi crosses 1, so alpha(phi), tau(phi) are smooth on the pieces (0, phi_b]
-!> and (phi_b, 1], phi_b = N - floor(N) (one piece (0, 1] for a whole N), with algebraic
-!> singularities at the ends of a piece (a tiny first or last overlap: powers
-!> phi^(3/2), phi^q, (phi_b - phi)^q, ... with q in {0, 1/4, 1/2}, all multiples of 1/4).
+!> pinned to N steps, the release happens at the same step for every phase except at the
+!> tie phi_b = N - floor(N) (1 for a whole N), where the release lands on a step boundary:
+!> just below phi_b the last step with overlap has a tiny one, at phi_b and above the host's
+!> own test (`overlap > 0`: an overlap of exactly 0 is no contact) releases a step earlier.
+!> Near the tie the release step is decided by round-off and by the table's interpolation
+!> error (issue 32: e off by 13 % at phi = 1, mfix-euler, e = 0.5, N = 10), so the table
+!> keeps every release at least tie_band steps (2e-5) off a step boundary, on the side the
+!> host's test puts the tie: two pieces (0, P] and (P, 1], P = phi_b - tie_band, the first
+!> solved for a contact of N_1 steps, the second for one of N_1 - 2 tie_band steps (released
+!> the step before the boundary, tie_band to 2 tie_band steps early); N_1 = N, or for a whole
+!> N (or one within 1.5 tie_band above a whole number) floor(N) - tie_band/2, so that the tie
+!> is at phi_b = 1 - tie_band/2 and the phases near 0 too release tie_band/2 steps off the
+!> boundary.  The contact time is then within 2.5 tie_band/N of N steps; e is exact.
+!> The constants are smooth on each piece with algebraic singularities where a first or
+!> last overlap is tiny (phi -> 0: powers phi^(3/2), phi^q, ...; the first piece's last
+!> overlap at phi -> phi_b: (phi_b - phi)^q, ..., q in {0, 1/4, 1/2}, all multiples of 1/4).
 !> Each piece is cut at its middle into two halves; in each half the variable
-!> t = (distance to the half's piece end / half length)^(1/r) in [0, 1] (r = 4 for tsuji,
-!> whose powers are multiples of 1/4; r = 2 for q = 0 and 1/2, multiples of 1/2) makes those
-!> powers polynomials, and alpha, tau are tabulated at equidistant t_j from t_0 = 1e-3 to 1
-!> and interpolated by the cubic through the four nearest nodes (Lagrange; hertzdamp_pair
-!> evaluates it per contact).  A whole N: two halves of 57 nodes each; otherwise four of 28.
-!> At init every cell middle (but those next to extrapolated end nodes and those within 1e-6
-!> of a piece end, where the collision itself jumps or has an infinite slope in the
-!> constants) is checked: e and the contact time within 1e-4 (check_table).
+!> t = (distance to the half's centre / half length)^(1/r) (the centre: 0, phi_b, P and 1
+!> for the four halves; r = 4 for tsuji, whose powers are multiples of 1/4; r = 2 for q = 0
+!> and 1/2, multiples of 1/2) makes those powers polynomials, and alpha, tau are tabulated
+!> at equidistant t_j from t_0 (1e-3; for the second half (tie_band/half length)^(1/r)) to
+!> 1 and interpolated by the cubic through the four nearest nodes (Lagrange; hertzdamp_pair
+!> evaluates it per contact).  The second piece has no tiny overlap at either end (smooth):
+!> a whole N's (3 tie_band long) takes 6 nodes per half and its first piece's halves 45;
+!> otherwise 31 per half of the first piece and 20 of the second.  At init every cell middle (but those
+!> next to extrapolated end nodes) and the phases at and around the tie and the ends are
+!> checked: e and the contact time within 1e-4 (check_table).
 !>
 !> Layout of the table (hertzdamp_pair_phase_size = 240 doubles): (1) the marker (set by
-!> hertzdamp_pair); (2) number of halves (0: host none, no phase dependence; 2 or 4);
-!> (3) nodes per half; (4) phi_b (1 for a whole N); (5) t_0; (6) N; (7) 2/phi_b;
-!> (8) 2/(1 - phi_b) (0 for a whole N); (9) (nodes - 1)/(1 - t_0); (10) the root r;
-!> from (11): per half, per node, alpha then tau.
+!> hertzdamp_pair); (2) number of halves (0: host none, no phase dependence; else 4);
+!> (3) nodes of the largest half; (4) P; (5) P/2; (6) (P + 1)/2; (7) N; (8) the root r; (9) phi_b;
+!> (10) N_1; (11 .. 14) the halves' centres; (15 .. 18) one over their lengths;
+!> (19 .. 22) their t_0; (23 .. 26) (nodes - 1)/(1 - t_0); (27 .. 30) the offsets of the
+!> halves' nodes; (31 .. 34) their nodes - 4; from (35): per half, per node, alpha then tau
+!> (tau = N h: the host's step h = dt/t* is tau/N).
 module hertzdamp_phase
     use hertzdamp_kinds, only: hertzdamp_rk
     use hertzdamp_registry, only: HD_OK, HD_PHASE_UNREACHABLE, HD_BAD_PHASE, HD_BAD_VELOCITY, HD_BAD_TIME, &
@@ -51,7 +66,10 @@ module hertzdamp_phase
     public :: hertzdamp_phase_min_steps, hertzdamp_phase_table_ok
 
     !> Size of the table header (doubles before the nodes).
-    integer, parameter, public :: hertzdamp_phase_header = 10
+    integer, parameter, public :: hertzdamp_phase_header = 34
+    !> The most nodes of one half (the 206 doubles after the header hold 103 pairs (alpha,
+    !> tau); the halves take 45 + 45 + 6 + 6 or 31 + 31 + 20 + 20).
+    integer, parameter, public :: hertzdamp_phase_half_max = 45
     !> First node's t (the ends of a piece are limits, not phases).
     real(wp), parameter :: t_first = 1.0e-3_wp
     !> Below this t (a phase within 5e-5 of the half length from a piece end) a node whose
@@ -63,8 +81,9 @@ module hertzdamp_phase
     !> The largest relative error of e and of the contact time that the check of a new table
     !> accepts at the middles of its cells.
     real(wp), parameter :: check_tol = 1.0e-4_wp
-    !> The check leaves out the cell middles closer than this to a piece end (in phase).
-    real(wp), parameter :: check_band = 1.0e-6_wp
+    !> The least distance, in steps, at which the table keeps the release from a step
+    !> boundary (module note: the tie).
+    real(wp), parameter, public :: hertzdamp_phase_tie_band = 2.0e-5_wp
     !> Largest N of hertzdamp_phase_min_steps.
     integer, parameter :: n_search_max = 1024
 
@@ -351,12 +370,13 @@ contains
     ! ================================================================ the table
 
     !> The onset-phase table of (e, law, iend, host, N) from the mean-exact constants
-    !> (alpha_n, tau_n) of hertzdamp_host_solve (the guess of the first node): the nodes
-    !> solved by hertzdamp_phase_point from the middle of each half towards its piece end,
-    !> each from the previous node's constants.  tab(1) (the marker) is left 0.  host none:
+    !> (alpha_n, tau_n) of hertzdamp_host_solve (the guess of each piece's middle): the
+    !> nodes solved by hertzdamp_phase_point from the middle of each half towards its end,
+    !> each from the previous node's constants, for the piece's contact of N_1 or
+    !> N_1 - 2 tie_band steps (module note).  tab(1) (the marker) is left 0.  host none:
     !> the empty table (2nd entry 0: no phase dependence).  Status HD_OK, HD_BAD_STEPS (N
-    !> not in [2, 1e5]), or HD_PHASE_UNREACHABLE when some node has no constants (table
-    !> zero then).
+    !> not in [2, 1e5]), or HD_PHASE_UNREACHABLE when some node has no constants or the
+    !> check fails (table zero then).
     pure subroutine hertzdamp_phase_build(e, law, iend, host, steps, alpha_n, tau_n, tab, status)
         real(wp), intent(in) :: e                   !! target restitution coefficient
         integer, intent(in) :: law                  !! HD_DAMPING_*
@@ -366,8 +386,9 @@ contains
         real(wp), intent(in) :: alpha_n, tau_n      !! the mean-exact constants
         real(wp), intent(out) :: tab(hertzdamp_pair_phase_size)  !! the table (layout: module note)
         integer, intent(out) :: status              !! HD_OK or the failure
-        real(wp) :: pb, guess(2), t, phi, a, ta, mid(2)
-        integer :: nsub, nn, p, s, j, base, i, jx(4)
+        real(wp), parameter :: b = hertzdamp_phase_tie_band
+        real(wp) :: pb, n1, np, guess(2), t, phi, a, ta, mid(2), ln
+        integer :: nn, p, s, j, base, i, jx(4), nh(4)
         tab = 0.0_wp
         status = HD_OK
         jx = 0
@@ -376,59 +397,69 @@ contains
             status = HD_BAD_STEPS
             return
         end if
-        pb = steps - aint(steps)
-        if (pb == 0.0_wp) then
-            pb = 1.0_wp
-            nsub = 2
-        else
-            nsub = 4
-        end if
-        nn = (hertzdamp_pair_phase_size - hertzdamp_phase_header) / (2 * nsub)
-        tab(2) = real(nsub, wp)
-        tab(3) = real(nn, wp)
-        tab(4) = pb
-        tab(5) = t_first
-        tab(6) = steps
-        tab(7) = 2.0_wp / pb
-        if (nsub == 4) tab(8) = 2.0_wp / (1.0_wp - pb)
-        tab(9) = real(nn - 1, wp) / (1.0_wp - t_first)
+        n1 = steps
+        if (steps - aint(steps) < 1.5_wp * b) n1 = aint(steps) - 0.5_wp * b
+        pb = n1 - aint(n1)
+        ! nodes per half (module note)
+        nh = merge([45, 45, 6, 6], [31, 31, 20, 20], pb > 1.0_wp - 2.0_wp * b)
+        tab(2) = 4.0_wp
+        tab(3) = real(maxval(nh), wp)
+        tab(4) = pb - b
+        tab(5) = 0.5_wp * tab(4)
+        tab(6) = 0.5_wp * (tab(4) + 1.0_wp)
+        tab(7) = steps
         ! the root of t: 4 for tsuji (powers of phi^(1/4)), 2 for q = 0 and 1/2 (powers of
         ! phi^(1/2) only: one square root per contact less)
-        tab(10) = merge(4.0_wp, 2.0_wp, law == HD_DAMPING_TSUJI)
-        do p = 1, nsub / 2
+        tab(8) = merge(4.0_wp, 2.0_wp, law == HD_DAMPING_TSUJI)
+        tab(9) = pb
+        tab(10) = n1
+        tab(11:14) = [0.0_wp, pb, tab(4), 1.0_wp]
+        tab(15:18) = 1.0_wp / [tab(5), pb - tab(5), tab(6) - tab(4), 1.0_wp - tab(6)]
+        tab(19:22) = [t_first, (b * tab(16))**(1.0_wp / tab(8)), t_first, t_first]
+        tab(23:26) = real(nh - 1, wp) / (1.0_wp - tab(19:22))
+        tab(27) = real(hertzdamp_phase_header, wp)
+        do s = 2, 4
+            tab(26 + s) = tab(25 + s) + real(2 * nh(s - 1), wp)
+        end do
+        tab(31:34) = real(nh - 4, wp)
+        do p = 1, 2
+            ! the piece's contact in steps (module note); tau is stored as N h
+            np = merge(n1, n1 - 2.0_wp * b, p == 1)
             ! the middle of the piece first (shared by its two halves)
-            phi = merge(0.5_wp * pb, 0.5_wp * (1.0_wp + pb), p == 1)
-            call hertzdamp_phase_point(e, law, iend, host, steps, phi, [alpha_n, tau_n], a, ta, status)
+            phi = tab(4 + p)
+            call hertzdamp_phase_point(e, law, iend, host, np, phi, [alpha_n, tau_n * np / steps], a, ta, status)
             if (status /= HD_OK) exit
             mid = [a, ta]
             do s = 2 * p - 1, 2 * p
-                base = hertzdamp_phase_header + 2 * nn * (s - 1)
+                base = nint(tab(26 + s))
+                nn = nh(s)
                 guess = mid
                 do j = nn - 1, 0, -1
-                    t = t_first + real(j, wp) / tab(9)
+                    t = tab(18 + s) + real(j, wp) / tab(22 + s)
                     phi = node_phase(tab, s, t)
                     if (j == nn - 1) then
                         a = mid(1)
                         ta = mid(2)
                     else
-                        call hertzdamp_phase_point(e, law, iend, host, steps, phi, guess, a, ta, status)
+                        call hertzdamp_phase_point(e, law, iend, host, np, phi, guess, a, ta, status)
                         ! from the previous node's constants first, then from the mean-exact ones
-                        if (status /= HD_OK) call hertzdamp_phase_point(e, law, iend, host, steps, phi, &
-                                                                        [alpha_n, tau_n], a, ta, status)
+                        if (status /= HD_OK) call hertzdamp_phase_point(e, law, iend, host, np, phi, &
+                                                                        [alpha_n, tau_n * np / steps], a, ta, status)
                         if (status /= HD_OK .and. t < t_extrapolate .and. j + 4 < nn) then
-                            ! near the piece end (a first or last overlap below 1e-4 of a
-                            ! step), where e has an infinite slope or a jump next to the
-                            ! solution: the cubic through the four nodes above
+                            ! near a singular end (a first or last overlap below 1e-4 of a
+                            ! step), where e has an infinite slope next to the solution: the
+                            ! cubic through the four nodes above
                             i = base + 2 * j
+                            ln = np / steps
                             a = 4.0_wp * (tab(i + 3) + tab(i + 7)) - 6.0_wp * tab(i + 5) - tab(i + 9)
-                            ta = 4.0_wp * (tab(i + 4) + tab(i + 8)) - 6.0_wp * tab(i + 6) - tab(i + 10)
+                            ta = ln * (4.0_wp * (tab(i + 4) + tab(i + 8)) - 6.0_wp * tab(i + 6) - tab(i + 10))
                             status = HD_OK
                             jx(s) = max(jx(s), j)
                         end if
                         if (status /= HD_OK) exit
                     end if
                     tab(base + 2 * j + 1) = a
-                    tab(base + 2 * j + 2) = ta
+                    tab(base + 2 * j + 2) = ta * steps / np
                     guess = [a, ta]
                 end do
                 if (status /= HD_OK) exit
@@ -443,78 +474,78 @@ contains
     end subroutine hertzdamp_phase_build
 
     !> The check of a built table: at the middle of every cell of a half (the cell j between
-    !> t_j and t_(j+1)) but those next to the piece end whose cubic reads an extrapolated node
-    !> (j <= jx + 1, jx the highest extrapolated node of the half; at least the end cell
-    !> j = 0) or that lie within check_band of it, the collision with the interpolated constants has e and the contact time
-    !> within check_tol of the targets (relative); HD_PHASE_UNREACHABLE otherwise (a phase
-    !> between the nodes the host cannot serve at this N, or an interpolation error beyond it).
+    !> t_j and t_(j+1)) but those next to the end whose cubic reads an extrapolated node
+    !> (j <= jx + 1, jx the highest extrapolated node of the half), and at the phases at and
+    !> around the tie and the ends (1e-15, P -+ 1e-12, P, phi_b, 1 - 1e-15, 1), the collision
+    !> with the interpolated constants has e and the contact time within check_tol of the
+    !> targets (relative); HD_PHASE_UNREACHABLE otherwise (a phase between the nodes the host
+    !> cannot serve at this N, or an interpolation error beyond it).
     pure subroutine check_table(e, law, iend, host, steps, tab, jx, status)
         real(wp), intent(in) :: e, steps, tab(hertzdamp_pair_phase_size)
         integer, intent(in) :: law, iend, host, jx(4)
         integer, intent(out) :: status
-        real(wp) :: t, phi, a, ta, ee, tt
-        integer :: s, j, nn, st
-        nn = int(tab(3))
+        real(wp) :: t, phi, ph(7)
+        integer :: s, j, nn
         status = HD_OK
-        do s = 1, int(tab(2))
-            do j = merge(jx(s) + 2, 1, jx(s) > 0), nn - 2
-                t = t_first + (real(j, wp) + 0.5_wp) / tab(9)
+        do s = 1, 4
+            nn = nint(tab(30 + s)) + 4
+            do j = merge(jx(s) + 2, 0, jx(s) > 0), nn - 2
+                t = tab(18 + s) + (real(j, wp) + 0.5_wp) / tab(22 + s)
                 phi = node_phase(tab, s, t)
-                ! within check_band of the piece end the collision itself has an infinite
-                ! slope or a jump in the constants (doc/host-schemes.md section 6.3)
-                if (t**nint(tab(10)) / merge(tab(7), tab(8), s <= 2) < check_band) cycle
-                call phase_eval(tab, phi, a, ta)
-                call hertzdamp_host_collide(a, ta / steps, phi, law, iend, host, ee, tt, st)
-                if (st /= HD_OK) then
-                    status = HD_PHASE_UNREACHABLE
-                else if (.not. (abs(ee - e) <= check_tol * e .and. abs(tt - ta) <= check_tol * ta)) then
-                    status = HD_PHASE_UNREACHABLE
-                end if
+                if (.not. good(phi)) status = HD_PHASE_UNREACHABLE
                 if (status /= HD_OK) return
             end do
         end do
+        ph = [1.0e-15_wp, tab(4) - 1.0e-12_wp, tab(4), tab(4) + 1.0e-12_wp, tab(9), 1.0_wp - 1.0e-15_wp, 1.0_wp]
+        do j = 1, size(ph)
+            if (ph(j) > 0.0_wp .and. ph(j) <= 1.0_wp) then
+                if (.not. good(ph(j))) status = HD_PHASE_UNREACHABLE
+            end if
+            if (status /= HD_OK) return
+        end do
+    contains
+        !> Whether the contact of one phase meets the targets.
+        pure logical function good(phi)
+            real(wp), intent(in) :: phi
+            real(wp) :: a, ta, ee, tt
+            integer :: st
+            call phase_eval(tab, phi, a, ta)
+            call hertzdamp_host_collide(a, ta / steps, phi, law, iend, host, ee, tt, st)
+            good = st == HD_OK .and. abs(ee - e) <= check_tol * e .and. abs(tt - ta) <= check_tol * ta
+        end function good
     end subroutine check_table
 
-    !> The phase of the point t of half s of a table.
+    !> The phase of the point t of half s of a table (the centre plus or minus the half
+    !> length times t^r).
     pure real(wp) function node_phase(tab, s, t) result(phi)
         real(wp), intent(in) :: tab(:), t
         integer, intent(in) :: s
-        real(wp) :: a, b, l, d
-        if (s <= 2) then
-            a = 0.0_wp
-            b = tab(4)
-        else
-            a = tab(4)
-            b = 1.0_wp
-        end if
-        l = 0.5_wp * (b - a)
-        d = l * t**nint(tab(10))
+        real(wp) :: d
+        d = t**nint(tab(8)) / tab(14 + s)
         if (mod(s, 2) == 1) then
-            phi = a + d
+            phi = tab(10 + s) + d
         else
-            phi = b - d
+            phi = tab(10 + s) - d
         end if
-        if (t >= 1.0_wp) phi = a + l
+        if (t >= 1.0_wp) phi = merge(tab(5), tab(6), s <= 2)
     end function node_phase
 
-    !> Whether the layout entries of a table (2 .. 9) are those hertzdamp_phase_build writes
+    !> Whether the layout entries of a table (2 .. 26) are those hertzdamp_phase_build writes
     !> (the per-contact check beside the marker).
     pure logical function hertzdamp_phase_table_ok(tab) result(ok)
         real(wp), intent(in) :: tab(hertzdamp_pair_phase_size)  !! the table
-        integer :: nsub, nn
-        ok = .false.
-        if (.not. (tab(2) == 0.0_wp .or. tab(2) == 2.0_wp .or. tab(2) == 4.0_wp)) return
-        if (tab(2) == 0.0_wp) then
-            ok = .true.
-            return
-        end if
-        nsub = int(tab(2))
-        if (.not. (tab(3) >= 4.0_wp .and. tab(3) <= 64.0_wp)) return
-        nn = int(tab(3))
-        ok = 2 * nsub * nn <= hertzdamp_pair_phase_size - hertzdamp_phase_header .and. tab(4) > 0.0_wp .and. &
-             (tab(10) == 2.0_wp .or. tab(10) == 4.0_wp) .and. &
-             tab(4) <= 1.0_wp .and. tab(9) > 0.0_wp .and. tab(9) < 1.0e3_wp .and. tab(7) > 0.0_wp .and. &
-             tab(7) <= huge(1.0_wp) .and. tab(8) >= 0.0_wp .and. tab(8) <= huge(1.0_wp)
+        ok = tab(2) == 0.0_wp
+        if (ok .or. .not. tab(2) == 4.0_wp) return
+        ok = tab(3) >= 4.0_wp .and. tab(3) <= real(hertzdamp_phase_half_max, wp) .and. &
+             all(tab(31:34) >= 0.0_wp) .and. all(tab(31:34) <= real(hertzdamp_phase_half_max - 4, wp)) .and. &
+             tab(27) == real(hertzdamp_phase_header, wp) .and. &
+             all(tab(28:30) == tab(27:29) + 2.0_wp * (tab(31:33) + 4.0_wp)) .and. &
+             tab(30) + 2.0_wp * (tab(34) + 4.0_wp) <= real(hertzdamp_pair_phase_size, wp) .and. &
+             tab(4) > 0.0_wp .and. tab(4) < 1.0_wp .and. tab(5) > 0.0_wp .and. tab(5) < tab(4) .and. &
+             tab(6) > tab(4) .and. tab(6) < 1.0_wp .and. (tab(8) == 2.0_wp .or. tab(8) == 4.0_wp) .and. &
+             tab(9) > tab(4) .and. tab(9) <= 1.0_wp .and. tab(7) >= hertzdamp_host_steps_min .and. &
+             tab(7) <= hertzdamp_host_steps_max .and. all(tab(15:18) > 0.0_wp) .and. all(tab(15:18) <= huge(1.0_wp)) &
+             .and. all(tab(19:22) >= 0.0_wp) .and. all(tab(19:22) < 1.0_wp)
     end function hertzdamp_phase_table_ok
 
     ! ================================================================ fewest steps

@@ -388,6 +388,22 @@ assert abs(rows["mean_tc_rel_err (binary contacts)"]["value"]) < 2e-3, rows
 assert [r["rule"] for r in d["cost"]["rows"]] == ["fit"]
 ' "$OUT" $h
 done
+# --onset-phase (issue 32): each contact's own k, d from its onset phase (test_scene_host
+# asserts every contact against the targets; here the command line and the report)
+for h in lammps mfix-ab2; do
+  run scene $S/phases.nml --host $h --dt 1e-6 --steps 10 --onset-phase --format json
+  check "phases --host $h --onset-phase: exit 0 (got $RC), every contact's e within 1e-6, T_c within 1e-5" python3 -c '
+import json, sys
+d = json.load(open(sys.argv[1]))
+rows = {r["check"]: r for r in d["checks"]["rows"]}
+assert all(r["result"] != "FAIL" for r in rows.values()), rows
+assert rows["contacts with e, tc checked"]["value"] == 64
+assert abs(rows["max_e_rel_err (binary contacts)"]["value"]) < 1e-6, rows
+assert abs(rows["mean_tc_rel_err (binary contacts)"]["value"]) < 1e-5, rows
+' "$OUT"
+done
+expect_fail 2 "--onset-phase without --host" scene $S/phases.nml --onset-phase
+check "--onset-phase without --host: says it needs one" grep -q -- '--onset-phase needs --host S' "$ERR"
 run scene $S/phases.nml --host none --dt 1e-6 --steps 10 --format csv --no-compare
 cp "$OUT" "$TMPD/host_none.csv"
 run scene $S/phases.nml --format csv --no-compare

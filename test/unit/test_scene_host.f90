@@ -14,6 +14,12 @@
 !> between; the tolerance is that over M, plus 1e-9 for round-off of the engine's
 !> positions and instants.  The mean of the phase statistics themselves is exact
 !> (hertzdamp_host_solve, checked against an independent simulation in test_host).
+!>
+!> `scene --host S --onset-phase` (issue 32): the same scenes with each contact's own
+!> constants from its onset phase (hertzdamp_pair_kd_phase through the engine): every single
+!> contact's e (separation over impact speed) within 1e-5 of the target and its T_c within
+!> 1e-5 of N dt, where the host's constants alone scatter e by up to 13 % (e = 0.5, N = 10);
+!> --onset-phase without a host is an invalid scene.
 program test_scene_host
     use hertzdamp, only: hertzdamp_rk, HD_OK, HD_END_OVERLAP, HD_END_FORCE, HD_METHOD_FIT, HD_DAMPING_LINEAR, &
                          HD_DAMPING_TSUJI, HD_HOST_NONE, HD_HOST_LAMMPS, HD_HOST_MFIX_EULER, HD_HOST_MFIX_AB2, &
@@ -45,6 +51,15 @@ program test_scene_host
         call compare(schemes(j), 0.5_wp, 10, HD_DAMPING_TSUJI, HD_END_OVERLAP)
         call compare(schemes(j), 0.5_wp, 10, HD_DAMPING_LINEAR, HD_END_FORCE)
     end do
+    do j = 1, size(schemes)
+        do i = 1, size(es)
+            do k = 1, size(ns)
+                call every_contact(schemes(j), es(i), ns(k), HD_DAMPING_LINEAR, HD_END_OVERLAP)
+            end do
+        end do
+        call every_contact(schemes(j), 0.5_wp, 10, HD_DAMPING_TSUJI, HD_END_OVERLAP)
+        call every_contact(schemes(j), 0.5_wp, 10, HD_DAMPING_LINEAR, HD_END_FORCE)
+    end do
     call invalid_schemes()
     call s%finish()
 
@@ -67,6 +82,10 @@ contains
         call wall_scene(0.5_wp, 10, HD_DAMPING_LINEAR, HD_END_OVERLAP, HD_HOST_MFIX_AB2, HD_HOST_NONE, sc)
         call hertzdamp_dem_check(sc, status, msg)
         call s%check(status == HD_OK, 'scheme mfix-ab2 with the continuous constants: a valid scene')
+        sc%onset_phase = .true.
+        call hertzdamp_dem_check(sc, status, msg)
+        call s%check(status /= HD_OK .and. index(msg, 'onset_phase: ') == 1, &
+                     'onset_phase without a host: an invalid scene naming it (' // msg // ')')
     end subroutine invalid_schemes
 
     !> The scene: m steel spheres (radius 1 mm) 3 mm apart along x, falling at 1 m/s onto
@@ -139,6 +158,39 @@ contains
         tol_e = sum(abs(ee(2:) - ee(:m - 1))) / m + 1.0e-9_wp
         tol_t = sum(abs(tt(2:) - tt(:m - 1))) / m + 1.0e-9_wp
     end subroutine measure
+
+    !> One scheme, target, N, law and end with the onset-phase constants: every contact's e
+    !> and T_c within 1e-5 of the targets (the host's mean-exact constants: a spread of e).
+    subroutine every_contact(scheme, e, n, law, iend)
+        integer, intent(in) :: scheme, n, law, iend
+        real(wp), intent(in) :: e
+        type(hertzdamp_dem_scene) :: sc
+        type(hertzdamp_dem_result) :: res
+        real(wp) :: ee(m), tt(m), spread
+        integer :: form
+        character(len=128) :: lab
+        write (lab, '(a,a,f4.2,a,i0,5a)') hertzdamp_host_name(scheme), ', e = ', e, ', N = ', n, ', ', &
+            hertzdamp_law_name(law), ', ', hertzdamp_end_name(iend), ' end, onset phase'
+        spread = 0.0_wp
+        do form = 1, 2
+            call wall_scene(e, n, law, iend, scheme, scheme, sc)
+            sc%onset_phase = form == 2
+            call hertzdamp_dem_run(sc, HD_METHOD_FIT, 1.0e-8_wp, res)
+            call s%check(res%status == HD_OK .and. res%ncontacts == m, trim(lab) // ': runs, one contact per sphere')
+            if (.not. (res%status == HD_OK .and. res%ncontacts == m)) return
+            ee = res%contacts%u_out / res%contacts%u_in / res%contacts%e_target - 1.0_wp
+            tt = (res%contacts%t_end - res%contacts%t_start) / (n * sc%dt) - 1.0_wp
+            if (form == 1) spread = maxval(abs(ee))
+        end do
+        print '(a,3(a,es9.2))', trim(lab), ': largest error of a contact: e ', maxval(abs(ee)), ', T_c ', &
+            maxval(abs(tt)), '; mean-exact constants: e ', spread
+        call s%check(all(res%contacts%binary .and. res%contacts%t_end > 0.0_wp .and. .not. res%contacts%bound_active), &
+                     trim(lab) // ': every contact binary, ended, without the physical bound')
+        call s%check(maxval(abs(ee)) <= 1.0e-5_wp, trim(lab) // ': every contact''s e within 1e-5')
+        call s%check(maxval(abs(tt)) <= 1.0e-5_wp, trim(lab) // ': every contact''s T_c within 1e-5')
+        call s%check(spread > 100.0_wp * maxval(abs(ee)), trim(lab) // ': the mean-exact constants scatter e ' // &
+                     'by more than 100 times as much')
+    end subroutine every_contact
 
     !> One scheme, target, N, law and end: the host's constants hit the targets within the
     !> sampling tolerance, the continuous ones miss by more than it (in e or in T_c), and

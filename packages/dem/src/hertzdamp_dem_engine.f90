@@ -18,7 +18,9 @@
 !>   separation speed is the velocity once no contact force acts (mfix-ab2: after the
 !>   step that still applies the last contact acceleration through a_old).  With
 !>   sc%host /= HD_HOST_NONE every contact gets k and d from the per-pair constants
-!>   of that host (hertzdamp_pair_init at N = steps_per_contact, hertzdamp_pair_kd).
+!>   of that host (hertzdamp_pair_init at N = steps_per_contact, hertzdamp_pair_kd); with
+!>   sc%onset_phase each contact its own from its onset phase, the first overlap over
+!>   u_rule dt (hertzdamp_onset_phase, hertzdamp_pair_kd_phase; issue 32).
 !> - At each contact onset (pair or sphere-wall) the contact gets its own k and d
 !>   from the inverse rule for its effective mass m and impact normal velocity u_in,
 !>   bounded by the material pair's physical Hertz stiffness
@@ -87,7 +89,8 @@ module hertzdamp_dem_engine
                          HD_HOST_NONE, HD_HOST_LAMMPS, HD_HOST_MFIX_EULER, HD_HOST_MFIX_AB2, HD_HOST_VERLET, &
                          hertzdamp_host_name, hertzdamp_host_min_steps, hertzdamp_host_stats, hertzdamp_pair_t, &
                          hertzdamp_pair_init, hertzdamp_law_q, hertzdamp_sphere_mass, hertzdamp_effective_mass, &
-                         hertzdamp_effective_radius, hertzdamp_effective_modulus, hertzdamp_hertz_stiffness
+                         hertzdamp_effective_radius, hertzdamp_effective_modulus, hertzdamp_hertz_stiffness, &
+                         hertzdamp_onset_phase
     use hertzdamp_dem_types, only: hertzdamp_dem_scene, hertzdamp_dem_contact, hertzdamp_dem_result, &
                                    hertzdamp_dem_pair_e, hertzdamp_dem_nsteps, hertzdamp_dem_trace_size, hertzdamp_dem_u_floor, &
                                    hertzdamp_dem_pairs_met, HD_CONTACT_ACTIVE, HD_CONTACT_RELEASED, HD_CONTACT_CLOSED
@@ -702,7 +705,7 @@ contains
         integer, intent(in) :: i, j                  !! bodies (j < 0: wall -j)
         real(wp), intent(in) :: zeta, zeta_prev      !! overlap at the end and at the start of the step [m]
         type(hertzdamp_dem_contact) :: ct
-        real(wp) :: before, in_contact, z, zdot, nv(3), va(3), r_eff, fn, fh, fd, u, dt
+        real(wp) :: before, in_contact, z, zdot, nv(3), va(3), r_eff, fn, fh, fd, u, dt, phi
         integer :: status, mb
         dt = st%dt
         ! fraction of the step before the touch, and the velocities then
@@ -734,7 +737,13 @@ contains
         ct%u_rule = max(u, sc%rest_speed, hertzdamp_dem_u_floor)
         ct%e_target = st%e_pair(sc%pmat(i), mb)
         if (status == HD_OK) then
-            if (st%host_rule) then
+            if (st%host_rule .and. sc%onset_phase) then
+                ! the contact's onset phase: its first overlap over one step of approach
+                call hertzdamp_onset_phase(z, ct%u_rule, dt, phi, status)
+                if (status == HD_OK) call hertzdamp_dem_host_rule(st%pair(sc%pmat(i), mb), st%tc_wanted, ct%m, &
+                                                                  ct%u_rule, ct%k_phys, ct%k, ct%d, ct%tc_target, &
+                                                                  ct%bound_active, status, phi=phi)
+            else if (st%host_rule) then
                 call hertzdamp_dem_host_rule(st%pair(sc%pmat(i), mb), st%tc_wanted, ct%m, ct%u_rule, ct%k_phys, ct%k, &
                                              ct%d, ct%tc_target, ct%bound_active, status)
             else
@@ -795,7 +804,7 @@ contains
             do b = a, size(sc%mat)
                 if (.not. met(a, b)) cycle
                 call hertzdamp_pair_init(st%e_pair(a, b), sc%law, sc%iend, sc%host, real(sc%steps_per_contact, wp), &
-                                         st%pair(a, b), status, stats)
+                                         st%pair(a, b), status, stats, phase=sc%onset_phase)
                 st%pair(b, a) = st%pair(a, b)
                 if (status == HD_OK) then
                     res%host_e_dev = max(res%host_e_dev, (stats%e_max - stats%e_mean) / stats%e_mean, &

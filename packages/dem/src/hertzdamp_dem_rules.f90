@@ -4,7 +4,8 @@ module hertzdamp_dem_rules
     use hertzdamp, only: hertzdamp_rk, HD_OK, HD_NO_REBOUND, HD_DAMPING_LINEAR, hertzdamp_collision, &
                          hertzdamp_rk45_collide, HD_METHOD_SERIES, HD_METHOD_PADE, HD_METHOD_COMPACT, HD_METHOD_FIT, &
                          HD_METHOD_ITERATIVE, HD_METHOD_FIRST_ORDER, hertzdamp_invert_alpha, &
-                         hertzdamp_invert_options, hertzdamp_invert, hertzdamp_pair_t, hertzdamp_pair_kd
+                         hertzdamp_invert_options, hertzdamp_invert, hertzdamp_pair_t, hertzdamp_pair_kd, &
+                         hertzdamp_pair_kd_phase, hertzdamp_pair_phase_constants
     use hertzdamp_dem_types, only: hertzdamp_dem_scene, hertzdamp_dem_pairs_met, hertzdamp_dem_pair_e
     implicit none
     private
@@ -56,9 +57,10 @@ contains
 
     !> The contact rule of a host scheme: k and d of one contact from the per-pair
     !> constants of the host (hertzdamp_pair_init at the scene's N), the contact time
-    !> tc = N dt, effective mass m, impact velocity u and the bound kp (hertzdamp_pair_kd).
-    !> tc_expected: tc, or t*(kp) tau_N when the bound applies.
-    pure elemental subroutine hertzdamp_dem_host_rule(pair, tc, m, u, kp, k, d, tc_expected, bound, status)
+    !> tc = N dt, effective mass m, impact velocity u and the bound kp (hertzdamp_pair_kd);
+    !> with the onset phase phi (the pair's onset-phase table) that contact's own constants
+    !> (hertzdamp_pair_kd_phase).  tc_expected: tc, or t*(kp) tau when the bound applies.
+    pure elemental subroutine hertzdamp_dem_host_rule(pair, tc, m, u, kp, k, d, tc_expected, bound, status, phi)
         type(hertzdamp_pair_t), intent(in) :: pair   !! constants of the material pair
         real(wp), intent(in) :: tc              !! wanted contact time N dt [s]
         real(wp), intent(in) :: m               !! effective mass [kg]
@@ -69,7 +71,22 @@ contains
         real(wp), intent(out) :: tc_expected    !! contact time the parameters give [s]
         logical, intent(out) :: bound           !! k = kp
         integer, intent(out) :: status          !! HD_OK or the failure
-        real(wp) :: ts
+        real(wp), intent(in), optional :: phi   !! onset phase in (0, 1] (hertzdamp_onset_phase)
+        real(wp) :: ts, a, tau
+        integer :: s2
+        if (present(phi)) then
+            call hertzdamp_pair_kd_phase(pair, tc, m, u, kp, phi, k, d, status)
+            tc_expected = 0.0_wp
+            bound = .false.
+            if (status /= HD_OK) return
+            tc_expected = tc
+            bound = kp > 0.0_wp .and. k >= kp
+            if (bound) then
+                call hertzdamp_pair_phase_constants(pair, phi, a, tau, s2)
+                tc_expected = (m / (k * sqrt(u)))**0.4_wp * tau
+            end if
+            return
+        end if
         call hertzdamp_pair_kd(pair, tc, m, u, k, d, status, k_phys=kp, bound_active=bound, tstar=ts)
         tc_expected = 0.0_wp
         if (status /= HD_OK) return

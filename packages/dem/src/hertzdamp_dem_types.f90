@@ -67,6 +67,7 @@ module hertzdamp_dem_types
         real(wp) :: rest_speed = 1.0e-3_wp      !! at rest when every speed is below; slowest impact given to the rule [m s^-1]
         integer :: samples = 1000               !! trace samples kept (for plots)
         integer :: host = HD_HOST_NONE          !! HD_HOST_* whose per-pair constants give k, d (none: the rule of the method)
+        logical :: onset_phase = .false.        !! with a host: each contact's k, d from its onset phase (issue 32)
         integer :: scheme = HD_HOST_VERLET      !! HD_HOST_* time integrator of the contacts (verlet: the engine's own)
         type(hertzdamp_dem_material), allocatable :: mat(:)  !! materials
         integer, allocatable :: pmat(:)         !! material of each particle

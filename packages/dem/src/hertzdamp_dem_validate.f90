@@ -186,6 +186,8 @@ contains
             message = 'host: the per-pair constants of ' // &
                       prose(hertzdamp_host_name(HD_HOST_NONE) // ' ' // hertzdamp_host_choices(engine_only=.true.)) // &
                       ' (HD_HOST_*), not ' // hertzdamp_host_name(sc%host)
+        else if (sc%onset_phase .and. sc%host == HD_HOST_NONE) then
+            message = 'onset_phase: the per-contact constants of the onset phase need a host'
         else if (.not. (sc%dt > 0.0_wp)) then
             message = '&scene: dt must be positive'
         else if (.not. (sc%end_time > 0.0_wp)) then

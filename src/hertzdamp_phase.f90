@@ -603,16 +603,17 @@ contains
                 n = hi
             end if
         end if
-        ! confirm N + 1 .. N + 3 (a failure there moves N up)
+        ! confirm N + 1 .. N + 3: a failure at N + k moves N past it, to N + k + 1, which is
+        ! then tried too (k = 0)
         k = 1
         do while (k <= 3)
             call try(n + k, st)
             if (st == HD_OK) then
                 k = k + 1
             else
-                n = n + k
+                n = n + k + 1
                 if (n >= n_search_max) return
-                k = 1
+                k = 0
             end if
         end do
         n_min = n

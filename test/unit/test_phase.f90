@@ -37,6 +37,7 @@ program test_phase
     use hertzdamp_capi, only: hertzdamp_c_pair_init_phase, hertzdamp_c_pair_kd_phase, hertzdamp_c_onset_phase, &
                               hertzdamp_c_phase_min_steps
     use hertzdamp_testing, only: test_suite, new_suite
+    use hertzdamp_text_format, only: itoa, fmt_short
     use, intrinsic :: iso_c_binding, only: c_double, c_int
     use, intrinsic :: iso_fortran_env, only: int64
     use, intrinsic :: ieee_arithmetic, only: ieee_value, ieee_quiet_nan
@@ -515,7 +516,32 @@ contains
         call suite%check(st == HD_OK .and. n >= 2 .and. n < 10, 'min steps: e = 0.5 overlap below 10')
         call hertzdamp_phase_min_steps(0.5_wp, 7, HD_END_OVERLAP, HD_HOST_LAMMPS, n, st)
         call suite%check(st /= HD_OK .and. n == 0, 'min steps: bad law')
+        ! what the fewest N says holds where the reach is not monotone in N: lammps, linear,
+        ! overlap end, e = 0.2 builds at N = 3, not at 4, and again from 5 (N_min was 4: the
+        ! confirmation moved N onto the failing N, untested; the plugin's test found it)
+        call min_steps_holds(0.2_wp, HD_DAMPING_LINEAR, HD_END_OVERLAP, HD_HOST_LAMMPS)
+        call min_steps_holds(0.1_wp, HD_DAMPING_LINEAR, HD_END_OVERLAP, HD_HOST_LAMMPS)
+        call min_steps_holds(0.2_wp, HD_DAMPING_TSUJI, HD_END_FORCE, HD_HOST_MFIX_AB2)
     end subroutine check_min_steps
+
+    !> The fewest N of (e, law, iend, host): the table builds at N_min .. N_min + 3 and not at
+    !> N_min - 1.
+    subroutine min_steps_holds(e, law, iend, host)
+        real(wp), intent(in) :: e
+        integer, intent(in) :: law, iend, host
+        type(hertzdamp_pair_t) :: p
+        integer :: n, st, k, s1, nok
+        call hertzdamp_phase_min_steps(e, law, iend, host, n, st)
+        nok = 0
+        do k = 0, 3
+            call hertzdamp_pair_init(e, law, iend, host, real(n + k, wp), p, s1, phase=.true.)
+            if (s1 == HD_OK) nok = nok + 1
+        end do
+        call hertzdamp_pair_init(e, law, iend, host, real(n - 1, wp), p, s1, phase=.true.)
+        call suite%check(st == HD_OK .and. nok == 4 .and. s1 /= HD_OK, 'min steps ' // hertzdamp_host_name(host) // &
+                         ' e = ' // fmt_short(e, 3) // ': the table builds at N_min = ' // itoa(n) // ' .. N_min + 3 (' // &
+                         itoa(nok) // ' of 4), not at N_min - 1')
+    end subroutine min_steps_holds
 
     !> C and legacy: the module's bits.
     subroutine check_bindings()

@@ -24,8 +24,9 @@ initial gap; phase j of n: (j - 1/2)/n), 1 processor.
   hertzdamp_c_host_min_steps); that N runs, for the pair style and the wall fix;
 - phase exact (per-contact constants from the onset phase, no force correction), N = 10
   and 20, overlap and force end (force end at e = 0.9 needs N >= 19: N = 20 only), 16 phases:
-  EVERY contact's e within 1e-7 of the target and its T_c within 1e-7 (relative), pair and
-  wall (observed at most 1.9e-9 and 5.5e-10; phase yes: 4.3e-3 and 1.3e-2 at N = 10); N below
+  EVERY contact's e within 1e-7 of the target and its T_c within 2.5e-5/N (relative: the
+  table's tie, doc/host-schemes.md 6.1), pair and
+  wall (observed at most 5.9e-9 and 1e-5/N; phase yes: 4.3e-3 and 1.3e-2 at N = 10); N below
   hertzdamp_c_phase_min_steps stops the run naming that N, which runs.
 """
 import atexit
@@ -99,7 +100,10 @@ def run(c):
                 dt_ = max(abs(r["tc"] / (nst * DT) - 1) for r in rows)
                 print("%-44s largest single-contact error: e %.2e, T_c %.2e" % (tag, de, dt_))
                 c.check(tag + ": every contact's e within 1e-7 of the target", de <= 1e-7, repr(de))
-                c.check(tag + ": every contact's T_c within 1e-7 of N dt", dt_ <= 1e-7, repr(dt_))
+                # the table releases a contact at a whole N 1e-5 steps before the boundary,
+                # on the side of LAMMPS's own overlap test (doc/host-schemes.md 6.1): T_c
+                # within 2.5e-5/N by construction
+                c.check(tag + ": every contact's T_c within 2.5e-5/N of N dt", dt_ <= 2.5e-5 / nst, repr(dt_))
                 c.check(tag + ": reported mean e = target", p[0] == e and p[2] == 1.0, repr(p))
                 continue
             # every contact's k, d: the per-pair API's, bit for bit

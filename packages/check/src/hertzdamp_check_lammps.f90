@@ -203,8 +203,11 @@ contains
                 msg = t // ' ' // tok(i + 1)%s // ' needs ' // itoa(na) // ' values'
             else
                 call check_values(tok(i + 2:i + 1 + na), t // ' ' // tok(i + 1)%s, msg)
-                if (len(msg) == 0 .and. t == 'tangential' .and. index(tok(i + 1)%s, 'mindlin') == 1 .and. &
-                    tok(i + 2)%s /= 'NULL') call number(tok(i + 2)%s, 'tangential kt', a%kt_mindlin, msg)
+                ! (nested: Fortran's .and. does not stop at a false operand, and tok(i + 2)
+                ! need not exist)
+                if (len(msg) == 0 .and. na > 0 .and. t == 'tangential' .and. index(tok(i + 1)%s, 'mindlin') == 1) then
+                    if (tok(i + 2)%s /= 'NULL') call number(tok(i + 2)%s, 'tangential kt', a%kt_mindlin, msg)
+                end if
             end if
             i = i + 2 + na
         case ('cutoff')

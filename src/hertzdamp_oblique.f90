@@ -341,13 +341,25 @@ contains
     !> The mode at the touch: the trial force of a sticking start against mu |F_n| a short
     !> time eps = 1e-7 t* after the touch (both vanish at the touch for most laws; their
     !> ratio has a limit there).
+    !> When the damping alone exceeds the limit there (eta_t |v_t| > mu |F_n|, i.e.
+    !> x_gammat |v_t| > mu u_n at the touch) with mindlin and q < 1/2, the contact slips
+    !> FORWARD (sigma = sign v_t) from the touch: the sliding history
+    !> xi = -(sigma mu |F_n| + eta_t v_t) / K of a backward slip is finite while K = k_t a
+    !> grows from 0, so that K xi grows as a^1 = delta^(1/2) against mu |F_n| and eta_t,
+    !> which grow as delta^q: it crosses from the backward to the forward limit between
+    !> the overlaps delta_1 and r^(1/(1/2 - q)) delta_1, r = (x_gammat |v_t| + mu u_n) /
+    !> (x_gammat |v_t| - mu u_n), for any first overlap delta_1 (LAMMPS's first step), i.e.
+    !> at the touch in the limit of a vanishing step; once forward, the growing K xi keeps
+    !> it there (doc/oblique.md section 3).  Integrating that layer from delta_1 -> 0 takes
+    !> steps down to round-off (HD_STEP_UNDERFLOW before).  With q >= 1/2 the backward
+    !> slip is the consistent one (K xi shrinks relative to the limit).
     pure subroutine start_mode(p, y, mode, sigma)
         type(scaled_t), intent(in) :: p
         real(wp), intent(in) :: y(nst)
         integer, intent(out) :: mode
         real(wp), intent(out) :: sigma
         real(wp), parameter :: eps = 1.0e-7_wp
-        real(wp) :: yy(nst), dy(nst), ev(4), ft
+        real(wp) :: yy(nst), dy(nst), ev(4), ft, vt, eta
         sigma = 1.0_wp
         if (p%mu == 0.0_wp) then
             mode = frictionless
@@ -361,6 +373,11 @@ contains
         if (ev(2) > 0.0_wp) then
             mode = slip
             sigma = sign(1.0_wp, ft)
+            ! the damping alone over the limit (ev(2) + |F_t| = mu |F_n|)
+            vt = yy(4) - (yy(5) + yy(6))
+            eta = p%xg * p%alpha * yy(1)**p%q
+            if (p%model == HD_TANGENTIAL_MINDLIN .and. p%q < 0.5_wp .and. eta * abs(vt) > abs(ft) - ev(2)) &
+                sigma = sign(1.0_wp, vt)
         end if
     end subroutine start_mode
 

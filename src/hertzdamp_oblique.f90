@@ -712,12 +712,14 @@ contains
             return
         end if
         ! the iterates stay at or below 1 (the rule's largest e'); one below the rule's range
-        ! is moved halfway back to the last one (at most 8 times)
+        ! is moved halfway back to the last one (at most 16 times: a root near the range's
+        ! low end takes more than 8, e.g. e' = 1.0e-3 for e = 0.2 at 75 deg, lambda 1.4,
+        ! mindlin with x_gammat 0.5; test_oblique_fast)
         x1 = min(map_start(e, lam, f0), 1.0_wp)
         nhalf = 0
         do it = 1, 40
             call oblique_residual(c, e, tc, meff, un, speed, angle, tl, hm, et, x1, f1, k, d, kt, status)
-            if (status == HD_BAD_RESTITUTION .and. x1 < x0 .and. nhalf < 8) then
+            if (status == HD_BAD_RESTITUTION .and. x1 < x0 .and. nhalf < 16) then
                 x1 = 0.5_wp * (x0 + x1)
                 nhalf = nhalf + 1
                 cycle

@@ -471,25 +471,27 @@ contains
     end subroutine xgammat_sweep
 
     !> Convergence in the tolerance: the outcome against tol = 1e-14 (glass on a glass wall,
-    !> 1 m/s, mu = 0.3, e = 0.5: four stick-slip switches) falls with the tolerance, within
+    !> 1 m/s, mu = 0.3, e = 0.5: four stick-slip switches; five with x_gammat 0.5 at 45
+    !> deg) falls with the tolerance, within
     !> 100 tol from 1e-8 to 1e-13 (doc/oblique.md's table is this output).
     subroutine tolerance_study()
         type(hertzdamp_oblique_t) :: c
         type(hertzdamp_oblique_result) :: r, ref
         integer :: st, ia, it
         real(wp) :: th, tol, err, prev
-        do ia = 1, 2
+        ! 20 and 45 deg; 45 deg with x_gammat 0.5 (forward slip from the touch, five switches)
+        do ia = 1, 3
             th = merge(20.0_wp, 45.0_wp, ia == 1)
-            c = glass_wall(0.5_wp, HD_DAMPING_LINEAR, HD_END_OVERLAP, HD_TANGENTIAL_MINDLIN, 0.3_wp, 0.0_wp, &
-                           HD_LEVER_RADIUS, cos(th * hertzdamp_pi / 180))
+            c = glass_wall(0.5_wp, HD_DAMPING_LINEAR, HD_END_OVERLAP, HD_TANGENTIAL_MINDLIN, 0.3_wp, &
+                           merge(0.5_wp, 0.0_wp, ia == 3), HD_LEVER_RADIUS, cos(th * hertzdamp_pi / 180))
             call hertzdamp_oblique_impact(c, 1.0_wp, th, ref, st, tol=1.0e-14_wp)
             prev = huge(1.0_wp)
             do it = 8, 13
                 tol = 10.0_wp**(-it)
                 call hertzdamp_oblique_impact(c, 1.0_wp, th, r, st, tol=tol)
                 err = maxval(abs([r%e_n - ref%e_n, r%e_t - ref%e_t, r%vt_ratio - ref%vt_ratio]))
-                print '(2x,a,f4.0,a,es8.1,a,es9.2,a,i5)', 'tolerance study', th, ' deg: tol', tol, ' error', err, &
-                    ' steps', r%steps
+                print '(2x,a,f4.0,a,f4.1,a,es8.1,a,es9.2,a,i5)', 'tolerance study', th, ' deg, x_gammat', c%xgammat, &
+                    ': tol', tol, ' error', err, ' steps', r%steps
                 call s%check(st == HD_OK .and. err <= 100.0_wp * tol, 'tolerance study: error <= 100 tol')
                 if (mod(it, 2) == 0) then
                     call s%check(err < prev, 'tolerance study: the error falls with the tolerance')

@@ -479,19 +479,33 @@ contains
         type(hertzdamp_oblique_result) :: r, ref
         integer :: st, ia, it
         real(wp) :: th, tol, err, prev
-        ! 20 and 45 deg; 45 deg with x_gammat 0.5 (forward slip from the touch, five switches)
-        do ia = 1, 3
+        ! 20 and 45 deg; 45 deg with x_gammat 0.5 (forward slip from the touch, five switches);
+        ! two equal spheres at 25 deg with x_gammat 1 (three switches): its e_t does not
+        ! fall monotonically (7.9e-8 at 1e-11, doc/oblique.md section 2) and its errors at
+        ! 1e-12 and 1e-13 move with the build (4.8e-11 / 7.3e-11 with the test flags, 3.8e-11
+        ! / 4.2e-13 at -O2): only issue 33's 1e-6 at every tol is asserted there
+        do ia = 1, 4
             th = merge(20.0_wp, 45.0_wp, ia == 1)
+            if (ia == 4) th = 25.0_wp
             c = glass_wall(0.5_wp, HD_DAMPING_LINEAR, HD_END_OVERLAP, HD_TANGENTIAL_MINDLIN, 0.3_wp, &
                            merge(0.5_wp, 0.0_wp, ia == 3), HD_LEVER_RADIUS, cos(th * hertzdamp_pi / 180))
+            if (ia == 4) then
+                c%m2 = c%m1
+                c%r2 = c%r1
+                c%xgammat = 1.0_wp
+            end if
             call hertzdamp_oblique_impact(c, 1.0_wp, th, ref, st, tol=1.0e-14_wp)
             prev = huge(1.0_wp)
             do it = 8, 13
                 tol = 10.0_wp**(-it)
                 call hertzdamp_oblique_impact(c, 1.0_wp, th, r, st, tol=tol)
                 err = maxval(abs([r%e_n - ref%e_n, r%e_t - ref%e_t, r%vt_ratio - ref%vt_ratio]))
-                print '(2x,a,f4.0,a,f4.1,a,es8.1,a,es9.2,a,i5)', 'tolerance study', th, ' deg, x_gammat', c%xgammat, &
-                    ': tol', tol, ' error', err, ' steps', r%steps
+                print '(2x,a,a,f4.0,a,f4.1,a,es8.1,a,es9.2,a,i5)', 'tolerance study', merge(' pair', ' wall', ia == 4), &
+                    th, ' deg, x_gammat', c%xgammat, ': tol', tol, ' error', err, ' steps', r%steps
+                if (ia == 4) then
+                    call s%check(st == HD_OK .and. err <= 1.0e-6_wp, 'tolerance study, pair: error <= 1e-6')
+                    cycle
+                end if
                 call s%check(st == HD_OK .and. err <= 100.0_wp * tol, 'tolerance study: error <= 100 tol')
                 if (mod(it, 2) == 0) then
                     call s%check(err < prev, 'tolerance study: the error falls with the tolerance')

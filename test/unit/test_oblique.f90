@@ -425,7 +425,59 @@ contains
         c%r2 = 2.0_wp**(1.0_wp / 3) * c%r1
         call compare('pair, linear_history, lever contact, 30 deg', c, 1.0_wp, 30.0_wp, 1.0e-6_wp, .true.)
         call xgammat_sweep()
+        call damped_matrix()
     end subroutine against_independent
+
+    !> Every contact of a matrix with tangential damping is solved (status HD_OK): the three
+    !> laws, both ends, mindlin and linear_history, x_gammat 0.25, 0.5, 1, 2, mu 0.1, 0.3, 1,
+    !> a wall and two equal spheres, physical and softened to T_c = 780 us (100x) with the
+    !> adapted k_t, tol 1e-12 and 1e-10, 1-89 deg by 4 (26496 contacts).  Before the
+    !> forward-slip start 5382 of them failed with HD_STEP_UNDERFLOW.
+    subroutine damped_matrix()
+        type(hertzdamp_oblique_t) :: c
+        type(hertzdamp_oblique_result) :: r
+        real(wp) :: k, d, kp, meff, ktp
+        integer :: law, iend, im, ix, imu, iw, itc, itl, ia, st, ntot, nfail, maxsw
+        ntot = 0
+        nfail = 0
+        maxsw = 0
+        do law = HD_DAMPING_LINEAR, HD_DAMPING_KUWABARA_KONO
+            do iend = HD_END_OVERLAP, HD_END_FORCE
+                do im = HD_TANGENTIAL_LINEAR_HISTORY, HD_TANGENTIAL_MINDLIN
+                    do ix = 1, 4
+                        do imu = 1, 3
+                            do iw = 0, 1
+                                meff = merge(mass, 0.5_wp * mass, iw == 0)
+                                kp = kphys * merge(1.0_wp, sqrt(0.5_wp), iw == 0)
+                                do itc = 1, 2
+                                    do itl = 1, 2
+                                        do ia = 1, 89, 4
+                                            call hertzdamp_invert(0.5_wp, merge(1.0e-9_wp, 7.8e-4_wp, itc == 1), meff, &
+                                                                  cos(ia * hertzdamp_pi / 180), iend, k, d, st, &
+                                                                  k_phys=kp, law=law)
+                                            call hertzdamp_tangential_kt(im, phys_kt(im), k, kp, ktp, st)
+                                            c = hertzdamp_oblique_t(m1=mass, r1=rad, m2=mass * iw, r2=rad * iw, k=k, &
+                                                                    d=d, law=law, iend=iend, tangential=im, kt=ktp, &
+                                                                    xgammat=0.25_wp * 2**(ix - 1), &
+                                                                    mu=merge(0.1_wp, merge(0.3_wp, 1.0_wp, imu == 2), &
+                                                                             imu == 1))
+                                            call hertzdamp_oblique_impact(c, 1.0_wp, real(ia, wp), r, st, &
+                                                                          tol=merge(1.0e-12_wp, 1.0e-10_wp, itl == 1))
+                                            ntot = ntot + 1
+                                            if (st /= HD_OK) nfail = nfail + 1
+                                            maxsw = max(maxsw, r%switches)
+                                        end do
+                                    end do
+                                end do
+                            end do
+                        end do
+                    end do
+                end do
+            end do
+        end do
+        print '(2x,a,i6,a,i5,a,i3)', 'x_gammat matrix: contacts', ntot, ', failed', nfail, ', most switches', maxsw
+        call s%check(ntot == 26496 .and. nfail == 0, 'x_gammat matrix: every contact solved')
+    end subroutine damped_matrix
 
     !> Tangential damping x_gammat = 0.5 and 1 with mu = 0.3 (the LAMMPS pour deck's
     !> mindlin has x_gammat = 1), physical glass, linear law, overlap end, 1 m/s, 5-85 deg:

@@ -376,8 +376,9 @@ contains
             ! the damping alone over the limit (ev(2) + |F_t| = mu |F_n|)
             vt = yy(4) - (yy(5) + yy(6))
             eta = p%xg * p%alpha * yy(1)**p%q
-            if (p%model == HD_TANGENTIAL_MINDLIN .and. p%q < 0.5_wp .and. eta * abs(vt) > abs(ft) - ev(2)) &
+            if (p%model == HD_TANGENTIAL_MINDLIN .and. p%q < 0.5_wp .and. eta * abs(vt) > abs(ft) - ev(2)) then
                 sigma = sign(1.0_wp, vt)
+            end if
         end if
     end subroutine start_mode
 

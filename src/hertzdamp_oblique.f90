@@ -28,7 +28,9 @@
 !> the slip rate that keeps |F_t| = mu |F_n| changes sign) are located by the Illinois
 !> method on exact sub-steps from the start of the accepted step (no dense output), and
 !> the mode is switched there.  The slip rate is formed from the time derivatives of
-!> mu |F_n|, K and eta_t v_t along the sliding motion (closed forms).  Error: see
+!> mu |F_n|, K and eta_t v_t along the sliding motion (closed forms).  When the damping
+!> alone exceeds the limit at the touch, mindlin (q < 1/2) starts in the forward slip,
+!> the limit of LAMMPS's step as it vanishes (start_mode).  Error: see
 !> doc/oblique.md (convergence study in the tolerance, and test/unit/test_oblique.f90
 !> against an independent fixed-step solution).
 !>

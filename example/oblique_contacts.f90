@@ -3,7 +3,8 @@
 !> (hertzdamp_tangential_kt), and the per-contact cost of the k_t rule and of the two-sphere
 !> normal correction (fast, and with tol = 1e-12 the former full solve) against the bare
 !> k, d formula (medians of 7 repeats in one process; the corrections: the mean over the
-!> angles 5-85 deg; state the load from `uptime` with the figures).
+!> angles 5-85 deg; state the load from `uptime` with the figures); with x_gammat = 1 (the
+!> LAMMPS pour deck's mindlin) too, and the corrected e' and e_n per angle there.
 !>
 !>     fpm run --example oblique_contacts --flag "-O3 -march=x86-64-v2 -funroll-loops -fPIC"
 program oblique_contacts
@@ -14,18 +15,20 @@ program oblique_contacts
     implicit none
     integer, parameter :: wp = hertzdamp_rk
     real(wp), parameter :: rad = 1.0e-3_wp, rho = 2500.0_wp, ym = 63.0e9_wp, nu = 0.24_wp
-    type(hertzdamp_oblique_t) :: c, cs, cf, cw
+    type(hertzdamp_oblique_t) :: c, cs, cf, cw, cx
     type(hertzdamp_oblique_result) :: r, rs
-    real(wp) :: m, kphys, kt, k, d, kts, th, un, t(8, 7), acc
+    real(wp) :: m, kphys, kt, k, d, kts, th, un, t(10, 7), acc, et
     integer :: st, i, rep
     integer(int64) :: c0, c1, rate
-    character(len=46), parameter :: rows(3:8) = [character(len=46) :: &
+    character(len=46), parameter :: rows(3:10) = [character(len=46) :: &
         'hertzdamp_oblique_impact (two spheres, 45)', &
         'hertzdamp_oblique_correct, two spheres, mu 0', &
         'hertzdamp_oblique_correct, two spheres, mu 0.3', &
         'hertzdamp_oblique_correct, wall, mu 0.3', &
         ' the same, tol 1e-12 (former), mu 0', &
-        ' the same, tol 1e-12 (former), mu 0.3']
+        ' the same, tol 1e-12 (former), mu 0.3', &
+        'hertzdamp_oblique_correct, pair, mu .3, xgt 1', &
+        ' the same, tol 1e-12, mu 0.3, x_gammat 1']
     m = rho * 4.0_wp / 3.0_wp * hertzdamp_pi * rad**3
     kphys = 4.0_wp / 3.0_wp * ym / (2.0_wp * (1.0_wp - nu**2)) * sqrt(rad)
     call hertzdamp_mindlin_kt(ym, nu, ym, nu, kt, st)
@@ -54,6 +57,19 @@ program oblique_contacts
     cf = c
     cf%mu = 0.3_wp
     cw = hertzdamp_oblique_t(m1=m, r1=rad, k=kphys, kt=kt, mu=0.3_wp)
+    cx = cf
+    cx%xgammat = 1.0_wp
+    ! the correction with x_gammat 1: e' and the e_n of its constants (reference solve)
+    print '(a)', 'x_gammat 1, two spheres: angle  status  e''       e_n - e (fast)   e''       e_n - e (tol 1e-12)'
+    do i = 0, 8
+        th = 10.0_wp * i + 5.0_wp
+        write (*, '(f29.0)', advance='no') th
+        call hertzdamp_oblique_correct(cx, 0.5_wp, 2.0e-5_wp, 5.0_wp, th, k, d, kts, et, st)
+        call corrected_en(st, et)
+        call hertzdamp_oblique_correct(cx, 0.5_wp, 2.0e-5_wp, 5.0_wp, th, k, d, kts, et, st, tol=1.0e-12_wp)
+        call corrected_en(st, et)
+        print '(a)', ''
+    end do
     do rep = 1, 7
         call system_clock(c0)
         do i = 1, 100000
@@ -82,16 +98,33 @@ program oblique_contacts
         t(6, rep) = correct_time(cw, 90000, .false.)
         t(7, rep) = correct_time(c, 180, .true.)
         t(8, rep) = correct_time(cf, 180, .true.)
+        t(9, rep) = correct_time(cx, 900, .false.)
+        t(10, rep) = correct_time(cx, 180, .true.)
     end do
     print '(a)', 'per contact (median of 7)                          time       / bare k, d'
     print '(a, es10.3, a, f10.2)', 'hertzdamp_invert (bare k, d)                  ', median(t(1, :)), ' s', 1.0_wp
     print '(a, es10.3, a, f10.2)', ' + hertzdamp_tangential_kt                    ', median(t(2, :)), ' s', &
         median(t(2, :)) / median(t(1, :))
-    do i = 3, 8
+    do i = 3, 10
         print '(a, es10.3, a, f10.0)', rows(i), median(t(i, :)), ' s', median(t(i, :)) / median(t(1, :))
     end do
     if (.not. acc > 0.0_wp) print '(a)', '(unexpected)'
 contains
+    !> Write the status, e' and e_n - e of the constants k, d, kts just corrected.
+    subroutine corrected_en(stt, ee)
+        integer, intent(in) :: stt
+        real(wp), intent(in) :: ee
+        type(hertzdamp_oblique_t) :: cc
+        type(hertzdamp_oblique_result) :: rr
+        integer :: s2
+        cc = cx
+        cc%k = k
+        cc%d = d
+        cc%kt = kts
+        call hertzdamp_oblique_impact(cc, 5.0_wp, th, rr, s2)
+        write (*, '(i5, f10.5, es12.2)', advance='no') stt, ee, rr%e_n - 0.5_wp
+    end subroutine corrected_en
+
     !> The mean time of one hertzdamp_oblique_correct of contact cc over ncalls calls at
     !> the angles 5, 15, ..., 85 deg in turn (5 m/s, e = 0.5, T_c = 20 us); with reference,
     !> tol = 1e-12 (reference solves to |e_n - e| <= 1e-10, the former correction).

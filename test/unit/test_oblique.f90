@@ -365,15 +365,20 @@ contains
     !> Library vs independent (n and 2n steps: the independent solution's own error is
     !> the difference, and must be below a tenth of tol) on e_n, e_t (or vt_ratio), the
     !> rebound angle and omega R / u.
-    subroutine compare(label, c, u, th, tol, switches)
+    subroutine compare(label, c, u, th, tol, switches, layer)
         character(len=*), intent(in) :: label
         type(hertzdamp_oblique_t), intent(in) :: c
         real(wp), intent(in) :: u, th, tol
-        logical, intent(in) :: switches
+        logical, intent(in), optional :: switches   ! whether it switches (absent: not asserted)
+        ! the independent solution's switches in the touch's layer, which the library
+        ! starts past (start_mode: mindlin's forward slip; default 0)
+        integer, intent(in), optional :: layer
         type(hertzdamp_oblique_result) :: r
         type(ref_t) :: a, b
-        integer :: st
+        integer :: st, extra
         real(wp) :: own, gap
+        extra = 0
+        if (present(layer)) extra = layer
         call hertzdamp_oblique_impact(c, u, th, r, st)
         call s%check(st == HD_OK, label // ': status')
         a = independent(c, u, th, 1.3_wp * r%t_c, 20000)
@@ -384,9 +389,9 @@ contains
         if (th > 0.0_wp) gap = max(gap, abs(r%e_t - b%e_t))
         call s%check(own < 0.1_wp * tol, label // ': the independent solution converged')
         call s%check(gap <= tol, label // ': library = independent solution')
-        call s%check((r%switches > 0) .eqv. switches, label // ': stick-slip switches as expected')
+        if (present(switches)) call s%check((r%switches > 0) .eqv. switches, label // ': stick-slip switches as expected')
         ! (within one: a switch at the instant F_n vanishes, where mu |F_n| -> 0 forces a slip)
-        call s%check(abs(r%switches - b%switches) <= 1, label // ': same number of switches')
+        call s%check(abs(r%switches + extra - b%switches) <= 1, label // ': same number of switches')
         print '(2x,a,a,es9.2,a,es9.2,a,es8.1,a,2i3)', label, ': library - independent', gap, ', its own error', &
             own, ', tol', tol, ', switches', r%switches, b%switches
     end subroutine compare
@@ -419,28 +424,140 @@ contains
         c%m2 = 2.0_wp * c%m1
         c%r2 = 2.0_wp**(1.0_wp / 3) * c%r1
         call compare('pair, linear_history, lever contact, 30 deg', c, 1.0_wp, 30.0_wp, 1.0e-6_wp, .true.)
+        call xgammat_sweep()
+        call damped_matrix()
     end subroutine against_independent
 
+    !> Every contact of a matrix with tangential damping is solved (status HD_OK): the three
+    !> laws, both ends, mindlin and linear_history, x_gammat 0.25, 0.5, 1, 2, mu 0.1, 0.3, 1,
+    !> a wall and two equal spheres, physical and softened to T_c = 780 us (100x) with the
+    !> adapted k_t, tol 1e-12 and 1e-10, 1-89 deg by 4 (26496 contacts).  Before the
+    !> forward-slip start 5382 of them failed with HD_STEP_UNDERFLOW.
+    subroutine damped_matrix()
+        type(hertzdamp_oblique_t) :: c
+        type(hertzdamp_oblique_result) :: r
+        real(wp) :: k, d, kp, meff, ktp
+        integer :: law, iend, im, ix, imu, iw, itc, itl, ia, st, ntot, nfail, maxsw
+        ntot = 0
+        nfail = 0
+        maxsw = 0
+        do law = HD_DAMPING_LINEAR, HD_DAMPING_KUWABARA_KONO
+            do iend = HD_END_OVERLAP, HD_END_FORCE
+                do im = HD_TANGENTIAL_LINEAR_HISTORY, HD_TANGENTIAL_MINDLIN
+                    do ix = 1, 4
+                        do imu = 1, 3
+                            do iw = 0, 1
+                                meff = merge(mass, 0.5_wp * mass, iw == 0)
+                                kp = kphys * merge(1.0_wp, sqrt(0.5_wp), iw == 0)
+                                do itc = 1, 2
+                                    do itl = 1, 2
+                                        do ia = 1, 89, 4
+                                            call hertzdamp_invert(0.5_wp, merge(1.0e-9_wp, 7.8e-4_wp, itc == 1), meff, &
+                                                                  cos(ia * hertzdamp_pi / 180), iend, k, d, st, &
+                                                                  k_phys=kp, law=law)
+                                            call hertzdamp_tangential_kt(im, phys_kt(im), k, kp, ktp, st)
+                                            c = hertzdamp_oblique_t(m1=mass, r1=rad, m2=mass * iw, r2=rad * iw, k=k, &
+                                                                    d=d, law=law, iend=iend, tangential=im, kt=ktp, &
+                                                                    xgammat=0.25_wp * 2**(ix - 1), &
+                                                                    mu=merge(0.1_wp, merge(0.3_wp, 1.0_wp, imu == 2), &
+                                                                             imu == 1))
+                                            call hertzdamp_oblique_impact(c, 1.0_wp, real(ia, wp), r, st, &
+                                                                          tol=merge(1.0e-12_wp, 1.0e-10_wp, itl == 1))
+                                            ntot = ntot + 1
+                                            if (st /= HD_OK) nfail = nfail + 1
+                                            maxsw = max(maxsw, r%switches)
+                                        end do
+                                    end do
+                                end do
+                            end do
+                        end do
+                    end do
+                end do
+            end do
+        end do
+        print '(2x,a,i6,a,i5,a,i3)', 'x_gammat matrix: contacts', ntot, ', failed', nfail, ', most switches', maxsw
+        call s%check(ntot == 26496 .and. nfail == 0, 'x_gammat matrix: every contact solved')
+    end subroutine damped_matrix
+
+    !> Tangential damping x_gammat = 0.5 and 1 with mu = 0.3 (the LAMMPS pour deck's
+    !> mindlin has x_gammat = 1), physical glass, linear law, overlap end, 1 m/s, 5-85 deg:
+    !> mindlin and linear_history, a wall and two equal spheres, against the independent
+    !> solution to 2e-6 (its own error, by halving its step, is up to 1.1e-7; the gap
+    !> measured is at most 4e-9).  Above x_gammat tan(theta) > mu the damping alone exceeds
+    !> the limit at the touch; mindlin then slips forward from the touch (start_mode): the
+    !> independent solution, which starts in the backward slip and resolves the layer with
+    !> its graded first steps, finds the same, with the layer's two switches (backward slip
+    !> -> stick -> forward slip) more than the library.  Before that start the library failed with
+    !> HD_STEP_UNDERFLOW there (from 35 deg at x_gammat 0.5, 20 deg at x_gammat 1; the
+    !> regression case is the wall, mindlin, 0.5, 45 deg of the brief).
+    subroutine xgammat_sweep()
+        type(hertzdamp_oblique_t) :: c
+        type(hertzdamp_oblique_result) :: r
+        integer :: im, iw, ix, ia, st, nl
+        character(len=80) :: label
+        c = glass_wall(0.5_wp, HD_DAMPING_LINEAR, HD_END_OVERLAP, HD_TANGENTIAL_MINDLIN, 0.3_wp, 0.5_wp, &
+                       HD_LEVER_RADIUS)
+        call hertzdamp_oblique_impact(c, 1.0_wp, 45.0_wp, r, st)
+        call s%check(st == HD_OK, 'x_gammat 0.5, mindlin, wall, 45 deg: no HD_STEP_UNDERFLOW')
+        call s%check(r%slide_fraction > 0.0_wp .and. r%switches > 0, 'x_gammat 0.5, 45 deg: slides, then sticks')
+        do im = 1, 2
+            do iw = 0, 1
+                do ix = 1, 2
+                    c = glass_wall(0.5_wp, HD_DAMPING_LINEAR, HD_END_OVERLAP, &
+                                   merge(HD_TANGENTIAL_MINDLIN, HD_TANGENTIAL_LINEAR_HISTORY, im == 1), 0.3_wp, &
+                                   0.5_wp * ix, HD_LEVER_RADIUS)
+                    if (iw == 1) then
+                        c%m2 = c%m1
+                        c%r2 = c%r1
+                    end if
+                    do ia = 5, 85, 10
+                        write (label, '(a,a,a,a,f3.1,a,i2,a)') merge('wall', 'pair', iw == 0), ', ', &
+                            trim(merge('mindlin       ', 'linear_history', im == 1)), ', x_gammat ', 0.5_wp * ix, ', ', ia, ' deg'
+                        nl = 0
+                        if (im == 1 .and. 0.5_wp * ix * tan(ia * hertzdamp_pi / 180) > 0.3_wp) nl = 2
+                        call compare(trim(label), c, 1.0_wp, real(ia, wp), 2.0e-6_wp, layer=nl)
+                    end do
+                end do
+            end do
+        end do
+    end subroutine xgammat_sweep
+
     !> Convergence in the tolerance: the outcome against tol = 1e-14 (glass on a glass wall,
-    !> 1 m/s, mu = 0.3, e = 0.5: four stick-slip switches) falls with the tolerance, within
+    !> 1 m/s, mu = 0.3, e = 0.5: four stick-slip switches; five with x_gammat 0.5 at 45
+    !> deg) falls with the tolerance, within
     !> 100 tol from 1e-8 to 1e-13 (doc/oblique.md's table is this output).
     subroutine tolerance_study()
         type(hertzdamp_oblique_t) :: c
         type(hertzdamp_oblique_result) :: r, ref
         integer :: st, ia, it
         real(wp) :: th, tol, err, prev
-        do ia = 1, 2
+        ! 20 and 45 deg; 45 deg with x_gammat 0.5 (forward slip from the touch, five switches);
+        ! two equal spheres at 25 deg with x_gammat 1 (three switches): its e_t does not
+        ! fall monotonically (7.9e-8 at 1e-11, doc/oblique.md section 2) and its errors at
+        ! 1e-12 and 1e-13 move with the build (4.8e-11 / 7.3e-11 with the test flags, 3.8e-11
+        ! / 4.2e-13 at -O2): only issue 33's 1e-6 at every tol is asserted there
+        do ia = 1, 4
             th = merge(20.0_wp, 45.0_wp, ia == 1)
-            c = glass_wall(0.5_wp, HD_DAMPING_LINEAR, HD_END_OVERLAP, HD_TANGENTIAL_MINDLIN, 0.3_wp, 0.0_wp, &
-                           HD_LEVER_RADIUS, cos(th * hertzdamp_pi / 180))
+            if (ia == 4) th = 25.0_wp
+            c = glass_wall(0.5_wp, HD_DAMPING_LINEAR, HD_END_OVERLAP, HD_TANGENTIAL_MINDLIN, 0.3_wp, &
+                           merge(0.5_wp, 0.0_wp, ia == 3), HD_LEVER_RADIUS, cos(th * hertzdamp_pi / 180))
+            if (ia == 4) then
+                c%m2 = c%m1
+                c%r2 = c%r1
+                c%xgammat = 1.0_wp
+            end if
             call hertzdamp_oblique_impact(c, 1.0_wp, th, ref, st, tol=1.0e-14_wp)
             prev = huge(1.0_wp)
             do it = 8, 13
                 tol = 10.0_wp**(-it)
                 call hertzdamp_oblique_impact(c, 1.0_wp, th, r, st, tol=tol)
                 err = maxval(abs([r%e_n - ref%e_n, r%e_t - ref%e_t, r%vt_ratio - ref%vt_ratio]))
-                print '(2x,a,f4.0,a,es8.1,a,es9.2,a,i5)', 'tolerance study', th, ' deg: tol', tol, ' error', err, &
-                    ' steps', r%steps
+                print '(2x,a,a,f4.0,a,f4.1,a,es8.1,a,es9.2,a,i5)', 'tolerance study', merge(' pair', ' wall', ia == 4), &
+                    th, ' deg, x_gammat', c%xgammat, ': tol', tol, ' error', err, ' steps', r%steps
+                if (ia == 4) then
+                    call s%check(st == HD_OK .and. err <= 1.0e-6_wp, 'tolerance study, pair: error <= 1e-6')
+                    cycle
+                end if
                 call s%check(st == HD_OK .and. err <= 100.0_wp * tol, 'tolerance study: error <= 100 tol')
                 if (mod(it, 2) == 0) then
                     call s%check(err < prev, 'tolerance study: the error falls with the tolerance')
@@ -617,13 +734,15 @@ contains
         es = [0.2_wp, 0.5_wp, 0.9_wp]
         cs = [0.345_wp, 0.208_wp, 0.040_wp]
         tc = 20.0e-6_wp
-        do imu = 1, 2
+        ! frictionless; mu 0.3; mu 0.3 with x_gammat 1 (the LAMMPS pour deck's mindlin:
+        ! HD_STEP_UNDERFLOW from 30 deg before start_mode's forward slip)
+        do imu = 1, 3
             worst = 0.0_wp
             do ie = 1, 3
                 do ia = 0, 5
                     th = 15.0_wp * ia
                     c = glass_wall(es(ie), HD_DAMPING_LINEAR, HD_END_OVERLAP, HD_TANGENTIAL_MINDLIN, &
-                                   0.3_wp * (imu - 1), 0.0_wp, HD_LEVER_CONTACT)
+                                   0.3_wp * min(imu - 1, 1), merge(1.0_wp, 0.0_wp, imu == 3), HD_LEVER_CONTACT)
                     c%m2 = c%m1
                     c%r2 = c%r1
                     c%k = kphys * sqrt(0.5_wp)   ! R* = R/2

@@ -28,6 +28,17 @@ linear_history at 60 degrees 1.1e-3 to 6.2e-4, 1.75), and it is below 1e-2 at ev
 N = 200 (observed 7.5e-3 at most); with tangential_stiffness physical the largest gap is
 above 0.1 (observed 0.36 at N = 100, 0.20-0.21 at N = 200: the too stiff k_t locks the
 contact towards rolling).
+
+Tangential damping (examples/in.obliquedamp: STOCK pair_style granular, two equal physical
+glass spheres at 1 m/s, hertz with velocity damping of e = 0.5, mindlin 8 G*, mu = 0.3):
+with x_gammat tan(theta) > mu the damping alone exceeds the Coulomb limit at the touch and
+the library's reference starts in the forward slip (doc/oblique.md section 1; before, it
+failed with HD_STEP_UNDERFLOW).  LAMMPS's |v_1 - v_2| and omega_1 after the impact converge
+at first order in dt to the library's (hertzdamp_c_oblique_impact, lever R - delta/2) at
+x_gammat 0.5, 45 and 65 degrees, and 1, 25 degrees: the error falls at least 1.8 times from
+dt = 1e-10 to 5e-11 s, and is below 1e-4 (|v|, m/s) and 0.05 rad/s (omega, 180-280 rad/s)
+at 5e-11 (observed, both versions: omega 3.2e-2 -> 1.6e-2 at 45 degrees, 1.2e-2 -> 5.5e-3
+at 65, 2.6e-3 -> 1.3e-3 at 25 with x_gammat 1; |v| at most 2.0e-5 -> 1.0e-5).
 """
 import ctypes
 import math
@@ -134,9 +145,54 @@ def check_tangential(c, tmp):
                 err[(100, "adapted")][10] > 2e-3)
 
 
+def damped_reference(a, xg):
+    """(k, d, kt, |v_1 - v_2|, omega_1) of the physical glass pair of in.obliquedamp from
+    the library's oblique reference."""
+    lib = hdlmp.CApi().lib
+    D, I, P = ctypes.c_double, ctypes.c_int, ctypes.POINTER(ctypes.c_double)
+    ib = lib.hertzdamp_c_invert_bounded
+    ib.argtypes = [D, D, D, D, D, I, P, P]
+    oi = lib.hertzdamp_c_oblique_impact
+    oi.argtypes = [D, D, D, D, D, D, I, I, I, D, D, D, I, D, D, ctypes.POINTER(D * 8)]
+    m, r, y, nu = 2500 * 4 / 3 * math.pi * 1e-9, 1e-3, 63e9, 0.24
+    kphys = 4 / 3 * y / (2 * (1 - nu * nu)) * math.sqrt(r / 2)     # R* = R/2
+    kt = 8 / (4 * (2 - nu) * (1 + nu) / y)
+    k, d, out = D(), D(), (D * 8)()
+    st = ib(0.5, 1e-12, m / 2, 1.0, kphys, 0, ctypes.byref(k), ctypes.byref(d))
+    # linear law, overlap end, mindlin, lever R - delta/2 (LAMMPS's pairs), 1 m/s
+    st2 = oi(m, r, m, r, k.value, d.value, 0, 0, 1, kt, xg, 0.3, 1, 1.0, a, ctypes.byref(out))
+    if st or st2:
+        raise RuntimeError("reference status %d %d" % (st, st2))
+    th = math.radians(a)
+    speed = math.hypot(out[0] * math.cos(th), out[2] * math.sin(th))
+    return k.value, d.value, kt, speed, out[4]
+
+
+def check_damped_start(c, tmp):
+    for a, xg in ((45, 0.5), (65, 0.5), (25, 1.0)):
+        k, d, kt, speed, omega = damped_reference(a, xg)
+        err = {}
+        for dt in (1e-10, 5e-11):
+            out = os.path.join(tmp, "d.dump")
+            hdlmp.lmp(os.path.join(hdlmp.EXAMPLES, "in.obliquedamp"),
+                      {"kn": repr(k / math.sqrt(0.5e-3)), "dn": repr(d), "kt": repr(kt), "xg": xg, "mu": 0.3,
+                       "th": a, "dt": dt, "out": out}, tmp)
+            with open(out) as f:
+                rows = [[float(x) for x in line.split()] for line in f.readlines()[9:]]
+            v = math.hypot(rows[0][1] - rows[1][1], rows[0][2] - rows[1][2])
+            err[dt] = (abs(v - speed), abs(abs(rows[0][3]) - abs(omega)))
+        print("x_gammat %g, %d deg (forward slip from the touch): |LAMMPS - library| in |v|, omega at dt 1e-10, "
+              "5e-11: %.1e %.1e, %.1e %.1e" % (xg, a, err[1e-10][0], err[1e-10][1], err[5e-11][0], err[5e-11][1]))
+        c.check("x_gammat %g %d deg: LAMMPS's omega converges to the library's (dt halved: error / 1.8)" % (xg, a),
+                err[5e-11][1] <= err[1e-10][1] / 1.8, repr(err))
+        c.check("x_gammat %g %d deg: LAMMPS within 1e-4 in |v| and 0.05 rad/s in omega at dt 5e-11" % (xg, a),
+                err[5e-11][0] < 1e-4 and err[5e-11][1] < 0.05, repr(err))
+
+
 def run(c):
     tmp = tempfile.mkdtemp(prefix="hd_lmp_oblique_")
     atexit.register(shutil.rmtree, tmp, True)
+    check_damped_start(c, tmp)
     check_tangential(c, tmp)
     for fname, fr in FRICTION:
         res = {}

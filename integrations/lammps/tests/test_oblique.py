@@ -80,17 +80,28 @@ WALL_MODELS = (("mindlin NULL 0 0.3", "tangential mindlin NULL 0.0 0.3", 1, None
                ("linear_history 2e6 0 0.3", "tangential linear_history 2e6 0.0 0.3", 0, 2e6))
 
 
-def wall_reference(tang=1, kt_lin=None):
-    """The physical contact of in.obliquewall's beads: (vt_ratio, omega R / v_t) per angle
-    from the library's oblique reference (k_phys, d of e = 0.5 at k_phys; mindlin 8 G*, or
-    linear_history with kt_lin)."""
+# the glass beads of the oblique decks: mass [kg], radius [m], Young's modulus [Pa], Poisson ratio
+GLASS = (2500 * 4 / 3 * math.pi * 1e-9, 1e-3, 63e9, 0.24)
+
+
+def reference_calls():
+    """hertzdamp_c_invert_bounded and hertzdamp_c_oblique_impact with their ctypes argument types."""
     lib = hdlmp.CApi().lib
     D, I, P = ctypes.c_double, ctypes.c_int, ctypes.POINTER(ctypes.c_double)
     ib = lib.hertzdamp_c_invert_bounded
     ib.argtypes = [D, D, D, D, D, I, P, P]
     oi = lib.hertzdamp_c_oblique_impact
     oi.argtypes = [D, D, D, D, D, D, I, I, I, D, D, D, I, D, D, ctypes.POINTER(D * 8)]
-    m, r, y, nu = 2500 * 4 / 3 * math.pi * 1e-9, 1e-3, 63e9, 0.24
+    return ib, oi
+
+
+def wall_reference(tang=1, kt_lin=None):
+    """The physical contact of in.obliquewall's beads: (vt_ratio, omega R / v_t) per angle
+    from the library's oblique reference (k_phys, d of e = 0.5 at k_phys; mindlin 8 G*, or
+    linear_history with kt_lin)."""
+    ib, oi = reference_calls()
+    D = ctypes.c_double
+    m, r, y, nu = GLASS
     kphys = 4 / 3 * y / (2 * (1 - nu * nu)) * math.sqrt(r)
     kt = 8 / (4 * (2 - nu) * (1 + nu) / y) if kt_lin is None else kt_lin
     ref = {}
@@ -148,13 +159,9 @@ def check_tangential(c, tmp):
 def damped_reference(a, xg):
     """(k, d, kt, |v_1 - v_2|, omega_1) of the physical glass pair of in.obliquedamp from
     the library's oblique reference."""
-    lib = hdlmp.CApi().lib
-    D, I, P = ctypes.c_double, ctypes.c_int, ctypes.POINTER(ctypes.c_double)
-    ib = lib.hertzdamp_c_invert_bounded
-    ib.argtypes = [D, D, D, D, D, I, P, P]
-    oi = lib.hertzdamp_c_oblique_impact
-    oi.argtypes = [D, D, D, D, D, D, I, I, I, D, D, D, I, D, D, ctypes.POINTER(D * 8)]
-    m, r, y, nu = 2500 * 4 / 3 * math.pi * 1e-9, 1e-3, 63e9, 0.24
+    ib, oi = reference_calls()
+    D = ctypes.c_double
+    m, r, y, nu = GLASS
     kphys = 4 / 3 * y / (2 * (1 - nu * nu)) * math.sqrt(r / 2)     # R* = R/2
     kt = 8 / (4 * (2 - nu) * (1 + nu) / y)
     k, d, out = D(), D(), (D * 8)()

@@ -205,25 +205,10 @@ contains
     !> The node values are not hashed (the per-contact check reads 10 doubles, not 240).
     pure integer(int64) function phase_marker_of(pair) result(bits)
         type(hertzdamp_pair_t), intent(in) :: pair
-        integer(int64) :: h
-        h = ieor(ieor(ieor(bits_of(pair%marker), phase_key), ieor(ishftc(bits_of(pair%phase(2)), 7), &
-                 ishftc(bits_of(pair%phase(3)), 14))), ieor(ieor(ishftc(bits_of(pair%phase(4)), 21), &
-                 ishftc(bits_of(pair%phase(5)), 28)), ieor(ishftc(bits_of(pair%phase(6)), 35), &
-                 ishftc(bits_of(pair%phase(7)), 42))))
-        h = ieor(h, ieor(ieor(ishftc(bits_of(pair%phase(8)), 49), ishftc(bits_of(pair%phase(9)), 56)), &
-                         ishftc(bits_of(pair%phase(10)), 3)))
-        h = ieor(h, shiftr(h, 29))
-        bits = ior(iand(ieor(h, shiftr(h, 52)), fraction_bits), one_bits)
+        integer(int64) :: phase_bits
+        include 'hertzdamp_phase_marker.inc'
+        bits = phase_bits
     end function phase_marker_of
-
-    !> The per-contact check of a pair's table: its marker matches and it has nodes (4
-    !> halves of at most 45 nodes; phase_eval clamps every index into the block).
-    pure logical function phase_ready(pair) result(ok)
-        type(hertzdamp_pair_t), intent(in) :: pair
-        ok = ieor(bits_of(pair%phase(1)), phase_marker_of(pair)) == 0_int64 .and. &
-             pair%phase(2) == 4.0_wp .and. pair%phase(3) >= 4.0_wp .and. &
-             pair%phase(3) <= real(hertzdamp_phase_half_max, wp)
-    end function phase_ready
 
     ! phase_eval: the per-contact lookup of the table, one text for this module (inlined into
     ! the entry points) and hertzdamp_phase (the check of the table at init)
@@ -286,32 +271,18 @@ contains
         real(wp), intent(out) :: k                   !! Hertz stiffness [N m^-3/2]
         real(wp), intent(out) :: d                   !! damping coefficient [kg s^-1 m^-q]
         integer, intent(out) :: status               !! HD_OK or an error code
+        real(wp) :: k_, d_
         logical :: ok
-        call kd_phase_usual(pair, tc, m, u, k_phys, phi, k, d, ok)
+        ! the usual contact inline (hertzdamp_phase_fast.inc), every other one out of line
+        include 'hertzdamp_phase_fast.inc'
         if (ok) then
+            k = k_
+            d = d_
             status = HD_OK
         else
             call kd_phase_rest(pair, tc, m, u, k_phys, phi, k, d, status)
         end if
     end subroutine hertzdamp_pair_kd_phase
-
-    !> The usual contact of the phase form: a valid pair with its table, phi in (0, 1], T_c,
-    !> m, u in the direct range and no bound met: k and d, and true.  (Inlined into both
-    !> entry points; every other contact takes kd_phase_rest, which gives the same bits.)
-    pure subroutine kd_phase_usual(pair, tc, m, u, k_phys, phi, k, d, ok)
-        type(hertzdamp_pair_t), intent(in) :: pair
-        real(wp), intent(in) :: tc, m, u, k_phys, phi
-        real(wp), intent(out) :: k, d
-        logical, intent(out) :: ok
-        real(wp) :: a, tau
-        k = 0.0_wp
-        d = 0.0_wp
-        ok = header_valid(pair) .and. phase_ready(pair) .and. phi > 0.0_wp .and. phi <= 1.0_wp .and. direct(tc, m, u)
-        if (.not. ok) return
-        call phase_eval(pair%phase, phi, a, tau)
-        call direct_kd(int(pair%law), a, tau, tc, m, u, k, d)
-        ok = k_phys <= 0.0_wp .or. (k_phys <= huge(k_phys) .and. k_phys > k)
-    end subroutine kd_phase_usual
 
     !> hertzdamp_pair_kd_phase for every contact: the statuses, the bound, the logarithmic path.
     pure subroutine kd_phase_rest(pair, tc, m, u, k_phys, phi, k, d, status)
@@ -354,15 +325,21 @@ contains
         logical :: ok
         status = HD_BAD_ARGUMENT
         if (.not. (present(p) .and. present(k) .and. present(d))) return
-        call kd_phase_usual(p, tc, m, u, k_phys, phi, k_, d_, ok)
+        ! the usual contact inline, straight-line (hertzdamp_phase_fast.inc: no call on its
+        ! way), every other one out of line (kd_phase_rest, the same bits for a usual one)
+        associate (pair => p)
+            include 'hertzdamp_phase_fast.inc'
+        end associate
         if (ok) then
+            k = k_
+            d = d_
             status = HD_OK
-        else
-            call kd_phase_rest(p, tc, m, u, k_phys, phi, k_, d_, st)
-            status = int(st, c_int)
+            return
         end if
+        call kd_phase_rest(p, tc, m, u, k_phys, phi, k_, d_, st)
         k = k_
         d = d_
+        status = int(st, c_int)
     end function hertzdamp_c_pair_kd_phase
 
     !> A valid pair of the given constants (the caller has checked them).  steps is kept
@@ -383,17 +360,9 @@ contains
     !> The marker that a valid pair with these seven header fields carries (bit pattern).
     pure integer(int64) function marker_of(pair) result(bits)
         type(hertzdamp_pair_t), intent(in) :: pair
-        integer(int64) :: a, t, c, s, l, n, o, h
-        a = bits_of(pair%alpha)
-        t = bits_of(pair%tau_c)
-        c = bits_of(pair%alpha_cont)
-        s = bits_of(pair%steps)
-        l = bits_of(pair%law)
-        n = bits_of(pair%iend)
-        o = bits_of(pair%host)
-        h = ieor(ieor(ieor(a, ishftc(a, 51)), ieor(t, ishftc(t, 46))), ieor(ieor(c, ishftc(c, 24)), ieor(s, ishftc(s, 48))))
-        h = ieor(h, ieor(ieor(ieor(l, ishftc(l, 42)), ieor(n, ishftc(n, 21))), ieor(o, ishftc(o, 35))))
-        bits = ior(iand(ieor(h, shiftr(h, 52)), fraction_bits), one_bits)
+        integer(int64) :: marker_bits
+        include 'hertzdamp_pair_marker.inc'
+        bits = marker_bits
     end function marker_of
 
     !> The bit pattern of a double.
@@ -416,14 +385,9 @@ contains
     !> a field is negative, that of a difference `above` when it exceeds its bound.
     pure logical function header_valid(pair) result(ok)
         type(hertzdamp_pair_t), intent(in) :: pair
-        integer(int64) :: bad
-        bad = ior(ior(ior(bits_of(pair%alpha), bits_of(pair%tau_c)), ior(bits_of(pair%alpha_cont), bits_of(pair%steps))), &
-                  ior(ior(bits_of(pair%law), bits_of(pair%iend)), bits_of(pair%host)))
-        bad = ior(bad, ior(ior(above(pair%alpha, pair_alpha_max), above(pair%tau_c, pair_tau_max)), &
-                           ior(above(pair%alpha_cont, pair_alpha_max), above(pair%steps, hertzdamp_host_steps_max))))
-        bad = ior(bad, ior(ior(above(pair%law, real(hertzdamp_max_law, wp)), above(pair%iend, 1.0_wp)), &
-                           ior(above(pair%host, real(hertzdamp_max_host, wp)), bits_of(pair%tau_c) - 1_int64)))
-        ok = ior(shiftr(bad, 63), ieor(bits_of(pair%marker), marker_of(pair))) == 0_int64
+        logical :: header_ok
+        include 'hertzdamp_pair_header.inc'
+        ok = header_ok
     end function header_valid
 
     !> HD_OK for a pair set by hertzdamp_pair_init whose header was not changed since (the

@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
-# The per-contact cost of hertzdamp_c_pair_kd called from a C host against the bare
-# formula, in one process (tools/pair_kd_speed.c says what it times): builds the core
+# The per-contact cost of hertzdamp_c_pair_kd and of the onset-phase form
+# hertzdamp_c_pair_kd_phase called from a C host against the bare formula, in one process
+# (tools/pair_kd_speed.c says what it times): builds the core
 # library of this tree with the Makefile's RELEASE_FLAGS (a temporary fpm package, as
 # tools/core_build_time.sh) and the C driver with gcc -O2 at the same -march, then runs
 # the driver RUNS times (default 3), each TURNS turns (default 101).  SRC=dir: another

@@ -24,8 +24,10 @@ done
 # the generated kernels: one named procedure per inverse kernel; their one include is
 # the k, d formulas (src/hertzdamp_kd_formula.inc, issue 31: one source instead of a copy
 # kept equal), which hertzdamp_pair includes too; the kernels call direct_kd six times and
-# direct_kd is defined nowhere else.  (The other include of src/, the onset-phase lookup
-# hertzdamp_phase_eval.inc, serves hertzdamp_pair and hertzdamp_phase.)
+# direct_kd is defined nowhere else.  (The other includes of src/: the onset-phase lookup
+# hertzdamp_phase_eval.inc serves hertzdamp_pair and hertzdamp_phase; the statement texts
+# of the phase form's per-contact path, hertzdamp_phase_fast.inc and the ones it includes,
+# serve hertzdamp_pair, doc/host-schemes.md section 6.3.)
 incs() { grep -hiE "^ *include +'" "$@" | sed -E "s/^ *include +'([^']*)'.*/\1/I" | sort -u | xargs; }
 if [ "$(grep -c '^    pure subroutine kernel_inverse_' src/hertzdamp_fit_kernels.f90)" -eq 6 ] &&
    [ "$(incs src/hertzdamp_fit_kernels.f90)" = "hertzdamp_kd_formula.inc" ] &&
@@ -34,8 +36,12 @@ if [ "$(grep -c '^    pure subroutine kernel_inverse_' src/hertzdamp_fit_kernels
    [ "$(grep -c 'call direct_kd(' src/hertzdamp_fit_kernels.f90)" -eq 6 ] &&
    [ "$(grep -il 'subroutine direct_kd' src/* | xargs -n1 basename)" = "hertzdamp_kd_formula.inc" ]; then
   p=$((p + 1)); else echo "FAIL sync_fit: kernels not one procedure each, or not the one k, d formula include"; f=$((f + 1)); fi
-# every include file of src/ is included by a module of src/ (none left over)
-left=""; for inc in src/*.inc; do grep -qiE "^ *include +'$(basename "$inc")'" src/*.f90 || left="$left $inc"; done
+# every include file of src/ is included by a module of src/ or by another include file of
+# src/ (a statement text the per-contact path nests; none left over)
+left=""; for inc in src/*.inc; do
+  others=$(ls src/*.f90 src/*.inc | grep -vxF "$inc")
+  grep -qiE "^ *include +'$(basename "$inc")'" $others || left="$left $inc"
+done
 if [ -z "$left" ]; then p=$((p + 1)); else echo "FAIL sync_fit: include files no module includes:$left"; f=$((f + 1)); fi
 # header of the CSV names the generator and the reference tolerance
 if grep -q '^# .*gen/fit/gen_fit.f90' data/fit_coefficients.csv && grep -q 'tolerance 1.000E-15' data/fit_coefficients.csv; then

@@ -83,10 +83,14 @@ $(VENV)/.python-modules: $(FPM) Makefile
 # later fpm write one.  A fresh clone is unaffected; `make install` (CMake) does not
 # need this.  fpm's dependency cache (build/cache.toml) names the packages by path: one
 # that names a package directory no longer there (packages/scene became packages/dem)
-# stops fpm, so it is dropped then (fpm writes it anew).
+# stops fpm, so it is dropped then (fpm writes it anew).  fpm does not recompile a
+# source when only a file it INCLUDEs changed (src/*.inc): when one is newer than the
+# stamp build/.inc-stamp, the core's objects are dropped (recompiled, about a minute).
 STALE_ARCHIVES = rm -f build/gfortran_*/hertzdamp*/libhertzdamp*.a; \
   if [ -f build/cache.toml ]; then for d in $$(sed -n 's/^proj-dir = "\(.*\)"$$/\1/p' build/cache.toml); do \
-    [ -f "$$d/fpm.toml" ] || { rm -f build/cache.toml; break; }; done; fi
+    [ -f "$$d/fpm.toml" ] || { rm -f build/cache.toml; break; }; done; fi; \
+  if [ -d build ] && [ -n "$$(find src -name '*.inc' -newer build/.inc-stamp 2>/dev/null; [ -f build/.inc-stamp ] || echo new)" ]; then \
+    rm -f build/gfortran_*/hertzdamp/src_*.o; touch build/.inc-stamp; fi
 
 # The program needs the Debian packages and fpm only (fortitude and ford are for
 # lint and docs).

@@ -90,6 +90,8 @@ module hertzdamp_host
         real(wp) :: tau = 0.0_wp
         integer :: sig(3) = 0
         integer :: status = HD_OK
+        !> the overlap and the (unclipped) force at the probe step asked for (huge: not reached)
+        real(wp) :: gz = huge(1.0_wp), gf = huge(1.0_wp)
     end type run_t
 
     !> A piece (a, b) of the phase interval on which the collision has one signature;
@@ -151,6 +153,16 @@ module hertzdamp_host
     integer, parameter :: min_steps_window = 3
     !> Largest N that hertzdamp_host_min_steps tries.
     integer, parameter :: n_search_max = 1024
+    !> The N up to which hertzdamp_host_min_steps keeps its solves (its window and the
+    !> continuation's N + 1 beyond n_search_max included).
+    integer, parameter :: n_cache = n_search_max + min_steps_window + 4
+
+    !> hertzdamp_host_min_steps's record of the solves by N (status -1: not done yet): the
+    !> status of first_solves and its solution, and the status of hertzdamp_host_solve.
+    type :: steps_cache_t
+        integer :: first_st(n_cache) = -1, solve_st(n_cache) = -1
+        real(wp) :: first_x(2, n_cache) = 0.0_wp
+    end type steps_cache_t
 
 contains
 
@@ -328,19 +340,23 @@ contains
     end subroutine continuous
 
     !> The discrete collision of a host (arguments checked by the caller).
-    pure subroutine run(alpha, h, phi, law, iend, host, r)
+    !> probe: a step whose overlap and force are kept in r%gz, r%gf (breakpoint).
+    pure subroutine run(alpha, h, phi, law, iend, host, r, probe)
         real(wp), intent(in) :: alpha, h, phi
         integer, intent(in) :: law, iend, host
         type(run_t), intent(out) :: r
-        integer :: nmax
+        integer, intent(in), optional :: probe
+        integer :: nmax, m
         nmax = int(contact_time_max / h) + 16
+        m = 0
+        if (present(probe)) m = probe
         select case (host)
         case (HD_HOST_MFIX_AB2)
-            call run_ab2(alpha, h, phi, law, iend, nmax, r)
+            call run_ab2(alpha, h, phi, law, iend, nmax, m, r)
         case (HD_HOST_VERLET)
-            call run_verlet(alpha, h, phi, law, iend, nmax, r)
+            call run_verlet(alpha, h, phi, law, iend, nmax, m, r)
         case default
-            call run_symplectic(alpha, h, phi, law, iend, host == HD_HOST_LAMMPS_PHASE, nmax, r)
+            call run_symplectic(alpha, h, phi, law, iend, host == HD_HOST_LAMMPS_PHASE, nmax, m, r)
         end select
         if (r%status == HD_OK .and. .not. (r%e > 0.0_wp)) r%status = HD_NO_REBOUND
         if (r%status /= HD_OK) then
@@ -379,9 +395,9 @@ contains
     !> w_n that moved the body there, then w_(n+1) = w_n - h F_n, z_(n+1) = z_n + h w_(n+1).
     !> phase: the plugin's correction at the onset step and at the step detecting the
     !> overlap end (hertzdamp_host_phase_force).
-    pure subroutine run_symplectic(alpha, h, phi, law, iend, phase, nmax, r)
+    pure subroutine run_symplectic(alpha, h, phi, law, iend, phase, nmax, m, r)
         real(wp), intent(in) :: alpha, h, phi
-        integer, intent(in) :: law, iend, nmax
+        integer, intent(in) :: law, iend, nmax, m
         logical, intent(in) :: phase
         type(run_t), intent(inout) :: r
         real(wp) :: z, w, f, fa, zp, fp, frac
@@ -391,6 +407,7 @@ contains
         zp = 0.0_wp
         fp = 0.0_wp
         do n = 1, nmax
+            if (n == m) r%gz = z
             if (n > 1 .and. .not. (z > 0.0_wp)) then
                 ! overlap gone at step n: no force; the plugin's release correction
                 frac = zp / (zp - z)
@@ -399,6 +416,7 @@ contains
                 return
             end if
             f = z * sqrt(z) + alpha * zq(z, law) * w
+            if (n == m) r%gf = f
             if (iend == HD_END_FORCE .and. .not. (f > 0.0_wp)) then
                 ! force end (n > 1: the first force is positive): clipped from here on
                 call finish_run(h, phi, n, 1, fp / (fp - f), w, n - 1, r)
@@ -419,9 +437,9 @@ contains
     !> before the contact).  The release is the first step without overlap (or with a
     !> clipped force); the free-flight speed is final once a_n = a_(n-1) = 0.  An overlap
     !> that comes back after it was gone (no separation): HD_NO_REBOUND.
-    pure subroutine run_ab2(alpha, h, phi, law, iend, nmax, r)
+    pure subroutine run_ab2(alpha, h, phi, law, iend, nmax, m, r)
         real(wp), intent(in) :: alpha, h, phi
-        integer, intent(in) :: law, iend, nmax
+        integer, intent(in) :: law, iend, nmax, m
         type(run_t), intent(inout) :: r
         real(wp) :: z, v, vn, a, aold, f, fa, zp, fp, frac
         integer :: n, nrel, kind, nf
@@ -439,12 +457,14 @@ contains
         released = .false.
         gone = .false.
         do n = 1, nmax
+            if (n == m) r%gz = z
             if (z > 0.0_wp) then
                 if (gone) then
                     r%status = HD_NO_REBOUND
                     return
                 end if
                 f = z * sqrt(z) + alpha * zq(z, law) * v
+                if (n == m) r%gf = f
                 fa = f
                 if (iend == HD_END_FORCE) fa = max(f, 0.0_wp)
                 if (.not. released .and. iend == HD_END_FORCE .and. .not. (f > 0.0_wp)) then
@@ -487,9 +507,9 @@ contains
     !> corrections of the onset step (the part of the step in contact, the Hertz and
     !> damping trapezoid errors g_p), of the overlap end (same, with the last force) and of
     !> the force end (the force zero on a model of its step).  The engine's end instants.
-    pure subroutine run_verlet(alpha, h, phi, law, iend, nmax, r)
+    pure subroutine run_verlet(alpha, h, phi, law, iend, nmax, m, r)
         real(wp), intent(in) :: alpha, h, phi
-        integer, intent(in) :: law, iend, nmax
+        integer, intent(in) :: law, iend, nmax, m
         type(run_t), intent(inout) :: r
         real(wp) :: q, z, v, vh, vp, acc, acc_prev, f, dv, fh, fd, zl, vl, fl, s, us, jn
         integer :: n, kind
@@ -514,6 +534,7 @@ contains
             vh = v + 0.5_wp * h * acc
             z = z + h * vh
             vp = vh + 0.5_wp * h * acc + 0.5_wp * h * (acc - acc_prev)
+            if (n == m) r%gz = z
             dv = 0.0_wp
             f = 0.0_wp
             kind = -1
@@ -534,6 +555,7 @@ contains
                 kind = 0
             else
                 f = z * sqrt(z) + alpha * zq(z, law) * vp
+                if (n == m) r%gf = f
                 if (iend == HD_END_FORCE .and. .not. (f > 0.0_wp)) then
                     s = force_zero(alpha, law, zl, vl, z, vp)
                     dv = -fl * (s - 1.0_wp) * 0.5_wp * h
@@ -712,7 +734,7 @@ contains
         pc = piece_t(0.0_wp, 1.0_wp, ps(1), rs(1)%sig)
         do j = 2, n_coarse
             if (any(rs(j)%sig /= rs(j - 1)%sig)) then
-                call breakpoint(cx, ps(j - 1), rs(j - 1)%sig, ps(j), b, acc, status)
+                call breakpoint(cx, ps(j - 1), rs(j - 1)%sig, ps(j), rs(j)%sig, b, acc, status)
                 if (status /= HD_OK) return
                 pc%b = b
                 call push(pieces, np, pc, status)
@@ -729,7 +751,7 @@ contains
             if (bad) then
                 ! a phase inside the piece with another signature: split at the breakpoint
                 ! between it and the piece's own phase, and do both parts again
-                call breakpoint(cx, pc%pref, pc%sig, xbad, b, acc, status)
+                call breakpoint(cx, pc%pref, pc%sig, xbad, sbad, b, acc, status)
                 if (status /= HD_OK) return
                 if (xbad > pc%pref) then
                     call push(pieces, np, piece_t(pc%a, b, pc%pref, pc%sig), status)
@@ -791,17 +813,18 @@ contains
     end subroutine proxy_stats
 
     !> One collision at phase p, its values kept for the min and max.
-    pure subroutine sample(cx, p, r, acc)
+    pure subroutine sample(cx, p, r, acc, probe)
         type(ctx_t), intent(in) :: cx
         real(wp), intent(in) :: p
         type(run_t), intent(out) :: r
         type(sums_t), intent(inout) :: acc
+        integer, intent(in), optional :: probe
         acc%runs = acc%runs + 1
         if (acc%runs > max_runs) then
             r%status = HD_NO_CONVERGENCE
             return
         end if
-        call run(cx%alpha, cx%h, p, cx%law, cx%iend, cx%host, r)
+        call run(cx%alpha, cx%h, p, cx%law, cx%iend, cx%host, r, probe)
         if (r%status == HD_OK) then
             acc%e_min = min(acc%e_min, r%e)
             acc%e_max = max(acc%e_max, r%e)
@@ -824,38 +847,95 @@ contains
         end if
     end subroutine push
 
-    !> The breakpoint b between the phases p1 (signature s1) and p2 (another signature),
-    !> to round-off: bisection on the signature (whatever differs from s1 counts as the
-    !> other side, so with several breakpoints between them the one found is one of them).
-    pure subroutine breakpoint(cx, p1, s1, p2, b, acc, status)
+    !> The breakpoint b between the phases p1 (signature s1) and p2 (another signature, s2),
+    !> to round-off: the bracket moves by the signature (whatever differs from s1 counts as
+    !> the other side, so with several breakpoints between them the one found is one of
+    !> them).  Its points: the Illinois method on the release indicator (probe_of) where it
+    !> has opposite signs at the ends, else (and once it disagrees with a signature)
+    !> bisection.
+    pure subroutine breakpoint(cx, p1, s1, p2, s2, b, acc, status)
         type(ctx_t), intent(in) :: cx
         real(wp), intent(in) :: p1, p2
-        integer, intent(in) :: s1(3)
+        integer, intent(in) :: s1(3), s2(3)
         real(wp), intent(out) :: b
         type(sums_t), intent(inout) :: acc
         integer, intent(out) :: status
-        real(wp) :: x1, x2, xm
-        integer :: it
+        real(wp) :: x1, x2, xm, g1, g2, gm
+        integer :: it, m, which, side
+        logical :: secant, one
         type(run_t) :: rm
         x1 = p1
         x2 = p2
         status = HD_OK
+        call probe_of(s1, s2, m, which)
+        secant = m > 0
+        g1 = 0.0_wp
+        g2 = 0.0_wp
+        gm = 0.0_wp
+        if (secant) then
+            call sample(cx, x1, rm, acc, m)
+            g1 = indicator(rm)
+            call sample(cx, x2, rm, acc, m)
+            g2 = indicator(rm)
+            secant = abs(g1) < huge(1.0_wp) .and. abs(g2) < huge(1.0_wp) .and. ((g1 > 0.0_wp) .neqv. (g2 > 0.0_wp))
+        end if
+        side = 0
         do it = 1, 200
             xm = 0.5_wp * (x1 + x2)
             if (xm == x1 .or. xm == x2) exit
-            call sample(cx, xm, rm, acc)
+            if (abs(x2 - x1) <= 4.0_wp * spacing(max(abs(x1), abs(x2))) .and. secant) exit
+            if (secant) then
+                xm = x1 + (x2 - x1) * (g1 / (g1 - g2))
+                if (.not. (xm > min(x1, x2) .and. xm < max(x1, x2))) xm = 0.5_wp * (x1 + x2)
+            end if
+            call sample(cx, xm, rm, acc, m)
             if (rm%status /= HD_OK) then
                 status = rm%status
                 exit
             end if
-            if (all(rm%sig == s1)) then
+            one = all(rm%sig == s1)
+            if (secant) then
+                gm = indicator(rm)
+                ! the indicator's side must be the signature's
+                secant = abs(gm) < huge(1.0_wp) .and. ((gm > 0.0_wp) .eqv. merge(g1 > 0.0_wp, g2 > 0.0_wp, one))
+            end if
+            if (one) then
                 x1 = xm
+                g1 = gm
+                if (side == 1) g2 = 0.5_wp * g2
+                side = 1
             else
                 x2 = xm
+                g2 = gm
+                if (side == 2) g1 = 0.5_wp * g1
+                side = 2
             end if
         end do
         b = 0.5_wp * (x1 + x2)
+    contains
+        pure real(wp) function indicator(r)
+            type(run_t), intent(in) :: r
+            indicator = merge(r%gz, r%gf, which == 0)
+        end function indicator
     end subroutine breakpoint
+
+    !> The step m and quantity (which: 0 the overlap, 1 the force there) whose sign tells the
+    !> signatures s1 and s2 apart next to a breakpoint between them: the earlier release
+    !> step and its kind's quantity (the overlap for verlet's kind 2); at one release step,
+    !> an overlap release against a force clip, the overlap.  m = 0: none (bisection).
+    pure subroutine probe_of(s1, s2, m, which)
+        integer, intent(in) :: s1(3), s2(3)
+        integer, intent(out) :: m, which
+        m = 0
+        which = 0
+        if (s1(1) /= s2(1)) then
+            m = min(s1(1), s2(1))
+            which = merge(s1(2), s2(2), s1(1) < s2(1))
+            if (which == 2) which = 0
+        else if (s1(2) /= s2(2) .and. min(s1(2), s2(2)) == 0 .and. max(s1(2), s2(2)) == 1) then
+            m = s1(1)
+        end if
+    end subroutine probe_of
 
     !> tanh-sinh quadrature of e, tau_c, (e - e_ref)^2 and (tau_c - t_ref)^2 over one
     !> piece, levels of step 2^-l until two successive levels of e and tau_c agree to
@@ -1507,22 +1587,31 @@ contains
         integer, intent(out) :: status   !! HD_OK or the failure
         integer :: lo, hi, mid, st, n, k
         real(wp) :: a0, t0
+        type(steps_cache_t) :: c
         n_min = 0
-        ! the bad-input statuses first, at N = 2 (a valid N)
-        call try(2, .false., st)
+        ! the first solves and the solves by N, computed once (unknown: -1): the solve at N
+        ! is first_solves at N, else continuation from the first solves at N + 1, N - 1
+        ! (hertzdamp_host_solve, whose steps are known valid here)
+        ! the bad-input statuses first
+        status = check_common(law, iend, host)
+        if (status == HD_OK) call hertzdamp_fit_inverse(e, iend, a0, t0, status, law)
+        if (status /= HD_OK) return
+        if (host == HD_HOST_NONE) then
+            n_min = 2
+            return
+        end if
+        call try(c, 2, .false., st)
         if (st == HD_OK) then
             n_min = 2
             status = HD_OK
             return
         end if
         status = st
-        if (st /= HD_HOST_UNREACHABLE) return
-        call hertzdamp_fit_inverse(e, iend, a0, t0, st, law)
         ! the candidate: the fewest N the proxy search reaches
         lo = 2
         hi = 3
         do
-            call try(hi, .true., st)
+            call try(c, hi, .true., st)
             if (st == HD_OK) exit
             lo = hi
             if (hi >= n_search_max) exit
@@ -1530,7 +1619,7 @@ contains
         end do
         do while (hi - lo > 1)
             mid = (lo + hi) / 2
-            call try(mid, .true., st)
+            call try(c, mid, .true., st)
             if (st == HD_OK) then
                 hi = mid
             else
@@ -1544,7 +1633,7 @@ contains
         k = 0
         do while (k <= min_steps_window)
             if (k == 0) then
-                call first_success(n, st)
+                call first_success(c, n, st)
                 if (st /= HD_OK) then
                     status = HD_HOST_UNREACHABLE
                     return
@@ -1552,7 +1641,7 @@ contains
                 k = 1
                 cycle
             end if
-            call try(n + k, .false., st)
+            call try(c, n + k, .false., st)
             if (st == HD_OK) then
                 k = k + 1
             else
@@ -1561,7 +1650,7 @@ contains
             end if
         end do
         do while (n > 2)
-            call try(n - 1, .false., st)
+            call try(c, n - 1, .false., st)
             if (st /= HD_OK) exit
             n = n - 1
         end do
@@ -1571,7 +1660,8 @@ contains
         !> The least whole nn >= nn on entry at which the solve succeeds, if the solve fails
         !> at the one before (galloping up by 1, 2, 4, .. from nn, then bisection between the
         !> last failure and the first success); st = HD_HOST_UNREACHABLE beyond n_search_max.
-        pure subroutine first_success(nn, st)
+        pure subroutine first_success(c, nn, st)
+            type(steps_cache_t), intent(inout) :: c
             integer, intent(inout) :: nn
             integer, intent(out) :: st
             integer :: bad, good, stride, m
@@ -1579,7 +1669,7 @@ contains
                 st = HD_HOST_UNREACHABLE
                 return
             end if
-            call try(nn, .false., st)
+            call try(c, nn, .false., st)
             if (st == HD_OK) return
             bad = nn
             stride = 1
@@ -1589,14 +1679,14 @@ contains
                     return
                 end if
                 good = min(bad + stride, n_search_max)
-                call try(good, .false., st)
+                call try(c, good, .false., st)
                 if (st == HD_OK) exit
                 bad = good
                 stride = 2 * stride
             end do
             do while (good - bad > 1)
                 m = (bad + good) / 2
-                call try(m, .false., st)
+                call try(c, m, .false., st)
                 if (st == HD_OK) then
                     good = m
                 else
@@ -1607,20 +1697,59 @@ contains
             st = HD_OK
         end subroutine first_success
 
-        !> The solve at nn (proxy: the bracketing solve on the proxy means only).
-        pure subroutine try(nn, proxy, st)
+        !> The solve at nn (proxy: the bracketing solve on the proxy means only), the same
+        !> as hertzdamp_host_solve's from the cached first solves.
+        pure subroutine try(c, nn, proxy, st)
+            type(steps_cache_t), intent(inout) :: c
             integer, intent(in) :: nn
             logical, intent(in) :: proxy
             integer, intent(out) :: st
-            real(wp) :: a, t, x(2)
+            integer, parameter :: shifts(2) = [1, -1]
+            real(wp) :: x(2), xn(2)
             type(hertzdamp_host_stats) :: s
+            integer :: i, sn
             if (proxy) then
                 call nested_solve(ctx_t(0.0_wp, 0.0_wp, law, iend, host), e, real(nn, wp), a0, t0 / real(nn, wp), x, s, &
                                   st)
-            else
-                call hertzdamp_host_solve(e, law, iend, host, real(nn, wp), a, t, s, st)
+                return
             end if
+            if (nn <= n_cache) then
+                st = c%solve_st(nn)
+                if (st >= 0) return
+            end if
+            call first_at(c, nn, x, st)
+            do i = 1, size(shifts)
+                if (st == HD_OK) exit
+                sn = nn + shifts(i)
+                if (sn < nint(hertzdamp_host_steps_min)) cycle
+                call first_at(c, sn, xn, st)
+                if (st == HD_OK) call newton_solve(ctx_t(0.0_wp, 0.0_wp, law, iend, host), e, real(nn, wp), xn, &
+                                                   polish_means, x, s, st)
+            end do
+            if (st /= HD_OK) st = HD_HOST_UNREACHABLE
+            if (nn <= n_cache) c%solve_st(nn) = st
         end subroutine try
+
+        !> first_solves at nn (cached).
+        pure subroutine first_at(c, nn, x, st)
+            type(steps_cache_t), intent(inout) :: c
+            integer, intent(in) :: nn
+            real(wp), intent(out) :: x(2)
+            integer, intent(out) :: st
+            type(hertzdamp_host_stats) :: s
+            if (nn <= n_cache) then
+                if (c%first_st(nn) >= 0) then
+                    st = c%first_st(nn)
+                    x = c%first_x(:, nn)
+                    return
+                end if
+            end if
+            call first_solves(ctx_t(0.0_wp, 0.0_wp, law, iend, host), e, real(nn, wp), a0, t0, x, s, st)
+            if (nn <= n_cache) then
+                c%first_st(nn) = st
+                c%first_x(:, nn) = x
+            end if
+        end subroutine first_at
     end subroutine hertzdamp_host_min_steps
 
     !> At a fixed dimensionless step h (a deck's k and dt fix t* and h), the damping alpha >= 0

@@ -32,8 +32,9 @@
 !> Phase statistics: e(phi) and tau_c(phi) are smooth between breakpoints where the
 !> release (or the clip) moves to another step, with algebraic endpoint singularities
 !> (powers phi^q, phi^(3/2) of a tiny first or last overlap).  The breakpoints are found
-!> to round-off (bisection on the discrete trajectory's signature: release step, kind,
-!> number of force steps) and each piece is integrated by tanh-sinh quadrature, which
+!> to round-off (the bracket moved by the discrete trajectory's signature: release step,
+!> kind, number of force steps; its points by the Illinois method on the overlap or force
+!> at the release step, else bisection) and each piece is integrated by tanh-sinh quadrature, which
 !> converges double-exponentially despite endpoint singularities.
 !>
 !> Everything is pure, keeps no state and returns a status (hertzdamp_status).

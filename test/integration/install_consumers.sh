@@ -47,8 +47,26 @@ for f in lib/libhertzdamp.a lib/libhertzdamp.so lib/libhertzdamp.so.0 include/he
 done
 check "installed bin/hertzdamp" test -x "$prefix/bin/hertzdamp"
 # a fresh clone has no build/ yet: the install must create its build directory's parent
-check "install into a build directory whose parent does not exist" \
-  bash tools/install.sh "$tmp/prefix_fresh" "$tmp/fresh/build/cmake"
+# before CMake writes its logs beside it.  tools/install.sh's own steps (the parent, the
+# logs, the staging, the runtime check, the copy) run against a stand-in cmake that
+# configures nothing and installs the tree just built by CMake above (a second real
+# build of the same sources took about a minute of the 15-minute budget)
+mkdir -p "$tmp/stub"
+cat >"$tmp/stub/cmake" <<'STUB'
+#!/usr/bin/env bash
+# stand-in cmake: -S . -B DIR -DCMAKE_INSTALL_PREFIX=P | --build DIR ... | --install DIR
+case $1 in
+  -S) dir=$4; mkdir "$dir" && printf '%s\n' "${5#-DCMAKE_INSTALL_PREFIX=}" >"$dir/prefix" ;;
+  --build) test -s "$2/prefix" ;;
+  --install) to=$DESTDIR$(cat "$2/prefix"); mkdir -p "$to" && cp -a "$HERTZDAMP_STUB_TREE/." "$to/" ;;
+  *) exit 2 ;;
+esac
+STUB
+chmod +x "$tmp/stub/cmake"
+check "install into a build directory whose parent does not exist (stand-in cmake)" \
+  env PATH="$tmp/stub:$PATH" HERTZDAMP_STUB_TREE="$prefix" bash tools/install.sh "$tmp/prefix_fresh" "$tmp/fresh/build/cmake"
+check "... its parent and CMake's logs beside the build directory were made" \
+  test -d "$tmp/fresh/build/cmake" -a -f "$tmp/fresh/build/cmake.configure.log" -a -f "$tmp/fresh/build/cmake.build.log"
 check "fresh install has the library" test -s "$tmp/prefix_fresh/lib/libhertzdamp.so.0"
 check "man page renders" bash -c "man -l '$prefix/share/man/man1/hertzdamp.1' 2>/dev/null | grep -q hertzdamp || \
   groff -man -Tascii '$prefix/share/man/man1/hertzdamp.1' | grep -q hertzdamp"

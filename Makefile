@@ -86,7 +86,11 @@ $(VENV)/.python-modules: $(FPM) Makefile
 # stops fpm, so it is dropped then (fpm writes it anew).  fpm does not recompile a
 # source when only a file it INCLUDEs changed (src/*.inc): when one is newer than the
 # stamp build/.inc-stamp, the core's objects are dropped (recompiled, about a minute).
-STALE_ARCHIVES = rm -f build/gfortran_*/hertzdamp*/libhertzdamp*.a; \
+# A fresh clone gets the stamp before its first build (its objects are then newer than
+# every include): without it the second build of `make test` dropped the objects the
+# first had just compiled, and the test build was compiled twice.
+STALE_ARCHIVES = [ -d build ] || { mkdir -p build && touch build/.inc-stamp; }; \
+  rm -f build/gfortran_*/hertzdamp*/libhertzdamp*.a; \
   if [ -f build/cache.toml ]; then for d in $$(sed -n 's/^proj-dir = "\(.*\)"$$/\1/p' build/cache.toml); do \
     [ -f "$$d/fpm.toml" ] || { rm -f build/cache.toml; break; }; done; fi; \
   if [ -d build ] && [ -n "$$(find src -name '*.inc' -newer build/.inc-stamp 2>/dev/null; [ -f build/.inc-stamp ] || echo new)" ]; then \

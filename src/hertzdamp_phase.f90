@@ -51,8 +51,8 @@
 !> (2) number of halves (0: host none, no phase dependence; else 4); (3) the marker of the
 !> rest (entries 7 .. 10, checked by hertzdamp_pair_phase_status only); (4) P; (5) P/2;
 !> (6) (P + 1)/2; (7) N; (8) the root r; (9) phi_b; (10) N_1; (11 .. 34) per half a record
-!> of six: its centre c, (nodes - 1)^r / ((1 - t_0)^r length), -t_0 (nodes - 1)/(1 - t_0)
-!> (so that the node coordinate is x = (|phi - c| times the second)^(1/r) plus the third),
+!> of six: its centre c, (nodes - 1)^r / ((1 - t_0)^r length), -t_0 (nodes - 1)/(1 - t_0) - 1.5
+!> (so that the node coordinate less 1.5 is (|phi - c| times the second)^(1/r) plus the third),
 !> nodes - 4, the offset of its nodes, and the record's marker (a hash of the table's marker,
 !> the five and the record's index); from (35): per half, per node, K then A (tau = N h: the
 !> host's step h = dt/t* is tau/N).
@@ -431,7 +431,7 @@ contains
         end do
         do s = 1, 4
             i = 5 + 6 * s
-            tab(i:i + 4) = [lay(s, 1), lay(s, 2) * lay(s, 4)**nint(tab(8)), -lay(s, 3) * lay(s, 4), &
+            tab(i:i + 4) = [lay(s, 1), lay(s, 2) * lay(s, 4)**nint(tab(8)), -lay(s, 3) * lay(s, 4) - 1.5_wp, &
                             real(nh(s) - 4, wp), lay(s, 5)]
         end do
         do p = 1, 2
@@ -570,7 +570,7 @@ contains
              tab(9) > tab(4) .and. tab(9) <= 1.0_wp .and. tab(7) >= hertzdamp_host_steps_min .and. &
              tab(7) <= hertzdamp_host_steps_max .and. all(tab(11:29:6) >= 0.0_wp) .and. all(tab(11:29:6) <= 1.0_wp) .and. &
              all(tab(12:30:6) > 0.0_wp) .and. all(tab(12:30:6) <= huge(1.0_wp)) .and. &
-             all(tab(13:31:6) <= 0.0_wp) .and. all(tab(13:31:6) >= -real(hertzdamp_phase_half_max, wp))
+             all(tab(13:31:6) <= -1.5_wp) .and. all(tab(13:31:6) >= -1.5_wp - real(hertzdamp_phase_half_max, wp))
     end function hertzdamp_phase_table_ok
 
     ! ================================================================ fewest steps

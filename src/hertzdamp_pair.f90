@@ -107,6 +107,9 @@ module hertzdamp_pair
     integer(int64), parameter :: fraction_bits = int(z'000FFFFFFFFFFFFF', int64)
     !> The constant the onset-phase table's marker starts from (phase_marker_of).
     integer(int64), parameter :: phase_key = int(z'20B428DB', int64)
+    !> The constants the markers of a table's half records and of its rest start from
+    !> (half_marker_of, rest_marker_of).
+    integer(int64), parameter :: half_key = int(z'5C3A91E7', int64), rest_key = int(z'6E1D47B3', int64)
     integer(int64), parameter :: one_bits = transfer(1.0_wp, 0_int64)
     !> Largest tau_c and alpha a valid pair holds (the range checks of the header).
     real(wp), parameter :: pair_tau_max = 1.0e4_wp, pair_alpha_max = 1.0e4_wp
@@ -189,7 +192,7 @@ contains
             call set_pair(a, tau, a_cont, steps, law, iend, host, pair)
             if (want) then
                 pair%phase = tab
-                pair%phase(1) = transfer(phase_marker_of(pair), 1.0_wp)
+                call set_phase_markers(pair)
             end if
         else
             st = hertzdamp_host_stats()
@@ -197,18 +200,55 @@ contains
         if (present(stats)) stats = st
     end subroutine hertzdamp_pair_init
 
-    !> The marker of a pair's onset-phase table (bit pattern): the header's marker and the
-    !> table's layout entries (2 .. 10), each rotated by its own amount, xor-ed with a key and
-    !> each other, the sum's high bits folded down (xor-shift) and its 52 low bits the fraction
-    !> of a number in [1, 2).  Any change of one entry changes it.  No multiplication (no
-    !> integer overflow) and no dependent chain: about 25 integer operations per contact.
-    !> The node values are not hashed (the per-contact check reads 10 doubles, not 240).
+    !> The markers of a pair's onset-phase table (layout: hertzdamp_phase): the table's
+    !> (entry 1, phase_marker_of), then each half's record's (half_marker_of) and the rest's
+    !> (entry 3, rest_marker_of), which hash the table's marker too.
+    pure subroutine set_phase_markers(pair)
+        type(hertzdamp_pair_t), intent(inout) :: pair
+        integer :: hb
+        pair%phase(1) = transfer(phase_marker_of(pair), 1.0_wp)
+        if (pair%phase(2) == 4.0_wp) then
+            do hb = 11, 29, 6
+                pair%phase(hb + 5) = transfer(half_marker_of(pair, hb), 1.0_wp)
+            end do
+        end if
+        pair%phase(3) = transfer(rest_marker_of(pair), 1.0_wp)
+    end subroutine set_phase_markers
+
+    !> The marker of a pair's onset-phase table (bit pattern; hertzdamp_phase_marker.inc: the
+    !> header's marker, the law and the table's entries 2, 4, 5, 6, each rotated by its own
+    !> amount, xor-ed with a key and each other, folded to the fraction of a number in
+    !> [1, 2)).  Any change of one entry changes it.  No multiplication (no integer overflow)
+    !> and no dependent chain.
     pure integer(int64) function phase_marker_of(pair) result(bits)
         type(hertzdamp_pair_t), intent(in) :: pair
         integer(int64) :: phase_bits
         include 'hertzdamp_phase_marker.inc'
         bits = phase_bits
     end function phase_marker_of
+
+    !> The marker of the record of one half (its first index hb: 11, 17, 23, 29) of a pair's
+    !> onset-phase table (hertzdamp_phase_half_marker.inc: the table's marker, the record's
+    !> five entries and hb).
+    pure integer(int64) function half_marker_of(pair, hb) result(bits)
+        type(hertzdamp_pair_t), intent(in) :: pair
+        integer, intent(in) :: hb
+        integer(int64) :: half_bits
+        include 'hertzdamp_phase_half_marker.inc'
+        bits = half_bits
+    end function half_marker_of
+
+    !> The marker of the table's entries that no per-contact path reads (7 .. 10: N, the
+    !> root, phi_b, N_1) and of the table's marker: checked by hertzdamp_pair_phase_status.
+    pure integer(int64) function rest_marker_of(pair) result(bits)
+        type(hertzdamp_pair_t), intent(in) :: pair
+        integer(int64) :: h
+        h = ieor(ieor(ieor(bits_of(pair%phase(1)), rest_key), ishftc(bits_of(pair%phase(7)), 11)), &
+                 ieor(ieor(ishftc(bits_of(pair%phase(8)), 22), ishftc(bits_of(pair%phase(9)), 33)), &
+                      ishftc(bits_of(pair%phase(10)), 44)))
+        h = ieor(h, shiftr(h, 29))
+        bits = ior(iand(ieor(h, shiftr(h, 52)), fraction_bits), one_bits)
+    end function rest_marker_of
 
     ! phase_eval: the per-contact lookup of the table, one text for this module (inlined into
     ! the entry points) and hertzdamp_phase (the check of the table at init)
@@ -219,13 +259,19 @@ contains
     !> the pair was initialised without it (its marker 0); else HD_OK.
     pure elemental integer function hertzdamp_pair_phase_status(pair) result(status)
         type(hertzdamp_pair_t), intent(in) :: pair   !! constants of the material pair
+        integer :: hb
         status = hertzdamp_pair_status(pair)
         if (status /= HD_OK) return
         if (pair%phase(1) == 0.0_wp) then
             status = HD_NO_PHASE_TABLE
         else if (ieor(bits_of(pair%phase(1)), phase_marker_of(pair)) /= 0_int64 .or. &
+                 ieor(bits_of(pair%phase(3)), rest_marker_of(pair)) /= 0_int64 .or. &
                  .not. hertzdamp_phase_table_ok(pair%phase)) then
             status = HD_BAD_PAIR
+        else if (pair%phase(2) == 4.0_wp) then
+            do hb = 11, 29, 6
+                if (ieor(bits_of(pair%phase(hb + 5)), half_marker_of(pair, hb)) /= 0_int64) status = HD_BAD_PAIR
+            end do
         end if
     end function hertzdamp_pair_phase_status
 
@@ -247,7 +293,7 @@ contains
             alpha = pair%alpha
             tau_c = pair%tau_c
         else
-            call phase_eval(pair%phase, phi, alpha, tau_c)
+            call phase_eval(pair%phase, int(pair%law), phi, alpha, tau_c)
         end if
     end subroutine hertzdamp_pair_phase_constants
 
@@ -259,8 +305,12 @@ contains
     !> keeps k = k_phys and lasts longer than N steps, and d takes alpha_eff = alpha(e) +
     !> (alpha(phi) - alpha(e)) (h'/h_phi)^p as hertzdamp_pair_kd does (continuous at
     !> k_phys = k; the phase's share fades with the step ratio as the host's error does).
+    !> (The usual contact forms k = K(phi) m T_c^(-5/2) u^(-1/2), d = A(phi) m T_c^(-1-q) u^(-q)
+    !> from the table's K = tau^(5/2), A = alpha tau^(1+q): the same values to rounding.)
     !> Status: the bad argument of T_c, m, u, k_phys (the last one wins), else that of
-    !> hertzdamp_pair_phase_constants; k = d = 0 on failure.
+    !> hertzdamp_pair_phase_constants; k = d = 0 on failure.  The usual contact checks the
+    !> fields it reads (hertzdamp_phase_fast.inc); every other one the full
+    !> hertzdamp_pair_phase_status.
     pure elemental subroutine hertzdamp_pair_kd_phase(pair, tc, m, u, k_phys, phi, k, d, status)
         type(hertzdamp_pair_t), intent(in) :: pair   !! constants of the material pair (with its table)
         real(wp), intent(in) :: tc                   !! target contact time T_c = N dt [s]
@@ -326,7 +376,7 @@ contains
         status = HD_BAD_ARGUMENT
         if (.not. (present(p) .and. present(k) .and. present(d))) return
         ! the usual contact inline, straight-line (hertzdamp_phase_fast.inc: no call on its
-        ! way), every other one out of line (kd_phase_rest, the same bits for a usual one)
+        ! way), every other one out of line (kd_phase_rest: the statuses, the bound, the logarithms)
         associate (pair => p)
             include 'hertzdamp_phase_fast.inc'
         end associate

@@ -33,27 +33,34 @@
 !> Each piece is cut at its middle into two halves; in each half the variable
 !> t = (distance to the half's centre / half length)^(1/r) (the centre: 0, phi_b, P and 1
 !> for the four halves; r = 4 for tsuji, whose powers are multiples of 1/4; r = 2 for q = 0
-!> and 1/2, multiples of 1/2) makes those powers polynomials, and alpha, tau are tabulated
-!> at equidistant t_j from t_0 (1e-3; for the second half (tie_band/half length)^(1/r)) to
-!> 1 and interpolated by the cubic through the four nearest nodes (Lagrange; hertzdamp_pair
-!> evaluates it per contact).  The second piece has no tiny overlap at either end (smooth):
-!> a whole N's (3 tie_band long) takes 6 nodes per half and its first piece's halves 45;
-!> otherwise 31 per half of the first piece and 20 of the second.  At init every cell middle (but those
-!> next to extrapolated end nodes) and the phases at and around the tie and the ends are
-!> checked: e and the contact time within 1e-4 (check_table).
+!> and 1/2, multiples of 1/2) makes those powers polynomials; alpha and tau are solved at
+!> equidistant t_j from t_0 (1e-3; for the second half (tie_band/half length)^(1/r)) to 1,
+!> and the nodes' K = tau^(5/2) and A = alpha tau^(1+q) (q = 0, 1/4, 1/2 by the law) are
+!> interpolated by the cubic through the four nearest nodes (Lagrange; hertzdamp_pair
+!> evaluates it per contact: k = K m T_c^(-5/2) u^(-1/2), d = A m T_c^(-1-q) u^(-q), so
+!> that the factors of T_c, m, u are formed beside the lookup and no root follows it).
+!> The second piece has no tiny overlap at either end (smooth): a whole N's (3 tie_band
+!> long) takes 6 nodes per half and its first piece's halves 45; otherwise 31 per half of
+!> the first piece and 20 of the second.  At init every cell middle (but those next to
+!> extrapolated end nodes) and the phases at and around the tie and the ends are checked
+!> (tau = K^(2/5), alpha = A / tau^(1+q)): e and the contact time within 1e-4
+!> (check_table).
 !>
 !> Layout of the table (hertzdamp_pair_phase_size = 240 doubles): (1) the marker (set by
-!> hertzdamp_pair); (2) number of halves (0: host none, no phase dependence; else 4);
-!> (3) nodes of the largest half; (4) P; (5) P/2; (6) (P + 1)/2; (7) N; (8) the root r; (9) phi_b;
-!> (10) N_1; (11 .. 14) the halves' centres; (15 .. 18) one over their lengths;
-!> (19 .. 22) their t_0; (23 .. 26) (nodes - 1)/(1 - t_0); (27 .. 30) the offsets of the
-!> halves' nodes; (31 .. 34) their nodes - 4; from (35): per half, per node, alpha then tau
-!> (tau = N h: the host's step h = dt/t* is tau/N).
+!> hertzdamp_pair: a hash of the header's marker, the law and the entries 2, 4, 5, 6);
+!> (2) number of halves (0: host none, no phase dependence; else 4); (3) the marker of the
+!> rest (entries 7 .. 10, checked by hertzdamp_pair_phase_status only); (4) P; (5) P/2;
+!> (6) (P + 1)/2; (7) N; (8) the root r; (9) phi_b; (10) N_1; (11 .. 34) per half a record
+!> of six: its centre c, (nodes - 1)^r / ((1 - t_0)^r length), -t_0 (nodes - 1)/(1 - t_0) - 1.5
+!> (so that the node coordinate less 1.5 is (|phi - c| times the second)^(1/r) plus the third),
+!> nodes - 4, the offset of its nodes, and the record's marker (a hash of the table's marker,
+!> the five and the record's index); from (35): per half, per node, K then A (tau = N h: the
+!> host's step h = dt/t* is tau/N).
 module hertzdamp_phase
     use hertzdamp_kinds, only: hertzdamp_rk
     use hertzdamp_registry, only: HD_OK, HD_PHASE_UNREACHABLE, HD_BAD_PHASE, HD_BAD_VELOCITY, HD_BAD_TIME, &
                                 HD_BAD_STEPS, HD_HOST_UNREACHABLE, hertzdamp_pair_phase_size
-    use hertzdamp_registry, only: HD_DAMPING_TSUJI, HD_HOST_NONE
+    use hertzdamp_registry, only: HD_DAMPING_TSUJI, HD_HOST_NONE, hertzdamp_law_q
     use hertzdamp_host, only: hertzdamp_host_collide, hertzdamp_host_solve, hertzdamp_host_stats, &
                               hertzdamp_host_steps_min, hertzdamp_host_steps_max, hertzdamp_host_h_min, &
                               hertzdamp_host_h_max, hertzdamp_host_alpha_max
@@ -67,8 +74,8 @@ module hertzdamp_phase
 
     !> Size of the table header (doubles before the nodes).
     integer, parameter, public :: hertzdamp_phase_header = 34
-    !> The most nodes of one half (the 206 doubles after the header hold 103 pairs (alpha,
-    !> tau); the halves take 45 + 45 + 6 + 6 or 31 + 31 + 20 + 20).
+    !> The most nodes of one half (the 206 doubles after the header hold 103 pairs (K, A;
+    !> hertzdamp_phase: the layout); the halves take 45 + 45 + 6 + 6 or 31 + 31 + 20 + 20).
     integer, parameter, public :: hertzdamp_phase_half_max = 45
     !> First node's t (the ends of a piece are limits, not phases).
     real(wp), parameter :: t_first = 1.0e-3_wp
@@ -387,7 +394,7 @@ contains
         real(wp), intent(out) :: tab(hertzdamp_pair_phase_size)  !! the table (layout: module note)
         integer, intent(out) :: status              !! HD_OK or the failure
         real(wp), parameter :: b = hertzdamp_phase_tie_band
-        real(wp) :: pb, n1, np, guess(2), t, phi, a, ta, mid(2), ln
+        real(wp) :: pb, n1, np, guess(2), t, phi, a, ta, mid(2), ln, lay(4, 5)
         integer :: nn, p, s, j, base, i, jx(4), nh(4)
         tab = 0.0_wp
         status = HD_OK
@@ -403,7 +410,6 @@ contains
         ! nodes per half (module note)
         nh = merge([45, 45, 6, 6], [31, 31, 20, 20], pb > 1.0_wp - 2.0_wp * b)
         tab(2) = 4.0_wp
-        tab(3) = real(maxval(nh), wp)
         tab(4) = pb - b
         tab(5) = 0.5_wp * tab(4)
         tab(6) = 0.5_wp * (tab(4) + 1.0_wp)
@@ -413,15 +419,21 @@ contains
         tab(8) = merge(4.0_wp, 2.0_wp, law == HD_DAMPING_TSUJI)
         tab(9) = pb
         tab(10) = n1
-        tab(11:14) = [0.0_wp, pb, tab(4), 1.0_wp]
-        tab(15:18) = 1.0_wp / [tab(5), pb - tab(5), tab(6) - tab(4), 1.0_wp - tab(6)]
-        tab(19:22) = [t_first, (b * tab(16))**(1.0_wp / tab(8)), t_first, t_first]
-        tab(23:26) = real(nh - 1, wp) / (1.0_wp - tab(19:22))
-        tab(27) = real(hertzdamp_phase_header, wp)
+        ! the halves: centres, one over their lengths, t_0, nodes per unit t (lay), and
+        ! their records in the table (module note)
+        lay(:, 1) = [0.0_wp, pb, tab(4), 1.0_wp]
+        lay(:, 2) = 1.0_wp / [tab(5), pb - tab(5), tab(6) - tab(4), 1.0_wp - tab(6)]
+        lay(:, 3) = [t_first, (b * lay(2, 2))**(1.0_wp / tab(8)), t_first, t_first]
+        lay(:, 4) = real(nh - 1, wp) / (1.0_wp - lay(:, 3))
+        lay(:, 5) = real(hertzdamp_phase_header, wp)
         do s = 2, 4
-            tab(26 + s) = tab(25 + s) + real(2 * nh(s - 1), wp)
+            lay(s, 5) = lay(s - 1, 5) + real(2 * nh(s - 1), wp)
         end do
-        tab(31:34) = real(nh - 4, wp)
+        do s = 1, 4
+            i = 5 + 6 * s
+            tab(i:i + 4) = [lay(s, 1), lay(s, 2) * lay(s, 4)**nint(tab(8)), -lay(s, 3) * lay(s, 4) - 1.5_wp, &
+                            real(nh(s) - 4, wp), lay(s, 5)]
+        end do
         do p = 1, 2
             ! the piece's contact in steps (module note); tau is stored as N h
             np = merge(n1, n1 - 2.0_wp * b, p == 1)
@@ -431,12 +443,12 @@ contains
             if (status /= HD_OK) exit
             mid = [a, ta]
             do s = 2 * p - 1, 2 * p
-                base = nint(tab(26 + s))
+                base = nint(lay(s, 5))
                 nn = nh(s)
                 guess = mid
                 do j = nn - 1, 0, -1
-                    t = tab(18 + s) + real(j, wp) / tab(22 + s)
-                    phi = node_phase(tab, s, t)
+                    t = lay(s, 3) + real(j, wp) / lay(s, 4)
+                    phi = node_phase(tab, lay, s, t)
                     if (j == nn - 1) then
                         a = mid(1)
                         ta = mid(2)
@@ -466,7 +478,14 @@ contains
             end do
             if (status /= HD_OK) exit
         end do
-        if (status == HD_OK) call check_table(e, law, iend, host, steps, tab, jx, status)
+        if (status == HD_OK) then
+            ! the nodes as K = tau^(5/2) and A = alpha tau^(1+q) (what the per-contact path
+            ! multiplies by its factors of T_c, m and u)
+            do i = hertzdamp_phase_header + 1, nint(lay(4, 5)) + 2 * nh(4), 2
+                tab(i:i + 1) = [tab(i + 1)**2.5_wp, tab(i) * tab(i + 1)**(1.0_wp + hertzdamp_law_q(law))]
+            end do
+            call check_table(e, law, iend, host, steps, tab, lay, jx, status)
+        end if
         if (status /= HD_OK) then
             tab = 0.0_wp
             status = HD_PHASE_UNREACHABLE
@@ -480,18 +499,18 @@ contains
     !> with the interpolated constants has e and the contact time within check_tol of the
     !> targets (relative); HD_PHASE_UNREACHABLE otherwise (a phase between the nodes the host
     !> cannot serve at this N, or an interpolation error beyond it).
-    pure subroutine check_table(e, law, iend, host, steps, tab, jx, status)
-        real(wp), intent(in) :: e, steps, tab(hertzdamp_pair_phase_size)
+    pure subroutine check_table(e, law, iend, host, steps, tab, lay, jx, status)
+        real(wp), intent(in) :: e, steps, tab(hertzdamp_pair_phase_size), lay(4, 5)
         integer, intent(in) :: law, iend, host, jx(4)
         integer, intent(out) :: status
         real(wp) :: t, phi, ph(7)
         integer :: s, j, nn
         status = HD_OK
         do s = 1, 4
-            nn = nint(tab(30 + s)) + 4
+            nn = nint(tab(8 + 6 * s)) + 4
             do j = merge(jx(s) + 2, 0, jx(s) > 0), nn - 2
-                t = tab(18 + s) + (real(j, wp) + 0.5_wp) / tab(22 + s)
-                phi = node_phase(tab, s, t)
+                t = lay(s, 3) + (real(j, wp) + 0.5_wp) / lay(s, 4)
+                phi = node_phase(tab, lay, s, t)
                 if (.not. good(phi)) status = HD_PHASE_UNREACHABLE
                 if (status /= HD_OK) return
             end do
@@ -509,43 +528,49 @@ contains
             real(wp), intent(in) :: phi
             real(wp) :: a, ta, ee, tt
             integer :: st
-            call phase_eval(tab, phi, a, ta)
+            call phase_eval(tab, law, phi, a, ta)
             call hertzdamp_host_collide(a, ta / steps, phi, law, iend, host, ee, tt, st)
             good = st == HD_OK .and. abs(ee - e) <= check_tol * e .and. abs(tt - ta) <= check_tol * ta
         end function good
     end subroutine check_table
 
-    !> The phase of the point t of half s of a table (the centre plus or minus the half
-    !> length times t^r).
-    pure real(wp) function node_phase(tab, s, t) result(phi)
-        real(wp), intent(in) :: tab(:), t
+    !> The phase of the point t of half s of a table under construction (lay: the halves'
+    !> centres, one over their lengths; hertzdamp_phase_build): the centre plus or minus the
+    !> half length times t^r; the piece's middle at t = 1.
+    pure real(wp) function node_phase(tab, lay, s, t) result(phi)
+        real(wp), intent(in) :: tab(:), lay(4, 5), t
         integer, intent(in) :: s
         real(wp) :: d
-        d = t**nint(tab(8)) / tab(14 + s)
+        d = t**nint(tab(8)) / lay(s, 2)
         if (mod(s, 2) == 1) then
-            phi = tab(10 + s) + d
+            phi = lay(s, 1) + d
         else
-            phi = tab(10 + s) - d
+            phi = lay(s, 1) - d
         end if
         if (t >= 1.0_wp) phi = merge(tab(5), tab(6), s <= 2)
     end function node_phase
 
-    !> Whether the layout entries of a table (2 .. 26) are those hertzdamp_phase_build writes
-    !> (the per-contact check beside the marker).
+    !> Whether the layout entries of a table (2 .. 34 but the markers 3 and 16, 22, 28, 34)
+    !> are consistent as hertzdamp_phase_build writes them (the full check of
+    !> hertzdamp_pair_phase_status beside the markers): the halves' node counts, offsets
+    !> (each half right after the one before, the last one inside the block), the phases and
+    !> scales in range.
     pure logical function hertzdamp_phase_table_ok(tab) result(ok)
         real(wp), intent(in) :: tab(hertzdamp_pair_phase_size)  !! the table
+        real(wp) :: jm(4), off(4)
         ok = tab(2) == 0.0_wp
         if (ok .or. .not. tab(2) == 4.0_wp) return
-        ok = tab(3) >= 4.0_wp .and. tab(3) <= real(hertzdamp_phase_half_max, wp) .and. &
-             all(tab(31:34) >= 0.0_wp) .and. all(tab(31:34) <= real(hertzdamp_phase_half_max - 4, wp)) .and. &
-             tab(27) == real(hertzdamp_phase_header, wp) .and. &
-             all(tab(28:30) == tab(27:29) + 2.0_wp * (tab(31:33) + 4.0_wp)) .and. &
-             tab(30) + 2.0_wp * (tab(34) + 4.0_wp) <= real(hertzdamp_pair_phase_size, wp) .and. &
+        jm = tab(14:32:6)
+        off = tab(15:33:6)
+        ok = all(jm >= 0.0_wp) .and. all(jm <= real(hertzdamp_phase_half_max - 4, wp)) .and. all(jm == aint(jm)) .and. &
+             off(1) == real(hertzdamp_phase_header, wp) .and. all(off(2:4) == off(1:3) + 2.0_wp * (jm(1:3) + 4.0_wp)) .and. &
+             off(4) + 2.0_wp * (jm(4) + 4.0_wp) <= real(hertzdamp_pair_phase_size, wp) .and. &
              tab(4) > 0.0_wp .and. tab(4) < 1.0_wp .and. tab(5) > 0.0_wp .and. tab(5) < tab(4) .and. &
              tab(6) > tab(4) .and. tab(6) < 1.0_wp .and. (tab(8) == 2.0_wp .or. tab(8) == 4.0_wp) .and. &
              tab(9) > tab(4) .and. tab(9) <= 1.0_wp .and. tab(7) >= hertzdamp_host_steps_min .and. &
-             tab(7) <= hertzdamp_host_steps_max .and. all(tab(15:18) > 0.0_wp) .and. all(tab(15:18) <= huge(1.0_wp)) &
-             .and. all(tab(19:22) >= 0.0_wp) .and. all(tab(19:22) < 1.0_wp)
+             tab(7) <= hertzdamp_host_steps_max .and. all(tab(11:29:6) >= 0.0_wp) .and. all(tab(11:29:6) <= 1.0_wp) .and. &
+             all(tab(12:30:6) > 0.0_wp) .and. all(tab(12:30:6) <= huge(1.0_wp)) .and. &
+             all(tab(13:31:6) <= -1.5_wp) .and. all(tab(13:31:6) >= -1.5_wp - real(hertzdamp_phase_half_max, wp))
     end function hertzdamp_phase_table_ok
 
     ! ================================================================ fewest steps

@@ -4,9 +4,10 @@
 # phase form side by side in one process) against this tree's src/ and three timing-only
 # variants of it, each one step less of the phase form's usual contact (their k, d are
 # wrong; nothing of them is kept):
-#   no-marker: the table's marker not hashed (hertzdamp_phase_marker.inc skipped);
+#   no-marker: the markers of the table and of the half's record not hashed
+#              (hertzdamp_phase_marker.inc, hertzdamp_phase_half_marker.inc skipped);
 #   no-sqrt:   that, and no square root in the lookup (t = d instead of d^(1/r));
-#   no-lookup: that, and no lookup at all (alpha, tau two fixed entries of the table).
+#   no-lookup: that, and no lookup at all (K, A two fixed entries of the table).
 #   bash tools/phase_kd_cost.sh [RUNS] [TURNS]
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
@@ -23,10 +24,12 @@ body = src + '/hertzdamp_phase_eval_body.inc'
 # the lookup without square roots is a copy of its text (init checks the table with the real one)
 text = open(body).read()
 open(src + '/nosqrt_eval_body.inc', 'w').write(
-    text.replace("    t = sqrt(dd)\n    if (tab(8) == 4.0_wp) t = sqrt(t)\n", "    t = dd\n"))
+    text.replace("    t = sqrt(abs(phi - tab(b)) * tab(b + 1))\n    if (root4) t = sqrt(t)\n",
+                 "    t = abs(phi - tab(b)) * tab(b + 1)\n"))
 edits = [(fast, "    include 'hertzdamp_phase_marker.inc'\n", "    phase_bits = transfer(pair%phase(1), 0_int64)\n"),
+         (fast, "    include 'hertzdamp_phase_half_marker.inc'\n", "    half_bits = transfer(pair%phase(hb + 5), 0_int64)\n"),
          (fast, "include 'hertzdamp_phase_eval_body.inc'", "include 'nosqrt_eval_body.inc'"),
-         (fast, "            include 'nosqrt_eval_body.inc'\n", "            alpha = tab(35)\n            tau = tab(36)\n")]
+         (fast, "            include 'nosqrt_eval_body.inc'\n", "            kk = tab(35)\n            aa = tab(36)\n")]
 if 'sqrt' in open(src + '/nosqrt_eval_body.inc').read():
     sys.exit('phase_kd_cost.sh: the lookup no longer holds the square roots this variant removes')
 for path, old, new in edits[:steps]:
@@ -36,9 +39,9 @@ for path, old, new in edits[:steps]:
     open(path, 'w').write(text.replace(old, new))
 PY
 }
-variant no-marker 1
-variant no-sqrt 2
-variant no-lookup 3
+variant no-marker 2
+variant no-sqrt 3
+variant no-lookup 4
 echo "load average: $(cut -d' ' -f1-3 /proc/loadavg)"
 for v in src no-marker no-sqrt no-lookup; do
     if [ "$v" = src ]; then s=$root/src; else s=$tmp/$v/src; fi

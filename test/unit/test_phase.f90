@@ -33,7 +33,7 @@ program test_phase
                          HD_HOST_MFIX_EULER, HD_HOST_MFIX_AB2, hertzdamp_law_q, hertzdamp_host_name, &
                          hertzdamp_law_name, hertzdamp_pair_t, hertzdamp_pair_init, hertzdamp_pair_kd, &
                          hertzdamp_pair_kd_phase, hertzdamp_pair_phase_constants, hertzdamp_onset_phase, &
-                         hertzdamp_phase_min_steps, hertzdamp_pair_size, hertzdamp_host_order
+                         hertzdamp_phase_min_steps, hertzdamp_pair_size, hertzdamp_host_order, hertzdamp_pair_phase_status
     use hertzdamp_capi, only: hertzdamp_c_pair_init_phase, hertzdamp_c_pair_kd_phase, hertzdamp_c_onset_phase, &
                               hertzdamp_c_phase_min_steps
     use hertzdamp_testing, only: test_suite, new_suite
@@ -444,14 +444,7 @@ contains
         call hertzdamp_pair_kd_phase(p1, tc, mass, speed, nan, 0.5_wp, k1, d1, s1)
         call suite%check(s1 == HD_BAD_KPHYS, 'bad k_phys')
         ! a changed layout entry, a changed header field, garbage
-        pn = p1
-        pn%phase(3) = pn%phase(3) - 1.0_wp
-        call hertzdamp_pair_kd_phase(pn, tc, mass, speed, 0.0_wp, 0.5_wp, k1, d1, s1)
-        call suite%check(s1 == HD_BAD_PAIR .and. k1 == 0.0_wp, 'changed table: HD_BAD_PAIR')
-        pn = p1
-        pn%alpha = pn%alpha * 1.5_wp
-        call hertzdamp_pair_kd_phase(pn, tc, mass, speed, 0.0_wp, 0.5_wp, k1, d1, s1)
-        call suite%check(s1 == HD_BAD_PAIR, 'changed header: HD_BAD_PAIR')
+        call check_changed_fields(p1)
         pn = hertzdamp_pair_t()
         call hertzdamp_pair_kd_phase(pn, tc, mass, speed, 0.0_wp, 0.5_wp, k1, d1, s1)
         call suite%check(s1 == HD_BAD_PAIR, 'unset pair: HD_BAD_PAIR')
@@ -466,6 +459,80 @@ contains
         call hertzdamp_pair_kd_phase(pn, tc, mass, speed, 0.0_wp, 0.3_wp, k1, d1, s1)
         call suite%check(s0 == HD_OK .and. s1 == HD_OK .and. k0 == k1 .and. d0 == d1, 'host none: pair_kd bits')
     end subroutine check_statuses
+
+    !> A changed field of a valid pair p (its table built): each one the per-contact path reads
+    !> (the law, the header's marker, the table's layout entries 2, 4, 5, 6 and its marker,
+    !> every entry of each half's record, read by a phase in that half) gives HD_BAD_PAIR
+    !> and k = 0 on the usual contact; one it does not read (alpha, the entries 7 .. 10 and
+    !> the rest's marker 3) gives HD_BAD_PAIR from hertzdamp_pair_phase_status and from a
+    !> contact that reads it (the bound's path: the full check), and the unchanged k, d on
+    !> the usual contact.
+    subroutine check_changed_fields(p)
+        type(hertzdamp_pair_t), intent(in) :: p
+        type(hertzdamp_pair_t) :: pn
+        real(wp) :: k0, d0, k1, d1, tc, phis(4)
+        integer :: s0, s1, j, hb, nbad
+        integer, parameter :: read_entries(5) = [1, 2, 4, 5, 6], unread_entries(5) = [3, 7, 8, 9, 10]
+        tc = 10.0_wp * dt
+        ! a phase in each half: the middles of (0, P/2], (P/2, P], (P, (P + 1)/2], ((P + 1)/2, 1]
+        phis = 0.5_wp * ([0.0_wp, p%phase(5), p%phase(4), p%phase(6)] + [p%phase(5), p%phase(4), p%phase(6), 1.0_wp])
+        call hertzdamp_pair_kd_phase(p, tc, mass, speed, 0.0_wp, 0.5_wp, k0, d0, s0)
+        call suite%check(s0 == HD_OK .and. hertzdamp_pair_phase_status(p) == HD_OK, 'changed fields: the pair valid')
+        nbad = 0
+        do j = 1, size(read_entries)
+            pn = p
+            pn%phase(read_entries(j)) = pn%phase(read_entries(j)) + 0.125_wp
+            call hertzdamp_pair_kd_phase(pn, tc, mass, speed, 0.0_wp, 0.5_wp, k1, d1, s1)
+            if (.not. (s1 == HD_BAD_PAIR .and. k1 == 0.0_wp)) nbad = nbad + 1
+        end do
+        call suite%check(nbad == 0, 'changed table (entries 1, 2, 4, 5, 6): HD_BAD_PAIR')
+        nbad = 0
+        do hb = 11, 29, 6
+            do j = 0, 5
+                pn = p
+                ! a change the lookup's clamps would hide for some entries: one bit of the fraction
+                pn%phase(hb + j) = transfer(ieor(transfer(pn%phase(hb + j), 1_int64), 1_int64), 1.0_wp)
+                call hertzdamp_pair_kd_phase(pn, tc, mass, speed, 0.0_wp, phis((hb - 5) / 6), k1, d1, s1)
+                if (.not. (s1 == HD_BAD_PAIR .and. k1 == 0.0_wp)) nbad = nbad + 1
+            end do
+        end do
+        call suite%check(nbad == 0, 'changed record of a half (each of its 6 entries, a phase in it): HD_BAD_PAIR')
+        pn = p
+        pn%law = real(HD_DAMPING_LINEAR, wp)
+        call hertzdamp_pair_kd_phase(pn, tc, mass, speed, 0.0_wp, 0.5_wp, k1, d1, s1)
+        call suite%check(s1 == HD_BAD_PAIR .and. k1 == 0.0_wp, 'changed law: HD_BAD_PAIR')
+        pn = p
+        pn%marker = pn%marker * 1.5_wp
+        call hertzdamp_pair_kd_phase(pn, tc, mass, speed, 0.0_wp, 0.5_wp, k1, d1, s1)
+        call suite%check(s1 == HD_BAD_PAIR .and. k1 == 0.0_wp, 'changed header marker: HD_BAD_PAIR')
+        ! fields the usual contact does not read: the full check refuses them
+        pn = p
+        pn%alpha = pn%alpha * 1.5_wp
+        nbad = unread_refused(pn, tc, k0, d0)
+        do j = 1, size(unread_entries)
+            pn = p
+            pn%phase(unread_entries(j)) = pn%phase(unread_entries(j)) + 0.125_wp
+            nbad = nbad + unread_refused(pn, tc, k0, d0)
+        end do
+        call suite%check(nbad == 0, 'changed alpha, table entries 3, 7 .. 10: the usual contact unchanged, ' // &
+                         'the full check (status, the bound''s path) HD_BAD_PAIR')
+    end subroutine check_changed_fields
+
+    !> 0 when pair pn (a field the usual contact does not read changed) gives k0, d0 (the
+    !> unchanged pair's) on the usual contact (T_c tc, phi = 0.5) and HD_BAD_PAIR from the
+    !> full check (hertzdamp_pair_phase_status, the bound's path), else 1.
+    integer function unread_refused(pn, tc, k0, d0) result(nb)
+        type(hertzdamp_pair_t), intent(in) :: pn
+        real(wp), intent(in) :: tc, k0, d0
+        real(wp) :: k1, d1
+        integer :: s1
+        nb = 0
+        call hertzdamp_pair_kd_phase(pn, tc, mass, speed, 0.0_wp, 0.5_wp, k1, d1, s1)
+        if (.not. (s1 == HD_OK .and. k1 == k0 .and. d1 == d0)) nb = 1
+        if (hertzdamp_pair_phase_status(pn) /= HD_BAD_PAIR) nb = 1
+        call hertzdamp_pair_kd_phase(pn, tc, mass, speed, 0.5_wp * k0, 0.5_wp, k1, d1, s1)
+        if (.not. (s1 == HD_BAD_PAIR .and. k1 == 0.0_wp)) nb = 1
+    end function unread_refused
 
     !> phi outside (0, 1]: HD_BAD_PHASE, k = d = 0.
     subroutine bad_phase(p, phi, what)

@@ -153,6 +153,8 @@ module hertzdamp_host
     integer, parameter :: max_means = 60
     !> The budget of Newton's polish of the bracketing solve's result on the exact means.
     integer, parameter :: polish_means = 20
+    !> The most steps per contact at which first_solves tries cliff_solve.
+    real(wp), parameter :: cliff_steps_max = 3.0_wp
     !> A discrete collision with e above this gains energy: the step is unstable for the
     !> damping (the per-pair solve's bracketing does not follow such collisions).
     real(wp), parameter :: unstable_e = 1.5_wp
@@ -1086,7 +1088,121 @@ contains
         call nested_solve(cx, e, steps, a0, t0 / steps, x, stats, status)
         xp = x
         if (status == HD_OK) call newton_solve(cx, e, steps, xp, polish_means, x, stats, status)
+        if (status /= HD_OK .and. steps <= cliff_steps_max) then
+            call cliff_solve(cx, e, steps, a0, t0 / steps, xp, status)
+            if (status == HD_OK) call newton_solve(cx, e, steps, xp, polish_means, x, stats, status)
+        end if
     end subroutine first_solves
+
+    !> The last resort of first_solves at a few steps per contact (steps <= cliff_steps_max),
+    !> the bracketing solve with the roles of e and tau_c swapped, on the proxy means: at two or
+    !> three steps a solution can lie in the thin layer past the minimum of e_mean over alpha
+    !> where the release moves to the first steps and tau_mean falls steeply (lammps, linear,
+    !> force end, e = 0.001, N = 2: at alpha h = 1 - 1e-7, where the damping stops the body in
+    !> one step), which the bracketing solve on the falling branch of e_mean does not reach.
+    !> For h, alpha_tau(h) where tau_mean / (N h) = 1 (Illinois from a bracket grown by
+    !> doubling alpha from a0); E(h) = e_mean / e - 1 there, on h = h0 times powers of sqrt(2)
+    !> from 1/16 to 2 until it changes sign, then the Illinois method on h.  x: the start of
+    !> the polish; HD_HOST_UNREACHABLE where nothing is found.
+    pure subroutine cliff_solve(cx, e, steps, a0, h0, x, status)
+        type(ctx_t), intent(in) :: cx
+        real(wp), intent(in) :: e, steps, a0, h0
+        real(wp), intent(out) :: x(2)
+        integer, intent(out) :: status
+        real(wp) :: hlo, hhi, glo, ghi, alo, ahi, h, g, a, hm, am, gm, sg
+        integer :: j, k, st, side
+        status = HD_HOST_UNREACHABLE
+        x = 0.0_wp
+        hlo = 0.0_wp
+        glo = 0.0_wp
+        alo = 0.0_wp
+        ahi = 0.0_wp
+        hhi = 0.0_wp
+        ghi = 0.0_wp
+        do j = -8, 2
+            h = h0 * sqrt(2.0_wp)**j
+            call e_at(h, a, g, st)
+            if (st /= HD_OK) cycle
+            if (j > -8 .and. alo > 0.0_wp .and. (g > 0.0_wp .neqv. glo > 0.0_wp)) then
+                hhi = h
+                ghi = g
+                ahi = a
+                exit
+            end if
+            hlo = h
+            glo = g
+            alo = a
+        end do
+        if (.not. (hhi > 0.0_wp)) return
+        ! the Illinois method on sg E, positive at hlo
+        sg = merge(1.0_wp, -1.0_wp, glo > 0.0_wp)
+        glo = sg * glo
+        ghi = sg * ghi
+        side = 0
+        am = alo
+        hm = hlo
+        do k = 1, 60
+            hm = illinois_point(hlo, hhi, glo, ghi)
+            call e_at(hm, am, gm, st)
+            if (st /= HD_OK) return
+            gm = sg * gm
+            if (abs(gm) <= cx%ptol .or. hhi - hlo <= 4.0_wp * spacing(hhi)) exit
+            call illinois_update(hm, gm, hlo, hhi, glo, ghi, side)
+        end do
+        x = [am, hm]
+        status = HD_OK
+    contains
+        !> E(hh) = e_mean / e - 1 at alpha_tau(hh) (aa); sa /= HD_OK where there is none.
+        pure subroutine e_at(hh, aa, gg, sa)
+            real(wp), intent(in) :: hh
+            real(wp), intent(out) :: aa, gg
+            integer, intent(out) :: sa
+            real(wp) :: lo, hi, tlo, thi, ta, ea
+            integer :: i, sd
+            aa = 0.0_wp
+            gg = 0.0_wp
+            sa = HD_HOST_UNREACHABLE
+            if (check_h(hh) /= HD_OK) return
+            lo = 0.0_wp
+            call tau_at(lo, hh, tlo, ea, sd)
+            if (sd /= HD_OK .or. .not. (tlo > 0.0_wp)) return
+            hi = a0
+            do i = 1, 30
+                call tau_at(hi, hh, thi, ea, sd)
+                if (sd == HD_OK .and. thi <= 0.0_wp) exit
+                if (sd == HD_OK) then
+                    lo = hi
+                    tlo = thi
+                end if
+                hi = 2.0_wp * hi
+                if (hi > hertzdamp_host_alpha_max) return
+            end do
+            if (.not. (thi <= 0.0_wp)) return
+            sd = 0
+            do i = 1, 100
+                aa = illinois_point(lo, hi, tlo, thi)
+                call tau_at(aa, hh, ta, ea, sa)
+                if (sa /= HD_OK) return
+                if (abs(ta) <= cx%ptol .or. hi - lo <= 4.0_wp * spacing(hi)) exit
+                call illinois_update(aa, ta, lo, hi, tlo, thi, sd)
+            end do
+            gg = ea / e - 1.0_wp
+        end subroutine e_at
+
+        !> tau_mean / (N hh) - 1 and e_mean on the proxy at (aa, hh).
+        pure subroutine tau_at(aa, hh, tt, ee, sa)
+            real(wp), intent(in) :: aa, hh
+            real(wp), intent(out) :: tt, ee
+            integer, intent(out) :: sa
+            type(hertzdamp_host_stats) :: sp
+            tt = 0.0_wp
+            ee = 0.0_wp
+            call proxy_stats(aa, hh, cx%law, cx%iend, cx%host, sp, sa)
+            if (sa /= HD_OK) return
+            tt = sp%tau_mean / (steps * hh) - 1.0_wp
+            ee = sp%e_mean
+        end subroutine tau_at
+    end subroutine cliff_solve
 
     !> Continuation in N where first_solves fails at steps: near a scheme's limit the phase
     !> means are steep (mfix-ab2, force end, e = 0.0053: tau_mean / (N h) runs from 3 to 0.4

@@ -102,18 +102,28 @@ module hertzdamp_host
         integer :: sig(3) = 0
     end type piece_t
 
-    !> The collision whose phase statistics are computed.
-    type :: ctx_t
-        real(wp) :: alpha = 0.0_wp, h = 0.0_wp
-        integer :: law = 0, iend = 0, host = 0
-    end type ctx_t
-
     !> Phases of the stratified proxy of the phase means that the bracketing solve searches
     !> with (the midpoint rule: an error of about the jumps of e(phi) over n_proxy, 1e-3 of e
     !> in the regular cases; the solution is then polished with the exact means).
     integer, parameter :: n_proxy = 64
-    !> Relative tolerance of the bracketing solve on the proxy means (its result is polished).
-    real(wp), parameter :: proxy_tol = 1.0e-9_wp
+    !> Relative tolerance of the bracketing solve on the proxy means (its result is polished),
+    !> and the relative width of its brackets at which it stops: the proxy means jump where a
+    !> phase's release moves (by about 1e-8 of e and 1e-5 of tau_c near a scheme's limit), and
+    !> the Illinois method narrowing a bracket around a jump to round-off took 64 steps on h
+    !> with up to 40 on alpha in each.
+    real(wp), parameter :: proxy_tol = 1.0e-9_wp, proxy_wtol = 1.0e-10_wp
+    !> The looser tolerances (means and bracket widths) of hertzdamp_host_min_steps's search
+    !> for a candidate on the proxy means (only whether a solution exists matters there).
+    real(wp), parameter :: candidate_tol = 1.0e-6_wp
+
+    !> The collision whose phase statistics are computed; for the bracketing solve on the
+    !> proxy means, its tolerance on the means (ptol) and on the brackets' relative width
+    !> (wtol).
+    type :: ctx_t
+        real(wp) :: alpha = 0.0_wp, h = 0.0_wp
+        integer :: law = 0, iend = 0, host = 0
+        real(wp) :: ptol = proxy_tol, wtol = proxy_wtol
+    end type ctx_t
 
     !> Running sums of the phase quadrature (integrals over the pieces done so far).
     type :: sums_t
@@ -147,6 +157,8 @@ module hertzdamp_host
     integer, parameter :: max_means = 60
     !> The budget of Newton's polish of the bracketing solve's result on the exact means.
     integer, parameter :: polish_means = 20
+    !> The most steps per contact at which first_solves tries cliff_solve.
+    real(wp), parameter :: cliff_steps_max = 3.0_wp
     !> A discrete collision with e above this gains energy: the step is unstable for the
     !> damping (the per-pair solve's bracketing does not follow such collisions).
     real(wp), parameter :: unstable_e = 1.5_wp
@@ -1068,19 +1080,148 @@ contains
     !> The solve at steps from the continuous constants (a0, tau_c0 = t0): Newton on the
     !> phase means, and where it does not converge the bracketing solve on the proxy means
     !> polished by Newton on the exact ones.
-    pure subroutine first_solves(cx, e, steps, a0, t0, x, stats, status)
+    !> bracketing_first: the bracketing solve and its polish before Newton from the continuous
+    !> constants (hertzdamp_host_min_steps: the same status, the routes' results joined by
+    !> "or", and near a scheme's limit the bracketing solve on the proxy means and a short
+    !> polish cost less than Newton from the continuous constants, whose residual in e starts
+    !> at 8e3 relative for kuwabara-kono, e = 1e-4, N = 114: 30 phase statistics against 10).
+    pure subroutine first_solves(cx, e, steps, a0, t0, x, stats, status, bracketing_first)
         type(ctx_t), intent(in) :: cx
         real(wp), intent(in) :: e, steps, a0, t0
         real(wp), intent(out) :: x(2)
         type(hertzdamp_host_stats), intent(out) :: stats
         integer, intent(out) :: status
+        logical, intent(in), optional :: bracketing_first
         real(wp) :: xp(2)
-        call newton_solve(cx, e, steps, [a0, t0 / steps], max_means, x, stats, status)
-        if (status == HD_OK) return
+        logical :: bf
+        bf = .false.
+        if (present(bracketing_first)) bf = bracketing_first
+        if (.not. bf) then
+            call newton_solve(cx, e, steps, [a0, t0 / steps], max_means, x, stats, status)
+            if (status == HD_OK) return
+        end if
         call nested_solve(cx, e, steps, a0, t0 / steps, x, stats, status)
         xp = x
         if (status == HD_OK) call newton_solve(cx, e, steps, xp, polish_means, x, stats, status)
+        if (status /= HD_OK .and. bf) then
+            call newton_solve(cx, e, steps, [a0, t0 / steps], max_means, x, stats, status)
+            if (status == HD_OK) return
+        end if
+        if (status /= HD_OK .and. steps <= cliff_steps_max) then
+            call cliff_solve(cx, e, steps, a0, t0 / steps, xp, status)
+            if (status == HD_OK) call newton_solve(cx, e, steps, xp, polish_means, x, stats, status)
+        end if
     end subroutine first_solves
+
+    !> The last resort of first_solves at a few steps per contact (steps <= cliff_steps_max),
+    !> the bracketing solve with the roles of e and tau_c swapped, on the proxy means: at two or
+    !> three steps a solution can lie in the thin layer past the minimum of e_mean over alpha
+    !> where the release moves to the first steps and tau_mean falls steeply (lammps, linear,
+    !> force end, e = 0.001, N = 2: at alpha h = 1 - 1e-7, where the damping stops the body in
+    !> one step), which the bracketing solve on the falling branch of e_mean does not reach.
+    !> For h, alpha_tau(h) where tau_mean / (N h) = 1 (Illinois from a bracket grown by
+    !> doubling alpha from a0); E(h) = e_mean / e - 1 there, on h = h0 times powers of sqrt(2)
+    !> from 1/16 to 2 until it changes sign, then the Illinois method on h.  x: the start of
+    !> the polish; HD_HOST_UNREACHABLE where nothing is found.
+    pure subroutine cliff_solve(cx, e, steps, a0, h0, x, status)
+        type(ctx_t), intent(in) :: cx
+        real(wp), intent(in) :: e, steps, a0, h0
+        real(wp), intent(out) :: x(2)
+        integer, intent(out) :: status
+        real(wp) :: hlo, hhi, glo, ghi, alo, ahi, h, g, a, hm, am, gm, sg
+        integer :: j, k, st, side
+        status = HD_HOST_UNREACHABLE
+        x = 0.0_wp
+        hlo = 0.0_wp
+        glo = 0.0_wp
+        alo = 0.0_wp
+        ahi = 0.0_wp
+        hhi = 0.0_wp
+        ghi = 0.0_wp
+        do j = -8, 2
+            h = h0 * sqrt(2.0_wp)**j
+            call e_at(h, a, g, st)
+            if (st /= HD_OK) cycle
+            if (j > -8 .and. alo > 0.0_wp .and. (g > 0.0_wp .neqv. glo > 0.0_wp)) then
+                hhi = h
+                ghi = g
+                ahi = a
+                exit
+            end if
+            hlo = h
+            glo = g
+            alo = a
+        end do
+        if (.not. (hhi > 0.0_wp)) return
+        ! the Illinois method on sg E, positive at hlo
+        sg = merge(1.0_wp, -1.0_wp, glo > 0.0_wp)
+        glo = sg * glo
+        ghi = sg * ghi
+        side = 0
+        am = alo
+        hm = hlo
+        do k = 1, 60
+            hm = illinois_point(hlo, hhi, glo, ghi)
+            call e_at(hm, am, gm, st)
+            if (st /= HD_OK) return
+            gm = sg * gm
+            if (abs(gm) <= cx%ptol .or. hhi - hlo <= 4.0_wp * spacing(hhi)) exit
+            call illinois_update(hm, gm, hlo, hhi, glo, ghi, side)
+        end do
+        x = [am, hm]
+        status = HD_OK
+    contains
+        !> E(hh) = e_mean / e - 1 at alpha_tau(hh) (aa); sa /= HD_OK where there is none.
+        pure subroutine e_at(hh, aa, gg, sa)
+            real(wp), intent(in) :: hh
+            real(wp), intent(out) :: aa, gg
+            integer, intent(out) :: sa
+            real(wp) :: lo, hi, tlo, thi, ta, ea
+            integer :: i, sd
+            aa = 0.0_wp
+            gg = 0.0_wp
+            sa = HD_HOST_UNREACHABLE
+            if (check_h(hh) /= HD_OK) return
+            lo = 0.0_wp
+            call tau_at(lo, hh, tlo, ea, sd)
+            if (sd /= HD_OK .or. .not. (tlo > 0.0_wp)) return
+            hi = a0
+            do i = 1, 30
+                call tau_at(hi, hh, thi, ea, sd)
+                if (sd == HD_OK .and. thi <= 0.0_wp) exit
+                if (sd == HD_OK) then
+                    lo = hi
+                    tlo = thi
+                end if
+                hi = 2.0_wp * hi
+                if (hi > hertzdamp_host_alpha_max) return
+            end do
+            if (.not. (thi <= 0.0_wp)) return
+            sd = 0
+            do i = 1, 100
+                aa = illinois_point(lo, hi, tlo, thi)
+                call tau_at(aa, hh, ta, ea, sa)
+                if (sa /= HD_OK) return
+                if (abs(ta) <= cx%ptol .or. hi - lo <= 4.0_wp * spacing(hi)) exit
+                call illinois_update(aa, ta, lo, hi, tlo, thi, sd)
+            end do
+            gg = ea / e - 1.0_wp
+        end subroutine e_at
+
+        !> tau_mean / (N hh) - 1 and e_mean on the proxy at (aa, hh).
+        pure subroutine tau_at(aa, hh, tt, ee, sa)
+            real(wp), intent(in) :: aa, hh
+            real(wp), intent(out) :: tt, ee
+            integer, intent(out) :: sa
+            type(hertzdamp_host_stats) :: sp
+            tt = 0.0_wp
+            ee = 0.0_wp
+            call proxy_stats(aa, hh, cx%law, cx%iend, cx%host, sp, sa)
+            if (sa /= HD_OK) return
+            tt = sp%tau_mean / (steps * hh) - 1.0_wp
+            ee = sp%e_mean
+        end subroutine tau_at
+    end subroutine cliff_solve
 
     !> Continuation in N where first_solves fails at steps: near a scheme's limit the phase
     !> means are steep (mfix-ab2, force end, e = 0.0053: tau_mean / (N h) runs from 3 to 0.4
@@ -1264,7 +1405,7 @@ contains
             am = merge(alo, ahi, hm - hlo < hhi - hm)
             call g_of_h(cx, e, steps, hm, am, gm, s, st)
             if (st /= HD_OK) return
-            if (abs(gm) <= proxy_tol .or. hhi - hlo <= 4.0_wp * spacing(hhi)) then
+            if (abs(gm) <= cx%ptol .or. hhi - hlo <= max(4.0_wp * spacing(hhi), cx%wtol * hhi)) then
                 x = [am, hm]
                 stats = s
                 status = HD_OK
@@ -1556,7 +1697,7 @@ contains
                 am = illinois_point(lo, hi, glo, ghi)
                 call mean_of(am, em, sm, stm)
                 if (stm /= HD_OK) return
-                if (abs(em - e) <= proxy_tol * e .or. hi - lo <= 4.0_wp * spacing(hi)) then
+                if (abs(em - e) <= cx%ptol * e .or. hi - lo <= max(4.0_wp * spacing(hi), cx%wtol * hi)) then
                     aout = am
                     sout = sm
                     stout = HD_OK
@@ -1698,38 +1839,80 @@ contains
             st = HD_OK
         end subroutine first_success
 
-        !> The solve at nn (proxy: the bracketing solve on the proxy means only), the same
-        !> as hertzdamp_host_solve's from the cached first solves.
+        !> The solve at nn (proxy: the bracketing solve on the proxy means only, a solution
+        !> counted where the exact phase statistics exist there), with the status of
+        !> hertzdamp_host_solve's from the cached first solves.  That solve succeeds when any of
+        !> its three routes does (first_solves at nn; Newton at nn from first_solves at nn + 1,
+        !> at nn - 1), so a route from a neighbour whose first solve is known to succeed (a
+        !> short Newton) is tried first, first_solves at nn next, and a neighbour not solved
+        !> yet last.
         pure subroutine try(c, nn, proxy, st)
             type(steps_cache_t), intent(inout) :: c
             integer, intent(in) :: nn
             logical, intent(in) :: proxy
             integer, intent(out) :: st
             integer, parameter :: shifts(2) = [1, -1]
-            real(wp) :: x(2), xn(2)
+            real(wp) :: x(2), r(2)
             type(hertzdamp_host_stats) :: s
-            integer :: i, sn
+            integer :: i, pass
+            logical :: done(0:2)
             if (proxy) then
-                call nested_solve(ctx_t(0.0_wp, 0.0_wp, law, iend, host), e, real(nn, wp), a0, t0 / real(nn, wp), x, s, &
-                                  st)
+                call nested_solve(ctx_t(0.0_wp, 0.0_wp, law, iend, host, candidate_tol, candidate_tol), e, real(nn, wp), &
+                                  a0, t0 / real(nn, wp), x, s, st)
+                ! a proxy solution at the edge of the rebound (phases without rebound count as
+                ! e = 0 in the proxy) is none of the exact means
+                if (st == HD_OK) call solve_residual(ctx_t(0.0_wp, 0.0_wp, law, iend, host), e, real(nn, wp), x, r, s, st)
+                if (st /= HD_OK) st = HD_HOST_UNREACHABLE
                 return
             end if
             if (nn <= n_cache) then
                 st = c%solve_st(nn)
                 if (st >= 0) return
             end if
-            call first_at(c, nn, x, st)
-            do i = 1, size(shifts)
+            st = HD_HOST_UNREACHABLE
+            done = .false.
+            ! pass 1: the neighbours already solved; pass 2: nn itself, then the others
+            do pass = 1, 2
+                if (pass == 2) then
+                    call first_at(c, nn, x, st)
+                    done(0) = .true.
+                    if (st == HD_OK) exit
+                end if
+                do i = 1, size(shifts)
+                    if (done(i)) cycle
+                    if (pass == 1 .and. .not. known_ok(c, nn + shifts(i))) cycle
+                    done(i) = .true.
+                    call neighbour_route(c, nn, nn + shifts(i), st)
+                    if (st == HD_OK) exit
+                end do
                 if (st == HD_OK) exit
-                sn = nn + shifts(i)
-                if (sn < nint(hertzdamp_host_steps_min)) cycle
-                call first_at(c, sn, xn, st)
-                if (st == HD_OK) call newton_solve(ctx_t(0.0_wp, 0.0_wp, law, iend, host), e, real(nn, wp), xn, &
-                                                   polish_means, x, s, st)
             end do
             if (st /= HD_OK) st = HD_HOST_UNREACHABLE
             if (nn <= n_cache) c%solve_st(nn) = st
         end subroutine try
+
+        !> Whether first_solves at nn is known (cached) to succeed.
+        pure logical function known_ok(c, nn)
+            type(steps_cache_t), intent(in) :: c
+            integer, intent(in) :: nn
+            known_ok = .false.
+            if (nn >= 1 .and. nn <= n_cache) known_ok = c%first_st(nn) == HD_OK
+        end function known_ok
+
+        !> The continuation route of the solve at nn from first_solves at the neighbour sn:
+        !> Newton at nn from sn's solution (polish_means statistics).
+        pure subroutine neighbour_route(c, nn, sn, st)
+            type(steps_cache_t), intent(inout) :: c
+            integer, intent(in) :: nn, sn
+            integer, intent(out) :: st
+            real(wp) :: x(2), xn(2)
+            type(hertzdamp_host_stats) :: s
+            st = HD_HOST_UNREACHABLE
+            if (sn < nint(hertzdamp_host_steps_min)) return
+            call first_at(c, sn, xn, st)
+            if (st == HD_OK) call newton_solve(ctx_t(0.0_wp, 0.0_wp, law, iend, host), e, real(nn, wp), xn, &
+                                               polish_means, x, s, st)
+        end subroutine neighbour_route
 
         !> first_solves at nn (cached).
         pure subroutine first_at(c, nn, x, st)
@@ -1745,7 +1928,7 @@ contains
                     return
                 end if
             end if
-            call first_solves(ctx_t(0.0_wp, 0.0_wp, law, iend, host), e, real(nn, wp), a0, t0, x, s, st)
+            call first_solves(ctx_t(0.0_wp, 0.0_wp, law, iend, host), e, real(nn, wp), a0, t0, x, s, st, .true.)
             if (nn <= n_cache) then
                 c%first_st(nn) = st
                 c%first_x(:, nn) = x

@@ -294,6 +294,13 @@ contains
             tau_c = pair%tau_c
         else
             call phase_eval(pair%phase, int(pair%law), phi, alpha, tau_c)
+            ! the node values are not hashed: constants outside the header's ranges (tau_c in
+            ! (0, 1e4], |alpha| <= 1e4; NaN included) come only from a changed table
+            if (.not. (tau_c > 0.0_wp .and. tau_c <= pair_tau_max .and. abs(alpha) <= pair_alpha_max)) then
+                alpha = 0.0_wp
+                tau_c = 0.0_wp
+                status = HD_BAD_PAIR
+            end if
         end if
     end subroutine hertzdamp_pair_phase_constants
 

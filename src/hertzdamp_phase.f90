@@ -554,10 +554,11 @@ contains
     !> are consistent as hertzdamp_phase_build writes them (the full check of
     !> hertzdamp_pair_phase_status beside the markers): the halves' node counts, offsets
     !> (each half right after the one before, the last one inside the block), the phases and
-    !> scales in range.
+    !> scales in range; and the node values finite, K > 0.
     pure logical function hertzdamp_phase_table_ok(tab) result(ok)
         real(wp), intent(in) :: tab(hertzdamp_pair_phase_size)  !! the table
         real(wp) :: jm(4), off(4)
+        integer :: last
         ok = tab(2) == 0.0_wp
         if (ok .or. .not. tab(2) == 4.0_wp) return
         jm = tab(14:32:6)
@@ -571,6 +572,14 @@ contains
              tab(7) <= hertzdamp_host_steps_max .and. all(tab(11:29:6) >= 0.0_wp) .and. all(tab(11:29:6) <= 1.0_wp) .and. &
              all(tab(12:30:6) > 0.0_wp) .and. all(tab(12:30:6) <= huge(1.0_wp)) .and. &
              all(tab(13:31:6) <= -1.5_wp) .and. all(tab(13:31:6) >= -1.5_wp - real(hertzdamp_phase_half_max, wp))
+        ! the nodes: K finite and positive, A finite (a changed node value is not seen by the
+        ! markers; this keeps a NaN or an infinity out of every k, d)
+        if (ok) then
+            last = nint(off(4) + 2.0_wp * (jm(4) + 4.0_wp))
+            ok = all(tab(hertzdamp_phase_header + 1:last:2) > 0.0_wp) .and. &
+                 all(tab(hertzdamp_phase_header + 1:last:2) <= huge(1.0_wp)) .and. &
+                 all(abs(tab(hertzdamp_phase_header + 2:last:2)) <= huge(1.0_wp))
+        end if
     end function hertzdamp_phase_table_ok
 
     ! ================================================================ fewest steps

@@ -40,7 +40,8 @@ program test_phase
     use hertzdamp_text_format, only: itoa, fmt_short
     use, intrinsic :: iso_c_binding, only: c_double, c_int
     use, intrinsic :: iso_fortran_env, only: int64
-    use, intrinsic :: ieee_arithmetic, only: ieee_value, ieee_quiet_nan
+    use, intrinsic :: ieee_arithmetic, only: ieee_value, ieee_quiet_nan, ieee_positive_inf, ieee_negative_inf
+    use hertzdamp_phase, only: hertzdamp_phase_header
     implicit none
 
     interface
@@ -445,6 +446,7 @@ contains
         call suite%check(s1 == HD_BAD_KPHYS, 'bad k_phys')
         ! a changed layout entry, a changed header field, garbage
         call check_changed_fields(p1)
+        call check_changed_nodes(p1)
         pn = hertzdamp_pair_t()
         call hertzdamp_pair_kd_phase(pn, tc, mass, speed, 0.0_wp, 0.5_wp, k1, d1, s1)
         call suite%check(s1 == HD_BAD_PAIR, 'unset pair: HD_BAD_PAIR')
@@ -517,6 +519,45 @@ contains
         call suite%check(nbad == 0, 'changed alpha, table entries 3, 7 .. 10: the usual contact unchanged, ' // &
                          'the full check (status, the bound''s path) HD_BAD_PAIR')
     end subroutine check_changed_fields
+
+    !> A node value of the table changed to NaN, +-infinity, -1 or huge (the markers do not
+    !> cover the nodes): at 64 phases over (0, 1], with and without the bound, each call is
+    !> refused or gives a finite k > 0 and a finite d, never a NaN or an infinity with
+    !> status 0; hertzdamp_pair_phase_status refuses a node not finite.  (Before: a NaN node gave
+    !> k = NaN with status 0.)
+    subroutine check_changed_nodes(p)
+        type(hertzdamp_pair_t), intent(in) :: p
+        type(hertzdamp_pair_t) :: pn
+        real(wp) :: vals(5), k1, d1, tc, k0, d0
+        integer :: i, iv, j, s1, nbad, nstat, last
+        vals = [ieee_value(1.0_wp, ieee_quiet_nan), ieee_value(1.0_wp, ieee_positive_inf), &
+                ieee_value(1.0_wp, ieee_negative_inf), -1.0_wp, huge(1.0_wp)]
+        tc = 10.0_wp * dt
+        call hertzdamp_pair_kd_phase(p, tc, mass, speed, 0.0_wp, 0.5_wp, k0, d0, s1)
+        ! the nodes end where the last half's do (its offset, entry 33, and node count - 4, entry 32)
+        last = nint(p%phase(33)) + 2 * (nint(p%phase(32)) + 4)
+        nbad = 0
+        nstat = 0
+        do i = hertzdamp_phase_header + 1, last
+            do iv = 1, size(vals)
+                pn = p
+                pn%phase(i) = vals(iv)
+                if (iv <= 3 .and. hertzdamp_pair_phase_status(pn) /= HD_BAD_PAIR) nstat = nstat + 1
+                do j = 1, 64
+                    call hertzdamp_pair_kd_phase(pn, tc, mass, speed, 0.0_wp, real(j, wp) / 64.0_wp, k1, d1, s1)
+                    if (s1 == HD_OK .and. .not. (k1 > 0.0_wp .and. k1 <= huge(k1) .and. abs(d1) <= huge(d1))) &
+                        nbad = nbad + 1
+                    call hertzdamp_pair_kd_phase(pn, tc, mass, speed, 0.5_wp * k0, real(j, wp) / 64.0_wp, k1, d1, s1)
+                    if (s1 == HD_OK .and. .not. (k1 > 0.0_wp .and. k1 <= huge(k1) .and. abs(d1) <= huge(d1))) &
+                        nbad = nbad + 1
+                end do
+            end do
+        end do
+        call suite%check(nbad == 0 .and. last > hertzdamp_phase_header + 100, 'a node changed to NaN, +-inf, -1, ' // &
+                         'huge: no call gives a k or d not finite (or k <= 0) with status 0 (' // itoa(nbad) // ')')
+        call suite%check(nstat == 0, 'a node changed to NaN or +-inf: hertzdamp_pair_phase_status ' // &
+                         'HD_BAD_PAIR (' // itoa(nstat) // ' not)')
+    end subroutine check_changed_nodes
 
     !> 0 when pair pn (a field the usual contact does not read changed) gives k0, d0 (the
     !> unchanged pair's) on the usual contact (T_c tc, phi = 0.5) and HD_BAD_PAIR from the

@@ -106,23 +106,19 @@ module hertzdamp_host
     !> with (the midpoint rule: an error of about the jumps of e(phi) over n_proxy, 1e-3 of e
     !> in the regular cases; the solution is then polished with the exact means).
     integer, parameter :: n_proxy = 64
-    !> Relative tolerance of the bracketing solve on the proxy means (its result is polished),
-    !> and the relative width of its brackets at which it stops: the proxy means jump where a
-    !> phase's release moves (by about 1e-8 of e and 1e-5 of tau_c near a scheme's limit), and
-    !> the Illinois method narrowing a bracket around a jump to round-off took 64 steps on h
-    !> with up to 40 on alpha in each.
-    real(wp), parameter :: proxy_tol = 1.0e-9_wp, proxy_wtol = 1.0e-10_wp
+    !> Relative tolerance of the bracketing solve on the proxy means (its result is polished).
+    real(wp), parameter :: proxy_tol = 1.0e-9_wp
     !> The looser tolerances (means and bracket widths) of hertzdamp_host_min_steps's search
     !> for a candidate on the proxy means (only whether a solution exists matters there).
     real(wp), parameter :: candidate_tol = 1.0e-6_wp
 
     !> The collision whose phase statistics are computed; for the bracketing solve on the
     !> proxy means, its tolerance on the means (ptol) and on the brackets' relative width
-    !> (wtol).
+    !> (wtol; 0: to round-off).
     type :: ctx_t
         real(wp) :: alpha = 0.0_wp, h = 0.0_wp
         integer :: law = 0, iend = 0, host = 0
-        real(wp) :: ptol = proxy_tol, wtol = proxy_wtol
+        real(wp) :: ptol = proxy_tol, wtol = 0.0_wp
     end type ctx_t
 
     !> Running sums of the phase quadrature (integrals over the pieces done so far).

@@ -102,24 +102,18 @@ module hertzdamp_host
         integer :: sig(3) = 0
     end type piece_t
 
+    !> The collision whose phase statistics are computed.
+    type :: ctx_t
+        real(wp) :: alpha = 0.0_wp, h = 0.0_wp
+        integer :: law = 0, iend = 0, host = 0
+    end type ctx_t
+
     !> Phases of the stratified proxy of the phase means that the bracketing solve searches
     !> with (the midpoint rule: an error of about the jumps of e(phi) over n_proxy, 1e-3 of e
     !> in the regular cases; the solution is then polished with the exact means).
     integer, parameter :: n_proxy = 64
     !> Relative tolerance of the bracketing solve on the proxy means (its result is polished).
     real(wp), parameter :: proxy_tol = 1.0e-9_wp
-    !> The looser tolerances (means and bracket widths) of hertzdamp_host_min_steps's search
-    !> for a candidate on the proxy means (only whether a solution exists matters there).
-    real(wp), parameter :: candidate_tol = 1.0e-6_wp
-
-    !> The collision whose phase statistics are computed; for the bracketing solve on the
-    !> proxy means, its tolerance on the means (ptol) and on the brackets' relative width
-    !> (wtol; 0: to round-off).
-    type :: ctx_t
-        real(wp) :: alpha = 0.0_wp, h = 0.0_wp
-        integer :: law = 0, iend = 0, host = 0
-        real(wp) :: ptol = proxy_tol, wtol = 0.0_wp
-    end type ctx_t
 
     !> Running sums of the phase quadrature (integrals over the pieces done so far).
     type :: sums_t
@@ -1401,7 +1395,7 @@ contains
             am = merge(alo, ahi, hm - hlo < hhi - hm)
             call g_of_h(cx, e, steps, hm, am, gm, s, st)
             if (st /= HD_OK) return
-            if (abs(gm) <= cx%ptol .or. hhi - hlo <= max(4.0_wp * spacing(hhi), cx%wtol * hhi)) then
+            if (abs(gm) <= proxy_tol .or. hhi - hlo <= 4.0_wp * spacing(hhi)) then
                 x = [am, hm]
                 stats = s
                 status = HD_OK
@@ -1693,7 +1687,7 @@ contains
                 am = illinois_point(lo, hi, glo, ghi)
                 call mean_of(am, em, sm, stm)
                 if (stm /= HD_OK) return
-                if (abs(em - e) <= cx%ptol * e .or. hi - lo <= max(4.0_wp * spacing(hi), cx%wtol * hi)) then
+                if (abs(em - e) <= proxy_tol * e .or. hi - lo <= 4.0_wp * spacing(hi)) then
                     aout = am
                     sout = sm
                     stout = HD_OK
@@ -1835,80 +1829,38 @@ contains
             st = HD_OK
         end subroutine first_success
 
-        !> The solve at nn (proxy: the bracketing solve on the proxy means only, a solution
-        !> counted where the exact phase statistics exist there), with the status of
-        !> hertzdamp_host_solve's from the cached first solves.  That solve succeeds when any of
-        !> its three routes does (first_solves at nn; Newton at nn from first_solves at nn + 1,
-        !> at nn - 1), so a route from a neighbour whose first solve is known to succeed (a
-        !> short Newton) is tried first, first_solves at nn next, and a neighbour not solved
-        !> yet last.
+        !> The solve at nn (proxy: the bracketing solve on the proxy means only), the same
+        !> as hertzdamp_host_solve's from the cached first solves.
         pure subroutine try(c, nn, proxy, st)
             type(steps_cache_t), intent(inout) :: c
             integer, intent(in) :: nn
             logical, intent(in) :: proxy
             integer, intent(out) :: st
             integer, parameter :: shifts(2) = [1, -1]
-            real(wp) :: x(2), r(2)
+            real(wp) :: x(2), xn(2)
             type(hertzdamp_host_stats) :: s
-            integer :: i, pass
-            logical :: done(0:2)
+            integer :: i, sn
             if (proxy) then
-                call nested_solve(ctx_t(0.0_wp, 0.0_wp, law, iend, host, candidate_tol, candidate_tol), e, real(nn, wp), &
-                                  a0, t0 / real(nn, wp), x, s, st)
-                ! a proxy solution at the edge of the rebound (phases without rebound count as
-                ! e = 0 in the proxy) is none of the exact means
-                if (st == HD_OK) call solve_residual(ctx_t(0.0_wp, 0.0_wp, law, iend, host), e, real(nn, wp), x, r, s, st)
-                if (st /= HD_OK) st = HD_HOST_UNREACHABLE
+                call nested_solve(ctx_t(0.0_wp, 0.0_wp, law, iend, host), e, real(nn, wp), a0, t0 / real(nn, wp), x, s, &
+                                  st)
                 return
             end if
             if (nn <= n_cache) then
                 st = c%solve_st(nn)
                 if (st >= 0) return
             end if
-            st = HD_HOST_UNREACHABLE
-            done = .false.
-            ! pass 1: the neighbours already solved; pass 2: nn itself, then the others
-            do pass = 1, 2
-                if (pass == 2) then
-                    call first_at(c, nn, x, st)
-                    done(0) = .true.
-                    if (st == HD_OK) exit
-                end if
-                do i = 1, size(shifts)
-                    if (done(i)) cycle
-                    if (pass == 1 .and. .not. known_ok(c, nn + shifts(i))) cycle
-                    done(i) = .true.
-                    call neighbour_route(c, nn, nn + shifts(i), st)
-                    if (st == HD_OK) exit
-                end do
+            call first_at(c, nn, x, st)
+            do i = 1, size(shifts)
                 if (st == HD_OK) exit
+                sn = nn + shifts(i)
+                if (sn < nint(hertzdamp_host_steps_min)) cycle
+                call first_at(c, sn, xn, st)
+                if (st == HD_OK) call newton_solve(ctx_t(0.0_wp, 0.0_wp, law, iend, host), e, real(nn, wp), xn, &
+                                                   polish_means, x, s, st)
             end do
             if (st /= HD_OK) st = HD_HOST_UNREACHABLE
             if (nn <= n_cache) c%solve_st(nn) = st
         end subroutine try
-
-        !> Whether first_solves at nn is known (cached) to succeed.
-        pure logical function known_ok(c, nn)
-            type(steps_cache_t), intent(in) :: c
-            integer, intent(in) :: nn
-            known_ok = .false.
-            if (nn >= 1 .and. nn <= n_cache) known_ok = c%first_st(nn) == HD_OK
-        end function known_ok
-
-        !> The continuation route of the solve at nn from first_solves at the neighbour sn:
-        !> Newton at nn from sn's solution (polish_means statistics).
-        pure subroutine neighbour_route(c, nn, sn, st)
-            type(steps_cache_t), intent(inout) :: c
-            integer, intent(in) :: nn, sn
-            integer, intent(out) :: st
-            real(wp) :: x(2), xn(2)
-            type(hertzdamp_host_stats) :: s
-            st = HD_HOST_UNREACHABLE
-            if (sn < nint(hertzdamp_host_steps_min)) return
-            call first_at(c, sn, xn, st)
-            if (st == HD_OK) call newton_solve(ctx_t(0.0_wp, 0.0_wp, law, iend, host), e, real(nn, wp), xn, &
-                                               polish_means, x, s, st)
-        end subroutine neighbour_route
 
         !> first_solves at nn (cached).
         pure subroutine first_at(c, nn, x, st)

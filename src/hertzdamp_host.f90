@@ -1155,7 +1155,7 @@ contains
             call e_at(hm, am, gm, st)
             if (st /= HD_OK) return
             gm = sg * gm
-            if (abs(gm) <= cx%ptol .or. hhi - hlo <= 4.0_wp * spacing(hhi)) exit
+            if (abs(gm) <= proxy_tol .or. hhi - hlo <= 4.0_wp * spacing(hhi)) exit
             call illinois_update(hm, gm, hlo, hhi, glo, ghi, side)
         end do
         x = [am, hm]
@@ -1192,7 +1192,7 @@ contains
                 aa = illinois_point(lo, hi, tlo, thi)
                 call tau_at(aa, hh, ta, ea, sa)
                 if (sa /= HD_OK) return
-                if (abs(ta) <= cx%ptol .or. hi - lo <= 4.0_wp * spacing(hi)) exit
+                if (abs(ta) <= proxy_tol .or. hi - lo <= 4.0_wp * spacing(hi)) exit
                 call illinois_update(aa, ta, lo, hi, tlo, thi, sd)
             end do
             gg = ea / e - 1.0_wp

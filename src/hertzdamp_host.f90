@@ -1082,7 +1082,7 @@ contains
         type(hertzdamp_host_stats), intent(out) :: stats
         integer, intent(out) :: status
         logical, intent(in), optional :: bracketing_first
-        real(wp) :: xp(2)
+        real(wp) :: xp(2), xc(2)
         logical :: bf
         bf = .false.
         if (present(bracketing_first)) bf = bracketing_first
@@ -1098,8 +1098,15 @@ contains
             if (status == HD_OK) return
         end if
         if (status /= HD_OK .and. steps <= cliff_steps_max) then
-            call cliff_solve(cx, e, steps, a0, t0 / steps, xp, status)
-            if (status == HD_OK) call newton_solve(cx, e, steps, xp, polish_means, x, stats, status)
+            call cliff_solve(cx, e, steps, a0, t0 / steps, .false., xp, status)
+            if (status /= HD_OK) return
+            xc = xp
+            call newton_solve(cx, e, steps, xp, polish_means, x, stats, status)
+            ! the proxy's answer too far for the polish: the same solve on the exact means
+            ! from it (mfix-ab2, kuwabara-kono, force end, e = 0.02, N = 2)
+            if (status /= HD_OK) call cliff_solve(cx, e, steps, xc(1), xc(2), .true., xp, status)
+            if (status /= HD_OK) return
+            call newton_solve(cx, e, steps, xp, polish_means, x, stats, status)
         end if
     end subroutine first_solves
 
@@ -1111,16 +1118,20 @@ contains
     !> one step), which the bracketing solve on the falling branch of e_mean does not reach.
     !> For h, alpha_tau(h) where tau_mean / (N h) = 1 (Illinois from a bracket grown by
     !> doubling alpha from a0); E(h) = e_mean / e - 1 there, on h = h0 times powers of sqrt(2)
-    !> from 1/16 to 2 until it changes sign, then the Illinois method on h.  x: the start of
-    !> the polish; HD_HOST_UNREACHABLE where nothing is found.
-    pure subroutine cliff_solve(cx, e, steps, a0, h0, x, status)
+    !> from 1/16 to 2 until it changes sign, then the Illinois method on h.  exact: on the
+    !> exact phase means instead, h from h0 / 2 to 2 h0 (first_solves: from the proxy's
+    !> answer where that is too far for the polish).  x: the start of the polish;
+    !> HD_HOST_UNREACHABLE where nothing is found.
+    pure subroutine cliff_solve(cx, e, steps, a0, h0, exact, x, status)
         type(ctx_t), intent(in) :: cx
         real(wp), intent(in) :: e, steps, a0, h0
+        logical, intent(in) :: exact
         real(wp), intent(out) :: x(2)
         integer, intent(out) :: status
         real(wp) :: hlo, hhi, glo, ghi, alo, ahi, h, g, a, hm, am, gm, sg
-        integer :: j, k, st, side
+        integer :: j, k, st, side, jlo
         status = HD_HOST_UNREACHABLE
+        jlo = merge(-2, -8, exact)
         x = 0.0_wp
         hlo = 0.0_wp
         glo = 0.0_wp
@@ -1128,11 +1139,11 @@ contains
         ahi = 0.0_wp
         hhi = 0.0_wp
         ghi = 0.0_wp
-        do j = -8, 2
+        do j = jlo, 2
             h = h0 * sqrt(2.0_wp)**j
             call e_at(h, a, g, st)
             if (st /= HD_OK) cycle
-            if (j > -8 .and. alo > 0.0_wp .and. (g > 0.0_wp .neqv. glo > 0.0_wp)) then
+            if (j > jlo .and. alo > 0.0_wp .and. (g > 0.0_wp .neqv. glo > 0.0_wp)) then
                 hhi = h
                 ghi = g
                 ahi = a
@@ -1206,7 +1217,11 @@ contains
             type(hertzdamp_host_stats) :: sp
             tt = 0.0_wp
             ee = 0.0_wp
-            call proxy_stats(aa, hh, cx%law, cx%iend, cx%host, sp, sa)
+            if (exact) then
+                call phase_stats(aa, hh, cx%law, cx%iend, cx%host, sp, sa)
+            else
+                call proxy_stats(aa, hh, cx%law, cx%iend, cx%host, sp, sa)
+            end if
             if (sa /= HD_OK) return
             tt = sp%tau_mean / (steps * hh) - 1.0_wp
             ee = sp%e_mean

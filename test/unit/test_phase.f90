@@ -545,11 +545,13 @@ contains
                 if (iv <= 3 .and. hertzdamp_pair_phase_status(pn) /= HD_BAD_PAIR) nstat = nstat + 1
                 do j = 1, 64
                     call hertzdamp_pair_kd_phase(pn, tc, mass, speed, 0.0_wp, real(j, wp) / 64.0_wp, k1, d1, s1)
-                    if (s1 == HD_OK .and. .not. (k1 > 0.0_wp .and. k1 <= huge(k1) .and. abs(d1) <= huge(d1))) &
+                    if (s1 == HD_OK .and. .not. (k1 > 0.0_wp .and. k1 <= huge(k1) .and. abs(d1) <= huge(d1))) then
                         nbad = nbad + 1
+                    end if
                     call hertzdamp_pair_kd_phase(pn, tc, mass, speed, 0.5_wp * k0, real(j, wp) / 64.0_wp, k1, d1, s1)
-                    if (s1 == HD_OK .and. .not. (k1 > 0.0_wp .and. k1 <= huge(k1) .and. abs(d1) <= huge(d1))) &
+                    if (s1 == HD_OK .and. .not. (k1 > 0.0_wp .and. k1 <= huge(k1) .and. abs(d1) <= huge(d1))) then
                         nbad = nbad + 1
+                    end if
                 end do
             end do
         end do

@@ -1,4 +1,5 @@
-# Sourced by tools/core_build_time.sh, tools/fit_bits.sh and tools/fit_speed.sh: a
+# Sourced by tools/core_build_time.sh, tools/fit_bits.sh, tools/fit_speed.sh and the timing
+# tools of the pair and min_steps (core_library, below): a
 # temporary fpm package of the core library alone, for timing and comparing revisions.
 #   core_package DIR SRC [PROGRAM.f90]
 # copies SRC (a core src/ tree) to DIR/src and writes DIR/fpm.toml: no programs, tests
@@ -16,4 +17,13 @@ core_package() {
       printf '[[executable]]\nname = "%s"\nsource-dir = "prog"\nmain = "%s"\n' "$(basename "$prog" .f90)" "$(basename "$prog")"
     fi
   } > "$dir/fpm.toml"
+}
+
+# core_library DIR SRC FPM FLAGS: core_package DIR SRC, built with FPM at FLAGS; prints the
+# path of its libhertzdamp.a (the build log on failure, status 1).
+core_library() {
+  local dir=$1 src=$2 fpm=$3 flags=$4
+  core_package "$dir" "$src"
+  (cd "$dir" && "$fpm" build --flag "$flags" >"$dir/build.log" 2>&1) || { cat "$dir/build.log" >&2; return 1; }
+  find "$dir/build" -name libhertzdamp.a | head -1
 }

@@ -13,9 +13,7 @@ fpm=${FPM:-$root/.venv/bin/fpm}
 flags=$(grep -v '^#' "$root/data/release_flags.txt")
 tmp=$(mktemp -d); trap 'rm -rf "$tmp"' EXIT
 source "$root/tools/core_package.bash"
-core_package "$tmp/core" "${SRC:-$root/src}"
-(cd "$tmp/core" && "$fpm" build --flag "$flags" >"$tmp/log" 2>&1) || { cat "$tmp/log"; exit 1; }
-lib=$(find "$tmp/core/build" -name libhertzdamp.a | head -1)
+lib=$(core_library "$tmp/core" "${SRC:-$root/src}" "$fpm" "$flags")
 cat >"$tmp/ms.c" <<'C'
 #include <stdio.h>
 #include <time.h>

@@ -1,5 +1,5 @@
 # Sourced by tools/core_build_time.sh, tools/fit_bits.sh, tools/fit_speed.sh and the timing
-# tools of the pair and min_steps (core_library, below): a
+# tools of min_steps (core_library and release_core, below): a
 # temporary fpm package of the core library alone, for timing and comparing revisions.
 #   core_package DIR SRC [PROGRAM.f90]
 # copies SRC (a core src/ tree) to DIR/src and writes DIR/fpm.toml: no programs, tests
@@ -26,4 +26,11 @@ core_library() {
   core_package "$dir" "$src"
   (cd "$dir" && "$fpm" build --flag "$flags" >"$dir/build.log" 2>&1) || { cat "$dir/build.log" >&2; return 1; }
   find "$dir/build" -name libhertzdamp.a | head -1
+}
+
+# release_core DIR ROOT: core_library of SRC (default ROOT/src) with FPM (default ROOT's
+# .venv fpm) at the release flags of ROOT/data/release_flags.txt; prints the archive.
+release_core() {
+  local dir=$1 root=$2
+  core_library "$dir" "${SRC:-$root/src}" "${FPM:-$root/.venv/bin/fpm}" "$(grep -v '^#' "$root/data/release_flags.txt")"
 }

@@ -9,11 +9,9 @@
 #   bash tools/min_steps_cases.sh
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
-fpm=${FPM:-$root/.venv/bin/fpm}
-flags=$(grep -v '^#' "$root/data/release_flags.txt")
 tmp=$(mktemp -d); trap 'rm -rf "$tmp"' EXIT
 source "$root/tools/core_package.bash"
-lib=$(core_library "$tmp/core" "${SRC:-$root/src}" "$fpm" "$flags")
+lib=$(release_core "$tmp/core" "$root")
 cat >"$tmp/ms.c" <<'C'
 #include <stdio.h>
 #include <time.h>

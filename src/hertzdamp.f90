@@ -74,7 +74,7 @@ module hertzdamp
     use hertzdamp_host, only: hertzdamp_host_steps_min, hertzdamp_host_steps_max, hertzdamp_host_status, &
                               hertzdamp_host_stats, hertzdamp_host_collide, hertzdamp_host_mean, &
                               hertzdamp_host_solve, hertzdamp_host_min_steps, hertzdamp_host_alpha_for_e, &
-                              hertzdamp_host_phase_force
+                              hertzdamp_host_phase_force, hertzdamp_host_collide_phases
     use hertzdamp_pair, only: hertzdamp_pair_t, hertzdamp_pair_init, hertzdamp_pair_kd, hertzdamp_invert, &
                               hertzdamp_pair_kd_phase, hertzdamp_pair_phase_status, hertzdamp_pair_phase_constants
     use hertzdamp_phase, only: hertzdamp_onset_phase, hertzdamp_phase_point, hertzdamp_phase_min_steps
@@ -157,7 +157,8 @@ module hertzdamp
     ! the host schemes (a DEM engine's time integrator) (hertzdamp_host)
     public :: hertzdamp_host_steps_min, hertzdamp_host_steps_max, hertzdamp_host_status, &
               hertzdamp_host_stats, hertzdamp_host_collide, hertzdamp_host_mean, hertzdamp_host_solve, &
-              hertzdamp_host_min_steps, hertzdamp_host_alpha_for_e, hertzdamp_host_phase_force
+              hertzdamp_host_min_steps, hertzdamp_host_alpha_for_e, hertzdamp_host_phase_force, &
+              hertzdamp_host_collide_phases
     ! the per-pair API and the one-call inverse (hertzdamp_pair)
     public :: hertzdamp_pair_t, hertzdamp_pair_init, hertzdamp_pair_kd, hertzdamp_invert
     ! per-contact constants from the onset phase (hertzdamp_pair, hertzdamp_phase; issue 32)

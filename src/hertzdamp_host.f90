@@ -35,7 +35,9 @@
 !> to round-off (the bracket moved by the discrete trajectory's signature: release step,
 !> kind, number of force steps; its points by the Illinois method on the overlap or force
 !> at the release step, else bisection) and each piece is integrated by tanh-sinh quadrature, which
-!> converges double-exponentially despite endpoint singularities.
+!> converges double-exponentially despite endpoint singularities.  The collisions of a
+!> quadrature level, of the coarse samples and of the proxy run four side by side
+!> (run_many; hertzdamp_host_collide_phases), each to the bit as alone.
 !>
 !> Everything is pure, keeps no state and returns a status (hertzdamp_status).
 module hertzdamp_host
@@ -80,7 +82,8 @@ module hertzdamp_host
     end type hertzdamp_host_stats
 
     public :: hertzdamp_host_status
-    public :: hertzdamp_host_collide, hertzdamp_host_mean, hertzdamp_host_solve, hertzdamp_host_min_steps
+    public :: hertzdamp_host_collide, hertzdamp_host_collide_phases, hertzdamp_host_mean, hertzdamp_host_solve
+    public :: hertzdamp_host_min_steps
     public :: hertzdamp_host_alpha_for_e, hertzdamp_host_phase_force, hertzdamp_host_hurwitz
 
     !> One discrete collision: e, tau_c, its signature (release step, kind of release:
@@ -102,6 +105,12 @@ module hertzdamp_host
         integer :: sig(3) = 0
     end type piece_t
 
+    !> The state of the verlet scheme's collision between steps (run_verlet).
+    type :: verlet_t
+        real(wp) :: z = 0.0_wp, v = 0.0_wp, acc = 0.0_wp, acc_prev = 0.0_wp
+        real(wp) :: zl = 0.0_wp, vl = 0.0_wp, fl = 0.0_wp, s = 0.0_wp
+    end type verlet_t
+
     !> The collision whose phase statistics are computed.
     type :: ctx_t
         real(wp) :: alpha = 0.0_wp, h = 0.0_wp
@@ -112,6 +121,8 @@ module hertzdamp_host
     !> with (the midpoint rule: an error of about the jumps of e(phi) over n_proxy, 1e-3 of e
     !> in the regular cases; the solution is then polished with the exact means).
     integer, parameter :: n_proxy = 64
+    !> Collisions that run_many advances side by side.
+    integer, parameter :: lanes = 4
     !> Relative tolerance of the bracketing solve on the proxy means (its result is polished).
     real(wp), parameter :: proxy_tol = 1.0e-9_wp
 
@@ -325,6 +336,62 @@ contains
         end if
     end subroutine hertzdamp_host_collide
 
+    !> hertzdamp_host_collide at each onset phase phi(j) of one collision's alpha, h, law,
+    !> end and host, the collisions side by side as the phase statistics run them:
+    !> e(j), tau_c(j), status(j) equal hertzdamp_host_collide's at phi(j) to the bit (the
+    !> same operations in the same order).  A bad common argument gives its status at every
+    !> phase; a phi(j) outside (0, 1] HD_BAD_ARGUMENT there.  e, tau_c, status: at least
+    !> size(phi) long (else HD_BAD_ARGUMENT at every phase of status, nothing else written).
+    pure subroutine hertzdamp_host_collide_phases(alpha, h, phi, law, iend, host, e, tau_c, status)
+        real(wp), intent(in) :: alpha       !! damping parameter
+        real(wp), intent(in) :: h           !! dimensionless step dt / t*
+        real(wp), intent(in) :: phi(:)      !! onset phases, each in (0, 1]
+        integer, intent(in) :: law          !! HD_DAMPING_*
+        integer, intent(in) :: iend         !! HD_END_OVERLAP or HD_END_FORCE
+        integer, intent(in) :: host         !! HD_HOST_*
+        real(wp), intent(inout) :: e(:)     !! achieved restitution coefficients
+        real(wp), intent(inout) :: tau_c(:) !! achieved contact durations (units of t*)
+        integer, intent(inout) :: status(:) !! HD_OK or the failure, per phase
+        type(run_t) :: rs(size(phi))
+        real(wp) :: ok_phi(size(phi))
+        integer :: idx(size(phi)), st, j, n, k, nd
+        if (size(e) < size(phi) .or. size(tau_c) < size(phi) .or. size(status) < size(phi)) then
+            status = HD_BAD_ARGUMENT
+            return
+        end if
+        e(1:size(phi)) = 0.0_wp
+        tau_c(1:size(phi)) = 0.0_wp
+        st = check_common(law, iend, host)
+        if (st == HD_OK) st = check_alpha(alpha)
+        if (st == HD_OK) st = check_h(h)
+        if (st /= HD_OK .or. host == HD_HOST_NONE) then
+            do j = 1, size(phi)
+                call hertzdamp_host_collide(alpha, h, phi(j), law, iend, host, e(j), tau_c(j), status(j))
+            end do
+            return
+        end if
+        ! the valid phases side by side; after a failed one, on from the next
+        n = 0
+        do j = 1, size(phi)
+            status(j) = HD_BAD_ARGUMENT
+            if (phi(j) > 0.0_wp .and. phi(j) <= 1.0_wp) then
+                n = n + 1
+                ok_phi(n) = phi(j)
+                idx(n) = j
+            end if
+        end do
+        k = 1
+        do while (k <= n)
+            call run_many(alpha, h, ok_phi(k:n), law, iend, host, rs(k:n), ndone=nd)
+            k = k + nd
+        end do
+        do j = 1, n
+            status(idx(j)) = rs(j)%status
+            e(idx(j)) = rs(j)%e
+            tau_c(idx(j)) = rs(j)%tau
+        end do
+    end subroutine hertzdamp_host_collide_phases
+
     !> The continuous collision (reference integrator at its default tolerance).
     pure subroutine continuous(alpha, law, iend, e, tau_c, status)
         real(wp), intent(in) :: alpha
@@ -368,6 +435,49 @@ contains
         end if
     end subroutine run
 
+    !> The discrete collisions of a host at the phases phi(:) (arguments checked by the
+    !> caller): r(j) exactly as run(alpha, h, phi(j), ..) gives it, up to the first failed
+    !> one (those after it: status HD_NO_CONVERGENCE, not run).  The collisions advance side
+    !> by side in groups of `lanes` (run_symplectic_lanes, run_ab2_lanes, run_verlet_lanes):
+    !> a collision is a chain of dependent square roots and products, and independent
+    !> chains side by side keep the processor busy.
+    pure subroutine run_many(alpha, h, phi, law, iend, host, r, probe, ndone)
+        real(wp), intent(in) :: alpha, h, phi(:)
+        integer, intent(in) :: law, iend, host
+        type(run_t), intent(out) :: r(:)
+        integer, intent(in), optional :: probe
+        integer, intent(out), optional :: ndone   !! the phases run (size(phi) unless one failed)
+        integer :: i, j, j2, m
+        m = 0
+        if (present(probe)) m = probe
+        if (present(ndone)) ndone = size(phi)
+        do j = 1, size(phi), lanes
+            j2 = min(j + lanes - 1, size(phi))
+            if (host == HD_HOST_MFIX_AB2) then
+                call run_ab2_lanes(alpha, h, phi(j:j2), law, iend, int(contact_time_max / h) + 16, m, r(j:j2))
+            else if (host == HD_HOST_VERLET) then
+                call run_verlet_lanes(alpha, h, phi(j:j2), law, iend, int(contact_time_max / h) + 16, m, r(j:j2))
+            else
+                call run_symplectic_lanes(alpha, h, phi(j:j2), law, iend, host == HD_HOST_LAMMPS_PHASE, &
+                                          int(contact_time_max / h) + 16, m, r(j:j2))
+            end if
+            do i = j, j2
+                if (r(i)%status == HD_OK .and. .not. (r(i)%e > 0.0_wp)) r(i)%status = HD_NO_REBOUND
+                if (r(i)%status /= HD_OK) then
+                    r(i)%e = 0.0_wp
+                    r(i)%tau = 0.0_wp
+                end if
+            end do
+            ! a failed collision ends the callers' use of the phases after it: those are
+            ! not run (a collision without rebound runs to its longest contact)
+            if (any(r(j:j2)%status /= HD_OK)) then
+                r(j2 + 1:)%status = HD_NO_CONVERGENCE
+                if (present(ndone)) ndone = j2
+                return
+            end if
+        end do
+    end subroutine run_many
+
     !> z^q of the law by square roots (1 for the linear law), z >= 0.
     pure real(wp) function zq(z, law)
         real(wp), intent(in) :: z
@@ -403,37 +513,66 @@ contains
         integer, intent(in) :: law, iend, nmax, m
         logical, intent(in) :: phase
         type(run_t), intent(inout) :: r
-        real(wp) :: z, w, f, fa, zp, fp, frac
-        integer :: n
-        z = phi * h
+        type(run_t) :: rs(1)
+        rs(1) = r
+        call run_symplectic_lanes(alpha, h, [phi], law, iend, phase, nmax, m, rs)
+        r = rs(1)
+    end subroutine run_symplectic
+
+    !> The lammps family's scheme (run_symplectic) for up to `lanes` phases side by side
+    !> (run_many): each phase's operations those of a collision alone, in the same order.
+    pure subroutine run_symplectic_lanes(alpha, h, phi, law, iend, phase, nmax, m, r)
+        real(wp), intent(in) :: alpha, h, phi(:)
+        integer, intent(in) :: law, iend, nmax, m
+        logical, intent(in) :: phase
+        type(run_t), intent(inout) :: r(:)
+        real(wp) :: z(lanes), w(lanes), zp(lanes), fp(lanes), f, fa, frac
+        logical :: live(lanes)
+        integer :: n, j, nl, left
+        nl = size(phi)
+        z(1:nl) = phi * h
         w = 1.0_wp
         zp = 0.0_wp
         fp = 0.0_wp
+        live = .false.
+        live(1:nl) = .true.
+        left = nl
         do n = 1, nmax
-            if (n == m) r%gz = z
-            if (n > 1 .and. .not. (z > 0.0_wp)) then
-                ! overlap gone at step n: no force; the plugin's release correction
-                frac = zp / (zp - z)
-                if (phase .and. iend == HD_END_OVERLAP) w = w - h * hertzdamp_host_phase_force(alpha, w, h, frac, law)
-                call finish_run(h, phi, n, 0, frac, w, n - 1, r)
-                return
-            end if
-            f = z * sqrt(z) + alpha * zq(z, law) * w
-            if (n == m) r%gf = f
-            if (iend == HD_END_FORCE .and. .not. (f > 0.0_wp)) then
-                ! force end (n > 1: the first force is positive): clipped from here on
-                call finish_run(h, phi, n, 1, fp / (fp - f), w, n - 1, r)
-                return
-            end if
-            fa = f
-            if (phase .and. n == 1) fa = f + hertzdamp_host_phase_force(alpha, w, h, phi, law)
-            w = w - h * fa
-            zp = z
-            fp = f
-            z = z + h * w
+            do j = 1, nl
+                if (.not. live(j)) cycle
+                if (n == m) r(j)%gz = z(j)
+                if (n > 1 .and. .not. (z(j) > 0.0_wp)) then
+                    ! overlap gone at step n: no force; the plugin's release correction
+                    frac = zp(j) / (zp(j) - z(j))
+                    if (phase .and. iend == HD_END_OVERLAP) w(j) = w(j) - h * &
+                        hertzdamp_host_phase_force(alpha, w(j), h, frac, law)
+                    call finish_run(h, phi(j), n, 0, frac, w(j), n - 1, r(j))
+                    live(j) = .false.
+                    left = left - 1
+                    cycle
+                end if
+                f = z(j) * sqrt(z(j)) + alpha * zq(z(j), law) * w(j)
+                if (n == m) r(j)%gf = f
+                if (iend == HD_END_FORCE .and. .not. (f > 0.0_wp)) then
+                    ! force end (n > 1: the first force is positive): clipped from here on
+                    call finish_run(h, phi(j), n, 1, fp(j) / (fp(j) - f), w(j), n - 1, r(j))
+                    live(j) = .false.
+                    left = left - 1
+                    cycle
+                end if
+                fa = f
+                if (phase .and. n == 1) fa = f + hertzdamp_host_phase_force(alpha, w(j), h, phi(j), law)
+                w(j) = w(j) - h * fa
+                zp(j) = z(j)
+                fp(j) = f
+                z(j) = z(j) + h * w(j)
+            end do
+            if (left == 0) return
         end do
-        r%status = HD_NO_REBOUND
-    end subroutine run_symplectic
+        do j = 1, nl
+            if (live(j)) r(j)%status = HD_NO_REBOUND
+        end do
+    end subroutine run_symplectic_lanes
 
     !> The mfix-ab2 scheme: a_n from (z_n, v_n) (clipped at the force end), v_(n+1) = v_n +
     !> h (3 a_n - a_(n-1))/2, z_(n+1) = z_n + h (v_n + v_(n+1))/2; a_0 = 0 (free flight
@@ -444,10 +583,25 @@ contains
         real(wp), intent(in) :: alpha, h, phi
         integer, intent(in) :: law, iend, nmax, m
         type(run_t), intent(inout) :: r
-        real(wp) :: z, v, vn, a, aold, f, fa, zp, fp, frac
-        integer :: n, nrel, kind, nf
-        logical :: released, gone
-        z = phi * h
+        type(run_t) :: rs(1)
+        rs(1) = r
+        call run_ab2_lanes(alpha, h, [phi], law, iend, nmax, m, rs)
+        r = rs(1)
+    end subroutine run_ab2
+
+    !> The mfix-ab2 scheme (run_ab2) for up to `lanes` phases side by side (run_many): each
+    !> phase's operations those of a collision alone, in the same order.
+    pure subroutine run_ab2_lanes(alpha, h, phi, law, iend, nmax, m, r)
+        real(wp), intent(in) :: alpha, h, phi(:)
+        integer, intent(in) :: law, iend, nmax, m
+        type(run_t), intent(inout) :: r(:)
+        real(wp), dimension(lanes) :: z, v, aold, zp, fp, f, frac
+        real(wp) :: vn, a, fa
+        integer, dimension(lanes) :: nrel, kind, nf
+        logical, dimension(lanes) :: released, gone, live
+        integer :: n, j, nl, left
+        nl = size(phi)
+        z(1:nl) = phi * h
         v = 1.0_wp
         aold = 0.0_wp
         zp = 0.0_wp
@@ -459,50 +613,63 @@ contains
         nf = 0
         released = .false.
         gone = .false.
+        live = .false.
+        live(1:nl) = .true.
+        left = nl
         do n = 1, nmax
-            if (n == m) r%gz = z
-            if (z > 0.0_wp) then
-                if (gone) then
-                    r%status = HD_NO_REBOUND
-                    return
+            do j = 1, nl
+                if (.not. live(j)) cycle
+                if (n == m) r(j)%gz = z(j)
+                if (z(j) > 0.0_wp) then
+                    if (gone(j)) then
+                        r(j)%status = HD_NO_REBOUND
+                        live(j) = .false.
+                        left = left - 1
+                        cycle
+                    end if
+                    f(j) = z(j) * sqrt(z(j)) + alpha * zq(z(j), law) * v(j)
+                    if (n == m) r(j)%gf = f(j)
+                    fa = f(j)
+                    if (iend == HD_END_FORCE) fa = max(f(j), 0.0_wp)
+                    if (.not. released(j) .and. iend == HD_END_FORCE .and. .not. (f(j) > 0.0_wp)) then
+                        released(j) = .true.
+                        nrel(j) = n
+                        kind(j) = 1
+                        frac(j) = fp(j) / (fp(j) - f(j))
+                    end if
+                else
+                    fa = 0.0_wp
+                    gone(j) = .true.
+                    if (.not. released(j)) then
+                        released(j) = .true.
+                        nrel(j) = n
+                        kind(j) = 0
+                        frac(j) = zp(j) / (zp(j) - z(j))
+                    end if
                 end if
-                f = z * sqrt(z) + alpha * zq(z, law) * v
-                if (n == m) r%gf = f
-                fa = f
-                if (iend == HD_END_FORCE) fa = max(f, 0.0_wp)
-                if (.not. released .and. iend == HD_END_FORCE .and. .not. (f > 0.0_wp)) then
-                    released = .true.
-                    nrel = n
-                    kind = 1
-                    frac = fp / (fp - f)
+                if (.not. released(j)) then
+                    zp(j) = z(j)
+                    fp(j) = f(j)
                 end if
-            else
-                fa = 0.0_wp
-                gone = .true.
-                if (.not. released) then
-                    released = .true.
-                    nrel = n
-                    kind = 0
-                    frac = zp / (zp - z)
+                a = -fa
+                if (fa /= 0.0_wp) nf(j) = nf(j) + 1
+                if (released(j) .and. a == 0.0_wp .and. aold(j) == 0.0_wp) then
+                    call finish_run(h, phi(j), nrel(j), kind(j), frac(j), v(j), nf(j), r(j))
+                    live(j) = .false.
+                    left = left - 1
+                    cycle
                 end if
-            end if
-            if (.not. released) then
-                zp = z
-                fp = f
-            end if
-            a = -fa
-            if (fa /= 0.0_wp) nf = nf + 1
-            if (released .and. a == 0.0_wp .and. aold == 0.0_wp) then
-                call finish_run(h, phi, nrel, kind, frac, v, nf, r)
-                return
-            end if
-            vn = v + 0.5_wp * h * (3.0_wp * a - aold)
-            z = z + 0.5_wp * h * (v + vn)
-            v = vn
-            aold = a
+                vn = v(j) + 0.5_wp * h * (3.0_wp * a - aold(j))
+                z(j) = z(j) + 0.5_wp * h * (v(j) + vn)
+                v(j) = vn
+                aold(j) = a
+            end do
+            if (left == 0) return
         end do
-        r%status = HD_NO_REBOUND
-    end subroutine run_ab2
+        do j = 1, nl
+            if (live(j)) r(j)%status = HD_NO_REBOUND
+        end do
+    end subroutine run_ab2_lanes
 
     !> The verlet scheme, the scene engine's sequence for one contact (packages/dem/src/hertzdamp_dem_engine.f90,
     !> doc/host-schemes.md): half kick, drift, the velocity v_pred = v_half + h/2 A +
@@ -514,73 +681,131 @@ contains
         real(wp), intent(in) :: alpha, h, phi
         integer, intent(in) :: law, iend, nmax, m
         type(run_t), intent(inout) :: r
-        real(wp) :: q, z, v, vh, vp, acc, acc_prev, f, dv, fh, fd, zl, vl, fl, s, us, jn
-        integer :: n, kind
+        type(verlet_t) :: st
+        real(wp) :: q
+        integer :: n
+        logical :: done
         q = hertzdamp_law_q(law)
-        s = 0.0_wp
-        ! step 1 (onset): free flight before it (acc = acc_prev = 0, v = 1), in contact
-        ! for the fraction phi of the step; the impact speed is 1
-        z = phi * h
-        fh = z * sqrt(z)
-        fd = alpha * zq(z, law)
+        call verlet_onset(alpha, h, phi, law, q, st)
+        do n = 2, nmax
+            call verlet_step(alpha, h, phi, law, iend, q, n, m, st, r, done)
+            if (done) return
+        end do
+        r%status = HD_NO_REBOUND
+    end subroutine run_verlet
+
+    !> run_verlet for up to `lanes` phases side by side (run_many): the same steps
+    !> (verlet_onset, verlet_step) for each phase, so each result is run_verlet's to the bit.
+    pure subroutine run_verlet_lanes(alpha, h, phi, law, iend, nmax, m, r)
+        real(wp), intent(in) :: alpha, h, phi(:)
+        integer, intent(in) :: law, iend, nmax, m
+        type(run_t), intent(inout) :: r(:)
+        type(verlet_t) :: st(lanes)
+        real(wp) :: q
+        integer :: n, j, nl, left
+        logical :: live(lanes), done
+        nl = size(phi)
+        q = hertzdamp_law_q(law)
+        do j = 1, nl
+            call verlet_onset(alpha, h, phi(j), law, q, st(j))
+        end do
+        live = .false.
+        live(1:nl) = .true.
+        left = nl
+        do n = 2, nmax
+            do j = 1, nl
+                if (.not. live(j)) cycle
+                call verlet_step(alpha, h, phi(j), law, iend, q, n, m, st(j), r(j), done)
+                if (done) then
+                    live(j) = .false.
+                    left = left - 1
+                end if
+            end do
+            if (left == 0) return
+        end do
+        do j = 1, nl
+            if (live(j)) r(j)%status = HD_NO_REBOUND
+        end do
+    end subroutine run_verlet_lanes
+
+    !> The verlet scheme's onset step (step 1): free flight before it (acc = acc_prev = 0,
+    !> v = 1), in contact for the fraction phi of the step; the impact speed is 1.
+    pure subroutine verlet_onset(alpha, h, phi, law, q, st)
+        real(wp), intent(in) :: alpha, h, phi, q
+        integer, intent(in) :: law
+        type(verlet_t), intent(out) :: st
+        real(wp) :: fh, fd, jn, f
+        st%s = 0.0_wp
+        st%z = phi * h
+        fh = st%z * sqrt(st%z)
+        fd = alpha * zq(st%z, law)
         jn = (fd * (phi / (1.0_wp + q) - 0.5_wp) + fh * (0.4_wp * phi - 0.5_wp)) * h &
              - trapezoid_g(1.5_wp, phi) * h * h * sqrt(h)
         if (q > 0.0_wp) jn = jn - trapezoid_g(q, phi) * alpha * h * zq(h, law)
         f = fh + fd
-        fl = f
-        zl = z
-        vl = 1.0_wp
-        acc_prev = 0.0_wp
-        acc = -f
-        v = 1.0_wp + 0.5_wp * h * acc - jn
-        do n = 2, nmax
-            vh = v + 0.5_wp * h * acc
-            z = z + h * vh
-            vp = vh + 0.5_wp * h * acc + 0.5_wp * h * (acc - acc_prev)
-            if (n == m) r%gz = z
-            dv = 0.0_wp
-            f = 0.0_wp
-            kind = -1
-            if (.not. (z > 0.0_wp) .and. iend == HD_END_FORCE .and. alpha * vp < 0.0_wp) then
-                ! force end, the step passed the force zero and the overlap zero
-                s = force_zero(alpha, law, zl, vl, z, vp)
-                dv = -fl * (s - 1.0_wp) * 0.5_wp * h
-                kind = 2
-            else if (.not. (z > 0.0_wp)) then
-                ! overlap end: the last force for the part of the step in contact
-                s = overlap_fraction(zl, z)
-                us = max(zl - z, 0.0_wp) / h
-                fh = max(zl, 0.0_wp) * sqrt(max(zl, 0.0_wp))
-                jn = ((fl - fh) * (s / (1.0_wp + q) - 0.5_wp) + fh * (0.4_wp * s - 0.5_wp)) * h &
-                     - trapezoid_g(1.5_wp, s) * us * sqrt(us) * h * h * sqrt(h)
-                if (q > 0.0_wp) jn = jn + trapezoid_g(q, s) * alpha * us * zq(us, law) * h * zq(h, law)
-                dv = -jn
-                kind = 0
+        st%fl = f
+        st%zl = st%z
+        st%vl = 1.0_wp
+        st%acc_prev = 0.0_wp
+        st%acc = -f
+        st%v = 1.0_wp + 0.5_wp * h * st%acc - jn
+    end subroutine verlet_onset
+
+    !> Step n >= 2 of the verlet scheme; done (and r filled) at the end instant.
+    pure subroutine verlet_step(alpha, h, phi, law, iend, q, n, m, st, r, done)
+        real(wp), intent(in) :: alpha, h, phi, q
+        integer, intent(in) :: law, iend, n, m
+        type(verlet_t), intent(inout) :: st
+        type(run_t), intent(inout) :: r
+        logical, intent(out) :: done
+        real(wp) :: vh, vp, f, dv, fh, us, jn
+        integer :: kind
+        done = .false.
+        vh = st%v + 0.5_wp * h * st%acc
+        st%z = st%z + h * vh
+        vp = vh + 0.5_wp * h * st%acc + 0.5_wp * h * (st%acc - st%acc_prev)
+        if (n == m) r%gz = st%z
+        dv = 0.0_wp
+        f = 0.0_wp
+        kind = -1
+        if (.not. (st%z > 0.0_wp) .and. iend == HD_END_FORCE .and. alpha * vp < 0.0_wp) then
+            ! force end, the step passed the force zero and the overlap zero
+            st%s = force_zero(alpha, law, st%zl, st%vl, st%z, vp)
+            dv = -st%fl * (st%s - 1.0_wp) * 0.5_wp * h
+            kind = 2
+        else if (.not. (st%z > 0.0_wp)) then
+            ! overlap end: the last force for the part of the step in contact
+            st%s = overlap_fraction(st%zl, st%z)
+            us = max(st%zl - st%z, 0.0_wp) / h
+            fh = max(st%zl, 0.0_wp) * sqrt(max(st%zl, 0.0_wp))
+            jn = ((st%fl - fh) * (st%s / (1.0_wp + q) - 0.5_wp) + fh * (0.4_wp * st%s - 0.5_wp)) * h &
+                 - trapezoid_g(1.5_wp, st%s) * us * sqrt(us) * h * h * sqrt(h)
+            if (q > 0.0_wp) jn = jn + trapezoid_g(q, st%s) * alpha * us * zq(us, law) * h * zq(h, law)
+            dv = -jn
+            kind = 0
+        else
+            f = st%z * sqrt(st%z) + alpha * zq(st%z, law) * vp
+            if (n == m) r%gf = f
+            if (iend == HD_END_FORCE .and. .not. (f > 0.0_wp)) then
+                st%s = force_zero(alpha, law, st%zl, st%vl, st%z, vp)
+                dv = -st%fl * (st%s - 1.0_wp) * 0.5_wp * h
+                f = 0.0_wp
+                kind = 1
             else
-                f = z * sqrt(z) + alpha * zq(z, law) * vp
-                if (n == m) r%gf = f
-                if (iend == HD_END_FORCE .and. .not. (f > 0.0_wp)) then
-                    s = force_zero(alpha, law, zl, vl, z, vp)
-                    dv = -fl * (s - 1.0_wp) * 0.5_wp * h
-                    f = 0.0_wp
-                    kind = 1
-                else
-                    fl = f
-                    zl = z
-                    vl = vp
-                end if
+                st%fl = f
+                st%zl = st%z
+                st%vl = vp
             end if
-            acc_prev = acc
-            acc = -f
-            v = vh + 0.5_wp * h * acc + dv
-            if (kind >= 0) then
-                ! the separation speed at the end instant: no force acts after it
-                call finish_run(h, phi, n, kind, s, v, n - 1, r)
-                return
-            end if
-        end do
-        r%status = HD_NO_REBOUND
-    end subroutine run_verlet
+        end if
+        st%acc_prev = st%acc
+        st%acc = -f
+        st%v = vh + 0.5_wp * h * st%acc + dv
+        if (kind >= 0) then
+            ! the separation speed at the end instant: no force acts after it
+            call finish_run(h, phi, n, kind, st%s, st%v, n - 1, r)
+            done = .true.
+        end if
+    end subroutine verlet_step
 
     !> The engine's trapezoid error g_p(theta) = zeta_H(-p, theta) + theta^(p+1)/(p+1) -
     !> theta^p/2 of a force c s^p starting (or ending) a fraction theta of a step away
@@ -721,9 +946,10 @@ contains
         status = HD_OK
         ! coarse samples phi_j = j / M; the first one's values are the references of the
         ! variance sums
+        ps = [(real(j, wp) / real(n_coarse, wp), j = 1, n_coarse)]
+        call run_many(alpha, h, ps, law, iend, host, rs)
         do j = 1, n_coarse
-            ps(j) = real(j, wp) / real(n_coarse, wp)
-            call sample(cx, ps(j), rs(j), acc)
+            call count_sample(rs(j), acc)
             if (rs(j)%status /= HD_OK) then
                 status = rs(j)%status
                 return
@@ -785,7 +1011,7 @@ contains
         integer, intent(in) :: law, iend, host
         type(hertzdamp_host_stats), intent(out) :: stats
         integer, intent(out) :: status
-        type(run_t) :: r
+        type(run_t) :: r, rs(n_proxy)
         real(wp) :: se, st, se2, st2
         integer :: j
         se = 0.0_wp; st = 0.0_wp; se2 = 0.0_wp; st2 = 0.0_wp
@@ -793,8 +1019,9 @@ contains
         stats%e_max = -huge(1.0_wp)
         stats%tau_min = huge(1.0_wp)
         stats%tau_max = -huge(1.0_wp)
+        call run_many(alpha, h, [((real(j, wp) - 0.5_wp) / real(n_proxy, wp), j = 1, n_proxy)], law, iend, host, rs)
         do j = 1, n_proxy
-            call run(alpha, h, (real(j, wp) - 0.5_wp) / real(n_proxy, wp), law, iend, host, r)
+            r = rs(j)
             status = r%status
             if (status /= HD_OK) then
                 stats = hertzdamp_host_stats()
@@ -822,19 +1049,32 @@ contains
         type(run_t), intent(out) :: r
         type(sums_t), intent(inout) :: acc
         integer, intent(in), optional :: probe
+        if (acc%runs >= max_runs) then
+            acc%runs = acc%runs + 1
+            r%status = HD_NO_CONVERGENCE
+            return
+        end if
+        call run(cx%alpha, cx%h, p, cx%law, cx%iend, cx%host, r, probe)
+        call count_sample(r, acc)
+    end subroutine sample
+
+    !> A collision run for the phase statistics counted (beyond max_runs its status is
+    !> HD_NO_CONVERGENCE) and its values kept for the min and max.
+    pure subroutine count_sample(r, acc)
+        type(run_t), intent(inout) :: r
+        type(sums_t), intent(inout) :: acc
         acc%runs = acc%runs + 1
         if (acc%runs > max_runs) then
             r%status = HD_NO_CONVERGENCE
             return
         end if
-        call run(cx%alpha, cx%h, p, cx%law, cx%iend, cx%host, r, probe)
         if (r%status == HD_OK) then
             acc%e_min = min(acc%e_min, r%e)
             acc%e_max = max(acc%e_max, r%e)
             acc%t_min = min(acc%t_min, r%tau)
             acc%t_max = max(acc%t_max, r%tau)
         end if
-    end subroutine sample
+    end subroutine count_sample
 
     !> Push a piece on the stack; status HD_NO_CONVERGENCE when it is full.
     pure subroutine push(pieces, np, p, status)
@@ -887,6 +1127,13 @@ contains
             xm = 0.5_wp * (x1 + x2)
             if (xm == x1 .or. xm == x2) exit
             if (abs(x2 - x1) <= 4.0_wp * spacing(max(abs(x1), abs(x2))) .and. secant) exit
+            if (.not. secant) then
+                ! bisection's work in steps of `lanes` points side by side (run_many): the
+                ! bracket shrinks by lanes + 1 (the first point that is not of s1 closes it)
+                call multisect(x1, x2, acc, status)
+                if (status /= HD_OK) exit
+                cycle
+            end if
             if (secant) then
                 xm = x1 + (x2 - x1) * (g1 / (g1 - g2))
                 if (.not. (xm > min(x1, x2) .and. xm < max(x1, x2))) xm = 0.5_wp * (x1 + x2)
@@ -916,6 +1163,44 @@ contains
         end do
         b = 0.5_wp * (x1 + x2)
     contains
+        !> lanes points spaced evenly inside (x1, x2) (those that round to an end left out);
+        !> the bracket becomes the first of them not of signature s1 and the point before it.
+        pure subroutine multisect(x1, x2, acc, sm)
+            real(wp), intent(inout) :: x1, x2
+            type(sums_t), intent(inout) :: acc
+            integer, intent(out) :: sm
+            real(wp) :: ys(lanes), y
+            type(run_t) :: rys(lanes)
+            integer :: i, ny
+            ny = 0
+            do i = 1, lanes
+                y = x1 + (x2 - x1) * (real(i, wp) / real(lanes + 1, wp))
+                if (y > x1 .and. y < x2 .and. (ny == 0 .or. y > ys(max(ny, 1)))) then
+                    ny = ny + 1
+                    ys(ny) = y
+                end if
+            end do
+            sm = HD_OK
+            if (ny == 0) then
+                ys(1) = 0.5_wp * (x1 + x2)
+                ny = 1
+            end if
+            call run_many(cx%alpha, cx%h, ys(1:ny), cx%law, cx%iend, cx%host, rys(1:ny), m)
+            do i = 1, ny
+                call count_sample(rys(i), acc)
+                if (rys(i)%status /= HD_OK) then
+                    sm = rys(i)%status
+                    return
+                end if
+                if (all(rys(i)%sig == s1)) then
+                    x1 = ys(i)
+                else
+                    x2 = ys(i)
+                    return
+                end if
+            end do
+        end subroutine multisect
+
         pure real(wp) function indicator(r)
             type(run_t), intent(in) :: r
             indicator = merge(r%gz, r%gf, which == 0)
@@ -952,9 +1237,11 @@ contains
         real(wp), intent(out) :: xbad
         integer, intent(out) :: sbad(3)
         integer, intent(out) :: status
-        real(wp) :: width, t, ht, u, em, dend, wgt, guard, x, s(4), prev(4), cur(4)
-        integer :: level, k, kstep, side
-        type(run_t) :: r
+        integer, parameter :: nodes_max = 2 * int(ts_t_max * 2**level_max) + 2
+        real(wp) :: width, t, ht, u, em, dend, wgt, guard, s(4), prev(4), cur(4)
+        real(wp) :: xs(nodes_max), ws(nodes_max)
+        integer :: level, k, kstep, side, nn, i
+        type(run_t) :: r, rs(nodes_max)
         bad = .false.
         xbad = 0.0_wp
         sbad = 0
@@ -971,6 +1258,8 @@ contains
             ht = 2.0_wp**(-level)
             kstep = merge(1, 2, level == 0)
             k = merge(0, 1, level == 0)
+            ! the level's nodes, their collisions side by side (run_many), then in order
+            nn = 0
             do while (real(k, wp) * ht <= ts_t_max)
                 t = real(k, wp) * ht
                 u = 0.5_wp * hertzdamp_pi * sinh(t)
@@ -981,21 +1270,27 @@ contains
                 do side = -1, 1, 2
                     if (k == 0 .and. side == 1) cycle
                     if (dend <= guard) cycle
-                    x = merge(p%a + dend, p%b - dend, side == -1)
-                    call sample(cx, x, r, acc)
-                    if (r%status /= HD_OK) then
-                        status = r%status
-                        return
-                    end if
-                    if (any(r%sig /= p%sig)) then
-                        bad = .true.
-                        xbad = x
-                        sbad = r%sig
-                        return
-                    end if
-                    s = s + wgt * [r%e, r%tau, (r%e - acc%e_ref)**2, (r%tau - acc%t_ref)**2]
+                    nn = nn + 1
+                    xs(nn) = merge(p%a + dend, p%b - dend, side == -1)
+                    ws(nn) = wgt
                 end do
                 k = k + kstep
+            end do
+            call run_many(cx%alpha, cx%h, xs(1:nn), cx%law, cx%iend, cx%host, rs(1:nn))
+            do i = 1, nn
+                call count_sample(rs(i), acc)
+                r = rs(i)
+                if (r%status /= HD_OK) then
+                    status = r%status
+                    return
+                end if
+                if (any(r%sig /= p%sig)) then
+                    bad = .true.
+                    xbad = xs(i)
+                    sbad = r%sig
+                    return
+                end if
+                s = s + ws(i) * [r%e, r%tau, (r%e - acc%e_ref)**2, (r%tau - acc%t_ref)**2]
             end do
             cur = s * ht
             ! converged: the change of the level below quad_tol of the piece, or (pieces a
@@ -1719,10 +2014,11 @@ contains
     !> linear, overlap: N = 12 is reached, 13 not, 14 and up again), hence the window; beyond
     !> it the reach grows with N over the tested range (test_host checks N - 1 and
     !> N .. N + 8 over a grid of laws, ends, schemes and e).  For messages such as "N = 3 steps
-    !> cannot reach e = 0.5 with lammps; N >= 6 can".  host none: 2.  A candidate comes from
-    !> the bracketing solve on the proxy means alone (N = 2, then growing by factors of about
-    !> sqrt(2) up to 1024 until it succeeds, then bisection), and is confirmed and moved by
-    !> hertzdamp_host_solve itself: up until the window succeeds, down while N - 1 succeeds.
+    !> cannot reach e = 0.5 with lammps; N >= 6 can".  host none: 2.  A candidate is N = 2
+    !> where the solve succeeds there, else it comes from the bracketing solve on the proxy
+    !> means alone (N = 3, then growing by factors of about sqrt(2) up to 1024 until it
+    !> succeeds, then bisection); it is confirmed and moved by hertzdamp_host_solve itself:
+    !> up until the window succeeds, down while N - 1 succeeds.
     !> Status HD_OK, a bad-input status of hertzdamp_host_solve, or
     !> HD_HOST_UNREACHABLE when no N up to 1024 succeeds (n_min = 0).
     pure subroutine hertzdamp_host_min_steps(e, law, iend, host, n_min, status)
@@ -1749,35 +2045,36 @@ contains
         end if
         call try(c, 2, .false., st)
         if (st == HD_OK) then
-            n_min = 2
-            status = HD_OK
-            return
+            ! N = 2 succeeds: the window N + 1 .. N + min_steps_window as for any N
+            n = 2
+            k = 1
+        else
+            status = st
+            ! the candidate: the fewest N the proxy search reaches
+            lo = 2
+            hi = 3
+            do
+                call try(c, hi, .true., st)
+                if (st == HD_OK) exit
+                lo = hi
+                if (hi >= n_search_max) exit
+                hi = min(max(hi + 1, nint(sqrt(2.0_wp) * real(hi, wp))), n_search_max)
+            end do
+            do while (hi - lo > 1)
+                mid = (lo + hi) / 2
+                call try(c, mid, .true., st)
+                if (st == HD_OK) then
+                    hi = mid
+                else
+                    lo = mid
+                end if
+            end do
+            n = hi
+            k = 0
         end if
-        status = st
-        ! the candidate: the fewest N the proxy search reaches
-        lo = 2
-        hi = 3
-        do
-            call try(c, hi, .true., st)
-            if (st == HD_OK) exit
-            lo = hi
-            if (hi >= n_search_max) exit
-            hi = min(max(hi + 1, nint(sqrt(2.0_wp) * real(hi, wp))), n_search_max)
-        end do
-        do while (hi - lo > 1)
-            mid = (lo + hi) / 2
-            call try(c, mid, .true., st)
-            if (st == HD_OK) then
-                hi = mid
-            else
-                lo = mid
-            end if
-        end do
         ! confirmed by the solve itself: the first N from the candidate up at which it
         ! succeeds (galloping, then bisection: a proxy candidate can lie far below), and
         ! again until it succeeds at N .. N + min_steps_window; then down while N - 1 succeeds
-        n = hi
-        k = 0
         do while (k <= min_steps_window)
             if (k == 0) then
                 call first_success(c, n, st)

@@ -39,6 +39,7 @@ program test_host
     call names_and_codes()
     call hurwitz_and_phase_force()
     call steppers_agree()
+    call phases_side_by_side()
     call scene_engine_agrees()
     call lammps_agrees()
     call means_agree()
@@ -178,6 +179,60 @@ contains
                 ', tau_c ' // fmt_short(wt, 3)
         end do
     end subroutine steppers_agree
+
+    !> hertzdamp_host_collide_phases (the collisions side by side, as the phase statistics
+    !> run them) against hertzdamp_host_collide one phase at a time: the same e, tau_c and
+    !> status to the bit, every host, law and end, 41 phases per case (two of them outside
+    !> (0, 1]), at regular constants, at a damping without rebound at some phases (alpha =
+    !> 40, h = 0.5) and at a host without rebound at every phase (alpha = 5000); bad common
+    !> arguments and a too short output.
+    subroutine phases_side_by_side()
+        integer, parameter :: np = 41
+        real(wp) :: phi(np), e(np), tau(np), e1, t1, alpha, h, r
+        real(wp) :: a_case(3), h_case(3)
+        integer :: st(np), st1, il, ie, ih, ic, j, st0(np - 1), nbad, ncmp, nfail, nmixed
+        call random_number(phi)
+        phi(1) = 1.0_wp
+        phi(2) = 0.0_wp
+        phi(3) = 1.5_wp
+        phi(4) = 1.0e-9_wp
+        nbad = 0
+        ncmp = 0
+        nfail = 0
+        nmixed = 0
+        do ih = 1, size(hosts)
+            do il = 1, 3
+                do ie = 1, 2
+                    call hertzdamp_fit_inverse(0.5_wp, ends(ie), alpha, r, st1, laws(il))
+                    a_case = [alpha, 40.0_wp, 5000.0_wp]
+                    h_case = [r / 23.0_wp, 0.5_wp, 0.05_wp]
+                    do ic = 1, 3
+                        h = h_case(ic)
+                        call hertzdamp_host_collide_phases(a_case(ic), h, phi, laws(il), ends(ie), hosts(ih), e, tau, st)
+                        do j = 1, np
+                            call hertzdamp_host_collide(a_case(ic), h, phi(j), laws(il), ends(ie), hosts(ih), e1, t1, st1)
+                            ncmp = ncmp + 1
+                            if (st1 == HD_NO_REBOUND) nfail = nfail + 1
+                            if (st(j) /= st1 .or. .not. (e(j) == e1 .and. tau(j) == t1)) nbad = nbad + 1
+                        end do
+                        if (any(st == HD_OK) .and. any(st == HD_NO_REBOUND)) nmixed = nmixed + 1
+                    end do
+                end do
+            end do
+        end do
+        call s%check(nbad == 0 .and. nfail > 0 .and. nmixed > 0, &
+                     'collisions side by side = one at a time, to the bit (' // itoa(ncmp) // ' phases, ' // &
+                     itoa(nfail) // ' without rebound, ' // itoa(nmixed) // ' calls with both, ' // itoa(nbad) // ' differ)')
+        print '(a)', '  side by side = one at a time: ' // itoa(ncmp) // ' phases, ' // itoa(nfail) // &
+            ' without rebound, ' // itoa(nmixed) // ' calls with both, ' // itoa(nbad) // ' differ'
+        call hertzdamp_host_collide_phases(-1.0_wp, 0.1_wp, phi, laws(1), ends(1), hosts(1), e, tau, st)
+        call s%check(all(st == HD_BAD_ALPHA) .and. all(e == 0.0_wp), 'side by side: a bad alpha at every phase')
+        call hertzdamp_host_collide_phases(1.0_wp, 0.1_wp, phi, laws(1), 7, hosts(1), e, tau, st)
+        call s%check(all(st == HD_BAD_END), 'side by side: a bad end at every phase')
+        st0 = -5
+        call hertzdamp_host_collide_phases(1.0_wp, 0.1_wp, phi, laws(1), ends(1), hosts(1), e, tau, st0)
+        call s%check(all(st0 == HD_BAD_ARGUMENT), 'side by side: a status array shorter than phi')
+    end subroutine phases_side_by_side
 
     ! ================================================================ the real engines
 

@@ -681,21 +681,14 @@ contains
         real(wp), intent(in) :: alpha, h, phi
         integer, intent(in) :: law, iend, nmax, m
         type(run_t), intent(inout) :: r
-        type(verlet_t) :: st
-        real(wp) :: q
-        integer :: n
-        logical :: done
-        q = hertzdamp_law_q(law)
-        call verlet_onset(alpha, h, phi, law, q, st)
-        do n = 2, nmax
-            call verlet_step(alpha, h, phi, law, iend, q, n, m, st, r, done)
-            if (done) return
-        end do
-        r%status = HD_NO_REBOUND
+        type(run_t) :: rs(1)
+        rs(1) = r
+        call run_verlet_lanes(alpha, h, [phi], law, iend, nmax, m, rs)
+        r = rs(1)
     end subroutine run_verlet
 
-    !> run_verlet for up to `lanes` phases side by side (run_many): the same steps
-    !> (verlet_onset, verlet_step) for each phase, so each result is run_verlet's to the bit.
+    !> The verlet scheme (run_verlet) for up to `lanes` phases side by side (run_many): each
+    !> phase's steps (verlet_onset, verlet_step) those of a collision alone.
     pure subroutine run_verlet_lanes(alpha, h, phi, law, iend, nmax, m, r)
         real(wp), intent(in) :: alpha, h, phi(:)
         integer, intent(in) :: law, iend, nmax, m
